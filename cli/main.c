@@ -1,0 +1,41 @@
+/* main.c — the lifthull command line: dispatch, --help, --version. */
+#include "cli.h"
+#include "lifthull.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: lifthull COMMAND [ARGS]\n"
+            "       lifthull --version | --help\n"
+            "\n"
+            "commands:\n"
+            "  selfcheck [FILE]   check the exact predicates on near-degenerate cases\n"
+            "                     (FILE: lines 'orient K SIGN coords...' or\n"
+            "                     'insphere D SIGN coords...'; default: the bundled\n"
+            "                     tests/data/near_degenerate.txt)\n"
+            "\n"
+            "exit codes: 0 success, 1 a check failed, 2 usage error, 3 bad input file\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return LH_EXIT_USAGE;
+    }
+    const char *cmd = argv[1];
+    if (!strcmp(cmd, "--version")) {
+        printf("lifthull %s\n", lh_version_string());
+        return LH_EXIT_OK;
+    }
+    if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h")) {
+        usage(stdout);
+        return LH_EXIT_OK;
+    }
+    if (!strcmp(cmd, "selfcheck")) return lh_cli_selfcheck(argc - 2, argv + 2);
+    fprintf(stderr, "lifthull: unknown command '%s' (try lifthull --help)\n", cmd);
+    return LH_EXIT_USAGE;
+}

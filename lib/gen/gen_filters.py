@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""gen_filters.py -- writes lib/src/pred_filter.gen.h, the floating-point filters of
+lifthull's predicates, one straight-line function per predicate and dimension, with
+error bounds derived here in exact rational arithmetic.
+
+    python3 lib/gen/gen_filters.py [--check] OUTPUT
+
+--check compares instead of writing and exits 1 when OUTPUT differs (CI runs it).
+
+The filter for an m x m determinant (orient_k: m = k, rows p_i - p_0; insphere_d:
+m = d + 1, rows (p_i - p_0, |p_i - p_0|^2)) evaluates it by Laplace expansion along
+columns with every minor of the leading columns computed once per row subset, so
+the 2D..5D code is what one would write by hand. Error bound (Higham, "Accuracy and
+Stability of Numerical Algorithms", 2nd ed., 3.1 and 3.3): each of the m! products of
+the expansion carries at most g roundings,
+    g = sum_{s=2..m} s        (one product and s-1 additions at level s)
+      + m                     (orient: the m differences p_i - p_0)
+      + (m - 1) + (d + 2)     (insphere: d differences; the lifted entry: squares of
+                               rounded differences, their rounding, d-1 additions)
+so |computed - exact| <= gamma_g * m! * prod_j M_j, gamma_g = g u / (1 - g u),
+u = 2^-53, M_j the largest exact magnitude in column j. M_j is taken from the
+rounded entries (a factor 1/(1-u) per coordinate column, 1/(1-gamma_(d+2)) for the
+lifted one) and the bound product is itself rounded (a factor 1/(1-u) per factor).
+The filter answers only when every M_j lies in [2^-E, 2^E] (lifted column: squared),
+E = floor(900 / degree): then no product overflows and underflow adds at most 2^-90
+of the bound, covered by the extra factor (1 + 2^-40). A zero column means an exact
+zero when it is a coordinate column. Otherwise the exact stage decides. See docs/predicates.md.
+"""
+import math
+import sys
+from fractions import Fraction
+
+U = Fraction(1, 2**53)
+
+
+def gamma(g):
+    return g * U / (1 - g * U)
+
+
+def round_up(x):
+    f = float(x)
+    if Fraction(f) < x:
+        f = math.nextafter(f, math.inf)
+    return f
+
+
+def bound_constant(m, lifted, d):
+    g = m * (m + 1) // 2 - 1
+    g += (m - 1) + (d + 2) if lifted else m
+    c = math.factorial(m) * gamma(g) / (1 - U) ** (2 * m) * (1 + Fraction(1, 2**40))
+    if lifted:
+        c /= 1 - gamma(d + 2)
+    return round_up(c), g
+
+
+def laplace(m, out):
+    """Emits minors mS_MASK of the leading S columns; returns the full determinant's name."""
+    def name(mask, s):
+        if s == 1:
+            return "a%d_0" % (mask.bit_length() - 1)
+        return "m%d_%x" % (s, mask)
+
+    for s in range(2, m + 1):
+        for mask in range(1 << m):
+            if bin(mask).count("1") != s:
+                continue
+            terms = []
+            pos = 0
+            for r in range(m):
+                if mask & (1 << r):
+                    sign = "-" if (pos + s - 1) & 1 else "+"
+                    terms.append((sign, "a%d_%d * %s" % (r, s - 1, name(mask ^ (1 << r), s - 1))))
+                    pos += 1
+            expr = ("-" if terms[0][0] == "-" else "") + terms[0][1]
+            for sign, t in terms[1:]:
+                expr += " %s %s" % (sign, t)
+            out.append("    const double %s = %s;" % (name(mask, s), expr))
+    return name((1 << m) - 1, m)
+
+
+def hexf(x):
+    return float(x).hex()
+
+
+def emit_filter(kind, dim, out):
+    lifted = kind == "insphere"
+    m = dim + 1 if lifted else dim
+    npts = dim + 2 if lifted else dim + 1
+    degree = dim + 2 if lifted else dim
+    e = 900 // degree
+    c, g = bound_constant(m, lifted, dim)
+    out.append("")
+    out.append("/* %s_%d: %dx%d determinant, %d roundings per term, E = %d. */"
+               % (kind, dim, m, m, g, e))
+    out.append("static inline int lh__%s_filter_%d(const double *const *p, int *sign)" % (kind, dim))
+    out.append("{")
+    if not lifted and dim == 1:
+        out.append("    /* Rounding is monotone and x - y rounds to 0 only when x == y. */")
+        out.append("    *sign = (p[1][0] > p[0][0]) - (p[1][0] < p[0][0]);")
+        out.append("    return 1;")
+        out.append("}")
+        return
+    out.append("    const double *p0 = p[0];")
+    for i in range(m):
+        pt = i + 1
+        out.append("    const double *p%d = p[%d];" % (pt, pt))
+        for j in range(dim):
+            out.append("    const double a%d_%d = p%d[%d] - p0[%d];" % (i, j, pt, j, j))
+        if lifted:
+            sq = " + ".join("a%d_%d * a%d_%d" % (i, j, i, j) for j in range(dim))
+            out.append("    const double a%d_%d = %s;" % (i, dim, sq))
+    for j in range(m):
+        out.append("    double M%d = fabs(a0_%d);" % (j, j))
+        for i in range(1, m):
+            out.append("    if (fabs(a%d_%d) > M%d) M%d = fabs(a%d_%d);" % (i, j, j, j, i, j))
+    lo, hi = hexf(2.0 ** -e), hexf(2.0 ** e)
+    lo2, hi2 = hexf(2.0 ** (-2 * e)), hexf(2.0 ** (2 * e))
+    conds = []
+    for j in range(m):
+        if lifted and j == dim:
+            conds.append("!(M%d >= %s && M%d <= %s)" % (j, lo2, j, hi2))
+        else:
+            conds.append("!(M%d >= %s && M%d <= %s)" % (j, lo, j, hi))
+    out.append("    if (" + " ||\n        ".join(conds) + ") {")
+    # Coordinate columns hold exact differences (a difference rounds to 0 only when
+    # it is 0), so a zero there is an exact zero column; the lifted column is rounded
+    # (its squares may underflow) and proves nothing.
+    zeros = " || ".join("M%d == 0" % j for j in range(dim))
+    out.append("        if (%s) { /* a zero coordinate column: det is exactly 0 */" % zeros)
+    out.append("            *sign = 0;")
+    out.append("            return 1;")
+    out.append("        }")
+    out.append("        return 0;")
+    out.append("    }")
+    det = laplace(m, out)
+    prod = " * ".join("M%d" % j for j in range(m))
+    out.append("    const double eb = %s * %s; /* %.17g */" % (hexf(c), prod, c))
+    out.append("    if (%s > eb) { *sign = 1; return 1; }" % det)
+    out.append("    if (%s < -eb) { *sign = -1; return 1; }" % det)
+    out.append("    return 0;")
+    out.append("}")
+
+
+def generate():
+    out = [
+        "/* pred_filter.gen.h -- GENERATED by lib/gen/gen_filters.py; do not edit.",
+        " * Floating-point filters of orient_1..8 and insphere_1..7 (lifthull.h): each",
+        " * returns 1 and sets *sign when the rounded determinant's sign is proven, 0 when",
+        " * the exact stage must decide. The bound's derivation is in the generator. */",
+        "#ifndef LH_PRED_FILTER_GEN_H",
+        "#define LH_PRED_FILTER_GEN_H",
+        "",
+        "#include <math.h>",
+    ]
+    for k in range(1, 9):
+        emit_filter("orient", k, out)
+    for d in range(1, 8):
+        emit_filter("insphere", d, out)
+    out.append("")
+    out.append("#endif")
+    return "\n".join(out) + "\n"
+
+
+def main(argv):
+    check = "--check" in argv
+    paths = [a for a in argv[1:] if a != "--check"]
+    if len(paths) != 1:
+        sys.stderr.write("usage: gen_filters.py [--check] OUTPUT\n")
+        return 2
+    text = generate()
+    if check:
+        try:
+            with open(paths[0]) as f:
+                same = f.read() == text
+        except OSError as e:
+            sys.stderr.write("gen_filters.py: %s\n" % e)
+            return 1
+        if not same:
+            sys.stderr.write("%s differs from what lib/gen/gen_filters.py writes; "
+                             "regenerate it\n" % paths[0])
+            return 1
+        print("%s matches the generator" % paths[0])
+        return 0
+    with open(paths[0], "w") as f:
+        f.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,166 @@
+/*
+ * lifthull.h — the whole public API of lifthull.
+ *
+ * lifthull computes exact Delaunay triangulations in dimensions 2..8 as the lower
+ * convex hull of the sites lifted onto the paraboloid z = |x|^2 (Brown 1979;
+ * Edelsbrunner & Seidel 1986). If it is not in this header, it is not API.
+ *
+ * Conventions that hold for every function below:
+ *   - Thread rule: every handle is used by one thread at a time ("one handle per
+ *     thread"); distinct handles share nothing, there is no global state.
+ *   - Failure: functions that can fail return an lh_status; on failure they free
+ *     what they built and leave the caller's arrays untouched.
+ *   - Freeing NULL is a no-op.
+ *   - Points are arrays of doubles; a point in R^k is k consecutive doubles.
+ *
+ * Coordinate range (the "accepted range"):
+ *   Every finite double is accepted, subnormals included: the exact stage of the
+ *   predicates is integer arithmetic with no exponent limit, so no square or product
+ *   can overflow or underflow there. NaN and +-Inf are rejected by
+ *   lh_coords_validate() with LH_ERR_NONFINITE. The floating-point filter is used
+ *   only where it is proven correct: when every column of a predicate's matrix has
+ *   its largest magnitude within [2^-(900/g), 2^(900/g)] (g the predicate's degree,
+ *   k for orient_k and d+2 for insphere_d); outside that band the answer comes from
+ *   the exact stage, still correct but slower (see docs/predicates.md).
+ */
+#ifndef LIFTHULL_H
+#define LIFTHULL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- version -------------------------------------------------------------------- */
+
+#define LH_VERSION_MAJOR 0
+#define LH_VERSION_MINOR 1
+#define LH_VERSION_PATCH 0
+#define LH_VERSION_STRING "0.1.0"
+
+/* The library's version as MAJOR*10000 + MINOR*100 + PATCH, at run time. */
+int lh_version_number(void);
+/* The library's version as "MAJOR.MINOR.PATCH", at run time (static storage). */
+const char *lh_version_string(void);
+
+/* ---- status codes --------------------------------------------------------------- */
+
+/* X(name, pinned value, message). Values never change once released. */
+#define LH_STATUS_LIST(X)                                                          \
+    X(LH_OK, 0, "success")                                                         \
+    X(LH_ERR_NOMEM, 1, "out of memory")                                            \
+    X(LH_ERR_INVALID_ARGUMENT, 2, "invalid argument")                              \
+    X(LH_ERR_NONFINITE, 3, "coordinate is NaN or infinite")                        \
+    X(LH_ERR_DIMENSION, 4, "dimension out of the supported range")                 \
+    X(LH_ERR_TOO_LARGE, 5, "count too large (size arithmetic would overflow)")     \
+    X(LH_ERR_DEGENERATE, 6, "sites span a lower-dimensional affine subspace")      \
+    X(LH_ERR_IO, 7, "input/output error")                                          \
+    X(LH_ERR_PARSE, 8, "malformed input")                                          \
+    X(LH_ERR_INTERNAL, 9, "internal consistency check failed")
+
+typedef enum lh_status {
+#define LH_STATUS_ENUM_(name, value, msg) name = value,
+    LH_STATUS_LIST(LH_STATUS_ENUM_)
+#undef LH_STATUS_ENUM_
+} lh_status;
+
+/* A one-line English message for a status (static storage, never NULL; an unknown
+ * value gives "unknown status"). */
+const char *lh_status_message(lh_status status);
+/* The enumerator's name, e.g. "LH_ERR_NONFINITE" (static storage, never NULL). */
+const char *lh_status_name(lh_status status);
+
+/* ---- memory --------------------------------------------------------------------- */
+
+/* Allocator hooks, per handle. Passing NULL wherever an allocator is asked for
+ * means malloc/realloc/free. `user` is handed back to every call. realloc is not
+ * used: handles allocate and free only. */
+typedef struct lh_allocator {
+    void *(*alloc)(void *user, size_t size); /* NULL on failure */
+    void (*free)(void *user, void *ptr);     /* ptr may be NULL */
+    void *user;
+} lh_allocator;
+
+/* ---- input validation ------------------------------------------------------------ */
+
+/* Dimensions the predicates serve. */
+#define LH_ORIENT_MAX_DIM 8   /* orient_k, k = 1..8   */
+#define LH_INSPHERE_MAX_DIM 7 /* insphere_d, d = 1..7 */
+
+/* Checks n points of dimension d (row-major, n*d doubles) against the accepted
+ * range documented at the top of this header. Returns LH_OK, LH_ERR_NONFINITE
+ * (with *bad_index, if bad_index is not NULL, set to the flat index i*d+j of the
+ * first offending coordinate), LH_ERR_INVALID_ARGUMENT (xyz NULL with n > 0, or
+ * d < 1) or LH_ERR_TOO_LARGE (n*d overflows size_t). */
+lh_status lh_coords_validate(int d, size_t n, const double *xyz, size_t *bad_index);
+
+/* ---- exact predicates ------------------------------------------------------------ */
+
+/*
+ * Definitions (homogeneous form; rows are points, the column of ones first):
+ *
+ *   orient_k(p_0..p_k)      = sign det [ 1  p_i ]            i = 0..k,  p_i in R^k
+ *                           = sign det [ p_i - p_0 ]          i = 1..k
+ *   insphere_d(p_0..p_{d+1}) = sign det [ 1  p_i  |p_i|^2 ]   i = 0..d+1, p_i in R^d
+ *                           = orient_{d+1} of the lifted points (p_i, |p_i|^2).
+ *
+ * So orient_2 > 0 for a counterclockwise triangle and orient_3 > 0 when p_3 lies on
+ * the side of the plane p_0 p_1 p_2 towards which (p_1-p_0) x (p_2-p_0) points.
+ * When orient_d(p_0..p_d) > 0, insphere_d(p_0..p_d, q) < 0 exactly when q lies
+ * strictly inside the circumsphere of p_0..p_d (q's lifted point is below the lifted
+ * simplex's hyperplane) and > 0 when strictly outside. The lifted coordinate |p|^2
+ * is never rounded: it is formed in exact arithmetic from the coordinates.
+ *
+ * Evaluation (docs/predicates.md): a semi-static floating-point filter with a
+ * proven error bound, then, only when the sign is uncertain, exact integer
+ * arithmetic. Each call counts which stage answered (lh_pred_counters).
+ *
+ * The *_sos variants apply Simulation of Simplicity (Edelsbrunner & Muecke 1990)
+ * and never return 0. Every coordinate of every point (and, for insphere, every
+ * lifted coordinate) gets its own infinitesimal; a point's infinitesimals are more
+ * significant than those of every point that precedes it in the lexicographic order
+ * of coordinates, and within a point the lifted coordinate comes first, then
+ * x_0, x_1, ... The result is the sign of the determinant of the perturbed matrix,
+ * i.e. the answer for one fixed, infinitesimally perturbed copy of the whole point
+ * set. Hence the answers of all calls are mutually consistent, they flip under the
+ * exchange of two arguments, and they depend only on the points' coordinates — not
+ * on their indices or the order of the input. Precondition: the points of one call
+ * are pairwise distinct (merge duplicates first); for equal points the answer is
+ * still +1 or -1 but breaks ties by argument position.
+ *
+ * Arguments: `pts` holds k+1 (orient_k) or d+2 (insphere_d) pointers to points of k
+ * (resp. d) finite doubles. Dimensions outside 1..LH_ORIENT_MAX_DIM (orient) or
+ * 1..LH_INSPHERE_MAX_DIM (insphere) and NULL handles return 0 (and count nothing).
+ */
+typedef struct lh_pred lh_pred;
+
+/* Creates a predicate context (counters and a scratch arena of about 0.4 MiB for the
+ * exact stage, allocated once here so that no predicate call allocates).
+ * alloc may be NULL. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
+lh_status lh_pred_create(const lh_allocator *alloc, lh_pred **out);
+void lh_pred_free(lh_pred *ctx);
+
+int lh_orient(lh_pred *ctx, int k, const double *const *pts);       /* -1, 0, +1 */
+int lh_orient_sos(lh_pred *ctx, int k, const double *const *pts);   /* -1, +1    */
+int lh_insphere(lh_pred *ctx, int d, const double *const *pts);     /* -1, 0, +1 */
+int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts); /* -1, +1    */
+
+/* How often each stage ran since creation or the last reset. */
+typedef struct lh_pred_counters {
+    uint64_t calls;         /* predicate calls (all four kinds)                      */
+    uint64_t filter_exits;  /* answered by the floating-point filter                 */
+    uint64_t exact_exits;   /* needed the exact stage                                */
+    uint64_t zero_results;  /* exact stage found an exact zero                       */
+    uint64_t sos_fast;      /* perturbation decided by one cofactor scan             */
+    uint64_t sos_general;   /* perturbation needed the general (rank-based) search   */
+} lh_pred_counters;
+
+void lh_pred_counters_get(const lh_pred *ctx, lh_pred_counters *out);
+void lh_pred_counters_reset(lh_pred *ctx);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* LIFTHULL_H */

@@ -1,0 +1,172 @@
+/*
+ * pred_exact.c — the exact stage: signs of minors of the homogeneous matrix in
+ * integer arithmetic.
+ *
+ * Every entry is made an integer by one power-of-two scale per call (bigint.h), so
+ * the sign is exact for every finite double. When the minor contains the column of
+ * ones, the first row is subtracted from the others and the determinant expanded
+ * along that column (sign +1, the 1 sits at position (0,0)); when it also contains
+ * every coordinate column, the lifted column is re-formed as |p_i - p_0|^2, a
+ * column operation that leaves the determinant unchanged and keeps the integers
+ * short. The determinant itself is a Laplace expansion along columns with every
+ * minor of the leading columns memoised per row subset: m * 2^(m-1) products for
+ * an m x m matrix, and no division.
+ */
+#include "pred_internal.h"
+
+#include <string.h>
+
+typedef struct exact_buf {
+    lh__bn ent[LH__MAXN * LH__MAXN];
+    lh__bn t[4];
+    uint32_t *layer; /* 2 * LH__LAYER_SLOTS slots, then one product buffer */
+} exact_buf;
+
+static void buf_init(exact_buf *b, uint32_t *arena)
+{
+    for (int i = 0; i < LH__MAXN * LH__MAXN; i++) b->ent[i].d = arena + (size_t)i * LH__ENTRY_LIMBS;
+    uint32_t *rest = arena + (size_t)LH__MAXN * LH__MAXN * LH__ENTRY_LIMBS;
+    for (int i = 0; i < 4; i++) b->t[i].d = rest + (size_t)i * LH__ENTRY_LIMBS;
+    b->layer = rest + 4 * LH__ENTRY_LIMBS;
+}
+
+/* Sign of the determinant of the m x m integer matrix e (row-major), m <= 8
+ * (a homogeneous minor with the column of ones is reduced by one first).
+ * Layer s holds, for every s-subset R of rows, det(e[R, 0..s-1]) expanded along
+ * its last column: sum over r in R of (-1)^(pos(r)+s-1) e[r][s-1] det(R \ r). */
+static int det_sign(exact_buf *b, int m, const lh__bn *e)
+{
+    if (m == 0) return 1;
+    if (m == 1) return lh__bn_sign(&e[0]);
+    int cap = m + 2;
+    for (int j = 0; j < m; j++) {
+        int most = 0;
+        for (int i = 0; i < m; i++)
+            if (e[i * m + j].n > most) most = e[i * m + j].n;
+        cap += most;
+    }
+    int slot[1 << (LH__MAXN - 1)], seen[LH__MAXN] = {0};
+    for (int mask = 0; mask < (1 << m); mask++) slot[mask] = seen[__builtin_popcount(mask)]++;
+
+    lh__bn lay[2][LH__LAYER_SLOTS];
+    for (int w = 0; w < 2; w++)
+        for (int k = 0; k < LH__LAYER_SLOTS; k++)
+            lay[w][k].d = b->layer + ((size_t)w * LH__LAYER_SLOTS + k) * cap;
+    lh__bn prod = {b->layer + (size_t)2 * LH__LAYER_SLOTS * cap, 0, 0};
+
+    lh__bn first[LH__MAXN]; /* layer 1: the entries of column 0, shared, not copied */
+    for (int r = 0; r < m; r++) first[slot[1 << r]] = e[r * m];
+    const lh__bn *prev = first;
+    for (int s = 2; s <= m; s++) {
+        lh__bn *cur = lay[s & 1];
+        for (int mask = 0; mask < (1 << m); mask++) {
+            if (__builtin_popcount(mask) != s) continue;
+            lh__bn *acc = &cur[slot[mask]];
+            acc->n = 0;
+            acc->neg = 0;
+            int pos = 0;
+            for (int r = 0; r < m; r++) {
+                if (!(mask & (1 << r))) continue;
+                const lh__bn *minor = &prev[slot[mask ^ (1 << r)]];
+                const lh__bn *x = &e[r * m + s - 1];
+                if (minor->n && x->n) {
+                    lh__bn_mul(&prod, x, minor);
+                    lh__bn_add(acc, acc, &prod, (pos + s - 1) & 1);
+                }
+                pos++;
+            }
+        }
+        prev = cur;
+    }
+    return lh__bn_sign(&prev[slot[(1 << m) - 1]]);
+}
+
+/* Scale for a call: the lowest set bit among the coordinates that enter (all of a
+ * row's coordinates when the lifted column enters, else only the columns used). */
+static int common_scale(const double *const *pts, int dim, int m, const int *rows,
+                        const int *cols, int has_lift)
+{
+    int scale = 0, any = 0;
+    for (int a = 0; a < m; a++) {
+        for (int c = 1; c <= dim; c++) {
+            int used = has_lift;
+            for (int b = 0; b < m && !used; b++) used = cols[b] == c;
+            double x = pts[rows[a]][c - 1];
+            if (!used || x == 0) continue;
+            int e = lh__dbl_low_exp(x);
+            if (!any || e < scale) scale = e;
+            any = 1;
+        }
+    }
+    return scale;
+}
+
+/* out = sum over all coordinates c of (p[c] - q[c])^2 (q may be NULL: plain |p|^2),
+ * at scale 2*scale. Uses b->t[0..2]. */
+static void squared_norm(exact_buf *b, lh__bn *out, const double *p, const double *q,
+                         int dim, int scale)
+{
+    lh__bn *x = &b->t[0], *y = &b->t[1], *sq = &b->t[2];
+    out->n = 0;
+    out->neg = 0;
+    for (int c = 0; c < dim; c++) {
+        lh__bn_set_dbl(x, p[c], scale);
+        if (q) {
+            lh__bn_set_dbl(y, q[c], scale);
+            lh__bn_add(x, x, y, 1);
+        }
+        lh__bn_mul(sq, x, x);
+        lh__bn_add(out, out, sq, 0);
+    }
+}
+
+int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
+                   const int *rows, const int *cols)
+{
+    if (m == 0) return 1;
+    exact_buf b;
+    buf_init(&b, ctx->arena);
+    int has_ones = cols[0] == 0, has_lift = cols[m - 1] == dim + 1;
+    int relift = has_ones && has_lift && m - 2 == dim;
+    int scale = common_scale(pts, dim, m, rows, cols, has_lift);
+    const double *base = has_ones ? pts[rows[0]] : NULL;
+    int n = m - has_ones; /* size of the integer matrix */
+    lh__bn *base_lift = &b.t[3];
+    if (has_lift && base && !relift) squared_norm(&b, base_lift, base, NULL, dim, scale);
+
+    for (int i = 0; i < n; i++) {
+        const double *p = pts[rows[i + has_ones]];
+        for (int j = 0; j < n; j++) {
+            int c = cols[j + has_ones];
+            lh__bn *e = &b.ent[i * n + j];
+            if (c == dim + 1) {
+                squared_norm(&b, e, p, relift ? base : NULL, dim, scale);
+                if (base && !relift) lh__bn_add(e, e, base_lift, 1);
+            } else {
+                lh__bn_set_dbl(e, p[c - 1], scale);
+                if (base) {
+                    lh__bn_set_dbl(&b.t[0], base[c - 1], scale);
+                    lh__bn_add(e, e, &b.t[0], 1);
+                }
+            }
+        }
+    }
+    return det_sign(&b, n, b.ent);
+}
+
+static int full_minor(lh_pred *ctx, const double *const *pts, int dim, int n)
+{
+    int idx[LH__MAXN];
+    for (int i = 0; i < n; i++) idx[i] = i;
+    return lh__minor_sign(ctx, pts, dim, n, idx, idx);
+}
+
+int lh__orient_exact(lh_pred *ctx, int k, const double *const *pts)
+{
+    return full_minor(ctx, pts, k, k + 1);
+}
+
+int lh__insphere_exact(lh_pred *ctx, int d, const double *const *pts)
+{
+    return full_minor(ctx, pts, d, d + 2);
+}

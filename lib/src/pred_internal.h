@@ -1,0 +1,62 @@
+/*
+ * pred_internal.h — the predicate context and the stages behind lifthull.h's
+ * predicates: filter (pred_filter.gen.h), exact (pred_exact.c), perturbation
+ * (pred_sos.c).
+ *
+ * The homogeneous matrix. For points p_0..p_{N-1} in R^dim, row i is
+ *     [ 1, p_i[0], ..., p_i[dim-1] ]                 (orient, N = dim + 1)
+ *     [ 1, p_i[0], ..., p_i[dim-1], |p_i|^2 ]        (insphere, N = dim + 2)
+ * Column 0 is the column of ones, columns 1..dim the coordinates, column dim+1
+ * the lifted coordinate. Both predicates are the sign of det of this N x N matrix.
+ */
+#ifndef LH_PRED_INTERNAL_H
+#define LH_PRED_INTERNAL_H
+
+#include "bigint.h"
+#include "lifthull.h"
+
+#define LH__MAXN 9 /* largest homogeneous matrix: orient_8 and insphere_7 */
+
+/* Limbs of one matrix entry: a difference of two doubles (67) or a sum of up to
+ * eight squares of such differences (2*67 + 1), with room for a carry. */
+#define LH__ENTRY_LIMBS (2 * (LH__BN_DBL_LIMBS + 1) + 2)
+/* Limbs of any minor of an (LH__MAXN-1)-square integer matrix built from such
+ * entries: (LH__MAXN-2) coordinate columns, one lifted column, carries. */
+#define LH__DET_LIMBS \
+    ((LH__MAXN - 2) * (LH__BN_DBL_LIMBS + 1) + LH__ENTRY_LIMBS + LH__MAXN + 2)
+#define LH__LAYER_SLOTS 70 /* C(8,4): the widest layer of row subsets (m <= 8) */
+
+#define LH__ARENA_LIMBS                                                       \
+    ((size_t)LH__MAXN * LH__MAXN * LH__ENTRY_LIMBS + 4 * LH__ENTRY_LIMBS +   \
+     (2 * LH__LAYER_SLOTS + 1) * (size_t)LH__DET_LIMBS)
+
+struct lh_pred {
+    lh_allocator alloc;
+    lh_pred_counters count;
+    uint32_t *arena; /* LH__ARENA_LIMBS limbs of scratch for the exact stage */
+};
+
+/* Exact sign of the minor of the homogeneous matrix of pts over the m rows `rows`
+ * and m columns `cols` (both strictly increasing; column indices as above).
+ * m <= LH__MAXN. The empty minor (m = 0) is +1. */
+int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
+                   const int *rows, const int *cols);
+
+/* Exact, unperturbed signs (no filter). */
+int lh__orient_exact(lh_pred *ctx, int k, const double *const *pts);
+int lh__insphere_exact(lh_pred *ctx, int d, const double *const *pts);
+
+/* Filtered then exact, unperturbed (the body of lh_orient without the counting of
+ * a call; used by the perturbation's fast path). */
+int lh__orient_sign(lh_pred *ctx, int k, const double *const *pts);
+
+/* Simulation of Simplicity for a homogeneous matrix whose exact determinant is 0:
+ * returns the perturbed sign, -1 or +1. `lifted` selects insphere (1) or orient. */
+int lh__sos_sign(lh_pred *ctx, const double *const *pts, int dim, int lifted);
+
+/* a * b + c evaluated as this library's predicate code evaluates it. Compiled with
+ * the predicates' flags; with contraction off it rounds twice, never fused
+ * (tests/test_pred_fma.c checks it). */
+double lh__fp_contract_probe(double a, double b, double c);
+
+#endif

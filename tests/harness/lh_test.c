@@ -1,0 +1,114 @@
+/* lh_test.c — runner and reporters for lh_test.h. */
+#include "lh_test.h"
+
+#include <stdarg.h>
+#include <string.h>
+
+enum { LH_TEST_MAX_REPORTS = 20 }; /* failure lines printed per test, then quiet */
+
+static int report(lh_test_state *t, int ok)
+{
+    t->checks++;
+    if (ok) return 1;
+    t->failures++;
+    return 0;
+}
+
+static int loud(const lh_test_state *t) { return t->failures <= LH_TEST_MAX_REPORTS; }
+
+int lh_test_check_i64(lh_test_state *t, const char *file, int line, const char *op,
+                      const char *ea, const char *eb, long long a, long long b)
+{
+    int ok = !strcmp(op, "==") ? a == b : !strcmp(op, "!=") ? a != b
+           : !strcmp(op, "<") ? a < b : !strcmp(op, "<=") ? a <= b
+           : !strcmp(op, ">") ? a > b : a >= b;
+    if (!report(t, ok) && loud(t))
+        fprintf(stderr, "%s:%d: %s: expected %s %s %s\n    left:  %lld\n    right: %lld\n",
+                file, line, t->name, ea, op, eb, a, b);
+    return ok;
+}
+
+int lh_test_check_u64(lh_test_state *t, const char *file, int line, const char *op,
+                      const char *ea, const char *eb, unsigned long long a,
+                      unsigned long long b)
+{
+    int ok = !strcmp(op, "==") ? a == b : !strcmp(op, "<=") ? a <= b : a > b;
+    if (!report(t, ok) && loud(t))
+        fprintf(stderr, "%s:%d: %s: expected %s %s %s\n    left:  %llu\n    right: %llu\n",
+                file, line, t->name, ea, op, eb, a, b);
+    return ok;
+}
+
+int lh_test_check_dbl(lh_test_state *t, const char *file, int line, const char *op,
+                      const char *ea, const char *eb, double a, double b)
+{
+    int ok = !strcmp(op, "==") ? a == b : a <= b;
+    if (!report(t, ok) && loud(t))
+        fprintf(stderr, "%s:%d: %s: expected %s %s %s\n    left:  %.17g\n    right: %.17g\n",
+                file, line, t->name, ea, op, eb, a, b);
+    return ok;
+}
+
+int lh_test_check_str(lh_test_state *t, const char *file, int line, const char *ea,
+                      const char *eb, const char *a, const char *b)
+{
+    int ok = a && b && !strcmp(a, b);
+    if (!report(t, ok) && loud(t))
+        fprintf(stderr, "%s:%d: %s: expected %s == %s\n    left:  \"%s\"\n    right: \"%s\"\n",
+                file, line, t->name, ea, eb, a ? a : "(null)", b ? b : "(null)");
+    return ok;
+}
+
+int lh_test_check_true(lh_test_state *t, const char *file, int line, const char *e, int ok)
+{
+    if (!report(t, ok) && loud(t))
+        fprintf(stderr, "%s:%d: %s: expected true: %s\n", file, line, t->name, e);
+    return ok;
+}
+
+void lh_test_note(lh_test_state *t, const char *fmt, ...)
+{
+    if (!loud(t)) return;
+    va_list ap;
+    fprintf(stderr, "    note (%s): ", t->name);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+static int selected(const char *name, int argc, char **argv)
+{
+    if (argc < 2) return 1;
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], name)) return 1;
+    return 0;
+}
+
+int lh_test_main(const lh_test_case *cases, size_t count, int argc, char **argv)
+{
+    if (argc == 2 && !strcmp(argv[1], "--list")) {
+        for (size_t i = 0; i < count; i++) puts(cases[i].name);
+        return 0;
+    }
+    size_t run = 0, failed = 0;
+    for (size_t i = 0; i < count; i++) {
+        if (!selected(cases[i].name, argc, argv)) continue;
+        lh_test_state t = {cases[i].name, 0, 0};
+        cases[i].fn(&t);
+        run++;
+        if (t.failures) {
+            failed++;
+            printf("FAIL %s (%ld of %ld checks failed)\n", t.name, t.failures, t.checks);
+        } else {
+            printf("ok   %s (%ld checks)\n", t.name, t.checks);
+        }
+        fflush(stdout);
+    }
+    if (run == 0) {
+        fprintf(stderr, "no test selected\n");
+        return 1;
+    }
+    printf("%zu passed, %zu failed\n", run - failed, failed);
+    return failed ? 1 : 0;
+}

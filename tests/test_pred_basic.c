@@ -1,0 +1,208 @@
+/* test_pred_basic.c — predicates on configurations whose signs are known by
+ * construction, in every dimension; invariance under exact translation and
+ * power-of-two scaling (which moves the work between filter and exact stage);
+ * counters; argument checks; allocation failure in lh_pred_create. */
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { MAXP = LH_ORIENT_MAX_DIM + 2 };
+
+typedef struct cfg {
+    int dim, npts;
+    double x[MAXP][LH_ORIENT_MAX_DIM];
+    const double *p[MAXP];
+} cfg;
+
+/* p_0 = 0, p_i = e_i: orient_k = +1. */
+static void unit_simplex(cfg *c, int dim, int npts)
+{
+    memset(c, 0, sizeof *c);
+    c->dim = dim;
+    c->npts = npts;
+    for (int i = 1; i <= dim; i++) c->x[i][i - 1] = 1;
+    for (int i = 0; i < npts; i++) c->p[i] = c->x[i];
+}
+
+static void set_query(cfg *c, double v)
+{
+    for (int j = 0; j < c->dim; j++) c->x[c->npts - 1][j] = v;
+}
+
+/* x -> x * 2^e + t, exact for the small dyadic coordinates used here. */
+static void transform(cfg *c, int e, double t)
+{
+    for (int i = 0; i < c->npts; i++)
+        for (int j = 0; j < c->dim; j++) c->x[i][j] = ldexp(c->x[i][j], e) + t;
+}
+
+static lh_pred *make(void)
+{
+    lh_pred *ctx = NULL;
+    if (lh_pred_create(NULL, &ctx) != LH_OK) return NULL;
+    return ctx;
+}
+
+LH_TEST(orient_of_unit_simplex_in_every_dimension)
+{
+    lh_pred *ctx = make();
+    LH_ASSERT_TRUE(ctx != NULL);
+    /* Exact transforms only: coordinates 0 and 1 become 2^e + t without rounding. */
+    static const int scales[] = {0, -1000, 900, -60, 30};
+    static const double shifts[] = {0, 0, 0, -0x1p-10, 0x1p70};
+    for (int k = 1; k <= LH_ORIENT_MAX_DIM && !LH_FAILED(); k++) {
+        for (int t = 0; t < 5; t++) {
+            cfg c;
+            unit_simplex(&c, k, k + 1);
+            transform(&c, scales[t], shifts[t]);
+            LH_EXPECT_EQ_INT(lh_orient(ctx, k, c.p), 1);
+            const double *tmp = c.p[0]; /* one exchange flips the sign */
+            c.p[0] = c.p[1];
+            c.p[1] = tmp;
+            LH_EXPECT_EQ_INT(lh_orient(ctx, k, c.p), -1);
+            c.p[0] = c.p[1]; /* a repeated point: exactly zero */
+            LH_EXPECT_EQ_INT(lh_orient(ctx, k, c.p), 0);
+            if (LH_FAILED()) {
+                LH_NOTE("k=%d scale 2^%d shift %g", k, scales[t], shifts[t]);
+                break;
+            }
+        }
+    }
+    lh_pred_free(ctx);
+}
+
+LH_TEST(insphere_inside_on_outside_in_every_dimension)
+{
+    /* Circumsphere of 0, e_1..e_d: centre (1/2,...), radius^2 d/4. The query
+     * (v,...,v) is inside for v = 1/2, on it for v = 1 and v = 0, outside for 2. */
+    lh_pred *ctx = make();
+    LH_ASSERT_TRUE(ctx != NULL);
+    static const int scales[] = {0, -1000, 400, 30, 0};
+    static const double shifts[] = {0, 0, 0, 0x1p70, 0x1p30};
+    for (int d = 1; d <= LH_INSPHERE_MAX_DIM; d++) {
+        for (int t = 0; t < 5; t++) {
+            static const double v[] = {0.5, 1.0, 2.0, 0.0};
+            static const int want[] = {-1, 0, 1, 0};
+            for (int q = 0; q < 4; q++) {
+                cfg c;
+                unit_simplex(&c, d, d + 2);
+                set_query(&c, v[q]);
+                transform(&c, scales[t], shifts[t]);
+                LH_EXPECT_EQ_INT(lh_insphere(ctx, d, c.p), want[q]);
+                if (LH_FAILED()) {
+                    LH_NOTE("d=%d scale 2^%d shift %g query %g", d, scales[t], shifts[t], v[q]);
+                    lh_pred_free(ctx);
+                    return;
+                }
+            }
+        }
+    }
+    lh_pred_free(ctx);
+}
+
+LH_TEST(counters_record_the_stage_that_answered)
+{
+    lh_pred *ctx = make();
+    LH_ASSERT_TRUE(ctx != NULL);
+    cfg c;
+    unit_simplex(&c, 3, 5);
+    set_query(&c, 0.5);
+    lh_pred_counters n;
+    LH_EXPECT_EQ_INT(lh_insphere(ctx, 3, c.p), -1); /* easy: the filter */
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.calls, 1);
+    LH_EXPECT_EQ_U64(n.filter_exits, 1);
+    LH_EXPECT_EQ_U64(n.exact_exits, 0);
+    set_query(&c, 1.0); /* cospherical: exact zero */
+    LH_EXPECT_EQ_INT(lh_insphere(ctx, 3, c.p), 0);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.calls, 2);
+    LH_EXPECT_EQ_U64(n.exact_exits, 1);
+    LH_EXPECT_EQ_U64(n.zero_results, 1);
+    LH_EXPECT_EQ_INT(lh_insphere_sos(ctx, 3, c.p) != 0, 1);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.sos_fast + n.sos_general, 1);
+    lh_pred_counters_reset(ctx);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.calls, 0);
+    LH_EXPECT_EQ_U64(n.sos_fast, 0);
+    lh_pred_free(ctx);
+}
+
+LH_TEST(invalid_arguments_answer_zero_and_count_nothing)
+{
+    lh_pred *ctx = make();
+    LH_ASSERT_TRUE(ctx != NULL);
+    cfg c;
+    unit_simplex(&c, 3, 5);
+    LH_EXPECT_EQ_INT(lh_orient(ctx, 0, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_orient(ctx, 9, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_orient_sos(ctx, 9, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_insphere(ctx, 8, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_insphere_sos(ctx, 0, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_orient(NULL, 3, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_orient(ctx, 3, NULL), 0);
+    lh_pred_counters n;
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.calls, 0);
+    lh_pred_counters_get(NULL, &n);
+    LH_EXPECT_EQ_U64(n.calls, 0);
+    lh_pred_free(ctx);
+    lh_pred_free(NULL);
+}
+
+typedef struct counting {
+    int live, fail_at, calls;
+} counting;
+
+static void *count_alloc(void *user, size_t size)
+{
+    counting *c = user;
+    if (++c->calls == c->fail_at) return NULL;
+    void *p = malloc(size);
+    if (p) c->live++;
+    return p;
+}
+
+static void count_free(void *user, void *ptr)
+{
+    counting *c = user;
+    if (ptr) c->live--;
+    free(ptr);
+}
+
+LH_TEST(create_fails_cleanly_at_every_allocation)
+{
+    for (int k = 1; k <= 3; k++) {
+        counting c = {0, k, 0};
+        lh_allocator a = {count_alloc, count_free, &c};
+        lh_pred *ctx = (lh_pred *)&c; /* must be overwritten */
+        lh_status st = lh_pred_create(&a, &ctx);
+        if (k <= 2) {
+            LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
+            LH_EXPECT_TRUE(ctx == NULL);
+        } else {
+            LH_EXPECT_EQ_INT(st, LH_OK);
+            lh_pred_free(ctx);
+        }
+        LH_EXPECT_EQ_INT(c.live, 0);
+    }
+    lh_allocator half = {count_alloc, NULL, NULL};
+    lh_pred *ctx;
+    LH_EXPECT_EQ_INT(lh_pred_create(&half, &ctx), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pred_create(NULL, NULL), LH_ERR_INVALID_ARGUMENT);
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(orient_of_unit_simplex_in_every_dimension),
+        LH_CASE(insphere_inside_on_outside_in_every_dimension),
+        LH_CASE(counters_record_the_stage_that_answered),
+        LH_CASE(invalid_arguments_answer_zero_and_count_nothing),
+        LH_CASE(create_fails_cleanly_at_every_allocation)};
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}

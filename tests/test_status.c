@@ -1,0 +1,48 @@
+/* test_status.c — pinned status values, messages, names, version. */
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <string.h>
+
+LH_TEST(status_values_are_pinned)
+{
+    LH_EXPECT_EQ_INT(LH_OK, 0);
+    LH_EXPECT_EQ_INT(LH_ERR_NOMEM, 1);
+    LH_EXPECT_EQ_INT(LH_ERR_INVALID_ARGUMENT, 2);
+    LH_EXPECT_EQ_INT(LH_ERR_NONFINITE, 3);
+    LH_EXPECT_EQ_INT(LH_ERR_DIMENSION, 4);
+    LH_EXPECT_EQ_INT(LH_ERR_TOO_LARGE, 5);
+    LH_EXPECT_EQ_INT(LH_ERR_DEGENERATE, 6);
+    LH_EXPECT_EQ_INT(LH_ERR_IO, 7);
+    LH_EXPECT_EQ_INT(LH_ERR_PARSE, 8);
+    LH_EXPECT_EQ_INT(LH_ERR_INTERNAL, 9);
+}
+
+LH_TEST(status_messages_are_distinct)
+{
+    for (int a = 0; a <= LH_ERR_INTERNAL; a++) {
+        const char *ma = lh_status_message((lh_status)a);
+        LH_EXPECT_TRUE(strcmp(ma, "unknown status") != 0);
+        LH_EXPECT_TRUE(strncmp(lh_status_name((lh_status)a), "LH_", 3) == 0);
+        for (int b = a + 1; b <= LH_ERR_INTERNAL; b++)
+            LH_EXPECT_TRUE(strcmp(ma, lh_status_message((lh_status)b)) != 0);
+    }
+    LH_EXPECT_STREQ(lh_status_message(LH_ERR_NONFINITE), "coordinate is NaN or infinite");
+    LH_EXPECT_STREQ(lh_status_name(LH_ERR_NOMEM), "LH_ERR_NOMEM");
+    LH_EXPECT_STREQ(lh_status_message((lh_status)1234), "unknown status");
+}
+
+LH_TEST(version_matches_header)
+{
+    LH_EXPECT_STREQ(lh_version_string(), LH_VERSION_STRING);
+    LH_EXPECT_EQ_INT(lh_version_number(),
+                     LH_VERSION_MAJOR * 10000 + LH_VERSION_MINOR * 100 + LH_VERSION_PATCH);
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {LH_CASE(status_values_are_pinned),
+                                         LH_CASE(status_messages_are_distinct),
+                                         LH_CASE(version_matches_header)};
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
