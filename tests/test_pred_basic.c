@@ -116,15 +116,24 @@ LH_TEST(counters_record_the_stage_that_answered)
     LH_EXPECT_EQ_U64(n.calls, 1);
     LH_EXPECT_EQ_U64(n.filter_exits, 1);
     LH_EXPECT_EQ_U64(n.exact_exits, 0);
-    set_query(&c, 1.0); /* cospherical: exact zero */
+    set_query(&c, 1.0); /* cospherical, small integers: zero by the granularity rule */
     LH_EXPECT_EQ_INT(lh_insphere(ctx, 3, c.p), 0);
     lh_pred_counters_get(ctx, &n);
     LH_EXPECT_EQ_U64(n.calls, 2);
-    LH_EXPECT_EQ_U64(n.exact_exits, 1);
+    LH_EXPECT_EQ_U64(n.grid_exits, 1);
+    LH_EXPECT_EQ_U64(n.exact_exits, 0);
     LH_EXPECT_EQ_U64(n.zero_results, 1);
+    /* The classroom example: collinear up to 2^-53, coordinates of mixed granularity,
+     * so only the exact stage can tell. */
+    const double a[2] = {0.5 + 0x1p-53, 0.5}, b[2] = {12, 12}, d[2] = {24, 24};
+    const double *abd[3] = {a, b, d};
+    LH_EXPECT_EQ_INT(lh_orient(ctx, 2, abd), -1);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.exact_exits, 1);
     LH_EXPECT_EQ_INT(lh_insphere_sos(ctx, 3, c.p) != 0, 1);
     lh_pred_counters_get(ctx, &n);
     LH_EXPECT_EQ_U64(n.sos_fast + n.sos_general, 1);
+    LH_EXPECT_EQ_U64(n.calls, 4);
     lh_pred_counters_reset(ctx);
     lh_pred_counters_get(ctx, &n);
     LH_EXPECT_EQ_U64(n.calls, 0);

@@ -114,8 +114,11 @@ lh_status lh_coords_validate(int d, size_t n, const double *xyz, size_t *bad_ind
  * is never rounded: it is formed in exact arithmetic from the coordinates.
  *
  * Evaluation (docs/predicates.md): a semi-static floating-point filter with a
- * proven error bound, then, only when the sign is uncertain, exact integer
- * arithmetic. Each call counts which stage answered (lh_pred_counters).
+ * proven error bound; when that is uncertain, the same bound against the
+ * determinant's granularity (every coordinate a multiple of a known power of two,
+ * as on integer grids, so the determinant is too: exact zeros are recognised here);
+ * only then exact integer arithmetic. Each call counts which stage answered
+ * (lh_pred_counters).
  *
  * The *_sos variants apply Simulation of Simplicity (Edelsbrunner & Muecke 1990)
  * and never return 0. Every coordinate of every point (and, for insphere, every
@@ -151,8 +154,9 @@ int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts); /* -1, +1   
 typedef struct lh_pred_counters {
     uint64_t calls;         /* predicate calls (all four kinds)                      */
     uint64_t filter_exits;  /* answered by the floating-point filter                 */
-    uint64_t exact_exits;   /* needed the exact stage                                */
-    uint64_t zero_results;  /* exact stage found an exact zero                       */
+    uint64_t grid_exits;    /* answered by the filter's bound against granularity    */
+    uint64_t exact_exits;   /* needed the exact integer stage                        */
+    uint64_t zero_results;  /* unperturbed answer was an exact 0 (any stage)         */
     uint64_t sos_fast;      /* perturbation decided by one cofactor scan             */
     uint64_t sos_general;   /* perturbation needed the general (rank-based) search   */
 } lh_pred_counters;

@@ -4,14 +4,19 @@
 
 #include <string.h>
 
+/* Trailing zero bits of m != 0. */
 static int low_zero_bits(uint64_t m)
 {
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctzll(m);
+#else
     int z = 0;
     while (!(m & 1)) {
         m >>= 1;
         z++;
     }
     return z;
+#endif
 }
 
 /* x = (-1)^neg * m * 2^e with m < 2^53, from the IEEE 754 binary64 encoding. */

@@ -7,7 +7,20 @@
 #include "pred_filter.gen.h"
 #include "pred_internal.h"
 
+#include <limits.h>
+#include <math.h>
 #include <string.h>
+
+static void subsets_init(lh__subsets *sub)
+{
+    memset(sub, 0, sizeof *sub);
+    for (int mask = 0; mask < (1 << (LH__MAXN - 1)); mask++) {
+        int size = 0;
+        for (int b = mask; b; b >>= 1) size += b & 1;
+        sub->slot[mask] = sub->count[size];
+        sub->by_size[size][sub->count[size]++] = (uint8_t)mask;
+    }
+}
 
 lh_status lh_pred_create(const lh_allocator *alloc, lh_pred **out)
 {
@@ -19,6 +32,7 @@ lh_status lh_pred_create(const lh_allocator *alloc, lh_pred **out)
     if (!ctx) return LH_ERR_NOMEM;
     memset(ctx, 0, sizeof *ctx);
     ctx->alloc = a;
+    subsets_init(&ctx->sub);
     ctx->arena = lh__alloc(&a, LH__ARENA_LIMBS * sizeof *ctx->arena);
     if (!ctx->arena) {
         lh__free(&a, ctx);
@@ -50,68 +64,83 @@ void lh_pred_counters_reset(lh_pred *ctx)
     if (ctx) memset(&ctx->count, 0, sizeof ctx->count);
 }
 
-static int orient_filter(int k, const double *const *p, int *s)
+typedef int (*filter_fn)(const double *const *, int *, double *, double *);
+
+static const filter_fn orient_filters[LH_ORIENT_MAX_DIM + 1] = {
+    NULL, lh__orient_filter_1, lh__orient_filter_2, lh__orient_filter_3,
+    lh__orient_filter_4, lh__orient_filter_5, lh__orient_filter_6,
+    lh__orient_filter_7, lh__orient_filter_8};
+static const filter_fn insphere_filters[LH_INSPHERE_MAX_DIM + 1] = {
+    NULL, lh__insphere_filter_1, lh__insphere_filter_2, lh__insphere_filter_3,
+    lh__insphere_filter_4, lh__insphere_filter_5, lh__insphere_filter_6,
+    lh__insphere_filter_7};
+
+/*
+ * The granularity rule. Every coordinate in column j is a multiple of 2^g_j (g_j the
+ * lowest set bit over the column's coordinates), hence so is every exact entry
+ * p_i - p_0 of the translated matrix, and the lifted entries are multiples of
+ * 2^(2 min g_j); the determinant is then a multiple of 2^G, G = sum g_j (+ 2 min g_j).
+ * If the filter's proven bound err < 2^(G-1), the determinant is the multiple of 2^G
+ * within err of the computed value: 0 when |computed| <= err. This decides integer
+ * grids and other exactly degenerate dyadic data without the exact stage.
+ */
+static int granular_sign(int dim, int lifted, const double *const *p, double det,
+                         double err, int *sign)
 {
-    switch (k) {
-    case 1: return lh__orient_filter_1(p, s);
-    case 2: return lh__orient_filter_2(p, s);
-    case 3: return lh__orient_filter_3(p, s);
-    case 4: return lh__orient_filter_4(p, s);
-    case 5: return lh__orient_filter_5(p, s);
-    case 6: return lh__orient_filter_6(p, s);
-    case 7: return lh__orient_filter_7(p, s);
-    default: return lh__orient_filter_8(p, s);
+    if (!(err >= 0)) return 0;
+    int npts = dim + 1 + lifted, G = 0, gmin = INT_MAX;
+    for (int j = 0; j < dim; j++) {
+        int g = INT_MAX;
+        for (int i = 0; i < npts; i++) {
+            if (p[i][j] == 0) continue;
+            int e = lh__dbl_low_exp(p[i][j]);
+            if (e < g) g = e;
+        }
+        if (g == INT_MAX) g = 0; /* an all-zero column: any granularity holds */
+        G += g;
+        if (g < gmin) gmin = g;
     }
+    if (lifted) G += 2 * gmin;
+    if (G < -2000 || !(err < ldexp(1.0, G - 1))) return 0;
+    *sign = det > err ? 1 : det < -err ? -1 : 0;
+    return 1;
 }
 
-static int insphere_filter(int d, const double *const *p, int *s)
+/* Filter, granularity rule, exact stage; counts the stage when `count` is set. */
+static int evaluate(lh_pred *ctx, int dim, int lifted, const double *const *pts, int count)
 {
-    switch (d) {
-    case 1: return lh__insphere_filter_1(p, s);
-    case 2: return lh__insphere_filter_2(p, s);
-    case 3: return lh__insphere_filter_3(p, s);
-    case 4: return lh__insphere_filter_4(p, s);
-    case 5: return lh__insphere_filter_5(p, s);
-    case 6: return lh__insphere_filter_6(p, s);
-    default: return lh__insphere_filter_7(p, s);
+    int s;
+    double det = 0, err = -1;
+    filter_fn f = lifted ? insphere_filters[dim] : orient_filters[dim];
+    if (f(pts, &s, &det, &err)) {
+        if (count) ctx->count.filter_exits++;
+    } else if (granular_sign(dim, lifted, pts, det, err, &s)) {
+        if (count) ctx->count.grid_exits++;
+    } else {
+        if (count) ctx->count.exact_exits++;
+        s = lifted ? lh__insphere_exact(ctx, dim, pts) : lh__orient_exact(ctx, dim, pts);
     }
+    if (count && !s) ctx->count.zero_results++;
+    return s;
 }
 
 int lh__orient_sign(lh_pred *ctx, int k, const double *const *pts)
 {
-    int s;
-    if (orient_filter(k, pts, &s)) return s;
-    return lh__orient_exact(ctx, k, pts);
-}
-
-/* Counts which stage answered a public call. */
-static int counted(lh_pred *ctx, int filtered, int s)
-{
-    if (filtered) {
-        ctx->count.filter_exits++;
-        return s;
-    }
-    ctx->count.exact_exits++;
-    if (!s) ctx->count.zero_results++;
-    return s;
+    return evaluate(ctx, k, 0, pts, 0);
 }
 
 int lh_orient(lh_pred *ctx, int k, const double *const *pts)
 {
     if (!ctx || !pts || k < 1 || k > LH_ORIENT_MAX_DIM) return 0;
     ctx->count.calls++;
-    int s;
-    if (orient_filter(k, pts, &s)) return counted(ctx, 1, s);
-    return counted(ctx, 0, lh__orient_exact(ctx, k, pts));
+    return evaluate(ctx, k, 0, pts, 1);
 }
 
 int lh_insphere(lh_pred *ctx, int d, const double *const *pts)
 {
     if (!ctx || !pts || d < 1 || d > LH_INSPHERE_MAX_DIM) return 0;
     ctx->count.calls++;
-    int s;
-    if (insphere_filter(d, pts, &s)) return counted(ctx, 1, s);
-    return counted(ctx, 0, lh__insphere_exact(ctx, d, pts));
+    return evaluate(ctx, d, 1, pts, 1);
 }
 
 int lh_orient_sos(lh_pred *ctx, int k, const double *const *pts)

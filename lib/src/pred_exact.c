@@ -22,9 +22,10 @@ typedef struct exact_buf {
     uint32_t *layer; /* 2 * LH__LAYER_SLOTS slots, then one product buffer */
 } exact_buf;
 
-static void buf_init(exact_buf *b, uint32_t *arena)
+/* Points the first `entries` matrix entries and the temporaries into the arena. */
+static void buf_init(exact_buf *b, uint32_t *arena, int entries)
 {
-    for (int i = 0; i < LH__MAXN * LH__MAXN; i++) b->ent[i].d = arena + (size_t)i * LH__ENTRY_LIMBS;
+    for (int i = 0; i < entries; i++) b->ent[i].d = arena + (size_t)i * LH__ENTRY_LIMBS;
     uint32_t *rest = arena + (size_t)LH__MAXN * LH__MAXN * LH__ENTRY_LIMBS;
     for (int i = 0; i < 4; i++) b->t[i].d = rest + (size_t)i * LH__ENTRY_LIMBS;
     b->layer = rest + 4 * LH__ENTRY_LIMBS;
@@ -34,7 +35,7 @@ static void buf_init(exact_buf *b, uint32_t *arena)
  * (a homogeneous minor with the column of ones is reduced by one first).
  * Layer s holds, for every s-subset R of rows, det(e[R, 0..s-1]) expanded along
  * its last column: sum over r in R of (-1)^(pos(r)+s-1) e[r][s-1] det(R \ r). */
-static int det_sign(exact_buf *b, int m, const lh__bn *e)
+static int det_sign(exact_buf *b, const lh__subsets *sub, int m, const lh__bn *e)
 {
     if (m == 0) return 1;
     if (m == 1) return lh__bn_sign(&e[0]);
@@ -45,12 +46,11 @@ static int det_sign(exact_buf *b, int m, const lh__bn *e)
             if (e[i * m + j].n > most) most = e[i * m + j].n;
         cap += most;
     }
-    int slot[1 << (LH__MAXN - 1)], seen[LH__MAXN] = {0};
-    for (int mask = 0; mask < (1 << m); mask++) slot[mask] = seen[__builtin_popcount(mask)]++;
-
+    const uint8_t *slot = sub->slot;
+    static const int widest[LH__MAXN] = {1, 1, 2, 3, 6, 10, 20, 35, 70}; /* C(m, m/2) */
     lh__bn lay[2][LH__LAYER_SLOTS];
     for (int w = 0; w < 2; w++)
-        for (int k = 0; k < LH__LAYER_SLOTS; k++)
+        for (int k = 0; k < widest[m]; k++)
             lay[w][k].d = b->layer + ((size_t)w * LH__LAYER_SLOTS + k) * cap;
     lh__bn prod = {b->layer + (size_t)2 * LH__LAYER_SLOTS * cap, 0, 0};
 
@@ -59,8 +59,8 @@ static int det_sign(exact_buf *b, int m, const lh__bn *e)
     const lh__bn *prev = first;
     for (int s = 2; s <= m; s++) {
         lh__bn *cur = lay[s & 1];
-        for (int mask = 0; mask < (1 << m); mask++) {
-            if (__builtin_popcount(mask) != s) continue;
+        for (int t = 0; t < sub->count[s] && sub->by_size[s][t] < (1 << m); t++) {
+            int mask = sub->by_size[s][t];
             lh__bn *acc = &cur[slot[mask]];
             acc->n = 0;
             acc->neg = 0;
@@ -86,13 +86,12 @@ static int det_sign(exact_buf *b, int m, const lh__bn *e)
 static int common_scale(const double *const *pts, int dim, int m, const int *rows,
                         const int *cols, int has_lift)
 {
-    int scale = 0, any = 0;
+    int used[LH__MAXN + 1] = {0}, scale = 0, any = 0;
+    for (int b = 0; b < m; b++) used[cols[b]] = 1;
     for (int a = 0; a < m; a++) {
         for (int c = 1; c <= dim; c++) {
-            int used = has_lift;
-            for (int b = 0; b < m && !used; b++) used = cols[b] == c;
             double x = pts[rows[a]][c - 1];
-            if (!used || x == 0) continue;
+            if (!(used[c] || has_lift) || x == 0) continue;
             int e = lh__dbl_low_exp(x);
             if (!any || e < scale) scale = e;
             any = 1;
@@ -125,8 +124,8 @@ int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
 {
     if (m == 0) return 1;
     exact_buf b;
-    buf_init(&b, ctx->arena);
     int has_ones = cols[0] == 0, has_lift = cols[m - 1] == dim + 1;
+    buf_init(&b, ctx->arena, (m - has_ones) * (m - has_ones));
     int relift = has_ones && has_lift && m - 2 == dim;
     int scale = common_scale(pts, dim, m, rows, cols, has_lift);
     const double *base = has_ones ? pts[rows[0]] : NULL;
@@ -151,7 +150,7 @@ int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
             }
         }
     }
-    return det_sign(&b, n, b.ent);
+    return det_sign(&b, &ctx->sub, n, b.ent);
 }
 
 static int full_minor(lh_pred *ctx, const double *const *pts, int dim, int n)

@@ -30,9 +30,19 @@
     ((size_t)LH__MAXN * LH__MAXN * LH__ENTRY_LIMBS + 4 * LH__ENTRY_LIMBS +   \
      (2 * LH__LAYER_SLOTS + 1) * (size_t)LH__DET_LIMBS)
 
+/* Row subsets of an m x m matrix (m <= 8) as bit masks, grouped by size in
+ * increasing order: the masks below 2^m of size s are a prefix of subsets[s], and
+ * slot[mask] is a mask's index in its group. Filled by lh_pred_create. */
+typedef struct lh__subsets {
+    uint8_t by_size[LH__MAXN][LH__LAYER_SLOTS];
+    uint8_t count[LH__MAXN];
+    uint8_t slot[1 << (LH__MAXN - 1)];
+} lh__subsets;
+
 struct lh_pred {
     lh_allocator alloc;
     lh_pred_counters count;
+    lh__subsets sub;
     uint32_t *arena; /* LH__ARENA_LIMBS limbs of scratch for the exact stage */
 };
 

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs the Debian packages lifthull needs, only those that are missing.
+#   scripts/deps.sh build   compiler and CMake: enough to build and run the tool
+#   scripts/deps.sh test    also the test and benchmark oracles (GMP, CGAL, Eigen,
+#                           Qhull, TetGen), clang and Python for the generated-code check
+# Works as root (as in CI) or through sudo; never asks questions (no stdin needed).
+set -euo pipefail
+
+build_pkgs=(gcc make cmake)
+test_pkgs=(g++ clang libclang-rt-14-dev python3 libgmp-dev libcgal-dev libeigen3-dev
+           libmpfr-dev qhull-bin libqhull-dev tetgen libtet1.5-dev)
+
+case "${1:-build}" in
+  build) want=("${build_pkgs[@]}") ;;
+  test) want=("${build_pkgs[@]}" "${test_pkgs[@]}") ;;
+  *) echo "usage: scripts/deps.sh build|test" >&2; exit 2 ;;
+esac
+
+missing=()
+for p in "${want[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "deps: installing ${missing[*]}" >&2
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "deps: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+  sudo="sudo -n"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
