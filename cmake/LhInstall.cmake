@@ -16,5 +16,7 @@ write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/lifthullConfigVersi
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/lifthullConfig.cmake
   ${CMAKE_CURRENT_BINARY_DIR}/lifthullConfigVersion.cmake DESTINATION ${LH_CMAKE_DIR})
 
+# Relocatable: the prefix is found from the .pc file's own place (lib/pkgconfig/..).
+file(RELATIVE_PATH LH_PC_UP "/root/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/root")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/lifthull.pc.in ${CMAKE_CURRENT_BINARY_DIR}/lifthull.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/lifthull.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

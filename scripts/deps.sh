@@ -7,7 +7,7 @@
 set -euo pipefail
 
 build_pkgs=(gcc make cmake)
-test_pkgs=(g++ clang libclang-rt-14-dev python3 libgmp-dev libcgal-dev libeigen3-dev
+test_pkgs=(g++ clang pkg-config libclang-rt-14-dev python3 libgmp-dev libcgal-dev libeigen3-dev
            libmpfr-dev qhull-bin libqhull-dev tetgen libtet1.5-dev)
 
 case "${1:-build}" in
