@@ -64,16 +64,32 @@ void lh_pred_counters_reset(lh_pred *ctx)
     if (ctx) memset(&ctx->count, 0, sizeof ctx->count);
 }
 
-typedef int (*filter_fn)(const double *const *, int *, double *, double *);
-
-static const filter_fn orient_filters[LH_ORIENT_MAX_DIM + 1] = {
-    NULL, lh__orient_filter_1, lh__orient_filter_2, lh__orient_filter_3,
-    lh__orient_filter_4, lh__orient_filter_5, lh__orient_filter_6,
-    lh__orient_filter_7, lh__orient_filter_8};
-static const filter_fn insphere_filters[LH_INSPHERE_MAX_DIM + 1] = {
-    NULL, lh__insphere_filter_1, lh__insphere_filter_2, lh__insphere_filter_3,
-    lh__insphere_filter_4, lh__insphere_filter_5, lh__insphere_filter_6,
-    lh__insphere_filter_7};
+/* Direct calls (not a table of pointers) so that each generated filter is inlined. */
+static inline int run_filter(int dim, int lifted, const double *const *p, int *s,
+                             double *det, double *err)
+{
+    if (!lifted) {
+        switch (dim) {
+        case 1: return lh__orient_filter_1(p, s, det, err);
+        case 2: return lh__orient_filter_2(p, s, det, err);
+        case 3: return lh__orient_filter_3(p, s, det, err);
+        case 4: return lh__orient_filter_4(p, s, det, err);
+        case 5: return lh__orient_filter_5(p, s, det, err);
+        case 6: return lh__orient_filter_6(p, s, det, err);
+        case 7: return lh__orient_filter_7(p, s, det, err);
+        default: return lh__orient_filter_8(p, s, det, err);
+        }
+    }
+    switch (dim) {
+    case 1: return lh__insphere_filter_1(p, s, det, err);
+    case 2: return lh__insphere_filter_2(p, s, det, err);
+    case 3: return lh__insphere_filter_3(p, s, det, err);
+    case 4: return lh__insphere_filter_4(p, s, det, err);
+    case 5: return lh__insphere_filter_5(p, s, det, err);
+    case 6: return lh__insphere_filter_6(p, s, det, err);
+    default: return lh__insphere_filter_7(p, s, det, err);
+    }
+}
 
 /*
  * The granularity rule. Every coordinate in column j is a multiple of 2^g_j (g_j the
@@ -107,12 +123,11 @@ static int granular_sign(int dim, int lifted, const double *const *p, double det
 }
 
 /* Filter, granularity rule, exact stage; counts the stage when `count` is set. */
-static int evaluate(lh_pred *ctx, int dim, int lifted, const double *const *pts, int count)
+static inline int evaluate(lh_pred *ctx, int dim, int lifted, const double *const *pts, int count)
 {
     int s;
     double det = 0, err = -1;
-    filter_fn f = lifted ? insphere_filters[dim] : orient_filters[dim];
-    if (f(pts, &s, &det, &err)) {
+    if (run_filter(dim, lifted, pts, &s, &det, &err)) {
         if (count) ctx->count.filter_exits++;
     } else if (granular_sign(dim, lifted, pts, det, err, &s)) {
         if (count) ctx->count.grid_exits++;
