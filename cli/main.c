@@ -12,6 +12,13 @@ static void usage(FILE *out)
             "       lifthull --version | --help\n"
             "\n"
             "commands:\n"
+            "  delaunay [-s] [FILE]\n"
+            "                     Delaunay triangulation of the points in FILE (or standard\n"
+            "                     input), Qhull's point format (dimension, count, coordinates;\n"
+            "                     rbox output as it is); writes the simplices in Qhull's 'i'\n"
+            "                     format (count, then one simplex per line, 0-based site\n"
+            "                     indices); -s writes a summary instead.\n"
+            "                     e.g.  rbox 1000 D3 | lifthull delaunay\n"
             "  selfcheck [FILE]   check the exact predicates on near-degenerate cases\n"
             "                     (FILE: lines 'orient K SIGN coords...' or\n"
             "                     'insphere D SIGN coords...'; default: the bundled\n"
@@ -36,6 +43,7 @@ int main(int argc, char **argv)
         return LH_EXIT_OK;
     }
     if (!strcmp(cmd, "selfcheck")) return lh_cli_selfcheck(argc - 2, argv + 2);
+    if (!strcmp(cmd, "delaunay")) return lh_cli_delaunay(argc - 2, argv + 2);
     fprintf(stderr, "lifthull: unknown command '%s' (try lifthull --help)\n", cmd);
     return LH_EXIT_USAGE;
 }

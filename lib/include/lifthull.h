@@ -164,6 +164,87 @@ typedef struct lh_pred_counters {
 void lh_pred_counters_get(const lh_pred *ctx, lh_pred_counters *out);
 void lh_pred_counters_reset(lh_pred *ctx);
 
+/* ---- Delaunay triangulation ------------------------------------------------------ */
+
+/* Dimensions the triangulation serves. */
+#define LH_DELAUNAY_MIN_DIM 2
+#define LH_DELAUNAY_MAX_DIM 8
+
+/* Options of lh_delaunay. Initialise with lh_options_default(); every field's default
+ * is documented beside it. */
+typedef struct lh_options {
+    const lh_allocator *alloc; /* NULL: malloc/free                                 */
+    uint64_t seed;             /* insertion order and walk randomisation; the output
+                                  does not depend on it (default 0x5eed)            */
+} lh_options;
+
+void lh_options_default(lh_options *opt);
+
+/*
+ * lh_delaunay: the Delaunay triangulation of n sites in R^d (d = 2..8), row-major in
+ * xyz (n*d doubles; copied, so the array may be freed afterwards).
+ *
+ * Exact: every decision is an exact predicate (see above). Cospherical sites are
+ * resolved by the symbolic perturbation of the lifted coordinates (lifthull.h,
+ * predicates), so the result is a proper triangulation — every simplex has positive
+ * volume — that depends only on the set of sites: not on their order, not on
+ * opt->seed. Sites on the boundary of the convex hull are vertices. Exact duplicates
+ * are merged: the first occurrence is the vertex, lh_tri_duplicate_of maps each site
+ * to it.
+ *
+ * Output, canonical: each simplex lists its d+1 site indices (input numbering) in
+ * increasing order except that the last two are exchanged when needed for positive
+ * orientation (orient_d > 0); simplices are sorted lexicographically.
+ *
+ * Returns LH_OK; LH_ERR_DIMENSION (d outside 2..8); LH_ERR_INVALID_ARGUMENT (out or
+ * xyz NULL, or an allocator without hooks); LH_ERR_TOO_LARGE (n*d overflows, or more
+ * than INT32_MAX - 1 sites); LH_ERR_NONFINITE (NaN or infinity: lh_tri_error_index
+ * cannot be asked since no handle exists, so the index is reported through
+ * lh_coords_validate); LH_ERR_DEGENERATE (fewer than d+1 distinct sites, or all
+ * sites in an affine subspace of dimension < d — lh_delaunay_affine_dim tells which);
+ * LH_ERR_NOMEM. On failure *out is NULL and nothing is leaked.
+ */
+typedef struct lh_tri lh_tri;
+lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
+                      lh_tri **out);
+
+/* The affine dimension spanned by n sites in R^d (0 for one distinct site, -1 for
+ * none), computed exactly; LH_ERR_* as lh_delaunay for bad arguments. */
+lh_status lh_affine_dim(int d, size_t n, const double *xyz, int *dim);
+
+int lh_tri_dim(const lh_tri *t);             /* d                                     */
+size_t lh_tri_site_count(const lh_tri *t);   /* n, duplicates included                */
+size_t lh_tri_count(const lh_tri *t);        /* finite simplices                      */
+/* (d+1) * lh_tri_count indices into the sites, canonical order (see lh_delaunay). */
+const int32_t *lh_tri_simplices(const lh_tri *t);
+/* (d+1) * lh_tri_count: neighbour k of simplex s is across the facet opposite its
+ * k-th vertex; -1 across the convex hull. */
+const int32_t *lh_tri_neighbors(const lh_tri *t);
+/* Convex hull facets: lh_tri_hull_count facets of d site indices each, ordered so that
+ * orient_d(facet, p) > 0 for points p strictly outside the hull. */
+size_t lh_tri_hull_count(const lh_tri *t);
+const int32_t *lh_tri_hull_facets(const lh_tri *t);
+/* Per site: one simplex incident to it (-1 for a merged duplicate). */
+const int32_t *lh_tri_vertex_simplex(const lh_tri *t);
+/* Per site: the index of the site it was merged into (itself if it is a vertex). */
+const int32_t *lh_tri_duplicate_of(const lh_tri *t);
+size_t lh_tri_duplicate_count(const lh_tri *t); /* sites merged into an earlier one */
+void lh_tri_free(lh_tri *t);
+
+/*
+ * lh_check_delaunay: exact validity check of a triangulation given as sites and
+ * simplices (any simplex order, any vertex order): every simplex has positive volume
+ * after orienting it; every facet is shared by at most two simplices; every interior
+ * facet is locally Delaunay (the opposite vertex is not strictly inside the other
+ * simplex's circumsphere); the boundary is locally convex, so the simplices tile the
+ * convex hull; every site is a vertex or an exact duplicate of one. Returns LH_OK or
+ * LH_ERR_INTERNAL with a one-line reason in msg (msg may be NULL; msg_size bytes).
+ */
+lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
+                            const int32_t *simplices, char *msg, size_t msg_size);
+/* The same for a handle, also verifying its neighbour and hull arrays. */
+lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,5 +1,5 @@
 /* alloc.c — the default allocator and the per-handle hooks. */
-#include "alloc.h"
+#include "lh_alloc.h"
 
 #include <stdlib.h>
 

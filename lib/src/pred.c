@@ -3,7 +3,7 @@
  * perturbation; the context that holds counters and the exact stage's scratch.
  * Stages: pred_filter.gen.h (generated), pred_exact.c, pred_sos.c.
  */
-#include "alloc.h"
+#include "lh_alloc.h"
 #include "pred_filter.gen.h"
 #include "pred_internal.h"
 

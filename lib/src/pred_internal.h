@@ -13,6 +13,7 @@
 #define LH_PRED_INTERNAL_H
 
 #include "bigint.h"
+#include "lh_exact.h"
 #include "lifthull.h"
 
 #define LH__MAXN 9 /* largest homogeneous matrix: orient_8 and insphere_7 */
@@ -45,12 +46,6 @@ struct lh_pred {
     lh__subsets sub;
     uint32_t *arena; /* LH__ARENA_LIMBS limbs of scratch for the exact stage */
 };
-
-/* Exact sign of the minor of the homogeneous matrix of pts over the m rows `rows`
- * and m columns `cols` (both strictly increasing; column indices as above).
- * m <= LH__MAXN. The empty minor (m = 0) is +1. */
-int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
-                   const int *rows, const int *cols);
 
 /* Exact, unperturbed signs (no filter). */
 int lh__orient_exact(lh_pred *ctx, int k, const double *const *pts);

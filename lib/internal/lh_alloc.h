@@ -1,4 +1,4 @@
-/* alloc.h — allocation through a handle's allocator hooks (lh_allocator). */
+/* lh_alloc.h — allocation through a handle's allocator hooks (lh_allocator). */
 #ifndef LH_ALLOC_H
 #define LH_ALLOC_H
 

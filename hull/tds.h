@@ -1,0 +1,66 @@
+/*
+ * tds.h — the cell store of lifthull's incremental engine and its one mutating
+ * operation, the insertion of a point into a cavity (Bowyer 1981; Watson 1981, in
+ * the lifted view: the facets of the lifted hull visible from the new point are
+ * replaced by the cone from it to their horizon).
+ *
+ * A cell is nv vertex indices and nv neighbour indices in two flat arrays:
+ * nbr[c*nv + k] is the cell across the facet opposite vert[c*nv + k] (the facet
+ * made of the other nv-1 vertices). The store never reads a coordinate; what a
+ * vertex index means, and the vertex LH__INF, are the caller's. Cells form a closed
+ * pseudo-manifold: every facet has exactly two cells. Freed cells go on a free list
+ * (vert[c*nv] == LH__DEAD, the next free cell in nbr[c*nv]).
+ */
+#ifndef LH_TDS_H
+#define LH_TDS_H
+
+#include "lifthull.h"
+
+#define LH__INF (-1)  /* the vertex at infinity (the caller's convention) */
+#define LH__DEAD (-2) /* vert[c*nv] of a free cell */
+
+typedef struct lh__tds {
+    lh_allocator alloc;
+    int nv;           /* vertices (and neighbours) per cell */
+    int32_t *vert;    /* nv per cell */
+    int32_t *nbr;     /* nv per cell */
+    uint32_t *stamp;  /* per cell: visit marks of the current insertion */
+    int32_t cap;      /* cells allocated */
+    int32_t top;      /* cells ever used: indices < top are live or free */
+    int32_t free_head;
+    int32_t live;     /* cells in use */
+    uint32_t round;   /* insertion counter behind the stamps */
+    /* Scratch of one insertion, kept between insertions (no allocation once warm). */
+    int32_t *cells, *bound, *fresh;
+    size_t cells_cap, bound_cap, fresh_cap;
+    size_t ncells, nbound; /* conflict cells; boundary facets (pairs cell, index) */
+} lh__tds;
+
+/* Decides whether a cell conflicts with the point being inserted (its facet in the
+ * lifted hull is visible from it). Must not modify the store. */
+typedef int (*lh__conflict_fn)(void *user, int32_t cell);
+
+lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, int32_t cap_hint);
+void lh__tds_release(lh__tds *t);
+/* A new cell with unset contents, or -1 when memory runs out. */
+int32_t lh__tds_new_cell(lh__tds *t);
+lh_status lh__tds_reserve(lh__tds *t, size_t extra);
+void lh__tds_kill(lh__tds *t, int32_t c);
+static inline int lh__tds_dead(const lh__tds *t, int32_t c) { return t->vert[(size_t)c * t->nv] == LH__DEAD; }
+/* Index k with nbr[c][k] == other; -1 if none. */
+int lh__tds_mirror(const lh__tds *t, int32_t c, int32_t other);
+/* Sets the neighbours of the cells list[0..count-1] by matching shared facets
+ * (quadratic: for the first cells of a triangulation only). */
+void lh__tds_link_all(lh__tds *t, const int32_t *list, int count);
+
+/*
+ * Inserts vertex q. `start` must conflict with q; the conflict region must be the
+ * star-shaped set of cells the predicate marks (connected through facets). Each
+ * boundary facet (c, k) of the region becomes the new cell c with vertex k replaced
+ * by q, which keeps the orientation of c. Afterwards t->fresh[0..t->nbound-1] are the
+ * new cells. On LH_ERR_NOMEM the store is unchanged.
+ */
+lh_status lh__tds_insert(lh__tds *t, int32_t start, int32_t q, lh__conflict_fn conflict,
+                         void *user);
+
+#endif

@@ -1,0 +1,13 @@
+/* lh_exact.h — lib's exact stage for the other modules (cross-module internal). */
+#ifndef LH_EXACT_H
+#define LH_EXACT_H
+
+#include "lifthull.h"
+
+/* Exact sign of the minor of the homogeneous matrix of pts over the m rows `rows`
+ * and m columns `cols`, both strictly increasing. Row i is [1, p_i[0..dim-1]] and,
+ * when column dim+1 is asked for, |p_i|^2 there. m <= 9; the empty minor is +1. */
+int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
+                   const int *rows, const int *cols);
+
+#endif

@@ -1,0 +1,23 @@
+/* sort.c — stable bottom-up merge sort of indices (lh_sort.h). */
+#include "lh_sort.h"
+
+#include <string.h>
+
+void lh__sort_idx(int32_t *idx, int32_t *tmp, size_t count, lh__cmp_fn cmp, const void *ctx)
+{
+    int32_t *src = idx, *dst = tmp;
+    for (size_t width = 1; width < count; width *= 2) {
+        for (size_t lo = 0; lo < count; lo += 2 * width) {
+            size_t mid = lo + width < count ? lo + width : count;
+            size_t hi = lo + 2 * width < count ? lo + 2 * width : count;
+            size_t i = lo, j = mid, o = lo;
+            while (i < mid && j < hi) dst[o++] = cmp(ctx, src[j], src[i]) < 0 ? src[j++] : src[i++];
+            while (i < mid) dst[o++] = src[i++];
+            while (j < hi) dst[o++] = src[j++];
+        }
+        int32_t *t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != idx) memcpy(idx, src, count * sizeof *idx);
+}

@@ -1,0 +1,380 @@
+/*
+ * check.c — exact validity of a Delaunay triangulation given as sites + simplices.
+ *
+ * A set of positively oriented simplices where every facet has at most two
+ * simplices, the two on opposite sides, that is connected through facets and
+ * whose boundary is locally convex, tiles a convex polytope; if moreover every
+ * interior facet is locally Delaunay, it is the Delaunay triangulation of its
+ * vertices (Delaunay's lemma; see e.g. Edelsbrunner, "Geometry and Topology for
+ * Mesh Generation", 2001, ch. 1), and if every site is a vertex or a duplicate of
+ * one, of the sites. Each condition is tested with the exact predicates.
+ */
+#include "dt.h"
+#include "lh_sort.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+typedef struct chk {
+    lh_allocator alloc;
+    int d, nv;
+    size_t n, count;
+    const double *xyz;
+    int32_t *simp;   /* oriented copy */
+    int32_t *rec;    /* facet records: d sorted vertices, simplex, index */
+    int32_t *nbr;    /* computed neighbours */
+    lh_pred *pred;
+    char *msg;
+    size_t msg_size;
+} chk;
+
+static lh_status fail(chk *c, const char *fmt, ...)
+{
+    if (c->msg && c->msg_size) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(c->msg, c->msg_size, fmt, ap);
+        va_end(ap);
+    }
+    return LH_ERR_INTERNAL;
+}
+
+static const double *site(const chk *c, int32_t v) { return c->xyz + (size_t)v * c->d; }
+
+static int orient_of(chk *c, const int32_t *v, int replace, int32_t by)
+{
+    const double *p[LH_DELAUNAY_MAX_DIM + 1];
+    for (int k = 0; k < c->nv; k++) p[k] = site(c, k == replace ? by : v[k]);
+    return lh_orient(c->pred, c->d, p);
+}
+
+/* Indices valid and distinct, volume nonzero; stored positively oriented. */
+static lh_status check_simplices(chk *c)
+{
+    for (size_t s = 0; s < c->count; s++) {
+        int32_t *v = c->simp + s * c->nv;
+        for (int k = 0; k < c->nv; k++) {
+            if (v[k] < 0 || (size_t)v[k] >= c->n)
+                return fail(c, "simplex %zu: vertex %d is not a site index", s, (int)v[k]);
+            for (int j = 0; j < k; j++)
+                if (v[j] == v[k]) return fail(c, "simplex %zu repeats site %d", s, (int)v[k]);
+        }
+        int o = orient_of(c, v, -1, 0);
+        if (o == 0) return fail(c, "simplex %zu is flat (zero volume)", s);
+        if (o < 0) {
+            int32_t x = v[0];
+            v[0] = v[1];
+            v[1] = x;
+        }
+    }
+    return LH_OK;
+}
+
+typedef struct rec_ctx {
+    const int32_t *rec;
+    int w, keylen;
+} rec_ctx;
+
+static int rec_cmp(const void *vctx, int32_t a, int32_t b)
+{
+    const rec_ctx *r = vctx;
+    const int32_t *x = r->rec + (size_t)a * r->w, *y = r->rec + (size_t)b * r->w;
+    for (int k = 0; k < r->keylen; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
+
+static void sort_small(int32_t *v, int m)
+{
+    for (int i = 1; i < m; i++)
+        for (int j = i; j > 0 && v[j] < v[j - 1]; j--) {
+            int32_t x = v[j];
+            v[j] = v[j - 1];
+            v[j - 1] = x;
+        }
+}
+
+/* Matches records of `keylen` sorted vertices (+ payload up to width w) and calls
+ * pair() for each pair; more than two equal keys is an error. Returns the sorted
+ * order in *order (caller frees), or NULL on allocation failure. */
+static int32_t *sorted_records(chk *c, const int32_t *rec, size_t m, int w, int keylen)
+{
+    int32_t *idx = lh__alloc(&c->alloc, (m + 1) * sizeof *idx), *tmp = lh__alloc(&c->alloc, (m + 1) * sizeof *tmp);
+    if (!idx || !tmp) {
+        lh__free(&c->alloc, idx);
+        lh__free(&c->alloc, tmp);
+        return NULL;
+    }
+    for (size_t i = 0; i < m; i++) idx[i] = (int32_t)i;
+    rec_ctx r = {rec, w, keylen};
+    lh__sort_idx(idx, tmp, m, rec_cmp, &r);
+    lh__free(&c->alloc, tmp);
+    return idx;
+}
+
+/* Neighbours through shared facets; opposite sides; local Delaunay. */
+static lh_status check_facets(chk *c, size_t *boundary)
+{
+    const int nv = c->nv, d = c->d, w = d + 2;
+    size_t m = c->count * nv;
+    c->rec = lh__alloc(&c->alloc, (m * w + 1) * sizeof *c->rec);
+    c->nbr = lh__alloc(&c->alloc, (m + 1) * sizeof *c->nbr);
+    if (!c->rec || !c->nbr) return LH_ERR_NOMEM;
+    for (size_t s = 0; s < c->count; s++)
+        for (int k = 0; k < nv; k++) {
+            int32_t *r = c->rec + (s * nv + k) * w, j = 0;
+            for (int i = 0; i < nv; i++)
+                if (i != k) r[j++] = c->simp[s * nv + i];
+            sort_small(r, d);
+            r[d] = (int32_t)s;
+            r[d + 1] = k;
+            c->nbr[s * nv + k] = -1;
+        }
+    int32_t *idx = sorted_records(c, c->rec, m, w, d);
+    if (!idx) return LH_ERR_NOMEM;
+    rec_ctx r = {c->rec, w, d};
+    lh_status st = LH_OK;
+    *boundary = 0;
+    for (size_t i = 0; i < m && st == LH_OK;) {
+        size_t j = i + 1;
+        while (j < m && rec_cmp(&r, idx[i], idx[j]) == 0) j++;
+        const int32_t *a = c->rec + (size_t)idx[i] * w;
+        if (j - i > 2) {
+            st = fail(c, "a facet is shared by %zu simplices (%d and %d among them)", j - i,
+                      (int)a[d], (int)c->rec[(size_t)idx[i + 1] * w + d]);
+        } else if (j - i == 1) {
+            (*boundary)++;
+        } else {
+            const int32_t *b = c->rec + (size_t)idx[i + 1] * w;
+            int32_t sa = a[d], ka = a[d + 1], sb = b[d], kb = b[d + 1];
+            c->nbr[(size_t)sa * nv + ka] = sb;
+            c->nbr[(size_t)sb * nv + kb] = sa;
+            const int32_t *va = c->simp + (size_t)sa * nv, *vb = c->simp + (size_t)sb * nv;
+            if (orient_of(c, va, ka, vb[kb]) >= 0) {
+                st = fail(c, "simplices %d and %d overlap: they lie on the same side of their common facet", (int)sa, (int)sb);
+            } else {
+                const double *p[LH_DELAUNAY_MAX_DIM + 2];
+                for (int k = 0; k < nv; k++) p[k] = site(c, va[k]);
+                p[nv] = site(c, vb[kb]);
+                if (lh_insphere(c->pred, d, p) < 0)
+                    st = fail(c, "facet between simplices %d and %d is not locally Delaunay: site %d is inside the circumsphere of %d",
+                              (int)sa, (int)sb, (int)vb[kb], (int)sa);
+            }
+        }
+        i = j;
+    }
+    lh__free(&c->alloc, idx);
+    return st;
+}
+
+/* Boundary facets: closed and locally convex. */
+static lh_status check_boundary(chk *c, size_t boundary)
+{
+    const int nv = c->nv, d = c->d, w = d + 2; /* ridge: d-1 vertices, facet id, other */
+    size_t m = boundary * d;
+    int32_t *rec = lh__alloc(&c->alloc, (m * w + 1) * sizeof *rec);
+    int32_t *fs = lh__alloc(&c->alloc, (boundary * 2 + 1) * sizeof *fs);
+    if (!rec || !fs) {
+        lh__free(&c->alloc, rec);
+        lh__free(&c->alloc, fs);
+        return LH_ERR_NOMEM;
+    }
+    size_t f = 0;
+    for (size_t s = 0; s < c->count; s++)
+        for (int k = 0; k < nv; k++) {
+            if (c->nbr[s * nv + k] >= 0) continue;
+            fs[2 * f] = (int32_t)s;
+            fs[2 * f + 1] = k;
+            int32_t fv[LH_DELAUNAY_MAX_DIM], j = 0;
+            for (int i = 0; i < nv; i++)
+                if (i != k) fv[j++] = c->simp[s * nv + i];
+            for (int x = 0; x < d; x++) { /* ridge = facet minus fv[x] */
+                int32_t *r = rec + (f * d + x) * w, q = 0;
+                for (int i = 0; i < d; i++)
+                    if (i != x) r[q++] = fv[i];
+                sort_small(r, d - 1);
+                r[d - 1] = (int32_t)f;
+                r[d] = fv[x];
+            }
+            f++;
+        }
+    int32_t *idx = sorted_records(c, rec, m, w, d - 1);
+    lh_status st = idx ? LH_OK : LH_ERR_NOMEM;
+    rec_ctx r = {rec, w, d - 1};
+    for (size_t i = 0; st == LH_OK && i < m; i += 2) {
+        if (i + 1 >= m || rec_cmp(&r, idx[i], idx[i + 1]) != 0 ||
+            (i + 2 < m && rec_cmp(&r, idx[i], idx[i + 2]) == 0)) {
+            st = fail(c, "the boundary is not a closed surface (a ridge of hull facet %d has %s partner)",
+                      (int)fs[2 * rec[(size_t)idx[i] * w + d - 1]], i + 1 >= m || rec_cmp(&r, idx[i], idx[i + 1]) ? "no" : "more than one");
+            break;
+        }
+        for (int side = 0; side < 2 && st == LH_OK; side++) {
+            const int32_t *a = rec + (size_t)idx[i + side] * w, *b = rec + (size_t)idx[i + 1 - side] * w;
+            int32_t s = fs[2 * a[d - 1]], k = fs[2 * a[d - 1] + 1];
+            if (orient_of(c, c->simp + (size_t)s * nv, k, b[d]) < 0)
+                st = fail(c, "the boundary is not convex: site %d is outside the hull facet of simplex %d", (int)b[d], (int)s);
+        }
+    }
+    lh__free(&c->alloc, idx);
+    lh__free(&c->alloc, rec);
+    lh__free(&c->alloc, fs);
+    return st;
+}
+
+typedef struct lex_ctx {
+    const double *xyz;
+    int d;
+} lex_ctx;
+
+static int lex_cmp(const void *vctx, int32_t a, int32_t b)
+{
+    const lex_ctx *l = vctx;
+    const double *p = l->xyz + (size_t)a * l->d, *q = l->xyz + (size_t)b * l->d;
+    for (int j = 0; j < l->d; j++)
+        if (p[j] != q[j]) return p[j] < q[j] ? -1 : 1;
+    return 0;
+}
+
+/* Among equal sites (adjacent in lexicographic order) exactly one is a vertex. */
+static lh_status check_sites_used(chk *c, const int32_t *used)
+{
+    int32_t *idx = lh__alloc(&c->alloc, (c->n + 1) * sizeof *idx), *tmp = lh__alloc(&c->alloc, (c->n + 1) * sizeof *tmp);
+    lh_status st = idx && tmp ? LH_OK : LH_ERR_NOMEM;
+    if (st == LH_OK) {
+        for (size_t i = 0; i < c->n; i++) idx[i] = (int32_t)i;
+        lex_ctx l = {c->xyz, c->d};
+        lh__sort_idx(idx, tmp, c->n, lex_cmp, &l);
+        for (size_t i = 0; i < c->n && st == LH_OK;) {
+            size_t j = i, vertices = 0;
+            for (; j < c->n && lex_cmp(&l, idx[i], idx[j]) == 0; j++) vertices += used[idx[j]] != 0;
+            if (vertices == 0) st = fail(c, "site %d is neither a vertex nor a duplicate of one", (int)idx[i]);
+            if (vertices > 1) st = fail(c, "sites %d and %d are equal and both vertices", (int)idx[i], (int)idx[i + 1]);
+            i = j;
+        }
+    }
+    lh__free(&c->alloc, idx);
+    lh__free(&c->alloc, tmp);
+    return st;
+}
+
+/* Connected through facets, and every site is a vertex or an exact duplicate of one. */
+static lh_status check_cover(chk *c)
+{
+    size_t n = c->n;
+    int32_t *mark = lh__alloc(&c->alloc, (c->count + n + 1) * sizeof *mark);
+    if (!mark) return LH_ERR_NOMEM;
+    int32_t *used = mark + c->count;
+    memset(mark, 0, (c->count + n) * sizeof *mark);
+    lh_status st = LH_OK;
+    if (c->count) { /* flood through neighbours, the mark array doubling as a stack */
+        int32_t *stack = lh__alloc(&c->alloc, (c->count + 1) * sizeof *stack);
+        if (!stack) {
+            lh__free(&c->alloc, mark);
+            return LH_ERR_NOMEM;
+        }
+        size_t top = 0, seen = 1;
+        stack[top++] = 0;
+        mark[0] = 1;
+        while (top) {
+            int32_t s = stack[--top];
+            for (int k = 0; k < c->nv; k++) {
+                int32_t nb = c->nbr[(size_t)s * c->nv + k];
+                if (nb >= 0 && !mark[nb]) {
+                    mark[nb] = 1;
+                    seen++;
+                    stack[top++] = nb;
+                }
+            }
+        }
+        lh__free(&c->alloc, stack);
+        if (seen != c->count) st = fail(c, "the simplices are not connected through facets");
+    }
+    for (size_t s = 0; s < c->count * c->nv; s++) used[c->simp[s]] = 1;
+    if (st == LH_OK && n) st = check_sites_used(c, used);
+    lh__free(&c->alloc, mark);
+    return st;
+}
+
+static void chk_release(chk *c)
+{
+    lh__free(&c->alloc, c->simp);
+    lh__free(&c->alloc, c->rec);
+    lh__free(&c->alloc, c->nbr);
+    lh_pred_free(c->pred);
+}
+
+static lh_status run_check(chk *c, const int32_t *simplices)
+{
+    size_t boundary = 0;
+    c->simp = lh__alloc(&c->alloc, (c->count * c->nv + 1) * sizeof *c->simp);
+    if (!c->simp) return LH_ERR_NOMEM;
+    if (c->count) memcpy(c->simp, simplices, c->count * c->nv * sizeof *c->simp);
+    lh_status st = lh_pred_create(&c->alloc, &c->pred);
+    if (st == LH_OK) st = check_simplices(c);
+    if (st == LH_OK) st = check_facets(c, &boundary);
+    if (st == LH_OK && c->count) st = check_boundary(c, boundary);
+    if (st == LH_OK) st = check_cover(c);
+    return st;
+}
+
+lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
+                            const int32_t *simplices, char *msg, size_t msg_size)
+{
+    if (d < LH_DELAUNAY_MIN_DIM || d > LH_DELAUNAY_MAX_DIM) return LH_ERR_DIMENSION;
+    if ((!xyz && n) || (!simplices && count)) return LH_ERR_INVALID_ARGUMENT;
+    chk c;
+    memset(&c, 0, sizeof c);
+    lh__allocator_init(&c.alloc, NULL);
+    c.d = d;
+    c.nv = d + 1;
+    c.n = n;
+    c.count = count;
+    c.xyz = xyz;
+    c.msg = msg;
+    c.msg_size = msg_size;
+    if (msg && msg_size) msg[0] = 0;
+    lh_status st = run_check(&c, simplices);
+    chk_release(&c);
+    return st;
+}
+
+lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
+{
+    if (!t) return LH_ERR_INVALID_ARGUMENT;
+    chk c;
+    memset(&c, 0, sizeof c);
+    lh__allocator_init(&c.alloc, NULL);
+    c.d = t->d;
+    c.nv = t->d + 1;
+    c.n = t->n;
+    c.count = t->count;
+    c.xyz = t->xyz;
+    c.msg = msg;
+    c.msg_size = msg_size;
+    if (msg && msg_size) msg[0] = 0;
+    lh_status st = run_check(&c, t->simp);
+    /* The stored arrays: simplices positively oriented as given, neighbours as
+     * computed, one hull facet per boundary facet, incident simplices correct. */
+    for (size_t s = 0; st == LH_OK && s < t->count; s++) {
+        if (memcmp(c.simp + s * c.nv, t->simp + s * c.nv, (size_t)c.nv * 4) != 0)
+            st = fail(&c, "simplex %zu is stored negatively oriented", s);
+        for (int k = 0; st == LH_OK && k < c.nv; k++)
+            if (c.nbr[s * c.nv + k] != t->nbr[s * c.nv + k])
+                st = fail(&c, "neighbour %d of simplex %zu is %d, should be %d", k, s,
+                          (int)t->nbr[s * c.nv + k], (int)c.nbr[s * c.nv + k]);
+    }
+    size_t boundary = 0;
+    for (size_t i = 0; st == LH_OK && i < t->count * c.nv; i++) boundary += t->nbr[i] < 0;
+    if (st == LH_OK && boundary != t->hull_count)
+        st = fail(&c, "%zu hull facets stored, %zu boundary facets found", t->hull_count, boundary);
+    for (size_t i = 0; st == LH_OK && i < t->n; i++) {
+        int32_t s = t->vsimp[i];
+        int vertex = t->dup[i] == (int32_t)i, has = 0;
+        if (vertex && s >= 0 && (size_t)s < t->count)
+            for (int k = 0; k < c.nv; k++) has |= t->simp[(size_t)s * c.nv + k] == (int32_t)i;
+        if (vertex ? !has : s != -1) st = fail(&c, "the incident simplex of site %zu is wrong", i);
+    }
+    chk_release(&c);
+    return st;
+}

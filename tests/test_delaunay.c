@@ -1,0 +1,390 @@
+/* test_delaunay.c — the Delaunay engine: the exact check (lh_tri_check) passes on
+ * every output, across the input families of the engine issue, in d = 2..6; the
+ * output depends only on the site set; bad input gets its status; every allocation
+ * failure is survived without a leak. */
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static uint64_t rng_state;
+static uint64_t rnd(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
+}
+static double unif(void) { return (double)(rnd() >> 11) * 0x1p-53; } /* [0,1) */
+static double gauss(void)
+{
+    double u = unif() + 0x1p-60, v = unif();
+    return sqrt(-2 * log(u)) * cos(6.283185307179586 * v);
+}
+
+enum family {
+    F_CUBE, F_BALL, F_CLUSTERS, F_SPHERE_EXACT, F_GRID, F_GRID_JITTER, F_NEAR_PLANE,
+    F_DUPLICATES, F_OFFSET_1E9, F_SPREAD_1E9, F_MIXED, F_COUNT
+};
+static const char *family_name[F_COUNT] = {
+    "uniform cube", "uniform ball", "gaussian clusters", "exactly cospherical",
+    "integer grid", "grid + 1e-12", "within 1e-10 of a hyperplane", "5% duplicates",
+    "offset 1e9, unit spread", "spread 1e-9", "mixed 1e-8..1e8"};
+
+/* Exactly cospherical: n points drawn at random from the points of Z^d with
+ * |x|^2 = r2 (r2 chosen so that there are many). */
+static size_t sphere_points(int d, size_t n, double *x)
+{
+    static const int r2_for_dim[9] = {0, 0, 5525, 425, 50, 18, 12, 10, 8};
+    int r2 = r2_for_dim[d], r = (int)sqrt((double)r2);
+    size_t m = 0, cap = 50000;
+    double *all = malloc(cap * d * sizeof *all);
+    int c[8];
+    for (int j = 0; j < d; j++) c[j] = -r;
+    for (;;) {
+        int s = 0;
+        for (int j = 0; j < d; j++) s += c[j] * c[j];
+        if (s == r2 && m < cap) {
+            for (int j = 0; j < d; j++) all[m * d + j] = c[j];
+            m++;
+        }
+        int j = 0;
+        while (j < d && c[j] == r) c[j++] = -r;
+        if (j == d) break;
+        c[j]++;
+    }
+    size_t take = m < n ? m : n;
+    for (size_t i = 0; i < take; i++) { /* partial Fisher-Yates */
+        size_t k = i + rnd() % (m - i);
+        for (int j = 0; j < d; j++) {
+            double t = all[k * d + j];
+            all[k * d + j] = all[i * d + j];
+            all[i * d + j] = t;
+        }
+    }
+    memcpy(x, all, take * d * sizeof *x);
+    free(all);
+    return take;
+}
+
+static size_t make_family(int fam, int d, size_t n, double *x)
+{
+    int side = (int)ceil(pow((double)n, 1.0 / d));
+    for (size_t i = 0; i < n; i++) {
+        double *p = x + i * d;
+        switch (fam) {
+        case F_BALL: {
+            double r2;
+            do {
+                r2 = 0;
+                for (int j = 0; j < d; j++) {
+                    p[j] = 2 * unif() - 1;
+                    r2 += p[j] * p[j];
+                }
+            } while (r2 > 1);
+            break;
+        }
+        case F_CLUSTERS:
+            for (int j = 0; j < d; j++) p[j] = (double)(i % 5) * 10 + gauss();
+            break;
+        case F_GRID:
+        case F_GRID_JITTER: {
+            size_t k = i;
+            for (int j = 0; j < d; j++) {
+                p[j] = (double)(k % (size_t)side);
+                k /= (size_t)side;
+                if (fam == F_GRID_JITTER) p[j] += 1e-12 * (2 * unif() - 1);
+            }
+            break;
+        }
+        case F_NEAR_PLANE:
+            for (int j = 0; j < d; j++) p[j] = unif();
+            p[d - 1] = 1e-10 * (2 * unif() - 1);
+            break;
+        case F_OFFSET_1E9:
+            for (int j = 0; j < d; j++) p[j] = 1e9 + unif();
+            break;
+        case F_SPREAD_1E9:
+            for (int j = 0; j < d; j++) p[j] = 1e-9 * unif();
+            break;
+        case F_MIXED:
+            for (int j = 0; j < d; j++) p[j] = (2 * unif() - 1) * pow(10.0, -8 + 16 * unif());
+            break;
+        default: /* F_CUBE, F_DUPLICATES */
+            for (int j = 0; j < d; j++) p[j] = unif();
+        }
+    }
+    if (fam == F_DUPLICATES)
+        for (size_t i = 0; i < n / 20; i++) {
+            size_t a = rnd() % n, b = rnd() % n;
+            memcpy(x + a * d, x + b * d, (size_t)d * sizeof *x);
+        }
+    if (fam == F_SPHERE_EXACT) n = sphere_points(d, n, x);
+    return n;
+}
+
+static const size_t size_for_dim[7] = {0, 0, 3000, 1500, 400, 150, 60};
+
+static void check_tri(lh_test_state *lh_t_, int d, size_t n, const double *x, const char *what)
+{
+    lh_tri *t = NULL;
+    lh_status st = lh_delaunay(d, n, x, NULL, &t);
+    LH_EXPECT_EQ_INT(st, LH_OK);
+    if (st != LH_OK) {
+        LH_NOTE("%s, d=%d n=%zu: %s", what, d, n, lh_status_message(st));
+        return;
+    }
+    char msg[256];
+    st = lh_tri_check(t, msg, sizeof msg);
+    LH_EXPECT_EQ_INT(st, LH_OK);
+    if (st != LH_OK) LH_NOTE("%s, d=%d n=%zu: %s", what, d, n, msg);
+    LH_EXPECT_GT_U64(lh_tri_count(t), 0);
+    lh_tri_free(t);
+}
+
+LH_TEST(every_family_passes_the_exact_check)
+{
+    for (int d = 2; d <= 6 && !LH_FAILED(); d++) {
+        size_t n = size_for_dim[d];
+        double *x = malloc(n * d * sizeof *x);
+        LH_ASSERT_TRUE(x != NULL);
+        for (int fam = 0; fam < F_COUNT && !LH_FAILED(); fam++) {
+            rng_state = (uint64_t)(d * 100 + fam);
+            size_t m = make_family(fam, d, n, x);
+            check_tri(lh_t_, d, m, x, family_name[fam]);
+        }
+        free(x);
+    }
+}
+
+LH_TEST(smallest_inputs)
+{
+    for (int d = 2; d <= 8; d++) {
+        double x[10 * 8];
+        for (int extra = 0; extra <= 1; extra++) {
+            rng_state = (uint64_t)d;
+            for (int i = 0; i < (d + 1 + extra) * d; i++) x[i] = unif();
+            lh_tri *t;
+            LH_ASSERT_EQ_INT(lh_delaunay(d, (size_t)(d + 1 + extra), x, NULL, &t), LH_OK);
+            size_t want_lo = extra ? 2 : 1, want_hi = extra ? (size_t)d + 1 : 1;
+            LH_EXPECT_LE_U64(want_lo, lh_tri_count(t));
+            LH_EXPECT_LE_U64(lh_tri_count(t), want_hi);
+            LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+            lh_tri_free(t);
+        }
+    }
+}
+
+/* Canonical text of a triangulation with sites renamed through `name`. */
+static char *signature(const lh_tri *t, const int32_t *name)
+{
+    int nv = lh_tri_dim(t) + 1;
+    size_t count = lh_tri_count(t);
+    int32_t *s = malloc(count * nv * sizeof *s);
+    for (size_t i = 0; i < count * nv; i++) s[i] = name ? name[lh_tri_simplices(t)[i]] : lh_tri_simplices(t)[i];
+    for (size_t i = 0; i < count; i++) /* sort each simplex (orientation ignored) */
+        for (int a = 1; a < nv; a++)
+            for (int b = a; b > 0 && s[i * nv + b] < s[i * nv + b - 1]; b--) {
+                int32_t tmp = s[i * nv + b];
+                s[i * nv + b] = s[i * nv + b - 1];
+                s[i * nv + b - 1] = tmp;
+            }
+    for (size_t i = 1; i < count; i++) /* insertion sort of rows: small inputs only */
+        for (size_t j = i; j > 0 && memcmp(s + j * nv, s + (j - 1) * nv, nv * sizeof *s) < 0; j--)
+            for (int k = 0; k < nv; k++) {
+                int32_t tmp = s[j * nv + k];
+                s[j * nv + k] = s[(j - 1) * nv + k];
+                s[(j - 1) * nv + k] = tmp;
+            }
+    char *out = malloc(count * nv * 12 + 1), *o = out;
+    for (size_t i = 0; i < count * nv; i++) o += sprintf(o, "%d ", (int)s[i]);
+    *o = 0;
+    free(s);
+    return out;
+}
+
+LH_TEST(output_depends_only_on_the_site_set)
+{
+    for (int d = 2; d <= 4 && !LH_FAILED(); d++) {
+        for (int fam = 0; fam < F_COUNT && !LH_FAILED(); fam++) {
+            if (fam != F_CUBE && fam != F_GRID && fam != F_SPHERE_EXACT && fam != F_DUPLICATES) continue;
+            size_t n = d == 2 ? 300 : d == 3 ? 200 : 80;
+            double *x = malloc(n * d * sizeof *x), *y = malloc(n * d * sizeof *y);
+            int32_t *perm = malloc(n * sizeof *perm), *inv = malloc(n * sizeof *inv);
+            rng_state = (uint64_t)(7 * d + fam);
+            n = make_family(fam, d, n, x);
+            for (size_t i = 0; i < n; i++) perm[i] = (int32_t)i;
+            for (size_t i = n - 1; i > 0; i--) {
+                size_t j = rnd() % (i + 1);
+                int32_t tmp = perm[i];
+                perm[i] = perm[j];
+                perm[j] = tmp;
+            }
+            for (size_t i = 0; i < n; i++) { /* y[i] = x[perm[i]] */
+                memcpy(y + i * d, x + (size_t)perm[i] * d, d * sizeof *y);
+                inv[i] = perm[i];
+            }
+            lh_options o1, o2;
+            lh_options_default(&o1);
+            lh_options_default(&o2);
+            o2.seed = 12345;
+            lh_tri *a, *b, *c;
+            LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, &o1, &a), LH_OK);
+            LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, &o2, &b), LH_OK);
+            LH_ASSERT_EQ_INT(lh_delaunay(d, n, y, &o1, &c), LH_OK);
+            /* Another seed: byte-identical arrays. */
+            LH_EXPECT_EQ_U64(lh_tri_count(a), lh_tri_count(b));
+            LH_EXPECT_TRUE(memcmp(lh_tri_simplices(a), lh_tri_simplices(b), lh_tri_count(a) * (d + 1) * 4) == 0);
+            LH_EXPECT_TRUE(memcmp(lh_tri_neighbors(a), lh_tri_neighbors(b), lh_tri_count(a) * (d + 1) * 4) == 0);
+            /* Permuted lines: the same triangulation once renamed (duplicates aside,
+             * where the representative legitimately changes with the order). */
+            if (fam != F_DUPLICATES) {
+                char *sa = signature(a, NULL), *sc = signature(c, inv);
+                LH_EXPECT_TRUE(strcmp(sa, sc) == 0);
+                if (LH_FAILED()) LH_NOTE("d=%d family %s", d, family_name[fam]);
+                free(sa);
+                free(sc);
+            }
+            lh_tri_free(a);
+            lh_tri_free(b);
+            lh_tri_free(c);
+            free(x);
+            free(y);
+            free(perm);
+            free(inv);
+        }
+    }
+}
+
+LH_TEST(duplicates_are_merged_and_reported)
+{
+    double x[] = {0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1, 1, 0, 0};
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(2, 7, x, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_U64(lh_tri_duplicate_count(t), 3);
+    const int32_t *dup = lh_tri_duplicate_of(t);
+    LH_EXPECT_EQ_INT(dup[3], 1);
+    LH_EXPECT_EQ_INT(dup[4], 0);
+    LH_EXPECT_EQ_INT(dup[6], 0);
+    LH_EXPECT_EQ_INT(dup[5], 5);
+    LH_EXPECT_EQ_INT(lh_tri_vertex_simplex(t)[4], -1);
+    LH_EXPECT_EQ_U64(lh_tri_count(t), 2); /* the unit square, split in two */
+    LH_EXPECT_EQ_U64(lh_tri_hull_count(t), 4);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    lh_tri_free(t);
+}
+
+LH_TEST(bad_input_gets_its_status)
+{
+    double x[4 * 3] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}; /* coplanar in 3D */
+    lh_tri *t = (lh_tri *)x;
+    LH_EXPECT_EQ_INT(lh_delaunay(3, 4, x, NULL, &t), LH_ERR_DEGENERATE);
+    LH_EXPECT_TRUE(t == NULL);
+    int k = 99;
+    LH_EXPECT_EQ_INT(lh_affine_dim(3, 4, x, &k), LH_OK);
+    LH_EXPECT_EQ_INT(k, 2);
+    double line[6 * 2] = {0, 0, 1, 1, 2, 2, 3, 3, 5, 5, 8, 8};
+    LH_EXPECT_EQ_INT(lh_delaunay(2, 6, line, NULL, &t), LH_ERR_DEGENERATE);
+    LH_EXPECT_EQ_INT(lh_affine_dim(2, 6, line, &k), LH_OK);
+    LH_EXPECT_EQ_INT(k, 1);
+    LH_EXPECT_EQ_INT(lh_delaunay(2, 0, x, NULL, &t), LH_ERR_DEGENERATE); /* empty */
+    LH_EXPECT_EQ_INT(lh_delaunay(2, 1, x, NULL, &t), LH_ERR_DEGENERATE); /* one site */
+    LH_EXPECT_EQ_INT(lh_delaunay(3, 3, x, NULL, &t), LH_ERR_DEGENERATE); /* n < d+1 */
+    LH_EXPECT_EQ_INT(lh_affine_dim(2, 1, x, &k), LH_OK);
+    LH_EXPECT_EQ_INT(k, 0);
+    LH_EXPECT_EQ_INT(lh_delaunay(1, 4, x, NULL, &t), LH_ERR_DIMENSION);
+    LH_EXPECT_EQ_INT(lh_delaunay(9, 4, x, NULL, &t), LH_ERR_DIMENSION);
+    LH_EXPECT_EQ_INT(lh_delaunay(3, SIZE_MAX / 8, x, NULL, &t), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_delaunay(3, 4, NULL, NULL, &t), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_delaunay(3, 4, x, NULL, NULL), LH_ERR_INVALID_ARGUMENT);
+    double y[4 * 3] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    y[5] = NAN;
+    LH_EXPECT_EQ_INT(lh_delaunay(3, 4, y, NULL, &t), LH_ERR_NONFINITE);
+    y[5] = -INFINITY;
+    LH_EXPECT_EQ_INT(lh_delaunay(3, 4, y, NULL, &t), LH_ERR_NONFINITE);
+    y[5] = 0;
+    LH_EXPECT_EQ_INT(lh_delaunay(3, 4, y, NULL, &t), LH_OK);
+    lh_tri_free(t);
+}
+
+LH_TEST(the_check_rejects_what_is_not_delaunay)
+{
+    /* A unit square split along the wrong diagonal of a non-cocircular quad. */
+    double x[] = {0, 0, 2, 0, 2, 1, 0, 1.2};
+    int32_t good[] = {0, 1, 2, 0, 2, 3}, bad[] = {0, 1, 3, 1, 2, 3}, flat[] = {0, 1, 1};
+    char msg[200];
+    lh_status a = lh_check_delaunay(2, 4, x, 2, good, msg, sizeof msg);
+    lh_status b = lh_check_delaunay(2, 4, x, 2, bad, msg, sizeof msg);
+    LH_EXPECT_TRUE((a == LH_OK) != (b == LH_OK)); /* exactly one diagonal is Delaunay */
+    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, x, 1, good, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_TRUE(strstr(msg, "site 3") != NULL); /* site 3 unused */
+    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, x, 1, flat, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_TRUE(strstr(msg, "repeats") != NULL);
+    double c[] = {0, 0, 1, 0, 2, 0, 1, 1}; /* a flat triangle along y = 0 */
+    int32_t cf[] = {0, 1, 3, 1, 2, 3, 0, 2, 1};
+    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, c, 3, cf, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_TRUE(strstr(msg, "flat") != NULL);
+}
+
+typedef struct counting {
+    long live, fail_at, calls;
+} counting;
+
+static void *count_alloc(void *user, size_t size)
+{
+    counting *c = user;
+    if (++c->calls == c->fail_at) return NULL;
+    void *p = malloc(size);
+    if (p) c->live++;
+    return p;
+}
+
+static void count_free(void *user, void *ptr)
+{
+    counting *c = user;
+    if (ptr) c->live--;
+    free(ptr);
+}
+
+LH_TEST(every_allocation_failure_is_survived)
+{
+    enum { N = 400 };
+    double x[N * 3];
+    rng_state = 5;
+    for (int i = 0; i < N * 3; i++) x[i] = unif();
+    for (long k = 1;; k++) {
+        counting c = {0, k, 0};
+        lh_allocator a = {count_alloc, count_free, &c};
+        lh_options o;
+        lh_options_default(&o);
+        o.alloc = &a;
+        lh_tri *t = (lh_tri *)&c;
+        lh_status st = lh_delaunay(3, N, x, &o, &t);
+        if (st == LH_OK) {
+            LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+            lh_tri_free(t);
+            LH_EXPECT_EQ_INT(c.live, 0);
+            LH_EXPECT_GT_INT(k, 10); /* the run does allocate */
+            break;
+        }
+        LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
+        LH_EXPECT_TRUE(t == NULL);
+        LH_EXPECT_EQ_INT(c.live, 0);
+        if (LH_FAILED()) {
+            LH_NOTE("failing allocation %ld", k);
+            break;
+        }
+    }
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(every_family_passes_the_exact_check), LH_CASE(smallest_inputs),
+        LH_CASE(output_depends_only_on_the_site_set), LH_CASE(duplicates_are_merged_and_reported),
+        LH_CASE(bad_input_gets_its_status), LH_CASE(the_check_rejects_what_is_not_delaunay),
+        LH_CASE(every_allocation_failure_is_survived)};
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
