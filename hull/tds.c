@@ -133,17 +133,24 @@ void lh__tds_link_all(lh__tds *t, const int32_t *list, int count)
     }
 }
 
-static int push(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x)
+static int push_slow(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x)
 {
-    if (*len == *cap) {
-        size_t nc = *cap ? *cap * 2 : 64;
-        int32_t *p = grow(&t->alloc, *arr, *cap * 4, nc * 4);
-        if (!p) return 0;
-        *arr = p;
-        *cap = nc;
-    }
+    size_t nc = *cap ? *cap * 2 : 64;
+    int32_t *p = grow(&t->alloc, *arr, *cap * 4, nc * 4);
+    if (!p) return 0;
+    *arr = p;
+    *cap = nc;
     (*arr)[(*len)++] = x;
     return 1;
+}
+
+static inline int push(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x)
+{
+    if (*len < *cap) {
+        (*arr)[(*len)++] = x;
+        return 1;
+    }
+    return push_slow(t, arr, cap, len, x);
 }
 
 static void next_round(lh__tds *t)
@@ -232,9 +239,12 @@ lh_status lh__tds_insert(lh__tds *t, int32_t start, int32_t q, lh__conflict_fn c
         int32_t c = t->bound[2 * b], k = t->bound[2 * b + 1];
         int32_t N = lh__tds_new_cell(t); /* cannot fail after the reserve */
         int32_t *nv_ = t->vert + (size_t)N * nv, *nn = t->nbr + (size_t)N * nv;
-        memcpy(nv_, t->vert + (size_t)c * nv, (size_t)nv * sizeof *nv_);
+        const int32_t *cv = t->vert + (size_t)c * nv;
+        for (int j = 0; j < nv; j++) {
+            nv_[j] = cv[j];
+            nn[j] = LH__UNSET;
+        }
         nv_[k] = q;
-        for (int j = 0; j < nv; j++) nn[j] = LH__UNSET;
         int32_t outside = t->nbr[(size_t)c * nv + k];
         nn[k] = outside;
         t->nbr[(size_t)outside * nv + lh__tds_mirror(t, outside, c)] = N;

@@ -18,8 +18,11 @@
  * in the closed simplex containing q or in an infinite cell whose facet q sees.
  */
 #include "dt.h"
+#include "lh_exact.h"
 
 #include <string.h>
+
+_Static_assert(LH_DELAUNAY_MAX_DIM <= LH_INSPHERE_MAX_DIM, "Delaunay in R^d needs insphere_d");
 
 void lh_options_default(lh_options *opt)
 {
@@ -40,7 +43,7 @@ static int finite_conflict(lh__dt *b, int32_t c)
     const int32_t *v = b->tds.vert + (size_t)c * b->nv;
     for (int k = 0; k < b->nv; k++) b->pts[k] = lh__dt_site(b, v[k]);
     b->pts[b->nv] = lh__dt_site(b, b->q);
-    return lh_insphere_sos(b->pred, b->d, b->pts) < 0;
+    return lh__insphere_sos_fast(b->pred, b->d, b->pts) < 0;
 }
 
 static int conflict(void *user, int32_t c)
@@ -50,7 +53,7 @@ static int conflict(void *user, int32_t c)
     int inf = inf_index(v, b->nv);
     if (inf < 0) return finite_conflict(b, c);
     for (int k = 0; k < b->nv; k++) b->pts[k] = k == inf ? lh__dt_site(b, b->q) : lh__dt_site(b, v[k]);
-    int o = lh_orient(b->pred, b->d, b->pts);
+    int o = lh__orient_fast(b->pred, b->d, b->pts);
     if (o) return o > 0;
     return finite_conflict(b, b->tds.nbr[(size_t)c * b->nv + inf]);
 }
@@ -59,7 +62,7 @@ static int conflict(void *user, int32_t c)
 static int orient_replaced(lh__dt *b, const int32_t *v, int k)
 {
     for (int j = 0; j < b->nv; j++) b->pts[j] = lh__dt_site(b, j == k ? b->q : v[j]);
-    return lh_orient(b->pred, b->d, b->pts);
+    return lh__orient_fast(b->pred, b->d, b->pts);
 }
 
 static int32_t any_conflict_cell(lh__dt *b)
@@ -151,6 +154,16 @@ static lh_status insert_all(lh__dt *b)
     return LH_OK;
 }
 
+/* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.8n, 31n,
+ * 161n in 2D..5D (measured), with 10% room; higher dimensions start smaller and
+ * grow by doubling. */
+static int32_t expected_cells(int d, size_t n)
+{
+    static const double per_site[LH_DELAUNAY_MAX_DIM + 1] = {0, 0, 2.2, 7.5, 34, 180, 400, 400, 400};
+    double c = per_site[d] * (double)n + 256;
+    return c > INT32_MAX / 2 ? INT32_MAX / 2 : (int32_t)c;
+}
+
 static lh_status check_args(int d, size_t n, const double *xyz, const lh_options *opt)
 {
     if (d < LH_DELAUNAY_MIN_DIM || d > LH_DELAUNAY_MAX_DIM) return LH_ERR_DIMENSION;
@@ -210,8 +223,7 @@ static lh_status prepare(lh__dt *b, int *affdim)
 {
     lh_status st = lh_pred_create(&b->t->alloc, &b->pred);
     if (st != LH_OK) return st;
-    if ((st = lh__dt_merge_duplicates(b)) != LH_OK) return st;
-    if ((st = lh__dt_insertion_order(b)) != LH_OK) return st;
+    if ((st = lh__dt_order_sites(b)) != LH_OK) return st;
     *affdim = lh__dt_initial_simplex(b);
     return LH_OK;
 }
@@ -233,8 +245,7 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     st = prepare(&b, &affdim);
     if (st == LH_OK && affdim < d) st = LH_ERR_DEGENERATE;
     if (st == LH_OK) {
-        size_t cap = 8 * b.norder * (size_t)d + 64;
-        st = lh__tds_init(&b.tds, &b.t->alloc, b.nv, cap > INT32_MAX / 2 ? INT32_MAX / 2 : (int32_t)cap);
+        st = lh__tds_init(&b.tds, &b.t->alloc, b.nv, expected_cells(d, b.norder));
     }
     if (st == LH_OK) {
         b.v2c = lh__alloc(&b.t->alloc, n * sizeof *b.v2c);
@@ -264,7 +275,7 @@ lh_status lh_affine_dim(int d, size_t n, const double *xyz, int *dim)
     b.rng = 0x5eed;
     if ((st = new_handle(d, n, xyz, NULL, &b.t)) != LH_OK) return st;
     st = lh_pred_create(NULL, &b.pred);
-    if (st == LH_OK) st = lh__dt_merge_duplicates(&b);
+    if (st == LH_OK) st = lh__dt_order_sites(&b);
     if (st == LH_OK) *dim = lh__dt_initial_simplex(&b);
     builder_release(&b);
     lh_tri_free(b.t);

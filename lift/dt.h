@@ -60,8 +60,9 @@ static inline uint64_t lh__rng_next(uint64_t *s) /* xorshift64* (Vigna 2016) */
 }
 
 /* order.c */
-lh_status lh__dt_merge_duplicates(lh__dt *b);
-lh_status lh__dt_insertion_order(lh__dt *b);
+/* Merges exact duplicates (t->dup, t->ndup) and puts the distinct sites in
+ * insertion order in b->order. */
+lh_status lh__dt_order_sites(lh__dt *b);
 int lh__dt_initial_simplex(lh__dt *b);
 int lh__affine_independent(lh_pred *pred, int d, const double *const *pts, int k);
 /* output.c */

@@ -1,8 +1,9 @@
 /*
- * order.c — what happens to the sites before the first insertion: exact duplicates
- * merged (lexicographic sort), the insertion order (BRIO: Amenta, Choi & Rote,
- * "Incremental constructions con BRIO", SoCG 2003, with a Morton order in each
- * round), and an initial simplex of d+1 affinely independent sites, found exactly.
+ * order.c — what happens to the sites before the first insertion: a radix sort on
+ * Morton keys, which also brings exact duplicates together to be merged; the
+ * insertion order (BRIO: Amenta, Choi & Rote, "Incremental constructions con BRIO",
+ * SoCG 2003, Morton order in each round); and an initial simplex of d+1 affinely
+ * independent sites, found exactly.
  */
 #include "dt.h"
 #include "lh_sort.h"
@@ -31,61 +32,26 @@ static int same_site(const lh_tri *t, int32_t a, int32_t b)
     return 1;
 }
 
-lh_status lh__dt_merge_duplicates(lh__dt *b)
+/* Morton (Z-order) key of every site: each coordinate quantised to 63/d bits over
+ * the bounding box, bits interleaved from the most significant down. A span too
+ * wide for doubles quantises to 0 (keys tie; correctness does not depend on them). */
+static void morton_keys(const lh_tri *t, uint64_t *key)
 {
-    lh_tri *t = b->t;
-    size_t n = t->n;
-    int32_t *idx = lh__alloc(&t->alloc, n * sizeof *idx), *tmp = lh__alloc(&t->alloc, n * sizeof *tmp);
-    if (!idx || !tmp) {
-        lh__free(&t->alloc, idx);
-        lh__free(&t->alloc, tmp);
-        return LH_ERR_NOMEM;
-    }
-    for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
-    lex_ctx c = {t->xyz, t->d};
-    lh__sort_idx(idx, tmp, n, lex_cmp, &c);
-    /* Equal sites are adjacent, smallest index first (the comparator breaks ties by
-     * index): that one is the vertex. The distinct sites are compacted into idx, in
-     * lexicographic order. */
-    size_t nrep = 0;
-    int32_t prev = -1;
-    t->ndup = 0;
-    for (size_t i = 0; i < n; i++) {
-        int32_t s = idx[i];
-        if (prev >= 0 && same_site(t, s, prev)) {
-            t->dup[s] = t->dup[prev];
-            t->ndup++;
-        } else {
-            t->dup[s] = s;
-            idx[nrep++] = s;
-        }
-        prev = s;
-    }
-    lh__free(&t->alloc, tmp);
-    b->order = idx;
-    b->norder = nrep;
-    return LH_OK;
-}
-
-/* Morton (Z-order) key: each coordinate quantised to 63/d bits over the bounding box,
- * bits interleaved from the most significant down. */
-static void morton_keys(const lh__dt *b, uint64_t *key)
-{
-    int d = b->d, bits = 63 / d;
+    int d = t->d, bits = 63 / d;
     double lo[LH_DELAUNAY_MAX_DIM], scale[LH_DELAUNAY_MAX_DIM];
     for (int j = 0; j < d; j++) {
-        double mn = lh__dt_site(b, b->order[0])[j], mx = mn;
-        for (size_t i = 1; i < b->norder; i++) {
-            double x = lh__dt_site(b, b->order[i])[j];
+        double mn = t->xyz[j], mx = mn;
+        for (size_t i = 1; i < t->n; i++) {
+            double x = t->xyz[i * d + j];
             if (x < mn) mn = x;
             if (x > mx) mx = x;
         }
         lo[j] = mn;
-        double span = mx - mn; /* may overflow to inf for huge spreads: then all 0 */
+        double span = mx - mn;
         scale[j] = span > 0 && span < 1e308 ? ((double)((UINT64_C(1) << bits) - 1)) / span : 0;
     }
-    for (size_t i = 0; i < b->norder; i++) {
-        const double *p = lh__dt_site(b, b->order[i]);
+    for (size_t i = 0; i < t->n; i++) {
+        const double *p = t->xyz + i * d;
         uint64_t cell[LH_DELAUNAY_MAX_DIM], k = 0;
         for (int j = 0; j < d; j++) {
             double x = (p[j] - lo[j]) * scale[j];
@@ -93,40 +59,68 @@ static void morton_keys(const lh__dt *b, uint64_t *key)
         }
         for (int bit = bits - 1; bit >= 0; bit--)
             for (int j = 0; j < d; j++) k = (k << 1) | ((cell[j] >> bit) & 1);
-        key[b->order[i]] = k;
+        key[i] = k;
     }
 }
 
-typedef struct key_ctx {
-    const uint64_t *key;
-} key_ctx;
-
-static int key_cmp(const void *vctx, int32_t a, int32_t b)
+/* LSD radix sort of (key, idx) pairs on the low `bits` bits, 11 bits a pass. */
+static void radix_sort(uint64_t *key, int32_t *idx, uint64_t *k2, int32_t *i2, size_t n, int bits)
 {
-    const uint64_t *k = ((const key_ctx *)vctx)->key;
-    return (k[a] > k[b]) - (k[a] < k[b]);
+    size_t count[1 << 11];
+    for (int shift = 0; shift < bits; shift += 11) {
+        memset(count, 0, sizeof count);
+        for (size_t i = 0; i < n; i++) count[(key[i] >> shift) & 2047]++;
+        size_t sum = 0;
+        for (int b = 0; b < 2048; b++) {
+            size_t c = count[b];
+            count[b] = sum;
+            sum += c;
+        }
+        for (size_t i = 0; i < n; i++) {
+            size_t o = count[(key[i] >> shift) & 2047]++;
+            k2[o] = key[i];
+            i2[o] = idx[i];
+        }
+        memcpy(key, k2, n * sizeof *key);
+        memcpy(idx, i2, n * sizeof *idx);
+    }
 }
 
-lh_status lh__dt_insertion_order(lh__dt *b)
+/* Equal sites share a Morton key: in each run of equal keys, an exact lexicographic
+ * sort puts equal sites together, smallest index first — that one is the vertex.
+ * Compacts the distinct sites into idx (Morton order) and returns their number. */
+static size_t merge_runs(lh_tri *t, const uint64_t *key, int32_t *idx, int32_t *tmp)
 {
-    lh_tri *t = b->t;
-    size_t n = b->norder;
-    if (n < 2) return LH_OK;
-    uint64_t *key = lh__alloc(&t->alloc, t->n * sizeof *key);
-    int32_t *tmp = lh__alloc(&t->alloc, n * sizeof *tmp);
-    if (!key || !tmp) {
-        lh__free(&t->alloc, key);
-        lh__free(&t->alloc, tmp);
-        return LH_ERR_NOMEM;
+    lex_ctx c = {t->xyz, t->d};
+    size_t nrep = 0;
+    t->ndup = 0;
+    for (size_t i = 0; i < t->n;) {
+        size_t j = i + 1;
+        while (j < t->n && key[j] == key[i]) j++;
+        if (j - i > 1) lh__sort_idx(idx + i, tmp, j - i, lex_cmp, &c);
+        int32_t prev = -1;
+        for (size_t k = i; k < j; k++) {
+            int32_t s = idx[k];
+            if (prev >= 0 && same_site(t, s, prev)) {
+                t->dup[s] = t->dup[prev];
+                t->ndup++;
+            } else {
+                t->dup[s] = s;
+                idx[nrep++] = s;
+            }
+            prev = s;
+        }
+        i = j;
     }
-    morton_keys(b, key);
-    key_ctx kc = {key};
-    lh__sort_idx(b->order, tmp, n, key_cmp, &kc);
-    /* BRIO rounds: a site joins round r with probability 2^-(r+1) (r capped); rounds
-     * go from the rarest to the commonest, each in Morton order (a stable pass). */
+    return nrep;
+}
+
+/* BRIO rounds: a site joins round r with probability 2^-(r+1) (r capped); rounds
+ * go from the rarest to the commonest, each keeping the Morton order. */
+static void brio_rounds(lh__dt *b, int32_t *tmp, uint8_t *round)
+{
     enum { ROUNDS = 24 };
-    size_t start[ROUNDS + 1] = {0};
-    uint8_t *round = (uint8_t *)key; /* reuse: key is no longer needed after this */
+    size_t n = b->norder, start[ROUNDS + 1] = {0};
     for (size_t i = 0; i < n; i++) {
         uint64_t x = lh__rng_next(&b->rng);
         int r = 0;
@@ -140,9 +134,29 @@ lh_status lh__dt_insertion_order(lh__dt *b)
     for (int r = 0; r < ROUNDS; r++) start[r + 1] += start[r];
     for (size_t i = 0; i < n; i++) tmp[start[round[i]]++] = b->order[i];
     memcpy(b->order, tmp, n * sizeof *tmp);
+}
+
+lh_status lh__dt_order_sites(lh__dt *b)
+{
+    lh_tri *t = b->t;
+    size_t n = t->n;
+    uint64_t *key = lh__alloc(&t->alloc, (n + 1) * sizeof *key), *k2 = lh__alloc(&t->alloc, (n + 1) * sizeof *k2);
+    int32_t *idx = lh__alloc(&t->alloc, (n + 1) * sizeof *idx), *i2 = lh__alloc(&t->alloc, (n + 1) * sizeof *i2);
+    lh_status st = key && k2 && idx && i2 ? LH_OK : LH_ERR_NOMEM;
+    if (st == LH_OK && n) {
+        morton_keys(t, key);
+        for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
+        radix_sort(key, idx, k2, i2, n, (63 / t->d) * t->d);
+        b->order = idx;
+        b->norder = merge_runs(t, key, idx, i2);
+        brio_rounds(b, i2, (uint8_t *)k2);
+        idx = NULL; /* now b->order */
+    }
     lh__free(&t->alloc, key);
-    lh__free(&t->alloc, tmp);
-    return LH_OK;
+    lh__free(&t->alloc, k2);
+    lh__free(&t->alloc, idx);
+    lh__free(&t->alloc, i2);
+    return st;
 }
 
 /* Whether pts[k] is outside the affine hull of pts[0..k-1] (affinely independent, in

@@ -42,6 +42,13 @@ static void canonical(int32_t *v, int *from, int m)
     }
 }
 
+static int tuple_less(const int32_t *x, const int32_t *y, int m)
+{
+    for (int k = 0; k < m; k++)
+        if (x[k] != y[k]) return x[k] < y[k];
+    return 0;
+}
+
 typedef struct tuple_ctx {
     const int32_t *v;
     int m;
@@ -56,37 +63,56 @@ static int tuple_cmp(const void *vctx, int32_t a, int32_t b)
     return 0;
 }
 
-/* Sorts count tuples of m int32 in place (lexicographically); perm (may be NULL)
- * receives, per new position, the old one. Returns 0 when memory runs out. */
-static int sort_tuples(const lh_allocator *a, int32_t *v, int m, size_t count, int32_t *perm)
-{
-    int32_t *idx = lh__alloc(a, (count + 1) * sizeof *idx), *tmp = lh__alloc(a, (count + 1) * sizeof *tmp);
-    int32_t *copy = lh__alloc(a, (count * (size_t)m + 1) * sizeof *copy);
-    if (!idx || !tmp || !copy) {
-        lh__free(a, idx);
-        lh__free(a, tmp);
-        lh__free(a, copy);
-        return 0;
-    }
-    for (size_t i = 0; i < count; i++) idx[i] = (int32_t)i;
-    tuple_ctx c = {v, m};
-    lh__sort_idx(idx, tmp, count, tuple_cmp, &c);
-    memcpy(copy, v, count * (size_t)m * sizeof *v);
-    for (size_t i = 0; i < count; i++) {
-        memcpy(v + i * (size_t)m, copy + (size_t)idx[i] * m, (size_t)m * sizeof *v);
-        if (perm) perm[i] = idx[i];
-    }
-    lh__free(a, idx);
-    lh__free(a, tmp);
-    lh__free(a, copy);
-    return 1;
-}
-
 static int is_finite(const lh__dt *b, int32_t c)
 {
     const int32_t *v = b->tds.vert + (size_t)c * b->nv;
     for (int k = 0; k < b->nv; k++)
         if (v[k] == LH__INF) return 0;
+    return 1;
+}
+
+/* Sorts count canonical tuples (m int32 each) lexicographically into out, with
+ * order[i] the input position of out's tuple i: a counting sort on the first entry
+ * (a site index below n) gathers the tuples bucket by bucket; each bucket, now
+ * contiguous, is sorted on the rest — insertion sort for the usual small buckets,
+ * merge sort for large ones (a vertex of huge degree). Returns 0 on no memory. */
+static int sort_tuples(const lh_allocator *a, const int32_t *v, int m, size_t count,
+                       size_t n, int32_t *out, int32_t *order)
+{
+    size_t *start = lh__alloc(a, (n + 2) * sizeof *start);
+    int32_t *tmp = lh__alloc(a, (count + 1) * sizeof *tmp);
+    if (!start || !tmp) {
+        lh__free(a, start);
+        lh__free(a, tmp);
+        return 0;
+    }
+    memset(start, 0, (n + 2) * sizeof *start);
+    for (size_t i = 0; i < count; i++) start[(size_t)v[i * m] + 2]++;
+    for (size_t k = 2; k < n + 2; k++) start[k] += start[k - 1];
+    for (size_t i = 0; i < count; i++) order[start[(size_t)v[i * m] + 1]++] = (int32_t)i;
+    for (size_t i = 0; i < count; i++) memcpy(out + i * m, v + (size_t)order[i] * m, (size_t)m * sizeof *v);
+    tuple_ctx c = {v, m};
+    for (size_t k = 0; k < n; k++) {
+        size_t lo = start[k], hi = start[k + 1];
+        if (hi - lo > 32) { /* rare: sort indices, then regather this bucket */
+            lh__sort_idx(order + lo, tmp, hi - lo, tuple_cmp, &c);
+            for (size_t i = lo; i < hi; i++) memcpy(out + i * m, v + (size_t)order[i] * m, (size_t)m * sizeof *v);
+            continue;
+        }
+        for (size_t i = lo + 1; i < hi; i++) {
+            int32_t key[LH_DELAUNAY_MAX_DIM + 1], o = order[i];
+            memcpy(key, out + i * m, (size_t)m * sizeof *key);
+            size_t j = i;
+            for (; j > lo && tuple_less(key, out + (j - 1) * m, m); j--) {
+                memcpy(out + j * m, out + (j - 1) * m, (size_t)m * sizeof *out);
+                order[j] = order[j - 1];
+            }
+            memcpy(out + j * m, key, (size_t)m * sizeof *key);
+            order[j] = o;
+        }
+    }
+    lh__free(a, start);
+    lh__free(a, tmp);
     return 1;
 }
 
@@ -99,37 +125,45 @@ static lh_status extract_simplices(lh__dt *b, int32_t *out_of_cell)
     for (int32_t c = 0; c < b->tds.top; c++)
         if (!lh__tds_dead(&b->tds, c) && is_finite(b, c)) count++;
     t->count = count;
-    t->simp = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->simp);
-    t->nbr = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->nbr);
+    /* raw: canonical tuples in cell order; from: where each came from in its cell. */
+    int32_t *raw = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *raw);
+    uint8_t *from = lh__alloc(&t->alloc, count * nv + 1);
     int32_t *cell_of = lh__alloc(&t->alloc, (count + 1) * sizeof *cell_of);
-    int32_t *from = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *from);
-    int32_t *perm = lh__alloc(&t->alloc, (count + 1) * sizeof *perm);
-    lh_status st = t->simp && t->nbr && cell_of && from && perm ? LH_OK : LH_ERR_NOMEM;
+    int32_t *order = lh__alloc(&t->alloc, (count + 1) * sizeof *order);
+    lh_status st = raw && from && cell_of && order ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK) {
         size_t s = 0;
         for (int32_t c = 0; c < b->tds.top; c++) {
             if (lh__tds_dead(&b->tds, c) || !is_finite(b, c)) continue;
             int f[LH_DELAUNAY_MAX_DIM + 1];
-            memcpy(t->simp + s * nv, b->tds.vert + (size_t)c * nv, (size_t)nv * sizeof(int32_t));
-            canonical(t->simp + s * nv, f, nv);
-            for (int k = 0; k < nv; k++) from[s * nv + k] = f[k];
+            memcpy(raw + s * nv, b->tds.vert + (size_t)c * nv, (size_t)nv * sizeof(int32_t));
+            canonical(raw + s * nv, f, nv);
+            for (int k = 0; k < nv; k++) from[s * nv + k] = (uint8_t)f[k];
             cell_of[s++] = c;
         }
-        if (!sort_tuples(&t->alloc, t->simp, nv, count, perm)) st = LH_ERR_NOMEM;
+        t->simp = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->simp);
+        if (!t->simp || !sort_tuples(&t->alloc, raw, nv, count, t->n, t->simp, order)) st = LH_ERR_NOMEM;
     }
     if (st == LH_OK) {
-        for (size_t s = 0; s < count; s++) out_of_cell[cell_of[perm[s]]] = (int32_t)s;
+        lh__free(&t->alloc, raw);
+        raw = NULL;
+        t->nbr = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->nbr);
+        if (!t->nbr) st = LH_ERR_NOMEM;
+    }
+    if (st == LH_OK) {
+        for (size_t s = 0; s < count; s++) out_of_cell[cell_of[order[s]]] = (int32_t)s;
         for (size_t s = 0; s < count; s++) {
-            int32_t c = cell_of[perm[s]];
+            int32_t o = order[s], c = cell_of[o];
             for (int k = 0; k < nv; k++) {
-                int32_t n = b->tds.nbr[(size_t)c * nv + from[(size_t)perm[s] * nv + k]];
+                int32_t n = b->tds.nbr[(size_t)c * nv + from[(size_t)o * nv + k]];
                 t->nbr[s * nv + k] = out_of_cell[n];
             }
         }
     }
-    lh__free(&t->alloc, cell_of);
+    lh__free(&t->alloc, raw);
     lh__free(&t->alloc, from);
-    lh__free(&t->alloc, perm);
+    lh__free(&t->alloc, cell_of);
+    lh__free(&t->alloc, order);
     return st;
 }
 
@@ -164,7 +198,16 @@ static lh_status extract_hull(lh__dt *b)
         canonical(o, from, d);
         f++;
     }
-    return sort_tuples(&t->alloc, t->hull, d, h, NULL) ? LH_OK : LH_ERR_NOMEM;
+    int32_t *order = lh__alloc(&t->alloc, (h + 1) * sizeof *order);
+    int32_t *copy = lh__alloc(&t->alloc, (h * d + 1) * sizeof *copy);
+    lh_status st = LH_ERR_NOMEM;
+    if (order && copy) {
+        memcpy(copy, t->hull, h * d * sizeof *copy);
+        if (sort_tuples(&t->alloc, copy, d, h, t->n, t->hull, order)) st = LH_OK;
+    }
+    lh__free(&t->alloc, order);
+    lh__free(&t->alloc, copy);
+    return st;
 }
 
 lh_status lh__dt_extract(lh__dt *b)

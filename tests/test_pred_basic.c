@@ -148,9 +148,9 @@ LH_TEST(invalid_arguments_answer_zero_and_count_nothing)
     cfg c;
     unit_simplex(&c, 3, 5);
     LH_EXPECT_EQ_INT(lh_orient(ctx, 0, c.p), 0);
-    LH_EXPECT_EQ_INT(lh_orient(ctx, 9, c.p), 0);
-    LH_EXPECT_EQ_INT(lh_orient_sos(ctx, 9, c.p), 0);
-    LH_EXPECT_EQ_INT(lh_insphere(ctx, 8, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_orient(ctx, LH_ORIENT_MAX_DIM + 1, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_orient_sos(ctx, LH_ORIENT_MAX_DIM + 1, c.p), 0);
+    LH_EXPECT_EQ_INT(lh_insphere(ctx, LH_INSPHERE_MAX_DIM + 1, c.p), 0);
     LH_EXPECT_EQ_INT(lh_insphere_sos(ctx, 0, c.p), 0);
     LH_EXPECT_EQ_INT(lh_orient(NULL, 3, c.p), 0);
     LH_EXPECT_EQ_INT(lh_orient(ctx, 3, NULL), 0);

@@ -74,7 +74,7 @@
 #include <string.h>
 #include <time.h>
 
-enum { MAXD = 8, MAXN = 10 }; /* up to 9 points of a call, plus one extra point */
+enum { MAXD = 8, MAXN = 11 }; /* up to 10 points of a call, plus one extra point */
 enum { ORIENT = 0, INSPHERE = 1 };
 enum { F_UNIFORM, F_NEAR, F_BIG, F_TINY, F_MIXED, F_DEGEN, F_COUNT };
 static const char *const fam_name[F_COUNT] = {"uniform", "near", "1e9+",
@@ -1263,6 +1263,7 @@ ORACLE_TEST(INSPHERE, insphere, 4)
 ORACLE_TEST(INSPHERE, insphere, 5)
 ORACLE_TEST(INSPHERE, insphere, 6)
 ORACLE_TEST(INSPHERE, insphere, 7)
+ORACLE_TEST(INSPHERE, insphere, 8)
 
 int main(int argc, char **argv)
 {
@@ -1271,7 +1272,7 @@ int main(int argc, char **argv)
         LH_CASE(oracle_orient_4),   LH_CASE(oracle_orient_5),   LH_CASE(oracle_orient_6),
         LH_CASE(oracle_orient_7),   LH_CASE(oracle_orient_8),   LH_CASE(oracle_insphere_1),
         LH_CASE(oracle_insphere_2), LH_CASE(oracle_insphere_3), LH_CASE(oracle_insphere_4),
-        LH_CASE(oracle_insphere_5), LH_CASE(oracle_insphere_6), LH_CASE(oracle_insphere_7),
+        LH_CASE(oracle_insphere_5), LH_CASE(oracle_insphere_6), LH_CASE(oracle_insphere_7), LH_CASE(oracle_insphere_8),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

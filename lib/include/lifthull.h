@@ -87,7 +87,7 @@ typedef struct lh_allocator {
 
 /* Dimensions the predicates serve. */
 #define LH_ORIENT_MAX_DIM 8   /* orient_k, k = 1..8   */
-#define LH_INSPHERE_MAX_DIM 7 /* insphere_d, d = 1..7 */
+#define LH_INSPHERE_MAX_DIM 8 /* insphere_d, d = 1..8 (8D Delaunay needs it) */
 
 /* Checks n points of dimension d (row-major, n*d doubles) against the accepted
  * range documented at the top of this header. Returns LH_OK, LH_ERR_NONFINITE
@@ -139,7 +139,7 @@ lh_status lh_coords_validate(int d, size_t n, const double *xyz, size_t *bad_ind
  */
 typedef struct lh_pred lh_pred;
 
-/* Creates a predicate context (counters and a scratch arena of about 0.4 MiB for the
+/* Creates a predicate context (counters and a scratch arena of about 1 MiB for the
  * exact stage, allocated once here so that no predicate call allocates).
  * alloc may be NULL. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
 lh_status lh_pred_create(const lh_allocator *alloc, lh_pred **out);

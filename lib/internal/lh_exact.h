@@ -6,8 +6,13 @@
 
 /* Exact sign of the minor of the homogeneous matrix of pts over the m rows `rows`
  * and m columns `cols`, both strictly increasing. Row i is [1, p_i[0..dim-1]] and,
- * when column dim+1 is asked for, |p_i|^2 there. m <= 9; the empty minor is +1. */
+ * when column dim+1 is asked for, |p_i|^2 there. m <= 10; the empty minor is +1. */
 int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
                    const int *rows, const int *cols);
+
+/* lh_insphere_sos and lh_orient without argument checks, for the engine's inner
+ * loops (d within range, ctx and pts valid; counted as public calls). */
+int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts);
+int lh__orient_fast(lh_pred *ctx, int k, const double *const *pts);
 
 #endif

@@ -18,7 +18,7 @@ static void subsets_init(lh__subsets *sub)
         int size = 0;
         for (int b = mask; b; b >>= 1) size += b & 1;
         sub->slot[mask] = sub->count[size];
-        sub->by_size[size][sub->count[size]++] = (uint8_t)mask;
+        sub->by_size[size][sub->count[size]++] = (uint16_t)mask;
     }
 }
 
@@ -87,7 +87,8 @@ static inline int run_filter(int dim, int lifted, const double *const *p, int *s
     case 4: return lh__insphere_filter_4(p, s, det, err);
     case 5: return lh__insphere_filter_5(p, s, det, err);
     case 6: return lh__insphere_filter_6(p, s, det, err);
-    default: return lh__insphere_filter_7(p, s, det, err);
+    case 7: return lh__insphere_filter_7(p, s, det, err);
+    default: return lh__insphere_filter_8(p, s, det, err);
     }
 }
 
@@ -156,6 +157,19 @@ int lh_insphere(lh_pred *ctx, int d, const double *const *pts)
     if (!ctx || !pts || d < 1 || d > LH_INSPHERE_MAX_DIM) return 0;
     ctx->count.calls++;
     return evaluate(ctx, d, 1, pts, 1);
+}
+
+int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts)
+{
+    ctx->count.calls++;
+    int s = evaluate(ctx, d, 1, pts, 1);
+    return s ? s : lh__sos_sign(ctx, pts, d, 1);
+}
+
+int lh__orient_fast(lh_pred *ctx, int k, const double *const *pts)
+{
+    ctx->count.calls++;
+    return evaluate(ctx, k, 0, pts, 1);
 }
 
 int lh_orient_sos(lh_pred *ctx, int k, const double *const *pts)

@@ -31,7 +31,7 @@ static void buf_init(exact_buf *b, uint32_t *arena, int entries)
     b->layer = rest + 4 * LH__ENTRY_LIMBS;
 }
 
-/* Sign of the determinant of the m x m integer matrix e (row-major), m <= 8
+/* Sign of the determinant of the m x m integer matrix e (row-major), m <= 9
  * (a homogeneous minor with the column of ones is reduced by one first).
  * Layer s holds, for every s-subset R of rows, det(e[R, 0..s-1]) expanded along
  * its last column: sum over r in R of (-1)^(pos(r)+s-1) e[r][s-1] det(R \ r). */
@@ -47,7 +47,7 @@ static int det_sign(exact_buf *b, const lh__subsets *sub, int m, const lh__bn *e
         cap += most;
     }
     const uint8_t *slot = sub->slot;
-    static const int widest[LH__MAXN] = {1, 1, 2, 3, 6, 10, 20, 35, 70}; /* C(m, m/2) */
+    static const int widest[LH__MAXN] = {1, 1, 2, 3, 6, 10, 20, 35, 70, 126}; /* C(m, m/2) */
     lh__bn lay[2][LH__LAYER_SLOTS];
     for (int w = 0; w < 2; w++)
         for (int k = 0; k < widest[m]; k++)

@@ -16,7 +16,7 @@
 #include "lh_exact.h"
 #include "lifthull.h"
 
-#define LH__MAXN 9 /* largest homogeneous matrix: orient_8 and insphere_7 */
+#define LH__MAXN 10 /* largest homogeneous matrix: insphere_8 (orient_8 is 9) */
 
 /* Limbs of one matrix entry: a difference of two doubles (67) or a sum of up to
  * eight squares of such differences (2*67 + 1), with room for a carry. */
@@ -25,17 +25,17 @@
  * entries: (LH__MAXN-2) coordinate columns, one lifted column, carries. */
 #define LH__DET_LIMBS \
     ((LH__MAXN - 2) * (LH__BN_DBL_LIMBS + 1) + LH__ENTRY_LIMBS + LH__MAXN + 2)
-#define LH__LAYER_SLOTS 70 /* C(8,4): the widest layer of row subsets (m <= 8) */
+#define LH__LAYER_SLOTS 126 /* C(9,4): the widest layer of row subsets (m <= 9) */
 
 #define LH__ARENA_LIMBS                                                       \
     ((size_t)LH__MAXN * LH__MAXN * LH__ENTRY_LIMBS + 4 * LH__ENTRY_LIMBS +   \
      (2 * LH__LAYER_SLOTS + 1) * (size_t)LH__DET_LIMBS)
 
 /* Row subsets of an m x m matrix (m <= 8) as bit masks, grouped by size in
- * increasing order: the masks below 2^m of size s are a prefix of subsets[s], and
+ * increasing order: the masks below 2^m of size s are a prefix of by_size[s], and
  * slot[mask] is a mask's index in its group. Filled by lh_pred_create. */
 typedef struct lh__subsets {
-    uint8_t by_size[LH__MAXN][LH__LAYER_SLOTS];
+    uint16_t by_size[LH__MAXN][LH__LAYER_SLOTS];
     uint8_t count[LH__MAXN];
     uint8_t slot[1 << (LH__MAXN - 1)];
 } lh__subsets;

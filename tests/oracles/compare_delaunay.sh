@@ -14,10 +14,12 @@
 # sorted) and the canonical forms are compared byte for byte. Per file it prints one line
 #   compare: d=3 n=2000 simplices=13085 lifthull==cgal==cgal_dd==qhull==tetgen (FILE)
 # and a line of wall-clock times; on a mismatch, the groups of agreeing producers, which
-# producers disagree with the majority (ties go to a group without lifthull), and the first
-# simplices only in one side of each disagreement. --validate makes CGAL run is_valid(), which
-# checks with exact predicates that every interior facet is locally Delaunay; with LIFTHULL=none
-# a file where only one oracle applies (d >= 4 with --no-qhull) passes on that check alone.
+# producers disagree with the majority (ties go to a group without lifthull), the first
+# simplices only in one side of each disagreement, and the verdict of exact_check.py (exact
+# local Delaunay and hull test, at most 2,000 interior and 2,000 boundary facets) on one output
+# of each group. --validate makes CGAL run is_valid(), which checks with exact predicates that
+# every interior facet is locally Delaunay; with LIFTHULL=none a file where only one oracle
+# applies (d >= 4 with --no-qhull) passes on that check alone.
 #
 # Options (anywhere on the line):
 #   --with-tetgen     also run TetGen on d = 3 files (ignored for other d)
@@ -244,6 +246,13 @@ for file in "${files[@]}"; do
       [[ $i == "$best" ]] && continue
       "$python" "$canon" diff "${reps[$best]}" "$work/${reps[$best]}.canon" \
         "${reps[$i]}" "$work/${reps[$i]}.canon" --max "$maxk"
+    done
+    # Who is right? An exact, oracle-free local Delaunay check of one output per group.
+    for i in "${!groups[@]}"; do
+      r=$work/${reps[$i]}
+      { count_of "${reps[$i]}"; cat "$r.canon"; } >"$r.i"  # `i` format, also for TetGen's
+      echo "  exact check of ${reps[$i]}: $("$python" "$here/exact_check.py" --limit 2000 \
+        "$file" "$r.i" 2>&1 | tail -n 1)"
     done
     [[ -z $keep ]] || echo "  outputs kept in $work"
     [[ $status == 2 ]] || status=1
