@@ -7,5 +7,18 @@ enum { LH_EXIT_OK = 0, LH_EXIT_FAIL = 1, LH_EXIT_USAGE = 2, LH_EXIT_INPUT = 3 };
 
 int lh_cli_selfcheck(int argc, char **argv);
 int lh_cli_delaunay(int argc, char **argv);
+int lh_cli_hull(int argc, char **argv);
+
+/* Shared by the commands that read points (delaunay.c). */
+#include "lifthull.h"
+#include "points.h"
+double lh_cli_seconds(void);
+/* Options [-s] [FILE]; prints the problem and returns -1 on a bad one. */
+int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file);
+/* Reads FILE (or standard input for NULL or "-"); 0 after printing the error. */
+int lh_cli_load(const char *file, lh_cli_points *pts, const char **name);
+void lh_cli_report_failure(const char *name, const lh_cli_points *pts, lh_status st);
+/* Flushes standard output: LH_EXIT_OK, or LH_EXIT_FAIL with a message. */
+int lh_cli_finish_output(const char *cmd);
 
 #endif

@@ -1,6 +1,7 @@
 /* delaunay.c — `lifthull delaunay [-s] [FILE]`: Delaunay simplices in Qhull's `i`
  * format (a count line, then one simplex per line as 0-based site indices), or with
- * -s a summary. Reads FILE or standard input. */
+ * -s a summary. Reads FILE or standard input. Also the pieces the point-reading
+ * commands share (lh_cli_load and friends, cli.h). */
 #include "cli.h"
 #include "lifthull.h"
 #include "points.h"
@@ -10,57 +11,85 @@
 #include <string.h>
 #include <time.h>
 
-static double seconds(void)
+double lh_cli_seconds(void)
 {
     struct timespec ts;
     timespec_get(&ts, TIME_UTC);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-int lh_cli_delaunay(int argc, char **argv)
+int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file)
 {
-    int summary = 0;
-    const char *file = NULL;
+    *summary = 0;
+    *file = NULL;
     for (int i = 0; i < argc; i++) {
-        if (!strcmp(argv[i], "-s"))
-            summary = 1;
-        else if (argv[i][0] == '-' && argv[i][1]) {
-            fprintf(stderr, "lifthull delaunay: unknown option '%s' (usage: lifthull delaunay [-s] [FILE])\n", argv[i]);
-            return LH_EXIT_USAGE;
-        } else if (file) {
-            fprintf(stderr, "lifthull delaunay: more than one input file\n");
-            return LH_EXIT_USAGE;
-        } else
-            file = argv[i];
+        if (!strcmp(argv[i], "-s")) {
+            *summary = 1;
+        } else if (argv[i][0] == '-' && argv[i][1]) {
+            fprintf(stderr, "lifthull %s: unknown option '%s' (usage: lifthull %s [-s] [FILE])\n", cmd, argv[i], cmd);
+            return -1;
+        } else if (*file) {
+            fprintf(stderr, "lifthull %s: more than one input file\n", cmd);
+            return -1;
+        } else {
+            *file = argv[i];
+        }
     }
+    return 0;
+}
+
+int lh_cli_load(const char *file, lh_cli_points *pts, const char **name)
+{
     FILE *f = stdin;
-    const char *name = "<stdin>";
+    *name = "<stdin>";
     if (file && strcmp(file, "-")) {
         f = fopen(file, "r");
-        name = file;
+        *name = file;
         if (!f) {
             perror(file);
-            return LH_EXIT_INPUT;
+            return 0;
         }
     }
-    lh_cli_points pts;
-    int ok = lh_cli_read_points(f, name, &pts);
+    int ok = lh_cli_read_points(f, *name, pts);
     if (f != stdin) fclose(f);
-    if (!ok) return LH_EXIT_INPUT;
+    return ok;
+}
 
-    double t0 = seconds();
+void lh_cli_report_failure(const char *name, const lh_cli_points *pts, lh_status st)
+{
+    if (st == LH_ERR_DEGENERATE) {
+        int k = -1;
+        lh_affine_dim(pts->d, pts->n, pts->xyz, &k);
+        fprintf(stderr, "%s: the %zu sites span an affine subspace of dimension %d, not %d: "
+                "nothing %d-dimensional to compute\n", name, pts->n, k, pts->d, pts->d);
+    } else {
+        fprintf(stderr, "%s: %s\n", name, lh_status_message(st));
+    }
+}
+
+int lh_cli_finish_output(const char *cmd)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "lifthull %s: error writing the output\n", cmd);
+        return LH_EXIT_FAIL;
+    }
+    return LH_EXIT_OK;
+}
+
+int lh_cli_delaunay(int argc, char **argv)
+{
+    int summary;
+    const char *file;
+    if (lh_cli_parse_common("delaunay", argc, argv, &summary, &file) != 0) return LH_EXIT_USAGE;
+    lh_cli_points pts;
+    const char *name;
+    if (!lh_cli_load(file, &pts, &name)) return LH_EXIT_INPUT;
+    double t0 = lh_cli_seconds();
     lh_tri *t;
     lh_status st = lh_delaunay(pts.d, pts.n, pts.xyz, NULL, &t);
-    double t1 = seconds();
+    double t1 = lh_cli_seconds();
     if (st != LH_OK) {
-        if (st == LH_ERR_DEGENERATE) {
-            int k = -1;
-            lh_affine_dim(pts.d, pts.n, pts.xyz, &k);
-            fprintf(stderr, "%s: the %zu sites span an affine subspace of dimension %d, not %d: "
-                    "no %d-dimensional triangulation exists\n", name, pts.n, k, pts.d, pts.d);
-        } else {
-            fprintf(stderr, "%s: %s\n", name, lh_status_message(st));
-        }
+        lh_cli_report_failure(name, &pts, st);
         free(pts.xyz);
         return LH_EXIT_FAIL;
     }
@@ -78,9 +107,5 @@ int lh_cli_delaunay(int argc, char **argv)
     }
     lh_tri_free(t);
     free(pts.xyz);
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        perror("lifthull delaunay: writing the output");
-        return LH_EXIT_FAIL;
-    }
-    return LH_EXIT_OK;
+    return lh_cli_finish_output("delaunay");
 }

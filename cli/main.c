@@ -19,6 +19,10 @@ static void usage(FILE *out)
             "                     format (count, then one simplex per line, 0-based site\n"
             "                     indices); -s writes a summary instead.\n"
             "                     e.g.  rbox 1000 D3 | lifthull delaunay\n"
+            "  hull [-s] [FILE]   convex hull facets of the points, qconvex's 'i' format\n"
+            "                     (count, then one facet per line, d 0-based site indices,\n"
+            "                     oriented outward); -s writes a summary instead.\n"
+            "                     e.g.  rbox 1000 D4 | lifthull hull -s\n"
             "  selfcheck [FILE]   check the exact predicates on near-degenerate cases\n"
             "                     (FILE: lines 'orient K SIGN coords...' or\n"
             "                     'insphere D SIGN coords...'; default: the bundled\n"
@@ -44,6 +48,7 @@ int main(int argc, char **argv)
     }
     if (!strcmp(cmd, "selfcheck")) return lh_cli_selfcheck(argc - 2, argv + 2);
     if (!strcmp(cmd, "delaunay")) return lh_cli_delaunay(argc - 2, argv + 2);
+    if (!strcmp(cmd, "hull")) return lh_cli_hull(argc - 2, argv + 2);
     fprintf(stderr, "lifthull: unknown command '%s' (try lifthull --help)\n", cmd);
     return LH_EXIT_USAGE;
 }

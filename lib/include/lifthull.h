@@ -245,6 +245,29 @@ lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
 /* The same for a handle, also verifying its neighbour and hull arrays. */
 lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
 
+/* ---- convex hull ------------------------------------------------------------------ */
+
+/*
+ * lh_convex_hull: the convex hull of n sites in R^d (d = 2..8; qconvex's job), by the
+ * same incremental engine, exactly. The hull is simplicial: each facet lists d site
+ * indices in canonical order (as lh_delaunay's simplices), oriented so that
+ * orient_d(facet, p) > 0 for every point p strictly outside; facets are sorted.
+ * Sites strictly inside are never vertices; a site on the hull's boundary may or may
+ * not be one (its facets are then coplanar with their neighbours, never flat).
+ * Duplicates merge as in lh_delaunay. Statuses as lh_delaunay's (LH_ERR_DEGENERATE
+ * when the sites span less than R^d).
+ */
+typedef struct lh_hull lh_hull;
+lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *opt,
+                         lh_hull **out);
+int lh_hull_dim(const lh_hull *h);
+size_t lh_hull_facet_count(const lh_hull *h);
+const int32_t *lh_hull_facets(const lh_hull *h);     /* d per facet              */
+size_t lh_hull_vertex_count(const lh_hull *h);
+const int32_t *lh_hull_vertices(const lh_hull *h);   /* increasing site indices  */
+const int32_t *lh_hull_duplicate_of(const lh_hull *h);
+void lh_hull_free(lh_hull *h);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,11 +1,11 @@
 /*
- * order.c — what happens to the sites before the first insertion: a radix sort on
+ * order.c — what happens to the sites before the first insertion (engine.h): a radix sort on
  * Morton keys, which also brings exact duplicates together to be merged; the
  * insertion order (BRIO: Amenta, Choi & Rote, "Incremental constructions con BRIO",
  * SoCG 2003, Morton order in each round); and an initial simplex of d+1 affinely
  * independent sites, found exactly.
  */
-#include "dt.h"
+#include "engine.h"
 #include "lh_sort.h"
 
 #include <string.h>
@@ -24,10 +24,10 @@ static int lex_cmp(const void *vctx, int32_t a, int32_t b)
     return (a > b) - (a < b);
 }
 
-static int same_site(const lh_tri *t, int32_t a, int32_t b)
+static int same_site(const lh__eng *e, int32_t a, int32_t b)
 {
-    const double *p = t->xyz + (size_t)a * t->d, *q = t->xyz + (size_t)b * t->d;
-    for (int j = 0; j < t->d; j++)
+    const double *p = lh__eng_site(e, a), *q = lh__eng_site(e, b);
+    for (int j = 0; j < e->d; j++)
         if (p[j] != q[j]) return 0;
     return 1;
 }
@@ -35,10 +35,10 @@ static int same_site(const lh_tri *t, int32_t a, int32_t b)
 /* Morton (Z-order) key of every site: each coordinate quantised to 63/d bits over
  * the bounding box, bits interleaved from the most significant down. A span too
  * wide for doubles quantises to 0 (keys tie; correctness does not depend on them). */
-static void morton_keys(const lh_tri *t, uint64_t *key)
+static void morton_keys(const lh__eng *t, uint64_t *key)
 {
     int d = t->d, bits = 63 / d;
-    double lo[LH_DELAUNAY_MAX_DIM], scale[LH_DELAUNAY_MAX_DIM];
+    double lo[LH__ENGINE_MAX_DIM], scale[LH__ENGINE_MAX_DIM];
     for (int j = 0; j < d; j++) {
         double mn = t->xyz[j], mx = mn;
         for (size_t i = 1; i < t->n; i++) {
@@ -52,7 +52,7 @@ static void morton_keys(const lh_tri *t, uint64_t *key)
     }
     for (size_t i = 0; i < t->n; i++) {
         const double *p = t->xyz + i * d;
-        uint64_t cell[LH_DELAUNAY_MAX_DIM], k = 0;
+        uint64_t cell[LH__ENGINE_MAX_DIM], k = 0;
         for (int j = 0; j < d; j++) {
             double x = (p[j] - lo[j]) * scale[j];
             cell[j] = x > 0 ? (uint64_t)x : 0;
@@ -89,7 +89,7 @@ static void radix_sort(uint64_t *key, int32_t *idx, uint64_t *k2, int32_t *i2, s
 /* Equal sites share a Morton key: in each run of equal keys, an exact lexicographic
  * sort puts equal sites together, smallest index first — that one is the vertex.
  * Compacts the distinct sites into idx (Morton order) and returns their number. */
-static size_t merge_runs(lh_tri *t, const uint64_t *key, int32_t *idx, int32_t *tmp)
+static size_t merge_runs(lh__eng *t, const uint64_t *key, int32_t *idx, int32_t *tmp)
 {
     lex_ctx c = {t->xyz, t->d};
     size_t nrep = 0;
@@ -117,7 +117,7 @@ static size_t merge_runs(lh_tri *t, const uint64_t *key, int32_t *idx, int32_t *
 
 /* BRIO rounds: a site joins round r with probability 2^-(r+1) (r capped); rounds
  * go from the rarest to the commonest, each keeping the Morton order. */
-static void brio_rounds(lh__dt *b, int32_t *tmp, uint8_t *round)
+static void brio_rounds(lh__eng *b, int32_t *tmp, uint8_t *round)
 {
     enum { ROUNDS = 24 };
     size_t n = b->norder, start[ROUNDS + 1] = {0};
@@ -136,9 +136,9 @@ static void brio_rounds(lh__dt *b, int32_t *tmp, uint8_t *round)
     memcpy(b->order, tmp, n * sizeof *tmp);
 }
 
-lh_status lh__dt_order_sites(lh__dt *b)
+lh_status lh__eng_order(lh__eng *b)
 {
-    lh_tri *t = b->t;
+    lh__eng *t = b;
     size_t n = t->n;
     uint64_t *key = lh__alloc(&t->alloc, (n + 1) * sizeof *key), *k2 = lh__alloc(&t->alloc, (n + 1) * sizeof *k2);
     int32_t *idx = lh__alloc(&t->alloc, (n + 1) * sizeof *idx), *i2 = lh__alloc(&t->alloc, (n + 1) * sizeof *i2);
@@ -166,10 +166,10 @@ int lh__affine_independent(lh_pred *pred, int d, const double *const *pts, int k
 {
     if (k == 0) return 1;
     if (k == d) return lh_orient(pred, d, pts) != 0;
-    double proj[LH_DELAUNAY_MAX_DIM + 1][LH_DELAUNAY_MAX_DIM];
-    const double *pp[LH_DELAUNAY_MAX_DIM + 1];
+    double proj[LH__ENGINE_MAX_DIM + 1][LH__ENGINE_MAX_DIM];
+    const double *pp[LH__ENGINE_MAX_DIM + 1];
     for (int mask = 0; mask < (1 << d); mask++) {
-        int cols[LH_DELAUNAY_MAX_DIM], m = 0;
+        int cols[LH__ENGINE_MAX_DIM], m = 0;
         for (int j = 0; j < d; j++)
             if (mask & (1 << j)) cols[m++] = j;
         if (m != k) continue;
@@ -185,14 +185,14 @@ int lh__affine_independent(lh_pred *pred, int d, const double *const *pts, int k
 /* Moves d+1 affinely independent sites to the front of the insertion order, taking
  * each site in order when it raises the affine dimension. Returns the affine
  * dimension of the distinct sites when it is below d, else d. */
-int lh__dt_initial_simplex(lh__dt *b)
+int lh__eng_initial_simplex(lh__eng *b)
 {
     int d = b->d, k = 0;
-    const double *pts[LH_DELAUNAY_MAX_DIM + 1];
+    const double *pts[LH__ENGINE_MAX_DIM + 1];
     if (b->norder == 0) return -1;
-    pts[0] = lh__dt_site(b, b->order[0]);
+    pts[0] = lh__eng_site(b, b->order[0]);
     for (size_t i = 1; i < b->norder && k < d; i++) {
-        pts[k + 1] = lh__dt_site(b, b->order[i]);
+        pts[k + 1] = lh__eng_site(b, b->order[i]);
         if (lh__affine_independent(b->pred, d, pts, k + 1)) {
             k++;
             int32_t s = b->order[i]; /* keep the rest in order: rotate it forward */

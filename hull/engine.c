@@ -1,0 +1,238 @@
+/*
+ * engine.c — the incremental driver (engine.h): initial simplex, walk, conflicts,
+ * insertion loop; the convex hull facets from the infinite cells.
+ *
+ * Location: a remembering stochastic visibility walk (Devillers, Pion & Teillaud,
+ * "Walking in a triangulation", IJFCS 13(2), 2002) from the last new cell. It stops
+ * in the closed simplex containing q, or in an infinite cell whose facet q strictly
+ * sees. A bound on its length falls back to scanning every cell, so it always ends.
+ */
+#include "engine.h"
+
+#include "lh_exact.h"
+
+#include <string.h>
+
+lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
+                             const lh_options *opt)
+{
+    if (d < lo || d > hi) return LH_ERR_DIMENSION;
+    if (!xyz && n > 0) return LH_ERR_INVALID_ARGUMENT;
+    if (n >= (size_t)INT32_MAX || n > SIZE_MAX / ((size_t)d * sizeof(double)))
+        return LH_ERR_TOO_LARGE;
+    if (opt && opt->alloc && (!opt->alloc->alloc || !opt->alloc->free))
+        return LH_ERR_INVALID_ARGUMENT;
+    return lh_coords_validate(d, n, xyz, NULL);
+}
+
+lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
+                       const double *xyz, int32_t *dup, uint64_t seed)
+{
+    memset(e, 0, sizeof *e);
+    lh__allocator_init(&e->alloc, alloc);
+    e->d = d;
+    e->nv = d + 1;
+    e->n = n;
+    e->xyz = xyz;
+    e->dup = dup;
+    e->rng = seed | 1;
+    return lh_pred_create(&e->alloc, &e->pred);
+}
+
+void lh__eng_release(lh__eng *e)
+{
+    lh__tds_release(&e->tds);
+    lh__free(&e->alloc, e->order);
+    lh__free(&e->alloc, e->v2c);
+    lh_pred_free(e->pred);
+    e->order = e->v2c = NULL;
+    e->pred = NULL;
+}
+
+static int inf_index(const int32_t *v, int nv)
+{
+    for (int k = 0; k < nv; k++)
+        if (v[k] == LH__INF) return k;
+    return -1;
+}
+
+int lh__eng_finite(const lh__eng *e, int32_t c)
+{
+    return inf_index(e->tds.vert + (size_t)c * e->nv, e->nv) < 0;
+}
+
+static int conflict(void *user, int32_t c)
+{
+    lh__eng *e = user;
+    const int32_t *v = e->tds.vert + (size_t)c * e->nv;
+    int inf = inf_index(v, e->nv);
+    if (inf < 0) return e->finite_conflict && e->finite_conflict(e->user, v, e->q);
+    for (int k = 0; k < e->nv; k++) e->pts[k] = lh__eng_site(e, k == inf ? e->q : v[k]);
+    int o = lh__orient_fast(e->pred, e->d, e->pts);
+    if (o || !e->finite_conflict) return o > 0;
+    int32_t f = e->tds.nbr[(size_t)c * e->nv + inf];
+    return e->finite_conflict(e->user, e->tds.vert + (size_t)f * e->nv, e->q);
+}
+
+/* orient_d of finite cell v with its vertex k replaced by q. */
+static int orient_replaced(lh__eng *e, const int32_t *v, int k)
+{
+    for (int j = 0; j < e->nv; j++) e->pts[j] = lh__eng_site(e, j == k ? e->q : v[j]);
+    return lh__orient_fast(e->pred, e->d, e->pts);
+}
+
+static int32_t scan_for_conflict(lh__eng *e)
+{
+    for (int32_t c = 0; c < e->tds.top; c++)
+        if (!lh__tds_dead(&e->tds, c) && conflict(e, c)) return c;
+    return -1;
+}
+
+/* A cell in conflict with q, or -1 when q is inside the current hull and no finite
+ * cell can conflict (placing mode). */
+static int32_t locate(lh__eng *e)
+{
+    const int nv = e->nv;
+    int32_t c = e->hint, prev = -1;
+    size_t limit = 64 + 8 * (size_t)e->tds.live;
+    for (size_t step = 0; step < limit; step++) {
+        const int32_t *v = e->tds.vert + (size_t)c * nv;
+        int inf = inf_index(v, nv);
+        if (inf >= 0) {
+            if (prev >= 0 || conflict(e, c)) return c; /* entered across its facet */
+            prev = c;
+            c = e->tds.nbr[(size_t)c * nv + inf];
+            continue;
+        }
+        int s = (int)(lh__rng_next(&e->rng) % (uint64_t)nv), moved = 0;
+        for (int t = 0; t < nv && !moved; t++) {
+            int k = (s + t) % nv;
+            int32_t n = e->tds.nbr[(size_t)c * nv + k];
+            if (n == prev || orient_replaced(e, v, k) >= 0) continue;
+            prev = c;
+            c = n;
+            moved = 1;
+        }
+        if (!moved) return e->finite_conflict ? c : -1; /* q in the closed simplex c */
+    }
+    int32_t found = scan_for_conflict(e); /* not reached in practice */
+    return found;
+}
+
+/* The first d+2 cells: the simplex order[0..d], positively oriented, and one
+ * infinite cell per facet, oriented by exchanging two of its finite vertices. */
+static lh_status start(lh__eng *e)
+{
+    const int nv = e->nv;
+    int32_t s[LH__ENGINE_MAX_DIM + 1] = {0}, cells[LH__ENGINE_MAX_DIM + 2];
+    for (int k = 0; k < nv; k++) {
+        s[k] = e->order[k];
+        e->pts[k] = lh__eng_site(e, s[k]);
+    }
+    if (lh_orient(e->pred, e->d, e->pts) < 0) {
+        int32_t x = s[0];
+        s[0] = s[1];
+        s[1] = x;
+    }
+    for (int i = 0; i <= nv; i++) {
+        int32_t c = lh__tds_new_cell(&e->tds);
+        if (c < 0) return LH_ERR_NOMEM;
+        cells[i] = c;
+        int32_t *v = e->tds.vert + (size_t)c * nv;
+        memcpy(v, s, (size_t)nv * sizeof *v);
+        if (i < nv) { /* infinite cell replacing vertex i */
+            v[i] = LH__INF;
+            int a = i == 0 ? 1 : 0, z = i == nv - 1 ? nv - 2 : nv - 1;
+            int32_t x = v[a];
+            v[a] = v[z];
+            v[z] = x;
+        }
+    }
+    lh__tds_link_all(&e->tds, cells, nv + 1);
+    for (int k = 0; k < nv; k++) e->v2c[s[k]] = cells[nv];
+    e->hint = cells[nv];
+    return LH_OK;
+}
+
+static lh_status insert_all(lh__eng *e)
+{
+    for (size_t i = (size_t)e->nv; i < e->norder; i++) {
+        e->q = e->order[i];
+        int32_t c = locate(e);
+        if (c < 0) {
+            e->skipped++;
+            continue;
+        }
+        lh_status st = lh__tds_insert(&e->tds, c, e->q, conflict, e);
+        if (st != LH_OK) return st;
+        for (size_t f = 0; f < e->tds.nbound; f++) {
+            int32_t N = e->tds.fresh[f];
+            const int32_t *v = e->tds.vert + (size_t)N * e->nv;
+            for (int k = 0; k < e->nv; k++)
+                if (v[k] != LH__INF) e->v2c[v[k]] = N;
+        }
+        e->hint = e->tds.fresh[0];
+    }
+    return LH_OK;
+}
+
+lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
+{
+    lh_status st = lh__eng_order(e);
+    if (st != LH_OK) return st;
+    *affdim = lh__eng_initial_simplex(e);
+    if (*affdim < e->d) return LH_ERR_DEGENERATE;
+    if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
+    e->v2c = lh__alloc(&e->alloc, (e->n + 1) * sizeof *e->v2c);
+    if (!e->v2c) return LH_ERR_NOMEM;
+    for (size_t i = 0; i < e->n; i++) e->v2c[i] = -1;
+    if ((st = start(e)) != LH_OK) return st;
+    return insert_all(e);
+}
+
+lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count)
+{
+    const int nv = e->nv, d = e->d;
+    size_t h = 0;
+    for (int32_t c = 0; c < e->tds.top; c++)
+        if (!lh__tds_dead(&e->tds, c) && !lh__eng_finite(e, c)) h++;
+    int32_t *raw = lh__alloc(&e->alloc, (h * d + 1) * sizeof *raw);
+    int32_t *facets = lh__alloc(&e->alloc, (h * d + 1) * sizeof *facets);
+    int32_t *order = lh__alloc(&e->alloc, (h + 1) * sizeof *order);
+    lh_status st = raw && facets && order ? LH_OK : LH_ERR_NOMEM;
+    if (st == LH_OK) {
+        size_t f = 0;
+        for (int32_t c = 0; c < e->tds.top; c++) {
+            if (lh__tds_dead(&e->tds, c) || lh__eng_finite(e, c)) continue;
+            const int32_t *v = e->tds.vert + (size_t)c * nv;
+            int32_t *o = raw + f * d;
+            int m = 0, inf = 0;
+            for (int k = 0; k < nv; k++) {
+                if (v[k] == LH__INF)
+                    inf = k;
+                else
+                    o[m++] = v[k];
+            }
+            /* Moving the outside point from position inf to the end takes d - inf
+             * exchanges; compensate an odd number with one more. */
+            if ((d - inf) & 1) {
+                int32_t x = o[0];
+                o[0] = o[1];
+                o[1] = x;
+            }
+            int from[LH__ENGINE_MAX_DIM];
+            lh__canonical(o, from, d);
+            f++;
+        }
+        if (!lh__sort_tuples(&e->alloc, raw, d, h, e->n, facets, order)) st = LH_ERR_NOMEM;
+    }
+    lh__free(&e->alloc, raw);
+    lh__free(&e->alloc, order);
+    if (st != LH_OK) {
+        lh__free(&e->alloc, facets);
+        return st;
+    }
+    *out = facets;
+    *count = h;
+    return LH_OK;
+}

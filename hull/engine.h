@@ -1,0 +1,103 @@
+/*
+ * engine.h — lifthull's incremental engine, one code path for every dimension.
+ *
+ * The engine triangulates R^d + {LH__INF} with cells of d+1 vertices (hull/tds.h):
+ * a finite cell is a d-simplex of sites, stored positively oriented; an infinite
+ * cell joins a facet of the convex hull to LH__INF and is "positively oriented" in
+ * that putting a point beyond the facet in LH__INF's place gives orient_d > 0. So
+ * the infinite cells carry the convex hull, and every cell has d+1 neighbours.
+ *
+ * Which cells a new site q conflicts with is the caller's choice, through one test
+ * on finite cells:
+ *   - an infinite cell conflicts when q is strictly beyond its facet (orient_d > 0);
+ *     when q lies on the facet's hyperplane it conflicts exactly when the finite
+ *     cell across the facet does (CGAL's rule), so no flat cell ever appears;
+ *   - a finite cell conflicts when finite_conflict says so.
+ * With finite_conflict = NULL no finite cell conflicts: a placing triangulation,
+ * whose infinite cells are the convex hull (qconvex's job); sites inside the current
+ * hull are not inserted. lift/ passes the lifted test (insphere < 0) and gets the
+ * Delaunay triangulation, the lower hull of the lifted sites.
+ *
+ * Steps: sites ordered (order.c: Morton radix sort, exact duplicates merged, BRIO
+ * rounds), an initial simplex of d+1 affinely independent sites (exact), then for
+ * each site a walk to a conflicting cell and a cavity insertion (tds.c).
+ */
+#ifndef LH_ENGINE_H
+#define LH_ENGINE_H
+
+#include "lh_alloc.h"
+#include "lifthull.h"
+#include "tds.h"
+
+#define LH__ENGINE_MAX_DIM LH_ORIENT_MAX_DIM
+
+/* Whether the finite cell with vertices v (positively oriented) conflicts with site q. */
+typedef int (*lh__finite_conflict_fn)(void *user, const int32_t *v, int32_t q);
+
+typedef struct lh__eng {
+    lh_allocator alloc;
+    int d, nv;
+    size_t n;
+    const double *xyz; /* n*d sites, the caller's */
+    int32_t *dup;      /* n, the caller's: filled with the site each one merges into */
+    size_t ndup;
+    lh_pred *pred;
+    lh__tds tds;
+    int32_t *order;    /* distinct sites in insertion order */
+    size_t norder;
+    int32_t *v2c;      /* n: a cell incident to each inserted site, -1 otherwise */
+    size_t skipped;    /* sites inside the hull, not inserted (placing mode only) */
+    int32_t q, hint;
+    uint64_t rng;
+    lh__finite_conflict_fn finite_conflict;
+    void *user;
+    const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */
+} lh__eng;
+
+static inline const double *lh__eng_site(const lh__eng *e, int32_t v)
+{
+    return e->xyz + (size_t)v * (size_t)e->d;
+}
+
+static inline uint64_t lh__rng_next(uint64_t *s) /* xorshift64* (Vigna 2016) */
+{
+    *s ^= *s >> 12;
+    *s ^= *s << 25;
+    *s ^= *s >> 27;
+    return *s * UINT64_C(2685821657736338717);
+}
+
+/* Validates (d, n, xyz, opt) for a computation in dimension lo..hi. */
+lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
+                             const lh_options *opt);
+/* Sets up e (no cells yet) over the caller's sites; dup must hold n entries. */
+lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
+                       const double *xyz, int32_t *dup, uint64_t seed);
+void lh__eng_release(lh__eng *e);
+/* order.c: duplicates merged into e->dup, insertion order in e->order. */
+lh_status lh__eng_order(lh__eng *e);
+/* order.c: moves d+1 affinely independent sites to the front of e->order; returns
+ * the affine dimension of the distinct sites (-1 if none). */
+int lh__eng_initial_simplex(lh__eng *e);
+/* order.c: whether pts[k] is outside the affine hull of pts[0..k-1] in R^d. */
+int lh__affine_independent(lh_pred *pred, int d, const double *const *pts, int k);
+/* All of the above, then every site inserted. LH_ERR_DEGENERATE when the sites
+ * span less than R^d (*affdim tells the dimension). */
+lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim);
+
+/* Whether cell c is finite. */
+int lh__eng_finite(const lh__eng *e, int32_t c);
+/* The convex hull facets: d site indices each, ordered so that orient_d(facet, p) > 0
+ * for p outside, in canonical order (see lh__canonical), sorted. Allocates *out. */
+lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count);
+
+/* canon.c: canonical order of an oriented tuple (increasing, then the last two
+ * exchanged if that took an odd permutation); from[p] = original position of the
+ * entry now at p. */
+void lh__canonical(int32_t *v, int *from, int m);
+/* canon.c: sorts count tuples of m site indices (< n) lexicographically from v into
+ * out; order[i] = index in v of out's tuple i. Returns 0 on no memory. */
+int lh__sort_tuples(const lh_allocator *a, const int32_t *v, int m, size_t count,
+                    size_t n, int32_t *out, int32_t *order);
+
+#endif

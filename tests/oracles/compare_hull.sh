@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# compare_hull.sh LIFTHULL QCONVEX RBOX: the convex hull facets of `lifthull hull` equal
+# `qconvex Qt i`'s (as sets of site-index sets) on general-position rbox sets in 2D-8D.
+set -euo pipefail
+lifthull="$1"; qconvex="$2"; rbox="$3"
+tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+canon() { tail -n +2 | awk '{ n = split($0, a, " "); for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (a[j] + 0 < a[i] + 0) { t = a[i]; a[i] = a[j]; a[j] = t }; s = a[1]; for (i = 2; i <= n; i++) s = s " " a[i]; print s }' | LC_ALL=C sort; }
+status=0
+for case in 2:3000 3:2000 4:800 5:300 6:120 7:60 8:40; do
+  d="${case%%:*}"; n="${case##*:}"
+  "$rbox" "$n" "D$d" t"$d" > "$tmp/p.txt"
+  "$lifthull" hull "$tmp/p.txt" | canon > "$tmp/a"
+  "$qconvex" Qt i < "$tmp/p.txt" | canon > "$tmp/b"
+  if cmp -s "$tmp/a" "$tmp/b"; then
+    echo "hull d=$d n=$n: $(wc -l < "$tmp/a") facets, lifthull == qconvex"
+  else
+    echo "hull d=$d n=$n: DIFFER ($(wc -l < "$tmp/a") vs qconvex $(wc -l < "$tmp/b"))"; status=1
+  fi
+done
+exit "$status"
