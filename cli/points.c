@@ -60,7 +60,7 @@ static int token(scan *s, char *buf, size_t size, long *line, long *col)
     return 1;
 }
 
-static int read_count(scan *s, const char *what, long max, long *out)
+static int read_count(scan *s, const char *what, long max, long *out, scan *where)
 {
     char buf[64], msg[160];
     long line, col;
@@ -80,6 +80,7 @@ static int read_count(scan *s, const char *what, long max, long *out)
         return error(&at, msg);
     }
     *out = v;
+    if (where) *where = at;
     return 1;
 }
 
@@ -89,11 +90,9 @@ int lh_cli_read_points(FILE *f, const char *name, lh_cli_points *out)
     memset(out, 0, sizeof *out);
     advance(&s);
     long d, n;
-    if (!read_count(&s, "the dimension", 8, &d)) return 0;
-    if (d < 2) {
-        scan at = s;
-        return error(&at, "expected the dimension to be 2..8: lifthull triangulates in 2 to 8 dimensions");
-    }
+    scan dim_at;
+    if (!read_count(&s, "the dimension", 8, &d, &dim_at)) return 0;
+    if (d < 2) return error(&dim_at, "expected the dimension to be 2..8: lifthull works in 2 to 8 dimensions");
     /* The rest of the dimension's line is the count (the one-line "d n" form) or a
      * comment (rbox writes its command line there), as in Qhull. */
     char rest[256];
@@ -109,7 +108,7 @@ int lh_cli_read_points(FILE *f, const char *name, lh_cli_points *out)
     while (isspace((unsigned char)*end)) end++;
     if (end != rest && !*end && !errno && inline_n >= 1 && inline_n < INT32_MAX)
         n = inline_n;
-    else if (!read_count(&s, "the number of points", INT32_MAX - 1, &n))
+    else if (!read_count(&s, "the number of points", INT32_MAX - 1, &n, NULL))
         return 0;
     double *xyz = malloc((size_t)n * (size_t)d * sizeof *xyz);
     if (!xyz) {
