@@ -46,6 +46,7 @@ void lh_tri_free(lh_tri *t)
     lh__free(&a, t->nbr);
     lh__free(&a, t->hull);
     lh__free(&a, t->vsimp);
+    lh_pred_free(t->pred);
     lh__free(&a, t);
 }
 
@@ -87,6 +88,7 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     int affdim = -1;
     if (st == LH_OK) st = lh__eng_build(&e, expected_cells(d, n), &affdim);
     if (st == LH_OK) st = lh__dt_extract(&e, t);
+    if (st == LH_OK) st = lh_pred_create(&t->alloc, &t->pred);
     t->ndup = e.ndup;
     lh__eng_release(&e);
     if (st != LH_OK) {

@@ -24,6 +24,7 @@ struct lh_tri {
     size_t hull_count;
     int32_t *hull;    /* d*hull_count, outward */
     int32_t *vsimp;   /* n */
+    lh_pred *pred;    /* for queries (lh_tri_locate) */
 };
 
 /* output.c: the handle's arrays from a built engine. */

@@ -245,6 +245,28 @@ lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
 /* The same for a handle, also verifying its neighbour and hull arrays. */
 lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
 
+/* Where a query point lies in a triangulation. */
+typedef struct lh_location {
+    int32_t simplex;    /* the simplex whose closed region contains q, or -1 outside  */
+    int32_t hull_facet; /* outside: the nearest hull facet (index into
+                           lh_tri_hull_facets), -1 inside                            */
+    double distance;    /* outside: Euclidean distance from q to the hull, else 0    */
+    double bary[LH_DELAUNAY_MAX_DIM + 1];
+                        /* inside: q's barycentric coordinates in the simplex (d+1,
+                           in lh_tri_simplices order); outside: those of the nearest
+                           point of the hull in the facet (d, in facet order)        */
+} lh_location;
+
+/*
+ * lh_tri_locate: locates q (d doubles) by a visibility walk from simplex `hint` (any
+ * simplex index, or -1). Inside or outside is decided exactly (orient_d), so a point
+ * on a shared facet is reported in one of the simplices that contain it; barycentric
+ * coordinates and distances are computed in floating point. Returns LH_OK,
+ * LH_ERR_INVALID_ARGUMENT (t, q or out NULL) or LH_ERR_NONFINITE. Not const: it
+ * uses the handle's predicate context (one thread per handle).
+ */
+lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *out);
+
 /* ---- convex hull ------------------------------------------------------------------ */
 
 /*

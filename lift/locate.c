@@ -1,0 +1,184 @@
+/*
+ * locate.c — lh_tri_locate: a visibility walk over the output simplices (it ends in
+ * a Delaunay triangulation: Edelsbrunner, "An acyclicity theorem for cell complexes
+ * in d dimensions", Combinatorica 10(3), 1990), deciding sides with exact orient_d.
+ * Outside the hull, the nearest point of the hull lies on a facet that q strictly
+ * sees (q minus that point is a positive combination of the outward normals of the
+ * facets through it, so one of them has a positive product with it); only those
+ * facets get the floating-point closest-point computation.
+ */
+#include "dt.h"
+
+#include <math.h>
+#include <string.h>
+
+enum { MAXV = LH_DELAUNAY_MAX_DIM + 1 };
+
+/* Solves the m x m system a x = b (row-major, destroyed) by Gaussian elimination with
+ * partial pivoting; returns 0 when singular. */
+static int solve(double *a, double *b, int m)
+{
+    for (int k = 0; k < m; k++) {
+        int p = k;
+        for (int i = k + 1; i < m; i++)
+            if (fabs(a[i * m + k]) > fabs(a[p * m + k])) p = i;
+        if (a[p * m + k] == 0) return 0;
+        if (p != k) {
+            for (int j = 0; j < m; j++) {
+                double x = a[k * m + j];
+                a[k * m + j] = a[p * m + j];
+                a[p * m + j] = x;
+            }
+            double x = b[k];
+            b[k] = b[p];
+            b[p] = x;
+        }
+        for (int i = k + 1; i < m; i++) {
+            double f = a[i * m + k] / a[k * m + k];
+            for (int j = k; j < m; j++) a[i * m + j] -= f * a[k * m + j];
+            b[i] -= f * b[k];
+        }
+    }
+    for (int k = m - 1; k >= 0; k--) {
+        for (int j = k + 1; j < m; j++) b[k] -= a[k * m + j] * b[j];
+        b[k] /= a[k * m + k];
+    }
+    return 1;
+}
+
+/* Barycentric coordinates of q in the affine hull of the m points v[0..m-1] of R^d:
+ * the least-squares solution (exact when q lies in it). Returns the squared distance
+ * from q to its projection onto the hull's affine span; 0 on a degenerate face. */
+static double project(const double *const *v, int m, const double *q, int d, double *lam, int *ok)
+{
+    double g[MAXV * MAXV], r[MAXV];
+    int k = m - 1; /* unknowns lam[1..k]; lam[0] = 1 - sum */
+    for (int i = 0; i < k; i++) {
+        r[i] = 0;
+        for (int c = 0; c < d; c++) r[i] += (v[i + 1][c] - v[0][c]) * (q[c] - v[0][c]);
+        for (int j = 0; j < k; j++) {
+            double s = 0;
+            for (int c = 0; c < d; c++) s += (v[i + 1][c] - v[0][c]) * (v[j + 1][c] - v[0][c]);
+            g[i * k + j] = s;
+        }
+    }
+    *ok = k == 0 || solve(g, r, k);
+    double sum = 0;
+    for (int i = 0; i < k; i++) {
+        lam[i + 1] = *ok ? r[i] : 0;
+        sum += lam[i + 1];
+    }
+    lam[0] = 1 - sum;
+    double dist2 = 0;
+    for (int c = 0; c < d; c++) {
+        double x = 0;
+        for (int i = 0; i < m; i++) x += lam[i] * v[i][c];
+        dist2 += (x - q[c]) * (x - q[c]);
+    }
+    return dist2;
+}
+
+/* The point of the simplex v[0..m-1] nearest to q: over all faces, the projections
+ * that fall inside their face (all coordinates >= 0); the nearest wins. */
+static double nearest_in_simplex(const double *const *v, int m, const double *q, int d, double *bary)
+{
+    double best = INFINITY;
+    for (int mask = 1; mask < (1 << m); mask++) {
+        const double *f[MAXV];
+        int idx[MAXV], k = 0, ok;
+        for (int i = 0; i < m; i++)
+            if (mask & (1 << i)) {
+                f[k] = v[i];
+                idx[k++] = i;
+            }
+        double lam[MAXV];
+        double dist2 = project(f, k, q, d, lam, &ok);
+        int inside = ok;
+        for (int i = 0; i < k; i++) inside &= lam[i] >= 0;
+        if (!inside || dist2 >= best) continue;
+        best = dist2;
+        memset(bary, 0, (size_t)m * sizeof *bary);
+        for (int i = 0; i < k; i++) bary[idx[i]] = lam[i];
+    }
+    return best;
+}
+
+static int32_t walk(lh_tri *t, const double *q, int32_t s, int32_t *exit_simplex, int *exit_k)
+{
+    const int nv = t->d + 1;
+    const double *p[MAXV];
+    size_t limit = 64 + 4 * t->count;
+    int32_t prev = -1;
+    for (size_t step = 0; step < limit; step++) {
+        const int32_t *v = t->simp + (size_t)s * nv;
+        int moved = 0;
+        for (int k = 0; k < nv && !moved; k++) {
+            int32_t n = t->nbr[(size_t)s * nv + k];
+            if (n == prev && n >= 0) continue;
+            for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)v[j] * t->d;
+            if (lh_orient(t->pred, t->d, p) >= 0) continue;
+            if (n < 0) {
+                *exit_simplex = s;
+                *exit_k = k;
+                return -1;
+            }
+            prev = s;
+            s = n;
+            moved = 1;
+        }
+        if (!moved) return s;
+    }
+    return -2; /* unreachable in a Delaunay triangulation */
+}
+
+static void locate_outside(lh_tri *t, const double *q, lh_location *out)
+{
+    const int d = t->d;
+    const double *p[MAXV];
+    double best = INFINITY;
+    for (size_t f = 0; f < t->hull_count; f++) {
+        const int32_t *v = t->hull + f * d;
+        for (int j = 0; j < d; j++) p[j] = t->xyz + (size_t)v[j] * d;
+        p[d] = q;
+        if (lh_orient(t->pred, d, p) <= 0) continue; /* not strictly visible */
+        double bary[MAXV];
+        double dist2 = nearest_in_simplex(p, d, q, d, bary);
+        if (dist2 < best) {
+            best = dist2;
+            out->hull_facet = (int32_t)f;
+            memcpy(out->bary, bary, (size_t)d * sizeof *bary);
+        }
+    }
+    out->distance = sqrt(best);
+}
+
+lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *out)
+{
+    if (!t || !q || !out) return LH_ERR_INVALID_ARGUMENT;
+    if (lh_coords_validate(t->d, 1, q, NULL) != LH_OK) return LH_ERR_NONFINITE;
+    memset(out, 0, sizeof *out);
+    out->simplex = out->hull_facet = -1;
+    const int nv = t->d + 1;
+    int32_t start = hint >= 0 && (size_t)hint < t->count ? hint : 0, es = -1;
+    int ek = -1;
+    int32_t s = walk(t, q, start, &es, &ek);
+    for (size_t c = 0; s == -2 && c < t->count; c++) { /* the walk's bound: scan */
+        const double *p[MAXV];
+        int inside = 1;
+        for (int k = 0; k < nv && inside; k++) {
+            for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)t->simp[c * nv + j] * t->d;
+            inside = lh_orient(t->pred, t->d, p) >= 0;
+        }
+        if (inside) s = (int32_t)c;
+    }
+    if (s < 0) {
+        locate_outside(t, q, out);
+        return LH_OK;
+    }
+    out->simplex = s;
+    const double *v[MAXV];
+    for (int k = 0; k < nv; k++) v[k] = t->xyz + (size_t)t->simp[(size_t)s * nv + k] * t->d;
+    int ok;
+    project(v, nv, q, t->d, out->bary, &ok);
+    return LH_OK;
+}

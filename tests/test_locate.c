@@ -1,0 +1,116 @@
+/* test_locate.c — lh_tri_locate: inside, the simplex really contains q (exact) and
+ * the barycentric coordinates rebuild q; outside, the distance is the distance to the
+ * hull (brute force over hull edges in 2D, bounded by the nearest vertex elsewhere). */
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static uint64_t rng_state = 3;
+static double unif(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
+}
+
+static double seg_dist(const double *a, const double *b, const double *q)
+{
+    double ux = b[0] - a[0], uy = b[1] - a[1];
+    double t = ((q[0] - a[0]) * ux + (q[1] - a[1]) * uy) / (ux * ux + uy * uy);
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return hypot(a[0] + t * ux - q[0], a[1] + t * uy - q[1]);
+}
+
+LH_TEST(queries_inside_outside_and_on_sites)
+{
+    lh_pred *pred;
+    LH_ASSERT_EQ_INT(lh_pred_create(NULL, &pred), LH_OK);
+    for (int d = 2; d <= 5 && !LH_FAILED(); d++) {
+        size_t n = d == 2 ? 500 : d == 3 ? 300 : 100;
+        double *x = malloc(n * d * sizeof *x);
+        for (size_t i = 0; i < n * d; i++) x[i] = unif();
+        lh_tri *t;
+        LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
+        const int nv = d + 1;
+        int inside = 0, outside = 0;
+        int32_t hint = -1;
+        for (int k = 0; k < 400 && !LH_FAILED(); k++) {
+            double q[8];
+            if (k % 4 == 3) /* a site: on the triangulation's vertices */
+                for (int j = 0; j < d; j++) q[j] = x[(size_t)(k % n) * d + j];
+            else
+                for (int j = 0; j < d; j++) q[j] = 1.4 * unif() - 0.2;
+            lh_location loc;
+            LH_ASSERT_EQ_INT(lh_tri_locate(t, q, hint, &loc), LH_OK);
+            if (loc.simplex >= 0) {
+                inside++;
+                hint = loc.simplex;
+                const int32_t *v = lh_tri_simplices(t) + (size_t)loc.simplex * nv;
+                const double *p[9];
+                for (int f = 0; f < nv; f++) { /* q on the inner side of every facet */
+                    for (int j = 0; j < nv; j++) p[j] = j == f ? q : x + (size_t)v[j] * d;
+                    LH_EXPECT_GE_INT(lh_orient(pred, d, p), 0);
+                }
+                double sum = 0;
+                for (int j = 0; j < nv; j++) {
+                    sum += loc.bary[j];
+                    LH_EXPECT_TRUE(loc.bary[j] > -1e-9);
+                }
+                LH_EXPECT_TRUE(fabs(sum - 1) < 1e-9);
+                for (int c = 0; c < d; c++) {
+                    double r = 0;
+                    for (int j = 0; j < nv; j++) r += loc.bary[j] * x[(size_t)v[j] * d + c];
+                    LH_EXPECT_TRUE(fabs(r - q[c]) < 1e-9);
+                }
+                LH_EXPECT_EQ_INT(loc.hull_facet, -1);
+            } else {
+                outside++;
+                LH_ASSERT_TRUE(loc.hull_facet >= 0 && (size_t)loc.hull_facet < lh_tri_hull_count(t));
+                LH_EXPECT_TRUE(loc.distance > 0);
+                double nearest_site = INFINITY;
+                for (size_t i = 0; i < n; i++) {
+                    double s = 0;
+                    for (int c = 0; c < d; c++) s += (x[i * d + c] - q[c]) * (x[i * d + c] - q[c]);
+                    if (sqrt(s) < nearest_site) nearest_site = sqrt(s);
+                }
+                LH_EXPECT_LE_DBL(loc.distance, nearest_site + 1e-12);
+                const int32_t *f = lh_tri_hull_facets(t) + (size_t)loc.hull_facet * d;
+                double r2 = 0; /* the reported nearest point is at that distance */
+                for (int c = 0; c < d; c++) {
+                    double r = 0;
+                    for (int j = 0; j < d; j++) r += loc.bary[j] * x[(size_t)f[j] * d + c];
+                    r2 += (r - q[c]) * (r - q[c]);
+                }
+                LH_EXPECT_TRUE(fabs(sqrt(r2) - loc.distance) < 1e-9);
+                if (d == 2) { /* brute force: every hull edge */
+                    double best = INFINITY;
+                    for (size_t e = 0; e < lh_tri_hull_count(t); e++) {
+                        const int32_t *h = lh_tri_hull_facets(t) + 2 * e;
+                        double s = seg_dist(x + 2 * h[0], x + 2 * h[1], q);
+                        if (s < best) best = s;
+                    }
+                    LH_EXPECT_TRUE(fabs(best - loc.distance) < 1e-12);
+                }
+            }
+        }
+        LH_EXPECT_GT_INT(inside, 50);
+        LH_EXPECT_GT_INT(outside, 20);
+        lh_location loc;
+        double bad[8] = {0};
+        bad[1] = NAN;
+        LH_EXPECT_EQ_INT(lh_tri_locate(t, bad, -1, &loc), LH_ERR_NONFINITE);
+        LH_EXPECT_EQ_INT(lh_tri_locate(t, NULL, -1, &loc), LH_ERR_INVALID_ARGUMENT);
+        lh_tri_free(t);
+        free(x);
+    }
+    lh_pred_free(pred);
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {LH_CASE(queries_inside_outside_and_on_sites)};
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
