@@ -47,6 +47,8 @@ void lh_tri_free(lh_tri *t)
     lh__free(&a, t->hull);
     lh__free(&a, t->vsimp);
     lh_pred_free(t->pred);
+    lh__free(&a, t->cell_off);
+    lh__free(&a, t->cell_vert);
     lh__free(&a, t);
 }
 

@@ -25,6 +25,8 @@ struct lh_tri {
     int32_t *hull;    /* d*hull_count, outward */
     int32_t *vsimp;   /* n */
     lh_pred *pred;    /* for queries (lh_tri_locate) */
+    size_t ncells;    /* the Delaunay complex, built on demand (complex.c) */
+    int32_t *cell_off, *cell_vert;
 };
 
 /* output.c: the handle's arrays from a built engine. */

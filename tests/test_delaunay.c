@@ -363,9 +363,16 @@ LH_TEST(every_allocation_failure_is_survived)
         lh_tri *t = (lh_tri *)&c;
         lh_status st = lh_delaunay(3, N, x, &o, &t);
         if (st == LH_OK) {
+            size_t count;
+            const int32_t *off, *v;
+            lh_status cs = lh_tri_complex(t, &count, &off, &v); /* allocates too */
+            LH_EXPECT_TRUE(cs == LH_OK || cs == LH_ERR_NOMEM);
+            lh_location loc;
+            LH_EXPECT_EQ_INT(lh_tri_locate(t, x, -1, &loc), LH_OK);
             LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
             lh_tri_free(t);
             LH_EXPECT_EQ_INT(c.live, 0);
+            if (cs == LH_ERR_NOMEM) continue;
             LH_EXPECT_GT_INT(k, 10); /* the run does allocate */
             break;
         }
@@ -379,9 +386,39 @@ LH_TEST(every_allocation_failure_is_survived)
     }
 }
 
+LH_TEST(every_allocation_failure_is_survived_by_the_hull)
+{
+    enum { N = 300 };
+    double x[N * 4];
+    rng_state = 9;
+    for (int i = 0; i < N * 4; i++) x[i] = unif();
+    for (long k = 1;; k++) {
+        counting c = {0, k, 0};
+        lh_allocator a = {count_alloc, count_free, &c};
+        lh_options o;
+        lh_options_default(&o);
+        o.alloc = &a;
+        lh_hull *h = (lh_hull *)&c;
+        lh_status st = lh_convex_hull(4, N, x, &o, &h);
+        if (st == LH_OK) {
+            LH_EXPECT_GT_U64(lh_hull_facet_count(h), 5);
+            lh_hull_free(h);
+            LH_EXPECT_EQ_INT(c.live, 0);
+            break;
+        }
+        LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
+        LH_EXPECT_TRUE(h == NULL);
+        LH_EXPECT_EQ_INT(c.live, 0);
+        if (LH_FAILED()) {
+            LH_NOTE("failing allocation %ld", k);
+            break;
+        }
+    }
+}
+
 int main(int argc, char **argv)
 {
-    static const lh_test_case cases[] = {
+    static const lh_test_case cases[] = {LH_CASE(every_allocation_failure_is_survived_by_the_hull),
         LH_CASE(every_family_passes_the_exact_check), LH_CASE(smallest_inputs),
         LH_CASE(output_depends_only_on_the_site_set), LH_CASE(duplicates_are_merged_and_reported),
         LH_CASE(bad_input_gets_its_status), LH_CASE(the_check_rejects_what_is_not_delaunay),

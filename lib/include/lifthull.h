@@ -245,6 +245,18 @@ lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
 /* The same for a handle, also verifying its neighbour and hull arrays. */
 lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
 
+/*
+ * lh_tri_complex: the Delaunay complex — simplices whose circumspheres coincide
+ * (neighbours whose opposite vertex is exactly cospherical, transitively) merged
+ * into one cell, as Qhull's qdelaunay reports by default (without Qt). Cell c has the
+ * site indices vertices[offsets[c] .. offsets[c+1]-1], increasing; cells are sorted
+ * lexicographically by those lists. Computed on the first call and kept by the
+ * handle (the pointers stay valid until lh_tri_free). Returns LH_OK, LH_ERR_NOMEM or
+ * LH_ERR_INVALID_ARGUMENT.
+ */
+lh_status lh_tri_complex(lh_tri *t, size_t *count, const int32_t **offsets,
+                         const int32_t **vertices);
+
 /* Where a query point lies in a triangulation. */
 typedef struct lh_location {
     int32_t simplex;    /* the simplex whose closed region contains q, or -1 outside  */
