@@ -18,15 +18,20 @@ double lh_cli_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file)
+int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file,
+                        int *furthest)
 {
     *summary = 0;
     *file = NULL;
+    if (furthest) *furthest = 0;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "-s")) {
             *summary = 1;
+        } else if (furthest && !strcmp(argv[i], "-u")) {
+            *furthest = 1;
         } else if (argv[i][0] == '-' && argv[i][1]) {
-            fprintf(stderr, "lifthull %s: unknown option '%s' (usage: lifthull %s [-s] [FILE])\n", cmd, argv[i], cmd);
+            fprintf(stderr, "lifthull %s: unknown option '%s' (usage: lifthull %s [-s]%s [FILE])\n", cmd,
+                    argv[i], cmd, furthest ? " [-u]" : "");
             return -1;
         } else if (*file) {
             fprintf(stderr, "lifthull %s: more than one input file\n", cmd);
@@ -78,15 +83,18 @@ int lh_cli_finish_output(const char *cmd)
 
 int lh_cli_delaunay(int argc, char **argv)
 {
-    int summary;
+    int summary, furthest;
     const char *file;
-    if (lh_cli_parse_common("delaunay", argc, argv, &summary, &file) != 0) return LH_EXIT_USAGE;
+    if (lh_cli_parse_common("delaunay", argc, argv, &summary, &file, &furthest) != 0) return LH_EXIT_USAGE;
     lh_cli_points pts;
     const char *name;
     if (!lh_cli_load(file, &pts, &name)) return LH_EXIT_INPUT;
     double t0 = lh_cli_seconds();
     lh_tri *t;
-    lh_status st = lh_delaunay(pts.d, pts.n, pts.xyz, NULL, &t);
+    lh_options opt;
+    lh_options_default(&opt);
+    opt.furthest_site = furthest;
+    lh_status st = lh_delaunay(pts.d, pts.n, pts.xyz, &opt, &t);
     double t1 = lh_cli_seconds();
     if (st != LH_OK) {
         lh_cli_report_failure(name, &pts, st);

@@ -113,7 +113,7 @@ static int32_t locate(lh__eng *e)
             c = n;
             moved = 1;
         }
-        if (!moved) return e->finite_conflict ? c : -1; /* q in the closed simplex c */
+        if (!moved) return e->inside_conflicts ? c : -1; /* q in the closed simplex c */
     }
     int32_t found = scan_for_conflict(e); /* not reached in practice */
     return found;

@@ -16,7 +16,10 @@
  * With finite_conflict = NULL no finite cell conflicts: a placing triangulation,
  * whose infinite cells are the convex hull (qconvex's job); sites inside the current
  * hull are not inserted. lift/ passes the lifted test (insphere < 0) and gets the
- * Delaunay triangulation, the lower hull of the lifted sites.
+ * Delaunay triangulation, the lower hull of the lifted sites (inside_conflicts: the
+ * simplex containing q is always in conflict); or the reversed test (insphere > 0,
+ * inside_conflicts = 0) and gets the furthest-site Delaunay triangulation, the upper
+ * hull, whose vertices are the convex hull's.
  *
  * Steps: sites ordered (order.c: Morton radix sort, exact duplicates merged, BRIO
  * rounds), an initial simplex of d+1 affinely independent sites (exact), then for
@@ -51,6 +54,8 @@ typedef struct lh__eng {
     uint64_t rng;
     lh__finite_conflict_fn finite_conflict;
     void *user;
+    int inside_conflicts; /* 1: the cell containing q always conflicts (Delaunay);
+                             0: a site inside the current hull is not inserted */
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */
 } lh__eng;
 

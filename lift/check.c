@@ -25,6 +25,7 @@ typedef struct chk {
     int32_t *rec;    /* facet records: d sorted vertices, simplex, index */
     int32_t *nbr;    /* computed neighbours */
     lh_pred *pred;
+    int furthest;    /* furthest-site: opposite vertices inside, not outside */
     char *msg;
     size_t msg_size;
 } chk;
@@ -157,8 +158,12 @@ static lh_status check_facets(chk *c, size_t *boundary)
                 const double *p[LH_DELAUNAY_MAX_DIM + 2];
                 for (int k = 0; k < nv; k++) p[k] = site(c, va[k]);
                 p[nv] = site(c, vb[kb]);
-                if (lh_insphere(c->pred, d, p) < 0)
+                int in = lh_insphere(c->pred, d, p);
+                if (!c->furthest && in < 0)
                     st = fail(c, "facet between simplices %d and %d is not locally Delaunay: site %d is inside the circumsphere of %d",
+                              (int)sa, (int)sb, (int)vb[kb], (int)sa);
+                if (c->furthest && in > 0)
+                    st = fail(c, "facet between simplices %d and %d is not locally furthest-site Delaunay: site %d is outside the circumsphere of %d",
                               (int)sa, (int)sb, (int)vb[kb], (int)sa);
             }
         }
@@ -258,6 +263,21 @@ static lh_status check_sites_used(chk *c, const int32_t *used)
     return st;
 }
 
+/* Furthest-site: every site that is not a vertex lies inside or on the boundary of
+ * the hull (quadratic: for tests). */
+static lh_status check_sites_inside(chk *c, const int32_t *used)
+{
+    const int nv = c->nv;
+    for (size_t s = 0; s < c->count; s++)
+        for (int k = 0; k < nv; k++) {
+            if (c->nbr[s * nv + k] >= 0) continue;
+            for (size_t i = 0; i < c->n; i++)
+                if (!used[i] && orient_of(c, c->simp + s * nv, k, (int32_t)i) < 0)
+                    return fail(c, "site %zu is outside the hull facet of simplex %zu", i, s);
+        }
+    return LH_OK;
+}
+
 /* Connected through facets, and every site is a vertex or an exact duplicate of one. */
 static lh_status check_cover(chk *c)
 {
@@ -291,7 +311,7 @@ static lh_status check_cover(chk *c)
         if (seen != c->count) st = fail(c, "the simplices are not connected through facets");
     }
     for (size_t s = 0; s < c->count * c->nv; s++) used[c->simp[s]] = 1;
-    if (st == LH_OK && n) st = check_sites_used(c, used);
+    if (st == LH_OK && n) st = c->furthest ? check_sites_inside(c, used) : check_sites_used(c, used);
     lh__free(&c->alloc, mark);
     return st;
 }
@@ -352,6 +372,7 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
     c.xyz = t->xyz;
     c.msg = msg;
     c.msg_size = msg_size;
+    c.furthest = t->furthest;
     if (msg && msg_size) msg[0] = 0;
     lh_status st = run_check(&c, t->simp);
     /* The stored arrays: simplices positively oriented as given, neighbours as
@@ -370,7 +391,7 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
         st = fail(&c, "%zu hull facets stored, %zu boundary facets found", t->hull_count, boundary);
     for (size_t i = 0; st == LH_OK && i < t->n; i++) {
         int32_t s = t->vsimp[i];
-        int vertex = t->dup[i] == (int32_t)i, has = 0;
+        int vertex = t->dup[i] == (int32_t)i && (!t->furthest || s >= 0), has = 0;
         if (vertex && s >= 0 && (size_t)s < t->count)
             for (int k = 0; k < c.nv; k++) has |= t->simp[(size_t)s * c.nv + k] == (int32_t)i;
         if (vertex ? !has : s != -1) st = fail(&c, "the incident simplex of site %zu is wrong", i);

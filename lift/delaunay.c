@@ -26,6 +26,15 @@ static int lifted_conflict(void *user, const int32_t *v, int32_t q)
     return lh__insphere_sos_fast(e->pred, e->d, e->pts) < 0;
 }
 
+/* The furthest-site test: q strictly outside the circumsphere, perturbed. */
+static int furthest_conflict(void *user, const int32_t *v, int32_t q)
+{
+    lh__eng *e = user;
+    for (int k = 0; k < e->nv; k++) e->pts[k] = lh__eng_site(e, v[k]);
+    e->pts[e->nv] = lh__eng_site(e, q);
+    return lh__insphere_sos_fast(e->pred, e->d, e->pts) > 0;
+}
+
 /* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.8n, 31n,
  * 161n in 2D..5D (measured), with 10% room; higher dimensions start smaller and
  * grow by doubling. */
@@ -85,8 +94,11 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     if ((st = new_handle(d, n, xyz, opt, &t)) != LH_OK) return st;
     lh__eng e;
     st = lh__eng_init(&e, &t->alloc, d, n, t->xyz, t->dup, opt ? opt->seed : 0x5eed);
-    e.finite_conflict = lifted_conflict;
+    int furthest = opt && opt->furthest_site;
+    e.finite_conflict = furthest ? furthest_conflict : lifted_conflict;
+    e.inside_conflicts = !furthest;
     e.user = &e;
+    t->furthest = furthest;
     int affdim = -1;
     if (st == LH_OK) st = lh__eng_build(&e, expected_cells(d, n), &affdim);
     if (st == LH_OK) st = lh__dt_extract(&e, t);

@@ -25,6 +25,7 @@ struct lh_tri {
     int32_t *hull;    /* d*hull_count, outward */
     int32_t *vsimp;   /* n */
     lh_pred *pred;    /* for queries (lh_tri_locate) */
+    int furthest;     /* the furthest-site triangulation (lh_options) */
     size_t ncells;    /* the Delaunay complex, built on demand (complex.c) */
     int32_t *cell_off, *cell_vert;
 };

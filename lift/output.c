@@ -69,16 +69,12 @@ lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
         t->vsimp = lh__alloc(&t->alloc, (t->n + 1) * sizeof *t->vsimp);
         if (!t->vsimp) st = LH_ERR_NOMEM;
     }
-    if (st == LH_OK) {
-        for (size_t i = 0; i < t->n; i++) {
-            int32_t c = t->dup[i] == (int32_t)i ? b->v2c[i] : -1;
-            if (c >= 0 && !lh__eng_finite(b, c)) { /* step to the finite cell across its facet */
-                const int32_t *v = b->tds.vert + (size_t)c * b->nv;
-                for (int k = 0; k < b->nv; k++)
-                    if (v[k] == LH__INF) c = b->tds.nbr[(size_t)c * b->nv + k];
-            }
-            t->vsimp[i] = c >= 0 ? out_of_cell[c] : -1;
-        }
+    if (st == LH_OK) { /* from the output itself: right even for sites that stopped
+                        * being vertices (furthest-site) */
+        for (size_t i = 0; i < t->n; i++) t->vsimp[i] = -1;
+        const int nv = t->d + 1;
+        for (size_t c = t->count; c-- > 0;)
+            for (int k = 0; k < nv; k++) t->vsimp[t->simp[c * nv + k]] = (int32_t)c;
     }
     lh__free(&t->alloc, out_of_cell);
     return st;

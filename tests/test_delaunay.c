@@ -416,9 +416,48 @@ LH_TEST(every_allocation_failure_is_survived_by_the_hull)
     }
 }
 
+LH_TEST(furthest_site_triangulation)
+{
+    for (int d = 2; d <= 5 && !LH_FAILED(); d++) {
+        for (int fam = 0; fam < F_COUNT && !LH_FAILED(); fam++) {
+            if (fam != F_CUBE && fam != F_GRID && fam != F_SPHERE_EXACT && fam != F_DUPLICATES) continue;
+            size_t n = d == 2 ? 400 : d == 3 ? 200 : d == 4 ? 90 : 100; /* > side^(d-1) */
+            double *x = malloc(n * d * sizeof *x);
+            rng_state = (uint64_t)(31 * d + fam);
+            n = make_family(fam, d, n, x);
+            lh_options o;
+            lh_options_default(&o);
+            o.furthest_site = 1;
+            lh_tri *t;
+            lh_status st = lh_delaunay(d, n, x, &o, &t);
+            LH_EXPECT_EQ_INT(st, LH_OK);
+            if (st != LH_OK) {
+                LH_NOTE("d=%d %s n=%zu: %s", d, family_name[fam], n, lh_status_message(st));
+                free(x);
+                return;
+            }
+            char msg[256] = "";
+            LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
+            if (LH_FAILED()) LH_NOTE("d=%d %s: %s", d, family_name[fam], msg);
+            if (fam == F_CUBE) { /* general position: the vertices are the hull's */
+                lh_hull *h;
+                LH_ASSERT_EQ_INT(lh_convex_hull(d, n, x, NULL, &h), LH_OK);
+                size_t used = 0;
+                for (size_t i = 0; i < n; i++) used += lh_tri_vertex_simplex(t)[i] >= 0;
+                LH_EXPECT_EQ_U64(used, lh_hull_vertex_count(h));
+                for (size_t i = 0; i < lh_hull_vertex_count(h); i++)
+                    LH_EXPECT_GE_INT(lh_tri_vertex_simplex(t)[lh_hull_vertices(h)[i]], 0);
+                lh_hull_free(h);
+            }
+            lh_tri_free(t);
+            free(x);
+        }
+    }
+}
+
 int main(int argc, char **argv)
 {
-    static const lh_test_case cases[] = {LH_CASE(every_allocation_failure_is_survived_by_the_hull),
+    static const lh_test_case cases[] = {LH_CASE(furthest_site_triangulation),LH_CASE(every_allocation_failure_is_survived_by_the_hull),
         LH_CASE(every_family_passes_the_exact_check), LH_CASE(smallest_inputs),
         LH_CASE(output_depends_only_on_the_site_set), LH_CASE(duplicates_are_merged_and_reported),
         LH_CASE(bad_input_gets_its_status), LH_CASE(the_check_rejects_what_is_not_delaunay),

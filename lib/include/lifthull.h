@@ -176,6 +176,11 @@ typedef struct lh_options {
     const lh_allocator *alloc; /* NULL: malloc/free                                 */
     uint64_t seed;             /* insertion order and walk randomisation; the output
                                   does not depend on it (default 0x5eed)            */
+    int furthest_site;         /* lh_delaunay: 1 for the furthest-site Delaunay
+                                  triangulation (the upper lifted hull, Qhull's Qu):
+                                  its vertices are the convex hull's and every
+                                  simplex's circumsphere encloses every site
+                                  (default 0)                                        */
 } lh_options;
 
 void lh_options_default(lh_options *opt);
@@ -242,7 +247,9 @@ void lh_tri_free(lh_tri *t);
  */
 lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
                             const int32_t *simplices, char *msg, size_t msg_size);
-/* The same for a handle, also verifying its neighbour and hull arrays. */
+/* The same for a handle, also verifying its neighbour and hull arrays; for a
+ * furthest-site triangulation the conditions are reversed (every interior facet
+ * locally furthest-site Delaunay; sites that are not vertices inside the hull). */
 lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
 
 /*
