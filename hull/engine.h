@@ -90,6 +90,14 @@ int lh__affine_independent(lh_pred *pred, int d, const double *const *pts, int k
  * span less than R^d (*affdim tells the dimension). */
 lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim);
 
+/* order.c: lexicographic order of sites, ties by index; ctx is an lh__lex (for
+ * lh__sort_idx). */
+typedef struct lh__lex {
+    const double *xyz;
+    int d;
+} lh__lex;
+int lh__lex_cmp(const void *ctx, int32_t a, int32_t b);
+
 /* Whether cell c is finite. */
 int lh__eng_finite(const lh__eng *e, int32_t c);
 /* The convex hull facets: d site indices each, ordered so that orient_d(facet, p) > 0

@@ -10,14 +10,9 @@
 
 #include <string.h>
 
-typedef struct lex_ctx {
-    const double *xyz;
-    int d;
-} lex_ctx;
-
-static int lex_cmp(const void *vctx, int32_t a, int32_t b)
+int lh__lex_cmp(const void *vctx, int32_t a, int32_t b)
 {
-    const lex_ctx *c = vctx;
+    const lh__lex *c = vctx;
     const double *p = c->xyz + (size_t)a * c->d, *q = c->xyz + (size_t)b * c->d;
     for (int j = 0; j < c->d; j++)
         if (p[j] != q[j]) return p[j] < q[j] ? -1 : 1;
@@ -91,13 +86,13 @@ static void radix_sort(uint64_t *key, int32_t *idx, uint64_t *k2, int32_t *i2, s
  * Compacts the distinct sites into idx (Morton order) and returns their number. */
 static size_t merge_runs(lh__eng *t, const uint64_t *key, int32_t *idx, int32_t *tmp)
 {
-    lex_ctx c = {t->xyz, t->d};
+    lh__lex c = {t->xyz, t->d};
     size_t nrep = 0;
     t->ndup = 0;
     for (size_t i = 0; i < t->n;) {
         size_t j = i + 1;
         while (j < t->n && key[j] == key[i]) j++;
-        if (j - i > 1) lh__sort_idx(idx + i, tmp, j - i, lex_cmp, &c);
+        if (j - i > 1) lh__sort_idx(idx + i, tmp, j - i, lh__lex_cmp, &c);
         int32_t prev = -1;
         for (size_t k = i; k < j; k++) {
             int32_t s = idx[k];

@@ -227,18 +227,12 @@ static lh_status check_boundary(chk *c, size_t boundary)
     return st;
 }
 
-typedef struct lex_ctx {
-    const double *xyz;
-    int d;
-} lex_ctx;
-
-static int lex_cmp(const void *vctx, int32_t a, int32_t b)
+/* Whether sites a and b have equal coordinates. */
+static int same_coords(const chk *c, int32_t a, int32_t b)
 {
-    const lex_ctx *l = vctx;
-    const double *p = l->xyz + (size_t)a * l->d, *q = l->xyz + (size_t)b * l->d;
-    for (int j = 0; j < l->d; j++)
-        if (p[j] != q[j]) return p[j] < q[j] ? -1 : 1;
-    return 0;
+    for (int j = 0; j < c->d; j++)
+        if (site(c, a)[j] != site(c, b)[j]) return 0;
+    return 1;
 }
 
 /* Among equal sites (adjacent in lexicographic order) exactly one is a vertex. */
@@ -248,11 +242,11 @@ static lh_status check_sites_used(chk *c, const int32_t *used)
     lh_status st = idx && tmp ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK) {
         for (size_t i = 0; i < c->n; i++) idx[i] = (int32_t)i;
-        lex_ctx l = {c->xyz, c->d};
-        lh__sort_idx(idx, tmp, c->n, lex_cmp, &l);
+        lh__lex l = {c->xyz, c->d};
+        lh__sort_idx(idx, tmp, c->n, lh__lex_cmp, &l);
         for (size_t i = 0; i < c->n && st == LH_OK;) {
             size_t j = i, vertices = 0;
-            for (; j < c->n && lex_cmp(&l, idx[i], idx[j]) == 0; j++) vertices += used[idx[j]] != 0;
+            for (; j < c->n && same_coords(c, idx[i], idx[j]); j++) vertices += used[idx[j]] != 0;
             if (vertices == 0) st = fail(c, "site %d is neither a vertex nor a duplicate of one", (int)idx[i]);
             if (vertices > 1) st = fail(c, "sites %d and %d are equal and both vertices", (int)idx[i], (int)idx[i + 1]);
             i = j;

@@ -328,25 +328,6 @@ LH_TEST(the_check_rejects_what_is_not_delaunay)
     LH_EXPECT_TRUE(strstr(msg, "flat") != NULL);
 }
 
-typedef struct counting {
-    long live, fail_at, calls;
-} counting;
-
-static void *count_alloc(void *user, size_t size)
-{
-    counting *c = user;
-    if (++c->calls == c->fail_at) return NULL;
-    void *p = malloc(size);
-    if (p) c->live++;
-    return p;
-}
-
-static void count_free(void *user, void *ptr)
-{
-    counting *c = user;
-    if (ptr) c->live--;
-    free(ptr);
-}
 
 LH_TEST(every_allocation_failure_is_survived)
 {
@@ -355,8 +336,8 @@ LH_TEST(every_allocation_failure_is_survived)
     rng_state = 5;
     for (int i = 0; i < N * 3; i++) x[i] = unif();
     for (long k = 1;; k++) {
-        counting c = {0, k, 0};
-        lh_allocator a = {count_alloc, count_free, &c};
+        lh_test_counter c = {0, k, 0};
+        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
         lh_options o;
         lh_options_default(&o);
         o.alloc = &a;
@@ -393,8 +374,8 @@ LH_TEST(every_allocation_failure_is_survived_by_the_hull)
     rng_state = 9;
     for (int i = 0; i < N * 4; i++) x[i] = unif();
     for (long k = 1;; k++) {
-        counting c = {0, k, 0};
-        lh_allocator a = {count_alloc, count_free, &c};
+        lh_test_counter c = {0, k, 0};
+        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
         lh_options o;
         lh_options_default(&o);
         o.alloc = &a;

@@ -163,31 +163,12 @@ LH_TEST(invalid_arguments_answer_zero_and_count_nothing)
     lh_pred_free(NULL);
 }
 
-typedef struct counting {
-    int live, fail_at, calls;
-} counting;
-
-static void *count_alloc(void *user, size_t size)
-{
-    counting *c = user;
-    if (++c->calls == c->fail_at) return NULL;
-    void *p = malloc(size);
-    if (p) c->live++;
-    return p;
-}
-
-static void count_free(void *user, void *ptr)
-{
-    counting *c = user;
-    if (ptr) c->live--;
-    free(ptr);
-}
 
 LH_TEST(create_fails_cleanly_at_every_allocation)
 {
     for (int k = 1; k <= 3; k++) {
-        counting c = {0, k, 0};
-        lh_allocator a = {count_alloc, count_free, &c};
+        lh_test_counter c = {0, k, 0};
+        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
         lh_pred *ctx = (lh_pred *)&c; /* must be overwritten */
         lh_status st = lh_pred_create(&a, &ctx);
         if (k <= 2) {
@@ -199,7 +180,7 @@ LH_TEST(create_fails_cleanly_at_every_allocation)
         }
         LH_EXPECT_EQ_INT(c.live, 0);
     }
-    lh_allocator half = {count_alloc, NULL, NULL};
+    lh_allocator half = {lh_test_counting_alloc, NULL, NULL};
     lh_pred *ctx;
     LH_EXPECT_EQ_INT(lh_pred_create(&half, &ctx), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_EQ_INT(lh_pred_create(NULL, NULL), LH_ERR_INVALID_ARGUMENT);

@@ -2,6 +2,7 @@
 #include "lh_test.h"
 
 #include <stdarg.h>
+#include <stdlib.h>
 #include <string.h>
 
 enum { LH_TEST_MAX_REPORTS = 20 }; /* failure lines printed per test, then quiet */
@@ -111,4 +112,20 @@ int lh_test_main(const lh_test_case *cases, size_t count, int argc, char **argv)
     }
     printf("%zu passed, %zu failed\n", run - failed, failed);
     return failed ? 1 : 0;
+}
+
+void *lh_test_counting_alloc(void *user, size_t size)
+{
+    lh_test_counter *c = user;
+    if (++c->calls == c->fail_at) return NULL;
+    void *p = malloc(size);
+    if (p) c->live++;
+    return p;
+}
+
+void lh_test_counting_free(void *user, void *ptr)
+{
+    lh_test_counter *c = user;
+    if (ptr) c->live--;
+    free(ptr);
 }

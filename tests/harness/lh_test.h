@@ -50,6 +50,16 @@ int lh_test_check_str(lh_test_state *t, const char *file, int line, const char *
                       const char *eb, const char *a, const char *b);
 int lh_test_check_true(lh_test_state *t, const char *file, int line, const char *e,
                        int ok);
+/* An allocator for lifthull's hooks (lh_allocator: alloc, free, user) that counts
+ * live blocks and fails the fail_at-th allocation (0: never), for allocation-failure
+ * tests. Use: lh_test_counter c = {0}; c.fail_at = k;
+ *             lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c}; */
+typedef struct lh_test_counter {
+    long live, fail_at, calls;
+} lh_test_counter;
+void *lh_test_counting_alloc(void *user, size_t size);
+void lh_test_counting_free(void *user, void *ptr);
+
 /* Adds a free-form note (e.g. the seed or the failing case) to the current test's
  * failure output. printf-style. */
 void lh_test_note(lh_test_state *t, const char *fmt, ...);
