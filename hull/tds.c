@@ -68,11 +68,23 @@ lh_status lh__tds_reserve(lh__tds *t, size_t extra)
 {
     size_t have = (size_t)(t->cap - t->top), freed = (size_t)(t->top - t->live);
     if (have + freed >= extra) return LH_OK;
-    size_t want = (size_t)t->cap * 2;
+    size_t want = (size_t)t->cap + (size_t)t->cap / 2 + 1024; /* x1.5: less overshoot */
     if (want < (size_t)t->top + extra) want = (size_t)t->top + extra;
     if (want > INT32_MAX) want = INT32_MAX;
     if (want < (size_t)t->top + extra) return LH_ERR_TOO_LARGE;
     return set_capacity(t, (int32_t)want);
+}
+
+uint32_t *lh__tds_finish(lh__tds *t)
+{
+    uint32_t *s = t->stamp;
+    t->stamp = NULL;
+    lh__free(&t->alloc, t->cells);
+    lh__free(&t->alloc, t->bound);
+    lh__free(&t->alloc, t->fresh);
+    t->cells = t->bound = t->fresh = NULL;
+    t->cells_cap = t->bound_cap = t->fresh_cap = 0;
+    return s;
 }
 
 int32_t lh__tds_new_cell(lh__tds *t)

@@ -45,6 +45,10 @@ void lh__tds_release(lh__tds *t);
 /* A new cell with unset contents, or -1 when memory runs out. */
 int32_t lh__tds_new_cell(lh__tds *t);
 lh_status lh__tds_reserve(lh__tds *t, size_t extra);
+/* Ends insertions: frees the insertion scratch and hands over the stamp array (one
+ * 32-bit word per cell, t->cap of them) for the caller to reuse and free with
+ * lh__free(&t->alloc, ...). No insertion may follow. */
+uint32_t *lh__tds_finish(lh__tds *t);
 void lh__tds_kill(lh__tds *t, int32_t c);
 static inline int lh__tds_dead(const lh__tds *t, int32_t c) { return t->vert[(size_t)c * t->nv] == LH__DEAD; }
 /* Index k with nbr[c][k] == other; -1 if none. */

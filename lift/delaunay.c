@@ -35,12 +35,12 @@ static int furthest_conflict(void *user, const int32_t *v, int32_t q)
     return lh__insphere_sos_fast(e->pred, e->d, e->pts) > 0;
 }
 
-/* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.8n, 31n,
- * 161n in 2D..5D (measured), with 10% room; higher dimensions start smaller and
- * grow by doubling. */
+/* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,
+ * 161n in 2D..5D (measured), with a little room; higher dimensions start smaller
+ * and grow. */
 static int32_t expected_cells(int d, size_t n)
 {
-    static const double per_site[LH_DELAUNAY_MAX_DIM + 1] = {0, 0, 2.2, 7.5, 34, 180, 400, 400, 400};
+    static const double per_site[LH_DELAUNAY_MAX_DIM + 1] = {0, 0, 2.1, 7.0, 33, 170, 400, 400, 400};
     double c = per_site[d] * (double)n + 256;
     return c > INT32_MAX / 2 ? INT32_MAX / 2 : (int32_t)c;
 }

@@ -8,7 +8,81 @@
 
 #include <string.h>
 
-/* Finite simplices (canonical, sorted) with their neighbours. */
+/* The smallest finite vertex of cell c. */
+static int32_t min_vertex(const lh__eng *b, int32_t c)
+{
+    const int32_t *v = b->tds.vert + (size_t)c * b->nv;
+    int32_t m = v[0];
+    for (int k = 1; k < b->nv; k++)
+        if (v[k] < m) m = v[k];
+    return m;
+}
+
+static int tuple_less(const int32_t *x, const int32_t *y, int m)
+{
+    for (int k = 0; k < m; k++)
+        if (x[k] != y[k]) return x[k] < y[k];
+    return 0;
+}
+
+/* Sorts the tuples of positions lo..hi-1 (sharing their first entry) with their
+ * cell ids. Buckets are small (a vertex's simplices where it is the smallest); an
+ * insertion sort serves, and stays correct if one is large. */
+static void sort_bucket(int32_t *simp, int32_t *cell, size_t lo, size_t hi, int nv)
+{
+    for (size_t i = lo + 1; i < hi; i++) {
+        int32_t key[LH__ENGINE_MAX_DIM + 1], c = cell[i];
+        memcpy(key, simp + i * nv, (size_t)nv * sizeof *key);
+        size_t j = i;
+        for (; j > lo && tuple_less(key, simp + (j - 1) * nv, nv); j--) {
+            memcpy(simp + j * nv, simp + (j - 1) * nv, (size_t)nv * sizeof *simp);
+            cell[j] = cell[j - 1];
+        }
+        memcpy(simp + j * nv, key, (size_t)nv * sizeof *key);
+        cell[j] = c;
+    }
+}
+
+/* Finite simplices, canonical and sorted, written straight into t->simp: a counting
+ * sort on the smallest vertex places each cell's canonical tuple in its bucket, then
+ * each bucket is sorted. cell[s] is the cell behind simplex s. */
+static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell)
+{
+    const int nv = b->nv;
+    size_t *start = lh__alloc(&t->alloc, (t->n + 2) * sizeof *start);
+    if (!start) return LH_ERR_NOMEM;
+    memset(start, 0, (t->n + 2) * sizeof *start);
+    for (int32_t c = 0; c < b->tds.top; c++)
+        if (!lh__tds_dead(&b->tds, c) && lh__eng_finite(b, c)) start[(size_t)min_vertex(b, c) + 2]++;
+    for (size_t k = 2; k < t->n + 2; k++) start[k] += start[k - 1];
+    for (int32_t c = 0; c < b->tds.top; c++) {
+        if (lh__tds_dead(&b->tds, c) || !lh__eng_finite(b, c)) continue;
+        size_t s = start[(size_t)min_vertex(b, c) + 1]++;
+        int from[LH__ENGINE_MAX_DIM + 1];
+        memcpy(t->simp + s * nv, b->tds.vert + (size_t)c * nv, (size_t)nv * sizeof *t->simp);
+        lh__canonical(t->simp + s * nv, from, nv);
+        cell[s] = c;
+    }
+    for (size_t k = 0; k < t->n; k++) sort_bucket(t->simp, cell, start[k], start[k + 1], nv);
+    lh__free(&t->alloc, start);
+    return LH_OK;
+}
+
+/* Neighbour k of simplex s: across the facet opposite its k-th vertex, found at its
+ * position in the cell. */
+static void set_neighbours(lh__eng *b, lh_tri *t, const int32_t *cell, const int32_t *out_of_cell)
+{
+    const int nv = b->nv;
+    for (size_t s = 0; s < t->count; s++) {
+        const int32_t *cv = b->tds.vert + (size_t)cell[s] * nv;
+        for (int k = 0; k < nv; k++) {
+            int j = 0;
+            while (cv[j] != t->simp[s * nv + k]) j++;
+            t->nbr[s * nv + k] = out_of_cell[b->tds.nbr[(size_t)cell[s] * nv + j]];
+        }
+    }
+}
+
 static lh_status extract_simplices(lh__eng *b, lh_tri *t, int32_t *out_of_cell)
 {
     const int nv = b->nv;
@@ -16,52 +90,25 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, int32_t *out_of_cell)
     for (int32_t c = 0; c < b->tds.top; c++)
         if (!lh__tds_dead(&b->tds, c) && lh__eng_finite(b, c)) count++;
     t->count = count;
-    /* raw: canonical tuples in cell order; from: where each came from in its cell. */
-    int32_t *raw = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *raw);
-    uint8_t *from = lh__alloc(&t->alloc, count * nv + 1);
-    int32_t *cell_of = lh__alloc(&t->alloc, (count + 1) * sizeof *cell_of);
-    int32_t *order = lh__alloc(&t->alloc, (count + 1) * sizeof *order);
-    lh_status st = raw && from && cell_of && order ? LH_OK : LH_ERR_NOMEM;
+    int32_t *cell = lh__alloc(&t->alloc, (count + 1) * sizeof *cell);
+    t->simp = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->simp);
+    lh_status st = cell && t->simp ? place_simplices(b, t, cell) : LH_ERR_NOMEM;
     if (st == LH_OK) {
-        size_t s = 0;
-        for (int32_t c = 0; c < b->tds.top; c++) {
-            if (lh__tds_dead(&b->tds, c) || !lh__eng_finite(b, c)) continue;
-            int f[LH__ENGINE_MAX_DIM + 1];
-            memcpy(raw + s * nv, b->tds.vert + (size_t)c * nv, (size_t)nv * sizeof(int32_t));
-            lh__canonical(raw + s * nv, f, nv);
-            for (int k = 0; k < nv; k++) from[s * nv + k] = (uint8_t)f[k];
-            cell_of[s++] = c;
-        }
-        t->simp = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->simp);
-        if (!t->simp || !lh__sort_tuples(&t->alloc, raw, nv, count, t->n, t->simp, order)) st = LH_ERR_NOMEM;
-    }
-    if (st == LH_OK) {
-        lh__free(&t->alloc, raw);
-        raw = NULL;
         t->nbr = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->nbr);
         if (!t->nbr) st = LH_ERR_NOMEM;
     }
     if (st == LH_OK) {
-        for (size_t s = 0; s < count; s++) out_of_cell[cell_of[order[s]]] = (int32_t)s;
-        for (size_t s = 0; s < count; s++) {
-            int32_t o = order[s], c = cell_of[o];
-            for (int k = 0; k < nv; k++) {
-                int32_t n = b->tds.nbr[(size_t)c * nv + from[(size_t)o * nv + k]];
-                t->nbr[s * nv + k] = out_of_cell[n];
-            }
-        }
+        for (size_t s = 0; s < count; s++) out_of_cell[cell[s]] = (int32_t)s;
+        set_neighbours(b, t, cell, out_of_cell);
     }
-    lh__free(&t->alloc, raw);
-    lh__free(&t->alloc, from);
-    lh__free(&t->alloc, cell_of);
-    lh__free(&t->alloc, order);
+    lh__free(&t->alloc, cell);
     return st;
 }
 
 lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
 {
-    int32_t *out_of_cell = lh__alloc(&t->alloc, ((size_t)b->tds.top + 1) * sizeof *out_of_cell);
-    if (!out_of_cell) return LH_ERR_NOMEM;
+    /* The stamps are no longer needed: their words become the cell -> simplex map. */
+    int32_t *out_of_cell = (int32_t *)lh__tds_finish(&b->tds);
     for (int32_t c = 0; c < b->tds.top; c++) out_of_cell[c] = -1;
     lh_status st = extract_simplices(b, t, out_of_cell);
     if (st == LH_OK) st = lh__eng_hull_facets(b, &t->hull, &t->hull_count);
@@ -76,7 +123,7 @@ lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
         for (size_t c = t->count; c-- > 0;)
             for (int k = 0; k < nv; k++) t->vsimp[t->simp[c * nv + k]] = (int32_t)c;
     }
-    lh__free(&t->alloc, out_of_cell);
+    lh__free(&b->tds.alloc, out_of_cell);
     return st;
 }
 
