@@ -27,12 +27,17 @@ static int same_site(const lh__eng *e, int32_t a, int32_t b)
     return 1;
 }
 
-/* Morton (Z-order) key of every site: each coordinate quantised to 63/d bits over
- * the bounding box, bits interleaved from the most significant down. A span too
- * wide for doubles quantises to 0 (keys tie; correctness does not depend on them). */
+/* Bits per coordinate of the Morton keys: 16 is ample for locality (2^16 cells a
+ * side), and equal keys only cost an exact comparison. */
+static int morton_bits(int d) { return 63 / d < 16 ? 63 / d : 16; }
+
+/* Morton (Z-order) key of every site: each coordinate quantised to morton_bits(d)
+ * bits over the bounding box, bits interleaved from the most significant down. A
+ * span too wide for doubles quantises to 0 (keys tie; correctness does not depend
+ * on them). */
 static void morton_keys(const lh__eng *t, uint64_t *key)
 {
-    int d = t->d, bits = 63 / d;
+    int d = t->d, bits = morton_bits(d);
     double lo[LH__ENGINE_MAX_DIM], scale[LH__ENGINE_MAX_DIM];
     for (int j = 0; j < d; j++) {
         double mn = t->xyz[j], mx = mn;
@@ -141,7 +146,7 @@ lh_status lh__eng_order(lh__eng *b)
     if (st == LH_OK && n) {
         morton_keys(t, key);
         for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
-        radix_sort(key, idx, k2, i2, n, (63 / t->d) * t->d);
+        radix_sort(key, idx, k2, i2, n, morton_bits(t->d) * t->d);
         b->order = idx;
         b->norder = merge_runs(t, key, idx, i2);
         brio_rounds(b, i2, (uint8_t *)k2);
