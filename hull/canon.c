@@ -60,48 +60,83 @@ static int tuple_cmp(const void *vctx, int32_t a, int32_t b)
     return 0;
 }
 
+/* Insertion sort of the tuples at positions lo..hi-1, payload alongside. */
+static void insertion_sort(int32_t *t, int32_t *payload, size_t lo, size_t hi, int m)
+{
+    for (size_t i = lo + 1; i < hi; i++) {
+        int32_t key[LH__ENGINE_MAX_DIM + 1], p = payload[i];
+        memcpy(key, t + i * m, (size_t)m * sizeof *key);
+        size_t j = i;
+        for (; j > lo && tuple_less(key, t + (j - 1) * m, m); j--) {
+            memcpy(t + j * m, t + (j - 1) * m, (size_t)m * sizeof *t);
+            payload[j] = payload[j - 1];
+        }
+        memcpy(t + j * m, key, (size_t)m * sizeof *key);
+        payload[j] = p;
+    }
+}
+
+/* Merge sort of a large bucket through an index, then the tuples and payload are
+ * permuted; scratch holds the bucket's size in indices (2x) and tuples. */
+static void merge_sort_bucket(int32_t *t, int32_t *payload, size_t lo, size_t hi, int m,
+                              int32_t *idx, int32_t *tmp, int32_t *copy)
+{
+    size_t k = hi - lo;
+    for (size_t i = 0; i < k; i++) idx[i] = (int32_t)i;
+    tuple_ctx c = {t + lo * m, m};
+    lh__sort_idx(idx, tmp, k, tuple_cmp, &c);
+    memcpy(copy, t + lo * m, k * (size_t)m * sizeof *copy);
+    for (size_t i = 0; i < k; i++) memcpy(t + (lo + i) * m, copy + (size_t)idx[i] * m, (size_t)m * sizeof *t);
+    for (size_t i = 0; i < k; i++) tmp[i] = payload[lo + idx[i]];
+    memcpy(payload + lo, tmp, k * sizeof *tmp);
+}
+
+int lh__sort_buckets(const lh_allocator *a, int32_t *t, int32_t *payload, const size_t *start,
+                     size_t nb, int m)
+{
+    enum { SMALL = 32 }; /* buckets are a vertex's simplices: usually a handful */
+    size_t big = 0;
+    for (size_t k = 0; k < nb; k++)
+        if (start[k + 1] - start[k] > big) big = start[k + 1] - start[k];
+    int32_t *idx = NULL, *tmp = NULL, *copy = NULL;
+    if (big > SMALL) {
+        idx = lh__alloc(a, big * sizeof *idx);
+        tmp = lh__alloc(a, big * sizeof *tmp);
+        copy = lh__alloc(a, big * (size_t)m * sizeof *copy);
+        if (!idx || !tmp || !copy) {
+            lh__free(a, idx);
+            lh__free(a, tmp);
+            lh__free(a, copy);
+            return 0;
+        }
+    }
+    for (size_t k = 0; k < nb; k++) {
+        if (start[k + 1] - start[k] > SMALL)
+            merge_sort_bucket(t, payload, start[k], start[k + 1], m, idx, tmp, copy);
+        else
+            insertion_sort(t, payload, start[k], start[k + 1], m);
+    }
+    lh__free(a, idx);
+    lh__free(a, tmp);
+    lh__free(a, copy);
+    return 1;
+}
+
 /* Sorts count canonical tuples (m int32 each) lexicographically into out, with
  * order[i] the input position of out's tuple i: a counting sort on the first entry
- * (a site index below n) gathers the tuples bucket by bucket; each bucket, now
- * contiguous, is sorted on the rest — insertion sort for the usual small buckets,
- * merge sort for large ones (a vertex of huge degree). Returns 0 on no memory. */
+ * (a site index below n) gathers the tuples bucket by bucket, then each bucket is
+ * sorted (lh__sort_buckets). Returns 0 on no memory. */
 int lh__sort_tuples(const lh_allocator *a, const int32_t *v, int m, size_t count,
-                       size_t n, int32_t *out, int32_t *order)
+                    size_t n, int32_t *out, int32_t *order)
 {
     size_t *start = lh__alloc(a, (n + 2) * sizeof *start);
-    int32_t *tmp = lh__alloc(a, (count + 1) * sizeof *tmp);
-    if (!start || !tmp) {
-        lh__free(a, start);
-        lh__free(a, tmp);
-        return 0;
-    }
+    if (!start) return 0;
     memset(start, 0, (n + 2) * sizeof *start);
     for (size_t i = 0; i < count; i++) start[(size_t)v[i * m] + 2]++;
     for (size_t k = 2; k < n + 2; k++) start[k] += start[k - 1];
     for (size_t i = 0; i < count; i++) order[start[(size_t)v[i * m] + 1]++] = (int32_t)i;
     for (size_t i = 0; i < count; i++) memcpy(out + i * m, v + (size_t)order[i] * m, (size_t)m * sizeof *v);
-    tuple_ctx c = {v, m};
-    for (size_t k = 0; k < n; k++) {
-        size_t lo = start[k], hi = start[k + 1];
-        if (hi - lo > 32) { /* rare: sort indices, then regather this bucket */
-            lh__sort_idx(order + lo, tmp, hi - lo, tuple_cmp, &c);
-            for (size_t i = lo; i < hi; i++) memcpy(out + i * m, v + (size_t)order[i] * m, (size_t)m * sizeof *v);
-            continue;
-        }
-        for (size_t i = lo + 1; i < hi; i++) {
-            int32_t key[LH__ENGINE_MAX_DIM + 1], o = order[i];
-            memcpy(key, out + i * m, (size_t)m * sizeof *key);
-            size_t j = i;
-            for (; j > lo && tuple_less(key, out + (j - 1) * m, m); j--) {
-                memcpy(out + j * m, out + (j - 1) * m, (size_t)m * sizeof *out);
-                order[j] = order[j - 1];
-            }
-            memcpy(out + j * m, key, (size_t)m * sizeof *key);
-            order[j] = o;
-        }
-    }
+    int ok = lh__sort_buckets(a, out, order, start, n, m);
     lh__free(a, start);
-    lh__free(a, tmp);
-    return 1;
+    return ok;
 }
-

@@ -112,5 +112,10 @@ void lh__canonical(int32_t *v, int *from, int m);
  * out; order[i] = index in v of out's tuple i. Returns 0 on no memory. */
 int lh__sort_tuples(const lh_allocator *a, const int32_t *v, int m, size_t count,
                     size_t n, int32_t *out, int32_t *order);
+/* canon.c: sorts the tuples (m int32 each) of t within each bucket
+ * [start[k], start[k+1]), k < nb, lexicographically, moving payload[] along
+ * (insertion sort for small buckets, merge sort for large ones). 0 on no memory. */
+int lh__sort_buckets(const lh_allocator *a, int32_t *t, int32_t *payload, const size_t *start,
+                     size_t nb, int m);
 
 #endif

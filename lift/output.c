@@ -18,31 +18,6 @@ static int32_t min_vertex(const lh__eng *b, int32_t c)
     return m;
 }
 
-static int tuple_less(const int32_t *x, const int32_t *y, int m)
-{
-    for (int k = 0; k < m; k++)
-        if (x[k] != y[k]) return x[k] < y[k];
-    return 0;
-}
-
-/* Sorts the tuples of positions lo..hi-1 (sharing their first entry) with their
- * cell ids. Buckets are small (a vertex's simplices where it is the smallest); an
- * insertion sort serves, and stays correct if one is large. */
-static void sort_bucket(int32_t *simp, int32_t *cell, size_t lo, size_t hi, int nv)
-{
-    for (size_t i = lo + 1; i < hi; i++) {
-        int32_t key[LH__ENGINE_MAX_DIM + 1], c = cell[i];
-        memcpy(key, simp + i * nv, (size_t)nv * sizeof *key);
-        size_t j = i;
-        for (; j > lo && tuple_less(key, simp + (j - 1) * nv, nv); j--) {
-            memcpy(simp + j * nv, simp + (j - 1) * nv, (size_t)nv * sizeof *simp);
-            cell[j] = cell[j - 1];
-        }
-        memcpy(simp + j * nv, key, (size_t)nv * sizeof *key);
-        cell[j] = c;
-    }
-}
-
 /* Finite simplices, canonical and sorted, written straight into t->simp: a counting
  * sort on the smallest vertex places each cell's canonical tuple in its bucket, then
  * each bucket is sorted. cell[s] is the cell behind simplex s. */
@@ -63,9 +38,10 @@ static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell)
         lh__canonical(t->simp + s * nv, from, nv);
         cell[s] = c;
     }
-    for (size_t k = 0; k < t->n; k++) sort_bucket(t->simp, cell, start[k], start[k + 1], nv);
+    /* Placing advanced start[v+1] to bucket v's end: bucket k is start[k]..start[k+1]. */
+    int ok = lh__sort_buckets(&t->alloc, t->simp, cell, start, t->n, nv);
     lh__free(&t->alloc, start);
-    return LH_OK;
+    return ok ? LH_OK : LH_ERR_NOMEM;
 }
 
 /* Neighbour k of simplex s: across the facet opposite its k-th vertex, found at its

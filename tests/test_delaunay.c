@@ -258,6 +258,26 @@ LH_TEST(output_depends_only_on_the_site_set)
     }
 }
 
+LH_TEST(a_vertex_of_huge_degree)
+{
+    /* Site 0 at the centre of 20000 sites on a circle: it is in every triangle and
+     * is every triangle's smallest index (the output sort's largest possible bucket). */
+    enum { N = 20001 };
+    double *x = malloc(2 * N * sizeof *x);
+    x[0] = x[1] = 0;
+    for (int i = 1; i < N; i++) {
+        x[2 * i] = cos(6.283185307179586 * i / (N - 1));
+        x[2 * i + 1] = sin(6.283185307179586 * i / (N - 1));
+    }
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(2, N, x, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_U64(lh_tri_count(t), N - 1);
+    for (size_t s = 0; s < lh_tri_count(t); s++) LH_EXPECT_EQ_INT(lh_tri_simplices(t)[3 * s], 0);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    lh_tri_free(t);
+    free(x);
+}
+
 LH_TEST(duplicates_are_merged_and_reported)
 {
     double x[] = {0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1, 1, 0, 0};
@@ -440,7 +460,8 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {LH_CASE(furthest_site_triangulation),LH_CASE(every_allocation_failure_is_survived_by_the_hull),
         LH_CASE(every_family_passes_the_exact_check), LH_CASE(smallest_inputs),
-        LH_CASE(output_depends_only_on_the_site_set), LH_CASE(duplicates_are_merged_and_reported),
+        LH_CASE(output_depends_only_on_the_site_set), LH_CASE(a_vertex_of_huge_degree),
+        LH_CASE(duplicates_are_merged_and_reported),
         LH_CASE(bad_input_gets_its_status), LH_CASE(the_check_rejects_what_is_not_delaunay),
         LH_CASE(every_allocation_failure_is_survived)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
