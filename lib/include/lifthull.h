@@ -193,9 +193,10 @@ void lh_options_default(lh_options *opt);
  * resolved by the symbolic perturbation of the lifted coordinates (lifthull.h,
  * predicates), so the result is a proper triangulation — every simplex has positive
  * volume — that depends only on the set of sites: not on their order, not on
- * opt->seed. Sites on the boundary of the convex hull are vertices. Exact duplicates
- * are merged: the first occurrence is the vertex, lh_tri_duplicate_of maps each site
- * to it.
+ * opt->seed. Every site is a vertex, those on the boundary of the convex hull
+ * included (furthest-site: exactly the hull's vertices are). Exact duplicates are
+ * merged: the first occurrence is the vertex, lh_tri_duplicate_of maps each site to
+ * it.
  *
  * Output, canonical: each simplex lists its d+1 site indices (input numbering) in
  * increasing order except that the last two are exchanged when needed for positive
@@ -203,10 +204,9 @@ void lh_options_default(lh_options *opt);
  *
  * Returns LH_OK; LH_ERR_DIMENSION (d outside 2..8); LH_ERR_INVALID_ARGUMENT (out or
  * xyz NULL, or an allocator without hooks); LH_ERR_TOO_LARGE (n*d overflows, or more
- * than INT32_MAX - 1 sites); LH_ERR_NONFINITE (NaN or infinity: lh_tri_error_index
- * cannot be asked since no handle exists, so the index is reported through
- * lh_coords_validate); LH_ERR_DEGENERATE (fewer than d+1 distinct sites, or all
- * sites in an affine subspace of dimension < d — lh_delaunay_affine_dim tells which);
+ * than INT32_MAX - 1 sites); LH_ERR_NONFINITE (a NaN or infinity: lh_coords_validate
+ * names the coordinate); LH_ERR_DEGENERATE (fewer than d+1 distinct sites, or all
+ * sites in an affine subspace of dimension < d — lh_affine_dim tells which);
  * LH_ERR_NOMEM. On failure *out is NULL and nothing is leaked.
  */
 typedef struct lh_tri lh_tri;
@@ -229,9 +229,10 @@ const int32_t *lh_tri_neighbors(const lh_tri *t);
  * orient_d(facet, p) > 0 for points p strictly outside the hull. */
 size_t lh_tri_hull_count(const lh_tri *t);
 const int32_t *lh_tri_hull_facets(const lh_tri *t);
-/* Per site: one simplex incident to it (-1 for a merged duplicate). */
+/* Per site: one simplex incident to it (-1 for a merged duplicate, or, furthest-site,
+ * for a site that is not a vertex). */
 const int32_t *lh_tri_vertex_simplex(const lh_tri *t);
-/* Per site: the index of the site it was merged into (itself if it is a vertex). */
+/* Per site: the index of the earlier equal site it was merged into (itself if none). */
 const int32_t *lh_tri_duplicate_of(const lh_tri *t);
 size_t lh_tri_duplicate_count(const lh_tri *t); /* sites merged into an earlier one */
 void lh_tri_free(lh_tri *t);
