@@ -9,7 +9,7 @@ int lh_cli_selfcheck(int argc, char **argv);
 int lh_cli_delaunay(int argc, char **argv);
 int lh_cli_hull(int argc, char **argv);
 
-/* Shared by the commands that read points (delaunay.c). */
+/* Shared by the commands that read points (common.c). */
 #include "lifthull.h"
 #include "points.h"
 double lh_cli_seconds(void);

@@ -26,7 +26,7 @@ lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
 }
 
 lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
-                       const double *xyz, int32_t *dup, uint64_t seed)
+                       const double *xyz, int32_t *dup, const lh_options *opt)
 {
     memset(e, 0, sizeof *e);
     lh__allocator_init(&e->alloc, alloc);
@@ -35,7 +35,7 @@ lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
     e->n = n;
     e->xyz = xyz;
     e->dup = dup;
-    e->rng = seed | 1;
+    e->rng = (opt ? opt->seed : LH__DEFAULT_SEED) | 1;
     return lh_pred_create(&e->alloc, &e->pred);
 }
 
@@ -43,9 +43,8 @@ void lh__eng_release(lh__eng *e)
 {
     lh__tds_release(&e->tds);
     lh__free(&e->alloc, e->order);
-    lh__free(&e->alloc, e->v2c);
     lh_pred_free(e->pred);
-    e->order = e->v2c = NULL;
+    e->order = NULL;
     e->pred = NULL;
 }
 
@@ -149,7 +148,6 @@ static lh_status start(lh__eng *e)
         }
     }
     lh__tds_link_all(&e->tds, cells, nv + 1);
-    for (int k = 0; k < nv; k++) e->v2c[s[k]] = cells[nv];
     e->hint = cells[nv];
     return LH_OK;
 }
@@ -159,18 +157,9 @@ static lh_status insert_all(lh__eng *e)
     for (size_t i = (size_t)e->nv; i < e->norder; i++) {
         e->q = e->order[i];
         int32_t c = locate(e);
-        if (c < 0) {
-            e->skipped++;
-            continue;
-        }
+        if (c < 0) continue; /* inside the current hull: not a vertex (placing modes) */
         lh_status st = lh__tds_insert(&e->tds, c, e->q, conflict, e);
         if (st != LH_OK) return st;
-        for (size_t f = 0; f < e->tds.nbound; f++) {
-            int32_t N = e->tds.fresh[f];
-            const int32_t *v = e->tds.vert + (size_t)N * e->nv;
-            for (int k = 0; k < e->nv; k++)
-                if (v[k] != LH__INF) e->v2c[v[k]] = N;
-        }
         e->hint = e->tds.fresh[0];
     }
     return LH_OK;
@@ -183,9 +172,6 @@ lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
     *affdim = lh__eng_initial_simplex(e);
     if (*affdim < e->d) return LH_ERR_DEGENERATE;
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
-    e->v2c = lh__alloc(&e->alloc, (e->n + 1) * sizeof *e->v2c);
-    if (!e->v2c) return LH_ERR_NOMEM;
-    for (size_t i = 0; i < e->n; i++) e->v2c[i] = -1;
     if ((st = start(e)) != LH_OK) return st;
     return insert_all(e);
 }

@@ -48,8 +48,6 @@ typedef struct lh__eng {
     lh__tds tds;
     int32_t *order;    /* distinct sites in insertion order */
     size_t norder;
-    int32_t *v2c;      /* n: a cell incident to each inserted site, -1 otherwise */
-    size_t skipped;    /* sites inside the hull, not inserted (placing mode only) */
     int32_t q, hint;
     uint64_t rng;
     lh__finite_conflict_fn finite_conflict;
@@ -75,9 +73,12 @@ static inline uint64_t lh__rng_next(uint64_t *s) /* xorshift64* (Vigna 2016) */
 /* Validates (d, n, xyz, opt) for a computation in dimension lo..hi. */
 lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
                              const lh_options *opt);
-/* Sets up e (no cells yet) over the caller's sites; dup must hold n entries. */
+#define LH__DEFAULT_SEED UINT64_C(0x5eed) /* lh_options.seed's default */
+
+/* Sets up e (no cells yet) over the caller's sites; dup must hold n entries; the
+ * seed comes from opt (NULL: the default). */
 lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
-                       const double *xyz, int32_t *dup, uint64_t seed);
+                       const double *xyz, int32_t *dup, const lh_options *opt);
 void lh__eng_release(lh__eng *e);
 /* order.c: duplicates merged into e->dup, insertion order in e->order. */
 lh_status lh__eng_order(lh__eng *e);

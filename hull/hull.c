@@ -71,7 +71,7 @@ lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *o
         return LH_ERR_NOMEM;
     }
     lh__eng e;
-    st = lh__eng_init(&e, &a, d, n, xyz, h->dup, opt ? opt->seed : 0x5eed);
+    st = lh__eng_init(&e, &a, d, n, xyz, h->dup, opt);
     int affdim = -1;
     if (st == LH_OK) st = lh__eng_build(&e, (int32_t)(n < 1000000 ? 4 * n + 256 : 4000000), &affdim);
     if (st == LH_OK) st = lh__eng_hull_facets(&e, &h->facets, &h->count);

@@ -14,25 +14,27 @@ void lh_options_default(lh_options *opt)
 {
     if (!opt) return;
     memset(opt, 0, sizeof *opt);
-    opt->seed = 0x5eed;
+    opt->seed = LH__DEFAULT_SEED;
 }
 
-/* The lifted visibility of finite cell v from site q. */
+/* Perturbed insphere of finite cell v (positively oriented) and site q. */
+static int lifted_sign(lh__eng *e, const int32_t *v, int32_t q)
+{
+    for (int k = 0; k < e->nv; k++) e->pts[k] = lh__eng_site(e, v[k]);
+    e->pts[e->nv] = lh__eng_site(e, q);
+    return lh__insphere_sos_fast(e->pred, e->d, e->pts);
+}
+
+/* The lifted visibility of finite cell v from site q: q strictly inside. */
 static int lifted_conflict(void *user, const int32_t *v, int32_t q)
 {
-    lh__eng *e = user;
-    for (int k = 0; k < e->nv; k++) e->pts[k] = lh__eng_site(e, v[k]);
-    e->pts[e->nv] = lh__eng_site(e, q);
-    return lh__insphere_sos_fast(e->pred, e->d, e->pts) < 0;
+    return lifted_sign(user, v, q) < 0;
 }
 
-/* The furthest-site test: q strictly outside the circumsphere, perturbed. */
+/* The furthest-site test (the upper hull): q strictly outside the circumsphere. */
 static int furthest_conflict(void *user, const int32_t *v, int32_t q)
 {
-    lh__eng *e = user;
-    for (int k = 0; k < e->nv; k++) e->pts[k] = lh__eng_site(e, v[k]);
-    e->pts[e->nv] = lh__eng_site(e, q);
-    return lh__insphere_sos_fast(e->pred, e->d, e->pts) > 0;
+    return lifted_sign(user, v, q) > 0;
 }
 
 /* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,
@@ -93,7 +95,7 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     lh_tri *t;
     if ((st = new_handle(d, n, xyz, opt, &t)) != LH_OK) return st;
     lh__eng e;
-    st = lh__eng_init(&e, &t->alloc, d, n, t->xyz, t->dup, opt ? opt->seed : 0x5eed);
+    st = lh__eng_init(&e, &t->alloc, d, n, t->xyz, t->dup, opt);
     int furthest = opt && opt->furthest_site;
     e.finite_conflict = furthest ? furthest_conflict : lifted_conflict;
     e.inside_conflicts = !furthest;
@@ -102,7 +104,10 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     int affdim = -1;
     if (st == LH_OK) st = lh__eng_build(&e, expected_cells(d, n), &affdim);
     if (st == LH_OK) st = lh__dt_extract(&e, t);
-    if (st == LH_OK) st = lh_pred_create(&t->alloc, &t->pred);
+    if (st == LH_OK) { /* the handle's queries reuse the engine's predicate context */
+        t->pred = e.pred;
+        e.pred = NULL;
+    }
     t->ndup = e.ndup;
     lh__eng_release(&e);
     if (st != LH_OK) {
@@ -123,7 +128,7 @@ lh_status lh_affine_dim(int d, size_t n, const double *xyz, int *dim)
     int32_t *dup = lh__alloc(&a, (n + 1) * sizeof *dup);
     if (!dup) return LH_ERR_NOMEM;
     lh__eng e;
-    st = lh__eng_init(&e, NULL, d, n, xyz, dup, 0x5eed);
+    st = lh__eng_init(&e, NULL, d, n, xyz, dup, NULL);
     if (st == LH_OK) st = lh__eng_order(&e);
     if (st == LH_OK) *dim = lh__eng_initial_simplex(&e);
     lh__eng_release(&e);

@@ -103,7 +103,8 @@ static double nearest_in_simplex(const double *const *v, int m, const double *q,
     return best;
 }
 
-static int32_t walk(lh_tri *t, const double *q, int32_t s, int32_t *exit_simplex, int *exit_k)
+/* The simplex containing q, -1 when q is outside the hull, -2 past the step bound. */
+static int32_t walk(lh_tri *t, const double *q, int32_t s)
 {
     const int nv = t->d + 1;
     const double *p[MAXV];
@@ -117,11 +118,7 @@ static int32_t walk(lh_tri *t, const double *q, int32_t s, int32_t *exit_simplex
             if (n == prev && n >= 0) continue;
             for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)v[j] * t->d;
             if (lh_orient(t->pred, t->d, p) >= 0) continue;
-            if (n < 0) {
-                *exit_simplex = s;
-                *exit_k = k;
-                return -1;
-            }
+            if (n < 0) return -1;
             prev = s;
             s = n;
             moved = 1;
@@ -159,9 +156,8 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *o
     memset(out, 0, sizeof *out);
     out->simplex = out->hull_facet = -1;
     const int nv = t->d + 1;
-    int32_t start = hint >= 0 && (size_t)hint < t->count ? hint : 0, es = -1;
-    int ek = -1;
-    int32_t s = walk(t, q, start, &es, &ek);
+    int32_t start = hint >= 0 && (size_t)hint < t->count ? hint : 0;
+    int32_t s = walk(t, q, start);
     for (size_t c = 0; s == -2 && c < t->count; c++) { /* the walk's bound: scan */
         const double *p[MAXV];
         int inside = 1;

@@ -349,72 +349,83 @@ LH_TEST(the_check_rejects_what_is_not_delaunay)
 }
 
 
-LH_TEST(every_allocation_failure_is_survived)
+/* One run of an entry point with the given allocator; it frees what it built and
+ * returns its status (checking on failure that it handed nothing back). */
+typedef lh_status (*alloc_run)(lh_test_state *lh_t_, const lh_allocator *a, const double *x);
+
+/* Runs `run` with the k-th allocation failing, k = 1, 2, ... until a run succeeds:
+ * every failing run must report LH_ERR_NOMEM and leave nothing allocated. Returns the
+ * number of runs. */
+static long survive_every_failure(lh_test_state *lh_t_, alloc_run run, const double *x)
 {
-    enum { N = 400 };
-    double x[N * 3];
-    rng_state = 5;
-    for (int i = 0; i < N * 3; i++) x[i] = unif();
     for (long k = 1;; k++) {
         lh_test_counter c = {0, k, 0};
         lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
-        lh_options o;
-        lh_options_default(&o);
-        o.alloc = &a;
-        lh_tri *t = (lh_tri *)&c;
-        lh_status st = lh_delaunay(3, N, x, &o, &t);
-        if (st == LH_OK) {
-            size_t count;
-            const int32_t *off, *v;
-            lh_status cs = lh_tri_complex(t, &count, &off, &v); /* allocates too */
-            LH_EXPECT_TRUE(cs == LH_OK || cs == LH_ERR_NOMEM);
-            lh_location loc;
-            LH_EXPECT_EQ_INT(lh_tri_locate(t, x, -1, &loc), LH_OK);
-            LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
-            lh_tri_free(t);
-            LH_EXPECT_EQ_INT(c.live, 0);
-            if (cs == LH_ERR_NOMEM) continue;
-            LH_EXPECT_GT_INT(k, 10); /* the run does allocate */
-            break;
-        }
-        LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
-        LH_EXPECT_TRUE(t == NULL);
+        lh_status st = run(lh_t_, &a, x);
         LH_EXPECT_EQ_INT(c.live, 0);
+        if (st == LH_OK) return k;
+        LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
         if (LH_FAILED()) {
             LH_NOTE("failing allocation %ld", k);
-            break;
+            return k;
         }
     }
 }
 
+enum { ALLOC_N = 400 };
+
+/* lh_delaunay, then the calls on the handle that allocate (lh_tri_complex). */
+static lh_status delaunay_run(lh_test_state *lh_t_, const lh_allocator *a, const double *x)
+{
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = a;
+    lh_tri *t = (lh_tri *)x;
+    lh_status st = lh_delaunay(3, ALLOC_N, x, &o, &t);
+    if (st != LH_OK) {
+        LH_EXPECT_TRUE(t == NULL);
+        return st;
+    }
+    size_t count;
+    const int32_t *off, *v;
+    st = lh_tri_complex(t, &count, &off, &v);
+    lh_location loc;
+    LH_EXPECT_EQ_INT(lh_tri_locate(t, x, -1, &loc), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    lh_tri_free(t);
+    return st;
+}
+
+static lh_status hull_run(lh_test_state *lh_t_, const lh_allocator *a, const double *x)
+{
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = a;
+    lh_hull *h = (lh_hull *)x;
+    lh_status st = lh_convex_hull(4, ALLOC_N * 3 / 4, x, &o, &h);
+    if (st != LH_OK) {
+        LH_EXPECT_TRUE(h == NULL);
+        return st;
+    }
+    LH_EXPECT_GT_U64(lh_hull_facet_count(h), 5);
+    lh_hull_free(h);
+    return st;
+}
+
+LH_TEST(every_allocation_failure_is_survived)
+{
+    double x[ALLOC_N * 3];
+    rng_state = 5;
+    for (int i = 0; i < ALLOC_N * 3; i++) x[i] = unif();
+    LH_EXPECT_GT_INT(survive_every_failure(lh_t_, delaunay_run, x), 10); /* it allocates */
+}
+
 LH_TEST(every_allocation_failure_is_survived_by_the_hull)
 {
-    enum { N = 300 };
-    double x[N * 4];
+    double x[ALLOC_N * 3]; /* 300 sites in 4D */
     rng_state = 9;
-    for (int i = 0; i < N * 4; i++) x[i] = unif();
-    for (long k = 1;; k++) {
-        lh_test_counter c = {0, k, 0};
-        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
-        lh_options o;
-        lh_options_default(&o);
-        o.alloc = &a;
-        lh_hull *h = (lh_hull *)&c;
-        lh_status st = lh_convex_hull(4, N, x, &o, &h);
-        if (st == LH_OK) {
-            LH_EXPECT_GT_U64(lh_hull_facet_count(h), 5);
-            lh_hull_free(h);
-            LH_EXPECT_EQ_INT(c.live, 0);
-            break;
-        }
-        LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
-        LH_EXPECT_TRUE(h == NULL);
-        LH_EXPECT_EQ_INT(c.live, 0);
-        if (LH_FAILED()) {
-            LH_NOTE("failing allocation %ld", k);
-            break;
-        }
-    }
+    for (int i = 0; i < ALLOC_N * 3; i++) x[i] = unif();
+    LH_EXPECT_GT_INT(survive_every_failure(lh_t_, hull_run, x), 10);
 }
 
 LH_TEST(furthest_site_triangulation)

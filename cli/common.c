@@ -1,0 +1,77 @@
+/* common.c — what the commands that read points share: options, loading, failure
+ * messages, timing, flushing the output (cli.h). */
+#include "cli.h"
+
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+double lh_cli_seconds(void)
+{
+    struct timespec ts;
+    timespec_get(&ts, TIME_UTC);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file,
+                        int *furthest)
+{
+    *summary = 0;
+    *file = NULL;
+    if (furthest) *furthest = 0;
+    for (int i = 0; i < argc; i++) {
+        if (!strcmp(argv[i], "-s")) {
+            *summary = 1;
+        } else if (furthest && !strcmp(argv[i], "-u")) {
+            *furthest = 1;
+        } else if (argv[i][0] == '-' && argv[i][1]) {
+            fprintf(stderr, "lifthull %s: unknown option '%s' (usage: lifthull %s [-s]%s [FILE])\n", cmd,
+                    argv[i], cmd, furthest ? " [-u]" : "");
+            return -1;
+        } else if (*file) {
+            fprintf(stderr, "lifthull %s: more than one input file\n", cmd);
+            return -1;
+        } else {
+            *file = argv[i];
+        }
+    }
+    return 0;
+}
+
+int lh_cli_load(const char *file, lh_cli_points *pts, const char **name)
+{
+    FILE *f = stdin;
+    *name = "<stdin>";
+    if (file && strcmp(file, "-")) {
+        f = fopen(file, "r");
+        *name = file;
+        if (!f) {
+            perror(file);
+            return 0;
+        }
+    }
+    int ok = lh_cli_read_points(f, *name, pts);
+    if (f != stdin) fclose(f);
+    return ok;
+}
+
+void lh_cli_report_failure(const char *name, const lh_cli_points *pts, lh_status st)
+{
+    if (st == LH_ERR_DEGENERATE) {
+        int k = -1;
+        lh_affine_dim(pts->d, pts->n, pts->xyz, &k);
+        fprintf(stderr, "%s: the %zu sites span an affine subspace of dimension %d, not %d: "
+                "nothing %d-dimensional to compute\n", name, pts->n, k, pts->d, pts->d);
+    } else {
+        fprintf(stderr, "%s: %s\n", name, lh_status_message(st));
+    }
+}
+
+int lh_cli_finish_output(const char *cmd)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "lifthull %s: error writing the output\n", cmd);
+        return LH_EXIT_FAIL;
+    }
+    return LH_EXIT_OK;
+}
