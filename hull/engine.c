@@ -43,33 +43,28 @@ void lh__eng_release(lh__eng *e)
 {
     lh__tds_release(&e->tds);
     lh__free(&e->alloc, e->order);
+    lh__free(&e->alloc, e->site);
     lh_pred_free(e->pred);
     e->order = NULL;
+    e->site = NULL;
     e->pred = NULL;
-}
-
-static int inf_index(const int32_t *v, int nv)
-{
-    for (int k = 0; k < nv; k++)
-        if (v[k] == LH__INF) return k;
-    return -1;
 }
 
 int lh__eng_finite(const lh__eng *e, int32_t c)
 {
-    return inf_index(e->tds.vert + (size_t)c * e->nv, e->nv) < 0;
+    return e->tds.vert[(size_t)c * e->nv] != LH__INF;
 }
 
 static int conflict(void *user, int32_t c)
 {
     lh__eng *e = user;
     const int32_t *v = e->tds.vert + (size_t)c * e->nv;
-    int inf = inf_index(v, e->nv);
-    if (inf < 0) return e->finite_conflict && e->finite_conflict(e->user, v, e->q);
-    for (int k = 0; k < e->nv; k++) e->pts[k] = lh__eng_site(e, k == inf ? e->q : v[k]);
+    if (v[0] != LH__INF) return e->finite_conflict && e->finite_conflict(e->user, v, e->q);
+    e->pts[0] = lh__eng_site(e, e->q);
+    for (int k = 1; k < e->nv; k++) e->pts[k] = lh__eng_site(e, v[k]);
     int o = lh__orient_fast(e->pred, e->d, e->pts);
     if (o || !e->finite_conflict) return o > 0;
-    int32_t f = e->tds.nbr[(size_t)c * e->nv + inf];
+    int32_t f = e->tds.nbr[(size_t)c * e->nv];
     return e->finite_conflict(e->user, e->tds.vert + (size_t)f * e->nv, e->q);
 }
 
@@ -96,11 +91,10 @@ static int32_t locate(lh__eng *e)
     size_t limit = 64 + 8 * (size_t)e->tds.live;
     for (size_t step = 0; step < limit; step++) {
         const int32_t *v = e->tds.vert + (size_t)c * nv;
-        int inf = inf_index(v, nv);
-        if (inf >= 0) {
+        if (v[0] == LH__INF) {
             if (prev >= 0 || conflict(e, c)) return c; /* entered across its facet */
             prev = c;
-            c = e->tds.nbr[(size_t)c * nv + inf];
+            c = e->tds.nbr[(size_t)c * nv];
             continue;
         }
         int s = (int)(lh__rng_next(&e->rng) % (uint64_t)nv), moved = 0;
@@ -118,14 +112,17 @@ static int32_t locate(lh__eng *e)
     return found;
 }
 
-/* The first d+2 cells: the simplex order[0..d], positively oriented, and one
- * infinite cell per facet, oriented by exchanging two of its finite vertices. */
+/* The first d+2 cells: the simplex of vertices 0..d, positively oriented, and one
+ * infinite cell per facet. An infinite cell keeps LH__INF at position 0 (the cavity
+ * insertion preserves that: a new cell replaces one vertex of an old one), and is
+ * oriented by an odd permutation of the simplex with LH__INF in place of the
+ * vertex it drops. */
 static lh_status start(lh__eng *e)
 {
     const int nv = e->nv;
     int32_t s[LH__ENGINE_MAX_DIM + 1] = {0}, cells[LH__ENGINE_MAX_DIM + 2];
     for (int k = 0; k < nv; k++) {
-        s[k] = e->order[k];
+        s[k] = k;
         e->pts[k] = lh__eng_site(e, s[k]);
     }
     if (lh_orient(e->pred, e->d, e->pts) < 0) {
@@ -139,12 +136,13 @@ static lh_status start(lh__eng *e)
         cells[i] = c;
         int32_t *v = e->tds.vert + (size_t)c * nv;
         memcpy(v, s, (size_t)nv * sizeof *v);
-        if (i < nv) { /* infinite cell replacing vertex i */
-            v[i] = LH__INF;
-            int a = i == 0 ? 1 : 0, z = i == nv - 1 ? nv - 2 : nv - 1;
-            int32_t x = v[a];
-            v[a] = v[z];
-            v[z] = x;
+        if (i > 0 && i < nv) { /* vertex i dropped: exchange positions 0 and i */
+            v[i] = v[0];
+            v[0] = LH__INF;
+        } else if (i == 0) { /* vertex 0 dropped: exchange positions 1 and 2 */
+            v[0] = LH__INF;
+            v[1] = s[2];
+            v[2] = s[1];
         }
     }
     lh__tds_link_all(&e->tds, cells, nv + 1);
@@ -155,7 +153,7 @@ static lh_status start(lh__eng *e)
 static lh_status insert_all(lh__eng *e)
 {
     for (size_t i = (size_t)e->nv; i < e->norder; i++) {
-        e->q = e->order[i];
+        e->q = (int32_t)i;
         int32_t c = locate(e);
         if (c < 0) continue; /* inside the current hull: not a vertex (placing modes) */
         lh_status st = lh__tds_insert(&e->tds, c, e->q, conflict, e);
@@ -165,15 +163,43 @@ static lh_status insert_all(lh__eng *e)
     return LH_OK;
 }
 
+/* e->site: the distinct sites in insertion order. */
+static lh_status copy_sites(lh__eng *e)
+{
+    const size_t d = (size_t)e->d;
+    e->site = lh__alloc(&e->alloc, (e->norder * d + 1) * sizeof *e->site);
+    if (!e->site) return LH_ERR_NOMEM;
+    for (size_t i = 0; i < e->norder; i++)
+        memcpy(e->site + i * d, lh__eng_input(e, (size_t)e->order[i]), d * sizeof *e->site);
+    return LH_OK;
+}
+
+/* Vertex v becomes the caller's index order[v]; the copy of the sites goes. */
+static void restore_indices(lh__eng *e)
+{
+    const int nv = e->nv;
+    for (int32_t c = 0; c < e->tds.top; c++) {
+        if (lh__tds_dead(&e->tds, c)) continue;
+        int32_t *v = e->tds.vert + (size_t)c * nv;
+        for (int k = 0; k < nv; k++)
+            if (v[k] >= 0) v[k] = e->order[v[k]];
+    }
+    lh__free(&e->alloc, e->site);
+    e->site = NULL;
+}
+
 lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
 {
     lh_status st = lh__eng_order(e);
     if (st != LH_OK) return st;
     *affdim = lh__eng_initial_simplex(e);
     if (*affdim < e->d) return LH_ERR_DEGENERATE;
+    if ((st = copy_sites(e)) != LH_OK) return st;
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
     if ((st = start(e)) != LH_OK) return st;
-    return insert_all(e);
+    if ((st = insert_all(e)) != LH_OK) return st;
+    restore_indices(e);
+    return LH_OK;
 }
 
 lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count)
@@ -192,16 +218,10 @@ lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count)
             if (lh__tds_dead(&e->tds, c) || lh__eng_finite(e, c)) continue;
             const int32_t *v = e->tds.vert + (size_t)c * nv;
             int32_t *o = raw + f * d;
-            int m = 0, inf = 0;
-            for (int k = 0; k < nv; k++) {
-                if (v[k] == LH__INF)
-                    inf = k;
-                else
-                    o[m++] = v[k];
-            }
-            /* Moving the outside point from position inf to the end takes d - inf
-             * exchanges; compensate an odd number with one more. */
-            if ((d - inf) & 1) {
+            for (int k = 1; k < nv; k++) o[k - 1] = v[k];
+            /* Moving the outside point from position 0 (LH__INF's) to the end takes
+             * d exchanges; compensate an odd number with one more. */
+            if (d & 1) {
                 int32_t x = o[0];
                 o[0] = o[1];
                 o[1] = x;

@@ -42,6 +42,9 @@ typedef struct lh__eng {
     int d, nv;
     size_t n;
     const double *xyz; /* n*d sites, the caller's */
+    double *site;      /* norder*d: the distinct sites in insertion order, while
+                          building; cells hold these positions (vertex v is
+                          order[v]), mapped back to the caller's indices at the end */
     int32_t *dup;      /* n, the caller's: filled with the site each one merges into */
     size_t ndup;
     lh_pred *pred;
@@ -57,9 +60,17 @@ typedef struct lh__eng {
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */
 } lh__eng;
 
+/* The caller's site i. */
+static inline const double *lh__eng_input(const lh__eng *e, size_t i)
+{
+    return e->xyz + i * (size_t)e->d;
+}
+
+/* The coordinates of vertex v while building (insertion-order copy: sites close in
+ * space are close in memory). */
 static inline const double *lh__eng_site(const lh__eng *e, int32_t v)
 {
-    return e->xyz + (size_t)v * (size_t)e->d;
+    return e->site + (size_t)v * (size_t)e->d;
 }
 
 static inline uint64_t lh__rng_next(uint64_t *s) /* xorshift64* (Vigna 2016) */
@@ -88,7 +99,8 @@ int lh__eng_initial_simplex(lh__eng *e);
 /* order.c: whether pts[k] is outside the affine hull of pts[0..k-1] in R^d. */
 int lh__affine_independent(lh_pred *pred, int d, const double *const *pts, int k);
 /* All of the above, then every site inserted. LH_ERR_DEGENERATE when the sites
- * span less than R^d (*affdim tells the dimension). */
+ * span less than R^d (*affdim tells the dimension). Afterwards the cells hold the
+ * caller's site indices. */
 lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim);
 
 /* order.c: lexicographic order of sites, ties by index; ctx is an lh__lex (for

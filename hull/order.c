@@ -21,7 +21,7 @@ int lh__lex_cmp(const void *vctx, int32_t a, int32_t b)
 
 static int same_site(const lh__eng *e, int32_t a, int32_t b)
 {
-    const double *p = lh__eng_site(e, a), *q = lh__eng_site(e, b);
+    const double *p = lh__eng_input(e, (size_t)a), *q = lh__eng_input(e, (size_t)b);
     for (int j = 0; j < e->d; j++)
         if (p[j] != q[j]) return 0;
     return 1;
@@ -190,9 +190,9 @@ int lh__eng_initial_simplex(lh__eng *b)
     int d = b->d, k = 0;
     const double *pts[LH__ENGINE_MAX_DIM + 1];
     if (b->norder == 0) return -1;
-    pts[0] = lh__eng_site(b, b->order[0]);
+    pts[0] = lh__eng_input(b, (size_t)b->order[0]);
     for (size_t i = 1; i < b->norder && k < d; i++) {
-        pts[k + 1] = lh__eng_site(b, b->order[i]);
+        pts[k + 1] = lh__eng_input(b, (size_t)b->order[i]);
         if (lh__affine_independent(b->pred, d, pts, k + 1)) {
             k++;
             int32_t s = b->order[i]; /* keep the rest in order: rotate it forward */
