@@ -6,36 +6,23 @@
 
 #include <string.h>
 
-/* Sorts v[0..m-1] increasing; returns the permutation's parity (1 = odd) and, in
- * from[p], the original position of the value now at p. */
-static int sort_with_parity(int32_t *v, int *from, int m)
+/* Canonical order of an oriented tuple: increasing (insertion sort, counting the
+ * exchanges' parity), then the last two exchanged if the sort was an odd
+ * permutation (so the orientation is kept). */
+void lh__canonical(int32_t *v, int m)
 {
     int parity = 0;
-    for (int i = 0; i < m; i++) from[i] = i;
-    for (int i = 1; i < m; i++)
-        for (int j = i; j > 0 && v[j] < v[j - 1]; j--) {
-            int32_t x = v[j];
-            v[j] = v[j - 1];
-            v[j - 1] = x;
-            int f = from[j];
-            from[j] = from[j - 1];
-            from[j - 1] = f;
-            parity ^= 1;
-        }
-    return parity;
-}
-
-/* Canonical order of an oriented tuple: increasing, then the last two exchanged if
- * the sort was an odd permutation (so the orientation is kept). */
-void lh__canonical(int32_t *v, int *from, int m)
-{
-    if (sort_with_parity(v, from, m)) {
+    for (int i = 1; i < m; i++) {
+        int32_t x = v[i];
+        int j = i;
+        for (; j > 0 && x < v[j - 1]; j--) v[j] = v[j - 1];
+        v[j] = x;
+        parity ^= (i - j) & 1;
+    }
+    if (parity) {
         int32_t x = v[m - 1];
         v[m - 1] = v[m - 2];
         v[m - 2] = x;
-        int f = from[m - 1];
-        from[m - 1] = from[m - 2];
-        from[m - 2] = f;
     }
 }
 

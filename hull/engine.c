@@ -226,8 +226,7 @@ lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count)
                 o[0] = o[1];
                 o[1] = x;
             }
-            int from[LH__ENGINE_MAX_DIM];
-            lh__canonical(o, from, d);
+            lh__canonical(o, d);
             f++;
         }
         if (!lh__sort_tuples(&e->alloc, raw, d, h, e->n, facets, order)) st = LH_ERR_NOMEM;

@@ -118,9 +118,8 @@ int lh__eng_finite(const lh__eng *e, int32_t c);
 lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count);
 
 /* canon.c: canonical order of an oriented tuple (increasing, then the last two
- * exchanged if that took an odd permutation); from[p] = original position of the
- * entry now at p. */
-void lh__canonical(int32_t *v, int *from, int m);
+ * exchanged if that took an odd permutation). */
+void lh__canonical(int32_t *v, int m);
 /* canon.c: sorts count tuples of m site indices (< n) lexicographically from v into
  * out; order[i] = index in v of out's tuple i. Returns 0 on no memory. */
 int lh__sort_tuples(const lh_allocator *a, const int32_t *v, int m, size_t count,

@@ -33,9 +33,10 @@ static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell)
     for (int32_t c = 0; c < b->tds.top; c++) {
         if (lh__tds_dead(&b->tds, c) || !lh__eng_finite(b, c)) continue;
         size_t s = start[(size_t)min_vertex(b, c) + 1]++;
-        int from[LH__ENGINE_MAX_DIM + 1];
-        memcpy(t->simp + s * nv, b->tds.vert + (size_t)c * nv, (size_t)nv * sizeof *t->simp);
-        lh__canonical(t->simp + s * nv, from, nv);
+        const int32_t *v = b->tds.vert + (size_t)c * nv;
+        int32_t *o = t->simp + s * nv;
+        for (int k = 0; k < nv; k++) o[k] = v[k];
+        lh__canonical(o, nv);
         cell[s] = c;
     }
     /* Placing advanced start[v+1] to bucket v's end: bucket k is start[k]..start[k+1]. */
@@ -44,17 +45,22 @@ static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell)
     return ok ? LH_OK : LH_ERR_NOMEM;
 }
 
-/* Neighbour k of simplex s: across the facet opposite its k-th vertex, found at its
- * position in the cell. */
-static void set_neighbours(lh__eng *b, lh_tri *t, const int32_t *cell, const int32_t *out_of_cell)
+/* Neighbour k of simplex s: across the facet opposite its k-th vertex. Cells are
+ * visited in store order (neighbouring cells are mostly close in memory), so only
+ * the simplex's two rows are far away. */
+static void set_neighbours(lh__eng *b, lh_tri *t, const int32_t *out_of_cell)
 {
     const int nv = b->nv;
-    for (size_t s = 0; s < t->count; s++) {
-        const int32_t *cv = b->tds.vert + (size_t)cell[s] * nv;
-        for (int k = 0; k < nv; k++) {
-            int j = 0;
-            while (cv[j] != t->simp[s * nv + k]) j++;
-            t->nbr[s * nv + k] = out_of_cell[b->tds.nbr[(size_t)cell[s] * nv + j]];
+    for (int32_t c = 0; c < b->tds.top; c++) {
+        int32_t s = out_of_cell[c];
+        if (s < 0) continue;
+        const int32_t *cv = b->tds.vert + (size_t)c * nv, *cn = b->tds.nbr + (size_t)c * nv;
+        const int32_t *sv = t->simp + (size_t)s * nv;
+        int32_t *sn = t->nbr + (size_t)s * nv;
+        for (int j = 0; j < nv; j++) {
+            int k = 0;
+            while (sv[k] != cv[j]) k++;
+            sn[k] = out_of_cell[cn[j]];
         }
     }
 }
@@ -75,7 +81,7 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, int32_t *out_of_cell)
     }
     if (st == LH_OK) {
         for (size_t s = 0; s < count; s++) out_of_cell[cell[s]] = (int32_t)s;
-        set_neighbours(b, t, cell, out_of_cell);
+        set_neighbours(b, t, out_of_cell);
     }
     lh__free(&t->alloc, cell);
     return st;
