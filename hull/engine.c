@@ -43,10 +43,10 @@ void lh__eng_release(lh__eng *e)
 {
     lh__tds_release(&e->tds);
     lh__free(&e->alloc, e->order);
-    lh__free(&e->alloc, e->site);
+    lh__free(&e->alloc, e->site_copy);
     lh_pred_free(e->pred);
     e->order = NULL;
-    e->site = NULL;
+    e->site = e->site_copy = NULL;
     e->pred = NULL;
 }
 
@@ -150,27 +150,32 @@ static lh_status start(lh__eng *e)
     return LH_OK;
 }
 
-static lh_status insert_all(lh__eng *e)
+static lh_status insert_one(lh__eng *e, int32_t q)
 {
-    for (size_t i = (size_t)e->nv; i < e->norder; i++) {
-        e->q = (int32_t)i;
-        int32_t c = locate(e);
-        if (c < 0) continue; /* inside the current hull: not a vertex (placing modes) */
-        lh_status st = lh__tds_insert(&e->tds, c, e->q, conflict, e);
-        if (st != LH_OK) return st;
-        e->hint = e->tds.fresh[0];
-    }
-    return LH_OK;
+    e->q = q;
+    int32_t c = locate(e);
+    if (c < 0) return LH_OK; /* inside the current hull: not a vertex (placing modes) */
+    lh_status st = lh__tds_insert(&e->tds, c, q, conflict, e);
+    if (st == LH_OK) e->hint = e->tds.fresh[0];
+    return st;
+}
+
+lh_status lh__eng_insert(lh__eng *e, const int32_t *list, size_t count)
+{
+    lh_status st = LH_OK;
+    for (size_t i = 0; i < count && st == LH_OK; i++) st = insert_one(e, list[i]);
+    return st;
 }
 
 /* e->site: the distinct sites in insertion order. */
 static lh_status copy_sites(lh__eng *e)
 {
     const size_t d = (size_t)e->d;
-    e->site = lh__alloc(&e->alloc, (e->norder * d + 1) * sizeof *e->site);
-    if (!e->site) return LH_ERR_NOMEM;
+    e->site_copy = lh__alloc(&e->alloc, (e->norder * d + 1) * sizeof *e->site_copy);
+    if (!e->site_copy) return LH_ERR_NOMEM;
     for (size_t i = 0; i < e->norder; i++)
-        memcpy(e->site + i * d, lh__eng_input(e, (size_t)e->order[i]), d * sizeof *e->site);
+        memcpy(e->site_copy + i * d, lh__eng_input(e, (size_t)e->order[i]), d * sizeof *e->site_copy);
+    e->site = e->site_copy;
     return LH_OK;
 }
 
@@ -184,8 +189,8 @@ static void restore_indices(lh__eng *e)
         for (int k = 0; k < nv; k++)
             if (v[k] >= 0) v[k] = e->order[v[k]];
     }
-    lh__free(&e->alloc, e->site);
-    e->site = NULL;
+    lh__free(&e->alloc, e->site_copy);
+    e->site = e->site_copy = NULL;
 }
 
 lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
@@ -197,7 +202,8 @@ lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
     if ((st = copy_sites(e)) != LH_OK) return st;
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
     if ((st = start(e)) != LH_OK) return st;
-    if ((st = insert_all(e)) != LH_OK) return st;
+    for (size_t i = (size_t)e->nv; i < e->norder; i++)
+        if ((st = insert_one(e, (int32_t)i)) != LH_OK) return st;
     restore_indices(e);
     return LH_OK;
 }

@@ -42,9 +42,11 @@ typedef struct lh__eng {
     int d, nv;
     size_t n;
     const double *xyz; /* n*d sites, the caller's */
-    double *site;      /* norder*d: the distinct sites in insertion order, while
-                          building; cells hold these positions (vertex v is
-                          order[v]), mapped back to the caller's indices at the end */
+    const double *site; /* the coordinates of vertex v are site + v*d: while
+                          lh__eng_build runs, site_copy (the distinct sites in
+                          insertion order; vertex v is the caller's order[v],
+                          mapped back at the end) */
+    double *site_copy;
     int32_t *dup;      /* n, the caller's: filled with the site each one merges into */
     size_t ndup;
     lh_pred *pred;
@@ -110,6 +112,11 @@ typedef struct lh__lex {
     int d;
 } lh__lex;
 int lh__lex_cmp(const void *ctx, int32_t a, int32_t b);
+
+/* Inserts the vertices list[0..count-1] (distinct, none a vertex yet; coordinates
+ * in e->site) into the cells of e->tds, which must hold a triangulation made as
+ * lh__eng_build's: LH__INF at position 0 of every infinite cell. */
+lh_status lh__eng_insert(lh__eng *e, const int32_t *list, size_t count);
 
 /* Whether cell c is finite. */
 int lh__eng_finite(const lh__eng *e, int32_t c);

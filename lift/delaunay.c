@@ -37,6 +37,13 @@ static int furthest_conflict(void *user, const int32_t *v, int32_t q)
     return lifted_sign(user, v, q) > 0;
 }
 
+void lh__dt_conflicts(lh__eng *e, int furthest)
+{
+    e->finite_conflict = furthest ? furthest_conflict : lifted_conflict;
+    e->inside_conflicts = !furthest;
+    e->user = e;
+}
+
 /* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,
  * 161n in 2D..5D (measured), with a little room; higher dimensions start smaller
  * and grow. */
@@ -97,9 +104,7 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     lh__eng e;
     st = lh__eng_init(&e, &t->alloc, d, n, t->xyz, t->dup, opt);
     int furthest = opt && opt->furthest_site;
-    e.finite_conflict = furthest ? furthest_conflict : lifted_conflict;
-    e.inside_conflicts = !furthest;
-    e.user = &e;
+    lh__dt_conflicts(&e, furthest);
     t->furthest = furthest;
     int affdim = -1;
     if (st == LH_OK) st = lh__eng_build(&e, expected_cells(d, n), &affdim);

@@ -30,6 +30,9 @@ struct lh_tri {
     int32_t *cell_off, *cell_vert;
 };
 
+/* delaunay.c: sets e's conflict test: lifted (Delaunay) or reversed (furthest). */
+void lh__dt_conflicts(lh__eng *e, int furthest);
+
 /* output.c: the handle's arrays from a built engine. */
 lh_status lh__dt_extract(lh__eng *e, lh_tri *t);
 

@@ -2,128 +2,13 @@
  * every output, across the input families of the engine issue, in d = 2..6; the
  * output depends only on the site set; bad input gets its status; every allocation
  * failure is survived without a leak. */
+#include "lh_families.h"
 #include "lh_test.h"
 #include "lifthull.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-static uint64_t rng_state;
-static uint64_t rnd(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return z ^ (z >> 31);
-}
-static double unif(void) { return (double)(rnd() >> 11) * 0x1p-53; } /* [0,1) */
-static double gauss(void)
-{
-    double u = unif() + 0x1p-60, v = unif();
-    return sqrt(-2 * log(u)) * cos(6.283185307179586 * v);
-}
-
-enum family {
-    F_CUBE, F_BALL, F_CLUSTERS, F_SPHERE_EXACT, F_GRID, F_GRID_JITTER, F_NEAR_PLANE,
-    F_DUPLICATES, F_OFFSET_1E9, F_SPREAD_1E9, F_MIXED, F_COUNT
-};
-static const char *family_name[F_COUNT] = {
-    "uniform cube", "uniform ball", "gaussian clusters", "exactly cospherical",
-    "integer grid", "grid + 1e-12", "within 1e-10 of a hyperplane", "5% duplicates",
-    "offset 1e9, unit spread", "spread 1e-9", "mixed 1e-8..1e8"};
-
-/* Exactly cospherical: n points drawn at random from the points of Z^d with
- * |x|^2 = r2 (r2 chosen so that there are many). */
-static size_t sphere_points(int d, size_t n, double *x)
-{
-    static const int r2_for_dim[9] = {0, 0, 5525, 425, 50, 18, 12, 10, 8};
-    int r2 = r2_for_dim[d], r = (int)sqrt((double)r2);
-    size_t m = 0, cap = 50000;
-    double *all = malloc(cap * d * sizeof *all);
-    int c[8];
-    for (int j = 0; j < d; j++) c[j] = -r;
-    for (;;) {
-        int s = 0;
-        for (int j = 0; j < d; j++) s += c[j] * c[j];
-        if (s == r2 && m < cap) {
-            for (int j = 0; j < d; j++) all[m * d + j] = c[j];
-            m++;
-        }
-        int j = 0;
-        while (j < d && c[j] == r) c[j++] = -r;
-        if (j == d) break;
-        c[j]++;
-    }
-    size_t take = m < n ? m : n;
-    for (size_t i = 0; i < take; i++) { /* partial Fisher-Yates */
-        size_t k = i + rnd() % (m - i);
-        for (int j = 0; j < d; j++) {
-            double t = all[k * d + j];
-            all[k * d + j] = all[i * d + j];
-            all[i * d + j] = t;
-        }
-    }
-    memcpy(x, all, take * d * sizeof *x);
-    free(all);
-    return take;
-}
-
-static size_t make_family(int fam, int d, size_t n, double *x)
-{
-    int side = (int)ceil(pow((double)n, 1.0 / d));
-    for (size_t i = 0; i < n; i++) {
-        double *p = x + i * d;
-        switch (fam) {
-        case F_BALL: {
-            double r2;
-            do {
-                r2 = 0;
-                for (int j = 0; j < d; j++) {
-                    p[j] = 2 * unif() - 1;
-                    r2 += p[j] * p[j];
-                }
-            } while (r2 > 1);
-            break;
-        }
-        case F_CLUSTERS:
-            for (int j = 0; j < d; j++) p[j] = (double)(i % 5) * 10 + gauss();
-            break;
-        case F_GRID:
-        case F_GRID_JITTER: {
-            size_t k = i;
-            for (int j = 0; j < d; j++) {
-                p[j] = (double)(k % (size_t)side);
-                k /= (size_t)side;
-                if (fam == F_GRID_JITTER) p[j] += 1e-12 * (2 * unif() - 1);
-            }
-            break;
-        }
-        case F_NEAR_PLANE:
-            for (int j = 0; j < d; j++) p[j] = unif();
-            p[d - 1] = 1e-10 * (2 * unif() - 1);
-            break;
-        case F_OFFSET_1E9:
-            for (int j = 0; j < d; j++) p[j] = 1e9 + unif();
-            break;
-        case F_SPREAD_1E9:
-            for (int j = 0; j < d; j++) p[j] = 1e-9 * unif();
-            break;
-        case F_MIXED:
-            for (int j = 0; j < d; j++) p[j] = (2 * unif() - 1) * pow(10.0, -8 + 16 * unif());
-            break;
-        default: /* F_CUBE, F_DUPLICATES */
-            for (int j = 0; j < d; j++) p[j] = unif();
-        }
-    }
-    if (fam == F_DUPLICATES)
-        for (size_t i = 0; i < n / 20; i++) {
-            size_t a = rnd() % n, b = rnd() % n;
-            memcpy(x + a * d, x + b * d, (size_t)d * sizeof *x);
-        }
-    if (fam == F_SPHERE_EXACT) n = sphere_points(d, n, x);
-    return n;
-}
 
 static const size_t size_for_dim[7] = {0, 0, 3000, 1500, 400, 150, 60};
 
@@ -151,9 +36,9 @@ LH_TEST(every_family_passes_the_exact_check)
         double *x = malloc(n * d * sizeof *x);
         LH_ASSERT_TRUE(x != NULL);
         for (int fam = 0; fam < F_COUNT && !LH_FAILED(); fam++) {
-            rng_state = (uint64_t)(d * 100 + fam);
-            size_t m = make_family(fam, d, n, x);
-            check_tri(lh_t_, d, m, x, family_name[fam]);
+            lh_fam_seed((uint64_t)(d * 100 + fam));
+            size_t m = lh_fam_make(fam, d, n, x);
+            check_tri(lh_t_, d, m, x, lh_fam_name[fam]);
         }
         free(x);
     }
@@ -164,8 +49,8 @@ LH_TEST(smallest_inputs)
     for (int d = 2; d <= 8; d++) {
         double x[10 * 8];
         for (int extra = 0; extra <= 1; extra++) {
-            rng_state = (uint64_t)d;
-            for (int i = 0; i < (d + 1 + extra) * d; i++) x[i] = unif();
+            lh_fam_seed((uint64_t)d);
+            for (int i = 0; i < (d + 1 + extra) * d; i++) x[i] = lh_fam_unif();
             lh_tri *t;
             LH_ASSERT_EQ_INT(lh_delaunay(d, (size_t)(d + 1 + extra), x, NULL, &t), LH_OK);
             size_t want_lo = extra ? 2 : 1, want_hi = extra ? (size_t)d + 1 : 1;
@@ -213,11 +98,11 @@ LH_TEST(output_depends_only_on_the_site_set)
             size_t n = d == 2 ? 300 : d == 3 ? 200 : 80;
             double *x = malloc(n * d * sizeof *x), *y = malloc(n * d * sizeof *y);
             int32_t *perm = malloc(n * sizeof *perm), *inv = malloc(n * sizeof *inv);
-            rng_state = (uint64_t)(7 * d + fam);
-            n = make_family(fam, d, n, x);
+            lh_fam_seed((uint64_t)(7 * d + fam));
+            n = lh_fam_make(fam, d, n, x);
             for (size_t i = 0; i < n; i++) perm[i] = (int32_t)i;
             for (size_t i = n - 1; i > 0; i--) {
-                size_t j = rnd() % (i + 1);
+                size_t j = lh_fam_rnd() % (i + 1);
                 int32_t tmp = perm[i];
                 perm[i] = perm[j];
                 perm[j] = tmp;
@@ -243,7 +128,7 @@ LH_TEST(output_depends_only_on_the_site_set)
             if (fam != F_DUPLICATES) {
                 char *sa = signature(a, NULL), *sc = signature(c, inv);
                 LH_EXPECT_TRUE(strcmp(sa, sc) == 0);
-                if (LH_FAILED()) LH_NOTE("d=%d family %s", d, family_name[fam]);
+                if (LH_FAILED()) LH_NOTE("d=%d family %s", d, lh_fam_name[fam]);
                 free(sa);
                 free(sc);
             }
@@ -415,16 +300,16 @@ static lh_status hull_run(lh_test_state *lh_t_, const lh_allocator *a, const dou
 LH_TEST(every_allocation_failure_is_survived)
 {
     double x[ALLOC_N * 3];
-    rng_state = 5;
-    for (int i = 0; i < ALLOC_N * 3; i++) x[i] = unif();
+    lh_fam_seed(5);
+    for (int i = 0; i < ALLOC_N * 3; i++) x[i] = lh_fam_unif();
     LH_EXPECT_GT_INT(survive_every_failure(lh_t_, delaunay_run, x), 10); /* it allocates */
 }
 
 LH_TEST(every_allocation_failure_is_survived_by_the_hull)
 {
     double x[ALLOC_N * 3]; /* 300 sites in 4D */
-    rng_state = 9;
-    for (int i = 0; i < ALLOC_N * 3; i++) x[i] = unif();
+    lh_fam_seed(9);
+    for (int i = 0; i < ALLOC_N * 3; i++) x[i] = lh_fam_unif();
     LH_EXPECT_GT_INT(survive_every_failure(lh_t_, hull_run, x), 10);
 }
 
@@ -435,8 +320,8 @@ LH_TEST(furthest_site_triangulation)
             if (fam != F_CUBE && fam != F_GRID && fam != F_SPHERE_EXACT && fam != F_DUPLICATES) continue;
             size_t n = d == 2 ? 400 : d == 3 ? 200 : d == 4 ? 90 : 100; /* > side^(d-1) */
             double *x = malloc(n * d * sizeof *x);
-            rng_state = (uint64_t)(31 * d + fam);
-            n = make_family(fam, d, n, x);
+            lh_fam_seed((uint64_t)(31 * d + fam));
+            n = lh_fam_make(fam, d, n, x);
             lh_options o;
             lh_options_default(&o);
             o.furthest_site = 1;
@@ -444,13 +329,13 @@ LH_TEST(furthest_site_triangulation)
             lh_status st = lh_delaunay(d, n, x, &o, &t);
             LH_EXPECT_EQ_INT(st, LH_OK);
             if (st != LH_OK) {
-                LH_NOTE("d=%d %s n=%zu: %s", d, family_name[fam], n, lh_status_message(st));
+                LH_NOTE("d=%d %s n=%zu: %s", d, lh_fam_name[fam], n, lh_status_message(st));
                 free(x);
                 return;
             }
             char msg[256] = "";
             LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
-            if (LH_FAILED()) LH_NOTE("d=%d %s: %s", d, family_name[fam], msg);
+            if (LH_FAILED()) LH_NOTE("d=%d %s: %s", d, lh_fam_name[fam], msg);
             if (fam == F_CUBE) { /* general position: the vertices are the hull's */
                 lh_hull *h;
                 LH_ASSERT_EQ_INT(lh_convex_hull(d, n, x, NULL, &h), LH_OK);

@@ -217,6 +217,20 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
  * none), computed exactly; LH_ERR_* as lh_delaunay for bad arguments. */
 lh_status lh_affine_dim(int d, size_t n, const double *xyz, int *dim);
 
+/*
+ * lh_tri_insert: adds m sites (m*d doubles, copied) to t; they get the indices
+ * n..n+m-1 after t's n sites. The result is exactly lh_delaunay's for all n+m sites
+ * (same options), byte for byte: a new site equal to an earlier one is merged into
+ * it; furthest-site triangulations stay furthest-site. Each call rebuilds the
+ * engine's cells from t's arrays in O(n) memory passes, then inserts, so insert in
+ * batches. Every array pointer obtained from t before the call is invalid after a
+ * successful one. Returns LH_OK; LH_ERR_INVALID_ARGUMENT (t NULL, or xyz NULL with
+ * m > 0); LH_ERR_TOO_LARGE; LH_ERR_NONFINITE (lh_coords_validate names the
+ * coordinate, counted from the first new site); LH_ERR_NOMEM. On failure t is
+ * unchanged.
+ */
+lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz);
+
 int lh_tri_dim(const lh_tri *t);             /* d                                     */
 size_t lh_tri_site_count(const lh_tri *t);   /* n, duplicates included                */
 size_t lh_tri_count(const lh_tri *t);        /* finite simplices                      */
