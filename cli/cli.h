@@ -13,10 +13,10 @@ int lh_cli_hull(int argc, char **argv);
 #include "lifthull.h"
 #include "points.h"
 double lh_cli_seconds(void);
-/* Options [-s] [-u] [FILE] (-u only where furthest is not NULL); prints the
+/* Options [-s] [-u] [-a] [FILE] (-u, -a only where furthest, affine are not NULL); prints the
  * problem and returns -1 on a bad one. */
 int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file,
-                        int *furthest);
+                        int *furthest, int *affine);
 /* Reads FILE (or standard input for NULL or "-"); 0 after printing the error. */
 int lh_cli_load(const char *file, lh_cli_points *pts, const char **name);
 void lh_cli_report_failure(const char *name, const lh_cli_points *pts, lh_status st);

@@ -14,19 +14,22 @@ double lh_cli_seconds(void)
 }
 
 int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file,
-                        int *furthest)
+                        int *furthest, int *affine)
 {
     *summary = 0;
     *file = NULL;
     if (furthest) *furthest = 0;
+    if (affine) *affine = 0;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "-s")) {
             *summary = 1;
         } else if (furthest && !strcmp(argv[i], "-u")) {
             *furthest = 1;
+        } else if (affine && !strcmp(argv[i], "-a")) {
+            *affine = 1;
         } else if (argv[i][0] == '-' && argv[i][1]) {
-            fprintf(stderr, "lifthull %s: unknown option '%s' (usage: lifthull %s [-s]%s [FILE])\n", cmd,
-                    argv[i], cmd, furthest ? " [-u]" : "");
+            fprintf(stderr, "lifthull %s: unknown option '%s' (usage: lifthull %s [-s]%s%s [FILE])\n", cmd,
+                    argv[i], cmd, furthest ? " [-u]" : "", affine ? " [-a]" : "");
             return -1;
         } else if (*file) {
             fprintf(stderr, "lifthull %s: more than one input file\n", cmd);
@@ -61,7 +64,8 @@ void lh_cli_report_failure(const char *name, const lh_cli_points *pts, lh_status
         int k = -1;
         lh_affine_dim(pts->d, pts->n, pts->xyz, &k);
         fprintf(stderr, "%s: the %zu sites span an affine subspace of dimension %d, not %d: "
-                "nothing %d-dimensional to compute\n", name, pts->n, k, pts->d, pts->d);
+                "nothing %d-dimensional to compute%s\n", name, pts->n, k, pts->d, pts->d,
+                k >= 2 ? " (lifthull delaunay -a triangulates within that subspace)" : "");
     } else {
         fprintf(stderr, "%s: %s\n", name, lh_status_message(st));
     }

@@ -13,7 +13,7 @@ int lh_cli_hull(int argc, char **argv)
 {
     int summary = 0;
     const char *file = NULL;
-    if (lh_cli_parse_common("hull", argc, argv, &summary, &file, NULL) != 0) return LH_EXIT_USAGE;
+    if (lh_cli_parse_common("hull", argc, argv, &summary, &file, NULL, NULL) != 0) return LH_EXIT_USAGE;
     lh_cli_points pts;
     const char *name;
     if (!lh_cli_load(file, &pts, &name)) return LH_EXIT_INPUT;

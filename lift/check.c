@@ -18,7 +18,8 @@
 
 typedef struct chk {
     lh_allocator alloc;
-    int d, nv;
+    int d, nv;       /* coordinates per site; vertices per simplex (f.k + 1) */
+    lh__frame f;
     size_t n, count;
     const double *xyz;
     int32_t *simp;   /* oriented copy */
@@ -47,7 +48,7 @@ static int orient_of(chk *c, const int32_t *v, int replace, int32_t by)
 {
     const double *p[LH_DELAUNAY_MAX_DIM + 1];
     for (int k = 0; k < c->nv; k++) p[k] = site(c, k == replace ? by : v[k]);
-    return lh_orient(c->pred, c->d, p);
+    return lh__frame_orient(c->pred, &c->f, p);
 }
 
 /* Indices valid and distinct, volume nonzero; stored positively oriented. */
@@ -117,7 +118,7 @@ static int32_t *sorted_records(chk *c, const int32_t *rec, size_t m, int w, int 
 /* Neighbours through shared facets; opposite sides; local Delaunay. */
 static lh_status check_facets(chk *c, size_t *boundary)
 {
-    const int nv = c->nv, d = c->d, w = d + 2;
+    const int nv = c->nv, d = c->f.k, w = d + 2; /* facet: d vertices, simplex, index */
     size_t m = c->count * nv;
     c->rec = lh__alloc(&c->alloc, (m * w + 1) * sizeof *c->rec);
     c->nbr = lh__alloc(&c->alloc, (m + 1) * sizeof *c->nbr);
@@ -158,7 +159,7 @@ static lh_status check_facets(chk *c, size_t *boundary)
                 const double *p[LH_DELAUNAY_MAX_DIM + 2];
                 for (int k = 0; k < nv; k++) p[k] = site(c, va[k]);
                 p[nv] = site(c, vb[kb]);
-                int in = lh_insphere(c->pred, d, p);
+                int in = lh__frame_insphere(c->pred, &c->f, p);
                 if (!c->furthest && in < 0)
                     st = fail(c, "facet between simplices %d and %d is not locally Delaunay: site %d is inside the circumsphere of %d",
                               (int)sa, (int)sb, (int)vb[kb], (int)sa);
@@ -176,7 +177,7 @@ static lh_status check_facets(chk *c, size_t *boundary)
 /* Boundary facets: closed and locally convex. */
 static lh_status check_boundary(chk *c, size_t boundary)
 {
-    const int nv = c->nv, d = c->d, w = d + 2; /* ridge: d-1 vertices, facet id, other */
+    const int nv = c->nv, d = c->f.k, w = d + 2; /* ridge: d-1 vertices, facet id, other */
     size_t m = boundary * d;
     int32_t *rec = lh__alloc(&c->alloc, (m * w + 1) * sizeof *rec);
     int32_t *fs = lh__alloc(&c->alloc, (boundary * 2 + 1) * sizeof *fs);
@@ -342,6 +343,8 @@ lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
     lh__allocator_init(&c.alloc, NULL);
     c.d = d;
     c.nv = d + 1;
+    c.f.d = c.f.k = d;
+    for (int j = 0; j < d; j++) c.f.J[j] = j;
     c.n = n;
     c.count = count;
     c.xyz = xyz;
@@ -360,7 +363,8 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
     memset(&c, 0, sizeof c);
     lh__allocator_init(&c.alloc, NULL);
     c.d = t->d;
-    c.nv = t->d + 1;
+    c.f = t->frame;
+    c.nv = t->frame.k + 1;
     c.n = t->n;
     c.count = t->count;
     c.xyz = t->xyz;
@@ -369,6 +373,13 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
     c.furthest = t->furthest;
     if (msg && msg_size) msg[0] = 0;
     lh_status st = run_check(&c, t->simp);
+    for (size_t i = 0; st == LH_OK && c.f.k < c.d && i < t->n; i++) { /* all in one flat */
+        const double *p[LH_DELAUNAY_MAX_DIM + 1];
+        for (int j = 0; j < c.nv; j++) p[j] = site(&c, t->simp[j]);
+        p[c.nv] = site(&c, (int32_t)i);
+        if (lh__affine_independent(c.pred, c.d, p, c.nv))
+            st = fail(&c, "site %zu is not in the affine hull of simplex 0", i);
+    }
     /* The stored arrays: simplices positively oriented as given, neighbours as
      * computed, one hull facet per boundary facet, incident simplices correct. */
     for (size_t s = 0; st == LH_OK && s < t->count; s++) {

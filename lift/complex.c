@@ -22,7 +22,7 @@ static int32_t find(int32_t *parent, int32_t x)
 /* The vertex of simplex n that simplex s lacks (they share a facet). */
 static int32_t opposite(const lh_tri *t, size_t s, int32_t n)
 {
-    const int nv = t->d + 1;
+    const int nv = t->frame.k + 1;
     for (int j = 0; j < nv; j++) {
         int32_t x = t->simp[(size_t)n * nv + j], shared = 0;
         for (int i = 0; i < nv; i++) shared |= t->simp[s * nv + i] == x;
@@ -35,7 +35,7 @@ static int32_t opposite(const lh_tri *t, size_t s, int32_t n)
  * number of cells, or 0 when memory runs out. */
 static size_t group_simplices(lh_tri *t, int32_t *cell)
 {
-    const int nv = t->d + 1;
+    const int nv = t->frame.k + 1;
     int32_t *parent = lh__alloc(&t->alloc, (t->count + 1) * sizeof *parent);
     if (!parent) return 0;
     for (size_t s = 0; s < t->count; s++) parent[s] = (int32_t)s;
@@ -46,7 +46,7 @@ static size_t group_simplices(lh_tri *t, int32_t *cell)
             if (n < (int32_t)s) continue; /* each facet once; -1 across the hull */
             for (int j = 0; j < nv; j++) p[j] = t->xyz + (size_t)t->simp[s * nv + j] * t->d;
             p[nv] = t->xyz + (size_t)opposite(t, s, n) * t->d;
-            if (lh_insphere(t->pred, t->d, p) == 0) parent[find(parent, n)] = find(parent, (int32_t)s);
+            if (lh__frame_insphere(t->pred, &t->frame, p) == 0) parent[find(parent, n)] = find(parent, (int32_t)s);
         }
     size_t nc = 0;
     for (size_t s = 0; s < t->count; s++) cell[s] = -1;
@@ -63,7 +63,7 @@ static size_t group_simplices(lh_tri *t, int32_t *cell)
 static lh_status cell_vertices(lh_tri *t, const int32_t *cell, size_t nc, int32_t *off,
                                int32_t **out)
 {
-    const int nv = t->d + 1;
+    const int nv = t->frame.k + 1;
     int32_t *by = lh__alloc(&t->alloc, (t->count + 1) * sizeof *by);
     int32_t *mark = lh__alloc(&t->alloc, (t->n + 1) * sizeof *mark);
     int32_t *vert = lh__alloc(&t->alloc, (t->count * nv + 1) * sizeof *vert);

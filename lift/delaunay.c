@@ -47,7 +47,7 @@ void lh__dt_conflicts(lh__eng *e, int furthest)
 /* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,
  * 161n in 2D..5D (measured), with a little room; higher dimensions start smaller
  * and grow. */
-static int32_t expected_cells(int d, size_t n)
+int32_t lh__dt_expected_cells(int d, size_t n)
 {
     static const double per_site[LH_DELAUNAY_MAX_DIM + 1] = {0, 0, 2.1, 7.0, 33, 170, 400, 400, 400};
     double c = per_site[d] * (double)n + 256;
@@ -80,6 +80,8 @@ static lh_status new_handle(int d, size_t n, const double *xyz, const lh_options
     memset(t, 0, sizeof *t);
     t->alloc = a;
     t->d = d;
+    t->frame.d = t->frame.k = d;
+    for (int j = 0; j < d; j++) t->frame.J[j] = j;
     t->n = n;
     t->xyz = lh__alloc(&a, (n * (size_t)d + 1) * sizeof *t->xyz);
     t->dup = lh__alloc(&a, (n + 1) * sizeof *t->dup);
@@ -106,8 +108,9 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     int furthest = opt && opt->furthest_site;
     lh__dt_conflicts(&e, furthest);
     t->furthest = furthest;
+    t->affine_hull = opt && opt->affine_hull;
     int affdim = -1;
-    if (st == LH_OK) st = lh__eng_build(&e, expected_cells(d, n), &affdim);
+    if (st == LH_OK) st = lh__eng_build(&e, lh__dt_expected_cells(d, n), &affdim);
     if (st == LH_OK) st = lh__dt_extract(&e, t);
     if (st == LH_OK) { /* the handle's queries reuse the engine's predicate context */
         t->pred = e.pred;
@@ -115,6 +118,7 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     }
     t->ndup = e.ndup;
     lh__eng_release(&e);
+    if (st == LH_ERR_DEGENERATE && t->affine_hull && affdim >= 2) st = lh__dt_flat(t, opt, affdim);
     if (st != LH_OK) {
         lh_tri_free(t);
         return st;

@@ -10,28 +10,65 @@
 #define LH_DT_H
 
 #include "engine.h"
+#include "lh_exact.h"
+
+/* Where the simplices live: R^d (k == d), or a k-flat of R^d (the affine hull of
+ * lower-dimensional sites, lh_options.affine_hull), on which the projection to the
+ * coordinates J is one to one; orientation is then orient_k of the projections and
+ * the insphere test lh__insphere_flat (lh_exact.h). */
+typedef struct lh__frame {
+    int d, k;
+    int J[LH_DELAUNAY_MAX_DIM];
+} lh__frame;
+
+/* orient_k of k+1 sites (coordinates in R^d) in the frame. */
+static inline int lh__frame_orient(lh_pred *pred, const lh__frame *f, const double *const *p)
+{
+    if (f->k == f->d) return lh_orient(pred, f->d, p);
+    double proj[LH_DELAUNAY_MAX_DIM + 1][LH_DELAUNAY_MAX_DIM];
+    const double *pp[LH_DELAUNAY_MAX_DIM + 1];
+    for (int i = 0; i <= f->k; i++) {
+        for (int j = 0; j < f->k; j++) proj[i][j] = p[i][f->J[j]];
+        pp[i] = proj[i];
+    }
+    return lh_orient(pred, f->k, pp);
+}
+
+/* The (unperturbed) insphere sign of k+2 sites in the frame. */
+static inline int lh__frame_insphere(lh_pred *pred, const lh__frame *f, const double *const *p)
+{
+    return f->k == f->d ? lh_insphere(pred, f->d, p) : lh__insphere_flat(pred, f->d, f->k, f->J, p);
+}
 
 struct lh_tri {
     lh_allocator alloc;
     int d;
+    lh__frame frame;  /* k = d unless triangulated in the sites' affine hull */
     size_t n;
     double *xyz;      /* n*d, a copy of the caller's sites */
     int32_t *dup;     /* n: the site each one was merged into (itself for a vertex) */
     size_t ndup;
     size_t count;     /* finite simplices */
-    int32_t *simp;    /* (d+1)*count, canonical */
-    int32_t *nbr;     /* (d+1)*count, -1 across the hull */
+    int32_t *simp;    /* (k+1)*count, canonical */
+    int32_t *nbr;     /* (k+1)*count, -1 across the hull */
     size_t hull_count;
-    int32_t *hull;    /* d*hull_count, outward */
+    int32_t *hull;    /* k*hull_count, outward */
     int32_t *vsimp;   /* n */
     lh_pred *pred;    /* for queries (lh_tri_locate) */
     int furthest;     /* the furthest-site triangulation (lh_options) */
+    int affine_hull;  /* lh_options.affine_hull, for lh_tri_insert */
     size_t ncells;    /* the Delaunay complex, built on demand (complex.c) */
     int32_t *cell_off, *cell_vert;
 };
 
+/* delaunay.c: a capacity hint, the cells expected for n uniform sites in R^d. */
+int32_t lh__dt_expected_cells(int d, size_t n);
 /* delaunay.c: sets e's conflict test: lifted (Delaunay) or reversed (furthest). */
 void lh__dt_conflicts(lh__eng *e, int furthest);
+
+/* flat.c: t (sites copied, dup allocated) triangulated in the k-flat spanned by
+ * its sites, 2 <= k < d. */
+lh_status lh__dt_flat(lh_tri *t, const lh_options *opt, int k);
 
 /* output.c: the handle's arrays from a built engine. */
 lh_status lh__dt_extract(lh__eng *e, lh_tri *t);

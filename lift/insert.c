@@ -176,9 +176,11 @@ static lh_status rebuild_cells(lh__eng *e, const lh_tri *t)
     return LH_OK;
 }
 
-/* Moves the arrays of `from` (a scratch handle) into t, freeing t's old ones. */
+/* Moves the arrays and frame of `from` (a scratch handle) into t, freeing t's old
+ * ones. */
 static void take_arrays(lh_tri *t, lh_tri *from)
 {
+    t->frame = from->frame;
     lh__free(&t->alloc, t->xyz);
     lh__free(&t->alloc, t->dup);
     lh__free(&t->alloc, t->simp);
@@ -218,6 +220,7 @@ static lh_status grow_sites(lh_tri *t, size_t m, const double *xyz, lh_tri *nt)
     memset(nt, 0, sizeof *nt);
     nt->alloc = t->alloc;
     nt->d = t->d;
+    nt->frame = t->frame;
     nt->n = n;
     nt->xyz = lh__alloc(&t->alloc, (n * d + 1) * sizeof *nt->xyz);
     nt->dup = lh__alloc(&t->alloc, (n + 1) * sizeof *nt->dup);
@@ -228,6 +231,30 @@ static lh_status grow_sites(lh_tri *t, size_t m, const double *xyz, lh_tri *nt)
     long merged = find_duplicates(t, nt->xyz, nt->dup, t->n, n);
     if (merged < 0) return LH_ERR_NOMEM;
     nt->ndup = t->ndup + (size_t)merged;
+    return LH_OK;
+}
+
+/* lh_delaunay of all the sites, moved into t. */
+static lh_status rebuild(lh_tri *t, size_t m, const double *xyz)
+{
+    const size_t d = (size_t)t->d, n = t->n + m;
+    double *all = lh__alloc(&t->alloc, (n * d + 1) * sizeof *all);
+    if (!all) return LH_ERR_NOMEM;
+    memcpy(all, t->xyz, t->n * d * sizeof *all);
+    memcpy(all + t->n * d, xyz, m * d * sizeof *all);
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = &t->alloc;
+    o.furthest_site = t->furthest;
+    o.affine_hull = t->affine_hull;
+    lh_tri *nt;
+    lh_status st = lh_delaunay(t->d, n, all, &o, &nt);
+    lh__free(&t->alloc, all);
+    if (st != LH_OK) return st;
+    take_arrays(t, nt);
+    nt->xyz = NULL;
+    nt->dup = nt->simp = nt->nbr = nt->hull = nt->vsimp = NULL;
+    lh_tri_free(nt);
     return LH_OK;
 }
 
@@ -245,6 +272,10 @@ lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz)
     lh__eng e;
     int engine = 0;
     st = grow_sites(t, m, xyz, &nt);
+    if (st == LH_OK && t->frame.k < t->d) { /* new sites may leave the flat: rebuild */
+        free_arrays(&nt);
+        return rebuild(t, m, xyz);
+    }
     if (st == LH_OK) st = new_site_order(t, nt.xyz, nt.dup, t->n, m, &list, &count);
     if (st == LH_OK) {
         st = lh__eng_init(&e, &t->alloc, t->d, nt.n, nt.xyz, nt.dup, NULL);

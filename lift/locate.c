@@ -106,7 +106,7 @@ static double nearest_in_simplex(const double *const *v, int m, const double *q,
 /* The simplex containing q, -1 when q is outside the hull, -2 past the step bound. */
 static int32_t walk(lh_tri *t, const double *q, int32_t s)
 {
-    const int nv = t->d + 1;
+    const int nv = t->frame.k + 1;
     const double *p[MAXV];
     size_t limit = 64 + 4 * t->count;
     int32_t prev = -1;
@@ -117,7 +117,7 @@ static int32_t walk(lh_tri *t, const double *q, int32_t s)
             int32_t n = t->nbr[(size_t)s * nv + k];
             if (n == prev && n >= 0) continue;
             for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)v[j] * t->d;
-            if (lh_orient(t->pred, t->d, p) >= 0) continue;
+            if (lh__frame_orient(t->pred, &t->frame, p) >= 0) continue;
             if (n < 0) return -1;
             prev = s;
             s = n;
@@ -130,20 +130,20 @@ static int32_t walk(lh_tri *t, const double *q, int32_t s)
 
 static void locate_outside(lh_tri *t, const double *q, lh_location *out)
 {
-    const int d = t->d;
+    const int d = t->d, k = t->frame.k;
     const double *p[MAXV];
     double best = INFINITY;
     for (size_t f = 0; f < t->hull_count; f++) {
-        const int32_t *v = t->hull + f * d;
-        for (int j = 0; j < d; j++) p[j] = t->xyz + (size_t)v[j] * d;
-        p[d] = q;
-        if (lh_orient(t->pred, d, p) <= 0) continue; /* not strictly visible */
+        const int32_t *v = t->hull + f * k;
+        for (int j = 0; j < k; j++) p[j] = t->xyz + (size_t)v[j] * d;
+        p[k] = q;
+        if (lh__frame_orient(t->pred, &t->frame, p) <= 0) continue; /* not strictly visible */
         double bary[MAXV];
-        double dist2 = nearest_in_simplex(p, d, q, d, bary);
+        double dist2 = nearest_in_simplex(p, k, q, d, bary);
         if (dist2 < best) {
             best = dist2;
             out->hull_facet = (int32_t)f;
-            memcpy(out->bary, bary, (size_t)d * sizeof *bary);
+            memcpy(out->bary, bary, (size_t)k * sizeof *bary);
         }
     }
     out->distance = sqrt(best);
@@ -153,9 +153,15 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *o
 {
     if (!t || !q || !out) return LH_ERR_INVALID_ARGUMENT;
     if (lh_coords_validate(t->d, 1, q, NULL) != LH_OK) return LH_ERR_NONFINITE;
+    const int nv = t->frame.k + 1;
+    if (t->frame.k < t->d) { /* q must lie in the sites' affine hull */
+        const double *p[MAXV];
+        for (int j = 0; j < nv; j++) p[j] = t->xyz + (size_t)t->simp[j] * t->d;
+        p[nv] = q;
+        if (lh__affine_independent(t->pred, t->d, p, nv)) return LH_ERR_INVALID_ARGUMENT;
+    }
     memset(out, 0, sizeof *out);
     out->simplex = out->hull_facet = -1;
-    const int nv = t->d + 1;
     int32_t start = hint >= 0 && (size_t)hint < t->count ? hint : 0;
     int32_t s = walk(t, q, start);
     for (size_t c = 0; s == -2 && c < t->count; c++) { /* the walk's bound: scan */
@@ -163,7 +169,7 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *o
         int inside = 1;
         for (int k = 0; k < nv && inside; k++) {
             for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)t->simp[c * nv + j] * t->d;
-            inside = lh_orient(t->pred, t->d, p) >= 0;
+            inside = lh__frame_orient(t->pred, &t->frame, p) >= 0;
         }
         if (inside) s = (int32_t)c;
     }

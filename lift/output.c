@@ -101,7 +101,7 @@ lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
     if (st == LH_OK) { /* from the output itself: right even for sites that stopped
                         * being vertices (furthest-site) */
         for (size_t i = 0; i < t->n; i++) t->vsimp[i] = -1;
-        const int nv = t->d + 1;
+        const int nv = b->nv;
         for (size_t c = t->count; c-- > 0;)
             for (int k = 0; k < nv; k++) t->vsimp[t->simp[c * nv + k]] = (int32_t)c;
     }
@@ -110,6 +110,7 @@ lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
 }
 
 int lh_tri_dim(const lh_tri *t) { return t ? t->d : 0; }
+int lh_tri_simplex_dim(const lh_tri *t) { return t ? t->frame.k : 0; }
 size_t lh_tri_site_count(const lh_tri *t) { return t ? t->n : 0; }
 size_t lh_tri_count(const lh_tri *t) { return t ? t->count : 0; }
 const int32_t *lh_tri_simplices(const lh_tri *t) { return t ? t->simp : NULL; }

@@ -190,6 +190,45 @@ static void check_antisymmetry(lh_test_state *lh_t_, int lifted, int maxdim)
 LH_TEST(orient_sos_follows_argument_permutations) { check_antisymmetry(lh_t_, 0, LH_ORIENT_MAX_DIM); }
 LH_TEST(insphere_sos_follows_argument_permutations) { check_antisymmetry(lh_t_, 1, LH_INSPHERE_MAX_DIM); }
 
+/* The in-flat insphere (lh_exact.h) against lh_insphere_sos, exactly degenerate
+ * cases included: with J all the coordinates (k = d) the matrix is the same; for
+ * points (u, v) of R^2 placed in R^3 as (3u, 4u, 5v), a similarity, with J = {0, 2}
+ * its columns are H's times 1, 3, 5, 25 and the rows keep their order. */
+LH_TEST(in_flat_insphere_matches_the_full_one)
+{
+    lh_pred *ctx;
+    LH_ASSERT_EQ_INT(lh_pred_create(NULL, &ctx), LH_OK);
+    int same = 0, embedded = 0;
+    for (int t = 0; t < 4000 && !LH_FAILED(); t++) {
+        int dim = 2 + t % 3, n = dim + 2;
+        double x[LH__MAXN][8], e[LH__MAXN][8];
+        const double *p[LH__MAXN], *q[LH__MAXN];
+        random_points(x, n, dim, t % 2 ? 2 : 3);
+        for (int i = 0; i < n; i++) p[i] = x[i];
+        int J[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+        int want = lh_insphere_sos(ctx, dim, p);
+        LH_EXPECT_EQ_INT(lh__insphere_flat_sos(ctx, dim, dim, J, p), want);
+        same++;
+        if (dim != 2) continue;
+        for (int i = 0; i < n; i++) {
+            e[i][0] = 3 * x[i][0];
+            e[i][1] = 4 * x[i][0];
+            e[i][2] = 5 * x[i][1];
+            q[i] = e[i];
+        }
+        int J2[2] = {0, 2};
+        LH_EXPECT_EQ_INT(lh__insphere_flat_sos(ctx, 3, 2, J2, q), want);
+        LH_EXPECT_EQ_INT(lh__insphere_flat(ctx, 3, 2, J2, q), lh_insphere(ctx, 2, p));
+        embedded++;
+        if (LH_FAILED()) LH_NOTE("case %d", t);
+    }
+    lh_pred_counters c;
+    lh_pred_counters_get(ctx, &c);
+    LH_EXPECT_GT_U64(c.sos_general, 0);
+    LH_EXPECT_GT_INT(embedded, 1000);
+    lh_pred_free(ctx);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
@@ -197,6 +236,7 @@ int main(int argc, char **argv)
         LH_CASE(orient_3_matches_definition),
         LH_CASE(insphere_2_matches_definition), LH_CASE(insphere_3_matches_definition),
         LH_CASE(orient_sos_follows_argument_permutations),
-        LH_CASE(insphere_sos_follows_argument_permutations)};
+        LH_CASE(insphere_sos_follows_argument_permutations),
+        LH_CASE(in_flat_insphere_matches_the_full_one)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -181,6 +181,10 @@ typedef struct lh_options {
                                   its vertices are the convex hull's and every
                                   simplex's circumsphere encloses every site
                                   (default 0)                                        */
+    int affine_hull;           /* lh_delaunay: 1 to triangulate sites that span only
+                                  a k-flat, 2 <= k < d, within it (k-simplices; see
+                                  lh_tri_simplex_dim) instead of failing with
+                                  LH_ERR_DEGENERATE (default 0)                      */
 } lh_options;
 
 void lh_options_default(lh_options *opt);
@@ -206,7 +210,8 @@ void lh_options_default(lh_options *opt);
  * xyz NULL, or an allocator without hooks); LH_ERR_TOO_LARGE (n*d overflows, or more
  * than INT32_MAX - 1 sites); LH_ERR_NONFINITE (a NaN or infinity: lh_coords_validate
  * names the coordinate); LH_ERR_DEGENERATE (fewer than d+1 distinct sites, or all
- * sites in an affine subspace of dimension < d — lh_affine_dim tells which);
+ * sites in an affine subspace of dimension < d — lh_affine_dim tells which; with
+ * opt->affine_hull only when that dimension is below 2: collinear sites or one);
  * LH_ERR_NOMEM. On failure *out is NULL and nothing is leaked.
  */
 typedef struct lh_tri lh_tri;
@@ -231,16 +236,21 @@ lh_status lh_affine_dim(int d, size_t n, const double *xyz, int *dim);
  */
 lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz);
 
-int lh_tri_dim(const lh_tri *t);             /* d                                     */
+int lh_tri_dim(const lh_tri *t);             /* d, coordinates per site               */
+/* k, the dimension of the simplices: d, or with lh_options.affine_hull the affine
+ * dimension of the sites. Below, "k-simplex" arrays have k+1 entries per simplex.
+ * When k < d, orientation means orient_k of the sites projected to k coordinates
+ * that are one to one on the sites' affine hull (the same for the whole handle). */
+int lh_tri_simplex_dim(const lh_tri *t);
 size_t lh_tri_site_count(const lh_tri *t);   /* n, duplicates included                */
 size_t lh_tri_count(const lh_tri *t);        /* finite simplices                      */
-/* (d+1) * lh_tri_count indices into the sites, canonical order (see lh_delaunay). */
+/* (k+1) * lh_tri_count indices into the sites, canonical order (see lh_delaunay). */
 const int32_t *lh_tri_simplices(const lh_tri *t);
-/* (d+1) * lh_tri_count: neighbour k of simplex s is across the facet opposite its
- * k-th vertex; -1 across the convex hull. */
+/* (k+1) * lh_tri_count: neighbour j of simplex s is across the facet opposite its
+ * j-th vertex; -1 across the convex hull. */
 const int32_t *lh_tri_neighbors(const lh_tri *t);
-/* Convex hull facets: lh_tri_hull_count facets of d site indices each, ordered so that
- * orient_d(facet, p) > 0 for points p strictly outside the hull. */
+/* Convex hull facets: lh_tri_hull_count facets of k site indices each, ordered so that
+ * orient_k(facet, p) > 0 for points p strictly outside the hull. */
 size_t lh_tri_hull_count(const lh_tri *t);
 const int32_t *lh_tri_hull_facets(const lh_tri *t);
 /* Per site: one simplex incident to it (-1 for a merged duplicate, or, furthest-site,
@@ -286,17 +296,20 @@ typedef struct lh_location {
                            lh_tri_hull_facets), -1 inside                            */
     double distance;    /* outside: Euclidean distance from q to the hull, else 0    */
     double bary[LH_DELAUNAY_MAX_DIM + 1];
-                        /* inside: q's barycentric coordinates in the simplex (d+1,
-                           in lh_tri_simplices order); outside: those of the nearest
-                           point of the hull in the facet (d, in facet order)        */
+                        /* inside: q's barycentric coordinates in the simplex (k+1,
+                           in lh_tri_simplices order; k = lh_tri_simplex_dim);
+                           outside: those of the nearest point of the hull in the
+                           facet (k, in facet order)                                */
 } lh_location;
 
 /*
  * lh_tri_locate: locates q (d doubles) by a visibility walk from simplex `hint` (any
  * simplex index, or -1). Inside or outside is decided exactly (orient_d), so a point
  * on a shared facet is reported in one of the simplices that contain it; barycentric
- * coordinates and distances are computed in floating point. Returns LH_OK,
- * LH_ERR_INVALID_ARGUMENT (t, q or out NULL) or LH_ERR_NONFINITE. Not const: it
+ * coordinates and distances are computed in floating point. When k < d (see
+ * lh_tri_simplex_dim) q must lie exactly in the sites' affine hull. Returns LH_OK,
+ * LH_ERR_INVALID_ARGUMENT (t, q or out NULL, or q off that affine hull) or
+ * LH_ERR_NONFINITE. Not const: it
  * uses the handle's predicate context (one thread per handle).
  */
 lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *out);

@@ -15,4 +15,18 @@ int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
 int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts);
 int lh__orient_fast(lh_pred *ctx, int k, const double *const *pts);
 
+/*
+ * The insphere test within a k-flat of R^d (2 <= k < d): pts are k+2 points of R^d
+ * in one k-dimensional affine subspace F on which the projection to the k
+ * coordinates J (increasing) is one to one. Sign of det [1, p_J, |p|^2] (the
+ * lifted column over all d coordinates): with orient_k of the projected first k+1
+ * points positive, negative means the last point is inside their circumsphere
+ * (within F, in the metric of R^d). The projection is an affine bijection of F, so
+ * orientation and this sign change together and the test is the Euclidean one.
+ * Exact (no filter); the _sos variant perturbs H's entries as lh_insphere_sos
+ * does, with the rows ordered by the points' full coordinates.
+ */
+int lh__insphere_flat(lh_pred *ctx, int d, int k, const int *J, const double *const *pts);
+int lh__insphere_flat_sos(lh_pred *ctx, int d, int k, const int *J, const double *const *pts);
+
 #endif

@@ -67,19 +67,29 @@ static void significance_order(const double *const *pts, int dim, int n, int *or
 
 static int cofactor_parity(int r, int c) { return (r + c) & 1 ? -1 : 1; }
 
-static int fast_path(lh_pred *ctx, const double *const *pts, int dim, int lifted,
-                     const int *order)
+/* The cofactor signs along the first perturbable column, most significant row
+ * first (see above). With a column map (in-flat insphere) the cofactors are exact
+ * minors of the mapped columns; otherwise filtered orient signs. */
+static int fast_path(lh_pred *ctx, const double *const *pts, int pdim, int dim, int lifted,
+                     const int *cmap, const int *order)
 {
     int n = dim + 1 + lifted;
     const double *others[LH__MAXN];
     for (int t = n - 1; t >= 0; t--) {
         int r = order[t], m = 0, s;
-        for (int i = 0; i < n; i++)
-            if (i != r) others[m++] = lifted ? pts[i] : pts[i] + 1; /* x_0 dropped */
-        if (lifted)
-            s = lh__orient_sign(ctx, dim, others);
-        else
-            s = dim == 1 ? 1 : lh__orient_sign(ctx, dim - 1, others);
+        if (cmap) { /* lifted: the other rows, every column but the lifted one */
+            int rows[LH__MAXN];
+            for (int i = 0; i < n; i++)
+                if (i != r) rows[m++] = i;
+            s = lh__minor_sign(ctx, pts, pdim, n - 1, rows, cmap);
+        } else {
+            for (int i = 0; i < n; i++)
+                if (i != r) others[m++] = lifted ? pts[i] : pts[i] + 1; /* x_0 dropped */
+            if (lifted)
+                s = lh__orient_sign(ctx, dim, others);
+            else
+                s = dim == 1 ? 1 : lh__orient_sign(ctx, dim - 1, others);
+        }
         if (s) return cofactor_parity(r, lifted ? dim + 1 : 1) * s;
     }
     return 0;
@@ -88,7 +98,9 @@ static int fast_path(lh_pred *ctx, const double *const *pts, int dim, int lifted
 typedef struct sos_state {
     lh_pred *ctx;
     const double *const *pts;
-    int dim, n;
+    int pdim;                              /* coordinates per point */
+    int dim, n;                            /* H is n x n, n = dim + 1 + lifted */
+    int cmap[LH__MAXN];                    /* H's columns in [1, p, |p|^2] */
     int w[LH__MAXN], basis[LH__MAXN], nw; /* fixed rows, their column basis */
     int alive[LH__MAXN];                   /* columns not used by S*        */
 } sos_state;
@@ -108,11 +120,11 @@ static int minor_nonzero(sos_state *st, const int *rows, const int *cols, int m)
     int r[LH__MAXN], c[LH__MAXN];
     for (int i = 0; i < m; i++) {
         r[i] = rows[i];
-        c[i] = cols[i];
+        c[i] = st->cmap[cols[i]]; /* increasing map: sorting after it is the same */
     }
     sort_ints(r, m);
     sort_ints(c, m);
-    return lh__minor_sign(st->ctx, st->pts, st->dim, m, r, c) != 0;
+    return lh__minor_sign(st->ctx, st->pts, st->pdim, m, r, c) != 0;
 }
 
 static int in_basis(const sos_state *st, int c)
@@ -157,12 +169,15 @@ static int choose_column(sos_state *st, int lifted)
     return -1;
 }
 
-static int general_search(lh_pred *ctx, const double *const *pts, int dim, int lifted,
-                          const int *order)
+static int general_search(lh_pred *ctx, const double *const *pts, int pdim, int dim,
+                          int lifted, const int *cmap, const int *order)
 {
-    sos_state st = {.ctx = ctx, .pts = pts, .dim = dim, .n = dim + 1 + lifted, .nw = 0};
+    sos_state st = {.ctx = ctx, .pts = pts, .pdim = pdim, .dim = dim, .n = dim + 1 + lifted, .nw = 0};
     int frow[LH__MAXN], fcol[LH__MAXN], nf = 0;
-    for (int c = 0; c < st.n; c++) st.alive[c] = 1;
+    for (int c = 0; c < st.n; c++) {
+        st.alive[c] = 1;
+        st.cmap[c] = cmap ? cmap[c] : c;
+    }
     for (int t = 0; t < st.n; t++) {
         int r = order[t];
         int c = witness(&st, r, -1);
@@ -190,18 +205,57 @@ static int general_search(lh_pred *ctx, const double *const *pts, int dim, int l
         nr--;
         nc--;
     }
-    return sign * lh__minor_sign(ctx, pts, dim, nr, rows, cols);
+    for (int i = 0; i < nc; i++) cols[i] = st.cmap[cols[i]];
+    return sign * lh__minor_sign(ctx, pts, pdim, nr, rows, cols);
 }
 
-int lh__sos_sign(lh_pred *ctx, const double *const *pts, int dim, int lifted)
+/* The perturbed sign of H, whose columns are cmap's columns of the homogeneous
+ * matrix of pts (points of R^pdim), or all of them when cmap is NULL. */
+static int sos_sign(lh_pred *ctx, const double *const *pts, int pdim, int dim, int lifted,
+                    const int *cmap)
 {
     int order[LH__MAXN];
-    significance_order(pts, dim, dim + 1 + lifted, order);
-    int s = fast_path(ctx, pts, dim, lifted, order);
+    significance_order(pts, pdim, dim + 1 + lifted, order);
+    int s = fast_path(ctx, pts, pdim, dim, lifted, cmap, order);
     if (s) {
         ctx->count.sos_fast++;
         return s;
     }
     ctx->count.sos_general++;
-    return general_search(ctx, pts, dim, lifted, order);
+    return general_search(ctx, pts, pdim, dim, lifted, cmap, order);
+}
+
+int lh__sos_sign(lh_pred *ctx, const double *const *pts, int dim, int lifted)
+{
+    return sos_sign(ctx, pts, dim, dim, lifted, NULL);
+}
+
+/* The in-flat insphere's matrix: the ones, the coordinates J, the lifted column of
+ * the full coordinates. */
+static void flat_columns(int d, int k, const int *J, int *cols)
+{
+    cols[0] = 0;
+    for (int j = 0; j < k; j++) cols[j + 1] = J[j] + 1;
+    cols[k + 1] = d + 1;
+}
+
+int lh__insphere_flat(lh_pred *ctx, int d, int k, const int *J, const double *const *pts)
+{
+    int rows[LH__MAXN], cols[LH__MAXN];
+    for (int i = 0; i < k + 2; i++) rows[i] = i;
+    flat_columns(d, k, J, cols);
+    ctx->count.calls++;
+    ctx->count.exact_exits++;
+    int s = lh__minor_sign(ctx, pts, d, k + 2, rows, cols);
+    if (!s) ctx->count.zero_results++;
+    return s;
+}
+
+int lh__insphere_flat_sos(lh_pred *ctx, int d, int k, const int *J, const double *const *pts)
+{
+    int s = lh__insphere_flat(ctx, d, k, J, pts);
+    if (s) return s;
+    int cols[LH__MAXN];
+    flat_columns(d, k, J, cols);
+    return sos_sign(ctx, pts, d, k, 1, cols);
 }

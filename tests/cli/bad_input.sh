@@ -25,7 +25,7 @@ expect empty 3 "empty:1:1: expected the dimension, found the end of the input" "
 expect one_site 1 "span an affine subspace of dimension 0, not 2" "2\n1\n0.5 0.5\n"
 expect too_few 1 "span an affine subspace of dimension 1, not 2" "2\n2\n0 0\n1 1\n"
 expect collinear 1 "dimension 1, not 2" "2\n4\n0 0\n1 1\n2 2\n3 3\n"
-expect coplanar 1 "dimension 2, not 3" "3\n4\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
+expect coplanar 1 "dimension 2, not 3: nothing 3-dimensional to compute \\(lifthull delaunay -a triangulates" "3\n4\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
 expect nan 3 "nan:4:3: coordinate 2 of point 2 is 'nan'" "2\n3\n0 0\n1 nan\n0 1\n"
 expect inf 3 "inf:3:1: coordinate 1 of point 1 is '-inf'" "2\n3\n-inf 0\n1 0\n0 1\n"
 expect dim1 3 "dim1:1:1: expected the dimension to be 2..8" "1\n3\n0\n1\n2\n"
@@ -52,6 +52,10 @@ printf '2 rbox 4 D2\n4\n0 0\n1 0\n0 1\n1 1.5\n' | "$lh" delaunay > "$tmp/out" 2>
 if [ $c -eq 0 ] && [ "$(head -1 "$tmp/out")" = "2" ] && [ "$(wc -l < "$tmp/out")" -eq 3 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL stdin delaunay: exit $c"; fi
 printf '2 4\n0 0\n1 0\n0 1\n1 1.5\n' | "$lh" hull > "$tmp/out" 2> "$tmp/err"; c=$?
 if [ $c -eq 0 ] && [ "$(head -1 "$tmp/out")" = "4" ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL stdin hull: exit $c"; fi
+
+# Coplanar points with -a: triangles (3 indices a line) within their plane.
+printf '3 5\n0 0 0\n2 0 2\n0 2 2\n2 2 4\n1 1 2\n' | "$lh" delaunay -a > "$tmp/out" 2> "$tmp/err"; c=$?
+if [ $c -eq 0 ] && [ "$(head -1 "$tmp/out")" = "4" ] && [ "$(awk 'NR > 1 && NF != 3' "$tmp/out" | wc -l)" -eq 0 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL delaunay -a: exit $c"; fi
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
