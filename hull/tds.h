@@ -18,6 +18,7 @@
 
 #define LH__INF (-1)  /* the vertex at infinity (the caller's convention) */
 #define LH__DEAD (-2) /* vert[c*nv] of a free cell */
+#define LH__TDS_MAX_NV (LH_ORIENT_MAX_DIM + 1)
 
 typedef struct lh__tds {
     lh_allocator alloc;
@@ -33,6 +34,11 @@ typedef struct lh__tds {
     /* Scratch of one insertion, kept between insertions (no allocation once warm). */
     int32_t *cells, *bound, *fresh;
     size_t cells_cap, bound_cap, fresh_cap;
+    struct lh__ridge *ridge; /* open-addressing table of the new cells' ridges */
+    size_t ridge_cap;        /* a power of two */
+    int32_t *sorted;         /* per new cell: its old vertices, increasing */
+    int8_t *spos;            /* and their positions in the cell */
+    size_t sorted_cap;       /* new cells the two have room for */
     size_t ncells, nbound; /* conflict cells; boundary facets (pairs cell, index) */
 } lh__tds;
 
