@@ -1,11 +1,7 @@
 /*
- * engine.c — the incremental driver (engine.h): initial simplex, walk, conflicts,
- * insertion loop; the convex hull facets from the infinite cells.
- *
- * Location: a remembering stochastic visibility walk (Devillers, Pion & Teillaud,
- * "Walking in a triangulation", IJFCS 13(2), 2002) from the last new cell. It stops
- * in the closed simplex containing q, or in an infinite cell whose facet q strictly
- * sees. A bound on its length falls back to scanning every cell, so it always ends.
+ * engine.c — the incremental driver (engine.h): set-up, initial simplex, the
+ * insertion loop (insert_impl.h, generic or fixed-dimension) over the sites in
+ * order; the convex hull facets from the infinite cells.
  */
 #include "engine.h"
 
@@ -55,63 +51,6 @@ int lh__eng_finite(const lh__eng *e, int32_t c)
     return e->tds.vert[(size_t)c * e->nv] != LH__INF;
 }
 
-static int conflict(void *user, int32_t c)
-{
-    lh__eng *e = user;
-    const int32_t *v = e->tds.vert + (size_t)c * e->nv;
-    if (v[0] != LH__INF) return e->finite_conflict && e->finite_conflict(e->user, v, e->q);
-    e->pts[0] = lh__eng_site(e, e->q);
-    for (int k = 1; k < e->nv; k++) e->pts[k] = lh__eng_site(e, v[k]);
-    int o = lh__orient_fast(e->pred, e->d, e->pts);
-    if (o || !e->finite_conflict) return o > 0;
-    int32_t f = e->tds.nbr[(size_t)c * e->nv];
-    return e->finite_conflict(e->user, e->tds.vert + (size_t)f * e->nv, e->q);
-}
-
-/* orient_d of finite cell v with its vertex k replaced by q. */
-static int orient_replaced(lh__eng *e, const int32_t *v, int k)
-{
-    for (int j = 0; j < e->nv; j++) e->pts[j] = lh__eng_site(e, j == k ? e->q : v[j]);
-    return lh__orient_fast(e->pred, e->d, e->pts);
-}
-
-static int32_t scan_for_conflict(lh__eng *e)
-{
-    for (int32_t c = 0; c < e->tds.top; c++)
-        if (!lh__tds_dead(&e->tds, c) && conflict(e, c)) return c;
-    return -1;
-}
-
-/* A cell in conflict with q, or -1 when q is inside the current hull and no finite
- * cell can conflict (placing mode). */
-static int32_t locate(lh__eng *e)
-{
-    const int nv = e->nv;
-    int32_t c = e->hint, prev = -1;
-    size_t limit = 64 + 8 * (size_t)e->tds.live;
-    for (size_t step = 0; step < limit; step++) {
-        const int32_t *v = e->tds.vert + (size_t)c * nv;
-        if (v[0] == LH__INF) {
-            if (prev >= 0 || conflict(e, c)) return c; /* entered across its facet */
-            prev = c;
-            c = e->tds.nbr[(size_t)c * nv];
-            continue;
-        }
-        int s = (int)(lh__rng_next(&e->rng) % (uint64_t)nv), moved = 0;
-        for (int t = 0; t < nv && !moved; t++) {
-            int k = (s + t) % nv;
-            int32_t n = e->tds.nbr[(size_t)c * nv + k];
-            if (n == prev || orient_replaced(e, v, k) >= 0) continue;
-            prev = c;
-            c = n;
-            moved = 1;
-        }
-        if (!moved) return e->inside_conflicts ? c : -1; /* q in the closed simplex c */
-    }
-    int32_t found = scan_for_conflict(e); /* not reached in practice */
-    return found;
-}
-
 /* The first d+2 cells: the simplex of vertices 0..d, positively oriented, and one
  * infinite cell per facet. An infinite cell keeps LH__INF at position 0 (the cavity
  * insertion preserves that: a new cell replaces one vertex of an old one), and is
@@ -150,21 +89,9 @@ static lh_status start(lh__eng *e)
     return LH_OK;
 }
 
-static lh_status insert_one(lh__eng *e, int32_t q)
-{
-    e->q = q;
-    int32_t c = locate(e);
-    if (c < 0) return LH_OK; /* inside the current hull: not a vertex (placing modes) */
-    lh_status st = lh__tds_insert(&e->tds, c, q, conflict, e);
-    if (st == LH_OK) e->hint = e->tds.fresh[0];
-    return st;
-}
-
 lh_status lh__eng_insert(lh__eng *e, const int32_t *list, size_t count)
 {
-    lh_status st = LH_OK;
-    for (size_t i = 0; i < count && st == LH_OK; i++) st = insert_one(e, list[i]);
-    return st;
+    return (e->insert ? e->insert : lh__eng_insert_generic)(e, 0, count, list);
 }
 
 /* e->site: the distinct sites in insertion order. */
@@ -202,8 +129,8 @@ lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
     if ((st = copy_sites(e)) != LH_OK) return st;
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
     if ((st = start(e)) != LH_OK) return st;
-    for (size_t i = (size_t)e->nv; i < e->norder; i++)
-        if ((st = insert_one(e, (int32_t)i)) != LH_OK) return st;
+    lh__insert_fn insert = e->insert ? e->insert : lh__eng_insert_generic;
+    if ((st = insert(e, (size_t)e->nv, e->norder - (size_t)e->nv, NULL)) != LH_OK) return st;
     restore_indices(e);
     return LH_OK;
 }

@@ -37,6 +37,12 @@
 /* Whether the finite cell with vertices v (positively oriented) conflicts with site q. */
 typedef int (*lh__finite_conflict_fn)(void *user, const int32_t *v, int32_t q);
 
+struct lh__eng;
+/* An insertion loop (insert_impl.h): inserts vertices list[0..count-1], or
+ * first..first+count-1 when list is NULL. */
+typedef lh_status (*lh__insert_fn)(struct lh__eng *e, size_t first, size_t count,
+                                   const int32_t *list);
+
 typedef struct lh__eng {
     lh_allocator alloc;
     int d, nv;
@@ -57,6 +63,9 @@ typedef struct lh__eng {
     uint64_t rng;
     lh__finite_conflict_fn finite_conflict;
     void *user;
+    lh__insert_fn insert; /* NULL: lh__eng_insert_generic; dims/ has fixed-d ones
+                             whose conflict test is built in (the caller's
+                             choice must match finite_conflict) */
     int inside_conflicts; /* 1: the cell containing q always conflicts (Delaunay);
                              0: a site inside the current hull is not inserted */
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */
@@ -112,6 +121,9 @@ typedef struct lh__lex {
     int d;
 } lh__lex;
 int lh__lex_cmp(const void *ctx, int32_t a, int32_t b);
+
+/* insert_generic.c: the insertion loop with d a runtime value. */
+lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const int32_t *list);
 
 /* Inserts the vertices list[0..count-1] (distinct, none a vertex yet; coordinates
  * in e->site) into the cells of e->tds, which must hold a triangulation made as

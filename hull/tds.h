@@ -1,8 +1,6 @@
 /*
- * tds.h — the cell store of lifthull's incremental engine and its one mutating
- * operation, the insertion of a point into a cavity (Bowyer 1981; Watson 1981, in
- * the lifted view: the facets of the lifted hull visible from the new point are
- * replaced by the cone from it to their horizon).
+ * tds.h — the cell store of lifthull's incremental engine. Its one mutating
+ * operation, the insertion of a point into a cavity, is hull/insert_impl.h.
  *
  * A cell is nv vertex indices and nv neighbour indices in two flat arrays:
  * nbr[c*nv + k] is the cell across the facet opposite vert[c*nv + k] (the facet
@@ -20,6 +18,15 @@
 #define LH__DEAD (-2) /* vert[c*nv] of a free cell */
 #define LH__TDS_MAX_NV (LH_ORIENT_MAX_DIM + 1)
 
+/* An entry of the table that pairs new cells across their ridges (insert_impl.h). */
+typedef struct lh__ridge {
+    uint64_t key;
+    uint32_t round; /* the insertion that wrote the entry */
+    int32_t b;      /* the new cell fresh[b] */
+    int32_t drop;   /* the index in its sorted list of the vertex not in the ridge */
+    int32_t paired; /* both cells of the ridge linked */
+} lh__ridge;
+
 typedef struct lh__tds {
     lh_allocator alloc;
     int nv;           /* vertices (and neighbours) per cell */
@@ -34,17 +41,13 @@ typedef struct lh__tds {
     /* Scratch of one insertion, kept between insertions (no allocation once warm). */
     int32_t *cells, *bound, *fresh;
     size_t cells_cap, bound_cap, fresh_cap;
-    struct lh__ridge *ridge; /* open-addressing table of the new cells' ridges */
+    lh__ridge *ridge;        /* open-addressing table of the new cells' ridges */
     size_t ridge_cap;        /* a power of two */
     int32_t *sorted;         /* per new cell: its old vertices, increasing */
     int8_t *spos;            /* and their positions in the cell */
     size_t sorted_cap;       /* new cells the two have room for */
     size_t ncells, nbound; /* conflict cells; boundary facets (pairs cell, index) */
 } lh__tds;
-
-/* Decides whether a cell conflicts with the point being inserted (its facet in the
- * lifted hull is visible from it). Must not modify the store. */
-typedef int (*lh__conflict_fn)(void *user, int32_t cell);
 
 lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, int32_t cap_hint);
 void lh__tds_release(lh__tds *t);
@@ -63,14 +66,11 @@ int lh__tds_mirror(const lh__tds *t, int32_t c, int32_t other);
  * (quadratic: for the first cells of a triangulation only). */
 void lh__tds_link_all(lh__tds *t, const int32_t *list, int count);
 
-/*
- * Inserts vertex q. `start` must conflict with q; the conflict region must be the
- * star-shaped set of cells the predicate marks (connected through facets). Each
- * boundary facet (c, k) of the region becomes the new cell c with vertex k replaced
- * by q, which keeps the orientation of c. Afterwards t->fresh[0..t->nbound-1] are the
- * new cells. On LH_ERR_NOMEM the store is unchanged.
- */
-lh_status lh__tds_insert(lh__tds *t, int32_t start, int32_t q, lh__conflict_fn conflict,
-                         void *user);
+/* For the insertion (insert_impl.h): growing a scratch array; starting an
+ * insertion (new visit marks); room for the new cells of t->nbound boundary facets
+ * and their linking, so that nothing fails afterwards. */
+int lh__tds_push_slow(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x);
+void lh__tds_next_round(lh__tds *t);
+lh_status lh__tds_room(lh__tds *t);
 
 #endif

@@ -1,0 +1,281 @@
+/*
+ * insert_impl.h — the engine's insertion loop as a template: the walk, the conflict
+ * region, the cone of new cells and their linking. One source, compiled once with
+ * the dimension a runtime value (hull/insert_generic.c) and once per fixed
+ * dimension (dims/), so that the hot loops see constant sizes there.
+ *
+ * Parameters (macros defined before including this file):
+ *   LH_T_NAME   the entry function's name (external linkage);
+ *   LH_T_D      the dimension, a constant (optional: e->d when undefined);
+ *   LH_T_FINITE_CONFLICT(e, v, q)  whether the finite cell with vertices v conflicts
+ *               with vertex q (optional: the engine's finite_conflict callback);
+ *   LH_T_ORIENT(e, pts)  orient_d of pts (optional: lh__orient_fast).
+ *
+ * Location: a remembering stochastic visibility walk (Devillers, Pion & Teillaud,
+ * "Walking in a triangulation", IJFCS 13(2), 2002) from the last new cell. It stops
+ * in the closed simplex containing q, or in an infinite cell whose facet q strictly
+ * sees. A bound on its length falls back to scanning every cell, so it always ends.
+ *
+ * Cavity: the conflict region grows depth-first from the located cell through
+ * facets (its cells are marked in, the tested neighbours out); each boundary facet
+ * (c, k) becomes the new cell c with vertex k replaced by q, which keeps c's
+ * orientation (Bowyer 1981; Watson 1981; in the lifted view the cone from q to the
+ * horizon of the visible facets).
+ *
+ * Linking the new cells: the new cell N made from boundary facet (c, k) meets,
+ * across its facet opposite vertex v_j (j != k), the new cell made from the other
+ * boundary facet that contains the ridge R = c \ {v_k, v_j} (the cavity's boundary
+ * is a closed pseudo-manifold: every ridge is in exactly two boundary facets). The
+ * two are paired through a hash table keyed on R. Each new cell's old vertices are
+ * sorted once; a ridge is that list minus one entry. When a ridge has at most two
+ * vertices (d <= 3) the key is the ridge itself; otherwise it is the sum of a mix
+ * of its vertices (one subtraction from the cell's sum) and equal keys are
+ * confirmed by comparing the sorted lists, so a collision costs a probe, never a
+ * wrong link.
+ */
+#include "engine.h"
+#include "lh_exact.h"
+
+#ifdef LH_T_D
+#define NV (LH_T_D + 1)
+#else
+#define NV (t->nv) /* every function below has the store t in scope */
+#endif
+#ifndef LH_T_FINITE_CONFLICT
+#define LH_T_FINITE_CONFLICT(e, v, q) ((e)->finite_conflict && (e)->finite_conflict((e)->user, v, q))
+#endif
+#ifndef LH_T_ORIENT
+#define LH_T_ORIENT(e, pts) lh__orient_fast((e)->pred, (e)->d, pts)
+#endif
+
+static inline int push(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x)
+{
+    if (*len < *cap) {
+        (*arr)[(*len)++] = x;
+        return 1;
+    }
+    return lh__tds_push_slow(t, arr, cap, len, x);
+}
+
+/* Whether cell c conflicts with e->q (engine.h: the rule for infinite cells). */
+static inline int conflict(lh__eng *e, int32_t c)
+{
+    const lh__tds *t = &e->tds;
+    const int32_t *v = t->vert + (size_t)c * NV;
+    if (v[0] != LH__INF) return LH_T_FINITE_CONFLICT(e, v, e->q);
+    e->pts[0] = lh__eng_site(e, e->q);
+    for (int k = 1; k < NV; k++) e->pts[k] = lh__eng_site(e, v[k]);
+    int o = LH_T_ORIENT(e, e->pts);
+    if (o || !e->finite_conflict) return o > 0;
+    int32_t f = t->nbr[(size_t)c * NV];
+    return LH_T_FINITE_CONFLICT(e, t->vert + (size_t)f * NV, e->q);
+}
+
+/* orient_d of finite cell v with its vertex k replaced by q. */
+static inline int orient_replaced(lh__eng *e, const int32_t *v, int k)
+{
+    const lh__tds *t = &e->tds;
+    (void)t;
+    for (int j = 0; j < NV; j++) e->pts[j] = lh__eng_site(e, j == k ? e->q : v[j]);
+    return LH_T_ORIENT(e, e->pts);
+}
+
+static int32_t scan_for_conflict(lh__eng *e)
+{
+    for (int32_t c = 0; c < e->tds.top; c++)
+        if (!lh__tds_dead(&e->tds, c) && conflict(e, c)) return c;
+    return -1;
+}
+
+/* A cell in conflict with q, or -1 when q is inside the current hull and no finite
+ * cell can conflict (placing mode). */
+static int32_t locate(lh__eng *e)
+{
+    const lh__tds *t = &e->tds;
+    int32_t c = e->hint, prev = -1;
+    size_t limit = 64 + 8 * (size_t)t->live;
+    for (size_t step = 0; step < limit; step++) {
+        const int32_t *v = t->vert + (size_t)c * NV;
+        if (v[0] == LH__INF) {
+            if (prev >= 0 || conflict(e, c)) return c; /* entered across its facet */
+            prev = c;
+            c = t->nbr[(size_t)c * NV];
+            continue;
+        }
+        int s = (int)(lh__rng_next(&e->rng) % (uint64_t)NV), moved = 0;
+        for (int i = 0; i < NV && !moved; i++) {
+            int k = s + i < NV ? s + i : s + i - NV;
+            int32_t n = t->nbr[(size_t)c * NV + k];
+            if (n == prev || orient_replaced(e, v, k) >= 0) continue;
+            prev = c;
+            c = n;
+            moved = 1;
+        }
+        if (!moved) return e->inside_conflicts ? c : -1; /* q in the closed simplex c */
+    }
+    return scan_for_conflict(e); /* not reached in practice */
+}
+
+/* The conflict region from `start`: t->cells, and its boundary facets as pairs
+ * (cell, k) in t->bound. Returns 0 when memory runs out. */
+static int grow_region(lh__eng *e, int32_t start, uint32_t in, uint32_t out)
+{
+    lh__tds *t = &e->tds;
+    t->ncells = t->nbound = 0;
+    size_t nb2 = 0;
+    t->stamp[start] = in;
+    if (!push(t, &t->cells, &t->cells_cap, &t->ncells, start)) return 0;
+    for (size_t i = 0; i < t->ncells; i++) {
+        int32_t c = t->cells[i];
+        for (int k = 0; k < NV; k++) {
+            int32_t n = t->nbr[(size_t)c * NV + k];
+            uint32_t st = t->stamp[n];
+            if (st == in) continue;
+            if (st != out) {
+                if (conflict(e, n)) {
+                    t->stamp[n] = in;
+                    if (!push(t, &t->cells, &t->cells_cap, &t->ncells, n)) return 0;
+                    continue;
+                }
+                t->stamp[n] = out;
+            }
+            if (!push(t, &t->bound, &t->bound_cap, &nb2, c) || !push(t, &t->bound, &t->bound_cap, &nb2, k))
+                return 0;
+        }
+    }
+    t->nbound = nb2 / 2;
+    return 1;
+}
+
+static inline uint64_t mix(int32_t v) /* one multiply and a fold: nonlinear in v */
+{
+    uint64_t z = (uint64_t)(uint32_t)v * UINT64_C(0x9e3779b97f4a7c15);
+    return z ^ (z >> 29);
+}
+
+/* The old vertices of new cell b (all but position k), increasing, with their
+ * positions. */
+static inline void sort_old_vertices(lh__tds *t, size_t b, int32_t N, int k)
+{
+    const int32_t *v = t->vert + (size_t)N * NV;
+    int32_t *s = t->sorted + b * (NV - 1);
+    int8_t *p = t->spos + b * (NV - 1);
+    int n = 0;
+    for (int j = 0; j < NV; j++) {
+        if (j == k) continue;
+        int i = n++;
+        for (; i > 0 && s[i - 1] > v[j]; i--) {
+            s[i] = s[i - 1];
+            p[i] = p[i - 1];
+        }
+        s[i] = v[j];
+        p[i] = (int8_t)j;
+    }
+}
+
+/* Whether the sorted lists of new cells a and b, minus entries da and db, agree. */
+static int same_ridge(const lh__tds *t, size_t a, int da, size_t b, int db)
+{
+    const int m = NV - 1;
+    const int32_t *x = t->sorted + a * m, *y = t->sorted + b * m;
+    for (int i = 0, j = 0; i < m; i++, j++) {
+        if (i == da) i++;
+        if (j == db) j++;
+        if (i < m && x[i] != y[j]) return 0;
+    }
+    return 1;
+}
+
+/* The key of the ridge of sorted list s (m entries, sum of mixes `sum`) without
+ * entry drop: the ridge itself when it has at most two vertices. */
+static inline uint64_t ridge_key(const int32_t *s, int m, int drop, uint64_t sum)
+{
+    if (m == 2) return (uint32_t)s[1 - drop];
+    if (m == 3) {
+        int a = drop == 0 ? 1 : 0, c = drop == 2 ? 1 : 2;
+        return (uint64_t)(uint32_t)s[a] << 32 | (uint32_t)s[c];
+    }
+    return sum - mix(s[drop]);
+}
+
+/* Pairs the new cells t->fresh[] across their ridges (see the top). */
+static void link_new_cells(lh__tds *t)
+{
+    const int m = NV - 1, exact = m <= 3;
+    const uint32_t round = t->round;
+    const size_t mask = t->ridge_cap - 1;
+    for (size_t b = 0; b < t->nbound; b++) sort_old_vertices(t, b, t->fresh[b], t->bound[2 * b + 1]);
+    for (size_t b = 0; b < t->nbound; b++) {
+        const int32_t N = t->fresh[b], *s = t->sorted + b * m;
+        uint64_t sum = 0;
+        if (!exact)
+            for (int i = 0; i < m; i++) sum += mix(s[i]);
+        for (int i = 0; i < m; i++) {
+            uint64_t key = ridge_key(s, m, i, sum);
+            for (size_t h = (size_t)((key * UINT64_C(0x9e3779b97f4a7c15)) >> 40) & mask;; h = (h + 1) & mask) {
+                lh__ridge *r = t->ridge + h;
+                if (r->round != round) { /* free: the first of the pair */
+                    r->key = key;
+                    r->round = round;
+                    r->b = (int32_t)b;
+                    r->drop = i;
+                    r->paired = 0;
+                    break;
+                }
+                if (!r->paired && r->key == key && (exact || same_ridge(t, b, i, (size_t)r->b, r->drop))) {
+                    int32_t M = t->fresh[r->b];
+                    t->nbr[(size_t)N * NV + t->spos[b * m + i]] = M;
+                    t->nbr[(size_t)M * NV + t->spos[(size_t)r->b * m + r->drop]] = N;
+                    r->paired = 1;
+                    break;
+                }
+            }
+        }
+    }
+}
+
+/* Inserts e->q from `start`, a cell in conflict with it. The new cells are
+ * t->fresh[0..nbound-1]. On LH_ERR_NOMEM the store is unchanged. */
+static lh_status cavity_insert(lh__eng *e, int32_t start)
+{
+    lh__tds *t = &e->tds;
+    const int32_t q = e->q;
+    lh__tds_next_round(t);
+    uint32_t in = 4 * t->round, out = in + 1;
+    if (!grow_region(e, start, in, out)) return LH_ERR_NOMEM;
+    lh_status st = lh__tds_room(t);
+    if (st != LH_OK) return st;
+    for (size_t b = 0; b < t->nbound; b++) {
+        int32_t c = t->bound[2 * b], k = t->bound[2 * b + 1];
+        int32_t N = lh__tds_new_cell(t); /* cannot fail after lh__tds_room */
+        int32_t *nvert = t->vert + (size_t)N * NV, *nnbr = t->nbr + (size_t)N * NV;
+        const int32_t *cv = t->vert + (size_t)c * NV;
+        for (int j = 0; j < NV; j++) nvert[j] = cv[j];
+        nvert[k] = q;
+        int32_t outside = t->nbr[(size_t)c * NV + k];
+        nnbr[k] = outside;
+        int32_t *on = t->nbr + (size_t)outside * NV;
+        int m = 0;
+        while (on[m] != c) m++;
+        on[m] = N;
+        t->fresh[b] = N;
+    }
+    link_new_cells(t);
+    for (size_t i = 0; i < t->ncells; i++) lh__tds_kill(t, t->cells[i]);
+    return LH_OK;
+}
+
+lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const int32_t *list)
+{
+    for (size_t i = 0; i < count; i++) {
+        e->q = list ? list[i] : (int32_t)(first + i);
+        int32_t c = locate(e);
+        if (c < 0) continue; /* inside the current hull: not a vertex (placing modes) */
+        lh_status st = cavity_insert(e, c);
+        if (st != LH_OK) return st;
+        e->hint = e->tds.fresh[0];
+    }
+    return LH_OK;
+}
+
+#undef NV
