@@ -66,6 +66,10 @@ typedef struct lh__eng {
     lh__insert_fn insert; /* NULL: lh__eng_insert_generic; dims/ has fixed-d ones
                              whose conflict test is built in (the caller's
                              choice must match finite_conflict) */
+    int conflict_sign;    /* dims/: the lifted sign that means conflict: -1 for
+                             Delaunay (inside), +1 furthest-site (outside) */
+    uint64_t filtered;    /* predicate calls settled by inline filters, not yet
+                             added to pred's counters */
     int inside_conflicts; /* 1: the cell containing q always conflicts (Delaunay);
                              0: a site inside the current hull is not inserted */
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */
@@ -121,6 +125,10 @@ typedef struct lh__lex {
     int d;
 } lh__lex;
 int lh__lex_cmp(const void *ctx, int32_t a, int32_t b);
+
+/* A source of fixed-dimension insertion loops (dims/): the one for Delaunay in
+ * R^d, or NULL. */
+typedef lh__insert_fn (*lh__insert_pick)(int d);
 
 /* insert_generic.c: the insertion loop with d a runtime value. */
 lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const int32_t *list);

@@ -48,6 +48,12 @@
 #define LH_T_ORIENT(e, pts) lh__orient_fast((e)->pred, (e)->d, pts)
 #endif
 
+#if defined(__GNUC__) || defined(__clang__)
+#define LH_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define LH_PREFETCH(p) ((void)(p))
+#endif
+
 static inline int push(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x)
 {
     if (*len < *cap) {
@@ -127,6 +133,11 @@ static int grow_region(lh__eng *e, int32_t start, uint32_t in, uint32_t out)
     if (!push(t, &t->cells, &t->cells_cap, &t->ncells, start)) return 0;
     for (size_t i = 0; i < t->ncells; i++) {
         int32_t c = t->cells[i];
+        for (int k = 0; k < NV; k++) { /* the neighbours' misses overlap */
+            int32_t n = t->nbr[(size_t)c * NV + k];
+            LH_PREFETCH(t->stamp + n);
+            LH_PREFETCH(t->vert + (size_t)n * NV);
+        }
         for (int k = 0; k < NV; k++) {
             int32_t n = t->nbr[(size_t)c * NV + k];
             uint32_t st = t->stamp[n];
@@ -217,16 +228,16 @@ static void link_new_cells(lh__tds *t)
                 if (r->round != round) { /* free: the first of the pair */
                     r->key = key;
                     r->round = round;
-                    r->b = (int32_t)b;
-                    r->drop = i;
-                    r->paired = 0;
+                    r->bd = (uint32_t)b << 4 | (uint32_t)i;
                     break;
                 }
-                if (!r->paired && r->key == key && (exact || same_ridge(t, b, i, (size_t)r->b, r->drop))) {
-                    int32_t M = t->fresh[r->b];
+                size_t rb = r->bd >> 4;
+                int rd = (int)(r->bd & 15);
+                if (r->key == key && (exact || same_ridge(t, b, i, rb, rd))) {
+                    int32_t M = t->fresh[rb];
                     t->nbr[(size_t)N * NV + t->spos[b * m + i]] = M;
-                    t->nbr[(size_t)M * NV + t->spos[(size_t)r->b * m + r->drop]] = N;
-                    r->paired = 1;
+                    t->nbr[(size_t)M * NV + t->spos[rb * m + rd]] = N;
+                    r->key = LH__RIDGE_PAIRED;
                     break;
                 }
             }
@@ -245,6 +256,8 @@ static lh_status cavity_insert(lh__eng *e, int32_t start)
     if (!grow_region(e, start, in, out)) return LH_ERR_NOMEM;
     lh_status st = lh__tds_room(t);
     if (st != LH_OK) return st;
+    for (size_t b = 0; b < t->nbound; b++) /* the outside cells' neighbour rows */
+        LH_PREFETCH(t->nbr + (size_t)t->nbr[(size_t)t->bound[2 * b] * NV + t->bound[2 * b + 1]] * NV);
     for (size_t b = 0; b < t->nbound; b++) {
         int32_t c = t->bound[2 * b], k = t->bound[2 * b + 1];
         int32_t N = lh__tds_new_cell(t); /* cannot fail after lh__tds_room */
@@ -265,17 +278,20 @@ static lh_status cavity_insert(lh__eng *e, int32_t start)
     return LH_OK;
 }
 
+lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const int32_t *list);
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const int32_t *list)
 {
-    for (size_t i = 0; i < count; i++) {
+    lh_status st = LH_OK;
+    for (size_t i = 0; i < count && st == LH_OK; i++) {
         e->q = list ? list[i] : (int32_t)(first + i);
         int32_t c = locate(e);
         if (c < 0) continue; /* inside the current hull: not a vertex (placing modes) */
-        lh_status st = cavity_insert(e, c);
-        if (st != LH_OK) return st;
-        e->hint = e->tds.fresh[0];
+        st = cavity_insert(e, c);
+        if (st == LH_OK) e->hint = e->tds.fresh[0];
     }
-    return LH_OK;
+    lh__pred_count_filtered(e->pred, e->filtered);
+    e->filtered = 0;
+    return st;
 }
 
 #undef NV

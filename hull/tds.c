@@ -181,7 +181,7 @@ static int ridge_room(lh__tds *t)
         t->sorted_cap = cap;
     }
     size_t want = 16;
-    while (want < 2 * nb * m) want *= 2;
+    while (want < nb * m + nb * m / 2) want *= 2; /* load at most 2/3 */
     if (t->ridge_cap >= want) return 1;
     lh__ridge *r = grow(&t->alloc, t->ridge, 0, want * sizeof *r);
     if (!r) return 0;
@@ -193,6 +193,7 @@ static int ridge_room(lh__tds *t)
 
 lh_status lh__tds_room(lh__tds *t)
 {
+    if (t->nbound >= (size_t)LH__MAX_NEW_CELLS) return LH_ERR_TOO_LARGE;
     if (t->fresh_cap < t->nbound) {
         int32_t *p = grow(&t->alloc, t->fresh, 0, t->nbound * 2 * sizeof *p);
         if (!p) return LH_ERR_NOMEM;

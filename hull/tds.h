@@ -18,14 +18,17 @@
 #define LH__DEAD (-2) /* vert[c*nv] of a free cell */
 #define LH__TDS_MAX_NV (LH_ORIENT_MAX_DIM + 1)
 
-/* An entry of the table that pairs new cells across their ridges (insert_impl.h). */
+/* An entry of the table that pairs new cells across their ridges (insert_impl.h):
+ * 16 bytes, so that the table of an insertion stays in the first-level cache. */
 typedef struct lh__ridge {
-    uint64_t key;
-    uint32_t round; /* the insertion that wrote the entry */
-    int32_t b;      /* the new cell fresh[b] */
-    int32_t drop;   /* the index in its sorted list of the vertex not in the ridge */
-    int32_t paired; /* both cells of the ridge linked */
+    uint64_t key;   /* LH__RIDGE_PAIRED once both cells are linked */
+    uint32_t round; /* the insertion that wrote the entry (older: a free slot) */
+    uint32_t bd;    /* b << 4 | drop: the new cell fresh[b], and the index in its
+                       sorted list of the vertex not in the ridge */
 } lh__ridge;
+#define LH__RIDGE_PAIRED UINT64_MAX /* no exact key has the top bit; hashed keys
+                                       that do are told apart by the comparison */
+#define LH__MAX_NEW_CELLS (INT32_C(1) << 27) /* b fits in bd */
 
 typedef struct lh__tds {
     lh_allocator alloc;

@@ -37,11 +37,13 @@ static int furthest_conflict(void *user, const int32_t *v, int32_t q)
     return lifted_sign(user, v, q) > 0;
 }
 
-void lh__dt_conflicts(lh__eng *e, int furthest)
+void lh__dt_conflicts(lh__eng *e, int furthest, lh__insert_pick pick)
 {
     e->finite_conflict = furthest ? furthest_conflict : lifted_conflict;
     e->inside_conflicts = !furthest;
     e->user = e;
+    e->conflict_sign = furthest ? 1 : -1;
+    e->insert = pick ? pick(e->d) : NULL;
 }
 
 /* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,
@@ -94,8 +96,8 @@ static lh_status new_handle(int d, size_t n, const double *xyz, const lh_options
     return LH_OK;
 }
 
-lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
-                      lh_tri **out)
+lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
+                          lh__insert_pick pick, lh_tri **out)
 {
     if (!out) return LH_ERR_INVALID_ARGUMENT;
     *out = NULL;
@@ -106,7 +108,8 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     lh__eng e;
     st = lh__eng_init(&e, &t->alloc, d, n, t->xyz, t->dup, opt);
     int furthest = opt && opt->furthest_site;
-    lh__dt_conflicts(&e, furthest);
+    t->pick = pick;
+    lh__dt_conflicts(&e, furthest, pick);
     t->furthest = furthest;
     t->affine_hull = opt && opt->affine_hull;
     int affdim = -1;

@@ -57,14 +57,20 @@ struct lh_tri {
     lh_pred *pred;    /* for queries (lh_tri_locate) */
     int furthest;     /* the furthest-site triangulation (lh_options) */
     int affine_hull;  /* lh_options.affine_hull, for lh_tri_insert */
+    lh__insert_pick pick; /* the fixed-dimension insertion loops (dims/), or NULL */
     size_t ncells;    /* the Delaunay complex, built on demand (complex.c) */
     int32_t *cell_off, *cell_vert;
 };
 
 /* delaunay.c: a capacity hint, the cells expected for n uniform sites in R^d. */
 int32_t lh__dt_expected_cells(int d, size_t n);
-/* delaunay.c: sets e's conflict test: lifted (Delaunay) or reversed (furthest). */
-void lh__dt_conflicts(lh__eng *e, int furthest);
+/* delaunay.c: sets e's conflict test: lifted (Delaunay) or reversed (furthest),
+ * and its insertion loop from pick (NULL: the generic one). */
+void lh__dt_conflicts(lh__eng *e, int furthest, lh__insert_pick pick);
+/* delaunay.c: lh_delaunay with the fixed-dimension loops of pick (dims/ passes
+ * its own; NULL: generic only). */
+lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
+                          lh__insert_pick pick, lh_tri **out);
 
 /* flat.c: t (sites copied, dup allocated) triangulated in the k-flat spanned by
  * its sites, 2 <= k < d. */

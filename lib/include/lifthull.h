@@ -185,6 +185,10 @@ typedef struct lh_options {
                                   a k-flat, 2 <= k < d, within it (k-simplices; see
                                   lh_tri_simplex_dim) instead of failing with
                                   LH_ERR_DEGENERATE (default 0)                      */
+    int generic_engine;        /* lh_delaunay: 1 to run the engine with the dimension
+                                  a runtime value even where a fixed-dimension
+                                  build exists (d = 2..5); the output is the same,
+                                  only slower: for comparisons (default 0)           */
 } lh_options;
 
 void lh_options_default(lh_options *opt);

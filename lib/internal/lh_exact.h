@@ -15,6 +15,10 @@ int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
 int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts);
 int lh__orient_fast(lh_pred *ctx, int k, const double *const *pts);
 
+/* Counts n calls of lh_orient/lh_insphere that a caller settled with the inline
+ * filters of lh_filter.gen.h (dims/), as filter exits. */
+void lh__pred_count_filtered(lh_pred *ctx, uint64_t n);
+
 /*
  * The insphere test within a k-flat of R^d (2 <= k < d): pts are k+2 points of R^d
  * in one k-dimensional affine subspace F on which the projection to the k

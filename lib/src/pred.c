@@ -1,10 +1,10 @@
 /*
  * pred.c — the public predicates: filter, then exact stage, then (for *_sos) the
  * perturbation; the context that holds counters and the exact stage's scratch.
- * Stages: pred_filter.gen.h (generated), pred_exact.c, pred_sos.c.
+ * Stages: lh_filter.gen.h (generated), pred_exact.c, pred_sos.c.
  */
 #include "lh_alloc.h"
-#include "pred_filter.gen.h"
+#include "lh_filter.gen.h"
 #include "pred_internal.h"
 
 #include <limits.h>
@@ -184,6 +184,12 @@ int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts)
     int s = lh_insphere(ctx, d, pts);
     if (s || !ctx || !pts || d < 1 || d > LH_INSPHERE_MAX_DIM) return s;
     return lh__sos_sign(ctx, pts, d, 1);
+}
+
+void lh__pred_count_filtered(lh_pred *ctx, uint64_t n)
+{
+    ctx->count.calls += n;
+    ctx->count.filter_exits += n;
 }
 
 double lh__fp_contract_probe(double a, double b, double c) { return a * b + c; }

@@ -1,6 +1,6 @@
 /*
  * pred_internal.h — the predicate context and the stages behind lifthull.h's
- * predicates: filter (pred_filter.gen.h), exact (pred_exact.c), perturbation
+ * predicates: filter (lh_filter.gen.h), exact (pred_exact.c), perturbation
  * (pred_sos.c).
  *
  * The homogeneous matrix. For points p_0..p_{N-1} in R^dim, row i is

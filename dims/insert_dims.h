@@ -1,0 +1,45 @@
+/*
+ * insert_dims.h — hull/'s insertion loop (insert_impl.h) for the Delaunay
+ * triangulation in a fixed dimension LH_DIM (defined by the includer, with
+ * LH_T_NAME): the lifted conflict test and orient_d call the generated filters
+ * for that dimension inline (lh_filter.gen.h) and fall back to the library's exact
+ * and perturbed stages only when a filter cannot decide. Same decisions as the
+ * generic path, so the same output.
+ */
+#include "engine.h"
+#include "lh_exact.h"
+#include "lh_filter.gen.h"
+
+#define LH_CAT_(a, b) a##b
+#define LH_CAT(a, b) LH_CAT_(a, b)
+
+/* insphere_sos of finite cell v (positively oriented) and vertex q. */
+static inline int lifted_sign_fixed(lh__eng *e, const int32_t *v, int32_t q)
+{
+    const double *p[LH_DIM + 2];
+    for (int k = 0; k <= LH_DIM; k++) p[k] = lh__eng_site(e, v[k]);
+    p[LH_DIM + 1] = lh__eng_site(e, q);
+    int s;
+    double det, err;
+    if (LH_CAT(lh__insphere_filter_, LH_DIM)(p, &s, &det, &err) && s) {
+        e->filtered++;
+        return s;
+    }
+    return lh__insphere_sos_fast(e->pred, LH_DIM, p); /* exact, then perturbed */
+}
+
+static inline int orient_fixed(lh__eng *e, const double *const *p)
+{
+    int s;
+    double det, err;
+    if (LH_CAT(lh__orient_filter_, LH_DIM)(p, &s, &det, &err)) {
+        e->filtered++;
+        return s;
+    }
+    return lh__orient_fast(e->pred, LH_DIM, p);
+}
+
+#define LH_T_D LH_DIM
+#define LH_T_FINITE_CONFLICT(e, v, q) (lifted_sign_fixed(e, v, q) == (e)->conflict_sign)
+#define LH_T_ORIENT(e, pts) orient_fixed(e, pts)
+#include "insert_impl.h"

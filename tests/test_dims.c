@@ -1,0 +1,58 @@
+/* test_dims.c — the fixed-dimension engines (dims/, d = 2..5) give exactly the
+ * generic engine's output on every family, furthest-site included, and the
+ * predicate counters still count every call. */
+#include "lh_families.h"
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static int same_output(const lh_tri *a, const lh_tri *b)
+{
+    int k = lh_tri_simplex_dim(a);
+    size_t c = lh_tri_count(a), h = lh_tri_hull_count(a), n = lh_tri_site_count(a);
+    if (c != lh_tri_count(b) || h != lh_tri_hull_count(b) || k != lh_tri_simplex_dim(b)) return 0;
+    size_t s = (size_t)(k + 1) * c * sizeof(int32_t);
+    return !memcmp(lh_tri_simplices(a), lh_tri_simplices(b), s) &&
+           !memcmp(lh_tri_neighbors(a), lh_tri_neighbors(b), s) &&
+           !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)k * h * sizeof(int32_t)) &&
+           !memcmp(lh_tri_vertex_simplex(a), lh_tri_vertex_simplex(b), n * sizeof(int32_t)) &&
+           !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(int32_t));
+}
+
+LH_TEST(fixed_dimension_engines_match_the_generic_one)
+{
+    static const size_t size[6] = {0, 0, 3000, 1500, 400, 200};
+    for (int d = 2; d <= 5 && !LH_FAILED(); d++)
+        for (int fam = 0; fam < F_COUNT && !LH_FAILED(); fam++)
+            for (int furthest = 0; furthest < 2 && !LH_FAILED(); furthest++) {
+                double *x = malloc(size[d] * d * sizeof *x);
+                lh_fam_seed((uint64_t)(57 * d + fam));
+                size_t n = lh_fam_make(fam, d, size[d], x);
+                lh_options o;
+                lh_options_default(&o);
+                o.furthest_site = furthest;
+                lh_tri *fixed, *generic;
+                lh_status s1 = lh_delaunay(d, n, x, &o, &fixed);
+                o.generic_engine = 1;
+                lh_status s2 = lh_delaunay(d, n, x, &o, &generic);
+                LH_EXPECT_EQ_INT(s1, s2);
+                if (s1 == LH_OK && s2 == LH_OK) {
+                    LH_EXPECT_TRUE(same_output(fixed, generic));
+                    LH_EXPECT_EQ_INT(lh_tri_check(fixed, NULL, 0), LH_OK);
+                }
+                if (LH_FAILED()) LH_NOTE("d=%d %s furthest=%d", d, lh_fam_name[fam], furthest);
+                lh_tri_free(fixed);
+                lh_tri_free(generic);
+                free(x);
+            }
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(fixed_dimension_engines_match_the_generic_one),
+    };
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
