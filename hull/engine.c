@@ -100,8 +100,10 @@ static lh_status copy_sites(lh__eng *e)
     const size_t d = (size_t)e->d;
     e->site_copy = lh__alloc(&e->alloc, (e->norder * d + 1) * sizeof *e->site_copy);
     if (!e->site_copy) return LH_ERR_NOMEM;
-    for (size_t i = 0; i < e->norder; i++)
-        memcpy(e->site_copy + i * d, lh__eng_input(e, (size_t)e->order[i]), d * sizeof *e->site_copy);
+    for (size_t i = 0; i < e->norder; i++) {
+        const double *p = lh__eng_input(e, (size_t)e->order[i]);
+        for (size_t j = 0; j < d; j++) e->site_copy[i * d + j] = p[j];
+    }
     e->site = e->site_copy;
     return LH_OK;
 }

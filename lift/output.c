@@ -8,36 +8,52 @@
 
 #include <string.h>
 
-/* The smallest finite vertex of cell c. */
-static int32_t min_vertex(const lh__eng *b, int32_t c)
-{
-    const int32_t *v = b->tds.vert + (size_t)c * b->nv;
-    int32_t m = v[0];
-    for (int k = 1; k < b->nv; k++)
-        if (v[k] < m) m = v[k];
-    return m;
-}
+#if defined(__GNUC__) || defined(__clang__)
+#define PREFETCH(p) __builtin_prefetch(p)
+#else
+#define PREFETCH(p) ((void)(p))
+#endif
+enum { AHEAD = 16 }; /* iterations between a prefetch and the use */
 
-/* Finite simplices, canonical and sorted, written straight into t->simp: a counting
- * sort on the smallest vertex places each cell's canonical tuple in its bucket, then
- * each bucket is sorted. cell[s] is the cell behind simplex s. */
-static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell)
+/* mark[c]: the smallest vertex of finite cell c, -1 for the others. */
+static void mark_min_vertex(lh__eng *b, int32_t *mark)
 {
     const int nv = b->nv;
+    for (int32_t c = 0; c < b->tds.top; c++) {
+        const int32_t *v = b->tds.vert + (size_t)c * nv;
+        int32_t m = v[0];
+        for (int k = 1; k < nv; k++)
+            if (v[k] < m) m = v[k];
+        mark[c] = m; /* LH__INF and LH__DEAD are negative */
+    }
+}
+
+/* Finite simplices, canonical and sorted, in t->simp: a counting sort of the cells
+ * on their smallest vertex (mark[]) gives cell[s], the cell behind simplex s; the
+ * canonical tuples are gathered in that order and each bucket is sorted. The
+ * random accesses are prefetched AHEAD iterations early. */
+static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell, const int32_t *mark)
+{
+    const int nv = b->nv;
+    const int32_t top = b->tds.top;
     size_t *start = lh__alloc(&t->alloc, (t->n + 2) * sizeof *start);
     if (!start) return LH_ERR_NOMEM;
     memset(start, 0, (t->n + 2) * sizeof *start);
-    for (int32_t c = 0; c < b->tds.top; c++)
-        if (!lh__tds_dead(&b->tds, c) && lh__eng_finite(b, c)) start[(size_t)min_vertex(b, c) + 2]++;
+    for (int32_t c = 0; c < top; c++) {
+        if (c + AHEAD < top && mark[c + AHEAD] >= 0) PREFETCH(start + mark[c + AHEAD] + 2);
+        if (mark[c] >= 0) start[(size_t)mark[c] + 2]++;
+    }
     for (size_t k = 2; k < t->n + 2; k++) start[k] += start[k - 1];
-    for (int32_t c = 0; c < b->tds.top; c++) {
-        if (lh__tds_dead(&b->tds, c) || !lh__eng_finite(b, c)) continue;
-        size_t s = start[(size_t)min_vertex(b, c) + 1]++;
-        const int32_t *v = b->tds.vert + (size_t)c * nv;
+    for (int32_t c = 0; c < top; c++) {
+        if (c + AHEAD < top && mark[c + AHEAD] >= 0) PREFETCH(start + mark[c + AHEAD] + 1);
+        if (mark[c] >= 0) cell[start[(size_t)mark[c] + 1]++] = c;
+    }
+    for (size_t s = 0; s < t->count; s++) {
+        if (s + AHEAD < t->count) PREFETCH(b->tds.vert + (size_t)cell[s + AHEAD] * nv);
+        const int32_t *v = b->tds.vert + (size_t)cell[s] * nv;
         int32_t *o = t->simp + s * nv;
         for (int k = 0; k < nv; k++) o[k] = v[k];
         lh__canonical(o, nv);
-        cell[s] = c;
     }
     /* Placing advanced start[v+1] to bucket v's end: bucket k is start[k]..start[k+1]. */
     int ok = lh__sort_buckets(&t->alloc, t->simp, cell, start, t->n, nv);
@@ -46,12 +62,17 @@ static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell)
 }
 
 /* Neighbour k of simplex s: across the facet opposite its k-th vertex. Cells are
- * visited in store order (neighbouring cells are mostly close in memory), so only
- * the simplex's two rows are far away. */
+ * visited in store order (neighbouring cells are mostly close in memory, so their
+ * out_of_cell entries too); the simplex's two rows are prefetched. */
 static void set_neighbours(lh__eng *b, lh_tri *t, const int32_t *out_of_cell)
 {
     const int nv = b->nv;
-    for (int32_t c = 0; c < b->tds.top; c++) {
+    const int32_t top = b->tds.top;
+    for (int32_t c = 0; c < top; c++) {
+        if (c + AHEAD < top && out_of_cell[c + AHEAD] >= 0) {
+            PREFETCH(t->simp + (size_t)out_of_cell[c + AHEAD] * nv);
+            PREFETCH(t->nbr + (size_t)out_of_cell[c + AHEAD] * nv);
+        }
         int32_t s = out_of_cell[c];
         if (s < 0) continue;
         const int32_t *cv = b->tds.vert + (size_t)c * nv, *cn = b->tds.nbr + (size_t)c * nv;
@@ -68,19 +89,23 @@ static void set_neighbours(lh__eng *b, lh_tri *t, const int32_t *out_of_cell)
 static lh_status extract_simplices(lh__eng *b, lh_tri *t, int32_t *out_of_cell)
 {
     const int nv = b->nv;
+    mark_min_vertex(b, out_of_cell);
     size_t count = 0;
-    for (int32_t c = 0; c < b->tds.top; c++)
-        if (!lh__tds_dead(&b->tds, c) && lh__eng_finite(b, c)) count++;
+    for (int32_t c = 0; c < b->tds.top; c++) count += out_of_cell[c] >= 0;
     t->count = count;
     int32_t *cell = lh__alloc(&t->alloc, (count + 1) * sizeof *cell);
     t->simp = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->simp);
-    lh_status st = cell && t->simp ? place_simplices(b, t, cell) : LH_ERR_NOMEM;
+    lh_status st = cell && t->simp ? place_simplices(b, t, cell, out_of_cell) : LH_ERR_NOMEM;
     if (st == LH_OK) {
         t->nbr = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->nbr);
         if (!t->nbr) st = LH_ERR_NOMEM;
     }
     if (st == LH_OK) {
-        for (size_t s = 0; s < count; s++) out_of_cell[cell[s]] = (int32_t)s;
+        for (int32_t c = 0; c < b->tds.top; c++) out_of_cell[c] = -1;
+        for (size_t s = 0; s < count; s++) {
+            if (s + AHEAD < count) PREFETCH(out_of_cell + cell[s + AHEAD]);
+            out_of_cell[cell[s]] = (int32_t)s;
+        }
         set_neighbours(b, t, out_of_cell);
     }
     lh__free(&t->alloc, cell);
@@ -91,7 +116,6 @@ lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
 {
     /* The stamps are no longer needed: their words become the cell -> simplex map. */
     int32_t *out_of_cell = (int32_t *)lh__tds_finish(&b->tds);
-    for (int32_t c = 0; c < b->tds.top; c++) out_of_cell[c] = -1;
     lh_status st = extract_simplices(b, t, out_of_cell);
     if (st == LH_OK) st = lh__eng_hull_facets(b, &t->hull, &t->hull_count);
     if (st == LH_OK) {
@@ -102,8 +126,11 @@ lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
                         * being vertices (furthest-site) */
         for (size_t i = 0; i < t->n; i++) t->vsimp[i] = -1;
         const int nv = b->nv;
-        for (size_t c = t->count; c-- > 0;)
+        for (size_t c = t->count; c-- > 0;) {
+            if (c >= AHEAD)
+                for (int k = 0; k < nv; k++) PREFETCH(t->vsimp + t->simp[(c - AHEAD) * nv + k]);
             for (int k = 0; k < nv; k++) t->vsimp[t->simp[c * nv + k]] = (int32_t)c;
+        }
     }
     lh__free(&b->tds.alloc, out_of_cell);
     return st;
