@@ -145,6 +145,7 @@ static int grow_region(lh__eng *e, int32_t start, uint32_t in, uint32_t out)
             if (st != out) {
                 if (conflict(e, n)) {
                     t->stamp[n] = in;
+                    LH_PREFETCH(t->nbr + (size_t)n * NV); /* read when n is expanded */
                     if (!push(t, &t->cells, &t->cells_cap, &t->ncells, n)) return 0;
                     continue;
                 }

@@ -86,29 +86,6 @@ uint32_t *lh__tds_finish(lh__tds *t)
     return s;
 }
 
-int32_t lh__tds_new_cell(lh__tds *t)
-{
-    int32_t c;
-    if (t->free_head >= 0) {
-        c = t->free_head;
-        t->free_head = t->nbr[(size_t)c * t->nv];
-    } else {
-        if (t->top == t->cap && lh__tds_reserve(t, 1) != LH_OK) return -1;
-        c = t->top++;
-    }
-    t->live++;
-    return c;
-}
-
-void lh__tds_kill(lh__tds *t, int32_t c)
-{
-    size_t base = (size_t)c * t->nv;
-    t->vert[base] = LH__DEAD;
-    t->nbr[base] = t->free_head;
-    t->free_head = c;
-    t->live--;
-}
-
 int lh__tds_mirror(const lh__tds *t, int32_t c, int32_t other)
 {
     const int32_t *n = t->nbr + (size_t)c * t->nv;

@@ -54,14 +54,33 @@ typedef struct lh__tds {
 
 lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, int32_t cap_hint);
 void lh__tds_release(lh__tds *t);
-/* A new cell with unset contents, or -1 when memory runs out. */
-int32_t lh__tds_new_cell(lh__tds *t);
 lh_status lh__tds_reserve(lh__tds *t, size_t extra);
+/* A new cell with unset contents, or -1 when memory runs out. */
+static inline int32_t lh__tds_new_cell(lh__tds *t)
+{
+    int32_t c;
+    if (t->free_head >= 0) {
+        c = t->free_head;
+        t->free_head = t->nbr[(size_t)c * t->nv];
+    } else {
+        if (t->top == t->cap && lh__tds_reserve(t, 1) != LH_OK) return -1;
+        c = t->top++;
+    }
+    t->live++;
+    return c;
+}
 /* Ends insertions: frees the insertion scratch and hands over the stamp array (one
  * 32-bit word per cell, t->cap of them) for the caller to reuse and free with
  * lh__free(&t->alloc, ...). No insertion may follow. */
 uint32_t *lh__tds_finish(lh__tds *t);
-void lh__tds_kill(lh__tds *t, int32_t c);
+static inline void lh__tds_kill(lh__tds *t, int32_t c)
+{
+    size_t base = (size_t)c * t->nv;
+    t->vert[base] = LH__DEAD;
+    t->nbr[base] = t->free_head;
+    t->free_head = c;
+    t->live--;
+}
 static inline int lh__tds_dead(const lh__tds *t, int32_t c) { return t->vert[(size_t)c * t->nv] == LH__DEAD; }
 /* Index k with nbr[c][k] == other; -1 if none. */
 int lh__tds_mirror(const lh__tds *t, int32_t c, int32_t other);
