@@ -65,7 +65,7 @@ void lh_cli_report_failure(const char *name, const lh_cli_points *pts, lh_status
         lh_affine_dim(pts->d, pts->n, pts->xyz, &k);
         fprintf(stderr, "%s: the %zu sites span an affine subspace of dimension %d, not %d: "
                 "nothing %d-dimensional to compute%s\n", name, pts->n, k, pts->d, pts->d,
-                k >= 2 ? " (lifthull delaunay -a triangulates within that subspace)" : "");
+                k >= 1 ? " (lifthull delaunay -a triangulates within that subspace)" : "");
     } else {
         fprintf(stderr, "%s: %s\n", name, lh_status_message(st));
     }

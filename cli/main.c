@@ -19,7 +19,7 @@ static void usage(FILE *out)
             "                     format (count, then one simplex per line, 0-based site\n"
             "                     indices); -s writes a summary instead; -u gives the\n"
             "                     furthest-site triangulation (Qhull's Qu); -a triangulates\n"
-            "                     points that span only a k-flat (2 <= k < d) within it\n"
+            "                     points that span only a k-flat (1 <= k < d) within it\n"
             "                     (k+1 indices per simplex) instead of failing.\n"
             "                     e.g.  rbox 1000 D3 | lifthull delaunay\n"
             "  hull [-s] [FILE]   convex hull facets of the points, qconvex's 'i' format\n"

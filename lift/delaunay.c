@@ -121,7 +121,7 @@ lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *
     }
     t->ndup = e.ndup;
     lh__eng_release(&e);
-    if (st == LH_ERR_DEGENERATE && t->affine_hull && affdim >= 2) st = lh__dt_flat(t, opt, affdim);
+    if (st == LH_ERR_DEGENERATE && t->affine_hull && affdim >= 1) st = lh__dt_flat(t, opt, affdim);
     if (st != LH_OK) {
         lh_tri_free(t);
         return st;

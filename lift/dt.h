@@ -73,8 +73,10 @@ lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *
                           lh__insert_pick pick, lh_tri **out);
 
 /* flat.c: t (sites copied, dup allocated) triangulated in the k-flat spanned by
- * its sites, 2 <= k < d. */
+ * its sites, 1 <= k < d. */
 lh_status lh__dt_flat(lh_tri *t, const lh_options *opt, int k);
+/* chain.c: the same for k = 1, t->frame set: segments along the line. */
+lh_status lh__dt_chain(lh_tri *t);
 
 /* output.c: the handle's arrays from a built engine. */
 lh_status lh__dt_extract(lh__eng *e, lh_tri *t);

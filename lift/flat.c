@@ -1,7 +1,7 @@
 /*
  * flat.c — the Delaunay triangulation of sites that span only a k-flat F of R^d
- * (2 <= k < d), within F (lh_options.affine_hull; CGAL's dD triangulation does the
- * same, Qhull stops with QH6154).
+ * (1 <= k < d), within F (lh_options.affine_hull; CGAL's dD triangulation does the
+ * same, Qhull stops with QH6154). k = 1 is chain.c's.
  *
  * Choose k coordinates J on which k+1 independent sites project to a nonzero
  * orient_k: the projection to J is then an affine bijection of F, exact (a copy of
@@ -78,6 +78,7 @@ lh_status lh__dt_flat(lh_tri *t, const lh_options *opt, int k)
 {
     lh_status st = find_frame(t, k);
     if (st != LH_OK) return st;
+    if (k == 1) return lh__dt_chain(t);
     double *proj = lh__alloc(&t->alloc, (t->n * (size_t)k + 1) * sizeof *proj);
     if (!proj) return LH_ERR_NOMEM;
     for (size_t i = 0; i < t->n; i++)

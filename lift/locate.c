@@ -137,7 +137,8 @@ static void locate_outside(lh_tri *t, const double *q, lh_location *out)
         const int32_t *v = t->hull + f * k;
         for (int j = 0; j < k; j++) p[j] = t->xyz + (size_t)v[j] * d;
         p[k] = q;
-        if (lh__frame_orient(t->pred, &t->frame, p) <= 0) continue; /* not strictly visible */
+        /* not strictly visible (k = 1: the two end sites, which have no orientation) */
+        if (k > 1 && lh__frame_orient(t->pred, &t->frame, p) <= 0) continue;
         double bary[MAXV];
         double dist2 = nearest_in_simplex(p, k, q, d, bary);
         if (dist2 < best) {

@@ -174,13 +174,96 @@ LH_TEST(location_and_insertion_in_the_flat)
     lh_tri_free(t);
 }
 
-LH_TEST(collinear_sites_keep_the_degenerate_status)
+LH_TEST(collinear_sites_give_the_chain)
 {
-    double x[] = {0, 0, 0, 1, 2, 3, 2, 4, 6, 3, 6, 9};
-    lh_status st;
-    lh_tri *t = flat_delaunay(3, 4, x, &st);
-    LH_EXPECT_EQ_INT(st, LH_ERR_DEGENERATE);
-    LH_EXPECT_TRUE(t == NULL);
+    /* Sites t * (1, 2, 3) + (5, 0, -1) for t in a shuffled 0..29, three repeated. */
+    enum { N = 33 };
+    double x[N * 3];
+    int tt[N];
+    for (int i = 0; i < 30; i++) tt[i] = (i * 7) % 30;
+    tt[30] = 4, tt[31] = 0, tt[32] = 29;
+    for (int i = 0; i < N; i++) {
+        x[3 * i] = tt[i] + 5;
+        x[3 * i + 1] = 2 * tt[i];
+        x[3 * i + 2] = 3 * tt[i] - 1;
+    }
+    for (int furthest = 0; furthest < 2; furthest++) {
+        lh_options o;
+        lh_options_default(&o);
+        o.affine_hull = 1;
+        o.furthest_site = furthest;
+        lh_tri *t;
+        LH_ASSERT_EQ_INT(lh_delaunay(3, N, x, &o, &t), LH_OK);
+        LH_EXPECT_EQ_INT(lh_tri_simplex_dim(t), 1);
+        LH_EXPECT_EQ_U64(lh_tri_count(t), furthest ? 1 : 29);
+        LH_EXPECT_EQ_U64(lh_tri_duplicate_count(t), 3);
+        LH_EXPECT_EQ_U64(lh_tri_hull_count(t), 2);
+        char msg[200] = "";
+        LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
+        const int32_t *s = lh_tri_simplices(t), *dup = lh_tri_duplicate_of(t);
+        for (size_t i = 0; i < lh_tri_count(t); i++) /* oriented along the line */
+            LH_EXPECT_EQ_INT(tt[s[2 * i + 1]] - tt[s[2 * i]], furthest ? 29 : 1);
+        LH_EXPECT_EQ_INT(dup[30], 22); /* t = 4 first appears as site 22 (7 * 22 % 30) */
+        LH_EXPECT_EQ_INT(dup[31], 0);  /* t = 0: site 0 */
+        LH_EXPECT_EQ_INT(dup[32], 17); /* t = 29: site 17 */
+        if (LH_FAILED()) LH_NOTE("furthest=%d: %s", furthest, msg);
+        lh_tri_free(t);
+    }
+    lh_tri *t;
+    lh_options o;
+    lh_options_default(&o);
+    o.affine_hull = 1;
+    LH_ASSERT_EQ_INT(lh_delaunay(3, N, x, &o, &t), LH_OK);
+    lh_location loc;
+    double in[3] = {5 + 2.5, 5, 6.5}, out[3] = {5 - 2, -4, -7}, off[3] = {6, 2, 3};
+    LH_ASSERT_EQ_INT(lh_tri_locate(t, in, -1, &loc), LH_OK);
+    LH_ASSERT_TRUE(loc.simplex >= 0);
+    const int32_t *s = lh_tri_simplices(t) + 2 * loc.simplex;
+    LH_EXPECT_TRUE((tt[s[0]] == 2 && tt[s[1]] == 3));
+    LH_ASSERT_EQ_INT(lh_tri_locate(t, out, -1, &loc), LH_OK);
+    LH_EXPECT_EQ_INT(loc.simplex, -1);
+    LH_EXPECT_TRUE(loc.hull_facet >= 0 && tt[lh_tri_hull_facets(t)[loc.hull_facet]] == 0);
+    LH_EXPECT_TRUE(fabs(loc.distance - sqrt(56.0)) < 1e-12); /* 2 units of (1, 2, 3) */
+    LH_EXPECT_EQ_INT(lh_tri_locate(t, off, -1, &loc), LH_ERR_INVALID_ARGUMENT);
+    lh_tri_free(t);
+    double one[6] = {1, 2, 3, 1, 2, 3}; /* a single distinct site: nothing to triangulate */
+    LH_EXPECT_EQ_INT(lh_delaunay(3, 2, one, &o, &t), LH_ERR_DEGENERATE);
+}
+
+/* Every allocation of the flat and line paths failing in turn: LH_ERR_NOMEM and
+ * nothing left allocated, until a run succeeds. */
+LH_TEST(every_allocation_failure_is_survived)
+{
+    double plane[60 * 3], line[20 * 3];
+    lh_fam_seed(8);
+    for (int i = 0; i < 60; i++) {
+        double u = (double)(lh_fam_rnd() % 1000), v = (double)(lh_fam_rnd() % 1000);
+        plane[3 * i] = u + v, plane[3 * i + 1] = u - v, plane[3 * i + 2] = 2 * u;
+    }
+    for (int i = 0; i < 20; i++) line[3 * i] = i % 7, line[3 * i + 1] = 2 * (i % 7), line[3 * i + 2] = 1;
+    for (int which = 0; which < 2; which++) {
+        long k = 1;
+        for (;; k++) {
+            lh_test_counter c = {0, k, 0};
+            lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
+            lh_options o;
+            lh_options_default(&o);
+            o.alloc = &a;
+            o.affine_hull = 1;
+            lh_tri *t;
+            lh_status st = lh_delaunay(3, which ? 20 : 60, which ? line : plane, &o, &t);
+            if (st == LH_OK) {
+                LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+                lh_tri_free(t);
+            } else {
+                LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
+            }
+            LH_EXPECT_EQ_INT(c.live, 0);
+            if (st == LH_OK || LH_FAILED()) break;
+        }
+        LH_EXPECT_GT_INT(k, 5);
+        if (LH_FAILED()) LH_NOTE("%s: failing allocation %ld", which ? "line" : "plane", k);
+    }
 }
 
 int main(int argc, char **argv)
@@ -189,7 +272,8 @@ int main(int argc, char **argv)
         LH_CASE(a_plane_in_3d_gives_the_2d_triangulation),
         LH_CASE(other_flats_pass_the_exact_check),
         LH_CASE(location_and_insertion_in_the_flat),
-        LH_CASE(collinear_sites_keep_the_degenerate_status),
+        LH_CASE(collinear_sites_give_the_chain),
+        LH_CASE(every_allocation_failure_is_survived),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -182,9 +182,10 @@ typedef struct lh_options {
                                   simplex's circumsphere encloses every site
                                   (default 0)                                        */
     int affine_hull;           /* lh_delaunay: 1 to triangulate sites that span only
-                                  a k-flat, 2 <= k < d, within it (k-simplices; see
-                                  lh_tri_simplex_dim) instead of failing with
-                                  LH_ERR_DEGENERATE (default 0)                      */
+                                  a k-flat, 1 <= k < d, within it (k-simplices; see
+                                  lh_tri_simplex_dim; k = 1: the segments between
+                                  consecutive sites of the line) instead of failing
+                                  with LH_ERR_DEGENERATE (default 0)                 */
     int generic_engine;        /* lh_delaunay: 1 to run the engine with the dimension
                                   a runtime value even where a fixed-dimension
                                   build exists (d = 2..5); the output is the same,
@@ -215,7 +216,7 @@ void lh_options_default(lh_options *opt);
  * than INT32_MAX - 1 sites); LH_ERR_NONFINITE (a NaN or infinity: lh_coords_validate
  * names the coordinate); LH_ERR_DEGENERATE (fewer than d+1 distinct sites, or all
  * sites in an affine subspace of dimension < d — lh_affine_dim tells which; with
- * opt->affine_hull only when that dimension is below 2: collinear sites or one);
+ * opt->affine_hull only for a single distinct site);
  * LH_ERR_NOMEM. On failure *out is NULL and nothing is leaked.
  */
 typedef struct lh_tri lh_tri;
@@ -254,7 +255,8 @@ const int32_t *lh_tri_simplices(const lh_tri *t);
  * j-th vertex; -1 across the convex hull. */
 const int32_t *lh_tri_neighbors(const lh_tri *t);
 /* Convex hull facets: lh_tri_hull_count facets of k site indices each, ordered so that
- * orient_k(facet, p) > 0 for points p strictly outside the hull. */
+ * orient_k(facet, p) > 0 for points p strictly outside the hull (k = 1: the two end
+ * sites of the line, which have no orientation). */
 size_t lh_tri_hull_count(const lh_tri *t);
 const int32_t *lh_tri_hull_facets(const lh_tri *t);
 /* Per site: one simplex incident to it (-1 for a merged duplicate, or, furthest-site,
