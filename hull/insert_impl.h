@@ -27,11 +27,11 @@
  * boundary facet that contains the ridge R = c \ {v_k, v_j} (the cavity's boundary
  * is a closed pseudo-manifold: every ridge is in exactly two boundary facets). The
  * two are paired through a hash table keyed on R. Each new cell's old vertices are
- * sorted once; a ridge is that list minus one entry. When a ridge has at most two
- * vertices (d <= 3) the key is the ridge itself; otherwise it is the sum of a mix
- * of its vertices (one subtraction from the cell's sum) and equal keys are
- * confirmed by comparing the sorted lists, so a collision costs a probe, never a
- * wrong link.
+ * sorted once; a ridge is that list minus one entry. When its d-1 vertices fit in
+ * 64 bits (t->vbits each: always for d <= 3, and for n below 2^21 in 4D, 2^16 in 5D)
+ * the key is the ridge itself, packed; otherwise it is the sum of a mix of its
+ * vertices (one subtraction from the cell's sum) and equal keys are confirmed by
+ * comparing the sorted lists, so a collision costs a probe, never a wrong link.
  */
 #include "engine.h"
 #include "lh_exact.h"
@@ -198,22 +198,21 @@ static int same_ridge(const lh__tds *t, size_t a, int da, size_t b, int db)
     return 1;
 }
 
-/* The key of the ridge of sorted list s (m entries, sum of mixes `sum`) without
- * entry drop: the ridge itself when it has at most two vertices. */
-static inline uint64_t ridge_key(const int32_t *s, int m, int drop, uint64_t sum)
+/* The key of the ridge of sorted list s (m entries) without entry drop: packed
+ * (vbits per vertex + 1) when exact, else the sum of mixes `sum` minus drop's. */
+static inline uint64_t ridge_key(const int32_t *s, int m, int drop, uint64_t sum, int vbits, int exact)
 {
-    if (m == 2) return (uint32_t)s[1 - drop];
-    if (m == 3) {
-        int a = drop == 0 ? 1 : 0, c = drop == 2 ? 1 : 2;
-        return (uint64_t)(uint32_t)s[a] << 32 | (uint32_t)s[c];
-    }
-    return sum - mix(s[drop]);
+    if (!exact) return sum - mix(s[drop]);
+    uint64_t k = 0;
+    for (int x = 0; x < m; x++)
+        if (x != drop) k = k << vbits | (uint64_t)(uint32_t)(s[x] + 1);
+    return k;
 }
 
 /* Pairs the new cells t->fresh[] across their ridges (see the top). */
 static void link_new_cells(lh__tds *t)
 {
-    const int m = NV - 1, exact = m <= 3;
+    const int m = NV - 1, vbits = t->vbits, exact = (m - 1) * vbits <= 64;
     const uint32_t round = t->round;
     const size_t mask = t->ridge_cap - 1;
     for (size_t b = 0; b < t->nbound; b++) sort_old_vertices(t, b, t->fresh[b], t->bound[2 * b + 1]);
@@ -223,7 +222,7 @@ static void link_new_cells(lh__tds *t)
         if (!exact)
             for (int i = 0; i < m; i++) sum += mix(s[i]);
         for (int i = 0; i < m; i++) {
-            uint64_t key = ridge_key(s, m, i, sum);
+            uint64_t key = ridge_key(s, m, i, sum, vbits, exact);
             for (size_t h = (size_t)((key * UINT64_C(0x9e3779b97f4a7c15)) >> 40) & mask;; h = (h + 1) & mask) {
                 lh__ridge *r = t->ridge + h;
                 if (r->round != round) { /* free: the first of the pair */

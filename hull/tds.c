@@ -40,6 +40,7 @@ lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, int32_t ca
     memset(t, 0, sizeof *t);
     if (!lh__allocator_init(&t->alloc, alloc)) return LH_ERR_INVALID_ARGUMENT;
     t->nv = nv;
+    t->vbits = 32;
     t->free_head = -1;
     return set_capacity(t, cap_hint > 16 ? cap_hint : 16);
 }

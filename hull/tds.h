@@ -26,13 +26,17 @@ typedef struct lh__ridge {
     uint32_t bd;    /* b << 4 | drop: the new cell fresh[b], and the index in its
                        sorted list of the vertex not in the ridge */
 } lh__ridge;
-#define LH__RIDGE_PAIRED UINT64_MAX /* no exact key has the top bit; hashed keys
-                                       that do are told apart by the comparison */
+#define LH__RIDGE_PAIRED UINT64_MAX /* no exact key is all ones (a vertex + 1 is
+                                       below 2^vbits - 1 ... see lh__tds_vertex_bound);
+                                       hashed keys that are get compared */
 #define LH__MAX_NEW_CELLS (INT32_C(1) << 27) /* b fits in bd */
 
 typedef struct lh__tds {
     lh_allocator alloc;
     int nv;           /* vertices (and neighbours) per cell */
+    int vbits;        /* bits that hold every vertex index + 1 (LH__INF + 1 = 0): ridge
+                         keys pack the vertices exactly when they fit (insert_impl.h);
+                         32 unless the owner knows better (lh__tds_vertex_bound) */
     int32_t *vert;    /* nv per cell */
     int32_t *nbr;     /* nv per cell */
     uint32_t *stamp;  /* per cell: visit marks of the current insertion */
@@ -55,6 +59,13 @@ typedef struct lh__tds {
 lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, int32_t cap_hint);
 void lh__tds_release(lh__tds *t);
 lh_status lh__tds_reserve(lh__tds *t, size_t extra);
+/* Declares every vertex index below `bound` (sharper ridge keys). */
+static inline void lh__tds_vertex_bound(lh__tds *t, size_t bound)
+{
+    int b = 1;
+    while (b < 32 && ((size_t)1 << b) <= bound) b++;
+    t->vbits = b;
+}
 /* A new cell with unset contents, or -1 when memory runs out. */
 static inline int32_t lh__tds_new_cell(lh__tds *t)
 {

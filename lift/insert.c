@@ -150,6 +150,7 @@ static lh_status rebuild_cells(lh__eng *e, const lh_tri *t)
     if (cells >= INT32_MAX / 2) return LH_ERR_TOO_LARGE;
     lh_status st = lh__tds_init(&e->tds, &e->alloc, nv, (int32_t)(cells + cells / 4 + 256));
     if (st != LH_OK) return st;
+    lh__tds_vertex_bound(&e->tds, e->n + 1);
     lh__tds *tds = &e->tds;
     for (size_t s = 0; s < t->count; s++) {
         int32_t c = lh__tds_new_cell(tds); /* c == s: fresh store, capacity reserved */
