@@ -3,23 +3,11 @@
  * predicate counters still count every call. */
 #include "lh_families.h"
 #include "lh_test.h"
+#include "lh_tri_same.h"
 #include "lifthull.h"
 
 #include <stdlib.h>
 #include <string.h>
-
-static int same_output(const lh_tri *a, const lh_tri *b)
-{
-    int k = lh_tri_simplex_dim(a);
-    size_t c = lh_tri_count(a), h = lh_tri_hull_count(a), n = lh_tri_site_count(a);
-    if (c != lh_tri_count(b) || h != lh_tri_hull_count(b) || k != lh_tri_simplex_dim(b)) return 0;
-    size_t s = (size_t)(k + 1) * c * sizeof(int32_t);
-    return !memcmp(lh_tri_simplices(a), lh_tri_simplices(b), s) &&
-           !memcmp(lh_tri_neighbors(a), lh_tri_neighbors(b), s) &&
-           !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)k * h * sizeof(int32_t)) &&
-           !memcmp(lh_tri_vertex_simplex(a), lh_tri_vertex_simplex(b), n * sizeof(int32_t)) &&
-           !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(int32_t));
-}
 
 LH_TEST(fixed_dimension_engines_match_the_generic_one)
 {
@@ -39,7 +27,7 @@ LH_TEST(fixed_dimension_engines_match_the_generic_one)
                 lh_status s2 = lh_delaunay(d, n, x, &o, &generic);
                 LH_EXPECT_EQ_INT(s1, s2);
                 if (s1 == LH_OK && s2 == LH_OK) {
-                    LH_EXPECT_TRUE(same_output(fixed, generic));
+                    LH_EXPECT_TRUE(lh_test_same_tri(fixed, generic));
                     LH_EXPECT_EQ_INT(lh_tri_check(fixed, NULL, 0), LH_OK);
                 }
                 if (LH_FAILED()) LH_NOTE("d=%d %s furthest=%d", d, lh_fam_name[fam], furthest);

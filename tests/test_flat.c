@@ -5,6 +5,7 @@
  * Delaunay complex work in the flat. */
 #include "lh_families.h"
 #include "lh_test.h"
+#include "lh_tri_same.h"
 #include "lifthull.h"
 
 #include <math.h>
@@ -15,17 +16,6 @@
 static void quantise(double *x, size_t m)
 {
     for (size_t i = 0; i < m; i++) x[i] = ldexp(floor(ldexp(x[i], 40)), -40);
-}
-
-static int same_arrays(const lh_tri *a, const lh_tri *b, int k)
-{
-    size_t c = lh_tri_count(a), h = lh_tri_hull_count(a), n = lh_tri_site_count(a);
-    if (c != lh_tri_count(b) || h != lh_tri_hull_count(b) || n != lh_tri_site_count(b)) return 0;
-    size_t s = (size_t)(k + 1) * c * sizeof(int32_t);
-    return !memcmp(lh_tri_simplices(a), lh_tri_simplices(b), s) &&
-           !memcmp(lh_tri_neighbors(a), lh_tri_neighbors(b), s) &&
-           !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)k * h * sizeof(int32_t)) &&
-           !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(int32_t));
 }
 
 static lh_tri *flat_delaunay(int d, size_t n, const double *x, lh_status *st)
@@ -63,7 +53,7 @@ LH_TEST(a_plane_in_3d_gives_the_2d_triangulation)
             LH_EXPECT_EQ_INT(lh_tri_simplex_dim(flat), 2);
             char msg[200] = "";
             LH_EXPECT_EQ_INT(lh_tri_check(flat, msg, sizeof msg), LH_OK);
-            LH_EXPECT_TRUE(same_arrays(flat, want, 2));
+            LH_EXPECT_TRUE(lh_test_same_tri(flat, want));
             size_t c1, c2;
             const int32_t *o1, *v1, *o2, *v2;
             LH_EXPECT_EQ_INT(lh_tri_complex(flat, &c1, &o1, &v1), LH_OK);
@@ -166,7 +156,7 @@ LH_TEST(location_and_insertion_in_the_flat)
     LH_ASSERT_EQ_INT(lh_tri_insert(t, 50, x + 3 * (N - 50)), LH_OK);
     lh_tri *all = flat_delaunay(3, N, x, &st);
     LH_ASSERT_EQ_INT(st, LH_OK);
-    LH_EXPECT_TRUE(same_arrays(t, all, 2));
+    LH_EXPECT_TRUE(lh_test_same_tri(t, all));
     LH_ASSERT_EQ_INT(lh_tri_insert(t, 1, off), LH_OK);
     LH_EXPECT_EQ_INT(lh_tri_simplex_dim(t), 3);
     LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);

@@ -3,27 +3,12 @@
  * failures leave the triangulation unchanged. */
 #include "lh_families.h"
 #include "lh_test.h"
+#include "lh_tri_same.h"
 #include "lifthull.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* Whether two handles have the same arrays. */
-static int same_tri(const lh_tri *a, const lh_tri *b)
-{
-    int d = lh_tri_dim(a);
-    size_t n = lh_tri_site_count(a), c = lh_tri_count(a), h = lh_tri_hull_count(a);
-    if (d != lh_tri_dim(b) || n != lh_tri_site_count(b) || c != lh_tri_count(b) ||
-        h != lh_tri_hull_count(b) || lh_tri_duplicate_count(a) != lh_tri_duplicate_count(b))
-        return 0;
-    size_t s = (size_t)(d + 1) * c * sizeof(int32_t);
-    return !memcmp(lh_tri_simplices(a), lh_tri_simplices(b), s) &&
-           !memcmp(lh_tri_neighbors(a), lh_tri_neighbors(b), s) &&
-           !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)d * h * sizeof(int32_t)) &&
-           !memcmp(lh_tri_vertex_simplex(a), lh_tri_vertex_simplex(b), n * sizeof(int32_t)) &&
-           !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(int32_t));
-}
 
 /* Builds from the first `first` sites, inserts the rest in `batches` batches, and
  * compares with lh_delaunay of all n; the exact check passes on the result. */
@@ -55,7 +40,7 @@ static void insert_matches_build(lh_test_state *lh_t_, int d, size_t n, const do
     }
     char msg[256] = "";
     LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
-    LH_EXPECT_TRUE(same_tri(t, all));
+    LH_EXPECT_TRUE(lh_test_same_tri(t, all));
     if (LH_FAILED()) LH_NOTE("%s (d=%d n=%zu first=%zu batches=%d): %s", what, d, n, first, batches, msg);
     lh_tri_free(t);
     lh_tri_free(all);
