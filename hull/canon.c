@@ -6,26 +6,6 @@
 
 #include <string.h>
 
-/* Canonical order of an oriented tuple: increasing (insertion sort, counting the
- * exchanges' parity), then the last two exchanged if the sort was an odd
- * permutation (so the orientation is kept). */
-void lh__canonical(int32_t *v, int m)
-{
-    int parity = 0;
-    for (int i = 1; i < m; i++) {
-        int32_t x = v[i];
-        int j = i;
-        for (; j > 0 && x < v[j - 1]; j--) v[j] = v[j - 1];
-        v[j] = x;
-        parity ^= (i - j) & 1;
-    }
-    if (parity) {
-        int32_t x = v[m - 1];
-        v[m - 1] = v[m - 2];
-        v[m - 2] = x;
-    }
-}
-
 static int tuple_less(const int32_t *x, const int32_t *y, int m)
 {
     for (int k = 0; k < m; k++)

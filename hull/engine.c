@@ -51,11 +51,8 @@ int lh__eng_finite(const lh__eng *e, int32_t c)
     return e->tds.vert[(size_t)c * e->nv] != LH__INF;
 }
 
-/* The first d+2 cells: the simplex of vertices 0..d, positively oriented, and one
- * infinite cell per facet. An infinite cell keeps LH__INF at position 0 (the cavity
- * insertion preserves that: a new cell replaces one vertex of an old one), and is
- * oriented by an odd permutation of the simplex with LH__INF in place of the
- * vertex it drops. */
+/* The first d+2 cells: the simplex of vertices 0..d, positively oriented, and the
+ * infinite cell over each of its facets (lh__eng_make_infinite). */
 static lh_status start(lh__eng *e)
 {
     const int nv = e->nv;
@@ -74,15 +71,10 @@ static lh_status start(lh__eng *e)
         if (c < 0) return LH_ERR_NOMEM;
         cells[i] = c;
         int32_t *v = e->tds.vert + (size_t)c * nv;
-        memcpy(v, s, (size_t)nv * sizeof *v);
-        if (i > 0 && i < nv) { /* vertex i dropped: exchange positions 0 and i */
-            v[i] = v[0];
-            v[0] = LH__INF;
-        } else if (i == 0) { /* vertex 0 dropped: exchange positions 1 and 2 */
-            v[0] = LH__INF;
-            v[1] = s[2];
-            v[2] = s[1];
-        }
+        if (i < nv)
+            lh__eng_make_infinite(v, s, nv, i);
+        else
+            memcpy(v, s, (size_t)nv * sizeof *v);
     }
     lh__tds_link_all(&e->tds, cells, nv + 1);
     e->hint = cells[nv];

@@ -138,15 +138,47 @@ lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const i
  * lh__eng_build's: LH__INF at position 0 of every infinite cell. */
 lh_status lh__eng_insert(lh__eng *e, const int32_t *list, size_t count);
 
+/* v: the infinite cell over the facet of finite cell s (positively oriented) that
+ * drops vertex k: LH__INF at position 0 (an invariant the cavity insertion keeps),
+ * oriented by an odd permutation of s with LH__INF in place of vertex k. */
+static inline void lh__eng_make_infinite(int32_t *v, const int32_t *s, int nv, int k)
+{
+    for (int j = 0; j < nv; j++) v[j] = s[j];
+    if (k > 0) { /* exchange positions 0 and k */
+        v[k] = v[0];
+        v[0] = LH__INF;
+    } else { /* exchange positions 1 and 2 */
+        v[0] = LH__INF;
+        v[1] = s[2];
+        v[2] = s[1];
+    }
+}
+
 /* Whether cell c is finite. */
 int lh__eng_finite(const lh__eng *e, int32_t c);
 /* The convex hull facets: d site indices each, ordered so that orient_d(facet, p) > 0
  * for p outside, in canonical order (see lh__canonical), sorted. Allocates *out. */
 lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count);
 
-/* canon.c: canonical order of an oriented tuple (increasing, then the last two
- * exchanged if that took an odd permutation). */
-void lh__canonical(int32_t *v, int m);
+/* Canonical order of an oriented tuple: increasing (insertion sort, counting the
+ * exchanges' parity), then the last two exchanged if the sort was an odd
+ * permutation, so that the orientation is kept. */
+static inline void lh__canonical(int32_t *v, int m)
+{
+    int parity = 0;
+    for (int i = 1; i < m; i++) {
+        int32_t x = v[i];
+        int j = i;
+        for (; j > 0 && x < v[j - 1]; j--) v[j] = v[j - 1];
+        v[j] = x;
+        parity ^= (i - j) & 1;
+    }
+    if (parity) {
+        int32_t x = v[m - 1];
+        v[m - 1] = v[m - 2];
+        v[m - 2] = x;
+    }
+}
 /* canon.c: sorts count tuples of m site indices (< n) lexicographically from v into
  * out; order[i] = index in v of out's tuple i. Returns 0 on no memory. */
 int lh__sort_tuples(const lh_allocator *a, const int32_t *v, int m, size_t count,

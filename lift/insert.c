@@ -97,20 +97,6 @@ static lh_status new_site_order(lh_tri *t, const double *xyz, const int32_t *dup
     return st;
 }
 
-/* The infinite cell across hull facet k of finite cell s: LH__INF at position 0,
- * oriented as in lh__eng_build (an odd permutation of s with LH__INF for v_k). */
-static void make_infinite(int32_t *v, const int32_t *sv, int nv, int k)
-{
-    memcpy(v, sv, (size_t)nv * sizeof *v);
-    v[k] = v[0];
-    v[0] = LH__INF;
-    if (k == 0) {
-        int32_t x = v[1];
-        v[1] = v[2];
-        v[2] = x;
-    }
-}
-
 /* The position of x in v (x must be there). */
 static int index_of(const int32_t *v, int32_t x)
 {
@@ -161,7 +147,7 @@ static lh_status rebuild_cells(lh__eng *e, const lh_tri *t)
             int32_t n = t->nbr[s * nv + k];
             if (n < 0) {
                 n = lh__tds_new_cell(tds);
-                make_infinite(tds->vert + (size_t)n * nv, t->simp + s * nv, nv, k);
+                lh__eng_make_infinite(tds->vert + (size_t)n * nv, t->simp + s * nv, nv, k);
                 tds->nbr[(size_t)n * nv] = (int32_t)s;
                 for (int j = 1; j < nv; j++) tds->nbr[(size_t)n * nv + j] = -1;
             }
