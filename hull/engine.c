@@ -122,7 +122,7 @@ lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
     if (*affdim < e->d) return LH_ERR_DEGENERATE;
     if ((st = copy_sites(e)) != LH_OK) return st;
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
-    lh__tds_vertex_bound(&e->tds, e->norder + 1);
+    if (!e->hashed_ridges) lh__tds_vertex_bound(&e->tds, e->norder + 1);
     if ((st = start(e)) != LH_OK) return st;
     lh__insert_fn insert = e->insert ? e->insert : lh__eng_insert_generic;
     if ((st = insert(e, (size_t)e->nv, e->norder - (size_t)e->nv, NULL)) != LH_OK) return st;

@@ -1,0 +1,79 @@
+/* test_ridges.c — the engine's hashed ridge keys (insert_impl.h), which lh_delaunay
+ * uses only when a ridge's packed vertices do not fit in 64 bits (large n in 4D and
+ * up): forced here at small n, they must give exactly lh_delaunay's simplices. */
+#include "engine.h"
+#include "lh_families.h"
+#include "lh_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* The lifted test, through the public predicate. */
+static int lifted(void *user, const int32_t *v, int32_t q)
+{
+    lh__eng *e = user;
+    const double *p[LH__ENGINE_MAX_DIM + 2];
+    for (int k = 0; k <= e->d; k++) p[k] = lh__eng_site(e, v[k]);
+    p[e->d + 1] = lh__eng_site(e, q);
+    return lh_insphere_sos(e->pred, e->d, p) < 0;
+}
+
+static int nv_global; /* qsort has no context; the test is single-threaded */
+static int tuple_cmp(const void *a, const void *b)
+{
+    const int32_t *x = a, *y = b;
+    for (int k = 0; k < nv_global; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
+
+LH_TEST(hashed_ridge_keys_give_the_same_triangulation)
+{
+    static const size_t size[7] = {0, 0, 0, 0, 300, 120, 50};
+    int fams[3] = {F_CUBE, F_SPHERE_EXACT, F_GRID};
+    for (int d = 4; d <= 6 && !LH_FAILED(); d++)
+        for (int f = 0; f < 3 && !LH_FAILED(); f++) {
+            double *x = malloc(size[d] * d * sizeof *x);
+            int32_t *dup = malloc(size[d] * sizeof *dup);
+            lh_fam_seed((uint64_t)(3 * d + f));
+            size_t n = lh_fam_make(fams[f], d, size[d], x);
+            lh__eng e;
+            LH_ASSERT_EQ_INT(lh__eng_init(&e, NULL, d, n, x, dup, NULL), LH_OK);
+            e.finite_conflict = lifted;
+            e.user = &e;
+            e.inside_conflicts = 1;
+            e.hashed_ridges = 1;
+            int affdim;
+            LH_EXPECT_EQ_INT(lh__eng_build(&e, 1024, &affdim), LH_OK);
+            const int nv = d + 1;
+            int32_t *cells = malloc((size_t)e.tds.top * nv * sizeof *cells);
+            size_t count = 0;
+            for (int32_t c = 0; c < e.tds.top; c++) {
+                if (lh__tds_dead(&e.tds, c) || !lh__eng_finite(&e, c)) continue;
+                memcpy(cells + count * nv, e.tds.vert + (size_t)c * nv, (size_t)nv * sizeof *cells);
+                lh__canonical(cells + count * nv, nv);
+                count++;
+            }
+            nv_global = nv;
+            qsort(cells, count, (size_t)nv * sizeof *cells, tuple_cmp);
+            lh_tri *t;
+            LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
+            LH_EXPECT_EQ_U64(count, lh_tri_count(t));
+            if (count == lh_tri_count(t))
+                LH_EXPECT_TRUE(!memcmp(cells, lh_tri_simplices(t), count * nv * sizeof *cells));
+            if (LH_FAILED()) LH_NOTE("d=%d %s", d, lh_fam_name[fams[f]]);
+            lh_tri_free(t);
+            lh__eng_release(&e);
+            free(cells);
+            free(dup);
+            free(x);
+        }
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(hashed_ridge_keys_give_the_same_triangulation),
+    };
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
