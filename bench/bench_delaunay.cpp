@@ -40,6 +40,8 @@
 
 #include <lifthull.h>
 
+#include "bench_machine.h"
+
 #include <CGAL/Delaunay_triangulation.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -496,34 +498,6 @@ Sample spawn_run(const std::string &exe, const std::string &tool, int d, size_t 
     if (field("hull_seconds", hw)) s.hull_wall = std::atof(hw.c_str());
     s.ok = true;
     return s;
-}
-
-std::string cpu_model() {
-    std::ifstream f("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(f, line))
-        if (line.rfind("model name", 0) == 0) {
-            auto p = line.find(':');
-            if (p != std::string::npos) {
-                std::string s = line.substr(p + 1);
-                s.erase(0, s.find_first_not_of(" \t"));
-                return s;
-            }
-        }
-    return "unknown";
-}
-
-std::string mem_total() {
-    std::ifstream f("/proc/meminfo");
-    std::string line;
-    while (std::getline(f, line))
-        if (line.rfind("MemTotal:", 0) == 0) {
-            long kb = std::atol(line.c_str() + 9);
-            char b[32];
-            std::snprintf(b, sizeof b, "%.1f GiB", double(kb) / (1024.0 * 1024.0));
-            return b;
-        }
-    return "unknown";
 }
 
 std::string fmt_n(size_t n) {

@@ -28,6 +28,8 @@
 
 #include <lifthull.h>
 
+#include "bench_machine.h"
+
 #include <CGAL/Epick_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/version.h>
@@ -460,23 +462,6 @@ template <int D, Pred P> Row run_row(lh_pred *ctx, Input in, double bar, bool ex
     std::fprintf(stderr, "  %-11s %-15s lifthull %9.1f ns  CGAL %9.1f ns  exact %.4f\n",
                  row.pred.c_str(), row.input.c_str(), row.lh_ns, row.cg_ns, row.exact_frac);
     return row;
-}
-
-// ---- machine info ------------------------------------------------------------------------
-
-std::string cpu_model() {
-    std::ifstream f("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(f, line))
-        if (line.rfind("model name", 0) == 0) {
-            auto p = line.find(':');
-            if (p != std::string::npos) {
-                std::string s = line.substr(p + 1);
-                s.erase(0, s.find_first_not_of(" \t"));
-                return s;
-            }
-        }
-    return "unknown";
 }
 
 std::string fmt_frac(double x) {

@@ -115,6 +115,10 @@ lh_status lh__eng_order(lh__eng *e);
 int lh__eng_initial_simplex(lh__eng *e);
 /* order.c: whether pts[k] is outside the affine hull of pts[0..k-1] in R^d. */
 int lh__affine_independent(lh_pred *pred, int d, const double *const *pts, int k);
+/* order.c: the first k coordinates J (increasing; subsets in bit-mask order) on which
+ * pts[0..k] project to a simplex of nonzero volume; 0 if none (then pts[0..k] are
+ * affinely dependent). */
+int lh__independent_coords(lh_pred *pred, int d, const double *const *pts, int k, int *J);
 /* All of the above, then every site inserted. LH_ERR_DEGENERATE when the sites
  * span less than R^d (*affdim tells the dimension). Afterwards the cells hold the
  * caller's site indices. */

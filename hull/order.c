@@ -159,6 +159,24 @@ lh_status lh__eng_order(lh__eng *b)
     return st;
 }
 
+int lh__independent_coords(lh_pred *pred, int d, const double *const *pts, int k, int *J)
+{
+    double proj[LH__ENGINE_MAX_DIM + 1][LH__ENGINE_MAX_DIM];
+    const double *pp[LH__ENGINE_MAX_DIM + 1];
+    for (int mask = 0; mask < (1 << d); mask++) {
+        int m = 0;
+        for (int j = 0; j < d; j++)
+            if (mask & (1 << j)) J[m++] = j;
+        if (m != k) continue;
+        for (int i = 0; i <= k; i++) {
+            for (int j = 0; j < k; j++) proj[i][j] = pts[i][J[j]];
+            pp[i] = proj[i];
+        }
+        if (lh_orient(pred, k, pp)) return 1;
+    }
+    return 0;
+}
+
 /* Whether pts[k] is outside the affine hull of pts[0..k-1] (affinely independent, in
  * R^d), exactly: some (k+1)-subset K of the coordinates gives a nonzero orient_k of
  * the points projected onto K (a nonzero maximal minor of [1, p]). */
@@ -166,20 +184,8 @@ int lh__affine_independent(lh_pred *pred, int d, const double *const *pts, int k
 {
     if (k == 0) return 1;
     if (k == d) return lh_orient(pred, d, pts) != 0;
-    double proj[LH__ENGINE_MAX_DIM + 1][LH__ENGINE_MAX_DIM];
-    const double *pp[LH__ENGINE_MAX_DIM + 1];
-    for (int mask = 0; mask < (1 << d); mask++) {
-        int cols[LH__ENGINE_MAX_DIM], m = 0;
-        for (int j = 0; j < d; j++)
-            if (mask & (1 << j)) cols[m++] = j;
-        if (m != k) continue;
-        for (int i = 0; i <= k; i++) {
-            for (int j = 0; j < k; j++) proj[i][j] = pts[i][cols[j]];
-            pp[i] = proj[i];
-        }
-        if (lh_orient(pred, k, pp)) return 1;
-    }
-    return 0;
+    int J[LH__ENGINE_MAX_DIM];
+    return lh__independent_coords(pred, d, pts, k, J);
 }
 
 /* Moves d+1 affinely independent sites to the front of the insertion order, taking

@@ -39,25 +39,13 @@ static int flat_conflict(void *user, const int32_t *v, int32_t q)
     return x->furthest ? s > 0 : s < 0;
 }
 
-/* J: the first k coordinates (in subset order) on which the sites order[0..k] of
- * the ordered engine o project to a simplex of nonzero volume. */
+/* J: coordinates on which the sites order[0..k] of the ordered engine o project to a
+ * simplex of nonzero volume. */
 static int choose_coordinates(lh__eng *o, int k, int *J)
 {
-    const int d = o->d;
-    double proj[LH_DELAUNAY_MAX_DIM + 1][LH_DELAUNAY_MAX_DIM];
-    const double *pp[LH_DELAUNAY_MAX_DIM + 1];
-    for (int mask = 0; mask < (1 << d); mask++) {
-        int m = 0;
-        for (int j = 0; j < d; j++)
-            if (mask & (1 << j)) J[m++] = j;
-        if (m != k) continue;
-        for (int i = 0; i <= k; i++) {
-            for (int j = 0; j < k; j++) proj[i][j] = lh__eng_input(o, (size_t)o->order[i])[J[j]];
-            pp[i] = proj[i];
-        }
-        if (lh_orient(o->pred, k, pp)) return 1;
-    }
-    return 0;
+    const double *pts[LH_DELAUNAY_MAX_DIM + 1];
+    for (int i = 0; i <= k; i++) pts[i] = lh__eng_input(o, (size_t)o->order[i]);
+    return lh__independent_coords(o->pred, o->d, pts, k, J);
 }
 
 /* t->frame for the sites of t. */

@@ -3,6 +3,7 @@
  * output depends only on the site set; bad input gets its status; every allocation
  * failure is survived without a leak. */
 #include "lh_families.h"
+#include "lh_api_test.h"
 #include "lh_test.h"
 #include "lifthull.h"
 
@@ -234,34 +235,12 @@ LH_TEST(the_check_rejects_what_is_not_delaunay)
 }
 
 
-/* One run of an entry point with the given allocator; it frees what it built and
- * returns its status (checking on failure that it handed nothing back). */
-typedef lh_status (*alloc_run)(lh_test_state *lh_t_, const lh_allocator *a, const double *x);
-
-/* Runs `run` with the k-th allocation failing, k = 1, 2, ... until a run succeeds:
- * every failing run must report LH_ERR_NOMEM and leave nothing allocated. Returns the
- * number of runs. */
-static long survive_every_failure(lh_test_state *lh_t_, alloc_run run, const double *x)
-{
-    for (long k = 1;; k++) {
-        lh_test_counter c = {0, k, 0};
-        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
-        lh_status st = run(lh_t_, &a, x);
-        LH_EXPECT_EQ_INT(c.live, 0);
-        if (st == LH_OK) return k;
-        LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
-        if (LH_FAILED()) {
-            LH_NOTE("failing allocation %ld", k);
-            return k;
-        }
-    }
-}
-
 enum { ALLOC_N = 400 };
 
 /* lh_delaunay, then the calls on the handle that allocate (lh_tri_complex). */
-static lh_status delaunay_run(lh_test_state *lh_t_, const lh_allocator *a, const double *x)
+static lh_status delaunay_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
 {
+    const double *x = user;
     lh_options o;
     lh_options_default(&o);
     o.alloc = a;
@@ -281,8 +260,9 @@ static lh_status delaunay_run(lh_test_state *lh_t_, const lh_allocator *a, const
     return st;
 }
 
-static lh_status hull_run(lh_test_state *lh_t_, const lh_allocator *a, const double *x)
+static lh_status hull_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
 {
+    const double *x = user;
     lh_options o;
     lh_options_default(&o);
     o.alloc = a;
@@ -302,7 +282,7 @@ LH_TEST(every_allocation_failure_is_survived)
     double x[ALLOC_N * 3];
     lh_fam_seed(5);
     for (int i = 0; i < ALLOC_N * 3; i++) x[i] = lh_fam_unif();
-    LH_EXPECT_GT_INT(survive_every_failure(lh_t_, delaunay_run, x), 10); /* it allocates */
+    LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, delaunay_run, x), 10); /* it allocates */
 }
 
 LH_TEST(every_allocation_failure_is_survived_by_the_hull)
@@ -310,7 +290,7 @@ LH_TEST(every_allocation_failure_is_survived_by_the_hull)
     double x[ALLOC_N * 3]; /* 300 sites in 4D */
     lh_fam_seed(9);
     for (int i = 0; i < ALLOC_N * 3; i++) x[i] = lh_fam_unif();
-    LH_EXPECT_GT_INT(survive_every_failure(lh_t_, hull_run, x), 10);
+    LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, hull_run, x), 10);
 }
 
 LH_TEST(furthest_site_triangulation)

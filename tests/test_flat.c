@@ -5,7 +5,7 @@
  * Delaunay complex work in the flat. */
 #include "lh_families.h"
 #include "lh_test.h"
-#include "lh_tri_same.h"
+#include "lh_api_test.h"
 #include "lifthull.h"
 
 #include <math.h>
@@ -220,6 +220,28 @@ LH_TEST(collinear_sites_give_the_chain)
     LH_EXPECT_EQ_INT(lh_delaunay(3, 2, one, &o, &t), LH_ERR_DEGENERATE);
 }
 
+/* lh_delaunay with the affine-hull option on sites (n of them) in R^3. */
+typedef struct flat_input {
+    size_t n;
+    const double *x;
+} flat_input;
+
+static lh_status flat_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
+{
+    const flat_input *in = user;
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = a;
+    o.affine_hull = 1;
+    lh_tri *t;
+    lh_status st = lh_delaunay(3, in->n, in->x, &o, &t);
+    if (st == LH_OK) {
+        LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+        lh_tri_free(t);
+    }
+    return st;
+}
+
 /* Every allocation of the flat and line paths failing in turn: LH_ERR_NOMEM and
  * nothing left allocated, until a run succeeds. */
 LH_TEST(every_allocation_failure_is_survived)
@@ -231,29 +253,9 @@ LH_TEST(every_allocation_failure_is_survived)
         plane[3 * i] = u + v, plane[3 * i + 1] = u - v, plane[3 * i + 2] = 2 * u;
     }
     for (int i = 0; i < 20; i++) line[3 * i] = i % 7, line[3 * i + 1] = 2 * (i % 7), line[3 * i + 2] = 1;
-    for (int which = 0; which < 2; which++) {
-        long k = 1;
-        for (;; k++) {
-            lh_test_counter c = {0, k, 0};
-            lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
-            lh_options o;
-            lh_options_default(&o);
-            o.alloc = &a;
-            o.affine_hull = 1;
-            lh_tri *t;
-            lh_status st = lh_delaunay(3, which ? 20 : 60, which ? line : plane, &o, &t);
-            if (st == LH_OK) {
-                LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
-                lh_tri_free(t);
-            } else {
-                LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
-            }
-            LH_EXPECT_EQ_INT(c.live, 0);
-            if (st == LH_OK || LH_FAILED()) break;
-        }
-        LH_EXPECT_GT_INT(k, 5);
-        if (LH_FAILED()) LH_NOTE("%s: failing allocation %ld", which ? "line" : "plane", k);
-    }
+    flat_input in_plane = {60, plane}, in_line = {20, line};
+    LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, flat_run, &in_plane), 5);
+    LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, flat_run, &in_line), 5);
 }
 
 int main(int argc, char **argv)

@@ -3,7 +3,7 @@
  * failures leave the triangulation unchanged. */
 #include "lh_families.h"
 #include "lh_test.h"
-#include "lh_tri_same.h"
+#include "lh_api_test.h"
 #include "lifthull.h"
 
 #include <math.h>

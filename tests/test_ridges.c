@@ -18,15 +18,6 @@ static int lifted(void *user, const int32_t *v, int32_t q)
     return lh_insphere_sos(e->pred, e->d, p) < 0;
 }
 
-static int nv_global; /* qsort has no context; the test is single-threaded */
-static int tuple_cmp(const void *a, const void *b)
-{
-    const int32_t *x = a, *y = b;
-    for (int k = 0; k < nv_global; k++)
-        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
-    return 0;
-}
-
 LH_TEST(hashed_ridge_keys_give_the_same_triangulation)
 {
     static const size_t size[7] = {0, 0, 0, 0, 300, 120, 50};
@@ -46,16 +37,17 @@ LH_TEST(hashed_ridge_keys_give_the_same_triangulation)
             int affdim;
             LH_EXPECT_EQ_INT(lh__eng_build(&e, 1024, &affdim), LH_OK);
             const int nv = d + 1;
+            int32_t *raw = malloc((size_t)e.tds.top * nv * sizeof *raw);
             int32_t *cells = malloc((size_t)e.tds.top * nv * sizeof *cells);
+            int32_t *order = malloc((size_t)e.tds.top * sizeof *order);
             size_t count = 0;
             for (int32_t c = 0; c < e.tds.top; c++) {
                 if (lh__tds_dead(&e.tds, c) || !lh__eng_finite(&e, c)) continue;
-                memcpy(cells + count * nv, e.tds.vert + (size_t)c * nv, (size_t)nv * sizeof *cells);
-                lh__canonical(cells + count * nv, nv);
+                memcpy(raw + count * nv, e.tds.vert + (size_t)c * nv, (size_t)nv * sizeof *raw);
+                lh__canonical(raw + count * nv, nv);
                 count++;
             }
-            nv_global = nv;
-            qsort(cells, count, (size_t)nv * sizeof *cells, tuple_cmp);
+            LH_ASSERT_TRUE(lh__sort_tuples(&e.alloc, raw, nv, count, n, cells, order));
             lh_tri *t;
             LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
             LH_EXPECT_EQ_U64(count, lh_tri_count(t));
@@ -64,7 +56,9 @@ LH_TEST(hashed_ridge_keys_give_the_same_triangulation)
             if (LH_FAILED()) LH_NOTE("d=%d %s", d, lh_fam_name[fams[f]]);
             lh_tri_free(t);
             lh__eng_release(&e);
+            free(raw);
             free(cells);
+            free(order);
             free(dup);
             free(x);
         }

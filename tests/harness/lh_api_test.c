@@ -1,5 +1,5 @@
-/* lh_tri_same.c — see lh_tri_same.h. */
-#include "lh_tri_same.h"
+/* lh_api_test.c — see lh_api_test.h. */
+#include "lh_api_test.h"
 
 #include <string.h>
 
@@ -16,4 +16,20 @@ int lh_test_same_tri(const lh_tri *a, const lh_tri *b)
            !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)k * h * sizeof(int32_t)) &&
            !memcmp(lh_tri_vertex_simplex(a), lh_tri_vertex_simplex(b), n * sizeof(int32_t)) &&
            !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(int32_t));
+}
+
+long lh_test_every_failure(lh_test_state *lh_t_, lh_test_alloc_run run, const void *user)
+{
+    for (long k = 1;; k++) {
+        lh_test_counter c = {0, k, 0};
+        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
+        lh_status st = run(lh_t_, &a, user);
+        LH_EXPECT_EQ_INT(c.live, 0);
+        if (st == LH_OK) return k;
+        LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
+        if (LH_FAILED()) {
+            LH_NOTE("failing allocation %ld", k);
+            return k;
+        }
+    }
 }

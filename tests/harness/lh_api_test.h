@@ -1,0 +1,24 @@
+/* lh_api_test.h — test helpers that need the library (the rest of the harness,
+ * lh_test.h, does not). */
+#ifndef LH_API_TEST_H
+#define LH_API_TEST_H
+
+#include "lh_test.h"
+#include "lifthull.h"
+
+/* Whether two Delaunay handles hold the same output, byte for byte: the same simplex
+ * dimension k, counts, simplices, neighbours, hull facets, incident simplices and
+ * duplicate map (the ambient dimension may differ: a triangulation within a plane of
+ * R^3 against the same one in R^2). */
+int lh_test_same_tri(const lh_tri *a, const lh_tri *b);
+
+/* One run of an entry point with the given allocator; it frees what it built and
+ * returns its status (checking on failure that it handed nothing back). */
+typedef lh_status (*lh_test_alloc_run)(lh_test_state *lh_t_, const lh_allocator *a, const void *user);
+
+/* Runs `run` with the k-th allocation failing, k = 1, 2, ... until a run succeeds:
+ * every failing run must report LH_ERR_NOMEM and leave nothing allocated. Returns the
+ * number of runs. */
+long lh_test_every_failure(lh_test_state *lh_t_, lh_test_alloc_run run, const void *user);
+
+#endif
