@@ -86,22 +86,6 @@ extern "C" {
 
 extern char **environ;
 
-#ifndef LH_BENCH_C_COMPILER
-#define LH_BENCH_C_COMPILER "unknown"
-#endif
-#ifndef LH_BENCH_CXX_COMPILER
-#define LH_BENCH_CXX_COMPILER "unknown"
-#endif
-#ifndef LH_BENCH_BUILD_TYPE
-#define LH_BENCH_BUILD_TYPE "unknown"
-#endif
-#ifndef LH_BENCH_C_FLAGS
-#define LH_BENCH_C_FLAGS ""
-#endif
-#ifndef LH_BENCH_CXX_FLAGS
-#define LH_BENCH_CXX_FLAGS ""
-#endif
-
 namespace {
 
 // Qhull options: what qdelaunay runs for "qdelaunay Qt" ('d Qbb' are qdelaunay's own,

@@ -1,4 +1,5 @@
-// bench_machine.h — what the benchmark reports record about the machine (Linux /proc).
+// bench_machine.h — what the benchmark reports record about the machine (Linux /proc)
+// and the build (macros from bench/CMakeLists.txt, "unknown" without them).
 #ifndef LH_BENCH_MACHINE_H
 #define LH_BENCH_MACHINE_H
 
@@ -6,6 +7,22 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+
+#ifndef LH_BENCH_C_COMPILER
+#define LH_BENCH_C_COMPILER "unknown"
+#endif
+#ifndef LH_BENCH_CXX_COMPILER
+#define LH_BENCH_CXX_COMPILER "unknown"
+#endif
+#ifndef LH_BENCH_BUILD_TYPE
+#define LH_BENCH_BUILD_TYPE "unknown"
+#endif
+#ifndef LH_BENCH_C_FLAGS
+#define LH_BENCH_C_FLAGS ""
+#endif
+#ifndef LH_BENCH_CXX_FLAGS
+#define LH_BENCH_CXX_FLAGS ""
+#endif
 
 // The CPU's model name, or "unknown".
 inline std::string cpu_model() {

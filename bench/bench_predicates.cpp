@@ -50,22 +50,6 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 
-#ifndef LH_BENCH_C_COMPILER
-#define LH_BENCH_C_COMPILER "unknown"
-#endif
-#ifndef LH_BENCH_CXX_COMPILER
-#define LH_BENCH_CXX_COMPILER "unknown"
-#endif
-#ifndef LH_BENCH_BUILD_TYPE
-#define LH_BENCH_BUILD_TYPE "unknown"
-#endif
-#ifndef LH_BENCH_C_FLAGS
-#define LH_BENCH_C_FLAGS ""
-#endif
-#ifndef LH_BENCH_CXX_FLAGS
-#define LH_BENCH_CXX_FLAGS ""
-#endif
-
 #define NOINLINE __attribute__((noinline))
 
 namespace {
