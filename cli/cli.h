@@ -8,6 +8,7 @@ enum { LH_EXIT_OK = 0, LH_EXIT_FAIL = 1, LH_EXIT_USAGE = 2, LH_EXIT_INPUT = 3 };
 int lh_cli_selfcheck(int argc, char **argv);
 int lh_cli_delaunay(int argc, char **argv);
 int lh_cli_hull(int argc, char **argv);
+int lh_cli_generate(int argc, char **argv);
 
 /* Shared by the commands that read points (common.c). */
 #include "lifthull.h"
