@@ -343,6 +343,10 @@ const int32_t *lh_hull_vertices(const lh_hull *h);   /* increasing site indices 
 const int32_t *lh_hull_duplicate_of(const lh_hull *h);
 void lh_hull_free(lh_hull *h);
 
+/* ---- file formats ------------------------------------------------------------------ */
+
+/* (reserved: readers and writers, lib/src/io_*.c) */
+
 #ifdef __cplusplus
 }
 #endif
