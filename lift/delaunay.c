@@ -69,6 +69,7 @@ void lh_tri_free(lh_tri *t)
     lh_pred_free(t->pred);
     lh__free(&a, t->cell_off);
     lh__free(&a, t->cell_vert);
+    lh__free(&a, t->centers);
     lh__free(&a, t);
 }
 

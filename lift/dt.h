@@ -60,6 +60,7 @@ struct lh_tri {
     lh__insert_pick pick; /* the fixed-dimension insertion loops (dims/), or NULL */
     size_t ncells;    /* the Delaunay complex, built on demand (complex.c) */
     int32_t *cell_off, *cell_vert;
+    double *centers;  /* d per simplex, the circumcentres, built on demand (voronoi.c) */
 };
 
 /* delaunay.c: a capacity hint, the cells expected for n uniform sites in R^d. */

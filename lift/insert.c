@@ -178,6 +178,8 @@ static void take_arrays(lh_tri *t, lh_tri *from)
     lh__free(&t->alloc, t->cell_vert);
     t->cell_off = t->cell_vert = NULL;
     t->ncells = 0;
+    lh__free(&t->alloc, t->centers);
+    t->centers = NULL;
     t->n = from->n;
     t->xyz = from->xyz;
     t->dup = from->dup;

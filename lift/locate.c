@@ -8,43 +8,12 @@
  * facets get the floating-point closest-point computation.
  */
 #include "dt.h"
+#include "geom.h"
 
 #include <math.h>
 #include <string.h>
 
 enum { MAXV = LH_DELAUNAY_MAX_DIM + 1 };
-
-/* Solves the m x m system a x = b (row-major, destroyed) by Gaussian elimination with
- * partial pivoting; returns 0 when singular. */
-static int solve(double *a, double *b, int m)
-{
-    for (int k = 0; k < m; k++) {
-        int p = k;
-        for (int i = k + 1; i < m; i++)
-            if (fabs(a[i * m + k]) > fabs(a[p * m + k])) p = i;
-        if (a[p * m + k] == 0) return 0;
-        if (p != k) {
-            for (int j = 0; j < m; j++) {
-                double x = a[k * m + j];
-                a[k * m + j] = a[p * m + j];
-                a[p * m + j] = x;
-            }
-            double x = b[k];
-            b[k] = b[p];
-            b[p] = x;
-        }
-        for (int i = k + 1; i < m; i++) {
-            double f = a[i * m + k] / a[k * m + k];
-            for (int j = k; j < m; j++) a[i * m + j] -= f * a[k * m + j];
-            b[i] -= f * b[k];
-        }
-    }
-    for (int k = m - 1; k >= 0; k--) {
-        for (int j = k + 1; j < m; j++) b[k] -= a[k * m + j] * b[j];
-        b[k] /= a[k * m + k];
-    }
-    return 1;
-}
 
 /* Barycentric coordinates of q in the affine hull of the m points v[0..m-1] of R^d:
  * the least-squares solution (exact when q lies in it). Returns the squared distance
@@ -62,7 +31,7 @@ static double project(const double *const *v, int m, const double *q, int d, dou
             g[i * k + j] = s;
         }
     }
-    *ok = k == 0 || solve(g, r, k);
+    *ok = k == 0 || lh__solve(g, r, k);
     double sum = 0;
     for (int i = 0; i < k; i++) {
         lam[i + 1] = *ok ? r[i] : 0;

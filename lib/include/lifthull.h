@@ -149,6 +149,11 @@ int lh_orient(lh_pred *ctx, int k, const double *const *pts);       /* -1, 0, +1
 int lh_orient_sos(lh_pred *ctx, int k, const double *const *pts);   /* -1, +1    */
 int lh_insphere(lh_pred *ctx, int d, const double *const *pts);     /* -1, 0, +1 */
 int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts); /* -1, +1    */
+/* The sign of |q - a| - |q - b| for points q, a, b of R^d (d = 1..8): -1 when a is
+ * strictly nearer to q, +1 when b is, 0 when they are exactly as near. Filtered,
+ * then exact for every finite double (no perturbation: ties are for the caller). */
+int lh_compare_distance(lh_pred *ctx, int d, const double *q, const double *a,
+                        const double *b);
 
 /* How often each stage ran since creation or the last reset. */
 typedef struct lh_pred_counters {
@@ -319,6 +324,73 @@ typedef struct lh_location {
  * uses the handle's predicate context (one thread per handle).
  */
 lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *out);
+
+/* ---- Voronoi diagram, nearest site, interpolation ---------------------------------- */
+
+/*
+ * lh_tri_circumcenters: the Voronoi vertices, dual to the simplices: d doubles per
+ * simplex s (lh_tri_simplices order), the centre of the sphere through its k+1
+ * vertices (in their k-flat when k < d). Computed in floating point from the exact
+ * triangulation (a linear solve relative to the simplex's first vertex: relative
+ * error a small multiple of the machine epsilon times the simplex's condition), on
+ * the first call, and kept by the handle (valid until lh_tri_free or lh_tri_insert).
+ * The Voronoi region of site i is the convex hull of the centres of the simplices
+ * incident to it, unbounded exactly when i is a vertex of the convex hull; its ridge
+ * with site j is dual to the Delaunay edge ij. Returns LH_OK, LH_ERR_NOMEM or
+ * LH_ERR_INVALID_ARGUMENT.
+ */
+lh_status lh_tri_circumcenters(lh_tri *t, const double **centers);
+
+/*
+ * lh_tri_nearest: the site nearest to q (d doubles): a greedy walk along Delaunay
+ * edges from a vertex of the simplex lh_tri_locate finds (hint as there), every
+ * distance comparison exact (lh_compare_distance). Among sites exactly equally near, the
+ * smallest index is returned (all of them are vertices of one Delaunay cell, so a
+ * walk over the ties finds it); never a merged duplicate. Returns LH_OK,
+ * LH_ERR_INVALID_ARGUMENT (t, q or site NULL; or a furthest-site handle; or, when
+ * k < d, q off the sites' affine hull), LH_ERR_NONFINITE or LH_ERR_NOMEM.
+ */
+lh_status lh_tri_nearest(lh_tri *t, const double *q, int32_t hint, int32_t *site);
+
+/*
+ * lh_tri_natural_coords: Sibson's natural-neighbour coordinates of q (Sibson 1980,
+ * "A vector identity for the Dirichlet tessellation"), d = 2 or 3 with k == d: the
+ * sites whose Voronoi regions lose volume when q is inserted, each weighted by the
+ * volume it loses over the volume of q's new region. Writes at most `cap` (site,
+ * weight) pairs and their number in *count; the weights are positive and sum to 1,
+ * and sum(weight_i * site_i) = q up to rounding. A q exactly at a site gives that
+ * site with weight 1; a q on the hull's boundary (its region unbounded) gets the
+ * limit, the barycentric coordinates in the hull facet holding it. Returns LH_OK;
+ * LH_ERR_INVALID_ARGUMENT (NULL arguments, furthest-site handle, or q outside the
+ * hull: *count = 0); LH_ERR_DIMENSION (d or k not 2 or 3); LH_ERR_TOO_LARGE (more
+ * than cap natural neighbours: *count is the number needed); LH_ERR_NONFINITE;
+ * LH_ERR_NOMEM.
+ */
+lh_status lh_tri_natural_coords(lh_tri *t, const double *q, int32_t hint, size_t cap,
+                                int32_t *sites, double *weights, size_t *count);
+
+typedef enum lh_interp_method {
+    LH_INTERP_LINEAR = 0,  /* barycentric in the simplex containing q (scipy's
+                              LinearNDInterpolator)                               */
+    LH_INTERP_NATURAL = 1, /* Sibson's natural neighbours, d = 2, 3 (above)        */
+    LH_INTERP_NEAREST = 2  /* the value of the nearest site (lh_tri_nearest)       */
+} lh_interp_method;
+
+/*
+ * lh_tri_interpolate: values given at the sites (channels doubles per site, in input
+ * order; a merged duplicate's values are ignored, its representative's are used),
+ * interpolated at m query points q (m*d doubles) into out (m*channels doubles).
+ * Queries outside the convex hull get NaN for LINEAR and NATURAL (scipy's default
+ * fill value). Linear interpolation reproduces every affine function, and natural
+ * neighbours too, up to rounding. Each query's walk starts where the previous one
+ * ended, so sorted queries are fast. Returns LH_OK, LH_ERR_INVALID_ARGUMENT (also
+ * NATURAL or NEAREST on a furthest-site handle),
+ * LH_ERR_DIMENSION (NATURAL outside d = 2, 3), LH_ERR_NONFINITE (a query
+ * coordinate) or LH_ERR_NOMEM; on failure out is unspecified.
+ */
+lh_status lh_tri_interpolate(lh_tri *t, lh_interp_method method, size_t m,
+                             const double *q, int channels, const double *values,
+                             double *out);
 
 /* ---- convex hull ------------------------------------------------------------------ */
 
