@@ -1,0 +1,36 @@
+/* svg.h — an SVG picture of a 2D Delaunay triangulation, its Voronoi diagram, the
+ * circumcircles and the sites (for the CLI; drawing only, in plain doubles). */
+#ifndef LH_CLI_SVG_H
+#define LH_CLI_SVG_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+/* What to draw, as flat arrays the caller owns (nothing is copied or kept). */
+typedef struct lh_cli_svg {
+    size_t site_count;        /* n                                                   */
+    const double *sites;      /* 2n doubles: x, y of each site (y up, as in the input) */
+    size_t tri_count;         /* triangles, may be 0 (then only sites are drawn)     */
+    const int32_t *tris;      /* 3 * tri_count site indices, either orientation      */
+    const int32_t *neighbors; /* 3 * tri_count, or NULL (then computed here): the
+                                 neighbour across the edge opposite vertex k, -1
+                                 across the convex hull (lh_tri_neighbors' layout)   */
+    int draw_delaunay;        /* nonzero: the triangles' edges                       */
+    int draw_voronoi;         /* nonzero: the Voronoi diagram, the dual: an edge
+                                 between the circumcentres of neighbouring triangles,
+                                 a ray outward across each hull edge                 */
+    int draw_circles;         /* nonzero: each triangle's circumcircle               */
+    int draw_sites;           /* nonzero: a dot per site                             */
+    const char *title;        /* the legend's first words, or NULL for "lifthull"   */
+} lh_cli_svg;
+
+/* Writes the picture to f: the viewBox is the sites' bounding box plus a margin (y
+ * pointing up), with a legend line above it; everything outside it is clipped. All
+ * edges of one kind go into a few <path> elements (a dot per site too), coordinates
+ * are integers on a 10^4-unit scale, so 10^4 sites make about 1.5 MB. Returns 0, or
+ * -1 on a write error (ferror(f) or a failed fflush) or when out of memory (only with
+ * neighbors NULL). f stays open. */
+int lh_cli_svg_write(FILE *f, const lh_cli_svg *s);
+
+#endif
