@@ -20,12 +20,12 @@
  * clang through the pragma), and "%.17g" prints every double exactly. So one command
  * line writes the same bytes on every IEEE-754 machine with double evaluation.
  */
-#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen, fchmod, link, unlink, umask */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen, fchmod, link, unlink, umask, lstat */
 #include "cli.h"
 
 #include <errno.h>
-#include <stdarg.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -476,7 +476,8 @@ static const char usage_text[] =
     "  --seed S        seed, 0 to 2^64-1 (default 1)\n"
     "  -o FILE         write FILE, complete or not at all (via FILE.tmpXXXXXX), instead\n"
     "                  of standard output; an existing FILE is an error...\n"
-    "  -f              ...unless -f: replace it\n"
+    "  -f              ...unless -f: replace it (a device, pipe or symbolic link is\n"
+    "                  written through, not replaced)\n"
     "  -h, --help      this help\n"
     "  (long options also take their value as --seed=S)\n"
     "\n"
@@ -697,21 +698,29 @@ static FILE *open_tmp(const char *out, char **tmp)
     umask(mask);
     FILE *f = fdopen(fd, "w");
     if (!f || fchmod(fd, 0666 & ~mask) != 0) {
+        int err = errno;
         if (f) fclose(f);
         else close(fd);
         unlink(*tmp);
+        errno = err;
         return NULL;
     }
     return f;
 }
 
-/* Closes the temporary file and moves it to FILE: rename with -f, else link, which
- * fails if FILE appeared meanwhile. The temporary file never survives. */
+/* Closes the output; with a temporary file (tmp not NULL) moves it to FILE: rename
+ * with -f, else link, which fails if FILE appeared meanwhile. The temporary file
+ * never survives. */
 static int finish_file(FILE *f, const gen_opts *o, const char *tmp, int status)
 {
     int err = status != 0 ? ENOMEM : 0;
     if (fflush(f) != 0 || ferror(f)) err = err ? err : errno ? errno : EIO;
     if (fclose(f) != 0) err = err ? err : errno ? errno : EIO;
+    if (!tmp) {
+        if (!err) return LH_EXIT_OK;
+        fprintf(stderr, "lifthull points: cannot write '%s': %s\n", o->out, strerror(err));
+        return LH_EXIT_FAIL;
+    }
     if (!err && (o->force ? rename(tmp, o->out) : link(tmp, o->out)) != 0) {
         err = errno;
         if (err == EEXIST) {
@@ -740,15 +749,20 @@ int lh_cli_generate(int argc, char **argv)
             return LH_EXIT_FAIL;
         }
     }
-    if (o.out && !o.force && access(o.out, F_OK) == 0) {
+    /* FILE is created or replaced through a temporary file when it is absent or a
+     * regular file; anything else (a device, a pipe, a symbolic link) is written
+     * through, never replaced. */
+    struct stat st;
+    int exists = o.out && lstat(o.out, &st) == 0, direct = exists && !S_ISREG(st.st_mode);
+    if (exists && !o.force) {
         free(plan.tuples);
         fprintf(stderr, "lifthull points: '%s' exists (use -f to replace it)\n", o.out);
         return LH_EXIT_FAIL;
     }
     char *tmp = NULL;
-    FILE *f = o.out ? open_tmp(o.out, &tmp) : stdout;
+    FILE *f = !o.out ? stdout : direct ? fopen(o.out, "w") : open_tmp(o.out, &tmp);
     if (!f) {
-        fprintf(stderr, "lifthull points: cannot create '%s': %s\n", tmp ? tmp : o.out, strerror(errno));
+        fprintf(stderr, "lifthull points: cannot create '%s': %s\n", o.out, strerror(errno));
         free(tmp);
         free(plan.tuples);
         return LH_EXIT_FAIL;

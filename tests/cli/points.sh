@@ -141,7 +141,15 @@ if [ $c -eq 1 ] && grep -q "exists (use -f to replace it)" "$tmp/err" && cmp -s 
 if [ $c -eq 0 ] && [ "$(sed -n 2p "$tmp/o/p.txt")" = 5 ]; then ok; else bad "-o -f: exit $c"; fi
 "$lh" points 5 -o "$tmp/no-such-dir/p.txt" 2> "$tmp/err"; c=$?
 if [ $c -eq 1 ] && grep -q "cannot create" "$tmp/err" && [ ! -e "$tmp/no-such-dir" ]; then ok; else bad "-o into a missing directory: exit $c"; fi
-if [ "$(ls "$tmp/o")" = "p.txt" ]; then ok; else bad "left behind: $(ls "$tmp/o" | tr '\n' ' ')"; fi
+# What is not a regular file is written through with -f, never replaced.
+ln -s p.txt "$tmp/o/link"
+"$lh" points 5 -d 2 -o "$tmp/o/link" 2> "$tmp/err"; c=$?
+if [ $c -eq 1 ] && grep -q "exists" "$tmp/err"; then ok; else bad "-o onto a symbolic link without -f: exit $c"; fi
+"$lh" points 7 -d 2 -o "$tmp/o/link" -f; c=$?
+if [ $c -eq 0 ] && [ -L "$tmp/o/link" ] && [ "$(sed -n 2p "$tmp/o/p.txt")" = 7 ]; then ok; else bad "-o -f onto a symbolic link: exit $c"; fi
+# (Devices are written through the same way; not tested on /dev/full here, since a
+# regression would replace it for a test run as root.)
+if [ "$(ls "$tmp/o" | tr '\n' ' ')" = "link p.txt " ]; then ok; else bad "left behind: $(ls "$tmp/o" | tr '\n' ' ')"; fi
 
 # `lifthull delaunay` reads every kind of output (exact, degenerate ones included).
 for args in "500 -d 2" "300 -d 3 --ball" "200 -d 4 --sphere" "300 -d 3 --exact-sphere" \
