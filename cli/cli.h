@@ -9,6 +9,9 @@ int lh_cli_selfcheck(int argc, char **argv);
 int lh_cli_delaunay(int argc, char **argv);
 int lh_cli_hull(int argc, char **argv);
 int lh_cli_generate(int argc, char **argv);
+int lh_cli_qdelaunay(int argc, char **argv);
+int lh_cli_qvoronoi(int argc, char **argv);
+int lh_cli_qconvex(int argc, char **argv);
 
 /* Shared by the commands that read points (common.c). */
 #include "lifthull.h"

@@ -16,6 +16,9 @@ static const command commands[] = {
     {"delaunay", lh_cli_delaunay, "Delaunay triangulation (Qhull's 'i' format)"},
     {"hull", lh_cli_hull, "convex hull facets (qconvex's 'i' format)"},
     {"points", lh_cli_generate, "generate test point sets (uniform, ball, sphere, grid, clusters)"},
+    {"qdelaunay", lh_cli_qdelaunay, "Qhull's qdelaunay, exact: same options and formats (i Fn FN o p s ...)"},
+    {"qvoronoi", lh_cli_qvoronoi, "Qhull's qvoronoi, exact: same options and formats (o p Fv Fi Fo ...)"},
+    {"qconvex", lh_cli_qconvex, "Qhull's qconvex, exact: same options and formats (i o n Fn FN ...)"},
     {"selfcheck", lh_cli_selfcheck, "check the exact predicates on near-degenerate cases"},
 };
 enum { n_commands = sizeof commands / sizeof commands[0] };

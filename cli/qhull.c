@@ -1,0 +1,38 @@
+/* qhull.c — `lifthull qdelaunay | qvoronoi | qconvex OPTIONS` (qhull.h). */
+#include "cli.h"
+#include "outfile.h"
+#include "qhull.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static int run(lh_cli_qprog prog, int argc, char **argv)
+{
+    lh_cli_qopts o;
+    int r = lh_cli_qparse(&o, prog, argc, argv);
+    if (r != 0) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    lh_cli_points pts;
+    const char *name;
+    if (!lh_cli_load(o.input, &pts, &name)) return LH_EXIT_INPUT;
+    lh_cli_qmodel mo;
+    if (!lh_cli_qmodel_build(&mo, &o, pts.d, pts.n, pts.xyz, name)) {
+        free(pts.xyz);
+        return LH_EXIT_FAIL;
+    }
+    lh_cli_out out;
+    int ok = lh_cli_out_open(&out, o.name, o.output, 1, o.input);
+    for (int i = 0; ok && i < o.nout; i++) {
+        /* the summary goes to standard error when other outputs are asked (Qhull) */
+        FILE *f = !strcmp(o.out[i], "s") && o.nout > 1 ? stderr : out.f;
+        ok = lh_cli_qprint(f, &o, &mo, o.out[i]);
+        if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", o.name);
+    }
+    int status = out.f ? lh_cli_out_close(&out, o.name, ok) : LH_EXIT_FAIL;
+    lh_cli_qmodel_free(&mo);
+    free(pts.xyz);
+    return status;
+}
+
+int lh_cli_qdelaunay(int argc, char **argv) { return run(LH_QPROG_DELAUNAY, argc, argv); }
+int lh_cli_qvoronoi(int argc, char **argv) { return run(LH_QPROG_VORONOI, argc, argv); }
+int lh_cli_qconvex(int argc, char **argv) { return run(LH_QPROG_CONVEX, argc, argv); }

@@ -1,0 +1,71 @@
+/*
+ * qhull.h — `lifthull qdelaunay | qvoronoi | qconvex OPTIONS`: Qhull's programs'
+ * options and text formats (qhull.org, "qdelaunay", "qvoronoi", "qconvex" manual
+ * pages; Qhull 2020.2), computed exactly by lifthull. Every facet is a simplex
+ * (Qhull's Qt is always on), so a script changes only the program name.
+ */
+#ifndef LH_CLI_QHULL_H
+#define LH_CLI_QHULL_H
+
+#include "lifthull.h"
+
+#include <stdio.h>
+
+typedef enum { LH_QPROG_DELAUNAY, LH_QPROG_VORONOI, LH_QPROG_CONVEX } lh_cli_qprog;
+
+enum { LH_QOUT_MAX = 32 };
+
+typedef struct lh_cli_qopts {
+    lh_cli_qprog prog;
+    const char *name;         /* "qdelaunay", "qvoronoi", "qconvex"            */
+    char out[LH_QOUT_MAX][4]; /* output options in the order given ("i", "Fn") */
+    int nout;
+    int furthest;             /* Qu                                            */
+    int verify;               /* Tv: the exact check of the result             */
+    const char *input;        /* TI file, NULL: standard input                 */
+    const char *output;       /* TO file, NULL: standard output                */
+    char command[256];        /* "lifthull qdelaunay OPTIONS", for summaries    */
+} lh_cli_qopts;
+
+/* Parses Qhull-style options (words that may also come several to an argument, as
+ * "i Qt"). Returns 0; 1 when --help was printed; -1 after printing a usage error. */
+int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv);
+
+/*
+ * What every format prints from: the facets (Delaunay simplices, or hull facets) and
+ * across each side either another facet (>= 0) or, for Delaunay, one of the "other"
+ * facets of the lifted hull, -(j+1): the upper hull's (the furthest-site simplices
+ * of the hull's vertices) — or with Qu the lower hull's — as Qhull numbers its upper
+ * Delaunay facets with negative ids.
+ */
+typedef struct lh_cli_qmodel {
+    int d;                 /* coordinates per site                           */
+    size_t n;
+    const double *xyz;
+    int nv;                /* vertices per facet: d + 1, or d for a hull     */
+    size_t m;              /* facets                                         */
+    const int32_t *vert;   /* nv per facet                                   */
+    int32_t *nbr;          /* nv per facet, opposite each vertex             */
+    int32_t *own_vert;     /* vert when the model owns it (hull facets)      */
+    size_t m_other;        /* the other facets                               */
+    int32_t *other;        /* nv per other facet, in site numbering          */
+    int32_t *inc_off;      /* n + 1: site i's facets are inc[inc_off[i]..]   */
+    int32_t *inc;          /* main facets, then other ones as -(j+1)         */
+    const int32_t *dup;    /* the site each one was merged into              */
+    size_t ndup;
+    double seconds;        /* the computation's time                          */
+    lh_tri *tri, *tri_other;
+    lh_hull *hull;
+} lh_cli_qmodel;
+
+/* Builds the model for the options' program; 0 after printing the problem. */
+int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t n,
+                        const double *xyz, const char *name);
+void lh_cli_qmodel_free(lh_cli_qmodel *mo);
+
+/* Prints output option `opt` (one of those lh_cli_qparse accepts for o->prog);
+ * `to_stderr_summary`: 's' goes to standard error when other outputs are asked, as
+ * Qhull does. Returns 0 when out of memory (message printed). */
+int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
+
+#endif

@@ -1,0 +1,143 @@
+/* qhull_opts.c — Qhull's option words for lifthull's qdelaunay, qvoronoi, qconvex. */
+#include "cli.h"
+#include "qhull.h"
+
+#include <ctype.h>
+#include <string.h>
+
+/* Output options each program prints (Qhull's manual pages, "Output formats"). */
+static const char *const outputs[3] = {
+    "i o p s Fn FN Fv Fx",
+    "o p s i Fi Fo Fv Fn FN",
+    "i o p s n Fn FN Fv Fi Fo FC Ft Fx",
+};
+
+/* Qhull options that change nothing here, with why. */
+typedef struct noop {
+    const char *word;
+    int prefix; /* matches words starting with it (options taking a value) */
+    const char *why;
+} noop;
+
+static const noop noops[] = {
+    {"Qt", 0, NULL}, /* always on, silently */
+    {"QJ", 1, "no joggle is needed: every predicate is exact"},
+    {"Qbb", 0, "no scaling is needed: every predicate is exact"},
+    {"QbB", 0, "no scaling is needed: every predicate is exact"},
+    {"Qz", 0, "no point at infinity is needed: cospherical sites are exact input here"},
+    {"Qc", 0, "every distinct site is a vertex or a merged duplicate (lifthull reports them)"},
+    {"Qx", 0, "no merging happens: exact arithmetic, every facet a simplex"},
+    {"Qs", 0, "the initial simplex is chosen exactly"},
+    {"Pp", 0, NULL},
+    {"Po", 0, NULL},
+    {"Q", 1, "Qhull's tuning options do not apply"},
+    {"C", 1, "no facet merging happens: exact arithmetic"},
+    {"A", 1, "no facet merging happens: exact arithmetic"},
+};
+
+static int is_output(lh_cli_qprog prog, const char *w)
+{
+    size_t len = strlen(w);
+    for (const char *s = outputs[prog]; *s;) {
+        size_t k = strcspn(s, " ");
+        if (k == len && !strncmp(s, w, len)) return 1;
+        s += k + (s[k] == ' ');
+    }
+    return 0;
+}
+
+static void help(const lh_cli_qopts *o)
+{
+    printf("usage: lifthull %s [OPTIONS] < POINTS\n"
+           "       lifthull %s [OPTIONS] TI FILE [TO FILE]\n\n"
+           "Qhull's %s, exact: the same options and output formats, every facet a\n"
+           "simplex (Qt is always on). Points in Qhull's format (rbox output as it is).\n\n"
+           "outputs, printed in the order given:  %s\n"
+           "  (none: the summary 's')\n"
+           "other options:\n"
+           "  Qu        furthest-site (upper hull)%s\n"
+           "  Tv        check the result exactly and report on standard error\n"
+           "  TI FILE   read the points from FILE      TO FILE  write the output to FILE\n"
+           "  Qt QJ Qbb Qz Qc Qx Pp and Qhull's tuning options are accepted; they\n"
+           "  change nothing under exact arithmetic (a note says why).\n\n"
+           "e.g.  rbox 1000 D3 | lifthull %s %s\n",
+           o->name, o->name, o->name, outputs[o->prog],
+           o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "", o->name,
+           o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
+}
+
+/* One option word; 0 after printing a usage error. `next` is the following word,
+ * consumed (*used = 1) by TI and TO. */
+static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
+{
+    if (is_output(o->prog, w)) {
+        if (o->nout == LH_QOUT_MAX) {
+            fprintf(stderr, "lifthull %s: more than %d output options\n", o->name, LH_QOUT_MAX);
+            return 0;
+        }
+        strcpy(o->out[o->nout++], w);
+        return 1;
+    }
+    if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
+    if (!strcmp(w, "Tv")) return o->verify = 1;
+    if (!strcmp(w, "TI") || !strcmp(w, "TO")) {
+        if (!next) {
+            fprintf(stderr, "lifthull %s: option '%s' needs a file name\n", o->name, w);
+            return 0;
+        }
+        *(w[1] == 'I' ? &o->input : &o->output) = next;
+        return *used = 1;
+    }
+    for (size_t i = 0; i < sizeof noops / sizeof noops[0]; i++) {
+        const noop *p = &noops[i];
+        size_t k = strlen(p->word);
+        int hit = p->prefix ? !strncmp(w, p->word, k) && (w[k] == 0 || isdigit((unsigned char)w[k]) ||
+                                                          w[k] == '-' || w[k] == '.' || p->word[0] != 'Q')
+                            : !strcmp(w, p->word);
+        if (!hit) continue;
+        if (p->why) fprintf(stderr, "lifthull %s: option '%s' ignored: %s\n", o->name, w, p->why);
+        return 1;
+    }
+    fprintf(stderr, "lifthull %s: option '%s' is not supported (outputs: %s; also Qu, Tv, TI, TO; "
+            "lifthull %s --help)\n", o->name, w, outputs[o->prog], o->name);
+    return 0;
+}
+
+int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv)
+{
+    static const char *const names[3] = {"qdelaunay", "qvoronoi", "qconvex"};
+    memset(o, 0, sizeof *o);
+    o->prog = prog;
+    o->name = names[prog];
+    snprintf(o->command, sizeof o->command, "lifthull %s", o->name);
+    for (int i = 0; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            help(o);
+            return 1;
+        }
+        size_t len = strlen(o->command);
+        snprintf(o->command + len, sizeof o->command - len, " %s", argv[i]);
+    }
+    /* Words split at blanks, across and within arguments ("i Qt" is two words). */
+    char buf[4096];
+    size_t used = 0;
+    const char *words[512];
+    int nw = 0;
+    for (int i = 0; i < argc; i++) {
+        size_t len = strlen(argv[i]);
+        if (used + len + 1 > sizeof buf || nw + (int)len / 2 + 1 > 512) {
+            fprintf(stderr, "lifthull %s: the options are too long\n", o->name);
+            return -1;
+        }
+        memcpy(buf + used, argv[i], len + 1);
+        for (char *s = strtok(buf + used, " \t\n"); s; s = strtok(NULL, " \t\n")) words[nw++] = s;
+        used += len + 1;
+    }
+    for (int i = 0; i < nw; i++) {
+        int took = 0;
+        if (!word(o, words[i], i + 1 < nw ? words[i + 1] : NULL, &took)) return -1;
+        i += took;
+    }
+    if (o->nout == 0) strcpy(o->out[o->nout++], "s");
+    return 0;
+}

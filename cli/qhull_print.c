@@ -1,0 +1,301 @@
+/*
+ * qhull_print.c — Qhull's text formats for facets: i, Fv, Fn, FN, o, p, s, Fx, and
+ * qconvex's planes (n, Fi, Fo) and centrums (FC). Byte habits as Qhull 2020.2:
+ * coordinates as "%6.16g " (trailing blank), index lists of 'i' and 'o' with a
+ * trailing blank, those of Fn, FN, Fv without; the lifted coordinate of qdelaunay's
+ * 'o' and 'p' scaled to [0, max |coordinate|] as Qhull's Qbb does.
+ */
+#include "qhull.h"
+#include "qhull_print.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void lh_cli_qcoords(FILE *f, const double *x, int d)
+{
+    for (int j = 0; j < d; j++) fprintf(f, "%6.16g ", x[j]);
+}
+
+/* The lifted coordinate |p|^2 scaled to [0, max |coordinate|] (Qhull's Qbb). */
+typedef struct lift_scale {
+    double low, factor;
+} lift_scale;
+
+static lift_scale lift_scale_of(const lh_cli_qmodel *mo)
+{
+    double low = INFINITY, high = -INFINITY, big = 0;
+    for (size_t i = 0; i < mo->n; i++) {
+        double z = 0;
+        for (int j = 0; j < mo->d; j++) {
+            double x = mo->xyz[i * mo->d + j];
+            z += x * x;
+            if (fabs(x) > big) big = fabs(x);
+        }
+        if (z < low) low = z;
+        if (z > high) high = z;
+    }
+    lift_scale s = {low, high > low ? big / (high - low) : 1};
+    return s;
+}
+
+static void lifted_point(FILE *f, const lh_cli_qmodel *mo, lift_scale s, size_t i)
+{
+    const double *x = mo->xyz + i * mo->d;
+    double z = 0;
+    for (int j = 0; j < mo->d; j++) z += x[j] * x[j];
+    lh_cli_qcoords(f, x, mo->d);
+    fprintf(f, "%6.16g \n", (z - s.low) * s.factor);
+}
+
+static int is_vertex(const lh_cli_qmodel *mo, size_t i)
+{
+    for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+        if (mo->inc[k] >= 0) return 1;
+    return 0;
+}
+
+static void print_i(FILE *f, const lh_cli_qmodel *mo)
+{
+    fprintf(f, "%zu\n", mo->m);
+    for (size_t s = 0; s < mo->m; s++) {
+        for (int k = 0; k < mo->nv; k++) fprintf(f, "%d ", (int)mo->vert[s * mo->nv + k]);
+        fputc('\n', f);
+    }
+}
+
+static int desc(const void *a, const void *b)
+{
+    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    return (x < y) - (x > y);
+}
+
+static void print_fv(FILE *f, const lh_cli_qmodel *mo)
+{
+    fprintf(f, "%zu\n", mo->m);
+    for (size_t s = 0; s < mo->m; s++) {
+        int32_t v[LH_DELAUNAY_MAX_DIM + 1];
+        memcpy(v, mo->vert + s * mo->nv, mo->nv * sizeof *v);
+        qsort(v, (size_t)mo->nv, sizeof *v, desc);
+        fprintf(f, "%d", mo->nv);
+        for (int k = 0; k < mo->nv; k++) fprintf(f, " %d", (int)v[k]);
+        fputc('\n', f);
+    }
+}
+
+static void print_id(FILE *f, int32_t id)
+{
+    if (id == INT32_MIN)
+        fputs(" -0", f); /* a hull side with no upper facet across: never expected */
+    else
+        fprintf(f, " %d", (int)id);
+}
+
+static void print_fn(FILE *f, const lh_cli_qmodel *mo)
+{
+    fprintf(f, "%zu\n", mo->m);
+    for (size_t s = 0; s < mo->m; s++) {
+        fprintf(f, "%d", mo->nv);
+        for (int k = 0; k < mo->nv; k++) print_id(f, mo->nbr[s * mo->nv + k]);
+        fputc('\n', f);
+    }
+}
+
+static void print_fN(FILE *f, const lh_cli_qmodel *mo)
+{
+    fprintf(f, "%zu\n", mo->n);
+    for (size_t i = 0; i < mo->n; i++) {
+        fprintf(f, "%d", (int)(mo->inc_off[i + 1] - mo->inc_off[i]));
+        for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++) print_id(f, mo->inc[k]);
+        fputc('\n', f);
+    }
+}
+
+static void print_p(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
+{
+    size_t count = 0;
+    for (size_t i = 0; i < mo->n; i++) count += is_vertex(mo, i);
+    int lifted = o->prog != LH_QPROG_CONVEX;
+    fprintf(f, "%d\n%zu\n", mo->d + lifted, count);
+    lift_scale s = lift_scale_of(mo);
+    for (size_t i = 0; i < mo->n; i++) {
+        if (!is_vertex(mo, i)) continue;
+        if (lifted) {
+            lifted_point(f, mo, s, i);
+        } else {
+            lh_cli_qcoords(f, mo->xyz + i * mo->d, mo->d);
+            fputc('\n', f);
+        }
+    }
+}
+
+static void print_o(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
+{
+    int lifted = o->prog != LH_QPROG_CONVEX;
+    fprintf(f, "%d\n%zu %zu %zu\n", mo->d + lifted, mo->n, mo->m, mo->m * mo->nv / 2);
+    lift_scale s = lift_scale_of(mo);
+    for (size_t i = 0; i < mo->n; i++) {
+        if (lifted) {
+            lifted_point(f, mo, s, i);
+        } else {
+            lh_cli_qcoords(f, mo->xyz + i * mo->d, mo->d);
+            fputc('\n', f);
+        }
+    }
+    for (size_t t = 0; t < mo->m; t++) {
+        fprintf(f, "%d ", mo->nv);
+        for (int k = 0; k < mo->nv; k++) fprintf(f, "%d ", (int)mo->vert[t * mo->nv + k]);
+        fputc('\n', f);
+    }
+}
+
+/* Extreme points: the sites on the convex hull, increasing. */
+static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
+{
+    size_t count = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass) fprintf(f, "%zu\n", count);
+        for (size_t i = 0; i < mo->n; i++) {
+            int on = 0;
+            for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !on; k++)
+                on = o->prog == LH_QPROG_CONVEX || mo->inc[k] < 0;
+            if (!on) continue;
+            if (pass) fprintf(f, "%zu\n", i);
+            else count++;
+        }
+    }
+}
+
+static void print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
+{
+    if (o->prog == LH_QPROG_CONVEX) {
+        size_t v = 0;
+        for (size_t i = 0; i < mo->n; i++) v += is_vertex(mo, i);
+        fprintf(f, "\nConvex hull of %zu points in %d-d:\n\n  Number of vertices: %zu\n"
+                   "  Number of facets: %zu\n", mo->n, mo->d, v, mo->m);
+    } else if (o->prog == LH_QPROG_VORONOI) {
+        size_t v = 0;
+        for (size_t i = 0; i < mo->n; i++) v += is_vertex(mo, i);
+        fprintf(f, "\nVoronoi diagram by the convex hull of %zu points in %d-d:\n\n"
+                   "  Number of Voronoi regions%s: %zu\n  Number of Voronoi vertices: %zu\n",
+                mo->n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v, mo->m);
+    } else {
+        fprintf(f, "\n%sDelaunay triangulation by the convex hull of %zu points in %d-d:\n\n"
+                   "  Number of input sites: %zu\n  Number of %sDelaunay regions: %zu\n",
+                o->furthest ? "Furthest-site " : "", mo->n, mo->d + 1, mo->n,
+                o->furthest ? "furthest-site " : "", mo->m);
+    }
+    if (mo->ndup) fprintf(f, "  Number of duplicate sites merged: %zu\n", mo->ndup);
+    fprintf(f, "\nStatistics for: %s\n\n  Number of points processed: %zu\n"
+               "  Exact arithmetic: every facet a simplex, no merging, no precision error\n"
+               "  CPU seconds to compute %s: %.3g\n\n",
+            o->command, mo->n - mo->ndup, o->prog == LH_QPROG_CONVEX ? "the hull" : "the triangulation",
+            mo->seconds);
+}
+
+/* The determinant of the m x m matrix a (row-major, destroyed), by elimination with
+ * partial pivoting. */
+static double det(double *a, int m)
+{
+    double r = 1;
+    for (int k = 0; k < m; k++) {
+        int p = k;
+        for (int i = k + 1; i < m; i++)
+            if (fabs(a[i * m + k]) > fabs(a[p * m + k])) p = i;
+        if (a[p * m + k] == 0) return 0;
+        if (p != k) {
+            for (int j = 0; j < m; j++) {
+                double x = a[k * m + j];
+                a[k * m + j] = a[p * m + j];
+                a[p * m + j] = x;
+            }
+            r = -r;
+        }
+        r *= a[k * m + k];
+        for (int i = k + 1; i < m; i++) {
+            double g = a[i * m + k] / a[k * m + k];
+            for (int j = k; j < m; j++) a[i * m + j] -= g * a[k * m + j];
+        }
+    }
+    return r;
+}
+
+/* The hyperplane n.x + off = 0 of hull facet t, |n| = 1, n outward: the generalised
+ * cross product of the facet's edge vectors (cofactors), turned away from the centroid
+ * c of the hull's vertices. Floating point: an output, not a decision. */
+static void facet_plane(const lh_cli_qmodel *mo, size_t t, const double *c, double *n, double *off)
+{
+    const int d = mo->d;
+    const double *v0 = mo->xyz + (size_t)mo->vert[t * d] * d;
+    double e[LH_DELAUNAY_MAX_DIM][LH_DELAUNAY_MAX_DIM], len = 0;
+    for (int i = 1; i < d; i++)
+        for (int j = 0; j < d; j++) e[i - 1][j] = mo->xyz[(size_t)mo->vert[t * d + i] * d + j] - v0[j];
+    for (int j = 0; j < d; j++) {
+        double m[LH_DELAUNAY_MAX_DIM * LH_DELAUNAY_MAX_DIM];
+        for (int r = 0; r < d - 1; r++)
+            for (int col = 0, cc = 0; col < d; col++)
+                if (col != j) m[r * (d - 1) + cc++] = e[r][col];
+        n[j] = ((j % 2) ? -1 : 1) * det(m, d - 1);
+        len += n[j] * n[j];
+    }
+    len = sqrt(len);
+    double side = 0;
+    for (int j = 0; j < d; j++) side += n[j] * (c[j] - v0[j]);
+    if (side > 0) len = -len;
+    *off = 0;
+    for (int j = 0; j < d; j++) {
+        n[j] /= len;
+        *off -= n[j] * v0[j];
+    }
+}
+
+static void print_planes(FILE *f, const lh_cli_qmodel *mo)
+{
+    const int d = mo->d;
+    double c[LH_DELAUNAY_MAX_DIM] = {0};
+    size_t v = 0;
+    for (size_t i = 0; i < mo->n; i++) {
+        if (!is_vertex(mo, i)) continue;
+        for (int j = 0; j < d; j++) c[j] += mo->xyz[i * d + j];
+        v++;
+    }
+    for (int j = 0; j < d; j++) c[j] /= (double)v;
+    fprintf(f, "%d\n%zu\n", d + 1, mo->m);
+    for (size_t t = 0; t < mo->m; t++) {
+        double n[LH_DELAUNAY_MAX_DIM], off;
+        facet_plane(mo, t, c, n, &off);
+        lh_cli_qcoords(f, n, d);
+        fprintf(f, "%6.16g \n", off);
+    }
+}
+
+static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
+{
+    const int d = mo->d;
+    fprintf(f, "%d\n%zu\n", d, mo->m);
+    for (size_t t = 0; t < mo->m; t++) {
+        double c[LH_DELAUNAY_MAX_DIM] = {0};
+        for (int k = 0; k < d; k++)
+            for (int j = 0; j < d; j++) c[j] += mo->xyz[(size_t)mo->vert[t * d + k] * d + j] / d;
+        lh_cli_qcoords(f, c, d);
+        fputc('\n', f);
+    }
+}
+
+int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
+{
+    if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "FN") &&
+        strcmp(opt, "i"))
+        return lh_cli_qprint_voronoi(f, o, mo, opt);
+    if (!strcmp(opt, "i")) print_i(f, mo);
+    else if (!strcmp(opt, "Fv")) print_fv(f, mo);
+    else if (!strcmp(opt, "Fn")) print_fn(f, mo);
+    else if (!strcmp(opt, "FN")) print_fN(f, mo);
+    else if (!strcmp(opt, "p")) print_p(f, o, mo);
+    else if (!strcmp(opt, "o") || !strcmp(opt, "Ft")) print_o(f, o, mo);
+    else if (!strcmp(opt, "Fx")) print_fx(f, o, mo);
+    else if (!strcmp(opt, "s")) print_s(f, o, mo);
+    else if (!strcmp(opt, "n") || !strcmp(opt, "Fi") || !strcmp(opt, "Fo")) print_planes(f, mo);
+    else if (!strcmp(opt, "FC")) print_centrums(f, mo);
+    return 1;
+}

@@ -1,0 +1,12 @@
+/* qhull_print.h — Qhull's output formats (qhull_print.c; Voronoi: qhull_voronoi.c). */
+#ifndef LH_CLI_QHULL_PRINT_H
+#define LH_CLI_QHULL_PRINT_H
+
+#include "qhull.h"
+
+/* d coordinates as Qhull prints them: "%6.16g " each. */
+void lh_cli_qcoords(FILE *f, const double *x, int d);
+/* qvoronoi's o, p, Fv, Fi, Fo. Returns 0 when out of memory (message printed). */
+int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
+
+#endif

@@ -1,0 +1,114 @@
+/*
+ * qhull_sides.c — pairing facet sides by their vertex sets: facet f's side k is its
+ * vertex list without position k. Hull facets find their neighbours this way, and
+ * the Delaunay simplices' sides on the convex hull find the upper-hull facet across
+ * them (the same (d-1)-simplex, since both triangulate the hull's boundary with the
+ * same perturbation).
+ */
+#include "qhull_sides.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+enum { MAXV = LH_DELAUNAY_MAX_DIM + 2 };
+
+typedef struct side {
+    int32_t facet; /* -1: empty slot */
+    int32_t pos;
+} side;
+
+typedef struct table {
+    side *slot;
+    size_t mask;
+    int nv;
+    const int32_t *vert;
+} table;
+
+static int cmp_i32(const void *a, const void *b)
+{
+    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* The sorted vertices of facet f without position k, and their hash. */
+static uint64_t side_key(const int32_t *vert, int nv, int32_t f, int k, int32_t *key)
+{
+    int m = 0;
+    for (int i = 0; i < nv; i++)
+        if (i != k) key[m++] = vert[(size_t)f * nv + i];
+    qsort(key, (size_t)m, sizeof *key, cmp_i32);
+    uint64_t h = 0x9e3779b97f4a7c15u;
+    for (int i = 0; i < m; i++) h = (h ^ (uint32_t)key[i]) * 0xff51afd7ed558ccdu;
+    return h ^ (h >> 29);
+}
+
+/* The slot holding key (or the empty slot where it would go). */
+static side *find(table *t, const int32_t *key, uint64_t h)
+{
+    int32_t other[MAXV];
+    for (size_t i = h & t->mask;; i = (i + 1) & t->mask) {
+        side *s = &t->slot[i];
+        if (s->facet < 0) return s;
+        side_key(t->vert, t->nv, s->facet, s->pos, other);
+        if (!memcmp(other, key, (size_t)(t->nv - 1) * sizeof *key)) return s;
+    }
+}
+
+static int table_init(table *t, size_t entries, int nv, const int32_t *vert)
+{
+    size_t cap = 16;
+    while (cap < 2 * entries) cap *= 2;
+    t->slot = malloc(cap * sizeof *t->slot);
+    if (!t->slot) return 0;
+    memset(t->slot, 0xff, cap * sizeof *t->slot);
+    t->mask = cap - 1;
+    t->nv = nv;
+    t->vert = vert;
+    return 1;
+}
+
+int lh_cli_pair_within(int nv, size_t m, const int32_t *vert, int32_t *nbr)
+{
+    table t;
+    if (!table_init(&t, m * (size_t)nv, nv, vert)) return 0;
+    int32_t key[MAXV];
+    for (size_t f = 0; f < m; f++)
+        for (int k = 0; k < nv; k++) {
+            nbr[f * nv + k] = -1;
+            side *s = find(&t, key, side_key(vert, nv, (int32_t)f, k, key));
+            if (s->facet < 0) {
+                s->facet = (int32_t)f;
+                s->pos = k;
+            } else {
+                nbr[f * nv + k] = s->facet;
+                nbr[(size_t)s->facet * nv + s->pos] = (int32_t)f;
+            }
+        }
+    free(t.slot);
+    return 1;
+}
+
+int lh_cli_pair_across(int nv, size_t m, const int32_t *vert, int32_t *nbr, size_t mo,
+                       const int32_t *overt, const int32_t *onbr)
+{
+    size_t open = 0;
+    for (size_t i = 0; i < mo * (size_t)nv; i++) open += onbr[i] < 0;
+    table t;
+    if (!table_init(&t, open, nv, overt)) return 0;
+    int32_t key[MAXV];
+    for (size_t g = 0; g < mo; g++)
+        for (int k = 0; k < nv; k++) {
+            if (onbr[g * nv + k] >= 0) continue;
+            side *s = find(&t, key, side_key(overt, nv, (int32_t)g, k, key));
+            s->facet = (int32_t)g;
+            s->pos = k;
+        }
+    for (size_t f = 0; f < m; f++)
+        for (int k = 0; k < nv; k++) {
+            if (nbr[f * nv + k] >= 0) continue;
+            side *s = find(&t, key, side_key(vert, nv, (int32_t)f, k, key));
+            nbr[f * nv + k] = s->facet >= 0 ? -(s->facet + 1) : INT32_MIN;
+        }
+    free(t.slot);
+    return 1;
+}
