@@ -32,6 +32,8 @@ lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
     e->xyz = xyz;
     e->dup = dup;
     e->rng = (opt ? opt->seed : LH__DEFAULT_SEED) | 1;
+    e->progress = opt ? opt->progress : NULL;
+    e->progress_user = opt ? opt->progress_user : NULL;
     return lh_pred_create(&e->alloc, &e->pred);
 }
 
@@ -125,7 +127,12 @@ lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
     if (!e->hashed_ridges) lh__tds_vertex_bound(&e->tds, e->norder + 1);
     if ((st = start(e)) != LH_OK) return st;
     lh__insert_fn insert = e->insert ? e->insert : lh__eng_insert_generic;
-    if ((st = insert(e, (size_t)e->nv, e->norder - (size_t)e->nv, NULL)) != LH_OK) return st;
+    const size_t chunk = e->progress ? (size_t)1 << 16 : e->norder; /* progress reports */
+    for (size_t at = (size_t)e->nv; at < e->norder; at += chunk) {
+        size_t k = e->norder - at < chunk ? e->norder - at : chunk;
+        if ((st = insert(e, at, k, NULL)) != LH_OK) return st;
+        if (e->progress) e->progress(e->progress_user, at + k, e->norder);
+    }
     restore_indices(e);
     return LH_OK;
 }

@@ -332,6 +332,46 @@ LH_TEST(furthest_site_triangulation)
     }
 }
 
+typedef struct progress_log {
+    size_t calls, last, total;
+    int monotone;
+} progress_log;
+
+static void on_progress(void *user, size_t done, size_t total)
+{
+    progress_log *p = user;
+    p->monotone &= done > p->last && done <= total;
+    p->calls++;
+    p->last = done;
+    p->total = total;
+}
+
+/* The progress hook: called every 2^16 sites, increasing, ending at the number of
+ * distinct sites; the output is the same as without it. */
+LH_TEST(progress_is_reported_and_changes_nothing)
+{
+    size_t n = 150000;
+    double *x = malloc(n * 2 * sizeof *x);
+    lh_fam_seed(3);
+    n = lh_fam_make(F_DUPLICATES, 2, n, x);
+    lh_options o;
+    lh_options_default(&o);
+    progress_log log = {0, 0, 0, 1};
+    o.progress = on_progress;
+    o.progress_user = &log;
+    lh_tri *a, *b;
+    LH_ASSERT_EQ_INT(lh_delaunay(2, n, x, &o, &a), LH_OK);
+    LH_ASSERT_EQ_INT(lh_delaunay(2, n, x, NULL, &b), LH_OK);
+    LH_EXPECT_TRUE(lh_test_same_tri(a, b));
+    LH_EXPECT_TRUE(log.monotone);
+    LH_EXPECT_EQ_U64(log.calls, (n - lh_tri_duplicate_count(a) - 3 + 65535) / 65536);
+    LH_EXPECT_EQ_U64(log.last, n - lh_tri_duplicate_count(a));
+    LH_EXPECT_EQ_U64(log.total, log.last);
+    lh_tri_free(a);
+    lh_tri_free(b);
+    free(x);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {LH_CASE(furthest_site_triangulation),LH_CASE(every_allocation_failure_is_survived_by_the_hull),
@@ -339,6 +379,6 @@ int main(int argc, char **argv)
         LH_CASE(output_depends_only_on_the_site_set), LH_CASE(a_vertex_of_huge_degree),
         LH_CASE(duplicates_are_merged_and_reported),
         LH_CASE(bad_input_gets_its_status), LH_CASE(the_check_rejects_what_is_not_delaunay),
-        LH_CASE(every_allocation_failure_is_survived)};
+        LH_CASE(every_allocation_failure_is_survived), LH_CASE(progress_is_reported_and_changes_nothing)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

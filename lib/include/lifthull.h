@@ -195,6 +195,12 @@ typedef struct lh_options {
                                   a runtime value even where a fixed-dimension
                                   build exists (d = 2..5); the output is the same,
                                   only slower: for comparisons (default 0)           */
+    void (*progress)(void *user, size_t done, size_t total);
+                               /* lh_delaunay, lh_convex_hull: called by the building
+                                  thread after every 2^16 sites inserted, with the
+                                  sites done and the distinct sites in all (NULL:
+                                  none, the default)                                 */
+    void *progress_user;       /* handed back to progress (default NULL)            */
 } lh_options;
 
 void lh_options_default(lh_options *opt);
