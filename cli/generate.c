@@ -20,8 +20,8 @@
  * clang through the pragma), and "%.17g" prints every double exactly. So one command
  * line writes the same bytes on every IEEE-754 machine with double evaluation.
  */
-#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen, fchmod, link, unlink, umask, lstat */
 #include "cli.h"
+#include "outfile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -30,8 +30,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #ifdef __clang__
 #pragma STDC FP_CONTRACT OFF
@@ -582,7 +580,7 @@ static int parse_one(int argc, char **argv, int *i, gen_opts *o, const char **ki
         if (!is_opt(a, len, valued[k])) continue;
         const char *v = eq ? eq + 1 : *i + 1 < argc ? argv[++*i] : NULL;
         if (!v) return usage_error("%s needs a value (try lifthull points --help)", valued[k]);
-        uint64_t x;
+        uint64_t x = 0;
         switch (k) {
         case 0:
         case 1:
@@ -684,57 +682,6 @@ static int write_points(FILE *f, const gen_opts *o, const sphere_plan *plan)
     return 0;
 }
 
-/* A fresh FILE.tmpXXXXXX beside FILE, with the permissions a new FILE would get. */
-static FILE *open_tmp(const char *out, char **tmp)
-{
-    size_t len = strlen(out);
-    *tmp = malloc(len + sizeof ".tmpXXXXXX");
-    if (!*tmp) return NULL;
-    memcpy(*tmp, out, len);
-    memcpy(*tmp + len, ".tmpXXXXXX", sizeof ".tmpXXXXXX");
-    int fd = mkstemp(*tmp);
-    if (fd < 0) return NULL;
-    mode_t mask = umask(0);
-    umask(mask);
-    FILE *f = fdopen(fd, "w");
-    if (!f || fchmod(fd, 0666 & ~mask) != 0) {
-        int err = errno;
-        if (f) fclose(f);
-        else close(fd);
-        unlink(*tmp);
-        errno = err;
-        return NULL;
-    }
-    return f;
-}
-
-/* Closes the output; with a temporary file (tmp not NULL) moves it to FILE: rename
- * with -f, else link, which fails if FILE appeared meanwhile. The temporary file
- * never survives. */
-static int finish_file(FILE *f, const gen_opts *o, const char *tmp, int status)
-{
-    int err = status != 0 ? ENOMEM : 0;
-    if (fflush(f) != 0 || ferror(f)) err = err ? err : errno ? errno : EIO;
-    if (fclose(f) != 0) err = err ? err : errno ? errno : EIO;
-    if (!tmp) {
-        if (!err) return LH_EXIT_OK;
-        fprintf(stderr, "lifthull points: cannot write '%s': %s\n", o->out, strerror(err));
-        return LH_EXIT_FAIL;
-    }
-    if (!err && (o->force ? rename(tmp, o->out) : link(tmp, o->out)) != 0) {
-        err = errno;
-        if (err == EEXIST) {
-            unlink(tmp);
-            fprintf(stderr, "lifthull points: '%s' exists (use -f to replace it)\n", o->out);
-            return LH_EXIT_FAIL;
-        }
-    }
-    if (!o->force || err) unlink(tmp);
-    if (!err) return LH_EXIT_OK;
-    fprintf(stderr, "lifthull points: cannot write '%s': %s\n", o->out, strerror(err));
-    return LH_EXIT_FAIL;
-}
-
 int lh_cli_generate(int argc, char **argv)
 {
     gen_opts o;
@@ -749,34 +696,13 @@ int lh_cli_generate(int argc, char **argv)
             return LH_EXIT_FAIL;
         }
     }
-    /* FILE is created or replaced through a temporary file when it is absent or a
-     * regular file; anything else (a device, a pipe, a symbolic link) is written
-     * through, never replaced. */
-    struct stat st;
-    int exists = o.out && lstat(o.out, &st) == 0, direct = exists && !S_ISREG(st.st_mode);
-    if (exists && !o.force) {
-        free(plan.tuples);
-        fprintf(stderr, "lifthull points: '%s' exists (use -f to replace it)\n", o.out);
-        return LH_EXIT_FAIL;
-    }
-    char *tmp = NULL;
-    FILE *f = !o.out ? stdout : direct ? fopen(o.out, "w") : open_tmp(o.out, &tmp);
-    if (!f) {
-        fprintf(stderr, "lifthull points: cannot create '%s': %s\n", o.out, strerror(errno));
-        free(tmp);
+    lh_cli_out out;
+    if (!lh_cli_out_open(&out, "points", o.out, o.force, NULL)) {
         free(plan.tuples);
         return LH_EXIT_FAIL;
     }
-    int status = write_points(f, &o, &plan);
+    int status = write_points(out.f, &o, &plan);
     free(plan.tuples);
-    if (o.out) {
-        r = finish_file(f, &o, tmp, status);
-        free(tmp);
-        return r;
-    }
-    if (status != 0) {
-        fprintf(stderr, "lifthull points: out of memory\n");
-        return LH_EXIT_FAIL;
-    }
-    return lh_cli_finish_output("points");
+    if (status != 0) fprintf(stderr, "lifthull points: out of memory\n");
+    return lh_cli_out_close(&out, "points", status == 0);
 }

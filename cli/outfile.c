@@ -1,5 +1,5 @@
 /* outfile.c — whole-or-nothing output files (outfile.h). */
-#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen, link */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen, fchmod, link, lstat, umask */
 #include "outfile.h"
 
 #include "cli.h"
@@ -17,6 +17,30 @@ static int same_file(const char *a, const char *b)
            sa.st_ino == sb.st_ino;
 }
 
+/* A fresh PATH.tmpXXXXXX beside PATH, with the permissions a new PATH would get. */
+static FILE *open_tmp(const char *path, char **tmp)
+{
+    size_t len = strlen(path);
+    *tmp = malloc(len + sizeof ".tmpXXXXXX");
+    if (!*tmp) return NULL;
+    memcpy(*tmp, path, len);
+    memcpy(*tmp + len, ".tmpXXXXXX", sizeof ".tmpXXXXXX");
+    int fd = mkstemp(*tmp);
+    if (fd < 0) return NULL;
+    mode_t mask = umask(0);
+    umask(mask);
+    FILE *f = fdopen(fd, "w");
+    if (!f || fchmod(fd, 0666 & ~mask) != 0) {
+        int err = errno;
+        if (f) fclose(f);
+        else close(fd);
+        unlink(*tmp);
+        errno = err;
+        return NULL;
+    }
+    return f;
+}
+
 int lh_cli_out_open(lh_cli_out *o, const char *cmd, const char *path, int replace,
                     const char *input)
 {
@@ -25,30 +49,22 @@ int lh_cli_out_open(lh_cli_out *o, const char *cmd, const char *path, int replac
         o->f = stdout;
         return 1;
     }
-    struct stat st;
     if (same_file(path, input)) {
-        fprintf(stderr, "lifthull %s: %s: is the input file; it will not be overwritten\n", cmd, path);
+        fprintf(stderr, "lifthull %s: '%s' is the input file; it is not overwritten\n", cmd, path);
         return 0;
     }
-    if (!replace && stat(path, &st) == 0) {
-        fprintf(stderr, "lifthull %s: %s: exists; not overwritten\n", cmd, path);
+    /* Created or replaced through a temporary file when absent or a regular file;
+     * anything else (a device, a pipe, a symbolic link) is written through, never
+     * replaced. */
+    struct stat st;
+    int exists = lstat(path, &st) == 0, direct = exists && !S_ISREG(st.st_mode);
+    if (exists && !replace) {
+        fprintf(stderr, "lifthull %s: '%s' exists (use -f to replace it)\n", cmd, path);
         return 0;
     }
-    size_t len = strlen(path);
-    o->tmp = malloc(len + 16);
-    if (!o->tmp) {
-        fprintf(stderr, "lifthull %s: out of memory\n", cmd);
-        return 0;
-    }
-    memcpy(o->tmp, path, len);
-    memcpy(o->tmp + len, ".tmpXXXXXX", 11);
-    int fd = mkstemp(o->tmp);
-    if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
-        fprintf(stderr, "lifthull %s: %s: %s\n", cmd, path, strerror(errno));
-        if (fd >= 0) {
-            close(fd);
-            unlink(o->tmp);
-        }
+    o->f = direct ? fopen(path, "w") : open_tmp(path, &o->tmp);
+    if (!o->f) {
+        fprintf(stderr, "lifthull %s: cannot create '%s': %s\n", cmd, path, strerror(errno));
         free(o->tmp);
         o->tmp = NULL;
         return 0;
@@ -60,18 +76,18 @@ int lh_cli_out_open(lh_cli_out *o, const char *cmd, const char *path, int replac
 
 int lh_cli_out_close(lh_cli_out *o, const char *cmd, int ok)
 {
-    if (!o->tmp) return ok ? lh_cli_finish_output(cmd) : LH_EXIT_FAIL;
-    int err = fflush(o->f) != 0 || ferror(o->f);
-    err |= fclose(o->f) != 0;
-    int moved = 0;
-    if (ok && !err) {
-        moved = (o->replace ? rename(o->tmp, o->path) : link(o->tmp, o->path)) == 0;
-        if (!moved) fprintf(stderr, "lifthull %s: %s: %s\n", cmd, o->path, strerror(errno));
-    } else if (ok) {
-        fprintf(stderr, "lifthull %s: %s: error writing the output\n", cmd, o->path);
-    }
-    if (!moved || !o->replace) unlink(o->tmp);
+    if (!o->path) return ok ? lh_cli_finish_output(cmd) : LH_EXIT_FAIL;
+    int err = 0;
+    if (fflush(o->f) != 0 || ferror(o->f)) err = errno ? errno : EIO;
+    if (fclose(o->f) != 0 && !err) err = errno ? errno : EIO;
+    if (ok && !err && o->tmp && (o->replace ? rename(o->tmp, o->path) : link(o->tmp, o->path)) != 0)
+        err = errno;
+    if (o->tmp && (!o->replace || err || !ok)) unlink(o->tmp);
     free(o->tmp);
     o->tmp = NULL;
-    return moved ? LH_EXIT_OK : LH_EXIT_FAIL;
+    if (ok && err == EEXIST)
+        fprintf(stderr, "lifthull %s: '%s' exists (use -f to replace it)\n", cmd, o->path);
+    else if (ok && err)
+        fprintf(stderr, "lifthull %s: cannot write '%s': %s\n", cmd, o->path, strerror(err));
+    return ok && !err ? LH_EXIT_OK : LH_EXIT_FAIL;
 }
