@@ -1,10 +1,663 @@
-/* natural.c — lh_tri_natural_coords (placeholder). */
+/*
+ * natural.c — lh_tri_natural_coords: Sibson's natural-neighbour coordinates in 2D
+ * and 3D (Sibson 1980, "A vector identity for the Dirichlet tessellation", Math.
+ * Proc. Camb. Phil. Soc. 87; Sibson 1981, "A brief description of natural neighbour
+ * interpolation"). The weight of site p_i is vol(S_i) / sum_j vol(S_j), where
+ * S_i = V(q) ∩ V_old(p_i) is the part of p_i's Voronoi region that q's region takes
+ * when q is inserted. Sibson's identity sum_i vol(S_i) (p_i - q) = 0 is the linear
+ * precision the tests check.
+ *
+ * Decisions, exact (lifthull.h, predicates):
+ *   - where q is: lh_tri_locate (orient_d); outside the hull is an error; q equal to a
+ *     vertex (coordinates compared) is that site; q on the hull's boundary (orient_d
+ *     zero against the located simplex's facets, and the face holding q has a hull
+ *     facet around it) gets the limit of the coordinates, its barycentric coordinates
+ *     in that face (Sukumar, Moran & Belytschko 1998, "The natural element method in
+ *     solid mechanics", IJNME 43: linear along a convex boundary).
+ *   - the conflict region (Bowyer 1981; Watson 1981): the simplices whose
+ *     circumsphere holds q strictly, insphere_d(simplex, q) < 0 for a positively
+ *     oriented simplex. It is connected through facets and star-shaped from q (the
+ *     lifted lower hull is convex: along a segment from q into a conflict simplex,
+ *     every simplex crossed has its lifted hyperplane at least as high above q's
+ *     lifted point), so a breadth-first search from the located simplex finds it.
+ *     A simplex whose sphere passes exactly through q would steal nothing, so the
+ *     strict test is the continuous one (Hiyoshi & Sugihara 2002, "Improving
+ *     continuity of Voronoi-based interpolation over Delaunay spheres", CGTA 22).
+ *
+ * Volumes, floating point (design):
+ *   Watson's formula (Watson 1992, "Contouring", §3.7) sums signed simplices built
+ *   from the circumcentres of q with every facet of every conflict simplex; near the
+ *   hyperplane of an internal facet those centres run off to infinity and the sum
+ *   cancels. We never form a centre for an internal facet. Instead each S_i is
+ *   measured by the pyramid decomposition of a polytope's volume (Lasserre 1983,
+ *   "An analytical expression and an algorithm for the volume of a convex polyhedron
+ *   in R^n", JOTA 39), apex p_i:
+ *       vol(S_i) = (1/d) sum_faces area(face) * (signed distance of p_i to its plane).
+ *   The faces of S_i lie on bisectors, so every distance is exact from the sites:
+ *     (a) on the bisector of p_i and q: q's new face with p_i; p_i is on the far
+ *         side, distance -|q - p_i| / 2;
+ *     (b) on the bisector of p_i and p_j, for every edge p_i p_j of a conflict
+ *         simplex (no other old Voronoi face reaches into V(q)): the part of the old
+ *         face dual to that edge inside V(q), distance +|p_j - p_i| / 2. That face,
+ *         shared by S_i and S_j, is measured once.
+ *   Face vertices, in order (Voronoi vertices are circumcentres of the dual
+ *   simplices): around the edge p_i p_j the conflict simplices form one arc (V(q)
+ *   cuts the convex old face by a half-plane) or the whole cycle; each gives its
+ *   circumcentre, and where the arc meets the cavity's boundary through a facet F
+ *   the vertex is the circumcentre of q + F (a simplex of the new triangulation,
+ *   never flat: q is strictly inside the hull and not on F's plane). Face (a)'s
+ *   vertices are the centres of q + F for the cavity's boundary facets F around p_i;
+ *   the arc around a boundary edge p_i p_x joins the two such facets through it,
+ *   which are consecutive around p_i, so each arc also gives one edge of face (a) of
+ *   p_i and of p_x. Areas: a convex polygon fanned from one of its vertices into
+ *   triangles of one orientation, each measured by the norm of a cross product
+ *   (2D: faces are segments, lengths). Coordinates are taken relative to q.
+ *   The error in vol(S_i) is a few ulps of the cones from p_i, i.e. of vol(V(q)):
+ *   weights are accurate in absolute terms (not relative ones for tiny weights); a
+ *   site whose computed volume is not positive (a face of zero area, exactly or
+ *   within rounding) is left out. If a construction fails in floating point (q
+ *   within rounding of the hull), the coordinates of q in the located simplex
+ *   (linear precision too) are returned instead.
+ *
+ * Memory: one block per call through t->alloc, sized for a number of conflict
+ * simplices; when the region is larger the search restarts with four times that.
+ */
 #include "dt.h"
+#include "geom.h"
+#include "lh_alloc.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { NN_MAXD = 3, NN_MAXV = NN_MAXD + 1, NN_FIRST_CAP = 48 };
+
+#define NN_EMPTY UINT64_MAX
+
+/* A natural neighbour and its (not yet normalised) weight. */
+typedef struct nn_pair {
+    int32_t site;
+    double w;
+} nn_pair;
+
+/* The work of one query. Conflict simplices have indices 0..nconf-1 (sorted by
+ * simplex number, so the result does not depend on where the walk started), sites
+ * of the conflict simplices ("local sites") 0..nsite-1. */
+typedef struct nn_ws {
+    size_t cap;        /* conflict simplices the arrays hold; sites: cap + d   */
+    uint64_t *key;     /* open addressing: simplex s as 2s, site v as 2v+1     */
+    int32_t *val;      /* simplex: conflict index or -1; site: local index     */
+    size_t mask;       /* table size - 1                                       */
+    size_t nconf, nsite;
+    int32_t *conf;     /* cap: conflict simplices                              */
+    int32_t *lv;       /* (d+1) per conflict simplex: its local sites          */
+    int32_t *nb;       /* (d+1) per conflict simplex: neighbour's conflict
+                          index, -1 for a non-conflict simplex or the hull     */
+    uint8_t *done;     /* per conflict simplex: bit e, its edge e measured     */
+    double *cc;        /* d per conflict simplex: circumcentre (relative to q) */
+    double *fc;        /* (d+1)*d per conflict simplex: centre of q + facet j
+                          where facet j is on the cavity's boundary            */
+    int32_t *site;     /* per local site: its index in t                       */
+    double *x;         /* d per local site: coordinates relative to q          */
+    double *vol;       /* per local site: d * vol(S_i), accumulated            */
+    double *aq;        /* per local site: area of q's new face with it         */
+    double *root;      /* d per local site: a vertex of that face              */
+    uint8_t *rooted;
+    nn_pair *pair;     /* per local site: the result                           */
+} nn_ws;
+
+/* ---- the workspace ---------------------------------------------------------------- */
+
+/* Reserves count elements of size bytes at *off; 0 on size_t overflow. */
+static int reserve(size_t *off, size_t count, size_t size)
+{
+    if (count > (SIZE_MAX - *off) / size) return 0;
+    *off += count * size;
+    *off = (*off + 7) & ~(size_t)7;
+    return *off != 0;
+}
+
+/* The block for cap conflict simplices, carved into w's arrays; NULL on failure. */
+static void *ws_create(const lh_allocator *a, int d, size_t cap, nn_ws *w)
+{
+    const size_t nv = (size_t)d + 1, ns = cap + (size_t)d;
+    size_t entries = nv * cap + 1 + ns, tsize = 16;
+    while (tsize < 2 * entries) tsize *= 2;
+    size_t off[16], o = 0;
+    int i = 0, ok = 1;
+    /* doubles and uint64 first: every later offset stays 8-aligned */
+    off[i++] = o, ok &= reserve(&o, cap * (size_t)d, sizeof(double));      /* cc   */
+    off[i++] = o, ok &= reserve(&o, cap * nv * (size_t)d, sizeof(double)); /* fc   */
+    off[i++] = o, ok &= reserve(&o, ns * (size_t)d, sizeof(double));       /* x    */
+    off[i++] = o, ok &= reserve(&o, ns, sizeof(double));                   /* vol  */
+    off[i++] = o, ok &= reserve(&o, ns, sizeof(double));                   /* aq   */
+    off[i++] = o, ok &= reserve(&o, ns * (size_t)d, sizeof(double));       /* root */
+    off[i++] = o, ok &= reserve(&o, ns, sizeof(nn_pair));                  /* pair */
+    off[i++] = o, ok &= reserve(&o, tsize, sizeof(uint64_t));              /* key  */
+    off[i++] = o, ok &= reserve(&o, tsize, sizeof(int32_t));               /* val  */
+    off[i++] = o, ok &= reserve(&o, cap, sizeof(int32_t));                 /* conf */
+    off[i++] = o, ok &= reserve(&o, cap * nv, sizeof(int32_t));            /* lv   */
+    off[i++] = o, ok &= reserve(&o, cap * nv, sizeof(int32_t));            /* nb   */
+    off[i++] = o, ok &= reserve(&o, ns, sizeof(int32_t));                  /* site */
+    off[i++] = o, ok &= reserve(&o, cap, 1);                               /* done */
+    off[i++] = o, ok &= reserve(&o, ns, 1);                                /* rooted */
+    char *b = ok ? lh__alloc(a, o) : NULL;
+    if (!b) return NULL;
+    i = 0;
+    w->cc = (double *)(b + off[i++]);
+    w->fc = (double *)(b + off[i++]);
+    w->x = (double *)(b + off[i++]);
+    w->vol = (double *)(b + off[i++]);
+    w->aq = (double *)(b + off[i++]);
+    w->root = (double *)(b + off[i++]);
+    w->pair = (nn_pair *)(b + off[i++]);
+    w->key = (uint64_t *)(b + off[i++]);
+    w->val = (int32_t *)(b + off[i++]);
+    w->conf = (int32_t *)(b + off[i++]);
+    w->lv = (int32_t *)(b + off[i++]);
+    w->nb = (int32_t *)(b + off[i++]);
+    w->site = (int32_t *)(b + off[i++]);
+    w->done = (uint8_t *)(b + off[i++]);
+    w->rooted = (uint8_t *)(b + off[i++]);
+    w->cap = cap;
+    w->mask = tsize - 1;
+    w->nconf = w->nsite = 0;
+    memset(w->key, 0xff, tsize * sizeof *w->key);
+    memset(w->done, 0, cap);
+    memset(w->rooted, 0, ns);
+    memset(w->vol, 0, ns * sizeof *w->vol);
+    memset(w->aq, 0, ns * sizeof *w->aq);
+    return b;
+}
+
+/* The slot of key k: where it is, or the empty slot where it goes. */
+static size_t slot(const nn_ws *w, uint64_t k)
+{
+    size_t i = (size_t)((k * 0x9E3779B97F4A7C15u) >> 29) & w->mask;
+    while (w->key[i] != NN_EMPTY && w->key[i] != k) i = (i + 1) & w->mask;
+    return i;
+}
+
+/* ---- the conflict region ---------------------------------------------------------- */
+
+/* insphere_d(s, q) < 0: q strictly inside the circumsphere of the positively
+ * oriented simplex s. */
+static int in_conflict(lh_tri *t, int32_t s, const double *q)
+{
+    const int nv = t->d + 1;
+    const double *p[NN_MAXV + 1];
+    for (int j = 0; j < nv; j++) p[j] = t->xyz + (size_t)t->simp[(size_t)s * nv + j] * t->d;
+    p[nv] = q;
+    return lh_insphere(t->pred, t->d, p) < 0;
+}
+
+static int cmp_i32(const void *a, const void *b)
+{
+    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* Breadth-first search from s0 (a conflict simplex) over the neighbours; every
+ * simplex tested is in the table (-1 when not in conflict). Returns 0 when more
+ * than w->cap simplices conflict. */
+static int conflict_region(lh_tri *t, const double *q, int32_t s0, nn_ws *w)
+{
+    const int nv = t->d + 1;
+    w->key[slot(w, 2 * (uint64_t)s0)] = 2 * (uint64_t)s0;
+    w->conf[w->nconf++] = s0;
+    for (size_t c = 0; c < w->nconf; c++) {
+        const int32_t *nbr = t->nbr + (size_t)w->conf[c] * nv;
+        for (int k = 0; k < nv; k++) {
+            if (nbr[k] < 0) continue;
+            uint64_t key = 2 * (uint64_t)nbr[k];
+            size_t i = slot(w, key);
+            if (w->key[i] == key) continue;
+            w->key[i] = key;
+            w->val[i] = -1;
+            if (!in_conflict(t, nbr[k], q)) continue;
+            if (w->nconf == w->cap) return 0;
+            w->conf[w->nconf++] = nbr[k];
+        }
+    }
+    return 1;
+}
+
+/* After the search: conflict indices in simplex order, the local sites (relative
+ * coordinates), and each conflict simplex's local sites and conflict neighbours. */
+static void index_region(const lh_tri *t, const double *q, nn_ws *w)
+{
+    const int d = t->d, nv = d + 1;
+    qsort(w->conf, w->nconf, sizeof *w->conf, cmp_i32);
+    for (size_t c = 0; c < w->nconf; c++) w->val[slot(w, 2 * (uint64_t)w->conf[c])] = (int32_t)c;
+    for (size_t c = 0; c < w->nconf; c++) {
+        const int32_t *v = t->simp + (size_t)w->conf[c] * nv, *nbr = t->nbr + (size_t)w->conf[c] * nv;
+        for (int j = 0; j < nv; j++) {
+            uint64_t key = 2 * (uint64_t)v[j] + 1;
+            size_t i = slot(w, key);
+            if (w->key[i] != key) {
+                w->key[i] = key;
+                w->val[i] = (int32_t)w->nsite;
+                w->site[w->nsite] = v[j];
+                for (int k = 0; k < d; k++)
+                    w->x[w->nsite * d + k] = t->xyz[(size_t)v[j] * d + k] - q[k];
+                w->nsite++;
+            }
+            w->lv[c * nv + j] = w->val[i];
+            w->nb[c * nv + j] = nbr[j] < 0 ? -1 : w->val[slot(w, 2 * (uint64_t)nbr[j])];
+        }
+    }
+}
+
+/* Circumcentres (relative to q) of the conflict simplices and of q with each facet
+ * on the cavity's boundary. Returns 0 when one is singular in floating point. */
+static int centres(nn_ws *w, int d)
+{
+    const int nv = d + 1;
+    static const double origin[NN_MAXD] = {0, 0, 0};
+    for (size_t c = 0; c < w->nconf; c++) {
+        const double *p[NN_MAXV];
+        for (int j = 0; j < nv; j++) p[j] = w->x + (size_t)w->lv[c * nv + j] * d;
+        if (!lh__circumcenter(d, d, p, w->cc + c * d)) return 0;
+        for (int k = 0; k < nv; k++) {
+            if (w->nb[c * nv + k] >= 0) continue;
+            const double *f[NN_MAXV];
+            f[0] = origin;
+            for (int j = 0, m = 1; j < nv; j++)
+                if (j != k) f[m++] = p[j];
+            if (!lh__circumcenter(d, d, f, w->fc + (c * nv + k) * d)) return 0;
+        }
+    }
+    return 1;
+}
+
+/* ---- volumes ----------------------------------------------------------------------- */
+
+static double dist(const double *a, const double *b, int d)
+{
+    double s = 0;
+    for (int k = 0; k < d; k++) s += (a[k] - b[k]) * (a[k] - b[k]);
+    return sqrt(s);
+}
+
+/* Twice the area of the triangle r a b in R^3. */
+static double tri_area2(const double *r, const double *a, const double *b)
+{
+    double u[3], v[3];
+    for (int k = 0; k < 3; k++) u[k] = a[k] - r[k], v[k] = b[k] - r[k];
+    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    return sqrt(x * x + y * y + z * z);
+}
+
+/* The face of S_i and S_j on their bisector, of the given measure: adds its
+ * cone from each of them, measure * |p_j - p_i| / 2. */
+static void add_shared_face(nn_ws *w, int d, int32_t i, int32_t j, double measure)
+{
+    double h = 0.5 * dist(w->x + (size_t)i * d, w->x + (size_t)j * d, d) * measure;
+    w->vol[i] += h;
+    w->vol[j] += h;
+}
+
+/* An edge a b of q's new face with local site i: adds its fan triangle from the
+ * face's first vertex (2D: the face is the segment; its second end gives the
+ * length). */
+static void add_q_face_edge(nn_ws *w, int d, int32_t i, const double *a, const double *b)
+{
+    double *r = w->root + (size_t)i * d;
+    if (!w->rooted[i]) {
+        memcpy(r, a, (size_t)d * sizeof *r);
+        w->rooted[i] = 1;
+    }
+    w->aq[i] += d == 2 ? dist(r, b, 2) : 0.5 * tri_area2(r, a, b);
+}
+
+/* 2D: each edge of a conflict triangle, once: its Voronoi edge inside V(q) runs
+ * from the triangle's centre to the neighbour's (both in conflict) or to the centre
+ * of q + the edge (the edge is on the cavity's boundary, which then also gives one
+ * end of the q-faces of its two sites; each has exactly two boundary edges). */
+static void volumes_2d(nn_ws *w)
+{
+    for (size_t c = 0; c < w->nconf; c++)
+        for (int k = 0; k < 3; k++) {
+            int32_t n = w->nb[c * 3 + k], i = w->lv[c * 3 + (k + 1) % 3], j = w->lv[c * 3 + (k + 2) % 3];
+            const double *cc = w->cc + c * 2;
+            if (n >= 0) {
+                if ((size_t)n > c) add_shared_face(w, 2, i, j, dist(cc, w->cc + (size_t)n * 2, 2));
+                continue;
+            }
+            const double *f = w->fc + (c * 3 + k) * 2;
+            add_shared_face(w, 2, i, j, dist(cc, f, 2));
+            add_q_face_edge(w, 2, i, f, f);
+            add_q_face_edge(w, 2, j, f, f);
+        }
+}
+
+/* 3D: position of local site v in conflict tetrahedron c. */
+static int pos_in(const nn_ws *w, size_t c, int32_t v)
+{
+    int p = 0;
+    while (w->lv[c * 4 + p] != v) p++;
+    return p;
+}
+
+/* The vertex of tetrahedron c that is none of i, j, x. */
+static int32_t other(const nn_ws *w, size_t c, int32_t i, int32_t j, int32_t x)
+{
+    for (int p = 0;; p++) {
+        int32_t v = w->lv[c * 4 + p];
+        if (v != i && v != j && v != x) return v;
+    }
+}
+
+static void mark_edge(nn_ws *w, size_t c, int32_t i, int32_t j)
+{
+    static const uint8_t bit[4][4] = {{0, 1, 2, 4}, {1, 0, 8, 16}, {2, 8, 0, 32}, {4, 16, 32, 0}};
+    w->done[c] |= bit[pos_in(w, c, i)][pos_in(w, c, j)];
+}
+
+/* A polygon's area, fanned from its first vertex; vertices arrive in order. */
+typedef struct nn_fan {
+    const double *first, *prev;
+    double area2;
+} nn_fan;
+
+static void fan_add(nn_fan *f, const double *v)
+{
+    if (!f->first) f->first = v;
+    else if (f->prev != f->first) f->area2 += tri_area2(f->first, f->prev, v);
+    f->prev = v;
+}
+
+/* 3D: the old Voronoi face of edge i j (sites of conflict tetrahedron c, k and l
+ * its other two) inside V(q). The walk state (tetrahedron, x): leave across the
+ * facet opposite x; in the next tetrahedron leave opposite the vertex of this one
+ * that is none of i, j, x. Backwards (leaving opposite l) to the arc's first
+ * tetrahedron, or round to c; then forwards, measuring. */
+static void edge_face_3d(nn_ws *w, size_t c, int32_t i, int32_t j, int32_t k, int32_t l)
+{
+    size_t start = c, steps = 0;
+    int32_t x = l;
+    const double *enter = NULL;
+    for (size_t s = c;; steps++) {
+        int p = pos_in(w, s, x);
+        int32_t n = w->nb[s * 4 + p], y = other(w, s, i, j, x);
+        if (n < 0) { /* s is the arc's first tetrahedron; q + facet p its entry */
+            enter = w->fc + (s * 4 + p) * 3;
+            start = s;
+            x = y;
+            break;
+        }
+        if ((size_t)n == c || steps > w->nconf) { /* the whole cycle conflicts */
+            x = k;
+            break;
+        }
+        s = (size_t)n;
+        x = y;
+    }
+    nn_fan fan = {NULL, NULL, 0};
+    if (enter) fan_add(&fan, enter);
+    size_t s = start;
+    for (steps = 0; steps <= w->nconf; steps++) {
+        fan_add(&fan, w->cc + s * 3);
+        mark_edge(w, s, i, j);
+        int p = pos_in(w, s, x);
+        int32_t n = w->nb[s * 4 + p], y = other(w, s, i, j, x);
+        if (n < 0) { /* the arc's exit: with its entry, an edge of q's faces */
+            const double *exit = w->fc + (s * 4 + p) * 3;
+            fan_add(&fan, exit);
+            if (enter) {
+                add_q_face_edge(w, 3, i, enter, exit);
+                add_q_face_edge(w, 3, j, enter, exit);
+            }
+            break;
+        }
+        if ((size_t)n == start) break;
+        s = (size_t)n;
+        x = y;
+    }
+    add_shared_face(w, 3, i, j, 0.5 * fan.area2);
+}
+
+static void volumes_3d(nn_ws *w)
+{
+    static const int e[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    for (size_t c = 0; c < w->nconf; c++)
+        for (int m = 0; m < 6; m++) {
+            const int32_t *v = w->lv + c * 4;
+            int a = e[m][0], b = e[m][1], k = e[5 - m][0], l = e[5 - m][1];
+            if (w->done[c] & (1u << m)) continue;
+            edge_face_3d(w, c, v[a], v[b], v[k], v[l]);
+        }
+}
+
+/* d * vol(S_i) for every local site: the shared faces were added; the face with q,
+ * at distance |p_i - q| / 2 on the far side, is subtracted. */
+static void finish_volumes(nn_ws *w, int d)
+{
+    static const double origin[NN_MAXD] = {0, 0, 0};
+    for (size_t i = 0; i < w->nsite; i++)
+        w->vol[i] -= 0.5 * dist(w->x + i * d, origin, d) * w->aq[i];
+}
+
+/* The local coordinates scaled by a power of two (exactly) to magnitudes near 1, so
+ * that no construction overflows or underflows; the weights are ratios of volumes
+ * and do not change. */
+static void rescale(nn_ws *w, int d)
+{
+    double big = 0;
+    for (size_t i = 0; i < w->nsite * (size_t)d; i++) big = fmax(big, fabs(w->x[i]));
+    int e;
+    frexp(big, &e);
+    if (big == 0 || !isfinite(big) || e == 0) return;
+    for (size_t i = 0; i < w->nsite * (size_t)d; i++) w->x[i] = ldexp(w->x[i], -e);
+}
+
+/* ---- results ---------------------------------------------------------------------- */
+
+static int cmp_pair(const void *a, const void *b)
+{
+    int32_t x = ((const nn_pair *)a)->site, y = ((const nn_pair *)b)->site;
+    return (x > y) - (x < y);
+}
+
+/* Keeps the pairs with a positive finite weight, normalised to sum 1 and sorted by
+ * site; returns how many (0 when none, or their sum is not finite). */
+static size_t normalise(nn_pair *p, size_t m)
+{
+    size_t k = 0;
+    double total = 0;
+    for (size_t i = 0; i < m; i++)
+        if (p[i].w > 0 && p[i].w <= DBL_MAX) {
+            total += p[i].w;
+            p[k++] = p[i];
+        }
+    if (!(total > 0 && total <= DBL_MAX)) return 0;
+    for (size_t i = 0; i < k; i++) p[i].w /= total;
+    qsort(p, k, sizeof *p, cmp_pair);
+    return k;
+}
+
+static lh_status write_out(const nn_pair *p, size_t m, size_t cap, int32_t *sites,
+                           double *weights, size_t *count)
+{
+    *count = m;
+    if (m > cap) return LH_ERR_TOO_LARGE;
+    for (size_t i = 0; i < m; i++) {
+        sites[i] = p[i].site;
+        weights[i] = p[i].w;
+    }
+    return LH_OK;
+}
+
+/* The located simplex's barycentric coordinates (the fallback: linear precision as
+ * well); normalised, as above. */
+static size_t simplex_pairs(const lh_tri *t, const lh_location *loc, nn_pair *p)
+{
+    const int nv = t->d + 1;
+    for (int j = 0; j < nv; j++) {
+        p[j].site = t->simp[(size_t)loc->simplex * nv + j];
+        p[j].w = loc->bary[j];
+    }
+    return normalise(p, (size_t)nv);
+}
+
+/* ---- special positions: a site, the hull's boundary -------------------------------- */
+
+/* 3D: whether the edge a b (sites of tetrahedron s) is on the hull: the walk round it
+ * (as edge_face_3d's, over t's arrays) reaches the hull before coming back to s. */
+static int edge_on_hull(const lh_tri *t, int32_t s, int32_t a, int32_t b)
+{
+    const int32_t *v = t->simp + (size_t)s * 4;
+    int32_t x = v[0] != a && v[0] != b ? v[0] : v[1] != a && v[1] != b ? v[1] : v[2];
+    int32_t cur = s;
+    for (size_t steps = 0; steps <= t->count; steps++) {
+        v = t->simp + (size_t)cur * 4;
+        int p = 0, y = -1;
+        for (int j = 0; j < 4; j++) {
+            if (v[j] == x) p = j;
+            else if (v[j] != a && v[j] != b) y = v[j];
+        }
+        int32_t n = t->nbr[(size_t)cur * 4 + p];
+        if (n < 0) return 1;
+        if (n == s) return 0;
+        cur = n;
+        x = y;
+    }
+    return 0; /* not reached: the tetrahedra round an edge are finitely many */
+}
+
+/* Barycentric coordinates of q in the face v[0..m-1] (m = 2, 3) whose affine hull
+ * holds it: the normal equations relative to v[0]. Returns 0 if singular. */
+static int face_bary(int d, const double *const *v, int m, const double *q, double *lam)
+{
+    double g[4], r[2];
+    const int k = m - 1;
+    for (int i = 0; i < k; i++) {
+        r[i] = 0;
+        for (int c = 0; c < d; c++) r[i] += (v[i + 1][c] - v[0][c]) * (q[c] - v[0][c]);
+        for (int j = 0; j < k; j++) {
+            g[i * k + j] = 0;
+            for (int c = 0; c < d; c++) g[i * k + j] += (v[i + 1][c] - v[0][c]) * (v[j + 1][c] - v[0][c]);
+        }
+    }
+    if (!lh__solve(g, r, k)) return 0;
+    lam[0] = 1;
+    for (int i = 0; i < k; i++) {
+        lam[i + 1] = r[i];
+        lam[0] -= r[i];
+    }
+    return 1;
+}
+
+/* q at a vertex of the located simplex s (coordinates equal), or on the hull's
+ * boundary: there q is in the relative interior of the face of s whose vertices
+ * have a nonzero orient_d (exact) — a hull facet (its neighbour is -1) or, in 3D,
+ * an edge with a hull facet round it. Writes the pairs and returns how many (at
+ * most d, normalised); 0 when q is inside the hull and not a site. */
+static size_t special_point(lh_tri *t, const double *q, int32_t s, nn_pair *out)
+{
+    const int d = t->d, nv = d + 1;
+    const int32_t *v = t->simp + (size_t)s * nv, *nbr = t->nbr + (size_t)s * nv;
+    const double *p[NN_MAXV];
+    for (int j = 0; j < nv; j++) {
+        const double *x = t->xyz + (size_t)v[j] * d;
+        int same = 1;
+        for (int c = 0; c < d; c++) same &= x[c] == q[c];
+        if (same) {
+            out[0].site = v[j];
+            out[0].w = 1;
+            return 1;
+        }
+    }
+    int zero[NN_MAXV], nz = 0, face[NN_MAXV], m = 0;
+    for (int k = 0; k < nv; k++) {
+        for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)v[j] * d;
+        zero[k] = lh_orient(t->pred, d, p) == 0;
+        nz += zero[k];
+        if (!zero[k]) face[m++] = k;
+    }
+    int on_hull = 0;
+    if (nz == 1) {
+        for (int k = 0; k < nv; k++)
+            if (zero[k]) on_hull = nbr[k] < 0;
+    } else if (nz == 2 && d == 3) {
+        on_hull = edge_on_hull(t, s, v[face[0]], v[face[1]]);
+    }
+    if (!on_hull) return 0;
+    double lam[NN_MAXV];
+    for (int j = 0; j < m; j++) p[j] = t->xyz + (size_t)v[face[j]] * d;
+    if (!face_bary(d, p, m, q, lam)) return 0; /* not reached: the face is a simplex */
+    for (int j = 0; j < m; j++) {
+        out[j].site = v[face[j]];
+        out[j].w = lam[j];
+    }
+    return normalise(out, (size_t)m);
+}
+
+/* ---- the entry point --------------------------------------------------------------- */
+
+/* Sibson's weights of q inside the hull (not a site, not on the boundary) into the
+ * workspace's pairs; returns how many, 0 if the constructions failed. */
+static size_t sibson(nn_ws *w, int d)
+{
+    if (!centres(w, d)) return 0;
+    if (d == 2) volumes_2d(w);
+    else volumes_3d(w);
+    finish_volumes(w, d);
+    for (size_t i = 0; i < w->nsite; i++) {
+        w->pair[i].site = w->site[i];
+        w->pair[i].w = w->vol[i];
+    }
+    return normalise(w->pair, w->nsite);
+}
+
+static lh_status interior(lh_tri *t, const double *q, const lh_location *loc, size_t cap,
+                          int32_t *sites, double *weights, size_t *count)
+{
+    const int d = t->d;
+    if (!in_conflict(t, loc->simplex, q)) return LH_ERR_INTERNAL; /* not reached */
+    for (size_t cap_c = NN_FIRST_CAP;; cap_c = cap_c > t->count / 4 ? t->count : 4 * cap_c) {
+        if (cap_c > t->count) cap_c = t->count;
+        nn_ws w;
+        void *block = ws_create(&t->alloc, d, cap_c, &w);
+        if (!block) return LH_ERR_NOMEM;
+        if (!conflict_region(t, q, loc->simplex, &w)) {
+            lh__free(&t->alloc, block);
+            continue;
+        }
+        index_region(t, q, &w);
+        rescale(&w, d);
+        size_t m = sibson(&w, d);
+        lh_status st;
+        if (m) {
+            st = write_out(w.pair, m, cap, sites, weights, count);
+        } else {
+            nn_pair p[NN_MAXV];
+            m = simplex_pairs(t, loc, p);
+            st = m ? write_out(p, m, cap, sites, weights, count) : LH_ERR_INTERNAL;
+        }
+        lh__free(&t->alloc, block);
+        return st;
+    }
+}
 
 lh_status lh_tri_natural_coords(lh_tri *t, const double *q, int32_t hint, size_t cap,
                                 int32_t *sites, double *weights, size_t *count)
 {
-    (void)t; (void)q; (void)hint; (void)cap; (void)sites; (void)weights;
-    if (count) *count = 0;
-    return LH_ERR_DIMENSION;
+    if (!count) return LH_ERR_INVALID_ARGUMENT;
+    *count = 0;
+    if (!t || !q || (cap > 0 && (!sites || !weights))) return LH_ERR_INVALID_ARGUMENT;
+    if ((t->d != 2 && t->d != 3) || t->frame.k != t->d) return LH_ERR_DIMENSION;
+    if (t->furthest) return LH_ERR_INVALID_ARGUMENT;
+    if (lh_coords_validate(t->d, 1, q, NULL) != LH_OK) return LH_ERR_NONFINITE;
+    lh_location loc;
+    lh_status st = lh_tri_locate(t, q, hint, &loc);
+    if (st != LH_OK) return st;
+    if (loc.simplex < 0) return LH_ERR_INVALID_ARGUMENT;
+    nn_pair p[NN_MAXV];
+    size_t m = special_point(t, q, loc.simplex, p);
+    if (m) return write_out(p, m, cap, sites, weights, count);
+    st = interior(t, q, &loc, cap, sites, weights, count);
+    if (st != LH_OK && st != LH_ERR_TOO_LARGE) *count = 0;
+    return st;
 }

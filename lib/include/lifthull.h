@@ -423,7 +423,162 @@ void lh_hull_free(lh_hull *h);
 
 /* ---- file formats ------------------------------------------------------------------ */
 
-/* (reserved: readers and writers, lib/src/io_*.c) */
+/* FILE is declared by <stdio.h>, included outside the extern "C" block. */
+#ifdef __cplusplus
+}
+#endif
+#include <stdio.h>
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/*
+ * Readers of point files and writers of meshes (lib/src/io_*.c); they use the FILE the
+ * caller opened and never print, seek or close it.
+ *
+ * Diagnostics: a reader that fails leaves ONE line in the caller's msg buffer,
+ *     NAME:LINE:COL: expected WHAT, found WHAT-INSTEAD
+ * where LINE and COL (1-based, COL counted in bytes) locate the offending token, or the
+ * end of the line or of the input, e.g.
+ *     pts.txt:3:3: expected coordinate 2 of point 1 (a number), found 'abc'
+ *     pts.txt:5:1: expected coordinate 1 of point 3, found the end of the input (3 points declared)
+ * (a non-finite number reads "pts.txt:4:3: coordinate 2 of point 2 is 'nan': NaN and
+ * infinities are not points"). A token is shown quoted (its first 20 bytes and "..."
+ * when longer); a NUL byte or another byte that is not text (a control byte or one
+ * above 0x7e, outside comments) is named, never printed: "found a non-text byte 0x7f".
+ * Tokens longer than LH_READ_MAX_TOKEN bytes are errors.
+ *
+ * Numbers: read with strtod (so hexadecimal floats work) and written with "%.17g", so a
+ * written double reads back bit for bit; both follow the C locale's decimal point
+ * (lifthull never calls setlocale). Line ends LF or CRLF; a UTF-8 byte order mark at the
+ * start is skipped; '#' starts a comment that runs to the end of its line, everywhere.
+ *
+ * The formats read (the grammar of each as lifthull accepts it):
+ *   LH_FORMAT_QHULL   Qhull's and rbox's point format (qhull(1), "Input format"): the
+ *                     dimension, then the number of points, then n*d coordinates laid out
+ *                     freely over the lines. The count may follow the dimension on its line
+ *                     ("d n"). After the dimension or the count, a word that cannot start a
+ *                     number begins a comment to the end of that line (rbox writes
+ *                     "3 rbox 10 D3"), and lines before the dimension that begin with such
+ *                     a word are a title, as in Qhull. Unlike Qhull, the dimension must come
+ *                     first (no "n d" order) and text among the coordinates is an error.
+ *   LH_FORMAT_NODE    Triangle's and TetGen's .node: a header line "n d [attributes
+ *                     [markers]]" (attributes >= 0, markers 0 or 1; omitted fields are 0),
+ *                     then one line per point: "number x_1..x_d [attribute...] [marker]".
+ *                     The first point is numbered 0 or 1 and the numbers are consecutive.
+ *                     Stricter than Triangle: a missing field is an error, not a zero.
+ *   LH_FORMAT_COLUMNS one point per line, its d coordinates separated by blanks or by one
+ *                     comma (CSV); every line has the same d (2..8). A first line whose first
+ *                     field is not a number is a header of column names and is skipped.
+ * Every format: d = 2..8 (LH_DELAUNAY_MIN_DIM..LH_DELAUNAY_MAX_DIM), 1 to
+ * LH_READ_MAX_POINTS points; NaN and infinities are rejected (coordinates and
+ * attributes). A declared count is not trusted: the arrays grow as points arrive.
+ */
+typedef enum lh_format {
+    LH_FORMAT_AUTO = 0,   /* lh_points_read chooses (see there); never an output value */
+    LH_FORMAT_QHULL = 1,  /* Qhull / rbox point format                                */
+    LH_FORMAT_NODE = 2,   /* Triangle / TetGen .node                                  */
+    LH_FORMAT_COLUMNS = 3 /* whitespace- or comma-separated columns, one point a line */
+} lh_format;
+
+/* The format's name: "auto", "qhull", "node", "columns" (static storage; "unknown"
+ * for other values). */
+const char *lh_format_name(lh_format format);
+
+#define LH_READ_MAX_POINTS 2147483646 /* INT32_MAX - 1, as lh_delaunay accepts         */
+#define LH_READ_MAX_TOKEN 255         /* bytes in one number or word                   */
+
+/* Points read from a file. Every array is allocated with the allocator given to
+ * lh_points_read and released by lh_points_free. */
+typedef struct lh_points {
+    int d;                /* coordinates per point, 2..8                                */
+    size_t n;             /* points, 1..LH_READ_MAX_POINTS                              */
+    double *xyz;          /* n*d coordinates, row-major                                 */
+    int attr_count;       /* .node: attributes per point; 0 otherwise                   */
+    double *attr;         /* n*attr_count attributes, row-major; NULL when none         */
+    int32_t *marker;      /* .node with markers: n boundary markers; NULL otherwise     */
+    int first_index;      /* .node: the first point's number (0 or 1); 0 otherwise      */
+    lh_format format;     /* the format that was read (never LH_FORMAT_AUTO)           */
+    lh_allocator alloc_;  /* private: the hooks that allocated the arrays              */
+} lh_points;
+
+/*
+ * lh_points_read: reads points from f, which is read to its end (one pass, no seeking:
+ * pipes and standard input work). name is used in diagnostics only (NULL: "<input>").
+ * With LH_FORMAT_AUTO the format is chosen by the name's extension (".node": NODE;
+ * ".csv": COLUMNS) or else by the first 4 KiB of content: a first line (after '#'
+ * comments and a title) that holds one integer, or two integers "d n" with d in 2..8,
+ * is QHULL, any other numbers COLUMNS (a two-integer line is COLUMNS after all when the
+ * whole input fits in those 4 KiB, has exactly two numbers a line and does not hold
+ * the declared d*n coordinates); an empty or unrecognised input is QHULL.
+ * alloc may be NULL (malloc/free); msg (msg_size bytes, may be NULL) receives the
+ * one-line diagnostic described above, "" on success.
+ * Returns LH_OK with *out filled; or, with *out zeroed (lh_points_free accepts it):
+ * LH_ERR_PARSE (malformed text), LH_ERR_DIMENSION (d outside 2..8), LH_ERR_NONFINITE,
+ * LH_ERR_TOO_LARGE (a count above LH_READ_MAX_POINTS, or an array size that would
+ * overflow), LH_ERR_NOMEM, LH_ERR_IO (a read error) or LH_ERR_INVALID_ARGUMENT (f or
+ * out NULL, format unknown, or an allocator without hooks).
+ */
+lh_status lh_points_read(FILE *f, const char *name, lh_format format,
+                         const lh_allocator *alloc, lh_points *out, char *msg,
+                         size_t msg_size);
+/* Frees the arrays of p (not p itself) and zeroes it; NULL or a zeroed p is a no-op. */
+void lh_points_free(lh_points *p);
+
+/*
+ * A mesh to write, as flat arrays the caller owns: n points of dimension d, and
+ * `count` k-simplices (cells of k+1 vertices: k = 1 segments, 2 triangles,
+ * 3 tetrahedra, ...) given as 0-based indices into the points — lh_tri_simplices and
+ * lh_tri_neighbors fit as they are.
+ */
+typedef struct lh_mesh_view {
+    int d;                   /* coordinates per point                                   */
+    size_t n;                /* points                                                  */
+    const double *xyz;       /* n*d, row-major                                          */
+    int k;                   /* simplex dimension, >= 1                                 */
+    size_t count;            /* cells                                                   */
+    const int32_t *cells;    /* count*(k+1) point indices; NULL only when count is 0    */
+    const int32_t *neighbors;/* count*(k+1): neighbour j of a cell is across the facet
+                                opposite its j-th vertex, -1 for none; NULL if unknown    */
+    const double *values;    /* n per-point scalars (a point field), or NULL           */
+    const char *values_name; /* the field's name (printable ASCII, no blank, none of
+                                " & < > '), NULL for "value"                            */
+} lh_mesh_view;
+
+/*
+ * Writers. Each checks the view first and writes nothing when it is bad: f or m NULL,
+ * an array NULL where it is needed, a cell index outside 0..n-1, a neighbour outside
+ * -1..count-1, first_index other than 0 or 1, or a bad values_name give
+ * LH_ERR_INVALID_ARGUMENT; a d or k the format cannot hold LH_ERR_DIMENSION; a NaN or
+ * infinity among the coordinates or values LH_ERR_NONFINITE; more than INT32_MAX
+ * points or cells LH_ERR_TOO_LARGE. A failed write (fprintf or ferror) gives LH_ERR_IO,
+ * with the file holding a prefix of the output. Otherwise LH_OK. Doubles as "%.17g".
+ *
+ * lh_write_vtu   VTK XML UnstructuredGrid (.vtu), ASCII. d = 1..3 (points padded with
+ *                zeros to 3 coordinates, as VTK wants), k = 1..3 (VTK cell types 3
+ *                line, 5 triangle, 10 tetra). values: point data; neighbors: cell data
+ *                "neighbors" with k+1 components.
+ * lh_write_msh   Gmsh MSH 4.1 ASCII: $MeshFormat "4.1 0 8", $Entities (one entity of
+ *                dimension k holding everything, bounding box of the points), $Nodes
+ *                and $Elements (element types 1 segment, 2 triangle, 4 tetrahedron),
+ *                tags 1-based; values as $NodeData. d = 1..3 (padded to 3), k = 1..3.
+ * lh_write_node  Triangle/TetGen .node: "n d attributes 0", then "i x_1..x_d [value]",
+ *                numbered from first_index; values become the one attribute. d = 2..8.
+ * lh_write_ele   Triangle/TetGen .ele: "count k+1 0", then "i v_0..v_k", points numbered
+ *                from first_index (as in the matching .node). k = 1..8.
+ * lh_write_neigh Triangle/TetGen .neigh: "count k+1", then "i n_0..n_k", neighbour j
+ *                opposite vertex j as in Triangle, -1 for none whatever first_index is.
+ *                Needs neighbors. k = 1..8.
+ * lh_write_off   OFF: "OFF", "n count 0", the points padded to 3 coordinates, then
+ *                "3 a b c" per triangle: k = 2 with d = 2 (a triangulation) or d = 3
+ *                (a surface, e.g. a 3D convex hull's facets).
+ */
+lh_status lh_write_vtu(FILE *f, const lh_mesh_view *m);
+lh_status lh_write_msh(FILE *f, const lh_mesh_view *m);
+lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index);
+lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index);
+lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index);
+lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
 
 #ifdef __cplusplus
 }

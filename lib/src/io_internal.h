@@ -1,0 +1,145 @@
+/*
+ * io_internal.h — what the file-format modules share (lifthull.h, "file formats").
+ *
+ * Readers: a byte scanner over a replayed prefix and then the FILE, with the 1-based
+ * line and column of every byte; tokens; one-line diagnostics "NAME:LINE:COL: expected
+ * X, found Y"; number conversion; the growing arrays of lh_points.
+ * Writers: checked output (every fprintf and ferror looked at) and the view's checks.
+ */
+#ifndef LH_IO_INTERNAL_H
+#define LH_IO_INTERNAL_H
+
+#include "lh_alloc.h"
+#include "lifthull.h"
+
+#include <stdio.h>
+
+/* ---- reading ---------------------------------------------------------------------- */
+
+#define LH__IO_PREFIX 4096 /* bytes read ahead for LH_FORMAT_AUTO and the BOM */
+
+typedef enum lh__tok_kind {
+    LH__TOK_WORD,       /* text[0..len): bytes up to a blank, '#', EOL (or ',')   */
+    LH__TOK_COMMA,      /* a ',' (only when the scanner splits at commas)         */
+    LH__TOK_EOL,        /* the end of a line (only when asked not to cross lines) */
+    LH__TOK_EOF,        /* the end of the input                                    */
+    LH__TOK_LONG,       /* a word longer than LH_READ_MAX_TOKEN bytes              */
+    LH__TOK_NUL,        /* a NUL byte                                              */
+    LH__TOK_BYTE,       /* a byte that is not text (byte holds it)                 */
+    LH__TOK_READ_ERROR  /* the FILE reported an error                              */
+} lh__tok_kind;
+
+typedef struct lh__token {
+    lh__tok_kind kind;
+    size_t line, col; /* where the token (or the end, or the bad byte) is */
+    int byte;         /* LH__TOK_BYTE: the byte's value */
+    size_t len;
+    char text[LH_READ_MAX_TOKEN + 1]; /* NUL-terminated WORD */
+} lh__token;
+
+/* Invariant: c is the byte at (line, col), or EOF past the end; bytes come from
+ * pre[pre_pos..pre_len) first, then from f. */
+typedef struct lh__scan {
+    FILE *f;
+    const unsigned char *pre;
+    size_t pre_len, pre_pos;
+    int c;
+    int read_error; /* ferror(f) was seen: c is EOF */
+    int commas;     /* 1: ',' ends a word and is a token of its own */
+    size_t line, col;
+    size_t cr_col;  /* when c is '\n' right after '\r': the '\r''s column, else 0 */
+    const char *name;
+    char *msg;
+    size_t msg_size;
+} lh__scan;
+
+/* Starts scanning (pre: the bytes already read from f; a UTF-8 BOM there is skipped). */
+void lh__scan_init(lh__scan *s, FILE *f, const unsigned char *pre, size_t pre_len,
+                   const char *name, char *msg, size_t msg_size);
+void lh__scan_advance(lh__scan *s);
+/* Skips blanks and '#' comments, across line ends when cross_lines. */
+void lh__scan_skip(lh__scan *s, int cross_lines);
+/* Skips the rest of the current line, its line end included (a NUL stops it). */
+void lh__scan_skip_line(lh__scan *s);
+/* The next token; without cross_lines a line end is a token (LH__TOK_EOL, consumed). */
+void lh__scan_next(lh__scan *s, int cross_lines, lh__token *t);
+/* Whether byte c can start a number (digit, sign or '.'): Qhull's header rule. */
+int lh__starts_number(int c);
+/* Whether c, outside comments, is a text byte: printable ASCII or a blank. */
+int lh__is_text(int c);
+
+/* Writes "NAME:LINE:COL: expected WHAT, found FOUND[TAIL]" into the message buffer and
+ * returns the status: st for a word or the end of the input or line, LH_ERR_IO for a
+ * read error, LH_ERR_PARSE for a NUL, a non-text byte or a too long token. */
+lh_status lh__expected(lh__scan *s, lh_status st, const lh__token *t, const char *what,
+                       const char *tail);
+/* Writes "NAME:LINE:COL: TEXT" at t's position and returns st. */
+lh_status lh__fail_at(lh__scan *s, lh_status st, const lh__token *t, const char *text);
+
+/* A word that is a whole number for strtod: 1 and *x (possibly infinite or NaN), else 0. */
+int lh__word_double(const lh__token *t, double *x);
+/* A word of an optional sign and decimal digits: 1 and *v (saturated at +-2^62),
+ * else 0. */
+int lh__word_integer(const lh__token *t, long long *v);
+/* For a word that is a non-finite number: writes "WHAT is 'TOKEN': NaN and infinities
+ * are not NOUN" (or "... which overflows a double") and returns LH_ERR_NONFINITE. */
+lh_status lh__nonfinite(lh__scan *s, const lh__token *t, const char *what,
+                        const char *noun);
+
+/* Reads token t as a finite number into *x. Errors: "expected WHAT, found the end of
+ * the input[END_TAIL]" (or the line), "expected WHAT (a number), found ...", and
+ * lh__nonfinite's. */
+lh_status lh__number(lh__scan *s, const lh__token *t, const char *what, const char *noun,
+                     const char *end_tail, double *x);
+/* Reads token t as the dimension (2..8, the messages of Qhull's reader) or as a count
+ * of points (1..LH_READ_MAX_POINTS) with the wording of `what`. */
+lh_status lh__dimension(lh__scan *s, const lh__token *t, int *d);
+lh_status lh__count(lh__scan *s, const lh__token *t, const char *what, size_t *n);
+
+/* The points being built: the output and its capacity in points. */
+typedef struct lh__builder {
+    lh_points *p;
+    const lh_allocator *a;
+    size_t cap;      /* points the arrays hold */
+    size_t expected; /* declared count (growth stops there), 0 when unknown */
+    int markers;     /* 1: one marker a point */
+} lh__builder;
+
+/* Appends one point (p->d coordinates, p->attr_count attributes, a marker when the
+ * builder has markers), read at token `at`. On LH_ERR_NOMEM or LH_ERR_TOO_LARGE the
+ * arrays are as they were and the message names the point. */
+lh_status lh__push(lh__scan *s, lh__builder *b, const lh__token *at, const double *xyz,
+                   const double *attr, int32_t marker);
+
+/* The readers: s scans from the start of the input, b->p->d etc. are set by them. */
+lh_status lh__read_qhull(lh__scan *s, lh__builder *b);
+lh_status lh__read_node(lh__scan *s, lh__builder *b);
+lh_status lh__read_columns(lh__scan *s, lh__builder *b);
+/* LH_FORMAT_AUTO's choice from the name and the first len bytes of the input
+ * (complete: those are the whole input). */
+lh_format lh__format_detect(const char *name, const unsigned char *pre, size_t len,
+                            int complete);
+
+/* ---- writing ---------------------------------------------------------------------- */
+
+/* Checked output: the first failure sticks. */
+typedef struct lh__out {
+    FILE *f;
+    int failed;
+} lh__out;
+
+void lh__outf(lh__out *o, const char *fmt, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+/* LH_OK, or LH_ERR_IO if a write failed or ferror(f) is set. */
+lh_status lh__out_status(lh__out *o);
+/* Checks a view: NULL arrays, index ranges, finiteness, values_name; d in
+ * dmin..dmax, k in kmin..kmax (LH_ERR_DIMENSION). */
+lh_status lh__view_check(FILE *f, const lh_mesh_view *m, int dmin, int dmax, int kmin,
+                         int kmax);
+/* Writes point i padded with zeros to 3 coordinates ("%.17g %.17g %.17g"). */
+void lh__out_point3(lh__out *o, const lh_mesh_view *m, size_t i);
+
+#endif

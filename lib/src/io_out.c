@@ -1,0 +1,63 @@
+/* io_out.c — what the writers share: checked output and the checks of a mesh view
+ * (lifthull.h, "file formats"). */
+#include "io_internal.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <string.h>
+
+void lh__outf(lh__out *o, const char *fmt, ...)
+{
+    if (o->failed) return;
+    va_list ap;
+    va_start(ap, fmt);
+    if (vfprintf(o->f, fmt, ap) < 0) o->failed = 1;
+    va_end(ap);
+}
+
+lh_status lh__out_status(lh__out *o)
+{
+    if (!o->failed && (fflush(o->f) != 0 || ferror(o->f))) o->failed = 1;
+    return o->failed ? LH_ERR_IO : LH_OK;
+}
+
+void lh__out_point3(lh__out *o, const lh_mesh_view *m, size_t i)
+{
+    const double *p = m->xyz + i * (size_t)m->d;
+    lh__outf(o, "%.17g %.17g %.17g", p[0], m->d > 1 ? p[1] : 0.0, m->d > 2 ? p[2] : 0.0);
+}
+
+/* A field name that needs no quoting in XML attributes nor in Gmsh's string tags. */
+static int good_name(const char *s)
+{
+    if (!*s) return 0;
+    for (; *s; s++)
+        if (*s <= ' ' || *s >= 0x7f || strchr("\"&<>'", *s)) return 0;
+    return 1;
+}
+
+static lh_status check_arrays(const lh_mesh_view *m)
+{
+    size_t nd = m->n * (size_t)m->d, per = (size_t)m->k + 1;
+    for (size_t i = 0; i < nd; i++)
+        if (!isfinite(m->xyz[i])) return LH_ERR_NONFINITE;
+    for (size_t i = 0; m->values && i < m->n; i++)
+        if (!isfinite(m->values[i])) return LH_ERR_NONFINITE;
+    for (size_t i = 0; i < m->count * per; i++) {
+        if (m->cells[i] < 0 || (size_t)m->cells[i] >= m->n) return LH_ERR_INVALID_ARGUMENT;
+        if (m->neighbors && (m->neighbors[i] < -1 || m->neighbors[i] >= (int64_t)m->count))
+            return LH_ERR_INVALID_ARGUMENT;
+    }
+    return LH_OK;
+}
+
+lh_status lh__view_check(FILE *f, const lh_mesh_view *m, int dmin, int dmax, int kmin,
+                         int kmax)
+{
+    if (!f || !m) return LH_ERR_INVALID_ARGUMENT;
+    if (m->d < dmin || m->d > dmax || m->k < kmin || m->k > kmax) return LH_ERR_DIMENSION;
+    if (m->n > INT32_MAX || m->count > INT32_MAX) return LH_ERR_TOO_LARGE;
+    if ((m->n && !m->xyz) || (m->count && !m->cells)) return LH_ERR_INVALID_ARGUMENT;
+    if (m->values_name && !good_name(m->values_name)) return LH_ERR_INVALID_ARGUMENT;
+    return check_arrays(m);
+}
