@@ -8,7 +8,7 @@ set -euo pipefail
 
 build_pkgs=(gcc make cmake)
 test_pkgs=(g++ clang pkg-config libclang-rt-14-dev python3 libgmp-dev libcgal-dev libeigen3-dev
-           libmpfr-dev qhull-bin libqhull-dev tetgen libtet1.5-dev)
+           libmpfr-dev qhull-bin libqhull-dev tetgen libtet1.5-dev python3-meshio)
 
 case "${1:-build}" in
   build) want=("${build_pkgs[@]}") ;;
