@@ -284,7 +284,7 @@ LH_TEST(qhull_good)
         "2\n3 a comment after the count\n0 0\n1 0\n0 1\n",
         "points from somewhere\n\n# and a comment\n2 3\n0 0\n1 0\n0 1\n",
         "# title\r\n2 # dim\r\n3\r\n0 0 # a\r\n1 0\r\n\r\n0 1\r\n",
-        "\xEF\xBB\xBF" "2 3\n+0 -0\n0x1p0 0\n0 1e0",
+        ("\xEF\xBB\xBF" "2 3\n+0 -0\n0x1p0 0\n0 1e0"),
         "  2\t3\n\t0\t0\n1\v0\f0 1",
     };
     for (size_t i = 0; i < LH_COUNT(inputs) && !LH_FAILED(); i++) {
