@@ -9,21 +9,25 @@ int lh_cli_selfcheck(int argc, char **argv);
 int lh_cli_delaunay(int argc, char **argv);
 int lh_cli_hull(int argc, char **argv);
 int lh_cli_generate(int argc, char **argv);
+int lh_cli_voronoi(int argc, char **argv);
+int lh_cli_locate(int argc, char **argv);
+int lh_cli_interpolate(int argc, char **argv);
 int lh_cli_qdelaunay(int argc, char **argv);
 int lh_cli_qvoronoi(int argc, char **argv);
 int lh_cli_qconvex(int argc, char **argv);
 
 /* Shared by the commands that read points (common.c). */
 #include "lifthull.h"
-#include "points.h"
 double lh_cli_seconds(void);
 /* Options [-s] [-u] [-a] [FILE] (-u, -a only where furthest, affine are not NULL); prints the
  * problem and returns -1 on a bad one. */
 int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file,
                         int *furthest, int *affine);
 /* Reads FILE (or standard input for NULL or "-"); 0 after printing the error. */
-int lh_cli_load(const char *file, lh_cli_points *pts, const char **name);
-void lh_cli_report_failure(const char *name, const lh_cli_points *pts, lh_status st);
+int lh_cli_load(const char *file, lh_points *pts, const char **name);
+/* Both files (sites, then queries); 0 after printing the problem. */
+int lh_cli_load_pair(const char *f1, const char *f2, lh_points *a, lh_points *b, const char **names);
+void lh_cli_report_failure(const char *name, int d, size_t n, const double *xyz, lh_status st);
 /* Flushes standard output: LH_EXIT_OK, or LH_EXIT_FAIL with a message. */
 int lh_cli_finish_output(const char *cmd);
 

@@ -2,6 +2,7 @@
  * messages, timing, flushing the output (cli.h). */
 #include "cli.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -41,7 +42,7 @@ int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, co
     return 0;
 }
 
-int lh_cli_load(const char *file, lh_cli_points *pts, const char **name)
+int lh_cli_load(const char *file, lh_points *pts, const char **name)
 {
     FILE *f = stdin;
     *name = "<stdin>";
@@ -49,22 +50,34 @@ int lh_cli_load(const char *file, lh_cli_points *pts, const char **name)
         f = fopen(file, "r");
         *name = file;
         if (!f) {
-            perror(file);
+            fprintf(stderr, "%s: %s\n", file, strerror(errno));
             return 0;
         }
     }
-    int ok = lh_cli_read_points(f, *name, pts);
+    char msg[512];
+    lh_status st = lh_points_read(f, *name, LH_FORMAT_AUTO, NULL, pts, msg, sizeof msg);
     if (f != stdin) fclose(f);
-    return ok;
+    if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+    return st == LH_OK;
 }
 
-void lh_cli_report_failure(const char *name, const lh_cli_points *pts, lh_status st)
+int lh_cli_load_pair(const char *f1, const char *f2, lh_points *a, lh_points *b, const char **names)
+{
+    if (!lh_cli_load(f1, a, &names[0])) return 0;
+    if (!lh_cli_load(f2, b, &names[1])) {
+        lh_points_free(a);
+        return 0;
+    }
+    return 1;
+}
+
+void lh_cli_report_failure(const char *name, int d, size_t n, const double *xyz, lh_status st)
 {
     if (st == LH_ERR_DEGENERATE) {
         int k = -1;
-        lh_affine_dim(pts->d, pts->n, pts->xyz, &k);
+        lh_affine_dim(d, n, xyz, &k);
         fprintf(stderr, "%s: the %zu sites span an affine subspace of dimension %d, not %d: "
-                "nothing %d-dimensional to compute%s\n", name, pts->n, k, pts->d, pts->d,
+                "nothing %d-dimensional to compute%s\n", name, n, k, d, d,
                 k >= 1 ? " (lifthull delaunay -a triangulates within that subspace)" : "");
     } else {
         fprintf(stderr, "%s: %s\n", name, lh_status_message(st));

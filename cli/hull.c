@@ -3,7 +3,6 @@
  * outward), or with -s a summary. Reads FILE or standard input. */
 #include "cli.h"
 #include "lifthull.h"
-#include "points.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,7 +13,7 @@ int lh_cli_hull(int argc, char **argv)
     int summary = 0;
     const char *file = NULL;
     if (lh_cli_parse_common("hull", argc, argv, &summary, &file, NULL, NULL) != 0) return LH_EXIT_USAGE;
-    lh_cli_points pts;
+    lh_points pts;
     const char *name;
     if (!lh_cli_load(file, &pts, &name)) return LH_EXIT_INPUT;
     double t0 = lh_cli_seconds();
@@ -22,8 +21,8 @@ int lh_cli_hull(int argc, char **argv)
     lh_status st = lh_convex_hull(pts.d, pts.n, pts.xyz, NULL, &h);
     double t1 = lh_cli_seconds();
     if (st != LH_OK) {
-        lh_cli_report_failure(name, &pts, st);
-        free(pts.xyz);
+        lh_cli_report_failure(name, pts.d, pts.n, pts.xyz, st);
+        lh_points_free(&pts);
         return LH_EXIT_FAIL;
     }
     if (summary) {
@@ -38,6 +37,6 @@ int lh_cli_hull(int argc, char **argv)
         }
     }
     lh_hull_free(h);
-    free(pts.xyz);
+    lh_points_free(&pts);
     return lh_cli_finish_output("hull");
 }

@@ -13,8 +13,11 @@ typedef struct command {
 } command;
 
 static const command commands[] = {
-    {"delaunay", lh_cli_delaunay, "Delaunay triangulation (Qhull's 'i' format)"},
+    {"delaunay", lh_cli_delaunay, "Delaunay triangulation (Qhull's 'i' format, VTK, Gmsh, Triangle, OFF, SVG)"},
+    {"voronoi", lh_cli_voronoi, "Voronoi diagram (qvoronoi's 'o' format, or an SVG picture)"},
     {"hull", lh_cli_hull, "convex hull facets (qconvex's 'i' format)"},
+    {"locate", lh_cli_locate, "the simplex holding each query point, and its nearest site"},
+    {"interpolate", lh_cli_interpolate, "values at the sites interpolated at query points"},
     {"points", lh_cli_generate, "generate test point sets (uniform, ball, sphere, grid, clusters)"},
     {"qdelaunay", lh_cli_qdelaunay, "Qhull's qdelaunay, exact: same options and formats (i Fn FN o p s ...)"},
     {"qvoronoi", lh_cli_qvoronoi, "Qhull's qvoronoi, exact: same options and formats (o p Fv Fi Fo ...)"},

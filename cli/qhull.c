@@ -11,12 +11,12 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
     lh_cli_qopts o;
     int r = lh_cli_qparse(&o, prog, argc, argv);
     if (r != 0) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
-    lh_cli_points pts;
+    lh_points pts;
     const char *name;
     if (!lh_cli_load(o.input, &pts, &name)) return LH_EXIT_INPUT;
     lh_cli_qmodel mo;
     if (!lh_cli_qmodel_build(&mo, &o, pts.d, pts.n, pts.xyz, name)) {
-        free(pts.xyz);
+        lh_points_free(&pts);
         return LH_EXIT_FAIL;
     }
     lh_cli_out out;
@@ -29,7 +29,7 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
     }
     int status = out.f ? lh_cli_out_close(&out, o.name, ok) : LH_EXIT_FAIL;
     lh_cli_qmodel_free(&mo);
-    free(pts.xyz);
+    lh_points_free(&pts);
     return status;
 }
 

@@ -158,8 +158,7 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
         if (c != LH_OK) st = c;
     }
     if (st == LH_OK) return 1;
-    lh_cli_points pts = {d, n, (double *)xyz};
-    lh_cli_report_failure(name, &pts, st);
+    lh_cli_report_failure(name, d, n, xyz, st);
     lh_cli_qmodel_free(mo);
     return 0;
 }

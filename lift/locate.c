@@ -9,6 +9,7 @@
  */
 #include "dt.h"
 #include "geom.h"
+#include "lh_alloc.h"
 
 #include <math.h>
 #include <string.h>
@@ -97,6 +98,46 @@ static int32_t walk(lh_tri *t, const double *q, int32_t s)
     return -2; /* unreachable in a Delaunay triangulation */
 }
 
+/* Among the simplices whose closed region holds q — connected across the facets
+ * whose hyperplane holds q (orient_d = 0) — the one with the smallest index, so
+ * that the answer depends on q only, not on the walk. Returns -1 when out of
+ * memory. */
+static int32_t smallest_holder(lh_tri *t, const double *q, int32_t s)
+{
+    const int nv = t->frame.k + 1;
+    int32_t local[64], *seen = local, best = s;
+    size_t count = 1, cap = 64;
+    seen[0] = s;
+    for (size_t i = 0; i < count; i++) {
+        int32_t c = seen[i];
+        if (c < best) best = c;
+        for (int k = 0; k < nv; k++) {
+            int32_t n = t->nbr[(size_t)c * nv + k];
+            const double *p[MAXV];
+            for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)t->simp[(size_t)c * nv + j] * t->d;
+            if (n < 0 || lh__frame_orient(t->pred, &t->frame, p) != 0) continue;
+            size_t j = 0;
+            while (j < count && seen[j] != n) j++;
+            if (j < count) continue;
+            if (count == cap) {
+                int32_t *more = lh__alloc(&t->alloc, 2 * cap * sizeof *more);
+                if (!more) {
+                    best = -1;
+                    goto done;
+                }
+                memcpy(more, seen, count * sizeof *more);
+                if (seen != local) lh__free(&t->alloc, seen);
+                seen = more;
+                cap *= 2;
+            }
+            seen[count++] = n;
+        }
+    }
+done:
+    if (seen != local) lh__free(&t->alloc, seen);
+    return best;
+}
+
 static void locate_outside(lh_tri *t, const double *q, lh_location *out)
 {
     const int d = t->d, k = t->frame.k;
@@ -147,6 +188,7 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *o
         locate_outside(t, q, out);
         return LH_OK;
     }
+    if ((s = smallest_holder(t, q, s)) < 0) return LH_ERR_NOMEM;
     out->simplex = s;
     const double *v[MAXV];
     for (int k = 0; k < nv; k++) v[k] = t->xyz + (size_t)t->simp[(size_t)s * nv + k] * t->d;

@@ -109,8 +109,53 @@ LH_TEST(queries_inside_outside_and_on_sites)
     lh_pred_free(pred);
 }
 
+/* On a grid, queries at sites, edge midpoints and cell centres lie in many simplices:
+ * the answer is the smallest index among them (brute force), whatever the hint. */
+LH_TEST(points_on_shared_faces_get_the_smallest_simplex)
+{
+    lh_pred *pred;
+    LH_ASSERT_EQ_INT(lh_pred_create(NULL, &pred), LH_OK);
+    for (int d = 2; d <= 4 && !LH_FAILED(); d++) {
+        int side = d == 2 ? 8 : d == 3 ? 5 : 3;
+        size_t n = 1;
+        for (int j = 0; j < d; j++) n *= (size_t)side;
+        double *x = malloc(n * d * sizeof *x);
+        for (size_t i = 0; i < n; i++)
+            for (int j = 0, r = (int)i; j < d; j++, r /= side) x[i * d + j] = r % side;
+        lh_tri *t;
+        LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
+        const int nv = d + 1;
+        for (int k = 0; k < 200 && !LH_FAILED(); k++) {
+            double q[8];
+            for (int j = 0; j < d; j++) q[j] = 0.5 * (double)(rng_state = rng_state * 6364136223846793005u + 1442695040888963407u, (rng_state >> 33) % (2 * side - 1));
+            int32_t want = -1;
+            for (size_t c = 0; c < lh_tri_count(t) && want < 0; c++) {
+                const int32_t *v = lh_tri_simplices(t) + c * nv;
+                int in = 1;
+                for (int f = 0; f < nv && in; f++) {
+                    const double *p[9];
+                    for (int j = 0; j < nv; j++) p[j] = j == f ? q : x + (size_t)v[j] * d;
+                    in = lh_orient(pred, d, p) >= 0;
+                }
+                if (in) want = (int32_t)c;
+            }
+            for (int h = -1; h < 3; h++) {
+                lh_location loc;
+                int32_t hint = h < 0 ? -1 : (int32_t)((size_t)h * lh_tri_count(t) / 3);
+                LH_ASSERT_EQ_INT(lh_tri_locate(t, q, hint, &loc), LH_OK);
+                if (loc.simplex != want) LH_NOTE("d=%d query %d hint %d", d, k, (int)hint);
+                LH_EXPECT_EQ_INT(loc.simplex, want);
+            }
+        }
+        lh_tri_free(t);
+        free(x);
+    }
+    lh_pred_free(pred);
+}
+
 int main(int argc, char **argv)
 {
-    static const lh_test_case cases[] = {LH_CASE(queries_inside_outside_and_on_sites)};
+    static const lh_test_case cases[] = {LH_CASE(queries_inside_outside_and_on_sites),
+                                         LH_CASE(points_on_shared_faces_get_the_smallest_simplex)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

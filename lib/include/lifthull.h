@@ -321,12 +321,14 @@ typedef struct lh_location {
 
 /*
  * lh_tri_locate: locates q (d doubles) by a visibility walk from simplex `hint` (any
- * simplex index, or -1). Inside or outside is decided exactly (orient_d), so a point
- * on a shared facet is reported in one of the simplices that contain it; barycentric
- * coordinates and distances are computed in floating point. When k < d (see
- * lh_tri_simplex_dim) q must lie exactly in the sites' affine hull. Returns LH_OK,
- * LH_ERR_INVALID_ARGUMENT (t, q or out NULL, or q off that affine hull) or
- * LH_ERR_NONFINITE. Not const: it
+ * simplex index, or -1). Inside or outside is decided exactly (orient_d); a point on
+ * the hull's boundary is inside. A point on a facet shared by several simplices (or
+ * at a vertex) is reported in the one with the smallest index among those containing
+ * it, whatever the hint: the answer depends on q alone. Barycentric coordinates and
+ * distances are computed in floating point. When k < d (see lh_tri_simplex_dim) q
+ * must lie exactly in the sites' affine hull. Returns LH_OK, LH_ERR_INVALID_ARGUMENT
+ * (t, q or out NULL, or q off that affine hull), LH_ERR_NONFINITE or LH_ERR_NOMEM
+ * (a point shared by more than 64 simplices needs memory). Not const: it
  * uses the handle's predicate context (one thread per handle).
  */
 lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *out);

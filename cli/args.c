@@ -1,0 +1,64 @@
+/* args.c — shared option parsing of the native commands (args.h). */
+#include "args.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int usage_error(const char *cmd, const char *what, const char *arg)
+{
+    fprintf(stderr, "lifthull %s: %s '%s' (lifthull %s --help)\n", cmd, what, arg, cmd);
+    return -1;
+}
+
+/* The option letter of argument s, or 0 when it is not an option. */
+static char letter(const char *s)
+{
+    if (!strcmp(s, "--circles")) return 'c';
+    if (!strcmp(s, "--values")) return 'v';
+    if (s[0] == '-' && s[1] && !s[2] && strchr("suaqfom", s[1])) return s[1];
+    return 0;
+}
+
+int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int min_files,
+                      int max_files, int argc, char **argv, const char *help)
+{
+    memset(a, 0, sizeof *a);
+    for (int i = 0; i < argc; i++) {
+        const char *s = argv[i];
+        if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+            fputs(help, stdout);
+            return 1;
+        }
+        char c = letter(s);
+        if (s[0] == '-' && s[1] && (!c || !strchr(accepted, c))) return usage_error(cmd, "unknown option", s);
+        if (!c) {
+            if (a->nfile == max_files) return usage_error(cmd, "one operand too many:", s);
+            a->file[a->nfile++] = s;
+            continue;
+        }
+        if (strchr("omv", c) && i + 1 == argc) return usage_error(cmd, "a value is needed after", s);
+        switch (c) {
+        case 's': a->summary = 1; break;
+        case 'u': a->furthest = 1; break;
+        case 'a': a->affine = 1; break;
+        case 'q': a->quiet = 1; break;
+        case 'f': a->force = 1; break;
+        case 'c': a->circles = 1; break;
+        case 'o': a->output = argv[++i]; break;
+        case 'm': a->method = argv[++i]; break;
+        default: {
+            char *end;
+            long k = strtol(argv[++i], &end, 10);
+            if (*end || k < 1 || k > 6) return usage_error(cmd, "--values takes 1..6, not", argv[i]);
+            a->values = (int)k;
+        }
+        }
+    }
+    if (a->nfile < min_files) {
+        fprintf(stderr, "lifthull %s: %d input file%s needed (lifthull %s --help)\n", cmd, min_files,
+                min_files > 1 ? "s are" : " is", cmd);
+        return -1;
+    }
+    return 0;
+}

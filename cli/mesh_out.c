@@ -1,0 +1,88 @@
+/* mesh_out.c — a triangulation written as VTK, Gmsh, OFF, SVG or Triangle files. */
+#include "mesh_out.h"
+
+#include "cli.h"
+#include "outfile.h"
+#include "svg.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static const char *extension(const char *path)
+{
+    const char *slash = strrchr(path, '/'), *dot = strrchr(path, '.');
+    return dot && (!slash || dot > slash) ? dot : "";
+}
+
+int lh_cli_is_mesh_path(const char *path)
+{
+    static const char *const exts[] = {".vtu", ".msh", ".off", ".svg", ".node", ".ele"};
+    const char *e = path ? extension(path) : "";
+    for (size_t i = 0; i < sizeof exts / sizeof exts[0]; i++)
+        if (!strcmp(e, exts[i])) return 1;
+    return 0;
+}
+
+typedef lh_status (*writer)(FILE *f, const lh_mesh_view *m, int first_index);
+
+static lh_status vtu(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_vtu(f, m); }
+static lh_status msh(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_msh(f, m); }
+static lh_status off(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_off(f, m); }
+
+/* One file through the whole-or-nothing mechanism. */
+static int one_file(const char *cmd, const lh_cli_args *a, const char *input, const char *path,
+                    writer w, const lh_mesh_view *m)
+{
+    lh_cli_out out;
+    if (!lh_cli_out_open(&out, cmd, path, a->force, input)) return LH_EXIT_FAIL;
+    lh_status st = w(out.f, m, 1);
+    if (st != LH_OK && st != LH_ERR_IO)
+        fprintf(stderr, "lifthull %s: %s: %s\n", cmd, path,
+                st == LH_ERR_DIMENSION ? "the format cannot hold this dimension" : lh_status_message(st));
+    return lh_cli_out_close(&out, cmd, st == LH_OK);
+}
+
+/* BASE.node, BASE.ele, BASE.neigh. */
+static int triangle_files(const char *cmd, const lh_cli_args *a, const char *input, const lh_mesh_view *m)
+{
+    const char *e = extension(a->output);
+    size_t base = (size_t)(e - a->output);
+    char *path = malloc(base + 8);
+    if (!path) return LH_EXIT_FAIL;
+    static const char *const exts[3] = {".node", ".ele", ".neigh"};
+    static const writer ws[3] = {lh_write_node, lh_write_ele, lh_write_neigh};
+    int status = LH_EXIT_OK;
+    for (int i = 0; i < 3 && status == LH_EXIT_OK; i++) {
+        memcpy(path, a->output, base);
+        strcpy(path + base, exts[i]);
+        status = one_file(cmd, a, input, path, ws[i], m);
+    }
+    free(path);
+    return status;
+}
+
+static int svg(const char *cmd, const lh_cli_args *a, const char *input, lh_tri *t, const double *xyz,
+               int voronoi)
+{
+    if (lh_tri_dim(t) != 2 || lh_tri_simplex_dim(t) != 2) {
+        fprintf(stderr, "lifthull %s: %s: SVG pictures are of 2D triangulations\n", cmd, a->output);
+        return LH_EXIT_FAIL;
+    }
+    lh_cli_svg s = {lh_tri_site_count(t), xyz, lh_tri_count(t), lh_tri_simplices(t),
+                    lh_tri_neighbors(t), 1, voronoi, a->circles, 1,
+                    voronoi ? "lifthull voronoi" : "lifthull delaunay"};
+    lh_cli_out out;
+    if (!lh_cli_out_open(&out, cmd, a->output, a->force, input)) return LH_EXIT_FAIL;
+    return lh_cli_out_close(&out, cmd, lh_cli_svg_write(out.f, &s) == 0);
+}
+
+int lh_cli_write_mesh(const char *cmd, const lh_cli_args *a, const char *input, lh_tri *t,
+                      const double *xyz, int voronoi)
+{
+    lh_mesh_view m = {lh_tri_dim(t), lh_tri_site_count(t), xyz, lh_tri_simplex_dim(t), lh_tri_count(t),
+                      lh_tri_simplices(t), lh_tri_neighbors(t), NULL, NULL};
+    const char *e = extension(a->output);
+    if (!strcmp(e, ".svg")) return svg(cmd, a, input, t, xyz, voronoi);
+    if (!strcmp(e, ".node") || !strcmp(e, ".ele")) return triangle_files(cmd, a, input, &m);
+    return one_file(cmd, a, input, a->output, !strcmp(e, ".vtu") ? vtu : !strcmp(e, ".msh") ? msh : off, &m);
+}
