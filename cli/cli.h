@@ -12,6 +12,7 @@ int lh_cli_generate(int argc, char **argv);
 int lh_cli_voronoi(int argc, char **argv);
 int lh_cli_locate(int argc, char **argv);
 int lh_cli_interpolate(int argc, char **argv);
+int lh_cli_check(int argc, char **argv);
 int lh_cli_qdelaunay(int argc, char **argv);
 int lh_cli_qvoronoi(int argc, char **argv);
 int lh_cli_qconvex(int argc, char **argv);

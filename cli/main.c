@@ -18,6 +18,7 @@ static const command commands[] = {
     {"hull", lh_cli_hull, "convex hull facets (qconvex's 'i' format)"},
     {"locate", lh_cli_locate, "the simplex holding each query point, and its nearest site"},
     {"interpolate", lh_cli_interpolate, "values at the sites interpolated at query points"},
+    {"check", lh_cli_check, "exactly verify a Delaunay triangulation given as points + simplices"},
     {"points", lh_cli_generate, "generate test point sets (uniform, ball, sphere, grid, clusters)"},
     {"qdelaunay", lh_cli_qdelaunay, "Qhull's qdelaunay, exact: same options and formats (i Fn FN o p s ...)"},
     {"qvoronoi", lh_cli_qvoronoi, "Qhull's qvoronoi, exact: same options and formats (o p Fv Fi Fo ...)"},

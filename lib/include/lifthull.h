@@ -527,6 +527,31 @@ lh_status lh_points_read(FILE *f, const char *name, lh_format format,
 /* Frees the arrays of p (not p itself) and zeroes it; NULL or a zeroed p is a no-op. */
 void lh_points_free(lh_points *p);
 
+/* Cells read from a file (lh_cells_read); the array is released by lh_cells_free. */
+typedef struct lh_cells {
+    int nv;               /* point indices per cell, 2..9                             */
+    size_t count;         /* cells                                                    */
+    int32_t *v;           /* count*nv point indices, 0-based                          */
+    int first_index;      /* .ele: the first cell's number (0 or 1), the base of its
+                             point indices too; 0 for Qhull's 'i'                    */
+    lh_allocator alloc_;  /* private: the hooks that allocated v                     */
+} lh_cells;
+
+/*
+ * lh_cells_read: simplices (or any cells of equal size) as index lists, to check a
+ * triangulation made elsewhere: Qhull's 'i' format (what qdelaunay i, qconvex i and
+ * lifthull delaunay print: the count, then one cell a line, 0-based indices), or a
+ * Triangle/TetGen .ele file (header "count points_per_cell [attributes]", then
+ * "number v_0..v_k [attributes]" numbered consecutively from 0 or 1, the point
+ * indices from the same base). The header line tells them apart (one field: 'i').
+ * With n_points > 0 every index must name one of n_points points. Diagnostics and
+ * statuses as lh_points_read ("NAME:LINE:COL: expected ..., found ...").
+ */
+lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
+                        lh_cells *out, char *msg, size_t msg_size);
+/* Frees c's array (not c) and zeroes it; NULL or a zeroed c is a no-op. */
+void lh_cells_free(lh_cells *c);
+
 /*
  * A mesh to write, as flat arrays the caller owns: n points of dimension d, and
  * `count` k-simplices (cells of k+1 vertices: k = 1 segments, 2 triangles,
