@@ -249,8 +249,27 @@ static void index_region(const lh_tri *t, const double *q, nn_ws *w)
     }
 }
 
-/* Circumcentres (relative to q) of the conflict simplices and of q with each facet
- * on the cavity's boundary. Returns 0 when one is singular in floating point. */
+/* The local coordinates scaled by a power of two (exactly), the largest to
+ * magnitude in [1/2, 1), so that no construction overflows or underflows; the
+ * weights are ratios of volumes and do not change. */
+static void rescale(nn_ws *w, int d)
+{
+    double big = 0;
+    int e;
+    for (size_t i = 0; i < w->nsite * (size_t)d; i++) big = fmax(big, fabs(w->x[i]));
+    if (!(big > 0 && big <= DBL_MAX)) return;
+    frexp(big, &e);
+    for (size_t i = 0; i < w->nsite * (size_t)d; i++) w->x[i] = ldexp(w->x[i], -e);
+}
+
+/* Circumcentres (local coordinates) of the conflict simplices and of q (the
+ * origin) with each facet on the cavity's boundary (lh__circumcenter: a pivoted
+ * solve relative to the first point). Returns 0 when one is singular in floating
+ * point. A far centre (a nearly flat simplex: q near the hull) is off by a few eps
+ * of its distance, mostly along its axis, which moves the tip of a long spike of
+ * V(q) and scales the stolen volumes alike (measured: a double-double determinant
+ * made no difference); a sliver's centre is ill-determined along its axis, the
+ * line through its neighbours' centres, so the face areas hardly move. */
 static int centres(nn_ws *w, int d)
 {
     const int nv = d + 1;
@@ -263,8 +282,8 @@ static int centres(nn_ws *w, int d)
             if (w->nb[c * nv + k] >= 0) continue;
             const double *f[NN_MAXV];
             f[0] = origin;
-            for (int j = 0, m = 1; j < nv; j++)
-                if (j != k) f[m++] = p[j];
+            for (int j = 0, i = 1; j < nv; j++)
+                if (j != k) f[i++] = p[j];
             if (!lh__circumcenter(d, d, f, w->fc + (c * nv + k) * d)) return 0;
         }
     }
@@ -280,11 +299,22 @@ static double dist(const double *a, const double *b, int d)
     return sqrt(s);
 }
 
-/* Twice the area of the triangle r a b in R^3. */
+/* Twice the area of the triangle r a b in R^3: the norm of the cross product of its
+ * two shortest sides, whose angle is its largest (Kahan's advice). Faces of V(q)
+ * near the hull are long and thin (a vertex at distance ~ 1/(distance of q to the
+ * hull)); the cross product of two long, nearly parallel sides, each rounded on its
+ * own, would lose the digits the thinness takes. */
 static double tri_area2(const double *r, const double *a, const double *b)
 {
-    double u[3], v[3];
-    for (int k = 0; k < 3; k++) u[k] = a[k] - r[k], v[k] = b[k] - r[k];
+    double e[3][3], l[3];
+    for (int k = 0; k < 3; k++) {
+        e[0][k] = b[k] - a[k]; /* opposite r */
+        e[1][k] = r[k] - b[k]; /* opposite a */
+        e[2][k] = a[k] - r[k]; /* opposite b */
+    }
+    for (int i = 0; i < 3; i++) l[i] = e[i][0] * e[i][0] + e[i][1] * e[i][1] + e[i][2] * e[i][2];
+    int longest = l[0] >= l[1] ? (l[0] >= l[2] ? 0 : 2) : (l[1] >= l[2] ? 1 : 2);
+    const double *u = e[(longest + 1) % 3], *v = e[(longest + 2) % 3];
     double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
     return sqrt(x * x + y * y + z * z);
 }
@@ -437,19 +467,6 @@ static void finish_volumes(nn_ws *w, int d)
     static const double origin[NN_MAXD] = {0, 0, 0};
     for (size_t i = 0; i < w->nsite; i++)
         w->vol[i] -= 0.5 * dist(w->x + i * d, origin, d) * w->aq[i];
-}
-
-/* The local coordinates scaled by a power of two (exactly) to magnitudes near 1, so
- * that no construction overflows or underflows; the weights are ratios of volumes
- * and do not change. */
-static void rescale(nn_ws *w, int d)
-{
-    double big = 0;
-    for (size_t i = 0; i < w->nsite * (size_t)d; i++) big = fmax(big, fabs(w->x[i]));
-    int e;
-    frexp(big, &e);
-    if (big == 0 || !isfinite(big) || e == 0) return;
-    for (size_t i = 0; i < w->nsite * (size_t)d; i++) w->x[i] = ldexp(w->x[i], -e);
 }
 
 /* ---- results ---------------------------------------------------------------------- */
