@@ -20,10 +20,6 @@ int lh_cli_qconvex(int argc, char **argv);
 /* Shared by the commands that read points (common.c). */
 #include "lifthull.h"
 double lh_cli_seconds(void);
-/* Options [-s] [-u] [-a] [FILE] (-u, -a only where furthest, affine are not NULL); prints the
- * problem and returns -1 on a bad one. */
-int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file,
-                        int *furthest, int *affine);
 /* Reads FILE (or standard input for NULL or "-"); 0 after printing the error. */
 int lh_cli_load(const char *file, lh_points *pts, const char **name);
 /* Both files (sites, then queries); 0 after printing the problem. */

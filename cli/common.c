@@ -14,34 +14,6 @@ double lh_cli_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-int lh_cli_parse_common(const char *cmd, int argc, char **argv, int *summary, const char **file,
-                        int *furthest, int *affine)
-{
-    *summary = 0;
-    *file = NULL;
-    if (furthest) *furthest = 0;
-    if (affine) *affine = 0;
-    for (int i = 0; i < argc; i++) {
-        if (!strcmp(argv[i], "-s")) {
-            *summary = 1;
-        } else if (furthest && !strcmp(argv[i], "-u")) {
-            *furthest = 1;
-        } else if (affine && !strcmp(argv[i], "-a")) {
-            *affine = 1;
-        } else if (argv[i][0] == '-' && argv[i][1]) {
-            fprintf(stderr, "lifthull %s: unknown option '%s' (usage: lifthull %s [-s]%s%s [FILE])\n", cmd,
-                    argv[i], cmd, furthest ? " [-u]" : "", affine ? " [-a]" : "");
-            return -1;
-        } else if (*file) {
-            fprintf(stderr, "lifthull %s: more than one input file\n", cmd);
-            return -1;
-        } else {
-            *file = argv[i];
-        }
-    }
-    return 0;
-}
-
 int lh_cli_load(const char *file, lh_points *pts, const char **name)
 {
     FILE *f = stdin;

@@ -1,21 +1,56 @@
-/* hull.c — `lifthull hull [-s] [FILE]`: convex hull facets in qconvex's `i` format
- * (a count line, then one facet per line as d 0-based site indices, oriented
- * outward), or with -s a summary. Reads FILE or standard input. */
+/* hull.c — `lifthull hull`: convex hull facets in qconvex's `i` format (a count line,
+ * then one facet per line as d 0-based site indices, oriented outward), or a summary;
+ * 3D hulls also as an OFF surface. */
+#include "args.h"
 #include "cli.h"
-#include "lifthull.h"
+#include "outfile.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
+
+static const char help[] =
+    "usage: lifthull hull [-s] [-q] [-o FILE [-f]] [POINTS]\n"
+    "\n"
+    "The convex hull of the points (Qhull's point format, .node or columns; or standard\n"
+    "input), exactly, in 2D to 8D: every facet a simplex of d sites, oriented so that\n"
+    "orient_d(facet, p) > 0 for points p outside; coplanar facets are split, never\n"
+    "merged. Output: the count, then one facet a line (0-based site indices; qconvex i\n"
+    "lists the same facets with the last two exchanged: use lifthull qconvex for its\n"
+    "exact formats); -s a summary; -o FILE.off an OFF surface (3D).\n"
+    "\n"
+    "examples:\n"
+    "  rbox 1000 D4 | lifthull hull -s\n"
+    "  lifthull points 500 -d 3 --sphere | lifthull hull -o hull.off\n"
+    "\n"
+    "exit codes: 0 done, 1 the computation failed, 2 usage, 3 bad input file.\n";
+
+static void facets(FILE *f, const lh_hull *h)
+{
+    const int d = lh_hull_dim(h);
+    const int32_t *v = lh_hull_facets(h);
+    fprintf(f, "%zu\n", lh_hull_facet_count(h));
+    for (size_t i = 0; i < lh_hull_facet_count(h); i++) {
+        for (int k = 0; k < d; k++) fprintf(f, k ? " %d" : "%d", (int)v[i * d + k]);
+        fputc('\n', f);
+    }
+}
+
+static int off(FILE *f, const lh_hull *h, const lh_points *p)
+{
+    lh_mesh_view m = {p->d, p->n, p->xyz, 2, lh_hull_facet_count(h), lh_hull_facets(h), NULL, NULL, NULL};
+    lh_status st = lh_write_off(f, &m);
+    if (st == LH_ERR_DIMENSION) fprintf(stderr, "lifthull hull: an OFF surface needs a 3D hull\n");
+    return st == LH_OK;
+}
 
 int lh_cli_hull(int argc, char **argv)
 {
-    int summary = 0;
-    const char *file = NULL;
-    if (lh_cli_parse_common("hull", argc, argv, &summary, &file, NULL, NULL) != 0) return LH_EXIT_USAGE;
+    lh_cli_args a;
+    int r = lh_cli_args_parse(&a, "hull", "sqfo", 0, 1, argc, argv, help);
+    if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     lh_points pts;
     const char *name;
-    if (!lh_cli_load(file, &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load(a.file[0], &pts, &name)) return LH_EXIT_INPUT;
     double t0 = lh_cli_seconds();
     lh_hull *h;
     lh_status st = lh_convex_hull(pts.d, pts.n, pts.xyz, NULL, &h);
@@ -25,18 +60,21 @@ int lh_cli_hull(int argc, char **argv)
         lh_points_free(&pts);
         return LH_EXIT_FAIL;
     }
-    if (summary) {
-        printf("sites %zu\ndimension %d\nhull facets %zu\nhull vertices %zu\nseconds %.3f\n",
-               pts.n, pts.d, lh_hull_facet_count(h), lh_hull_vertex_count(h), t1 - t0);
-    } else {
-        const int32_t *f = lh_hull_facets(h);
-        printf("%zu\n", lh_hull_facet_count(h));
-        for (size_t i = 0; i < lh_hull_facet_count(h); i++) {
-            for (int k = 0; k < pts.d; k++) printf(k ? " %d" : "%d", (int)f[i * pts.d + k]);
-            putchar('\n');
-        }
+    lh_cli_out out;
+    int status = LH_EXIT_FAIL;
+    const char *dot = a.output ? strrchr(a.output, '.') : NULL;
+    if (lh_cli_out_open(&out, "hull", a.output, a.force, a.file[0])) {
+        int ok = 1;
+        if (a.summary)
+            fprintf(out.f, "sites %zu\ndimension %d\nhull facets %zu\nhull vertices %zu\nseconds %.3f\n", pts.n,
+                    pts.d, lh_hull_facet_count(h), lh_hull_vertex_count(h), t1 - t0);
+        else if (dot && !strcmp(dot, ".off"))
+            ok = off(out.f, h, &pts);
+        else
+            facets(out.f, h);
+        status = lh_cli_out_close(&out, "hull", ok);
     }
     lh_hull_free(h);
     lh_points_free(&pts);
-    return lh_cli_finish_output("hull");
+    return status;
 }

@@ -25,6 +25,7 @@ typedef struct lh_cli_qopts {
     const char *input;        /* TI file, NULL: standard input                 */
     const char *output;       /* TO file, NULL: standard output                */
     char command[256];        /* "lifthull qdelaunay OPTIONS", for summaries    */
+    char words[4096];         /* the option words (input and output point here) */
 } lh_cli_qopts;
 
 /* Parses Qhull-style options (words that may also come several to an argument, as

@@ -119,13 +119,13 @@ int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv)
         snprintf(o->command + len, sizeof o->command - len, " %s", argv[i]);
     }
     /* Words split at blanks, across and within arguments ("i Qt" is two words). */
-    char buf[4096];
+    char *buf = o->words;
     size_t used = 0;
     const char *words[512];
     int nw = 0;
     for (int i = 0; i < argc; i++) {
         size_t len = strlen(argv[i]);
-        if (used + len + 1 > sizeof buf || nw + (int)len / 2 + 1 > 512) {
+        if (used + len + 1 > sizeof o->words || nw + (int)len / 2 + 1 > 512) {
             fprintf(stderr, "lifthull %s: the options are too long\n", o->name);
             return -1;
         }
