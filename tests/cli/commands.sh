@@ -43,6 +43,10 @@ expect "-o without a value" 2 "a value is needed after '-o'" '' -- "$lh" delauna
 expect "locate needs two files" 2 "2 input files are needed" '' -- "$lh" locate sq.txt
 expect "bad method" 2 "unknown method 'cubic'" '' -- "$lh" interpolate -m cubic cloud.csv queries.txt
 
+# a comment with commas after the dimension is still Qhull's format, not CSV
+printf '2 sites, from somewhere (ISC), in Qhull format\n3\n0 0\n1 0\n0 1\n' > commas.txt
+expect "comment with commas" 0 '' '^0 1 2$' -- "$lh" delaunay commas.txt
+
 # delaunay -o: each format read back
 expect "delaunay -o vtu" 0 '' '' -- "$lh" delaunay cloud.txt -o m.vtu
 "$py" - <<'PY' && ok || bad "m.vtu: not a VTK file with 400 points and the triangles"
