@@ -76,7 +76,7 @@ static void analyse(span l, line_info *info)
         }
         size_t a = i;
         while (i < l.len && l.p[i] != ' ' && l.p[i] != '\t' && l.p[i] != '\r' && l.p[i] != '#') {
-            if (l.p[i] == ',' && leading) info->comma = 1; /* not in a comment after numbers */
+            if (l.p[i] == ',' && info->numbers == 0) info->comma = 1; /* not in a comment after "d" */
             i++;
         }
         int integer = 0;
