@@ -20,3 +20,6 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/lifthullConfig.cmake
 file(RELATIVE_PATH LH_PC_UP "/root/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/root")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/lifthull.pc.in ${CMAKE_CURRENT_BINARY_DIR}/lifthull.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/lifthull.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+# The manual page of the tool.
+install(FILES ${CMAKE_CURRENT_LIST_DIR}/../docs/lifthull.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
