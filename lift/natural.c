@@ -50,8 +50,13 @@
  *   the arc around a boundary edge p_i p_x joins the two such facets through it,
  *   which are consecutive around p_i, so each arc also gives one edge of face (a) of
  *   p_i and of p_x. Areas: a convex polygon fanned from one of its vertices into
- *   triangles of one orientation, each measured by the norm of a cross product
- *   (2D: faces are segments, lengths). Coordinates are taken relative to q.
+ *   triangles of one orientation, each measured by its two shortest sides' cross
+ *   product along the face's unit normal, known from the sites (tri_area2; 2D:
+ *   faces are segments, lengths). Coordinates are taken relative to q and scaled
+ *   by a power of two. Measured (tests/test_natural.c): linear precision ~1e-14
+ *   relative, also within 1e-15 of the hull; 2e-13 from a brute-force clipping of
+ *   the cells in 2D; worse only where the hull has nearly collinear sites (hull
+ *   triangles of circumradius ~1/collinearity: ~1e-4 for 1e-12).
  *   The error in vol(S_i) is a few ulps of the cones from p_i, i.e. of vol(V(q)):
  *   weights are accurate in absolute terms (not relative ones for tiny weights); a
  *   site whose computed volume is not positive (a face of zero area, exactly or
