@@ -28,6 +28,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h> /* FILE, for the file formats */
 
 #ifdef __cplusplus
 extern "C" {
@@ -424,15 +425,6 @@ const int32_t *lh_hull_duplicate_of(const lh_hull *h);
 void lh_hull_free(lh_hull *h);
 
 /* ---- file formats ------------------------------------------------------------------ */
-
-/* FILE is declared by <stdio.h>, included outside the extern "C" block. */
-#ifdef __cplusplus
-}
-#endif
-#include <stdio.h>
-#ifdef __cplusplus
-extern "C" {
-#endif
 
 /*
  * Readers of point files and writers of meshes (lib/src/io_*.c); they use the FILE the

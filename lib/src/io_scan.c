@@ -205,17 +205,16 @@ lh_status lh__number(lh__scan *s, const lh__token *t, const char *what, const ch
     return LH_OK;
 }
 
-/* The wording of these two is the CLI's (tests/cli/bad_input.sh). */
+/* The CLI prints these as they are (tests/cli/bad_input.sh). */
 lh_status lh__dimension(lh__scan *s, const lh__token *t, int *d)
 {
-    const char *what = "the dimension (an integer from 1 to 8)";
+    const char *what = "the dimension (an integer from 2 to 8)";
     long long v;
     if (!lh__word_integer(t, &v))
         return lh__expected(s, LH_ERR_PARSE, t,
                             t->kind == LH__TOK_WORD ? what : "the dimension", NULL);
-    if (v < LH_DELAUNAY_MIN_DIM)
-        return lh__expected(s, LH_ERR_DIMENSION, t, "the dimension to be 2..8", NULL);
-    if (v > LH_DELAUNAY_MAX_DIM) return lh__expected(s, LH_ERR_DIMENSION, t, what, NULL);
+    if (v < LH_DELAUNAY_MIN_DIM || v > LH_DELAUNAY_MAX_DIM)
+        return lh__expected(s, LH_ERR_DIMENSION, t, what, NULL);
     *d = (int)v;
     return LH_OK;
 }
