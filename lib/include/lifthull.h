@@ -366,14 +366,20 @@ lh_status lh_tri_nearest(lh_tri *t, const double *q, int32_t hint, int32_t *site
  * "A vector identity for the Dirichlet tessellation"), d = 2 or 3 with k == d: the
  * sites whose Voronoi regions lose volume when q is inserted, each weighted by the
  * volume it loses over the volume of q's new region. Writes at most `cap` (site,
- * weight) pairs and their number in *count; the weights are positive and sum to 1,
- * and sum(weight_i * site_i) = q up to rounding. A q exactly at a site gives that
- * site with weight 1; a q on the hull's boundary (its region unbounded) gets the
- * limit, the barycentric coordinates in the hull facet holding it. Returns LH_OK;
+ * weight) pairs, sites increasing, and their number in *count; the weights are
+ * positive and sum to 1, and sum(weight_i * site_i) = q up to rounding (measured:
+ * ~1e-13 relative; worse, up to ~1e-4, only next to hull facets whose circumradius
+ * is ~1e12 times the sites' spacing). The result does not depend on the hint. A q
+ * exactly at a site gives that site with weight 1. A q on the hull's boundary (its
+ * region unbounded) gets the barycentric coordinates in the hull facet holding it:
+ * in 2D that is the limit from inside; in 3D it is the limit only when the facet is
+ * the one hull triangle in its plane (where several coplanar hull triangles tile a
+ * face, the limit is the 2D Sibson coordinates within that face, not computed here).
+ * cap may be 0 with sites and weights NULL, to ask for the count. Returns LH_OK;
  * LH_ERR_INVALID_ARGUMENT (NULL arguments, furthest-site handle, or q outside the
  * hull: *count = 0); LH_ERR_DIMENSION (d or k not 2 or 3); LH_ERR_TOO_LARGE (more
- * than cap natural neighbours: *count is the number needed); LH_ERR_NONFINITE;
- * LH_ERR_NOMEM.
+ * than cap natural neighbours: *count is the number needed, nothing written);
+ * LH_ERR_NONFINITE; LH_ERR_NOMEM.
  */
 lh_status lh_tri_natural_coords(lh_tri *t, const double *q, int32_t hint, size_t cap,
                                 int32_t *sites, double *weights, size_t *count);
