@@ -427,7 +427,7 @@ LH_TEST(large_inputs)
 {
     static const lh_format fmts[] = {Q, N, C};
     for (int k = 0; k < 3; k++) {
-        size_t len, n = 3000;
+        size_t len = 0, n = 3000;
         char *s = big_input(fmts[k], 3, n, &len);
         LH_ASSERT_TRUE(s != NULL);
         lh_points p;

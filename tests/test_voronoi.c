@@ -164,6 +164,15 @@ LH_TEST(interpolation_reproduces_affine_functions)
             LH_ASSERT_EQ_INT(lh_tri_nearest(t, q + i * d, -1, &s), LH_OK);
             LH_EXPECT_EQ_DBL(out[2 * i], v[2 * s]);
         }
+        LH_ASSERT_EQ_INT(lh_tri_interpolate(t, LH_INTERP_NATURAL, m, q, 2, v, out), d <= 3 ? LH_OK : LH_ERR_DIMENSION);
+        for (size_t i = 0; i < m && d <= 3; i++) {
+            lh_location loc;
+            LH_ASSERT_EQ_INT(lh_tri_locate(t, q + i * d, -1, &loc), LH_OK);
+            double e0 = 1.5;
+            for (int j = 0; j < d; j++) e0 += (j + 1) * q[i * d + j];
+            if (loc.simplex < 0) LH_EXPECT_TRUE(isnan(out[2 * i]));
+            else LH_EXPECT_LE_DBL(fabs(out[2 * i] - e0), 1e-11 * (1 + fabs(e0)));
+        }
         lh_tri_free(t);
         free(x), free(v), free(q), free(out);
     }
@@ -224,7 +233,7 @@ static lh_status query_run(lh_test_state *lh_t_, const lh_allocator *a, const vo
 
 LH_TEST(every_allocation_failure_is_survived)
 {
-    static const query_input in[] = {{-1}, {LH_INTERP_LINEAR}, {LH_INTERP_NEAREST}};
+    static const query_input in[] = {{-1}, {LH_INTERP_LINEAR}, {LH_INTERP_NEAREST}, {LH_INTERP_NATURAL}};
     for (size_t i = 0; i < LH_COUNT(in); i++) LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, query_run, &in[i]), 3);
 }
 

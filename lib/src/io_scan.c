@@ -122,8 +122,7 @@ static void describe(const lh__token *t, char *buf, size_t size)
     switch (t->kind) {
     case LH__TOK_WORD:
     case LH__TOK_COMMA:
-        if (t->len > 20) snprintf(buf, size, "'%.20s...'", t->text);
-        else snprintf(buf, size, "'%s'", t->text);
+        snprintf(buf, size, t->len > 20 ? "'%.20s...'" : "'%.20s'", t->text); /* len <= 20 */
         break;
     case LH__TOK_EOL: snprintf(buf, size, "the end of the line"); break;
     case LH__TOK_EOF: snprintf(buf, size, "the end of the input"); break;
