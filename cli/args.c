@@ -16,6 +16,7 @@ static char letter(const char *s)
 {
     if (!strcmp(s, "--circles")) return 'c';
     if (!strcmp(s, "--values")) return 'v';
+    if (!strcmp(s, "--threads")) return 't';
     if (s[0] == '-' && s[1] && !s[2] && strchr("suaqfom", s[1])) return s[1];
     return 0;
 }
@@ -31,13 +32,14 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
             return 1;
         }
         char c = letter(s);
-        if (s[0] == '-' && s[1] && (!c || !strchr(accepted, c))) return usage_error(cmd, "unknown option", s);
+        if (s[0] == '-' && s[1] && (!c || (c != 't' && !strchr(accepted, c))))
+            return usage_error(cmd, "unknown option", s);
         if (!c) {
             if (a->nfile == max_files) return usage_error(cmd, "one operand too many:", s);
             a->file[a->nfile++] = s;
             continue;
         }
-        if (strchr("omv", c) && i + 1 == argc) return usage_error(cmd, "a value is needed after", s);
+        if (strchr("omvt", c) && i + 1 == argc) return usage_error(cmd, "a value is needed after", s);
         switch (c) {
         case 's': a->summary = 1; break;
         case 'u': a->furthest = 1; break;
@@ -47,6 +49,13 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
         case 'c': a->circles = 1; break;
         case 'o': a->output = argv[++i]; break;
         case 'm': a->method = argv[++i]; break;
+        case 't': { /* reserved: every command accepts it; one thread for now */
+            char *end;
+            long k = strtol(argv[++i], &end, 10);
+            if (*end || k < 1 || k > 4096) return usage_error(cmd, "--threads takes 1..4096, not", argv[i]);
+            if (k > 1) fprintf(stderr, "lifthull %s: --threads %ld: one thread for now (reserved for the parallel engine)\n", cmd, k);
+            break;
+        }
         default: {
             char *end;
             long k = strtol(argv[++i], &end, 10);

@@ -19,7 +19,8 @@ typedef struct lh_cli_args {
 } lh_cli_args;
 
 /* Parses argv for command `cmd` accepting the options named in `accepted` (letters
- * s u a q f o m, and 'c' for --circles, 'v' for --values) and up to max_files
+ * s u a q f o m, and 'c' for --circles, 'v' for --values; every command takes
+ * --threads N, reserved for the parallel engine: one thread for now) and up to max_files
  * operands (at least min_files). `help` is printed on --help or -h. Returns 0; 1 after
  * --help; -1 after printing a usage error. */
 int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int min_files,

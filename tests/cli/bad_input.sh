@@ -38,6 +38,9 @@ expect count_text 3 "count_text:2:1: expected the number of points" "2\nmany\n0 
 expect huge_count 3 "huge_count:2:1: expected the number of points \\(an integer from 1 to 2147483646\\)" "2\n1000000000000\n0 0\n"
 expect binary 3 "binary:1:1: expected the dimension" "\x7fELF\x02\x01\x01\x00\xff\xfe"
 expect zero_count 3 "expected the number of points" "2\n0\n"
+expect short.csv 3 "short.csv:3:2: expected coordinate 2 of point 2 \\(2 per line, as on line 2\\), found the end of the line" "x,y\n0,0\n1\n0,1\n"
+expect long.txt 3 "long.txt:2:5: expected the end of the line after 2 coordinates \\(as on line 1\\), found '5'" "0 0\n1 0 5\n0 1\n"
+expect nul 3 "nul:4:2: expected coordinate 2 of point 2 \\(a number\\), found a NUL byte" "2\n3\n0 0\n1\x00 0\n0 1\n"
 
 # Usage errors and a missing file.
 "$lh" delaunay --frobnicate > "$tmp/out" 2> "$tmp/err"; c=$?

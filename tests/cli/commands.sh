@@ -37,6 +37,8 @@ PY
 for c in delaunay voronoi hull locate interpolate check points qdelaunay qvoronoi qconvex; do
   expect "$c --help" 0 '' '^usage: lifthull '"$c" -- "$lh" "$c" --help
 done
+expect "--threads accepted" 0 "one thread for now" '^4$' -- "$lh" delaunay --threads 2 sq.txt
+expect "--threads checked" 2 "--threads takes 1..4096, not 'x'" '' -- "$lh" hull --threads x sq.txt
 expect "unknown command" 2 "unknown command 'frobnicate'" '' -- "$lh" frobnicate
 expect "unknown option" 2 "lifthull delaunay: unknown option '-z'" '' -- "$lh" delaunay -z sq.txt
 expect "-o without a value" 2 "a value is needed after '-o'" '' -- "$lh" delaunay sq.txt -o
