@@ -100,7 +100,7 @@ static lh_status read_cell(cells_ctx *x, size_t i)
     if (t.kind != LH__TOK_WORD) {
         char what[60], tail[60];
         snprintf(what, sizeof what, "cell %zu", i + 1);
-        snprintf(tail, sizeof tail, " (%zu cells declared)", x->declared);
+        snprintf(tail, sizeof tail, " (%zu cell%s declared)", x->declared, x->declared == 1 ? "" : "s");
         return lh__expected(x->s, LH_ERR_PARSE, &t, what, t.kind == LH__TOK_EOF ? tail : NULL);
     }
     if (x->ele) {
@@ -174,7 +174,7 @@ lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_all
     if (st == LH_OK) lh__scan_next(&s, 1, &t);
     if (st == LH_OK && t.kind != LH__TOK_EOF) {
         char what[80];
-        snprintf(what, sizeof what, "the end of the input after %zu cells", x.declared);
+        snprintf(what, sizeof what, "the end of the input after %zu cell%s", x.declared, x.declared == 1 ? "" : "s");
         st = lh__expected(&s, LH_ERR_PARSE, &t, what, NULL);
     }
     if (st != LH_OK) lh_cells_free(out);
