@@ -1,0 +1,586 @@
+#!/usr/bin/env python3
+"""Exact cross-check of `lifthull locate` against CGAL's locate and nearest_vertex (issue #4).
+
+  compare_locate.py --lifthull PATH --oracle PATH [--keep DIR] [--case NAME]...
+
+--oracle is oracle_cgal_locate (CGAL Delaunay_triangulation_2/_3, Epick). The cases are built
+here (sites from `lifthull points`, which is deterministic, queries inline), each written as a
+pair of Qhull-format files (queries with repr(): they read back as the same doubles); --case
+runs only the named ones, --keep keeps the files in DIR.
+
+Every coordinate of a case is a dyadic rational, so after scaling by a common power of two the
+checks below are exact integer arithmetic (orientation and in-sphere determinants):
+
+ (a) `in S v.. b.. nearest N`: S is simplex S of `lifthull delaunay SITES` with those vertices
+     in that order; q is in it (every orient of q against a facet has the simplex's sign or is
+     zero); S is the smallest index among ALL simplices containing q (brute force); the b_i are
+     q's barycentric coordinates (within 1e-7 of the exact ones).
+     `out f.. distance D nearest N`: no simplex contains q; f is a hull facet (a facet of one
+     simplex); dist(q, f's hyperplane) <= D <= |q - N| (floating point, 1e-9 relative).
+ (b) The location type: q lies in the relative interior of exactly one face F of the Delaunay
+     subdivision (simplices joined across exactly cospherical facets: the cells every Delaunay
+     triangulation refines), found exactly from the cell of lifthull's simplex. If F is a
+     simplex, every Delaunay triangulation has it as a face, so lifthull's minimal face of q
+     (the vertices whose orients are nonzero), CGAL's locate type (VERTEX, EDGE, FACE/FACET,
+     CELL) and CGAL's sub-face (li/lj) must all be F. If F is not a simplex (a query inside a
+     cocircular polygon, on the diagonal of a grid square, at a grid cube's centre...), the
+     two triangulations may legitimately differ there, so both minimal faces need only lie in
+     F (vertex sets within F's, dimension at most F's); these are counted as `ambiguous`.
+     Outside: lifthull `out` iff CGAL OUTSIDE_CONVEX_HULL; a query on the hull boundary is
+     `in` for lifthull and VERTEX/EDGE/FACET for CGAL, never outside. CGAL's answer is itself
+     verified exactly when its face/cell is finite (its zero pattern gives its sub-face).
+ (c) Strictly interior queries in general position: F is lifthull's simplex, so (b) requires
+     CGAL's cell to have the same vertex set. Cases marked general fail if any cospherical
+     tie is found, so that the strict comparison is not silently relaxed.
+ (d) Nearest site: |q - N|^2 == |q - N_cgal|^2 exactly, and N is the smallest index among the
+     sites at the minimum distance (brute force).
+ (e) Determinism: the queries located in reverse order (other walks) give the same lines.
+
+Exit 0 if every case passes, 1 if any check fails, 2 on a tool failure or bad usage.
+"""
+
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from fractions import Fraction
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import canon  # noqa: E402  (the shared Qhull-format reader)
+
+
+class ToolError(Exception):
+    pass
+
+
+def read_i_text(text):
+    """Qhull `i` output (a count line, then one simplex a line) -> list of index tuples."""
+    lines = [ln.split() for ln in text.splitlines() if ln.strip() and not ln.startswith("#")]
+    if not lines or len(lines) != int(lines[0][0]) + 1:
+        raise ToolError("malformed simplex list")
+    return [tuple(int(x) for x in ln) for ln in lines[1:]]
+
+
+def run(cmd):
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       universal_newlines=True)
+    if p.returncode != 0:
+        raise ToolError("%s: exit %d: %s" % (" ".join(cmd), p.returncode, p.stderr.strip()[:500]))
+    return p.stdout
+
+
+def write_points(path, d, pts):
+    with open(path, "w", encoding="ascii") as f:
+        f.write("%d\n%d\n" % (d, len(pts)))
+        for p in pts:
+            f.write(" ".join(repr(float(x)) for x in p) + "\n")
+
+
+def read_points(path):
+    d, n, c = canon.read_qhull_points(path)
+    return d, [tuple(c[i * d:(i + 1) * d]) for i in range(n)]
+
+
+# ---- exact geometry on integer coordinates ---------------------------------------------------
+
+def sgn(x):
+    return (x > 0) - (x < 0)
+
+
+def orient(pts):
+    """Sign-carrying determinant of (p1 - p0, ..., pd - p0) for d + 1 integer points."""
+    a = pts[0]
+    if len(a) == 2:
+        b, c = pts[1], pts[2]
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    b, c, e = pts[1], pts[2], pts[3]
+    b0, b1, b2 = b[0] - a[0], b[1] - a[1], b[2] - a[2]
+    c0, c1, c2 = c[0] - a[0], c[1] - a[1], c[2] - a[2]
+    e0, e1, e2 = e[0] - a[0], e[1] - a[1], e[2] - a[2]
+    return b0 * (c1 * e2 - c2 * e1) - b1 * (c0 * e2 - c2 * e0) + b2 * (c0 * e1 - c1 * e0)
+
+
+def det(m):
+    """Determinant of a small square integer matrix (Bareiss)."""
+    m = [row[:] for row in m]
+    k = len(m)
+    sign, prev = 1, 1
+    for i in range(k - 1):
+        if m[i][i] == 0:
+            for r in range(i + 1, k):
+                if m[r][i] != 0:
+                    m[i], m[r] = m[r], m[i]
+                    sign = -sign
+                    break
+            else:
+                return 0
+        for r in range(i + 1, k):
+            for c in range(i + 1, k):
+                m[r][c] = (m[r][c] * m[i][i] - m[r][i] * m[i][c]) // prev
+        prev = m[i][i]
+    return sign * m[k - 1][k - 1]
+
+
+def insphere_zero(simplex_pts, q):
+    """True iff q is exactly on the circumsphere of the simplex."""
+    b = simplex_pts[0]
+    rows = []
+    for p in list(simplex_pts[1:]) + [q]:
+        r = [p[j] - b[j] for j in range(len(b))]
+        rows.append(r + [sum(x * x for x in r)])
+    return det(rows) == 0
+
+
+def affine_rank(pts):
+    if not pts:
+        return -1
+    rows = [[Fraction(p[j] - pts[0][j]) for j in range(len(p))] for p in pts[1:]]
+    rank, col, d = 0, 0, len(pts[0])
+    while rank < len(rows) and col < d:
+        piv = next((r for r in range(rank, len(rows)) if rows[r][col] != 0), None)
+        if piv is None:
+            col += 1
+            continue
+        rows[rank], rows[piv] = rows[piv], rows[rank]
+        for r in range(len(rows)):
+            if r != rank and rows[r][col] != 0:
+                f = rows[r][col] / rows[rank][col]
+                rows[r] = [x - f * y for x, y in zip(rows[r], rows[rank])]
+        rank += 1
+        col += 1
+    return rank
+
+
+def dist2(a, b):
+    return sum((x - y) * (x - y) for x, y in zip(a, b))
+
+
+class Tri:
+    """A simplex list over integer points, with exact containment, facets and Delaunay cells."""
+
+    def __init__(self, d, P, simplices):
+        self.d, self.P, self.S = d, P, [tuple(s) for s in simplices]
+        self.sign = [sgn(orient([P[v] for v in s])) for s in self.S]
+        self.box = []
+        for s in self.S:
+            cs = [P[v] for v in s]
+            self.box.append(([min(c[j] for c in cs) for j in range(d)],
+                             [max(c[j] for c in cs) for j in range(d)]))
+        self.facets = {}
+        for si, s in enumerate(self.S):
+            for i in range(d + 1):
+                self.facets.setdefault(tuple(sorted(s[:i] + s[i + 1:])), []).append((si, s[i]))
+        # The Delaunay cells: union-find across exactly cospherical interior facets.
+        parent = list(range(len(self.S)))
+
+        def find(x):
+            while parent[x] != x:
+                parent[x] = parent[parent[x]]
+                x = parent[x]
+            return x
+        self.ties = 0
+        for f, pair in self.facets.items():
+            if len(pair) == 2:
+                (a, _), (b, ob) = pair
+                if insphere_zero([P[v] for v in self.S[a]], P[ob]):
+                    self.ties += 1
+                    parent[find(a)] = find(b)
+        self.cell_of = [find(i) for i in range(len(self.S))]
+        self.members = {}
+        for i, c in enumerate(self.cell_of):
+            self.members.setdefault(c, []).append(i)
+        self._cell_bfacets = {}
+
+    def hull_facet(self, f):
+        return len(self.facets.get(tuple(sorted(f)), ())) == 1
+
+    def orients(self, si, q):
+        """Signs (relative to the simplex's orientation) of q against each facet of si."""
+        s, P = self.S[si], self.P
+        o = self.sign[si]
+        out = []
+        for i in range(self.d + 1):
+            pts = [P[v] for v in s]
+            pts[i] = q
+            out.append(sgn(orient(pts)) * o)
+        return out
+
+    def raw_orients(self, si, q):
+        s, P = self.S[si], self.P
+        out = []
+        for i in range(self.d + 1):
+            pts = [P[v] for v in s]
+            pts[i] = q
+            out.append(orient(pts))
+        return out
+
+    def containing(self, q):
+        res = []
+        for si, (lo, hi) in enumerate(self.box):
+            if all(lo[j] <= q[j] <= hi[j] for j in range(self.d)):
+                if min(self.orients(si, q)) >= 0:
+                    res.append(si)
+        return res
+
+    def cell_boundary(self, c):
+        if c not in self._cell_bfacets:
+            count = {}
+            for si in self.members[c]:
+                s = self.S[si]
+                for i in range(self.d + 1):
+                    f = tuple(sorted(s[:i] + s[i + 1:]))
+                    count[f] = count.get(f, 0) + 1
+            self._cell_bfacets[c] = [f for f, k in count.items() if k == 1]
+        return self._cell_bfacets[c]
+
+    def minimal_face(self, si, q):
+        """The face F of the Delaunay subdivision with q in its relative interior (q in simplex
+        si): (sorted vertex list, dimension, is_simplex)."""
+        c = self.cell_of[si]
+        P = self.P
+        if len(self.members[c]) == 1:
+            o = self.orients(si, q)
+            fv = sorted(v for v, x in zip(self.S[si], o) if x != 0)
+            return fv, len(fv) - 1, True
+        verts = sorted({v for m in self.members[c] for v in self.S[m]})
+        on = [f for f in self.cell_boundary(c) if orient([P[v] for v in f] + [q]) == 0]
+        fv = [v for v in verts if all(orient([P[u] for u in f] + [P[v]]) == 0 for f in on)]
+        k = affine_rank([P[v] for v in fv])
+        return fv, k, len(fv) == k + 1
+
+
+# ---- one case --------------------------------------------------------------------------------
+
+CGAL_DIM = {"VERTEX": 0, "EDGE": 1, "FACE": 2, "FACET": 2, "CELL": 3}
+KINDS = ("vertex", "edge", "facet", "interior")
+
+
+def kind(k, d):
+    """The name of a face of dimension k in dimension d."""
+    return "interior" if k == d else KINDS[k] if 0 <= k < len(KINDS) else str(k)
+
+
+def parse_cgal(line):
+    t = line.split()
+    i_cell, i_sub, i_near = t.index("cell"), t.index("sub"), t.index("nearest")
+    return (t[0], [int(x) for x in t[i_cell + 1:i_sub]], [int(x) for x in t[i_sub + 1:i_near]],
+            int(t[i_near + 1]))
+
+
+def check_case(name, d, sites, queries, general, tools, workdir):
+    lifthull, oracle = tools
+    t0 = time.time()
+    sfile = os.path.join(workdir, name + ".sites.txt")
+    qfile = os.path.join(workdir, name + ".queries.txt")
+    rfile = os.path.join(workdir, name + ".queries_rev.txt")
+    write_points(sfile, d, sites)
+    write_points(qfile, d, queries)
+    write_points(rfile, d, queries[::-1])
+    simplices = read_i_text(run([lifthull, "delaunay", sfile]))
+    lh = run([lifthull, "locate", sfile, qfile]).splitlines()
+    lh_rev = run([lifthull, "locate", sfile, rfile]).splitlines()[::-1]
+    cg = run([oracle, sfile, qfile]).splitlines()
+    # Re-read what was written (both tools read these exact doubles).
+    _, sites = read_points(sfile)
+    _, queries = read_points(qfile)
+    n, m = len(sites), len(queries)
+    errors = []
+
+    def err(k, msg):
+        errors.append("query %d (%s): %s" % (k, " ".join(repr(x) for x in queries[k]), msg))
+
+    for what, lines in (("lifthull locate", lh), ("lifthull locate (reversed)", lh_rev),
+                        ("oracle", cg)):
+        if len(lines) != m:
+            return ["%s printed %d lines for %d queries" % (what, len(lines), m)], None
+
+    den = 1
+    for p in sites + queries:
+        for x in p:
+            den = max(den, Fraction(x).denominator)  # powers of two: the largest divides all
+    P = [tuple(int(Fraction(x) * den) for x in p) for p in sites]
+    Q = [tuple(int(Fraction(x) * den) for x in p) for p in queries]
+    tri = Tri(d, P, simplices)
+    if general and tri.ties:
+        errors.append("case marked general position, but %d exactly cospherical facets" % tri.ties)
+    if any(s == 0 for s in tri.sign):
+        errors.append("lifthull delaunay has a flat simplex")
+
+    st = dict(inside=0, outside=0, boundary=0, shared=0, ambiguous=0, ambiguous_differ=0,
+              nearest_ties=0, **{v: 0 for v in KINDS})
+    bary_err = 0.0
+    for k in range(m):
+        q = Q[k]
+        line = lh[k].split()
+        if lh[k] != lh_rev[k]:
+            err(k, "nondeterministic: %r in order, %r in reverse order" % (lh[k], lh_rev[k]))
+        try:
+            ctype, ccell, csub, cnear = parse_cgal(cg[k])
+        except ValueError:
+            return ["cannot parse oracle line %r" % cg[k]], None
+        try:
+            near = int(line[line.index("nearest") + 1])
+        except (ValueError, IndexError):
+            err(k, "cannot parse %r" % lh[k])
+            continue
+        # (d) nearest site
+        d2 = [dist2(q, p) for p in P]
+        best = min(d2)
+        ties = [i for i in range(n) if d2[i] == best]
+        if len(ties) > 1:
+            st["nearest_ties"] += 1
+        if not 0 <= near < n or d2[near] != best:
+            err(k, "nearest %d is not a nearest site (%s is)" % (near, ties[0]))
+        elif near != ties[0]:
+            err(k, "nearest %d is not the smallest index among the ties %s" % (near, ties))
+        if not 0 <= cnear < n or d2[cnear] != d2[near]:
+            err(k, "nearest %d and CGAL's %d are not equally near" % (near, cnear))
+
+        inside = tri.containing(q)
+        if line[0] == "out":
+            st["outside"] += 1
+            f = [int(x) for x in line[1:1 + d]]
+            dist = float(line[line.index("distance") + 1])
+            if inside:
+                err(k, "lifthull says out, but simplices %s contain it" % inside[:5])
+            if ctype != "OUTSIDE_CONVEX_HULL":
+                err(k, "lifthull says out, CGAL says %s" % ctype)
+            if not tri.hull_facet(f):
+                err(k, "out: facet %s is not a hull facet" % f)
+            else:
+                # distance to the facet's hyperplane <= D <= distance to the nearest site
+                fp = [[float(Fraction(c, den)) for c in P[v]] for v in f]
+                qf = [float(x) for x in queries[k]]
+                if d == 2:
+                    nrm = [-(fp[1][1] - fp[0][1]), fp[1][0] - fp[0][0]]
+                else:
+                    u = [fp[1][j] - fp[0][j] for j in range(3)]
+                    w = [fp[2][j] - fp[0][j] for j in range(3)]
+                    nrm = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                           u[0] * w[1] - u[1] * w[0]]
+                nn = sum(x * x for x in nrm) ** 0.5
+                hd = abs(sum(nrm[j] * (qf[j] - fp[0][j]) for j in range(d))) / nn
+                sd = float(Fraction(best, den * den)) ** 0.5
+                if not (dist > 0 and hd <= dist * (1 + 1e-9) + 1e-300 and dist <= sd * (1 + 1e-9)):
+                    err(k, "out: distance %r not in [%r, %r]" % (dist, hd, sd))
+            continue
+        if line[0] != "in" or len(line) != 2 * d + 6:
+            err(k, "cannot parse %r" % lh[k])
+            continue
+        st["inside"] += 1
+        S = int(line[1])
+        verts = tuple(int(x) for x in line[2:3 + d])
+        bary = [float(x) for x in line[3 + d:4 + 2 * d]]
+        # (a) containment and the smallest index
+        if not 0 <= S < len(tri.S) or tri.S[S] != verts:
+            err(k, "simplex %d is not %s in `lifthull delaunay` (it is %s)"
+                % (S, verts, tri.S[S] if 0 <= S < len(tri.S) else "out of range"))
+            continue
+        if S not in inside:
+            err(k, "simplex %d %s does not contain the query (orients %s)"
+                % (S, verts, tri.orients(S, q)))
+            continue
+        if S != min(inside):
+            err(k, "simplex %d, but simplex %d (smallest of %s) also contains it"
+                % (S, min(inside), inside[:8]))
+        if len(inside) > 1:
+            st["shared"] += 1
+        if any(x == 0 and tri.hull_facet(tri.S[si][:i] + tri.S[si][i + 1:])
+               for si in inside for i, x in enumerate(tri.orients(si, q))):
+            st["boundary"] += 1
+            if ctype.startswith("OUTSIDE"):
+                err(k, "on the hull boundary: lifthull in, CGAL %s" % ctype)
+        raw = tri.raw_orients(S, q)
+        tot = sum(raw)
+        for b, r in zip(bary, raw):
+            bary_err = max(bary_err, abs(b - float(Fraction(r, tot))))
+        # (b), (c) the location type
+        o = tri.orients(S, q)
+        lsub = sorted(v for v, x in zip(verts, o) if x != 0)
+        lk = len(lsub) - 1
+        st[kind(lk, d)] += 1
+        if ctype.startswith("OUTSIDE") or ctype not in CGAL_DIM:
+            err(k, "lifthull in simplex %d (on a %s), CGAL says %s" % (S, kind(lk, d), ctype))
+            continue
+        ck = CGAL_DIM[ctype]
+        if len(ccell) == d + 1:  # verify CGAL's own answer exactly
+            cs = tuple(ccell)
+            o2 = [sgn(x) for x in Tri(d, P, [cs]).orients(0, q)]
+            if min(o2) < 0 or sorted(v for v, x in zip(cs, o2) if x != 0) != csub:
+                err(k, "oracle inconsistent: %s cell %s sub %s, orients %s"
+                    % (ctype, ccell, csub, o2))
+        fv, fk, simplex = tri.minimal_face(S, q)
+        if simplex:
+            if not (lk == ck == fk and lsub == csub == fv):
+                err(k, "lifthull: on %s %s (simplex %d); CGAL: %s %s; exact face: %s %s"
+                    % (kind(lk, d), lsub, S, ctype, csub, kind(fk, d), fv))
+        else:
+            st["ambiguous"] += 1
+            if lk != ck or lsub != csub:
+                st["ambiguous_differ"] += 1
+            if not (set(lsub) <= set(fv) and set(csub) <= set(fv) and lk <= fk and ck <= fk):
+                err(k, "lifthull: on %s %s; CGAL: %s %s; both must lie in the non-simplex "
+                    "Delaunay face %s of dimension %d" % (kind(lk, d), lsub, ctype, csub, fv, fk))
+    if bary_err > 1e-7:
+        errors.append("barycentric coordinates off by up to %.3g" % bary_err)
+    st["bary_err"] = bary_err
+    st["time"] = time.time() - t0
+    st["n"], st["m"], st["simplices"], st["ties"] = n, m, len(tri.S), tri.ties
+    return errors, st
+
+
+# ---- the cases -------------------------------------------------------------------------------
+
+def points(lifthull, args, workdir):
+    path = os.path.join(workdir, "gen.txt")
+    with open(path, "w") as f:
+        f.write(run([lifthull, "points"] + args))
+    return read_points(path)[1]
+
+
+def near_faces(lifthull, workdir, d, sites, step):
+    """Queries at and near the faces of the triangulation: the midpoint of an edge and the
+    centroid of every step-th simplex, and of every step/10-th hull facet its first vertex (a
+    hull vertex) and its centroid (rounded: on, just inside or just outside the hull)."""
+    path = os.path.join(workdir, "tmp_sites.txt")
+    write_points(path, d, sites)
+    simplices = read_i_text(run([lifthull, "delaunay", path]))
+    out = []
+    for s in simplices[::step]:
+        a, b = sites[s[0]], sites[s[1]]
+        out.append(tuple((x + y) / 2 for x, y in zip(a, b)))
+        out.append(tuple(sum(sites[v][j] for v in s) / (d + 1) for j in range(d)))
+    count = {}
+    for s in simplices:
+        for i in range(d + 1):
+            f = tuple(sorted(s[:i] + s[i + 1:]))
+            count[f] = count.get(f, 0) + 1
+    hull = sorted(f for f, k in count.items() if k == 1)
+    for f in hull[::max(1, step // 10)]:
+        out.append(sites[f[0]])
+        out.append(tuple(sum(sites[v][j] for v in f) / d for j in range(d)))
+    return out
+
+
+def grid_queries(K, d):
+    """Grid {0..K-1}^d: vertices, edge midpoints, face and cell centres, the hull boundary,
+    and outside."""
+    import itertools
+    q = []
+    for c in itertools.product(*[[x / 2 for x in range(2 * K - 1)]] * d):
+        q.append(c)  # every half-integer point: vertices, midpoints, face/cell centres
+    h = K - 1
+    if d == 2:
+        q += [(0, 0.25), (h, 3.3), (1.7, 0), (2.5, h), (h, h), (0, h)]
+        q += [(-1, 4), (K, K), (4.5, -0.001), (h + 1e-9, 2), (-0.5, -0.5), (h / 2, 2 * K)]
+    else:
+        q += [(0, 1.25, 2.5), (h, 0.3, 1.7), (1.5, 0, 2.5), (0.5, 1.5, h), (0, 0, 1.5),
+              (h, h, 0.5), (0, 2, 2)]
+        q += [(-1, 2, 2), (K, K, K), (2, -1e-9, 2), (h + 0.5, h / 2, 1), (-0.5, -0.5, -0.5)]
+    return q
+
+
+def sphere_queries(sites, d, extra_pairs):
+    M = sum(x * x for x in sites[0])
+    r = int(M ** 0.5) + 1
+    present = set(sites)
+    q = [tuple([0.0] * d)] + list(sites)
+    n = len(sites)
+    for i in range(0, n, max(1, n // extra_pairs)):
+        for j in (i + 1, i + n // 2, i + n // 3):
+            a, b = sites[i], sites[j % n]
+            q.append(tuple((x + y) / 2 for x, y in zip(a, b)))
+    # integer points of the same sphere that are not sites: outside the hull
+    import itertools
+    missing = []
+    for c in itertools.product(range(-r, r + 1), repeat=d):
+        if sum(x * x for x in c) == M and tuple(float(x) for x in c) not in present:
+            missing.append(tuple(float(x) for x in c))
+    return q + missing[:20]
+
+
+def build_cases(lifthull, workdir):
+    cases = []
+    # 2D uniform: 1000 sites in the cube; random queries inside and outside the hull, sites,
+    # Delaunay edge midpoints and centroids (floating-point: near, not on, the edges), far out.
+    s2 = points(lifthull, ["1000", "-d", "2", "--seed", "11"], workdir)
+    qr = points(lifthull, ["400", "-d", "2", "--seed", "12"], workdir)
+    q2 = [tuple(1.2 * x for x in p) for p in qr] + s2[::50] + [tuple(3 * x for x in p)
+                                                               for p in qr[:20]]
+    q2 += near_faces(lifthull, workdir, 2, s2, 100)
+    cases.append(("uniform_d2", 2, s2, q2, True))
+    s3 = points(lifthull, ["500", "-d", "3", "--seed", "21"], workdir)
+    qr = points(lifthull, ["400", "-d", "3", "--seed", "22"], workdir)
+    q3 = [tuple(1.2 * x for x in p) for p in qr] + s3[::25] + [tuple(3 * x for x in p)
+                                                               for p in qr[:20]]
+    q3 += near_faces(lifthull, workdir, 3, s3, 150)
+    cases.append(("uniform_d3", 3, s3, q3, True))
+    # Integer grids: every face is exactly degenerate.
+    # Integer grids: every face is exactly degenerate. Queries: all half-integer points, the
+    # hull boundary, outside, and 60 random points of the grid's box.
+    for K, d in ((10, 2), (5, 3)):
+        qr = points(lifthull, ["60", "-d", str(d), "--seed", "31"], workdir)
+        qr = [tuple((x + 0.5) * (K - 1) for x in p) for p in qr]
+        cases.append(("grid%d_d%d" % (K, d), d,
+                      points(lifthull, ["--grid", str(K), "-d", str(d)], workdir),
+                      grid_queries(K, d) + qr, False))
+    # Exactly cocircular / cospherical sites: the centre, the sites, chord midpoints, and
+    # integer points of the same circle/sphere that are not sites.
+    sc = points(lifthull, ["40", "-d", "2", "--exact-sphere", "--seed", "3"], workdir)
+    cases.append(("sphere40_d2", 2, sc, sphere_queries(sc, 2, 20), False))
+    ss = points(lifthull, ["60", "-d", "3", "--exact-sphere", "--seed", "3"], workdir)
+    cases.append(("sphere60_d3", 3, ss, sphere_queries(ss, 3, 20), False))
+    return cases
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description="lifthull locate vs CGAL locate, exactly")
+    ap.add_argument("--lifthull", required=True)
+    ap.add_argument("--oracle", required=True)
+    ap.add_argument("--keep")
+    ap.add_argument("--case", action="append")
+    a = ap.parse_args(argv[1:])
+    workdir = a.keep or tempfile.mkdtemp(prefix="lh_locate_")
+    os.makedirs(workdir, exist_ok=True)
+    status = 0
+    try:
+        t0 = time.time()
+        for name, d, sites, queries, general in build_cases(a.lifthull, workdir):
+            if a.case and name not in a.case:
+                continue
+            errors, st = check_case(name, d, sites, queries, general,
+                                    (a.lifthull, a.oracle), workdir)
+            if st:
+                print("locate %-12s d=%d n=%d simplices=%d queries=%d: in=%d (vertex %d, edge %d, "
+                      "facet %d, interior %d; on the hull %d; in >1 simplex %d; non-simplex face %d, "
+                      "types differing there %d) out=%d; nearest ties %d; cospherical facets %d; "
+                      "bary err %.1e; %.1f s -> %s"
+                      % (name, d, st["n"], st["simplices"], st["m"], st["inside"], st["vertex"],
+                         st["edge"], st["facet"], st["interior"], st["boundary"], st["shared"],
+                         st["ambiguous"], st["ambiguous_differ"], st["outside"],
+                         st["nearest_ties"], st["ties"], st["bary_err"], st["time"],
+                         "FAIL" if errors else "OK"))
+            else:
+                print("locate %-12s -> FAIL" % name)
+            for e in errors[:15]:
+                print("  " + e)
+            if len(errors) > 15:
+                print("  ... %d more" % (len(errors) - 15))
+            if errors:
+                status = 1
+        print("compare_locate: %s in %.1f s"
+              % ("OK" if status == 0 else "FAIL", time.time() - t0))
+    except (ToolError, canon.CanonError, OSError) as e:
+        print("compare_locate: %s" % e)
+        status = 2
+    finally:
+        if not a.keep:
+            shutil.rmtree(workdir, ignore_errors=True)
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
