@@ -36,7 +36,7 @@ static void line(FILE *f, lh_tri *t, const lh_location *loc, int32_t nearest)
     if (loc->simplex >= 0) {
         fprintf(f, "in %d", (int)loc->simplex);
         for (int j = 0; j <= k; j++) fprintf(f, " %d", (int)lh_tri_simplices(t)[(size_t)loc->simplex * (k + 1) + j]);
-        for (int j = 0; j <= k; j++) fprintf(f, " %.17g", loc->bary[j]);
+        for (int j = 0; j <= k; j++) fprintf(f, " %.17g", loc->bary[j] + 0.0); /* no -0 */
     } else {
         fputs("out", f);
         for (int j = 0; j < k; j++) fprintf(f, " %d", (int)lh_tri_hull_facets(t)[(size_t)loc->hull_facet * k + j]);

@@ -13,13 +13,24 @@
 #define LH_CAT_(a, b) a##b
 #define LH_CAT(a, b) LH_CAT_(a, b)
 
+/* The static filters' bounds for this computation's sites (lh_filter.gen.h). */
+static void prepare_fixed(lh__eng *e)
+{
+    e->static_eb[0] = lh__static_bound(0, LH_DIM, e->span);
+    e->static_eb[1] = lh__static_bound(1, LH_DIM, e->span);
+}
+
 /* insphere_sos of finite cell v (positively oriented) and vertex q. */
 static inline int lifted_sign_fixed(lh__eng *e, const int32_t *v, int32_t q)
 {
     const double *p[LH_DIM + 2];
     for (int k = 0; k <= LH_DIM; k++) p[k] = lh__eng_site(e, v[k]);
     p[LH_DIM + 1] = lh__eng_site(e, q);
-    int s;
+    int s = LH_CAT(lh__insphere_static_, LH_DIM)(p, e->static_eb[1]);
+    if (s) {
+        e->filtered++;
+        return s;
+    }
     double det, err;
     if (LH_CAT(lh__insphere_filter_, LH_DIM)(p, &s, &det, &err) && s) {
         e->filtered++;
@@ -30,7 +41,11 @@ static inline int lifted_sign_fixed(lh__eng *e, const int32_t *v, int32_t q)
 
 static inline int orient_fixed(lh__eng *e, const double *const *p)
 {
-    int s;
+    int s = LH_CAT(lh__orient_static_, LH_DIM)(p, e->static_eb[0]);
+    if (s) {
+        e->filtered++;
+        return s;
+    }
     double det, err;
     if (LH_CAT(lh__orient_filter_, LH_DIM)(p, &s, &det, &err)) {
         e->filtered++;
@@ -42,4 +57,5 @@ static inline int orient_fixed(lh__eng *e, const double *const *p)
 #define LH_T_D LH_DIM
 #define LH_T_FINITE_CONFLICT(e, v, q) (lifted_sign_fixed(e, v, q) == (e)->conflict_sign)
 #define LH_T_ORIENT(e, pts) orient_fixed(e, pts)
+#define LH_T_PREPARE(e) prepare_fixed(e)
 #include "insert_impl.h"

@@ -32,6 +32,15 @@ lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
     e->xyz = xyz;
     e->dup = dup;
     e->rng = (opt ? opt->seed : LH__DEFAULT_SEED) | 1;
+    for (int j = 0; j < d; j++) { /* rounding is monotone: every difference is within */
+        double lo = n ? xyz[j] : 0, hi = lo;
+        for (size_t i = 1; i < n; i++) {
+            double x = xyz[i * (size_t)d + j];
+            lo = x < lo ? x : lo;
+            hi = x > hi ? x : hi;
+        }
+        e->span[j] = hi - lo;
+    }
     e->progress = opt ? opt->progress : NULL;
     e->progress_user = opt ? opt->progress_user : NULL;
     return lh_pred_create(&e->alloc, &e->pred);

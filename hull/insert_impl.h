@@ -9,7 +9,8 @@
  *   LH_T_D      the dimension, a constant (optional: e->d when undefined);
  *   LH_T_FINITE_CONFLICT(e, v, q)  whether the finite cell with vertices v conflicts
  *               with vertex q (optional: the engine's finite_conflict callback);
- *   LH_T_ORIENT(e, pts)  orient_d of pts (optional: lh__orient_fast).
+ *   LH_T_ORIENT(e, pts)  orient_d of pts (optional: lh__orient_fast);
+ *   LH_T_PREPARE(e)  run once per call before inserting (optional: nothing).
  *
  * Location: a remembering stochastic visibility walk (Devillers, Pion & Teillaud,
  * "Walking in a triangulation", IJFCS 13(2), 2002) from the last new cell. It stops
@@ -46,6 +47,9 @@
 #endif
 #ifndef LH_T_ORIENT
 #define LH_T_ORIENT(e, pts) lh__orient_fast((e)->pred, (e)->d, pts)
+#endif
+#ifndef LH_T_PREPARE
+#define LH_T_PREPARE(e) ((void)(e))
 #endif
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -282,6 +286,7 @@ lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const int32_t *list)
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const int32_t *list)
 {
     lh_status st = LH_OK;
+    LH_T_PREPARE(e);
     for (size_t i = 0; i < count && st == LH_OK; i++) {
         e->q = list ? list[i] : (int32_t)(first + i);
         int32_t c = locate(e);

@@ -2869,4 +2869,407 @@ static inline int lh__insphere_filter_8(const double *const *p, int *sign, doubl
     return 0;
 }
 
+/* Static filters for the fixed-dimension engines (dims/): one bound per
+ * computation, from the column spans of its sites (see the generator). */
+
+#define LH__ORIENT_C_2 0x1.0000000001005p-50 /* the bound constant of orient_2 */
+#define LH__ORIENT_E_2 450 /* its band exponent */
+static inline int lh__orient_static_2(const double *const *p, double eb)
+{
+    const double *p0 = p[0];
+    const double *p1 = p[1];
+    const double a0_0 = p1[0] - p0[0];
+    const double a0_1 = p1[1] - p0[1];
+    const double *p2 = p[2];
+    const double a1_0 = p2[0] - p0[0];
+    const double a1_1 = p2[1] - p0[1];
+    const double m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    return (m2_3 > eb) - (m2_3 < -eb);
+}
+
+#define LH__ORIENT_C_3 0x1.800000000180bp-48 /* the bound constant of orient_3 */
+#define LH__ORIENT_E_3 300 /* its band exponent */
+static inline int lh__orient_static_3(const double *const *p, double eb)
+{
+    const double *p0 = p[0];
+    const double *p1 = p[1];
+    const double a0_0 = p1[0] - p0[0];
+    const double a0_1 = p1[1] - p0[1];
+    const double a0_2 = p1[2] - p0[2];
+    const double *p2 = p[2];
+    const double a1_0 = p2[0] - p0[0];
+    const double a1_1 = p2[1] - p0[1];
+    const double a1_2 = p2[2] - p0[2];
+    const double *p3 = p[3];
+    const double a2_0 = p3[0] - p0[0];
+    const double a2_1 = p3[1] - p0[1];
+    const double a2_2 = p3[2] - p0[2];
+    const double m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const double m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const double m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const double m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    return (m3_7 > eb) - (m3_7 < -eb);
+}
+
+#define LH__ORIENT_C_4 0x1.380000000138dp-45 /* the bound constant of orient_4 */
+#define LH__ORIENT_E_4 225 /* its band exponent */
+static inline int lh__orient_static_4(const double *const *p, double eb)
+{
+    const double *p0 = p[0];
+    const double *p1 = p[1];
+    const double a0_0 = p1[0] - p0[0];
+    const double a0_1 = p1[1] - p0[1];
+    const double a0_2 = p1[2] - p0[2];
+    const double a0_3 = p1[3] - p0[3];
+    const double *p2 = p[2];
+    const double a1_0 = p2[0] - p0[0];
+    const double a1_1 = p2[1] - p0[1];
+    const double a1_2 = p2[2] - p0[2];
+    const double a1_3 = p2[3] - p0[3];
+    const double *p3 = p[3];
+    const double a2_0 = p3[0] - p0[0];
+    const double a2_1 = p3[1] - p0[1];
+    const double a2_2 = p3[2] - p0[2];
+    const double a2_3 = p3[3] - p0[3];
+    const double *p4 = p[4];
+    const double a3_0 = p4[0] - p0[0];
+    const double a3_1 = p4[1] - p0[1];
+    const double a3_2 = p4[2] - p0[2];
+    const double a3_3 = p4[3] - p0[3];
+    const double m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const double m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const double m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const double m2_9 = -a0_1 * a3_0 + a3_1 * a0_0;
+    const double m2_a = -a1_1 * a3_0 + a3_1 * a1_0;
+    const double m2_c = -a2_1 * a3_0 + a3_1 * a2_0;
+    const double m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    const double m3_b = a0_2 * m2_a - a1_2 * m2_9 + a3_2 * m2_3;
+    const double m3_d = a0_2 * m2_c - a2_2 * m2_9 + a3_2 * m2_5;
+    const double m3_e = a1_2 * m2_c - a2_2 * m2_a + a3_2 * m2_6;
+    const double m4_f = -a0_3 * m3_e + a1_3 * m3_d - a2_3 * m3_b + a3_3 * m3_7;
+    return (m4_f > eb) - (m4_f < -eb);
+}
+
+#define LH__ORIENT_C_5 0x1.1d000000011e1p-42 /* the bound constant of orient_5 */
+#define LH__ORIENT_E_5 180 /* its band exponent */
+static inline int lh__orient_static_5(const double *const *p, double eb)
+{
+    const double *p0 = p[0];
+    const double *p1 = p[1];
+    const double a0_0 = p1[0] - p0[0];
+    const double a0_1 = p1[1] - p0[1];
+    const double a0_2 = p1[2] - p0[2];
+    const double a0_3 = p1[3] - p0[3];
+    const double a0_4 = p1[4] - p0[4];
+    const double *p2 = p[2];
+    const double a1_0 = p2[0] - p0[0];
+    const double a1_1 = p2[1] - p0[1];
+    const double a1_2 = p2[2] - p0[2];
+    const double a1_3 = p2[3] - p0[3];
+    const double a1_4 = p2[4] - p0[4];
+    const double *p3 = p[3];
+    const double a2_0 = p3[0] - p0[0];
+    const double a2_1 = p3[1] - p0[1];
+    const double a2_2 = p3[2] - p0[2];
+    const double a2_3 = p3[3] - p0[3];
+    const double a2_4 = p3[4] - p0[4];
+    const double *p4 = p[4];
+    const double a3_0 = p4[0] - p0[0];
+    const double a3_1 = p4[1] - p0[1];
+    const double a3_2 = p4[2] - p0[2];
+    const double a3_3 = p4[3] - p0[3];
+    const double a3_4 = p4[4] - p0[4];
+    const double *p5 = p[5];
+    const double a4_0 = p5[0] - p0[0];
+    const double a4_1 = p5[1] - p0[1];
+    const double a4_2 = p5[2] - p0[2];
+    const double a4_3 = p5[3] - p0[3];
+    const double a4_4 = p5[4] - p0[4];
+    const double m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const double m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const double m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const double m2_9 = -a0_1 * a3_0 + a3_1 * a0_0;
+    const double m2_a = -a1_1 * a3_0 + a3_1 * a1_0;
+    const double m2_c = -a2_1 * a3_0 + a3_1 * a2_0;
+    const double m2_11 = -a0_1 * a4_0 + a4_1 * a0_0;
+    const double m2_12 = -a1_1 * a4_0 + a4_1 * a1_0;
+    const double m2_14 = -a2_1 * a4_0 + a4_1 * a2_0;
+    const double m2_18 = -a3_1 * a4_0 + a4_1 * a3_0;
+    const double m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    const double m3_b = a0_2 * m2_a - a1_2 * m2_9 + a3_2 * m2_3;
+    const double m3_d = a0_2 * m2_c - a2_2 * m2_9 + a3_2 * m2_5;
+    const double m3_e = a1_2 * m2_c - a2_2 * m2_a + a3_2 * m2_6;
+    const double m3_13 = a0_2 * m2_12 - a1_2 * m2_11 + a4_2 * m2_3;
+    const double m3_15 = a0_2 * m2_14 - a2_2 * m2_11 + a4_2 * m2_5;
+    const double m3_16 = a1_2 * m2_14 - a2_2 * m2_12 + a4_2 * m2_6;
+    const double m3_19 = a0_2 * m2_18 - a3_2 * m2_11 + a4_2 * m2_9;
+    const double m3_1a = a1_2 * m2_18 - a3_2 * m2_12 + a4_2 * m2_a;
+    const double m3_1c = a2_2 * m2_18 - a3_2 * m2_14 + a4_2 * m2_c;
+    const double m4_f = -a0_3 * m3_e + a1_3 * m3_d - a2_3 * m3_b + a3_3 * m3_7;
+    const double m4_17 = -a0_3 * m3_16 + a1_3 * m3_15 - a2_3 * m3_13 + a4_3 * m3_7;
+    const double m4_1b = -a0_3 * m3_1a + a1_3 * m3_19 - a3_3 * m3_13 + a4_3 * m3_b;
+    const double m4_1d = -a0_3 * m3_1c + a2_3 * m3_19 - a3_3 * m3_15 + a4_3 * m3_d;
+    const double m4_1e = -a1_3 * m3_1c + a2_3 * m3_1a - a3_3 * m3_16 + a4_3 * m3_e;
+    const double m5_1f = a0_4 * m4_1e - a1_4 * m4_1d + a2_4 * m4_1b - a3_4 * m4_17 + a4_4 * m4_f;
+    return (m5_1f > eb) - (m5_1f < -eb);
+}
+
+#define LH__INSPHERE_C_2 0x1.080000000108bp-47 /* the bound constant of insphere_2 */
+#define LH__INSPHERE_E_2 225 /* its band exponent */
+static inline int lh__insphere_static_2(const double *const *p, double eb)
+{
+    const double *p0 = p[0];
+    const double *p1 = p[1];
+    const double a0_0 = p1[0] - p0[0];
+    const double a0_1 = p1[1] - p0[1];
+    const double a0_2 = a0_0 * a0_0 + a0_1 * a0_1;
+    const double *p2 = p[2];
+    const double a1_0 = p2[0] - p0[0];
+    const double a1_1 = p2[1] - p0[1];
+    const double a1_2 = a1_0 * a1_0 + a1_1 * a1_1;
+    const double *p3 = p[3];
+    const double a2_0 = p3[0] - p0[0];
+    const double a2_1 = p3[1] - p0[1];
+    const double a2_2 = a2_0 * a2_0 + a2_1 * a2_1;
+    const double m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const double m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const double m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const double m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    return (m3_7 > eb) - (m3_7 < -eb);
+}
+
+#define LH__INSPHERE_C_3 0x1.9800000001998p-45 /* the bound constant of insphere_3 */
+#define LH__INSPHERE_E_3 180 /* its band exponent */
+static inline int lh__insphere_static_3(const double *const *p, double eb)
+{
+    const double *p0 = p[0];
+    const double *p1 = p[1];
+    const double a0_0 = p1[0] - p0[0];
+    const double a0_1 = p1[1] - p0[1];
+    const double a0_2 = p1[2] - p0[2];
+    const double a0_3 = a0_0 * a0_0 + a0_1 * a0_1 + a0_2 * a0_2;
+    const double *p2 = p[2];
+    const double a1_0 = p2[0] - p0[0];
+    const double a1_1 = p2[1] - p0[1];
+    const double a1_2 = p2[2] - p0[2];
+    const double a1_3 = a1_0 * a1_0 + a1_1 * a1_1 + a1_2 * a1_2;
+    const double *p3 = p[3];
+    const double a2_0 = p3[0] - p0[0];
+    const double a2_1 = p3[1] - p0[1];
+    const double a2_2 = p3[2] - p0[2];
+    const double a2_3 = a2_0 * a2_0 + a2_1 * a2_1 + a2_2 * a2_2;
+    const double *p4 = p[4];
+    const double a3_0 = p4[0] - p0[0];
+    const double a3_1 = p4[1] - p0[1];
+    const double a3_2 = p4[2] - p0[2];
+    const double a3_3 = a3_0 * a3_0 + a3_1 * a3_1 + a3_2 * a3_2;
+    const double m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const double m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const double m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const double m2_9 = -a0_1 * a3_0 + a3_1 * a0_0;
+    const double m2_a = -a1_1 * a3_0 + a3_1 * a1_0;
+    const double m2_c = -a2_1 * a3_0 + a3_1 * a2_0;
+    const double m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    const double m3_b = a0_2 * m2_a - a1_2 * m2_9 + a3_2 * m2_3;
+    const double m3_d = a0_2 * m2_c - a2_2 * m2_9 + a3_2 * m2_5;
+    const double m3_e = a1_2 * m2_c - a2_2 * m2_a + a3_2 * m2_6;
+    const double m4_f = -a0_3 * m3_e + a1_3 * m3_d - a2_3 * m3_b + a3_3 * m3_7;
+    return (m4_f > eb) - (m4_f < -eb);
+}
+
+#define LH__INSPHERE_C_4 0x1.680000000169dp-42 /* the bound constant of insphere_4 */
+#define LH__INSPHERE_E_4 150 /* its band exponent */
+static inline int lh__insphere_static_4(const double *const *p, double eb)
+{
+    const double *p0 = p[0];
+    const double *p1 = p[1];
+    const double a0_0 = p1[0] - p0[0];
+    const double a0_1 = p1[1] - p0[1];
+    const double a0_2 = p1[2] - p0[2];
+    const double a0_3 = p1[3] - p0[3];
+    const double a0_4 = a0_0 * a0_0 + a0_1 * a0_1 + a0_2 * a0_2 + a0_3 * a0_3;
+    const double *p2 = p[2];
+    const double a1_0 = p2[0] - p0[0];
+    const double a1_1 = p2[1] - p0[1];
+    const double a1_2 = p2[2] - p0[2];
+    const double a1_3 = p2[3] - p0[3];
+    const double a1_4 = a1_0 * a1_0 + a1_1 * a1_1 + a1_2 * a1_2 + a1_3 * a1_3;
+    const double *p3 = p[3];
+    const double a2_0 = p3[0] - p0[0];
+    const double a2_1 = p3[1] - p0[1];
+    const double a2_2 = p3[2] - p0[2];
+    const double a2_3 = p3[3] - p0[3];
+    const double a2_4 = a2_0 * a2_0 + a2_1 * a2_1 + a2_2 * a2_2 + a2_3 * a2_3;
+    const double *p4 = p[4];
+    const double a3_0 = p4[0] - p0[0];
+    const double a3_1 = p4[1] - p0[1];
+    const double a3_2 = p4[2] - p0[2];
+    const double a3_3 = p4[3] - p0[3];
+    const double a3_4 = a3_0 * a3_0 + a3_1 * a3_1 + a3_2 * a3_2 + a3_3 * a3_3;
+    const double *p5 = p[5];
+    const double a4_0 = p5[0] - p0[0];
+    const double a4_1 = p5[1] - p0[1];
+    const double a4_2 = p5[2] - p0[2];
+    const double a4_3 = p5[3] - p0[3];
+    const double a4_4 = a4_0 * a4_0 + a4_1 * a4_1 + a4_2 * a4_2 + a4_3 * a4_3;
+    const double m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const double m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const double m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const double m2_9 = -a0_1 * a3_0 + a3_1 * a0_0;
+    const double m2_a = -a1_1 * a3_0 + a3_1 * a1_0;
+    const double m2_c = -a2_1 * a3_0 + a3_1 * a2_0;
+    const double m2_11 = -a0_1 * a4_0 + a4_1 * a0_0;
+    const double m2_12 = -a1_1 * a4_0 + a4_1 * a1_0;
+    const double m2_14 = -a2_1 * a4_0 + a4_1 * a2_0;
+    const double m2_18 = -a3_1 * a4_0 + a4_1 * a3_0;
+    const double m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    const double m3_b = a0_2 * m2_a - a1_2 * m2_9 + a3_2 * m2_3;
+    const double m3_d = a0_2 * m2_c - a2_2 * m2_9 + a3_2 * m2_5;
+    const double m3_e = a1_2 * m2_c - a2_2 * m2_a + a3_2 * m2_6;
+    const double m3_13 = a0_2 * m2_12 - a1_2 * m2_11 + a4_2 * m2_3;
+    const double m3_15 = a0_2 * m2_14 - a2_2 * m2_11 + a4_2 * m2_5;
+    const double m3_16 = a1_2 * m2_14 - a2_2 * m2_12 + a4_2 * m2_6;
+    const double m3_19 = a0_2 * m2_18 - a3_2 * m2_11 + a4_2 * m2_9;
+    const double m3_1a = a1_2 * m2_18 - a3_2 * m2_12 + a4_2 * m2_a;
+    const double m3_1c = a2_2 * m2_18 - a3_2 * m2_14 + a4_2 * m2_c;
+    const double m4_f = -a0_3 * m3_e + a1_3 * m3_d - a2_3 * m3_b + a3_3 * m3_7;
+    const double m4_17 = -a0_3 * m3_16 + a1_3 * m3_15 - a2_3 * m3_13 + a4_3 * m3_7;
+    const double m4_1b = -a0_3 * m3_1a + a1_3 * m3_19 - a3_3 * m3_13 + a4_3 * m3_b;
+    const double m4_1d = -a0_3 * m3_1c + a2_3 * m3_19 - a3_3 * m3_15 + a4_3 * m3_d;
+    const double m4_1e = -a1_3 * m3_1c + a2_3 * m3_1a - a3_3 * m3_16 + a4_3 * m3_e;
+    const double m5_1f = a0_4 * m4_1e - a1_4 * m4_1d + a2_4 * m4_1b - a3_4 * m4_17 + a4_4 * m4_f;
+    return (m5_1f > eb) - (m5_1f < -eb);
+}
+
+#define LH__INSPHERE_C_5 0x1.68000000016a4p-39 /* the bound constant of insphere_5 */
+#define LH__INSPHERE_E_5 128 /* its band exponent */
+static inline int lh__insphere_static_5(const double *const *p, double eb)
+{
+    const double *p0 = p[0];
+    const double *p1 = p[1];
+    const double a0_0 = p1[0] - p0[0];
+    const double a0_1 = p1[1] - p0[1];
+    const double a0_2 = p1[2] - p0[2];
+    const double a0_3 = p1[3] - p0[3];
+    const double a0_4 = p1[4] - p0[4];
+    const double a0_5 = a0_0 * a0_0 + a0_1 * a0_1 + a0_2 * a0_2 + a0_3 * a0_3 + a0_4 * a0_4;
+    const double *p2 = p[2];
+    const double a1_0 = p2[0] - p0[0];
+    const double a1_1 = p2[1] - p0[1];
+    const double a1_2 = p2[2] - p0[2];
+    const double a1_3 = p2[3] - p0[3];
+    const double a1_4 = p2[4] - p0[4];
+    const double a1_5 = a1_0 * a1_0 + a1_1 * a1_1 + a1_2 * a1_2 + a1_3 * a1_3 + a1_4 * a1_4;
+    const double *p3 = p[3];
+    const double a2_0 = p3[0] - p0[0];
+    const double a2_1 = p3[1] - p0[1];
+    const double a2_2 = p3[2] - p0[2];
+    const double a2_3 = p3[3] - p0[3];
+    const double a2_4 = p3[4] - p0[4];
+    const double a2_5 = a2_0 * a2_0 + a2_1 * a2_1 + a2_2 * a2_2 + a2_3 * a2_3 + a2_4 * a2_4;
+    const double *p4 = p[4];
+    const double a3_0 = p4[0] - p0[0];
+    const double a3_1 = p4[1] - p0[1];
+    const double a3_2 = p4[2] - p0[2];
+    const double a3_3 = p4[3] - p0[3];
+    const double a3_4 = p4[4] - p0[4];
+    const double a3_5 = a3_0 * a3_0 + a3_1 * a3_1 + a3_2 * a3_2 + a3_3 * a3_3 + a3_4 * a3_4;
+    const double *p5 = p[5];
+    const double a4_0 = p5[0] - p0[0];
+    const double a4_1 = p5[1] - p0[1];
+    const double a4_2 = p5[2] - p0[2];
+    const double a4_3 = p5[3] - p0[3];
+    const double a4_4 = p5[4] - p0[4];
+    const double a4_5 = a4_0 * a4_0 + a4_1 * a4_1 + a4_2 * a4_2 + a4_3 * a4_3 + a4_4 * a4_4;
+    const double *p6 = p[6];
+    const double a5_0 = p6[0] - p0[0];
+    const double a5_1 = p6[1] - p0[1];
+    const double a5_2 = p6[2] - p0[2];
+    const double a5_3 = p6[3] - p0[3];
+    const double a5_4 = p6[4] - p0[4];
+    const double a5_5 = a5_0 * a5_0 + a5_1 * a5_1 + a5_2 * a5_2 + a5_3 * a5_3 + a5_4 * a5_4;
+    const double m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const double m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const double m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const double m2_9 = -a0_1 * a3_0 + a3_1 * a0_0;
+    const double m2_a = -a1_1 * a3_0 + a3_1 * a1_0;
+    const double m2_c = -a2_1 * a3_0 + a3_1 * a2_0;
+    const double m2_11 = -a0_1 * a4_0 + a4_1 * a0_0;
+    const double m2_12 = -a1_1 * a4_0 + a4_1 * a1_0;
+    const double m2_14 = -a2_1 * a4_0 + a4_1 * a2_0;
+    const double m2_18 = -a3_1 * a4_0 + a4_1 * a3_0;
+    const double m2_21 = -a0_1 * a5_0 + a5_1 * a0_0;
+    const double m2_22 = -a1_1 * a5_0 + a5_1 * a1_0;
+    const double m2_24 = -a2_1 * a5_0 + a5_1 * a2_0;
+    const double m2_28 = -a3_1 * a5_0 + a5_1 * a3_0;
+    const double m2_30 = -a4_1 * a5_0 + a5_1 * a4_0;
+    const double m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    const double m3_b = a0_2 * m2_a - a1_2 * m2_9 + a3_2 * m2_3;
+    const double m3_d = a0_2 * m2_c - a2_2 * m2_9 + a3_2 * m2_5;
+    const double m3_e = a1_2 * m2_c - a2_2 * m2_a + a3_2 * m2_6;
+    const double m3_13 = a0_2 * m2_12 - a1_2 * m2_11 + a4_2 * m2_3;
+    const double m3_15 = a0_2 * m2_14 - a2_2 * m2_11 + a4_2 * m2_5;
+    const double m3_16 = a1_2 * m2_14 - a2_2 * m2_12 + a4_2 * m2_6;
+    const double m3_19 = a0_2 * m2_18 - a3_2 * m2_11 + a4_2 * m2_9;
+    const double m3_1a = a1_2 * m2_18 - a3_2 * m2_12 + a4_2 * m2_a;
+    const double m3_1c = a2_2 * m2_18 - a3_2 * m2_14 + a4_2 * m2_c;
+    const double m3_23 = a0_2 * m2_22 - a1_2 * m2_21 + a5_2 * m2_3;
+    const double m3_25 = a0_2 * m2_24 - a2_2 * m2_21 + a5_2 * m2_5;
+    const double m3_26 = a1_2 * m2_24 - a2_2 * m2_22 + a5_2 * m2_6;
+    const double m3_29 = a0_2 * m2_28 - a3_2 * m2_21 + a5_2 * m2_9;
+    const double m3_2a = a1_2 * m2_28 - a3_2 * m2_22 + a5_2 * m2_a;
+    const double m3_2c = a2_2 * m2_28 - a3_2 * m2_24 + a5_2 * m2_c;
+    const double m3_31 = a0_2 * m2_30 - a4_2 * m2_21 + a5_2 * m2_11;
+    const double m3_32 = a1_2 * m2_30 - a4_2 * m2_22 + a5_2 * m2_12;
+    const double m3_34 = a2_2 * m2_30 - a4_2 * m2_24 + a5_2 * m2_14;
+    const double m3_38 = a3_2 * m2_30 - a4_2 * m2_28 + a5_2 * m2_18;
+    const double m4_f = -a0_3 * m3_e + a1_3 * m3_d - a2_3 * m3_b + a3_3 * m3_7;
+    const double m4_17 = -a0_3 * m3_16 + a1_3 * m3_15 - a2_3 * m3_13 + a4_3 * m3_7;
+    const double m4_1b = -a0_3 * m3_1a + a1_3 * m3_19 - a3_3 * m3_13 + a4_3 * m3_b;
+    const double m4_1d = -a0_3 * m3_1c + a2_3 * m3_19 - a3_3 * m3_15 + a4_3 * m3_d;
+    const double m4_1e = -a1_3 * m3_1c + a2_3 * m3_1a - a3_3 * m3_16 + a4_3 * m3_e;
+    const double m4_27 = -a0_3 * m3_26 + a1_3 * m3_25 - a2_3 * m3_23 + a5_3 * m3_7;
+    const double m4_2b = -a0_3 * m3_2a + a1_3 * m3_29 - a3_3 * m3_23 + a5_3 * m3_b;
+    const double m4_2d = -a0_3 * m3_2c + a2_3 * m3_29 - a3_3 * m3_25 + a5_3 * m3_d;
+    const double m4_2e = -a1_3 * m3_2c + a2_3 * m3_2a - a3_3 * m3_26 + a5_3 * m3_e;
+    const double m4_33 = -a0_3 * m3_32 + a1_3 * m3_31 - a4_3 * m3_23 + a5_3 * m3_13;
+    const double m4_35 = -a0_3 * m3_34 + a2_3 * m3_31 - a4_3 * m3_25 + a5_3 * m3_15;
+    const double m4_36 = -a1_3 * m3_34 + a2_3 * m3_32 - a4_3 * m3_26 + a5_3 * m3_16;
+    const double m4_39 = -a0_3 * m3_38 + a3_3 * m3_31 - a4_3 * m3_29 + a5_3 * m3_19;
+    const double m4_3a = -a1_3 * m3_38 + a3_3 * m3_32 - a4_3 * m3_2a + a5_3 * m3_1a;
+    const double m4_3c = -a2_3 * m3_38 + a3_3 * m3_34 - a4_3 * m3_2c + a5_3 * m3_1c;
+    const double m5_1f = a0_4 * m4_1e - a1_4 * m4_1d + a2_4 * m4_1b - a3_4 * m4_17 + a4_4 * m4_f;
+    const double m5_2f = a0_4 * m4_2e - a1_4 * m4_2d + a2_4 * m4_2b - a3_4 * m4_27 + a5_4 * m4_f;
+    const double m5_37 = a0_4 * m4_36 - a1_4 * m4_35 + a2_4 * m4_33 - a4_4 * m4_27 + a5_4 * m4_17;
+    const double m5_3b = a0_4 * m4_3a - a1_4 * m4_39 + a3_4 * m4_33 - a4_4 * m4_2b + a5_4 * m4_1b;
+    const double m5_3d = a0_4 * m4_3c - a2_4 * m4_39 + a3_4 * m4_35 - a4_4 * m4_2d + a5_4 * m4_1d;
+    const double m5_3e = a1_4 * m4_3c - a2_4 * m4_3a + a3_4 * m4_36 - a4_4 * m4_2e + a5_4 * m4_1e;
+    const double m6_3f = -a0_5 * m5_3e + a1_5 * m5_3d - a2_5 * m5_3b + a3_5 * m5_37 - a4_5 * m5_2f + a5_5 * m5_1f;
+    return (m6_3f > eb) - (m6_3f < -eb);
+}
+
+/* The static bound for d = 2..5 from the column spans span[0..d-1] (fl(max - min)
+ * of each coordinate over the sites): the constant times the spans (and the
+ * lifted span, summed as the entries are), multiplied in the dynamic filter's
+ * order; +infinity (never decides) when a span is outside the band. */
+static inline double lh__static_bound(int lifted, int d, const double *span)
+{
+    static const double c[2][6] = {
+        {0, 0, LH__ORIENT_C_2, LH__ORIENT_C_3, LH__ORIENT_C_4, LH__ORIENT_C_5},
+        {0, 0, LH__INSPHERE_C_2, LH__INSPHERE_C_3, LH__INSPHERE_C_4, LH__INSPHERE_C_5}};
+    static const int e[2][6] = {
+        {0, 0, LH__ORIENT_E_2, LH__ORIENT_E_3, LH__ORIENT_E_4, LH__ORIENT_E_5},
+        {0, 0, LH__INSPHERE_E_2, LH__INSPHERE_E_3, LH__INSPHERE_E_4, LH__INSPHERE_E_5}};
+    if (d < 2 || d > 5) return INFINITY;
+    const double lo = ldexp(1.0, -e[lifted][d]), hi = ldexp(1.0, e[lifted][d]);
+    double b = c[lifted][d], lift = 0;
+    for (int j = 0; j < d; j++) {
+        if (!(span[j] >= lo && span[j] <= hi)) return INFINITY;
+        b *= span[j];
+        lift += span[j] * span[j];
+    }
+    if (lifted && !(lift >= lo * lo && lift <= hi * hi)) return INFINITY;
+    return lifted ? b * lift : b;
+}
+
 #endif
