@@ -1,0 +1,461 @@
+/* test_hostile.c — the API half of the hostile input catalogue (docs/hostile-inputs.md):
+ * coordinates at the ends of the double range (2^±1000, subnormals, DBL_MAX, mixed
+ * magnitudes) triangulated exactly and identically to their unit-scale copies; 10^6
+ * identical sites rejected fast and small; duplicates only; collinear and coplanar
+ * sites; exactly cocircular sites; sites on hull facets; queries on boundaries; what
+ * the reader makes of extreme numbers and of megabyte lines. Each test names its rows
+ * of the catalogue. Reader diagnostics proper are in test_io_read.c. */
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define TEXT(s) s, sizeof(s) - 1
+
+/* ---- helpers ------------------------------------------------------------------------ */
+
+/* An allocator that records the peak of live bytes and the largest block. */
+typedef struct peak {
+    size_t live, peak, largest;
+} peak;
+
+static void *peak_alloc(void *user, size_t size)
+{
+    peak *p = user;
+    size_t *b = malloc(size + sizeof(max_align_t));
+    if (!b) return NULL;
+    *b = size;
+    p->live += size;
+    if (p->live > p->peak) p->peak = p->live;
+    if (size > p->largest) p->largest = size;
+    return (char *)b + sizeof(max_align_t);
+}
+
+static void peak_free(void *user, void *ptr)
+{
+    if (!ptr) return;
+    size_t *b = (size_t *)(void *)((char *)ptr - sizeof(max_align_t));
+    ((peak *)user)->live -= *b;
+    free(b);
+}
+
+static FILE *file_of(const char *text, size_t len)
+{
+    FILE *f = tmpfile();
+    if (f && len && fwrite(text, 1, len, f) != len) {
+        fclose(f);
+        return NULL;
+    }
+    if (f) rewind(f);
+    return f;
+}
+
+static lh_status read_text(const char *text, size_t len, lh_points *p, char *msg, size_t size)
+{
+    FILE *f = file_of(text, len);
+    if (!f) return LH_ERR_IO;
+    lh_status st = lh_points_read(f, "h", LH_FORMAT_AUTO, NULL, p, msg, size);
+    fclose(f);
+    return st;
+}
+
+/* A deterministic degenerate set: n small integer points in [0, 8)^d (many cospherical,
+ * collinear and duplicate subsets), the first d+1 a corner simplex so they span R^d. */
+static void integer_sites(int d, size_t n, double *x)
+{
+    uint64_t s = 0x9e3779b97f4a7c15u * (uint64_t)(d + 1);
+    for (size_t i = 0; i < n; i++)
+        for (int j = 0; j < d; j++) {
+            s = s * 6364136223846793005u + 1442695040888963407u;
+            x[i * (size_t)d + j] = i <= (size_t)d ? (double)(8 * (i == (size_t)j + 1)) : (double)((s >> 33) % 8);
+        }
+}
+
+/* lh_delaunay and lh_convex_hull of x scaled by 2^e (exact: integer inputs) must give
+ * the same arrays as the unscaled x, and pass the exact check. */
+static void expect_scale_invariant(lh_test_state *lh_t_, int d, size_t n, const double *x, int e)
+{
+    double *y = malloc(n * (size_t)d * sizeof *y);
+    LH_ASSERT_TRUE(y != NULL);
+    for (size_t i = 0; i < n * (size_t)d; i++) {
+        y[i] = ldexp(x[i], e);
+        LH_ASSERT_TRUE(ldexp(y[i], -e) == x[i]); /* the scaling is exact */
+    }
+    lh_tri *a = NULL, *b = NULL;
+    lh_hull *ha = NULL, *hb = NULL;
+    LH_EXPECT_EQ_INT(lh_delaunay(d, n, x, NULL, &a), LH_OK);
+    LH_EXPECT_EQ_INT(lh_delaunay(d, n, y, NULL, &b), LH_OK);
+    LH_EXPECT_EQ_INT(lh_convex_hull(d, n, x, NULL, &ha), LH_OK);
+    LH_EXPECT_EQ_INT(lh_convex_hull(d, n, y, NULL, &hb), LH_OK);
+    if (a && b && ha && hb) {
+        char msg[256] = "";
+        LH_EXPECT_EQ_INT(lh_tri_check(b, msg, sizeof msg), LH_OK);
+        if (LH_FAILED()) LH_NOTE("%s", msg);
+        LH_EXPECT_EQ_U64(lh_tri_count(b), lh_tri_count(a));
+        LH_EXPECT_EQ_U64(lh_tri_duplicate_count(b), lh_tri_duplicate_count(a));
+        if (lh_tri_count(a) == lh_tri_count(b))
+            LH_EXPECT_TRUE(!memcmp(lh_tri_simplices(a), lh_tri_simplices(b),
+                                   lh_tri_count(a) * (size_t)(d + 1) * sizeof(int32_t)));
+        /* The hull: exactly convex at the new scale (no site strictly outside a facet).
+         * Which boundary sites are vertices may differ from the unit scale (it does at
+         * 2^-1050 and below in 2D): lh_convex_hull leaves that open. */
+        lh_pred *pred;
+        LH_ASSERT_EQ_INT(lh_pred_create(NULL, &pred), LH_OK);
+        for (size_t f = 0; f < lh_hull_facet_count(hb); f++)
+            for (size_t i = 0; i < n; i++) {
+                const double *p[9];
+                for (int j = 0; j < d; j++) p[j] = y + (size_t)lh_hull_facets(hb)[f * (size_t)d + j] * (size_t)d;
+                p[d] = y + i * (size_t)d;
+                LH_EXPECT_LE_INT(lh_orient(pred, d, p), 0);
+            }
+        lh_pred_free(pred);
+        /* point location decides inside/outside and the simplex exactly, at any scale */
+        double q[8], qy[8];
+        for (int k = 0; k < 20; k++) {
+            for (int j = 0; j < d; j++) {
+                q[j] = (double)((k * 7 + j * 3) % 11 - 1); /* on sites, edges; outside */
+                qy[j] = ldexp(q[j], e);
+            }
+            lh_location la, lb;
+            LH_EXPECT_EQ_INT(lh_tri_locate(a, q, -1, &la), LH_OK);
+            LH_EXPECT_EQ_INT(lh_tri_locate(b, qy, -1, &lb), LH_OK);
+            LH_EXPECT_EQ_INT(lb.simplex, la.simplex);
+            int32_t na = -1, nb = -1;
+            if (la.simplex >= 0) { /* outside at 2^1000: lh_tri_nearest is defect 1 */
+                LH_EXPECT_EQ_INT(lh_tri_nearest(a, q, -1, &na), LH_OK);
+                LH_EXPECT_EQ_INT(lh_tri_nearest(b, qy, -1, &nb), LH_OK);
+                LH_EXPECT_EQ_INT(nb, na);
+            }
+        }
+    }
+    if (LH_FAILED()) LH_NOTE("d %d, n %zu, scale 2^%d", d, n, e);
+    lh_tri_free(a);
+    lh_tri_free(b);
+    lh_hull_free(ha);
+    lh_hull_free(hb);
+    free(y);
+}
+
+/* ---- coordinate range ----------------------------------------------------------------- */
+
+/* Rows "1e300 (squares overflow)", "1e-300", "subnormals": integers in [0, 8) scaled to
+ * 2^1016 (|x|^2 far beyond DBL_MAX), 2^-1000 (|x|^2 far below the least subnormal)
+ * and 2^-1074 (every coordinate a subnormal), in 2D to 4D. */
+LH_TEST(extreme_scales_triangulate_as_the_unit_scale)
+{
+    static const int scales[] = {1016, 996, -1000, -1074, -1060};
+    for (int d = 2; d <= 4 && !LH_FAILED(); d++) {
+        size_t n = d == 2 ? 60 : 40;
+        double x[60 * 4];
+        integer_sites(d, n, x);
+        for (size_t s = 0; s < LH_COUNT(scales) && !LH_FAILED(); s++)
+            expect_scale_invariant(lh_t_, d, n, x, scales[s]);
+    }
+}
+
+/* Rows "DBL_MAX" and "mixed 1e300 / 1e-300 / 5e-324": the triangulation is exactly
+ * valid and has 2n - 2 - h triangles (every site a vertex, h of them on the hull). */
+LH_TEST(largest_and_mixed_magnitudes)
+{
+    const double M = DBL_MAX;
+    const double big[] = {-M, -M, M, -M, -M, M, M, M, 0, 0, M / 2, -M / 3, 5e-324, 5e-324};
+    const double mixed[] = {0, 0,        1e300,  0,     0,      1e-300, 1e300, 1e300,
+                            5e-324, 5e-324, -1e-300, 1e300, 1e-300, -1e300, 3e-310, 2e-320,
+                            -1e300, -5e-324, 1, 1};
+    const struct {
+        const double *x;
+        size_t n;
+    } sets[] = {{big, 7}, {mixed, 10}};
+    for (size_t k = 0; k < LH_COUNT(sets); k++) {
+        lh_tri *t;
+        char msg[256] = "";
+        LH_ASSERT_EQ_INT(lh_delaunay(2, sets[k].n, sets[k].x, NULL, &t), LH_OK);
+        LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
+        LH_EXPECT_EQ_U64(lh_tri_count(t), 2 * sets[k].n - 2 - lh_tri_hull_count(t));
+        for (size_t i = 0; i < sets[k].n; i++) LH_EXPECT_TRUE(lh_tri_vertex_simplex(t)[i] >= 0);
+        lh_tri_free(t);
+        lh_hull *h;
+        LH_ASSERT_EQ_INT(lh_convex_hull(2, sets[k].n, sets[k].x, NULL, &h), LH_OK);
+        LH_EXPECT_TRUE(lh_hull_facet_count(h) >= 3);
+        lh_hull_free(h);
+        if (LH_FAILED()) LH_NOTE("set %zu: %s", k, msg);
+    }
+    /* 3D: the corners of the largest cube, its centre and a subnormal site. */
+    double cube[10 * 3];
+    for (int i = 0; i < 8; i++)
+        for (int j = 0; j < 3; j++) cube[i * 3 + j] = (i >> j) & 1 ? M : -M;
+    cube[24] = cube[25] = cube[26] = 0;
+    cube[27] = 5e-324, cube[28] = -5e-324, cube[29] = 1e-310;
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(3, 10, cube, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    lh_tri_free(t);
+}
+
+/* Rows "NaN", "+Inf", "-Inf": every entry point that takes coordinates refuses them;
+ * a failed insertion leaves the triangulation as it was. */
+LH_TEST(nonfinite_coordinates_everywhere)
+{
+    double x[] = {0, 0, 1, 0, 0, 1, 1, 1};
+    const double bad[] = {NAN, INFINITY, -INFINITY};
+    for (size_t b = 0; b < LH_COUNT(bad); b++) {
+        double y[8];
+        memcpy(y, x, sizeof y);
+        y[5] = bad[b];
+        lh_tri *t = (lh_tri *)y;
+        lh_hull *h = (lh_hull *)y;
+        size_t at = 0;
+        int k = 7;
+        LH_EXPECT_EQ_INT(lh_coords_validate(2, 4, y, &at), LH_ERR_NONFINITE);
+        LH_EXPECT_EQ_U64(at, 5);
+        LH_EXPECT_EQ_INT(lh_delaunay(2, 4, y, NULL, &t), LH_ERR_NONFINITE);
+        LH_EXPECT_TRUE(t == NULL);
+        LH_EXPECT_EQ_INT(lh_convex_hull(2, 4, y, NULL, &h), LH_ERR_NONFINITE);
+        LH_EXPECT_TRUE(h == NULL);
+        LH_EXPECT_EQ_INT(lh_affine_dim(2, 4, y, &k), LH_ERR_NONFINITE);
+        LH_ASSERT_EQ_INT(lh_delaunay(2, 4, x, NULL, &t), LH_OK);
+        lh_location loc;
+        int32_t site;
+        LH_EXPECT_EQ_INT(lh_tri_locate(t, y + 4, -1, &loc), LH_ERR_NONFINITE);
+        LH_EXPECT_EQ_INT(lh_tri_nearest(t, y + 4, -1, &site), LH_ERR_NONFINITE);
+        LH_EXPECT_EQ_INT(lh_tri_insert(t, 2, y + 2), LH_ERR_NONFINITE);
+        LH_EXPECT_EQ_U64(lh_tri_site_count(t), 4);
+        LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+        lh_tri_free(t);
+    }
+}
+
+/* ---- duplicates ------------------------------------------------------------------------ */
+
+/* Row "10^6 identical points": LH_ERR_DEGENERATE (affine dimension 0) from lh_delaunay
+ * with and without affine_hull and from lh_convex_hull, in well under a second each,
+ * with at most 8d + 32 bytes per site allocated (measured 8d + 29: a copy of the
+ * coordinates and a few indices). */
+LH_TEST(a_million_identical_sites)
+{
+    const size_t n = 1000000;
+    for (int d = 2; d <= 3; d++) {
+        double *x = malloc(n * (size_t)d * sizeof *x);
+        LH_ASSERT_TRUE(x != NULL);
+        for (size_t i = 0; i < n * (size_t)d; i++) x[i] = i % (size_t)d ? -5e-324 : 1e300;
+        peak p = {0, 0, 0};
+        lh_allocator a = {peak_alloc, peak_free, &p};
+        lh_options opt;
+        lh_options_default(&opt);
+        opt.alloc = &a;
+        clock_t c0 = clock();
+        lh_tri *t = (lh_tri *)x;
+        LH_EXPECT_EQ_INT(lh_delaunay(d, n, x, &opt, &t), LH_ERR_DEGENERATE);
+        LH_EXPECT_TRUE(t == NULL);
+        opt.affine_hull = 1;
+        LH_EXPECT_EQ_INT(lh_delaunay(d, n, x, &opt, &t), LH_ERR_DEGENERATE);
+        opt.affine_hull = 0;
+        lh_hull *h = (lh_hull *)x;
+        LH_EXPECT_EQ_INT(lh_convex_hull(d, n, x, &opt, &h), LH_ERR_DEGENERATE);
+        LH_EXPECT_TRUE(h == NULL);
+        int k = 7;
+        LH_EXPECT_EQ_INT(lh_affine_dim(d, n, x, &k), LH_OK);
+        LH_EXPECT_EQ_INT(k, 0);
+        double secs = (double)(clock() - c0) / CLOCKS_PER_SEC;
+        LH_EXPECT_LE_DBL(secs, 10.0); /* measured 0.5 s (2D), 0.7 s (3D) for the four calls, Release */
+        LH_EXPECT_EQ_U64(p.live, 0);
+        LH_EXPECT_LE_U64(p.peak, n * (size_t)(d * 8 + 32));
+        if (LH_FAILED()) LH_NOTE("d %d: %.2f s, peak %zu bytes, largest block %zu", d, secs, p.peak, p.largest);
+        free(x);
+    }
+}
+
+/* Row "all points duplicates of one": any count, any dimension: dimension 0. */
+LH_TEST(all_duplicates_of_one_site)
+{
+    for (int d = 2; d <= 8; d++) {
+        double x[5 * 8];
+        for (int i = 0; i < 5 * d; i++) x[i] = 0.1 * (i % d);
+        lh_tri *t;
+        lh_options opt;
+        lh_options_default(&opt);
+        opt.affine_hull = 1;
+        int k = 7;
+        LH_EXPECT_EQ_INT(lh_delaunay(d, 5, x, &opt, &t), LH_ERR_DEGENERATE);
+        LH_EXPECT_EQ_INT(lh_affine_dim(d, 5, x, &k), LH_OK);
+        LH_EXPECT_EQ_INT(k, 0);
+    }
+}
+
+/* ---- lower-dimensional input -------------------------------------------------------------- */
+
+/* Rows "collinear 2D/3D", "coplanar 3D": LH_ERR_DEGENERATE with the affine dimension;
+ * with affine_hull the chain of n-1 segments, or the triangles within the plane;
+ * lh_convex_hull always LH_ERR_DEGENERATE. */
+LH_TEST(collinear_and_coplanar_sites)
+{
+    const double line2[] = {0, 0, 3, 3, 1, 1, 2, 2, 1e300, 1e300};
+    const double line3[] = {0, 0, 0, 3, 3, 3, 1, 1, 1, 2, 2, 2};
+    const double plane[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0.5, 0.5, 0};
+    const struct {
+        int d;
+        size_t n;
+        const double *x;
+        int k;
+        size_t count;
+    } cases[] = {{2, 5, line2, 1, 4}, {3, 4, line3, 1, 3}, {3, 5, plane, 2, 4}};
+    for (size_t c = 0; c < LH_COUNT(cases); c++) {
+        lh_tri *t;
+        lh_hull *h;
+        int k = 7;
+        LH_EXPECT_EQ_INT(lh_delaunay(cases[c].d, cases[c].n, cases[c].x, NULL, &t), LH_ERR_DEGENERATE);
+        LH_EXPECT_EQ_INT(lh_convex_hull(cases[c].d, cases[c].n, cases[c].x, NULL, &h), LH_ERR_DEGENERATE);
+        LH_EXPECT_EQ_INT(lh_affine_dim(cases[c].d, cases[c].n, cases[c].x, &k), LH_OK);
+        LH_EXPECT_EQ_INT(k, cases[c].k);
+        lh_options opt;
+        lh_options_default(&opt);
+        opt.affine_hull = 1;
+        LH_ASSERT_EQ_INT(lh_delaunay(cases[c].d, cases[c].n, cases[c].x, &opt, &t), LH_OK);
+        LH_EXPECT_EQ_INT(lh_tri_simplex_dim(t), cases[c].k);
+        LH_EXPECT_EQ_U64(lh_tri_count(t), cases[c].count);
+        LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+        lh_tri_free(t);
+        if (LH_FAILED()) LH_NOTE("case %zu", c);
+    }
+}
+
+/* ---- exact degeneracies: cocircular sites, sites on facets ------------------------------- */
+
+static void expect_count(lh_test_state *lh_t_, int d, size_t n, const double *x, size_t count,
+                         size_t complex_cells)
+{
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_U64(lh_tri_count(t), count);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    size_t cells = 0;
+    const int32_t *off, *v;
+    LH_EXPECT_EQ_INT(lh_tri_complex(t, &cells, &off, &v), LH_OK);
+    LH_EXPECT_EQ_U64(cells, complex_cells);
+    lh_tri_free(t);
+}
+
+/* Rows "cocircular square + centre", "12 sites on one circle", "grids": the
+ * perturbation picks one triangulation; the Delaunay complex merges the cospherical
+ * cells back. */
+LH_TEST(sites_on_a_common_circumsphere)
+{
+    const double sqc[] = {0, 0, 1, 0, 0, 1, 1, 1, 0.5, 0.5};
+    expect_count(lh_t_, 2, 4, sqc, 2, 1);
+    expect_count(lh_t_, 2, 5, sqc, 4, 4);
+    /* x^2 + y^2 = 25 at 12 integer points: one cell of 12 sites, 10 triangles. */
+    const double circle[] = {5, 0, 4, 3, 3, 4, 0, 5, -3, 4, -4, 3, -5, 0, -4, -3, -3, -4, 0, -5, 3, -4, 4, -3};
+    expect_count(lh_t_, 2, 12, circle, 10, 1);
+    double grid2[100 * 2], grid3[125 * 3];
+    for (int i = 0; i < 100; i++) grid2[2 * i] = i / 10, grid2[2 * i + 1] = i % 10;
+    for (int i = 0; i < 125; i++)
+        for (int j = 0; j < 3; j++) grid3[3 * i + j] = (i / (j == 0 ? 1 : j == 1 ? 5 : 25)) % 5;
+    expect_count(lh_t_, 2, 100, grid2, 162, 81);
+    expect_count(lh_t_, 3, 125, grid3, 384, 64);
+    /* the same grid far out of the filter's band: the same answer */
+    for (int i = 0; i < 125 * 3; i++) grid3[i] = ldexp(grid3[i], -1070);
+    expect_count(lh_t_, 3, 125, grid3, 384, 64);
+}
+
+/* Rows "site exactly on a hull facet": Delaunay makes it a vertex (every site is one);
+ * the convex hull may (coplanar facets, never flat ones). A query exactly on the
+ * hull's boundary is inside (distance 0), in the smallest simplex holding it. */
+LH_TEST(sites_and_queries_on_hull_facets)
+{
+    const double edge[] = {0, 0, 2, 0, 0, 2, 1, 0};
+    const double face[] = {0, 0, 0, 3, 0, 0, 0, 3, 0, 0, 0, 3, 1, 1, 0};
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(2, 4, edge, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_U64(lh_tri_count(t), 2);
+    LH_EXPECT_EQ_U64(lh_tri_hull_count(t), 4);
+    LH_EXPECT_TRUE(lh_tri_vertex_simplex(t)[3] >= 0);
+    const double on_hull[2] = {0.5, 0}, at_site[2] = {1, 0};
+    lh_location loc;
+    LH_EXPECT_EQ_INT(lh_tri_locate(t, on_hull, -1, &loc), LH_OK);
+    LH_EXPECT_TRUE(loc.simplex >= 0 && loc.hull_facet == -1 && loc.distance == 0);
+    LH_EXPECT_EQ_INT(lh_tri_locate(t, at_site, 1, &loc), LH_OK);
+    LH_EXPECT_EQ_INT(loc.simplex, 0); /* site 3 is in both triangles: the smaller */
+    lh_tri_free(t);
+    LH_ASSERT_EQ_INT(lh_delaunay(3, 5, face, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_U64(lh_tri_count(t), 3);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    lh_tri_free(t);
+    lh_hull *h;
+    LH_ASSERT_EQ_INT(lh_convex_hull(3, 5, face, NULL, &h), LH_OK);
+    size_t nv = lh_hull_vertex_count(h);
+    LH_EXPECT_TRUE(nv == 4 || nv == 5);
+    LH_EXPECT_EQ_U64(lh_hull_facet_count(h), nv == 4 ? 4 : 6);
+    lh_hull_free(h);
+}
+
+/* ---- the reader at the extremes ------------------------------------------------------------ */
+
+/* Rows "subnormal 5e-324", "1e-999 underflows", "-0", "hex floats": strtod's correctly
+ * rounded value is kept (an underflow to 0 or to a subnormal is not an error; an
+ * overflow is, see test_io_read). */
+LH_TEST(reader_keeps_extreme_doubles)
+{
+    lh_points p;
+    char msg[256];
+    LH_ASSERT_EQ_INT(read_text(TEXT("2 4\n5e-324 -1e-999\n1.7976931348623157e308 0x1p-1074\n"
+                                    "-0 2.4703282292062328e-324\n1e300 1e-300\n"),
+                               &p, msg, sizeof msg),
+                     LH_OK);
+    LH_ASSERT_EQ_U64(p.n, 4);
+    const double want[] = {4.9406564584124654e-324, -0.0, DBL_MAX, 4.9406564584124654e-324, -0.0,
+                           4.9406564584124654e-324, 1e300, 1e-300};
+    for (int i = 0; i < 8; i++) LH_EXPECT_EQ_DBL(p.xyz[i], want[i]);
+    LH_EXPECT_TRUE(signbit(p.xyz[1]) && signbit(p.xyz[4]));
+    lh_points_free(&p);
+}
+
+/* Rows "a 1 MB line of numbers", "a 1 MB comment", "1 MB of blanks": lines have no
+ * length limit, only tokens (LH_READ_MAX_TOKEN). */
+LH_TEST(reader_takes_megabyte_lines)
+{
+    const size_t n = 100000; /* 2n numbers on one line: ~1.2 MB */
+    size_t cap = 64 + n * 16 + (1u << 20) * 2;
+    char *s = malloc(cap), *w = s;
+    LH_ASSERT_TRUE(s != NULL);
+    w += sprintf(w, "#");
+    memset(w, 'x', 1u << 20), w += 1u << 20;
+    w += sprintf(w, "\n2 %zu\n", n);
+    memset(w, ' ', 1u << 20), w += 1u << 20;
+    for (size_t i = 0; i < n; i++) w += sprintf(w, "%zu %zu ", i % 1000, i / 1000);
+    w += sprintf(w, "\r\n");
+    lh_points p;
+    char msg[256];
+    lh_status st = read_text(s, (size_t)(w - s), &p, msg, sizeof msg);
+    free(s);
+    LH_ASSERT_EQ_INT(st, LH_OK);
+    LH_EXPECT_EQ_INT(p.format, LH_FORMAT_QHULL);
+    LH_EXPECT_EQ_U64(p.n, n);
+    LH_EXPECT_EQ_DBL(p.xyz[2 * n - 2], 999);
+    LH_EXPECT_EQ_DBL(p.xyz[2 * n - 1], 99);
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(2, p.n, p.xyz, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_U64(lh_tri_count(t), 2 * 999 * 99); /* a 1000 x 100 grid */
+    lh_tri_free(t);
+    lh_points_free(&p);
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(extreme_scales_triangulate_as_the_unit_scale),
+        LH_CASE(largest_and_mixed_magnitudes),
+        LH_CASE(nonfinite_coordinates_everywhere),
+        LH_CASE(a_million_identical_sites),
+        LH_CASE(all_duplicates_of_one_site),
+        LH_CASE(collinear_and_coplanar_sites),
+        LH_CASE(sites_on_a_common_circumsphere),
+        LH_CASE(sites_and_queries_on_hull_facets),
+        LH_CASE(reader_keeps_extreme_doubles),
+        LH_CASE(reader_takes_megabyte_lines),
+    };
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
