@@ -17,6 +17,7 @@ static char letter(const char *s)
     if (!strcmp(s, "--circles")) return 'c';
     if (!strcmp(s, "--values")) return 'v';
     if (!strcmp(s, "--threads")) return 't';
+    if (!strcmp(s, "--format")) return 'F';
     if (s[0] == '-' && s[1] && !s[2] && strchr("suaqfom", s[1])) return s[1];
     return 0;
 }
@@ -32,14 +33,14 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
             return 1;
         }
         char c = letter(s);
-        if (s[0] == '-' && s[1] && (!c || (c != 't' && !strchr(accepted, c))))
+        if (s[0] == '-' && s[1] && (!c || (c != 't' && c != 'F' && !strchr(accepted, c))))
             return usage_error(cmd, "unknown option", s);
         if (!c) {
             if (a->nfile == max_files) return usage_error(cmd, "one operand too many:", s);
             a->file[a->nfile++] = s;
             continue;
         }
-        if (strchr("omvt", c) && i + 1 == argc) return usage_error(cmd, "a value is needed after", s);
+        if (strchr("omvtF", c) && i + 1 == argc) return usage_error(cmd, "a value is needed after", s);
         switch (c) {
         case 's': a->summary = 1; break;
         case 'u': a->furthest = 1; break;
@@ -49,6 +50,13 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
         case 'c': a->circles = 1; break;
         case 'o': a->output = argv[++i]; break;
         case 'm': a->method = argv[++i]; break;
+        case 'F': {
+            const char *f = argv[++i];
+            a->format = !strcmp(f, "qhull") ? LH_FORMAT_QHULL : !strcmp(f, "node") ? LH_FORMAT_NODE
+                      : !strcmp(f, "columns") ? LH_FORMAT_COLUMNS : (lh_format)-1;
+            if (a->format == (lh_format)-1) return usage_error(cmd, "--format takes qhull, node or columns, not", f);
+            break;
+        }
         case 't': { /* reserved: every command accepts it; one thread for now */
             char *end;
             long k = strtol(argv[++i], &end, 10);

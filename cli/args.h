@@ -2,6 +2,8 @@
 #ifndef LH_CLI_ARGS_H
 #define LH_CLI_ARGS_H
 
+#include "lifthull.h"
+
 #include <stddef.h>
 
 typedef struct lh_cli_args {
@@ -14,13 +16,15 @@ typedef struct lh_cli_args {
     const char *output; /* -o FILE                              */
     const char *method; /* -m NAME                              */
     int values;         /* --values K                           */
+    lh_format format;   /* --format qhull|node|columns (auto)   */
     const char *file[3];
     int nfile;
 } lh_cli_args;
 
 /* Parses argv for command `cmd` accepting the options named in `accepted` (letters
  * s u a q f o m, and 'c' for --circles, 'v' for --values; every command takes
- * --threads N, reserved for the parallel engine: one thread for now) and up to max_files
+ * --threads N, reserved for the parallel engine: one thread for now, and --format
+ * F to read the input files as Qhull points, .node or columns) and up to max_files
  * operands (at least min_files). `help` is printed on --help or -h. Returns 0; 1 after
  * --help; -1 after printing a usage error. */
 int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int min_files,

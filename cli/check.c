@@ -49,7 +49,7 @@ int lh_cli_check(int argc, char **argv)
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     lh_points p;
     const char *name;
-    if (!lh_cli_load(a.file[0], &p, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load(a.file[0], a.format, &p, &name)) return LH_EXIT_INPUT;
     lh_cells c;
     if (!read_cells(a.file[1], p.n, &c)) {
         lh_points_free(&p);
@@ -63,7 +63,8 @@ int lh_cli_check(int argc, char **argv)
         char msg[256];
         lh_status st = lh_check_delaunay(p.d, p.n, p.xyz, c.count, c.v, msg, sizeof msg);
         if (st == LH_OK)
-            printf("ok: %zu simplices, the Delaunay triangulation of the %zu points (exact check)\n", c.count, p.n);
+            printf("ok: %zu %s, the Delaunay triangulation of the %zu point%s (exact check)\n", c.count,
+                   c.count == 1 ? "simplex" : "simplices", p.n, p.n == 1 ? "" : "s");
         else
             printf("not Delaunay: %s\n", st == LH_ERR_INTERNAL ? msg : lh_status_message(st));
         status = st == LH_OK ? lh_cli_finish_output("check") : LH_EXIT_FAIL;

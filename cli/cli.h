@@ -20,10 +20,12 @@ int lh_cli_qconvex(int argc, char **argv);
 /* Shared by the commands that read points (common.c). */
 #include "lifthull.h"
 double lh_cli_seconds(void);
-/* Reads FILE (or standard input for NULL or "-"); 0 after printing the error. */
-int lh_cli_load(const char *file, lh_points *pts, const char **name);
+/* Reads FILE (or standard input for NULL or "-") in format fmt (LH_FORMAT_AUTO: by
+ * name and content); 0 after printing the error. */
+int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **name);
 /* Both files (sites, then queries); 0 after printing the problem. */
-int lh_cli_load_pair(const char *f1, const char *f2, lh_points *a, lh_points *b, const char **names);
+int lh_cli_load_pair(const char *f1, const char *f2, lh_format fmt, lh_points *a, lh_points *b,
+                     const char **names);
 void lh_cli_report_failure(const char *name, int d, size_t n, const double *xyz, lh_status st);
 /* Flushes standard output: LH_EXIT_OK, or LH_EXIT_FAIL with a message. */
 int lh_cli_finish_output(const char *cmd);

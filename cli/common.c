@@ -14,7 +14,7 @@ double lh_cli_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-int lh_cli_load(const char *file, lh_points *pts, const char **name)
+int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **name)
 {
     FILE *f = stdin;
     *name = "<stdin>";
@@ -27,16 +27,17 @@ int lh_cli_load(const char *file, lh_points *pts, const char **name)
         }
     }
     char msg[512];
-    lh_status st = lh_points_read(f, *name, LH_FORMAT_AUTO, NULL, pts, msg, sizeof msg);
+    lh_status st = lh_points_read(f, *name, fmt, NULL, pts, msg, sizeof msg);
     if (f != stdin) fclose(f);
     if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
     return st == LH_OK;
 }
 
-int lh_cli_load_pair(const char *f1, const char *f2, lh_points *a, lh_points *b, const char **names)
+int lh_cli_load_pair(const char *f1, const char *f2, lh_format fmt, lh_points *a, lh_points *b,
+                     const char **names)
 {
-    if (!lh_cli_load(f1, a, &names[0])) return 0;
-    if (!lh_cli_load(f2, b, &names[1])) {
+    if (!lh_cli_load(f1, fmt, a, &names[0])) return 0;
+    if (!lh_cli_load(f2, fmt, b, &names[1])) {
         lh_points_free(a);
         return 0;
     }
@@ -48,8 +49,8 @@ void lh_cli_report_failure(const char *name, int d, size_t n, const double *xyz,
     if (st == LH_ERR_DEGENERATE) {
         int k = -1;
         lh_affine_dim(d, n, xyz, &k);
-        fprintf(stderr, "%s: the %zu sites span an affine subspace of dimension %d, not %d: "
-                "nothing %d-dimensional to compute%s\n", name, n, k, d, d,
+        fprintf(stderr, "%s: the %zu site%s span%s an affine subspace of dimension %d, not %d: "
+                "nothing %d-dimensional to compute%s\n", name, n, n == 1 ? "" : "s", n == 1 ? "s" : "", k, d, d,
                 k >= 1 ? " (lifthull delaunay -a triangulates within that subspace)" : "");
     } else {
         fprintf(stderr, "%s: %s\n", name, lh_status_message(st));

@@ -67,7 +67,7 @@ int lh_cli_delaunay(int argc, char **argv)
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     lh_points pts;
     const char *name;
-    if (!lh_cli_load(a.file[0], &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load(a.file[0], a.format, &pts, &name)) return LH_EXIT_INPUT;
     lh_options opt;
     lh_options_default(&opt);
     opt.furthest_site = a.furthest;

@@ -50,7 +50,7 @@ int lh_cli_hull(int argc, char **argv)
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     lh_points pts;
     const char *name;
-    if (!lh_cli_load(a.file[0], &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load(a.file[0], a.format, &pts, &name)) return LH_EXIT_INPUT;
     double t0 = lh_cli_seconds();
     lh_hull *h;
     lh_status st = lh_convex_hull(pts.d, pts.n, pts.xyz, NULL, &h);

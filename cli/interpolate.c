@@ -117,7 +117,7 @@ int lh_cli_interpolate(int argc, char **argv)
     }
     lh_points s, q;
     const char *names[2];
-    if (!lh_cli_load_pair(a.file[0], a.file[1], &s, &q, names)) return LH_EXIT_INPUT;
+    if (!lh_cli_load_pair(a.file[0], a.file[1], a.format, &s, &q, names)) return LH_EXIT_INPUT;
     int k = 0, status = LH_EXIT_INPUT;
     double *v = values_of(&a, &s, names[0], &k);
     if (v && q.d != s.d)

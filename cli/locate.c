@@ -66,7 +66,7 @@ int lh_cli_locate(int argc, char **argv)
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     lh_points s, q;
     const char *names[2];
-    if (!lh_cli_load_pair(a.file[0], a.file[1], &s, &q, names)) return LH_EXIT_INPUT;
+    if (!lh_cli_load_pair(a.file[0], a.file[1], a.format, &s, &q, names)) return LH_EXIT_INPUT;
     int status = LH_EXIT_FAIL;
     lh_tri *t = NULL;
     lh_status st = LH_OK;

@@ -13,7 +13,7 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
     if (r != 0) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     lh_points pts;
     const char *name;
-    if (!lh_cli_load(o.input, &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load(o.input, LH_FORMAT_AUTO, &pts, &name)) return LH_EXIT_INPUT;
     lh_cli_qmodel mo;
     if (!lh_cli_qmodel_build(&mo, &o, pts.d, pts.n, pts.xyz, name)) {
         lh_points_free(&pts);

@@ -73,7 +73,7 @@ int lh_cli_voronoi(int argc, char **argv)
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     lh_points pts;
     const char *name;
-    if (!lh_cli_load(a.file[0], &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load(a.file[0], a.format, &pts, &name)) return LH_EXIT_INPUT;
     const char *dot = a.output ? strrchr(a.output, '.') : NULL;
     int status = dot && !strcmp(dot, ".svg") ? svg(&a, &pts, name) : text(&a, &pts, name);
     lh_points_free(&pts);

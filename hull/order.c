@@ -8,6 +8,7 @@
 #include "engine.h"
 #include "lh_sort.h"
 
+#include <math.h>
 #include <string.h>
 
 int lh__lex_cmp(const void *vctx, int32_t a, int32_t b)
@@ -34,11 +35,14 @@ static int morton_bits(int d) { return 63 / d < 16 ? 63 / d : 16; }
 /* Morton (Z-order) key of every site: each coordinate quantised to morton_bits(d)
  * bits over the bounding box, bits interleaved from the most significant down. A
  * span too wide for doubles quantises to 0 (keys tie; correctness does not depend
- * on them). */
+ * on them); a span so small that its reciprocal overflows is scaled by a power of
+ * two first (exact). */
 static void morton_keys(const lh__eng *t, uint64_t *key)
 {
     int d = t->d, bits = morton_bits(d);
     double lo[LH__ENGINE_MAX_DIM], scale[LH__ENGINE_MAX_DIM];
+    int shift[LH__ENGINE_MAX_DIM]; /* a tiny span is first scaled up by 2^-shift */
+    const double cells = (double)((UINT64_C(1) << bits) - 1);
     for (int j = 0; j < d; j++) {
         double mn = t->xyz[j], mx = mn;
         for (size_t i = 1; i < t->n; i++) {
@@ -48,14 +52,16 @@ static void morton_keys(const lh__eng *t, uint64_t *key)
         }
         lo[j] = mn;
         double span = mx - mn;
-        scale[j] = span > 0 && span < 1e308 ? ((double)((UINT64_C(1) << bits) - 1)) / span : 0;
+        shift[j] = 0;
+        if (span > 0 && span < 0x1p-900) frexp(span, &shift[j]); /* 1/span would overflow */
+        scale[j] = span > 0 && span < 1e308 ? cells / ldexp(span, -shift[j]) : 0;
     }
     for (size_t i = 0; i < t->n; i++) {
         const double *p = t->xyz + i * d;
         uint64_t cell[LH__ENGINE_MAX_DIM], k = 0;
         for (int j = 0; j < d; j++) {
-            double x = (p[j] - lo[j]) * scale[j];
-            cell[j] = x > 0 ? (uint64_t)x : 0;
+            double x = (shift[j] ? ldexp(p[j] - lo[j], -shift[j]) : p[j] - lo[j]) * scale[j];
+            cell[j] = x > 0 ? (x < cells ? (uint64_t)x : (uint64_t)cells) : 0;
         }
         for (int bit = bits - 1; bit >= 0; bit--)
             for (int j = 0; j < d; j++) k = (k << 1) | ((cell[j] >> bit) & 1);

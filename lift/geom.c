@@ -2,6 +2,7 @@
 #include "geom.h"
 
 #include <math.h>
+#include <stddef.h>
 
 enum { MAXD = 8 };
 
@@ -35,13 +36,27 @@ int lh__solve(double *a, double *b, int m)
     return 1;
 }
 
+int lh__scale_exp(const double *const *p, int m, int d, const double *q)
+{
+    double big = 0;
+    for (int i = 0; i < m; i++)
+        for (int j = 0; j < d; j++) big = fmax(big, fabs(p[i][j]));
+    for (int j = 0; q && j < d; j++) big = fmax(big, fabs(q[j]));
+    int e = 0;
+    if (big > 0) frexp(big, &e);
+    return e;
+}
+
+/* Computed on the points scaled by 2^-s (lh__scale_exp), relative to p0. */
 int lh__circumcenter(int d, int k, const double *const *p, double *c)
 {
-    double a[MAXD * MAXD], b[MAXD], e[MAXD][MAXD];
+    double a[MAXD * MAXD], b[MAXD], e[MAXD][MAXD], p0[MAXD];
+    const int sc = lh__scale_exp(p, k + 1, d, NULL);
+    for (int j = 0; j < d; j++) p0[j] = ldexp(p[0][j], -sc);
     for (int i = 0; i < k; i++) {
         b[i] = 0;
         for (int j = 0; j < d; j++) {
-            e[i][j] = p[i + 1][j] - p[0][j];
+            e[i][j] = ldexp(p[i + 1][j], -sc) - p0[j];
             b[i] += e[i][j] * e[i][j];
         }
     }
@@ -58,13 +73,13 @@ int lh__circumcenter(int d, int k, const double *const *p, double *c)
         }
     int ok = lh__solve(a, b, k);
     for (int j = 0; j < d; j++) {
-        double x = p[0][j];
+        double x = p0[j];
         if (k == d) {
             x += b[j];
         } else {
             for (int i = 0; i < k; i++) x += b[i] * e[i][j];
         }
-        c[j] = ok ? x : NAN;
+        c[j] = ok ? ldexp(x, sc) : NAN;
     }
     return ok;
 }

@@ -18,4 +18,10 @@ int lh__solve(double *a, double *b, int m);
  * affinely dependent points (c is then filled with NaN). */
 int lh__circumcenter(int d, int k, const double *const *p, double *c);
 
+/* The exponent e with every |p[i][j]| < 2^e (frexp of the largest; 0 when all are
+ * 0): the points scaled by 2^-e (ldexp, exact but for underflow far below the
+ * largest) have magnitudes below 1, so constructions neither overflow nor lose
+ * subnormal digits; results scale back by 2^e. */
+int lh__scale_exp(const double *const *p, int m, int d, const double *q);
+
 #endif

@@ -138,11 +138,36 @@ done:
     return best;
 }
 
-static void locate_outside(lh_tri *t, const double *q, lh_location *out)
+/* Copies of the m points v (and q) scaled by 2^-s into buf, vs, qs. */
+static void scale_copy(const double *const *v, int m, int d, const double *q, int s, double *buf,
+                       const double **vs, double *qs)
+{
+    for (int i = 0; i < m; i++) {
+        for (int j = 0; j < d; j++) buf[i * d + j] = ldexp(v[i][j], -s);
+        vs[i] = buf + i * d;
+    }
+    for (int j = 0; j < d; j++) qs[j] = ldexp(q[j], -s);
+}
+
+/* One scale for q and every hull site (lh__scale_exp), so that the facets'
+ * distances compare without overflow or underflow. */
+static int hull_scale(const lh_tri *t, const double *q)
 {
     const int d = t->d, k = t->frame.k;
-    const double *p[MAXV];
-    double best = INFINITY;
+    double big = 0;
+    for (size_t i = 0; i < t->hull_count * (size_t)k; i++)
+        for (int j = 0; j < d; j++) big = fmax(big, fabs(t->xyz[(size_t)t->hull[i] * d + j]));
+    const double *p[1] = {q};
+    int e = lh__scale_exp(p, 1, d, NULL), f = 0;
+    if (big > 0) frexp(big, &f);
+    return e > f ? e : f;
+}
+
+static void locate_outside(lh_tri *t, const double *q, lh_location *out)
+{
+    const int d = t->d, k = t->frame.k, s = hull_scale(t, q);
+    const double *p[MAXV], *ps[MAXV];
+    double buf[MAXV * LH_DELAUNAY_MAX_DIM], qs[LH_DELAUNAY_MAX_DIM], best = INFINITY;
     for (size_t f = 0; f < t->hull_count; f++) {
         const int32_t *v = t->hull + f * k;
         for (int j = 0; j < k; j++) p[j] = t->xyz + (size_t)v[j] * d;
@@ -150,14 +175,15 @@ static void locate_outside(lh_tri *t, const double *q, lh_location *out)
         /* not strictly visible (k = 1: the two end sites, which have no orientation) */
         if (k > 1 && lh__frame_orient(t->pred, &t->frame, p) <= 0) continue;
         double bary[MAXV];
-        double dist2 = nearest_in_simplex(p, k, q, d, bary);
-        if (dist2 < best) {
+        scale_copy(p, k, d, q, s, buf, ps, qs);
+        double dist2 = nearest_in_simplex(ps, k, qs, d, bary);
+        if (dist2 < best || out->hull_facet < 0) { /* the first visible facet, at least */
             best = dist2;
             out->hull_facet = (int32_t)f;
             memcpy(out->bary, bary, (size_t)k * sizeof *bary);
         }
     }
-    out->distance = sqrt(best);
+    out->distance = ldexp(sqrt(best), s);
 }
 
 lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *out)
@@ -190,9 +216,11 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *o
     }
     if ((s = smallest_holder(t, q, s)) < 0) return LH_ERR_NOMEM;
     out->simplex = s;
-    const double *v[MAXV];
+    const double *v[MAXV], *vs[MAXV];
+    double buf[MAXV * LH_DELAUNAY_MAX_DIM], qs[LH_DELAUNAY_MAX_DIM];
     for (int k = 0; k < nv; k++) v[k] = t->xyz + (size_t)t->simp[(size_t)s * nv + k] * t->d;
+    scale_copy(v, nv, t->d, q, lh__scale_exp(v, nv, t->d, q), buf, vs, qs);
     int ok;
-    project(v, nv, q, t->d, out->bary, &ok);
+    project(vs, nv, qs, t->d, out->bary, &ok);
     return LH_OK;
 }

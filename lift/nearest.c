@@ -149,8 +149,9 @@ lh_status lh_tri_nearest(lh_tri *t, const double *q, int32_t hint, int32_t *site
     lh_status st = lh_tri_locate(t, q, hint, &loc);
     if (st != LH_OK) return st;
     const int nv = t->frame.k + 1;
-    int32_t v = loc.simplex >= 0 ? t->simp[(size_t)loc.simplex * nv]
-                                 : t->hull[(size_t)loc.hull_facet * (nv - 1)];
+    int32_t v = loc.simplex >= 0    ? t->simp[(size_t)loc.simplex * nv]
+                : loc.hull_facet >= 0 ? t->hull[(size_t)loc.hull_facet * (nv - 1)]
+                                      : t->simp[0]; /* any start: the descent finds it */
     walk w = {t, q, {&t->alloc, NULL, 0, 0}, {&t->alloc, NULL, 0, 0}};
     st = descend(&w, v, site);
     lh__free(&t->alloc, w.seen.slot);

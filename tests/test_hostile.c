@@ -443,6 +443,53 @@ LH_TEST(reader_takes_megabyte_lines)
     lh_points_free(&p);
 }
 
+/* Constructions at every scale: the unit square + centre scaled by 2^e for e from
+ * -1070 to +1020 gives the same barycentric coordinates, circumcentres (scaled),
+ * interpolated values, nearest sites and outside distances (scaled) as at e = 0, to
+ * a few units in the last place: computed on coordinates scaled by a power of two. */
+LH_TEST(constructions_at_extreme_scales)
+{
+    static const int exps[] = {-1070, -1060, -1000, -300, 0, 300, 1000, 1020};
+    const double unit[10] = {0, 0, 1, 0, 0, 1, 1, 1, 0.5, 0.5};
+    const double q[2] = {0.25, 0.5}, out_q[2] = {3, 0.5};
+    for (size_t i = 0; i < LH_COUNT(exps); i++) {
+        int e = exps[i];
+        double x[10], v[5], qs[2] = {ldexp(q[0], e), ldexp(q[1], e)}, os[2] = {ldexp(out_q[0], e), ldexp(out_q[1], e)};
+        for (int k = 0; k < 10; k++) x[k] = ldexp(unit[k], e);
+        for (int k = 0; k < 5; k++) v[k] = 1 + unit[2 * k] + 2 * unit[2 * k + 1]; /* 1 + x + 2y, unscaled */
+        lh_tri *t;
+        LH_ASSERT_EQ_INT(lh_delaunay(2, 5, x, NULL, &t), LH_OK);
+        lh_location loc;
+        LH_ASSERT_EQ_INT(lh_tri_locate(t, qs, -1, &loc), LH_OK);
+        LH_ASSERT_TRUE(loc.simplex >= 0);
+        double sum = 0;
+        for (int k = 0; k < 3; k++) sum += loc.bary[k] * unit[2 * lh_tri_simplices(t)[loc.simplex * 3 + k]];
+        LH_EXPECT_LE_DBL(fabs(sum - q[0]), 1e-15);
+        double out[3];
+        for (int m = 0; m < 3; m++) {
+            LH_ASSERT_EQ_INT(lh_tri_interpolate(t, (lh_interp_method)m, 1, qs, 1, v, &out[m]), LH_OK);
+        }
+        LH_EXPECT_LE_DBL(fabs(out[0] - 2.25), 1e-14); /* linear: 1 + 0.25 + 1 */
+        LH_EXPECT_LE_DBL(fabs(out[1] - 2.25), 1e-13); /* natural */
+        LH_EXPECT_EQ_DBL(out[2], v[4]);               /* nearest: the centre */
+        const double *c;
+        LH_ASSERT_EQ_INT(lh_tri_circumcenters(t, &c), LH_OK);
+        for (size_t s = 0; s < lh_tri_count(t) * 2; s++) {
+            double cu = ldexp(c[s], -e); /* each centre of the unit case is 0, 0.5 or 1 */
+            LH_EXPECT_LE_DBL(fabs(cu - round(2 * cu) / 2), 1e-15);
+        }
+        LH_ASSERT_EQ_INT(lh_tri_locate(t, os, -1, &loc), LH_OK);
+        LH_EXPECT_EQ_INT(loc.simplex, -1);
+        LH_EXPECT_TRUE(loc.hull_facet >= 0);
+        LH_EXPECT_LE_DBL(fabs(ldexp(loc.distance, -e) - 2), 1e-15);
+        int32_t near;
+        LH_EXPECT_EQ_INT(lh_tri_nearest(t, os, -1, &near), LH_OK);
+        LH_EXPECT_EQ_INT(near, 1); /* (1,0) and (1,1) tie: the smaller index */
+        if (LH_FAILED()) LH_NOTE("scale 2^%d", e);
+        lh_tri_free(t);
+    }
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
@@ -456,6 +503,7 @@ int main(int argc, char **argv)
         LH_CASE(sites_and_queries_on_hull_facets),
         LH_CASE(reader_keeps_extreme_doubles),
         LH_CASE(reader_takes_megabyte_lines),
+        LH_CASE(constructions_at_extreme_scales),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

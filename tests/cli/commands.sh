@@ -49,6 +49,12 @@ expect "bad method" 2 "unknown method 'cubic'" '' -- "$lh" interpolate -m cubic 
 printf '2 sites, from somewhere (ISC), in Qhull format\n3\n0 0\n1 0\n0 1\n' > commas.txt
 expect "comment with commas" 0 '' '^0 1 2$' -- "$lh" delaunay commas.txt
 
+# --format forces the reader where the content is ambiguous ("2 3" could be a point)
+printf '2 3\n0 0\n1 0\n0 1\n1 1\n' > amb.txt
+expect "ambiguous, auto: columns" 0 '' '^4$' -- "$lh" delaunay amb.txt
+expect "ambiguous, --format qhull" 3 "amb.txt:5:1: expected the end of the input after 3 points of dimension 2, found '1'" '' -- "$lh" delaunay --format qhull amb.txt
+expect "--format checked" 2 "--format takes qhull, node or columns, not 'xml'" '' -- "$lh" hull --format xml amb.txt
+
 # delaunay -o: each format read back
 expect "delaunay -o vtu" 0 '' '' -- "$lh" delaunay cloud.txt -o m.vtu
 "$py" - <<'PY' && ok || bad "m.vtu: not a VTK file with 400 points and the triangles"

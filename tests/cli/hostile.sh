@@ -74,7 +74,7 @@ expect "dimension 10^20" 3 "^dhuge:1:1: expected the dimension \(an integer from
 file dfrac '2.5\n3\n0 0\n'
 expect "dimension 2.5 (columns)" 3 "^dfrac:1:4: expected coordinate 2 of point 1 \(2 to 8 per line\), found the end of the line$" '' -- "$lh" delaunay dfrac
 file d0n '0 3\n'
-expect "dimension 0 in 'd n' (columns: one site)" 1 "^d0n: the 1 sites span an affine subspace of dimension 0, not 2: nothing 2-dimensional to compute$" '' -- "$lh" delaunay d0n
+expect "dimension 0 in 'd n' (columns: one site)" 1 "^d0n: the 1 site spans an affine subspace of dimension 0, not 2: nothing 2-dimensional to compute$" '' -- "$lh" delaunay d0n
 file d9n '9 1\n1 2 3 4 5 6 7 8 9\n'
 expect "dimension 9 in 'd n' (columns)" 3 "^d9n:2:5: expected the end of the line after 2 coordinates \(as on line 1\), found '3'$" '' -- "$lh" delaunay d9n
 file wide.csv "$(printf '1,%.0s' $(seq 1 50000))1\n"
@@ -92,7 +92,7 @@ expect "CRLF" 0 '' '1\n0 1 2\n' -- "$lh" delaunay crlf
 file crlf.csv 'x,y\r\n0,0\r\n1,0\r\n0,1\r\n'
 expect "CRLF CSV" 0 '' '1\n0 1 2\n' -- "$lh" delaunay crlf.csv
 file cr_only '2\r3\r0 0\r1 0\r0 1\r'
-expect "CR line ends (one line of 8 numbers)" 1 "^cr_only: the 1 sites span an affine subspace of dimension 0, not 8: nothing 8-dimensional to compute$" '' -- "$lh" delaunay cr_only
+expect "CR line ends (one line of 8 numbers)" 1 "^cr_only: the 1 site spans an affine subspace of dimension 0, not 8: nothing 8-dimensional to compute$" '' -- "$lh" delaunay cr_only
 file noeol '2 3\n0 0\n1 0\n0 1'
 expect "no final line end" 0 '' '1\n0 1 2\n' -- "$lh" delaunay noeol
 
