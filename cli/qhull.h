@@ -49,7 +49,8 @@ typedef struct lh_cli_qmodel {
     int32_t *nbr;          /* nv per facet, opposite each vertex             */
     int32_t *own_vert;     /* vert when the model owns it (hull facets)      */
     size_t m_other;        /* the other facets                               */
-    int32_t *other;        /* nv per other facet, in site numbering          */
+    int32_t *other;        /* nv per other facet, in site numbering (-1: the
+                              empty slot of a vertical facet's d vertices)    */
     int32_t *inc_off;      /* n + 1: site i's facets are inc[inc_off[i]..]   */
     int32_t *inc;          /* main facets, then other ones as -(j+1)         */
     const int32_t *dup;    /* the site each one was merged into              */
@@ -57,6 +58,7 @@ typedef struct lh_cli_qmodel {
     double seconds;        /* the computation's time                          */
     lh_tri *tri, *tri_other;
     lh_hull *hull;
+    lh_pred *pred;         /* for the exact hyperplanes of qconvex n, Fi, Fo    */
 } lh_cli_qmodel;
 
 /* Builds the model for the options' program; 0 after printing the problem. */

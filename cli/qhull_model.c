@@ -69,6 +69,32 @@ static lh_status lower_hull(lh_cli_qmodel *mo)
     return LH_OK;
 }
 
+/* Hull sides with no upper facet across: where sites lie on a hull facet without
+ * being extreme, the lifted hull has vertical facets over it, which Qhull counts
+ * among its upper facets. Each such side gets one of its own (its d vertices, the
+ * last slot -1), so every side has a negative id, as in Qhull. */
+static lh_status vertical_facets(lh_cli_qmodel *mo)
+{
+    size_t extra = 0, nv = (size_t)mo->nv;
+    for (size_t i = 0; i < mo->m * nv; i++) extra += mo->nbr[i] == INT32_MIN;
+    if (!extra) return LH_OK;
+    int32_t *other = malloc((mo->m_other + extra) * nv * sizeof *other);
+    if (!other) return LH_ERR_NOMEM;
+    memcpy(other, mo->other, mo->m_other * nv * sizeof *other);
+    free(mo->other);
+    mo->other = other;
+    for (size_t i = 0; i < mo->m * nv; i++) {
+        if (mo->nbr[i] != INT32_MIN) continue;
+        int32_t *g = other + mo->m_other * nv;
+        const int32_t *v = mo->vert + i / nv * nv;
+        for (size_t k = 0, w = 0; k < nv; k++)
+            if (k != i % nv) g[w++] = v[k];
+        g[nv - 1] = -1;
+        mo->nbr[i] = -(int32_t)++mo->m_other;
+    }
+    return LH_OK;
+}
+
 static lh_status delaunay(lh_cli_qmodel *mo, const lh_cli_qopts *o)
 {
     lh_options opt;
@@ -91,7 +117,7 @@ static lh_status delaunay(lh_cli_qmodel *mo, const lh_cli_qopts *o)
     if (!lh_cli_pair_across(mo->nv, mo->m, mo->vert, mo->nbr, mo->m_other, mo->other,
                             lh_tri_neighbors(mo->tri_other)))
         return LH_ERR_NOMEM;
-    return LH_OK;
+    return vertical_facets(mo);
 }
 
 static lh_status convex(lh_cli_qmodel *mo)
@@ -128,14 +154,15 @@ static lh_status incidence(lh_cli_qmodel *mo)
     mo->inc = malloc((total ? total : 1) * sizeof *mo->inc);
     if (!mo->inc_off || !mo->inc) return LH_ERR_NOMEM;
     for (size_t i = 0; i < mo->m * mo->nv; i++) mo->inc_off[mo->vert[i] + 1]++;
-    for (size_t i = 0; i < mo->m_other * mo->nv; i++) mo->inc_off[mo->other[i] + 1]++;
+    for (size_t i = 0; i < mo->m_other * mo->nv; i++)
+        if (mo->other[i] >= 0) mo->inc_off[mo->other[i] + 1]++; /* -1: a vertical facet's slot */
     for (size_t i = 0; i < mo->n; i++) mo->inc_off[i + 1] += mo->inc_off[i];
     int32_t *fill = malloc((mo->n ? mo->n : 1) * sizeof *fill);
     if (!fill) return LH_ERR_NOMEM;
     memcpy(fill, mo->inc_off, mo->n * sizeof *fill);
     for (size_t i = 0; i < mo->m * mo->nv; i++) mo->inc[fill[mo->vert[i]]++] = (int32_t)(i / mo->nv);
     for (size_t i = 0; i < mo->m_other * mo->nv; i++)
-        mo->inc[fill[mo->other[i]]++] = -(int32_t)(i / mo->nv) - 1;
+        if (mo->other[i] >= 0) mo->inc[fill[mo->other[i]]++] = -(int32_t)(i / mo->nv) - 1;
     free(fill);
     return LH_OK;
 }
@@ -147,7 +174,8 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
     mo->d = d;
     mo->n = n;
     mo->xyz = xyz;
-    lh_status st = o->prog == LH_QPROG_CONVEX ? convex(mo) : delaunay(mo, o);
+    lh_status st = lh_pred_create(NULL, &mo->pred);
+    if (st == LH_OK) st = o->prog == LH_QPROG_CONVEX ? convex(mo) : delaunay(mo, o);
     if (st == LH_OK) st = incidence(mo);
     if (st == LH_OK && o->verify) {
         char msg[256];
@@ -173,5 +201,6 @@ void lh_cli_qmodel_free(lh_cli_qmodel *mo)
     lh_tri_free(mo->tri);
     lh_tri_free(mo->tri_other);
     lh_hull_free(mo->hull);
+    lh_pred_free(mo->pred);
     memset(mo, 0, sizeof *mo);
 }

@@ -193,77 +193,26 @@ static void print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
             mo->seconds);
 }
 
-/* The determinant of the m x m matrix a (row-major, destroyed), by elimination with
- * partial pivoting. */
-static double det(double *a, int m)
-{
-    double r = 1;
-    for (int k = 0; k < m; k++) {
-        int p = k;
-        for (int i = k + 1; i < m; i++)
-            if (fabs(a[i * m + k]) > fabs(a[p * m + k])) p = i;
-        if (a[p * m + k] == 0) return 0;
-        if (p != k) {
-            for (int j = 0; j < m; j++) {
-                double x = a[k * m + j];
-                a[k * m + j] = a[p * m + j];
-                a[p * m + j] = x;
-            }
-            r = -r;
-        }
-        r *= a[k * m + k];
-        for (int i = k + 1; i < m; i++) {
-            double g = a[i * m + k] / a[k * m + k];
-            for (int j = k; j < m; j++) a[i * m + j] -= g * a[k * m + j];
-        }
-    }
-    return r;
-}
-
-/* The hyperplane n.x + off = 0 of hull facet t, |n| = 1, n outward: the generalised
- * cross product of the facet's edge vectors (cofactors), turned away from the centroid
- * c of the hull's vertices. Floating point: an output, not a decision. */
-static void facet_plane(const lh_cli_qmodel *mo, size_t t, const double *c, double *n, double *off)
+/* The outward hyperplane n.x + off = 0 of hull facet t, |n| = 1, from the exact
+ * cofactors (lh_hyperplane). The model lists a hull facet with its last two vertices
+ * exchanged (Qhull's parity), so outward is the opposite of that order's orientation. */
+static void facet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off)
 {
     const int d = mo->d;
-    const double *v0 = mo->xyz + (size_t)mo->vert[t * d] * d;
-    double e[LH_DELAUNAY_MAX_DIM][LH_DELAUNAY_MAX_DIM], len = 0;
-    for (int i = 1; i < d; i++)
-        for (int j = 0; j < d; j++) e[i - 1][j] = mo->xyz[(size_t)mo->vert[t * d + i] * d + j] - v0[j];
-    for (int j = 0; j < d; j++) {
-        double m[LH_DELAUNAY_MAX_DIM * LH_DELAUNAY_MAX_DIM];
-        for (int r = 0; r < d - 1; r++)
-            for (int col = 0, cc = 0; col < d; col++)
-                if (col != j) m[r * (d - 1) + cc++] = e[r][col];
-        n[j] = ((j % 2) ? -1 : 1) * det(m, d - 1);
-        len += n[j] * n[j];
-    }
-    len = sqrt(len);
-    double side = 0;
-    for (int j = 0; j < d; j++) side += n[j] * (c[j] - v0[j]);
-    if (side > 0) len = -len;
-    *off = 0;
-    for (int j = 0; j < d; j++) {
-        n[j] /= len;
-        *off -= n[j] * v0[j];
-    }
+    const double *p[LH_DELAUNAY_MAX_DIM];
+    for (int k = 0; k < d; k++) p[k] = mo->xyz + (size_t)mo->vert[t * d + k] * d;
+    lh_hyperplane(mo->pred, d, p, n, off);
+    for (int j = 0; j < d; j++) n[j] = -n[j];
+    *off = -*off;
 }
 
 static void print_planes(FILE *f, const lh_cli_qmodel *mo)
 {
     const int d = mo->d;
-    double c[LH_DELAUNAY_MAX_DIM] = {0};
-    size_t v = 0;
-    for (size_t i = 0; i < mo->n; i++) {
-        if (!is_vertex(mo, i)) continue;
-        for (int j = 0; j < d; j++) c[j] += mo->xyz[i * d + j];
-        v++;
-    }
-    for (int j = 0; j < d; j++) c[j] /= (double)v;
     fprintf(f, "%d\n%zu\n", d + 1, mo->m);
     for (size_t t = 0; t < mo->m; t++) {
         double n[LH_DELAUNAY_MAX_DIM], off;
-        facet_plane(mo, t, c, n, &off);
+        facet_plane(mo, t, n, &off);
         lh_cli_qcoords(f, n, d);
         fprintf(f, "%6.16g \n", off);
     }

@@ -46,17 +46,20 @@ typedef struct ridge_pass {
     size_t count;
 } ridge_pass;
 
+/* A ridge needs d vertices, the one at infinity counted once, to be printed: Qhull
+ * leaves out the unbounded ridges with fewer (qh_eachvoronoi, "count >= hull_dim - 1"). */
 static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, int32_t i, int32_t j, int unbounded)
 {
     if ((rp->which == 'i' && unbounded) || (rp->which == 'o' && !unbounded)) return;
+    const int d = mo->d;
+    int around = 0; /* the simplices around edge ij */
+    for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+        around += mo->inc[k] >= 0 && contains(mo, mo->inc[k], j);
+    if (around + unbounded < d) return;
     rp->count++;
     if (!rp->f) return;
-    const int d = mo->d;
     if (rp->which == 'v') {
-        int c = 0;
-        for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
-            c += mo->inc[k] >= 0 && contains(mo, mo->inc[k], j);
-        fprintf(rp->f, "%d %d %d%s", c + unbounded + 2, (int)i, (int)j, unbounded ? " 0" : "");
+        fprintf(rp->f, "%d %d %d%s", around + unbounded + 2, (int)i, (int)j, unbounded ? " 0" : "");
         for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
             if (mo->inc[k] >= 0 && contains(mo, mo->inc[k], j)) fprintf(rp->f, " %d", (int)mo->inc[k] + 1);
         fputc('\n', rp->f);

@@ -186,9 +186,54 @@ LH_TEST(create_fails_cleanly_at_every_allocation)
     LH_EXPECT_EQ_INT(lh_pred_create(NULL, NULL), LH_ERR_INVALID_ARGUMENT);
 }
 
+/* lh_hyperplane: unit normal, the points on the plane, the orientation of orient_d,
+ * and accuracy on thin simplices where floating-point cofactors fail: points at
+ * 2^-20 from a common line through large offsets. */
+LH_TEST(hyperplanes_through_points)
+{
+    lh_pred *ctx;
+    LH_ASSERT_EQ_INT(lh_pred_create(NULL, &ctx), LH_OK);
+    uint64_t r = 99;
+    for (int d = 2; d <= 8; d++)
+        for (int t = 0; t < 50; t++) {
+            double x[9][8], n[8], off, q[8];
+            const double *p[9];
+            for (int i = 0; i < d; i++) {
+                for (int j = 0; j < d; j++) {
+                    r = r * 6364136223846793005u + 1442695040888963407u;
+                    double u = (double)(r >> 11) * 0x1p-53;
+                    /* t odd: thin, the points within 2^-20 of the line 1e6 * (1, 2, ...) */
+                    x[i][j] = t % 2 ? 1e6 * (j + 1) * (1 + i) + ldexp(u, -20) : u;
+                }
+                p[i] = x[i];
+            }
+            LH_ASSERT_EQ_INT(lh_hyperplane(ctx, d, p, n, &off), 1);
+            double len = 0, scale = 0;
+            for (int j = 0; j < d; j++) len += n[j] * n[j];
+            LH_EXPECT_LE_DBL(fabs(len - 1), 1e-15);
+            for (int i = 0; i < d; i++) {
+                double v = off;
+                for (int j = 0; j < d; j++) {
+                    v += n[j] * x[i][j];
+                    scale += fabs(n[j] * x[i][j]);
+                }
+                LH_EXPECT_LE_DBL(fabs(v), 1e-14 * (scale + fabs(off)));
+            }
+            for (int j = 0; j < d; j++) q[j] = x[0][j] + n[j]; /* one unit along n */
+            p[d] = q;
+            LH_EXPECT_EQ_INT(lh_orient(ctx, d, p), 1);
+        }
+    const double a[2] = {1, 1}, *dup[2] = {a, a};
+    double n[2], off;
+    LH_EXPECT_EQ_INT(lh_hyperplane(ctx, 2, dup, n, &off), 0);
+    LH_EXPECT_EQ_INT(lh_hyperplane(NULL, 2, dup, n, &off), 0);
+    lh_pred_free(ctx);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
+        LH_CASE(hyperplanes_through_points),
         LH_CASE(orient_of_unit_simplex_in_every_dimension),
         LH_CASE(insphere_inside_on_outside_in_every_dimension),
         LH_CASE(counters_record_the_stage_that_answered),

@@ -150,6 +150,13 @@ int lh_orient(lh_pred *ctx, int k, const double *const *pts);       /* -1, 0, +1
 int lh_orient_sos(lh_pred *ctx, int k, const double *const *pts);   /* -1, +1    */
 int lh_insphere(lh_pred *ctx, int d, const double *const *pts);     /* -1, 0, +1 */
 int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts); /* -1, +1    */
+/* The hyperplane through the d points pts of R^d (d = 1..8), oriented as orient_d:
+ * normal (d doubles, unit length) and offset with normal.x + offset > 0 where
+ * orient_d(pts[0..d-1], x) > 0 (up to the rounding of the coefficients). Computed
+ * from the exact cofactors, each rounded once, then normalised: a few ulps however
+ * thin the simplex. Returns 1; 0 for affinely dependent points (normal all 0). */
+int lh_hyperplane(lh_pred *ctx, int d, const double *const *pts, double *normal,
+                  double *offset);
 /* The sign of |q - a| - |q - b| for points q, a, b of R^d (d = 1..8): -1 when a is
  * strictly nearer to q, +1 when b is, 0 when they are exactly as near. Filtered,
  * then exact for every finite double (no perturbation: ties are for the caller). */

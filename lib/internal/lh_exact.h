@@ -10,6 +10,11 @@
 int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
                    const int *rows, const int *cols);
 
+/* The value of such a minor without the lifted column, v * 2^e (*e), from the exact
+ * integer determinant rounded once (relative error below 2^-52); m <= 9. */
+double lh__minor_value(lh_pred *ctx, const double *const *pts, int dim, int m, const int *rows,
+                       const int *cols, int *e);
+
 /* lh_insphere_sos and lh_orient without argument checks, for the engine's inner
  * loops (d within range, ctx and pts valid; counted as public calls). */
 int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts);

@@ -148,3 +148,14 @@ void lh__bn_add(lh__bn *r, const lh__bn *a, const lh__bn *b, int sub)
     }
     trim(r);
 }
+
+double lh__bn_to_double(const lh__bn *a, int *e)
+{
+    *e = 0;
+    if (a->n == 0) return 0;
+    double m = 0;
+    int lo = a->n > 3 ? a->n - 3 : 0;
+    for (int i = a->n - 1; i >= lo; i--) m = m * 4294967296.0 + (double)a->d[i];
+    *e = 32 * lo;
+    return a->neg ? -m : m;
+}

@@ -35,6 +35,9 @@ void lh__bn_mul(lh__bn *r, const lh__bn *a, const lh__bn *b);
 /* r = a + b (sub = 0) or r = a - b (sub = 1). r may alias a (not b) and must hold
  * max(a->n, b->n) + 1 limbs. */
 void lh__bn_add(lh__bn *r, const lh__bn *a, const lh__bn *b, int sub);
+/* a ~= m * 2^e with |m| < 2^96 (from the top three limbs: relative error below
+ * 2^-52); m = 0, e = 0 for zero. */
+double lh__bn_to_double(const lh__bn *a, int *e);
 /* -1, 0 or +1. */
 static inline int lh__bn_sign(const lh__bn *a) { return a->n == 0 ? 0 : a->neg ? -1 : 1; }
 

@@ -35,10 +35,19 @@ static void buf_init(exact_buf *b, uint32_t *arena, int entries)
  * (a homogeneous minor with the column of ones is reduced by one first).
  * Layer s holds, for every s-subset R of rows, det(e[R, 0..s-1]) expanded along
  * its last column: sum over r in R of (-1)^(pos(r)+s-1) e[r][s-1] det(R \ r). */
+static lh__bn det_value(exact_buf *b, const lh__subsets *sub, int m, const lh__bn *e);
+
 static int det_sign(exact_buf *b, const lh__subsets *sub, int m, const lh__bn *e)
 {
     if (m == 0) return 1;
-    if (m == 1) return lh__bn_sign(&e[0]);
+    lh__bn v = det_value(b, sub, m, e);
+    return lh__bn_sign(&v);
+}
+
+/* The determinant of e (m >= 1); its limbs are in the buffer's storage. */
+static lh__bn det_value(exact_buf *b, const lh__subsets *sub, int m, const lh__bn *e)
+{
+    if (m == 1) return e[0];
     int cap = m + 2;
     for (int j = 0; j < m; j++) {
         int most = 0;
@@ -78,7 +87,7 @@ static int det_sign(exact_buf *b, const lh__subsets *sub, int m, const lh__bn *e
         }
         prev = cur;
     }
-    return lh__bn_sign(&prev[slot[(1 << m) - 1]]);
+    return prev[slot[(1 << m) - 1]];
 }
 
 /* Scale for a call: the lowest set bit among the coordinates that enter (all of a
@@ -119,10 +128,12 @@ static void squared_norm(exact_buf *b, lh__bn *out, const double *p, const doubl
     }
 }
 
-int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
-                   const int *rows, const int *cols)
+/* Fills b with the integer matrix of the minor (the rows reduced by the first when
+ * the column of ones is in); returns its size n; *scale is the power of two each
+ * coordinate was divided by. */
+static int fill_minor(lh_pred *ctx, exact_buf *b_, const double *const *pts, int dim, int m,
+                      const int *rows, const int *cols, int *scale_out)
 {
-    if (m == 0) return 1;
     exact_buf b;
     int has_ones = cols[0] == 0, has_lift = cols[m - 1] == dim + 1;
     buf_init(&b, ctx->arena, (m - has_ones) * (m - has_ones));
@@ -150,7 +161,32 @@ int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
             }
         }
     }
+    *b_ = b;
+    *scale_out = scale;
+    return n;
+}
+
+int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
+                   const int *rows, const int *cols)
+{
+    if (m == 0) return 1;
+    exact_buf b;
+    int scale, n = fill_minor(ctx, &b, pts, dim, m, rows, cols, &scale);
     return det_sign(&b, &ctx->sub, n, b.ent);
+}
+
+double lh__minor_value(lh_pred *ctx, const double *const *pts, int dim, int m, const int *rows,
+                       const int *cols, int *e)
+{
+    *e = 0;
+    if (m == 0) return 1;
+    exact_buf b;
+    int scale, n = fill_minor(ctx, &b, pts, dim, m, rows, cols, &scale);
+    if (n == 0) return 1;
+    lh__bn det = det_value(&b, &ctx->sub, n, b.ent);
+    double v = lh__bn_to_double(&det, e);
+    *e += n * scale; /* no lifted column: every entry was divided by 2^scale */
+    return v;
 }
 
 static int full_minor(lh_pred *ctx, const double *const *pts, int dim, int n)

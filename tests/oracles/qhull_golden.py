@@ -62,6 +62,9 @@ EXACT_CHECK = os.path.join(HERE, "exact_check.py")
 
 # Largest point count per dimension (keeps a run of all sets at about a minute on one core).
 CAP = {2: 2000, 3: 1000, 4: 400, 5: 150, 6: 80, 7: 50, 8: 30}
+# LH_TEST_SCALE (the sanitizer run sets 0.2) shrinks the caps, never below 2d + 2 points.
+_SCALE = float(os.environ.get("LH_TEST_SCALE", "1"))
+CAP = {d: max(2 * d + 2, int(c * _SCALE)) for d, c in CAP.items()}
 TIMEOUT = 120
 
 
