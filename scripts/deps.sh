@@ -2,13 +2,14 @@
 # Installs the Debian packages lifthull needs, only those that are missing.
 #   scripts/deps.sh build   compiler and CMake: enough to build and run the tool
 #   scripts/deps.sh test    also the test and benchmark oracles (GMP, CGAL, Eigen,
-#                           Qhull, TetGen), clang and Python for the generated-code check
+#                           Qhull, TetGen), clang and Python for the generated-code check,
+#                           valgrind for the memcheck run
 # Works as root (as in CI) or through sudo; never asks questions (no stdin needed).
 set -euo pipefail
 
 build_pkgs=(gcc make cmake)
 test_pkgs=(g++ clang pkg-config libclang-rt-14-dev python3 libgmp-dev libcgal-dev libeigen3-dev
-           libmpfr-dev qhull-bin libqhull-dev tetgen libtet1.5-dev python3-meshio)
+           libmpfr-dev qhull-bin libqhull-dev tetgen libtet1.5-dev python3-meshio valgrind)
 
 case "${1:-build}" in
   build) want=("${build_pkgs[@]}") ;;

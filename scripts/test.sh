@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # README command 2 (and .ci/run): install the test dependencies, then build and run
-# the whole suite twice:
+# the whole suite twice, fuzz, and run valgrind:
 #   build-asan/  clang, AddressSanitizer + UndefinedBehaviorSanitizer, warnings as
 #                errors; the long oracle tests at LH_TEST_SCALE=0.2
-#   build/       gcc, Release, warnings as errors, benchmarks built and smoke-run
-# The Release run comes last, so the final lines are CTest's own summary.
+#   build-fuzz/  clang, libFuzzer + ASan + UBSan: every fuzz target for 30 s on a copy
+#                of its corpus (scripts/fuzz.sh), two at a time
+#   build/       gcc, Release, warnings as errors, benchmarks built and smoke-run;
+#                first valgrind memcheck on a quick subset of its binaries, then the suite
+# The Release run comes last, so the final lines are CTest's own summary. Any failure
+# in any stage makes the exit status 1.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -20,9 +24,43 @@ cmake --build build-asan -j "$jobs" >/dev/null
 LH_TEST_SCALE=0.2 ASAN_OPTIONS=detect_leaks=1 \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure || status=1
 
+echo "== fuzzing (clang, libFuzzer + ASan + UBSan, 30 s a target) =="
+bash scripts/fuzz.sh 30 || status=1
+
 echo "== release build (gcc) =="
 CC=gcc CXX=g++ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DLH_WERROR=ON \
   -DLH_BUILD_TESTS=ON -DLH_BUILD_BENCH=ON >/dev/null
 cmake --build build -j "$jobs" >/dev/null
+
+# valgrind memcheck on the Release binaries: the quick test cases (each well under a
+# minute under valgrind), the fuzz corpora through the replay drivers, and the CLI end
+# to end on a small input. Only errors are printed; any error or leak fails the stage.
+echo "== valgrind memcheck (quick subset of the release build) =="
+vgdir="$(mktemp -d "${TMPDIR:-/tmp}/lifthull-vg.XXXXXX")"
+t=build/tests lh=build/cli/lifthull
+vg="valgrind -q --error-exitcode=1 --leak-check=full"
+$lh points 200 -d 3 --integer 4 -o "$vgdir/p3.txt" || status=1
+$lh points 200 -d 2 --exact-sphere -o "$vgdir/p2.txt" || status=1
+{
+  echo "$vg $t/test_delaunay smallest_inputs duplicates_are_merged_and_reported bad_input_gets_its_status the_check_rejects_what_is_not_delaunay every_allocation_failure_is_survived"
+  echo "$vg $t/test_voronoi circumcenters_are_empty_sphere_centres compare_distance_is_exact bad_arguments every_allocation_failure_is_survived"
+  echo "$vg $t/test_hull general_position_hull_equals_delaunay_hull unit_cube_and_bad_input"
+  echo "$vg $t/test_locate points_on_shared_faces_get_the_smallest_simplex"
+  for x in test_io_read test_cells test_io_write test_complex; do echo "$vg $t/$x"; done
+  for x in delaunay read hull check cells query; do echo "$vg $t/fuzz_${x}_replay fuzz/corpus/$x/*"; done
+  echo "$vg $lh delaunay $vgdir/p3.txt -o $vgdir/t3.txt"
+  echo "$vg $lh check $vgdir/p3.txt $vgdir/t3.txt"
+  echo "$vg $lh hull $vgdir/p3.txt"
+  echo "$vg $lh voronoi $vgdir/p2.txt"
+  echo "$vg $lh qdelaunay i Qt $vgdir/p2.txt"
+} > "$vgdir/commands"
+# two at a time; each line's output is dropped unless valgrind reports
+if xargs -d '\n' -P "$jobs" -I{} bash -c '{} >/dev/null || { echo "valgrind: FAILED: {}" >&2; exit 1; }' \
+     < "$vgdir/commands"; then
+  echo "valgrind: $(wc -l < "$vgdir/commands") runs clean"
+else
+  status=1
+fi
+rm -rf "$vgdir"
 ctest --test-dir build -j "$jobs" --output-on-failure || status=1
 exit "$status"

@@ -1,0 +1,106 @@
+/*
+ * fuzz_cells.c — libFuzzer target over the cell-list reader lh_cells_read (Qhull's 'i'
+ * and Triangle/TetGen .ele). The first byte picks the number of points the indices
+ * must name (0: unchecked, 1, 3, 4, 10, 100, 1000, INT32_MAX) and the name ("in",
+ * "in.ele", "cells.txt", "x"); the rest is the file. Whatever comes back must keep the
+ * contract of lifthull.h: LH_OK with 1 <= count, 2 <= nv <= 9, first_index 0 or 1, every
+ * index in 0..n_points-1 (or >= 0 when unchecked) and an empty
+ * message, and the cells written back as an 'i' file read back equal; or one of the
+ * documented failures with zeroed cells and ONE printable line "NAME:LINE:COL: ..."
+ * (LINE and COL positive decimal numbers; no raw byte of the input, no line end).
+ * Everything allocated is freed (a counting allocator). Anything else aborts. Build as
+ * fuzz_delaunay.c (fuzz/README.md).
+ */
+#include "lifthull.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+static void *count_alloc(void *user, size_t size)
+{
+    ++*(long *)user;
+    return malloc(size);
+}
+
+static void count_free(void *user, void *ptr)
+{
+    --*(long *)user;
+    free(ptr);
+}
+
+static void check_ok(const lh_cells *c, size_t n_points, const char *msg)
+{
+    if (c->count < 1 || c->nv < 2 || c->nv > 9 || !c->v || msg[0] ||
+        (c->first_index != 0 && c->first_index != 1))
+        abort();
+    for (size_t i = 0; i < c->count * (size_t)c->nv; i++)
+        if (c->v[i] < 0 || (n_points && (size_t)c->v[i] >= n_points)) abort();
+}
+
+/* "NAME:LINE:COL: " then printable bytes only. */
+static void check_failure(lh_status st, const lh_cells *c, const char *msg, const char *name)
+{
+    if (st != LH_ERR_PARSE && st != LH_ERR_TOO_LARGE && st != LH_ERR_IO) abort();
+    if (c->v || c->count || c->nv || c->first_index) abort();
+    size_t len = strlen(name);
+    if (strncmp(msg, name, len) || msg[len] != ':') abort();
+    const char *q = msg + len + 1;
+    for (int field = 0; field < 2; field++) {
+        if (*q < '1' || *q > '9') abort();
+        while (*q >= '0' && *q <= '9') q++;
+        if (*q++ != ':') abort();
+    }
+    if (*q != ' ') abort();
+    for (const char *k = msg; *k; k++)
+        if (*k < 0x20 || *k > 0x7e) abort();
+}
+
+/* Writes c as an 'i' file and reads it back: the same cells, base 0. */
+static void round_trip(const lh_cells *c, size_t n_points, const lh_allocator *a)
+{
+    FILE *f = tmpfile();
+    if (!f) return;
+    fprintf(f, "%zu\n", c->count);
+    for (size_t i = 0; i < c->count; i++)
+        for (int k = 0; k < c->nv; k++) fprintf(f, "%d%c", (int)c->v[i * c->nv + k], k + 1 < c->nv ? ' ' : '\n');
+    rewind(f);
+    lh_cells back;
+    char msg[512];
+    if (lh_cells_read(f, "back", n_points, a, &back, msg, sizeof msg) != LH_OK) abort();
+    fclose(f);
+    if (back.count != c->count || back.nv != c->nv || back.first_index != 0 ||
+        memcmp(back.v, c->v, c->count * (size_t)c->nv * sizeof *c->v))
+        abort();
+    lh_cells_free(&back);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static const char *names[] = {"in", "in.ele", "cells.txt", "x"};
+    static const size_t points[] = {0, 1, 3, 4, 10, 100, 1000, INT32_MAX};
+    if (size < 1) return 0;
+    FILE *f = tmpfile();
+    if (!f) return 0;
+    if (size > 1 && fwrite(data + 1, 1, size - 1, f) != size - 1) abort();
+    rewind(f);
+    long live = 0;
+    lh_allocator a = {count_alloc, count_free, &live};
+    const char *name = names[(data[0] >> 3) & 3];
+    size_t n_points = points[data[0] & 7];
+    char msg[512];
+    lh_cells c;
+    lh_status st = lh_cells_read(f, name, n_points, &a, &c, msg, sizeof msg);
+    fclose(f);
+    if (st == LH_OK) {
+        check_ok(&c, n_points, msg);
+        if (c.count <= 4096) round_trip(&c, n_points, &a);
+    } else {
+        check_failure(st, &c, msg, name);
+    }
+    lh_cells_free(&c);
+    if (live != 0) abort();
+    return 0;
+}
