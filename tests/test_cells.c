@@ -8,10 +8,8 @@
 static lh_status read_text(const char *name, const char *text, size_t n_points, const lh_allocator *a,
                            lh_cells *c, char *msg, size_t size)
 {
-    FILE *f = tmpfile();
+    FILE *f = lh_test_file(text, strlen(text));
     if (!f) return LH_ERR_IO;
-    fputs(text, f);
-    rewind(f);
     lh_status st = lh_cells_read(f, name, n_points, a, c, msg, size);
     fclose(f);
     return st;
@@ -62,11 +60,9 @@ LH_TEST(bad_lists_say_where_and_what)
     for (size_t i = 0; i < LH_COUNT(cases); i++) {
         lh_cells c;
         char msg[256];
-        FILE *f = tmpfile();
-        size_t len = strlen(cases[i].text);
-        if (i == LH_COUNT(cases) - 1) len = 10; /* the NUL case */
-        fwrite(cases[i].text, 1, len, f);
-        rewind(f);
+        size_t len = i == LH_COUNT(cases) - 1 ? 10 : strlen(cases[i].text); /* the last: a NUL */
+        FILE *f = lh_test_file(cases[i].text, len);
+        LH_ASSERT_TRUE(f != NULL);
         lh_status st = lh_cells_read(f, "c", cases[i].n, NULL, &c, msg, sizeof msg);
         fclose(f);
         LH_EXPECT_EQ_INT(st, cases[i].st);

@@ -43,20 +43,10 @@ static void peak_free(void *user, void *ptr)
     free(b);
 }
 
-static FILE *file_of(const char *text, size_t len)
-{
-    FILE *f = tmpfile();
-    if (f && len && fwrite(text, 1, len, f) != len) {
-        fclose(f);
-        return NULL;
-    }
-    if (f) rewind(f);
-    return f;
-}
 
 static lh_status read_text(const char *text, size_t len, lh_points *p, char *msg, size_t size)
 {
-    FILE *f = file_of(text, len);
+    FILE *f = lh_test_file(text, len);
     if (!f) return LH_ERR_IO;
     lh_status st = lh_points_read(f, "h", LH_FORMAT_AUTO, NULL, p, msg, size);
     fclose(f);

@@ -12,21 +12,11 @@
 /* Input text with its length, so that NUL bytes can be part of it. */
 #define TEXT(s) s, sizeof(s) - 1
 
-static FILE *file_of(const char *text, size_t len)
-{
-    FILE *f = tmpfile();
-    if (f && len && fwrite(text, 1, len, f) != len) {
-        fclose(f);
-        return NULL;
-    }
-    if (f) rewind(f);
-    return f;
-}
 
 static lh_status read_text(const char *name, const char *text, size_t len, lh_format fmt,
                            const lh_allocator *a, lh_points *p, char *msg, size_t size)
 {
-    FILE *f = file_of(text, len);
+    FILE *f = lh_test_file(text, len);
     if (!f) return LH_ERR_IO;
     lh_status st = lh_points_read(f, name, fmt, a, p, msg, size);
     fclose(f);

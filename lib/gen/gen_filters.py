@@ -82,6 +82,19 @@ def hexf(x):
     return float(x).hex()
 
 
+def emit_entries(m, dim, lifted, out):
+    """The matrix entries a<i>_<j>: p_(i+1) - p_0, and the lifted |p_(i+1) - p_0|^2."""
+    out.append("    const double *p0 = p[0];")
+    for i in range(m):
+        pt = i + 1
+        out.append("    const double *p%d = p[%d];" % (pt, pt))
+        for j in range(dim):
+            out.append("    const double a%d_%d = p%d[%d] - p0[%d];" % (i, j, pt, j, j))
+        if lifted:
+            sq = " + ".join("a%d_%d * a%d_%d" % (i, j, i, j) for j in range(dim))
+            out.append("    const double a%d_%d = %s;" % (i, dim, sq))
+
+
 def emit_filter(kind, dim, out):
     lifted = kind == "insphere"
     m = dim + 1 if lifted else dim
@@ -102,15 +115,7 @@ def emit_filter(kind, dim, out):
         out.append("    return 1;")
         out.append("}")
         return
-    out.append("    const double *p0 = p[0];")
-    for i in range(m):
-        pt = i + 1
-        out.append("    const double *p%d = p[%d];" % (pt, pt))
-        for j in range(dim):
-            out.append("    const double a%d_%d = p%d[%d] - p0[%d];" % (i, j, pt, j, j))
-        if lifted:
-            sq = " + ".join("a%d_%d * a%d_%d" % (i, j, i, j) for j in range(dim))
-            out.append("    const double a%d_%d = %s;" % (i, dim, sq))
+    emit_entries(m, dim, lifted, out)
     for j in range(m):
         out.append("    double M%d = fabs(a0_%d);" % (j, j))
         for i in range(1, m):
@@ -169,15 +174,7 @@ def emit_static(kind, dim, out):
     out.append("#define LH__%s_E_%d %d /* its band exponent */" % (up, dim, 900 // degree))
     out.append("static inline int lh__%s_static_%d(const double *const *p, double eb)" % (kind, dim))
     out.append("{")
-    out.append("    const double *p0 = p[0];")
-    for i in range(m):
-        pt = i + 1
-        out.append("    const double *p%d = p[%d];" % (pt, pt))
-        for j in range(dim):
-            out.append("    const double a%d_%d = p%d[%d] - p0[%d];" % (i, j, pt, j, j))
-        if lifted:
-            sq = " + ".join("a%d_%d * a%d_%d" % (i, j, i, j) for j in range(dim))
-            out.append("    const double a%d_%d = %s;" % (i, dim, sq))
+    emit_entries(m, dim, lifted, out)
     det = laplace(m, out)
     out.append("    return (%s > eb) - (%s < -eb);" % (det, det))
     out.append("}")

@@ -67,6 +67,17 @@ int lh_test_check_true(lh_test_state *t, const char *file, int line, const char 
     return ok;
 }
 
+FILE *lh_test_file(const char *text, size_t len)
+{
+    FILE *f = tmpfile();
+    if (f && len && fwrite(text, 1, len, f) != len) {
+        fclose(f);
+        return NULL;
+    }
+    if (f) rewind(f);
+    return f;
+}
+
 void lh_test_note(lh_test_state *t, const char *fmt, ...)
 {
     if (!loud(t)) return;

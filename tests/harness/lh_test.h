@@ -60,6 +60,10 @@ typedef struct lh_test_counter {
 void *lh_test_counting_alloc(void *user, size_t size);
 void lh_test_counting_free(void *user, void *ptr);
 
+/* A temporary file holding text[0..len) (NUL bytes allowed), rewound; NULL when the
+ * system has no temporary files. The caller fcloses it (which removes it). */
+FILE *lh_test_file(const char *text, size_t len);
+
 /* Adds a free-form note (e.g. the seed or the failing case) to the current test's
  * failure output. printf-style. */
 void lh_test_note(lh_test_state *t, const char *fmt, ...);

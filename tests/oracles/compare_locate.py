@@ -50,6 +50,7 @@ from fractions import Fraction
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import canon  # noqa: E402  (the shared Qhull-format reader)
+from exact_check import det_int as det  # noqa: E402  (Bareiss, exact)
 
 
 class ToolError(Exception):
@@ -101,27 +102,6 @@ def orient(pts):
     c0, c1, c2 = c[0] - a[0], c[1] - a[1], c[2] - a[2]
     e0, e1, e2 = e[0] - a[0], e[1] - a[1], e[2] - a[2]
     return b0 * (c1 * e2 - c2 * e1) - b1 * (c0 * e2 - c2 * e0) + b2 * (c0 * e1 - c1 * e0)
-
-
-def det(m):
-    """Determinant of a small square integer matrix (Bareiss)."""
-    m = [row[:] for row in m]
-    k = len(m)
-    sign, prev = 1, 1
-    for i in range(k - 1):
-        if m[i][i] == 0:
-            for r in range(i + 1, k):
-                if m[r][i] != 0:
-                    m[i], m[r] = m[r], m[i]
-                    sign = -sign
-                    break
-            else:
-                return 0
-        for r in range(i + 1, k):
-            for c in range(i + 1, k):
-                m[r][c] = (m[r][c] * m[i][i] - m[r][i] * m[i][c]) // prev
-        prev = m[i][i]
-    return sign * m[k - 1][k - 1]
 
 
 def insphere_zero(simplex_pts, q):

@@ -39,6 +39,8 @@ def det_int(m):
     """Determinant of a square integer matrix (Bareiss, fraction-free)."""
     m = [row[:] for row in m]
     k = len(m)
+    if k == 0:
+        return 1
     sign, prev = 1, 1
     for i in range(k - 1):
         if m[i][i] == 0:

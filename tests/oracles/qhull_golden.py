@@ -56,6 +56,9 @@ import time
 from collections import Counter, defaultdict
 from fractions import Fraction
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from exact_check import det_int  # noqa: E402  (Bareiss, exact)
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_INVOCATIONS = os.path.join(HERE, "..", "data", "qhull", "rbox_invocations.txt")
 EXACT_CHECK = os.path.join(HERE, "exact_check.py")
@@ -200,29 +203,6 @@ def make_sets(args, log):
 
 # ---------------------------------------------------------------------------------------------
 # exact arithmetic on the points
-
-
-def det_int(m):
-    """Determinant of a square integer matrix (Bareiss)."""
-    m = [row[:] for row in m]
-    k = len(m)
-    if k == 0:
-        return 1
-    sign, prev = 1, 1
-    for i in range(k - 1):
-        if m[i][i] == 0:
-            for r in range(i + 1, k):
-                if m[r][i] != 0:
-                    m[i], m[r] = m[r], m[i]
-                    sign = -sign
-                    break
-            else:
-                return 0
-        for r in range(i + 1, k):
-            for c in range(i + 1, k):
-                m[r][c] = (m[r][c] * m[i][i] - m[r][i] * m[i][c]) // prev
-        prev = m[i][i]
-    return sign * m[k - 1][k - 1]
 
 
 def rank_int(rows):
