@@ -2,6 +2,7 @@
  * first lines of the input (the rules are stated at lh_points_read in lifthull.h). */
 #include "io_internal.h"
 
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -107,7 +108,7 @@ static int two_columns_instead(const unsigned char *pre, size_t len, size_t pos,
         if (info.numbers != 2 || info.text_after || info.comma) return 0;
         lines++;
     }
-    return 2 * lines != d * n;
+    return n > LLONG_MAX / d || 2 * lines != d * n; /* d*n would overflow: not 2*lines */
 }
 
 lh_format lh__format_detect(const char *name, const unsigned char *pre, size_t len,
