@@ -50,8 +50,8 @@ report() { # target: one line, or the finding
     [ -e "$a" ] || continue
     mkdir -p build-fuzz/findings
     cp "$a" build-fuzz/findings/
-    echo "fuzz: the input (hex), kept as build-fuzz/findings/${a##*/}:" >&2
-    od -An -tx1 -v "$a" | head -20 >&2
+    echo "fuzz: the input ($(wc -c < "$a") bytes; its first 128 in hex), kept as build-fuzz/findings/${a##*/}:" >&2
+    od -An -tx1 -v "$a" | head -8 >&2
     echo "fuzz: reproduce with  build-fuzz/fuzz/$t build-fuzz/findings/${a##*/}" >&2
     echo "      (or any compiler: cmake -DLH_BUILD_FUZZ=ON, then the replay driver build/fuzz/$t FILE)" >&2
   done
