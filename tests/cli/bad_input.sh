@@ -22,7 +22,7 @@ expect() {
 }
 
 expect empty 3 "empty:1:1: expected the dimension, found the end of the input" ""
-expect one_site 1 "span an affine subspace of dimension 0, not 2" "2\n1\n0.5 0.5\n"
+expect one_site 1 "the 1 site spans an affine subspace of dimension 0, not 2" "2\n1\n0.5 0.5\n"
 expect too_few 1 "span an affine subspace of dimension 1, not 2" "2\n2\n0 0\n1 1\n"
 expect collinear 1 "dimension 1, not 2" "2\n4\n0 0\n1 1\n2 2\n3 3\n"
 expect coplanar 1 "dimension 2, not 3: nothing 3-dimensional to compute \\(lifthull delaunay -a triangulates" "3\n4\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
