@@ -30,14 +30,11 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-/* Finding check_cover (fuzz/findings/check_cover.md): lh_check_delaunay accepts lists
+/* Finding check_cover (fuzz/findings/check_cover.md): lh_check_delaunay accepted lists
  * whose simplices overlap (a disk immersed in R^d, not embedded, with locally convex
- * boundary and locally Delaunay facets). Until that is fixed, an accepted list that
- * fails the brute-force global check is let pass (and not compared with the unique
- * triangulation); with -DLH_FUZZ_CHECK_STRICT=1 it aborts. */
-#ifndef LH_FUZZ_CHECK_STRICT
-#define LH_FUZZ_CHECK_STRICT 0
-#endif
+ * boundary and locally Delaunay facets); fixed by its exact volume comparison
+ * (lift/check.c, check_volume). An accepted list that fails the brute-force global
+ * check aborts. */
 
 #define MAXD 4
 #define MAXN 12
@@ -152,7 +149,7 @@ static int general_position(lh_pred *p, int d, size_t n, const double *x)
 /* The brute-force check of an accepted list (see the header comment): aborts when an
  * index is bad, a simplex repeats a site or is flat. Returns 1 when the list is a
  * Delaunay triangulation (empty spheres, every site used, the hull's volume); else
- * aborts, or returns 0 unless LH_FUZZ_CHECK_STRICT (the known finding, above). */
+ * aborts. */
 static int brute_force(lh_pred *p, int d, size_t n, const double *x, const list *l, int64_t volume)
 {
     int w = d + 1;
@@ -191,7 +188,7 @@ static int brute_force(lh_pred *p, int d, size_t n, const double *x, const list 
         global &= ok; /* site i a vertex or a duplicate of one */
     }
     global &= sum == volume; /* the simplices tile the convex hull */
-    if (!global && LH_FUZZ_CHECK_STRICT) abort();
+    if (!global) abort();
     return global;
 }
 

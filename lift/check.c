@@ -7,9 +7,13 @@
  * interior facet is locally Delaunay, it is the Delaunay triangulation of its
  * vertices (Delaunay's lemma; see e.g. Edelsbrunner, "Geometry and Topology for
  * Mesh Generation", 2001, ch. 1), and if every site is a vertex or a duplicate of
- * one, of the sites. Each condition is tested with the exact predicates.
+ * one, of the sites. Each condition is tested with the exact predicates. Local
+ * conditions alone admit coverings that wind more than once (found by fuzzing:
+ * fuzz/findings/check_cover*), so the total volume is compared with the hull's,
+ * exactly (check_volume).
  */
 #include "dt.h"
+#include "lh_exact.h"
 #include "lh_sort.h"
 
 #include <stdarg.h>
@@ -311,6 +315,50 @@ static lh_status check_cover(chk *c)
     return st;
 }
 
+/* The simplices cover the hull exactly once. With every interior facet between two
+ * simplices on opposite sides and a locally convex, closed boundary, the simplices
+ * cover the hull some number of times, the same almost everywhere (the map can
+ * branch only at ridges): a boundary wound twice, or a branch point, passes every
+ * local test. The total volume is that degree times the hull's, so exactly equal
+ * volumes mean once: sum_s det(s) + sum_f det(f, o) = 0, with the hull's facets f
+ * (lh_convex_hull, an independent computation, oriented outward) coned from a site
+ * o, every determinant exact (lh__detsum). Full-dimensional frames only. */
+static lh_status check_volume(chk *c)
+{
+    const int d = c->d;
+    int scale = 0, any = 0;
+    for (size_t i = 0; i < c->n * (size_t)d; i++)
+        if (c->xyz[i] != 0) {
+            int e = lh__dbl_low_exp(c->xyz[i]);
+            scale = any && scale < e ? scale : e;
+            any = 1;
+        }
+    lh_options opt;
+    lh_options_default(&opt);
+    opt.alloc = &c->alloc;
+    lh_hull *h = NULL;
+    lh__detsum *sum = NULL;
+    lh_status st = lh_convex_hull(d, c->n, c->xyz, &opt, &h);
+    if (st == LH_OK) st = lh__detsum_create(&c->alloc, d, scale, &sum);
+    const double *p[LH_DELAUNAY_MAX_DIM + 1];
+    for (size_t s = 0; st == LH_OK && s < c->count; s++) {
+        for (int k = 0; k <= d; k++) p[k] = site(c, c->simp[s * c->nv + k]);
+        lh__detsum_add(c->pred, sum, p, 0);
+    }
+    for (size_t f = 0; st == LH_OK && f < lh_hull_facet_count(h); f++) {
+        for (int k = 0; k < d; k++) p[k] = site(c, lh_hull_facets(h)[f * d + k]);
+        p[d] = c->xyz;
+        lh__detsum_add(c->pred, sum, p, 0);
+    }
+    if (st == LH_OK && lh__detsum_sign(sum) != 0)
+        st = fail(c, "the simplices cover the convex hull more than once (their volume exceeds the hull's)");
+    else if (st == LH_ERR_DEGENERATE)
+        st = fail(c, "the sites span less than R^%d", d);
+    lh__detsum_free(sum);
+    lh_hull_free(h);
+    return st;
+}
+
 static void chk_release(chk *c)
 {
     lh__free(&c->alloc, c->simp);
@@ -330,6 +378,7 @@ static lh_status run_check(chk *c, const int32_t *simplices)
     if (st == LH_OK) st = check_facets(c, &boundary);
     if (st == LH_OK && c->count) st = check_boundary(c, boundary);
     if (st == LH_OK) st = check_cover(c);
+    if (st == LH_OK && c->count && c->f.k == c->d) st = check_volume(c);
     return st;
 }
 

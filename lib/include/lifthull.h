@@ -188,7 +188,8 @@ void lh_pred_counters_reset(lh_pred *ctx);
 typedef struct lh_options {
     const lh_allocator *alloc; /* NULL: malloc/free                                 */
     uint64_t seed;             /* insertion order and walk randomisation; the output
-                                  does not depend on it (default 0x5eed)            */
+                                  of lh_delaunay does not depend on it (default
+                                  0x5eed; lh_convex_hull: see there)                 */
     int furthest_site;         /* lh_delaunay: 1 for the furthest-site Delaunay
                                   triangulation (the upper lifted hull, Qhull's Qu):
                                   its vertices are the convex hull's and every
@@ -291,8 +292,10 @@ void lh_tri_free(lh_tri *t);
  * simplices (any simplex order, any vertex order): every simplex has positive volume
  * after orienting it; every facet is shared by at most two simplices; every interior
  * facet is locally Delaunay (the opposite vertex is not strictly inside the other
- * simplex's circumsphere); the boundary is locally convex, so the simplices tile the
- * convex hull; every site is a vertex or an exact duplicate of one. Returns LH_OK or
+ * simplex's circumsphere); the boundary is locally convex; the simplices' total
+ * volume equals the convex hull's, exactly, so they tile it once (local conditions
+ * alone admit coverings wound twice); every site is a vertex or an exact duplicate
+ * of one. Returns LH_OK or
  * LH_ERR_INTERNAL with a one-line reason in msg (msg may be NULL; msg_size bytes).
  */
 lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
@@ -421,8 +424,13 @@ lh_status lh_tri_interpolate(lh_tri *t, lh_interp_method method, size_t m,
  * same incremental engine, exactly. The hull is simplicial: each facet lists d site
  * indices in canonical order (as lh_delaunay's simplices), oriented so that
  * orient_d(facet, p) > 0 for every point p strictly outside; facets are sorted.
- * Sites strictly inside are never vertices; a site on the hull's boundary may or may
- * not be one (its facets are then coplanar with their neighbours, never flat).
+ * Sites strictly inside are never vertices; a site on the hull's boundary that is not
+ * a corner may or may not be one (its facets are then coplanar with their
+ * neighbours, never flat): which ones are, and so how a flat face of the hull is cut
+ * into facets, follows the insertion order, which opt->seed and the input's order
+ * set (seen by fuzzing: fuzz/findings/hull_seed.md). The hull as a point set, its
+ * corners and every facet's plane are exact either way; for a triangulation of the
+ * boundary that depends on the sites alone, take lh_delaunay's hull facets.
  * Duplicates merge as in lh_delaunay. Statuses as lh_delaunay's (LH_ERR_DEGENERATE
  * when the sites span less than R^d).
  */

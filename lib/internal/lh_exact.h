@@ -15,6 +15,21 @@ int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
 double lh__minor_value(lh_pred *ctx, const double *const *pts, int dim, int m, const int *rows,
                        const int *cols, int *e);
 
+/*
+ * Exact sums of orientation determinants det[[1, p_0], ..., [1, p_d]] (d! times the
+ * signed volume), e.g. to compare the volume of a set of simplices with a hull's.
+ * Every coordinate that is added must be a multiple of 2^scale (scale at most the
+ * exponent of its lowest set bit: lh__dbl_low_exp over all of them).
+ */
+typedef struct lh__detsum lh__detsum;
+lh_status lh__detsum_create(const lh_allocator *alloc, int d, int scale, lh__detsum **out);
+/* sum += det (negate: sum -= det) of the d+1 points pts. */
+void lh__detsum_add(lh_pred *ctx, lh__detsum *s, const double *const *pts, int negate);
+int lh__detsum_sign(const lh__detsum *s); /* -1, 0, +1 */
+void lh__detsum_free(lh__detsum *s);
+/* Exponent of the lowest set bit of x (finite, nonzero). */
+int lh__dbl_low_exp(double x);
+
 /* lh_insphere_sos and lh_orient without argument checks, for the engine's inner
  * loops (d within range, ctx and pts valid; counted as public calls). */
 int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts);

@@ -12,8 +12,10 @@
  * minor of the leading columns memoised per row subset: m * 2^(m-1) products for
  * an m x m matrix, and no division.
  */
+#include "lh_alloc.h"
 #include "pred_internal.h"
 
+#include <limits.h>
 #include <string.h>
 
 typedef struct exact_buf {
@@ -128,17 +130,28 @@ static void squared_norm(exact_buf *b, lh__bn *out, const double *p, const doubl
     }
 }
 
+static int fill_minor_at(lh_pred *ctx, exact_buf *b_, const double *const *pts, int dim, int m,
+                         const int *rows, const int *cols, int forced, int *scale_out);
+
 /* Fills b with the integer matrix of the minor (the rows reduced by the first when
  * the column of ones is in); returns its size n; *scale is the power of two each
  * coordinate was divided by. */
 static int fill_minor(lh_pred *ctx, exact_buf *b_, const double *const *pts, int dim, int m,
                       const int *rows, const int *cols, int *scale_out)
 {
+    return fill_minor_at(ctx, b_, pts, dim, m, rows, cols, INT_MIN, scale_out);
+}
+
+/* fill_minor at a given scale (INT_MIN: the call's own), valid when it is at most
+ * every entering coordinate's lowest set bit. */
+static int fill_minor_at(lh_pred *ctx, exact_buf *b_, const double *const *pts, int dim, int m,
+                         const int *rows, const int *cols, int forced, int *scale_out)
+{
     exact_buf b;
     int has_ones = cols[0] == 0, has_lift = cols[m - 1] == dim + 1;
     buf_init(&b, ctx->arena, (m - has_ones) * (m - has_ones));
     int relift = has_ones && has_lift && m - 2 == dim;
-    int scale = common_scale(pts, dim, m, rows, cols, has_lift);
+    int scale = forced != INT_MIN ? forced : common_scale(pts, dim, m, rows, cols, has_lift);
     const double *base = has_ones ? pts[rows[0]] : NULL;
     int n = m - has_ones; /* size of the integer matrix */
     lh__bn *base_lift = &b.t[3];
@@ -205,3 +218,51 @@ int lh__insphere_exact(lh_pred *ctx, int d, const double *const *pts)
 {
     return full_minor(ctx, pts, d, d + 2);
 }
+
+/* Exact sums of orientation determinants (lh_exact.h). */
+struct lh__detsum {
+    lh_allocator alloc;
+    int d, scale;
+    lh__bn acc;
+};
+
+lh_status lh__detsum_create(const lh_allocator *alloc, int d, int scale, lh__detsum **out)
+{
+    lh_allocator a;
+    *out = NULL;
+    if (!lh__allocator_init(&a, alloc)) return LH_ERR_INVALID_ARGUMENT;
+    lh__detsum *s = lh__alloc(&a, sizeof *s);
+    uint32_t *limbs = lh__alloc(&a, (LH__DET_LIMBS + 4) * sizeof *limbs);
+    if (!s || !limbs) {
+        lh__free(&a, s);
+        lh__free(&a, limbs);
+        return LH_ERR_NOMEM;
+    }
+    s->alloc = a;
+    s->d = d;
+    s->scale = scale;
+    s->acc.d = limbs;
+    s->acc.n = s->acc.neg = 0;
+    *out = s;
+    return LH_OK;
+}
+
+void lh__detsum_free(lh__detsum *s)
+{
+    if (!s) return;
+    lh_allocator a = s->alloc;
+    lh__free(&a, s->acc.d);
+    lh__free(&a, s);
+}
+
+void lh__detsum_add(lh_pred *ctx, lh__detsum *s, const double *const *pts, int negate)
+{
+    int idx[LH__MAXN], scale;
+    for (int i = 0; i <= s->d; i++) idx[i] = i;
+    exact_buf b;
+    int n = fill_minor_at(ctx, &b, pts, s->d, s->d + 1, idx, idx, s->scale, &scale);
+    lh__bn det = det_value(&b, &ctx->sub, n, b.ent);
+    lh__bn_add(&s->acc, &s->acc, &det, negate);
+}
+
+int lh__detsum_sign(const lh__detsum *s) { return lh__bn_sign(&s->acc); }

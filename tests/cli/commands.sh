@@ -132,6 +132,10 @@ expect "too many value columns" 3 "at least 2 are needed" '' -- "$lh" interpolat
 expect "check ok" 0 '' '^ok: ' -- "$lh" check cloud.txt tri.txt
 awk 'NR == 1 { print $1 - 1; next } NR != 5' tri.txt > broken.txt
 expect "check broken" 1 '' '^not Delaunay: ' -- "$lh" check cloud.txt broken.txt
+# a fan over a pentagram: every local test passes, but it covers the pentagon twice
+printf '2 6\n0 0\n1000 0\n309 951\n-809 588\n-809 -588\n309 -951\n' > penta.txt
+printf '5\n0 1 3\n0 2 4\n0 3 5\n0 4 1\n0 5 2\n' > penta_fan.txt
+expect "check a double cover" 1 '' 'cover the convex hull more than once' -- "$lh" check penta.txt penta_fan.txt
 printf '1\n0 1 999\n' > outofrange.txt
 expect "check index range" 3 "outofrange.txt:2:5: expected a point index of cell 1 \(an integer from 0 to 399\), found '999'" '' -- "$lh" check cloud.txt outofrange.txt
 
