@@ -61,7 +61,7 @@ int lh_cli_check(int argc, char **argv)
                 a.file[1], c.nv, p.d, p.d + 1);
     } else {
         char msg[256];
-        lh_status st = lh_check_delaunay(p.d, p.n, p.xyz, c.count, c.v, msg, sizeof msg);
+        lh_status st = lh_check_delaunay(p.d, p.n, p.xyz, c.count, c.v, NULL, msg, sizeof msg);
         if (st == LH_OK)
             printf("ok: %zu %s, the Delaunay triangulation of the %zu point%s (exact check)\n", c.count,
                    c.count == 1 ? "simplex" : "simplices", p.n, p.n == 1 ? "" : "s");

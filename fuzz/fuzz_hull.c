@@ -177,7 +177,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     lh_hull *h = NULL;
     lh_status st = lh_convex_hull(d, n, x, &o, &h);
     int dim = -2;
-    if (lh_affine_dim(d, n, x, &dim) != LH_OK) abort();
+    if (lh_affine_dim(d, n, x, NULL, &dim) != LH_OK) abort();
     if (st != (dim == d ? LH_OK : LH_ERR_DEGENERATE) || (st != LH_OK) != (h == NULL)) abort();
     if (st != LH_OK) return 0;
     lh_pred *p;

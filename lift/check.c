@@ -383,13 +383,14 @@ static lh_status run_check(chk *c, const int32_t *simplices)
 }
 
 lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
-                            const int32_t *simplices, char *msg, size_t msg_size)
+                            const int32_t *simplices, const lh_options *opt, char *msg,
+                            size_t msg_size)
 {
     if (d < LH_DELAUNAY_MIN_DIM || d > LH_DELAUNAY_MAX_DIM) return LH_ERR_DIMENSION;
     if ((!xyz && n) || (!simplices && count)) return LH_ERR_INVALID_ARGUMENT;
     chk c;
     memset(&c, 0, sizeof c);
-    lh__allocator_init(&c.alloc, NULL);
+    if (!lh__allocator_init(&c.alloc, opt ? opt->alloc : NULL)) return LH_ERR_INVALID_ARGUMENT;
     c.d = d;
     c.nv = d + 1;
     c.f.d = c.f.k = d;
@@ -410,7 +411,7 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
     if (!t) return LH_ERR_INVALID_ARGUMENT;
     chk c;
     memset(&c, 0, sizeof c);
-    lh__allocator_init(&c.alloc, NULL);
+    c.alloc = t->alloc; /* the handle's hooks */
     c.d = t->d;
     c.f = t->frame;
     c.nv = t->frame.k + 1;

@@ -131,17 +131,17 @@ lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *
     return LH_OK;
 }
 
-lh_status lh_affine_dim(int d, size_t n, const double *xyz, int *dim)
+lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt, int *dim)
 {
     if (!dim) return LH_ERR_INVALID_ARGUMENT;
-    lh_status st = lh__eng_check_args(d, 1, LH__ENGINE_MAX_DIM, n, xyz, NULL);
+    lh_status st = lh__eng_check_args(d, 1, LH__ENGINE_MAX_DIM, n, xyz, opt);
     if (st != LH_OK) return st;
     lh_allocator a;
-    lh__allocator_init(&a, NULL);
+    lh__allocator_init(&a, opt ? opt->alloc : NULL);
     int32_t *dup = lh__alloc(&a, (n + 1) * sizeof *dup);
     if (!dup) return LH_ERR_NOMEM;
     lh__eng e;
-    st = lh__eng_init(&e, NULL, d, n, xyz, dup, NULL);
+    st = lh__eng_init(&e, &a, d, n, xyz, dup, opt);
     if (st == LH_OK) st = lh__eng_order(&e);
     if (st == LH_OK) *dim = lh__eng_initial_simplex(&e);
     lh__eng_release(&e);

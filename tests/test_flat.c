@@ -229,14 +229,15 @@ typedef struct flat_input {
 static lh_status flat_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
 {
     const flat_input *in = user;
+    (void)lh_t_;
     lh_options o;
     lh_options_default(&o);
     o.alloc = a;
     o.affine_hull = 1;
     lh_tri *t;
     lh_status st = lh_delaunay(3, in->n, in->x, &o, &t);
-    if (st == LH_OK) {
-        LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    if (st == LH_OK) { /* the check allocates through the handle's hooks too */
+        st = lh_tri_check(t, NULL, 0);
         lh_tri_free(t);
     }
     return st;

@@ -206,7 +206,7 @@ LH_TEST(nonfinite_coordinates_everywhere)
         LH_EXPECT_TRUE(t == NULL);
         LH_EXPECT_EQ_INT(lh_convex_hull(2, 4, y, NULL, &h), LH_ERR_NONFINITE);
         LH_EXPECT_TRUE(h == NULL);
-        LH_EXPECT_EQ_INT(lh_affine_dim(2, 4, y, &k), LH_ERR_NONFINITE);
+        LH_EXPECT_EQ_INT(lh_affine_dim(2, 4, y, NULL, &k), LH_ERR_NONFINITE);
         LH_ASSERT_EQ_INT(lh_delaunay(2, 4, x, NULL, &t), LH_OK);
         lh_location loc;
         int32_t site;
@@ -248,7 +248,7 @@ LH_TEST(a_million_identical_sites)
         LH_EXPECT_EQ_INT(lh_convex_hull(d, n, x, &opt, &h), LH_ERR_DEGENERATE);
         LH_EXPECT_TRUE(h == NULL);
         int k = 7;
-        LH_EXPECT_EQ_INT(lh_affine_dim(d, n, x, &k), LH_OK);
+        LH_EXPECT_EQ_INT(lh_affine_dim(d, n, x, NULL, &k), LH_OK);
         LH_EXPECT_EQ_INT(k, 0);
         double secs = (double)(clock() - c0) / CLOCKS_PER_SEC;
         LH_EXPECT_LE_DBL(secs, 10.0); /* measured 0.5 s (2D), 0.7 s (3D) for the four calls, Release */
@@ -271,7 +271,7 @@ LH_TEST(all_duplicates_of_one_site)
         opt.affine_hull = 1;
         int k = 7;
         LH_EXPECT_EQ_INT(lh_delaunay(d, 5, x, &opt, &t), LH_ERR_DEGENERATE);
-        LH_EXPECT_EQ_INT(lh_affine_dim(d, 5, x, &k), LH_OK);
+        LH_EXPECT_EQ_INT(lh_affine_dim(d, 5, x, NULL, &k), LH_OK);
         LH_EXPECT_EQ_INT(k, 0);
     }
 }
@@ -299,7 +299,7 @@ LH_TEST(collinear_and_coplanar_sites)
         int k = 7;
         LH_EXPECT_EQ_INT(lh_delaunay(cases[c].d, cases[c].n, cases[c].x, NULL, &t), LH_ERR_DEGENERATE);
         LH_EXPECT_EQ_INT(lh_convex_hull(cases[c].d, cases[c].n, cases[c].x, NULL, &h), LH_ERR_DEGENERATE);
-        LH_EXPECT_EQ_INT(lh_affine_dim(cases[c].d, cases[c].n, cases[c].x, &k), LH_OK);
+        LH_EXPECT_EQ_INT(lh_affine_dim(cases[c].d, cases[c].n, cases[c].x, NULL, &k), LH_OK);
         LH_EXPECT_EQ_INT(k, cases[c].k);
         lh_options opt;
         lh_options_default(&opt);

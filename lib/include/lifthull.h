@@ -244,8 +244,9 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
                       lh_tri **out);
 
 /* The affine dimension spanned by n sites in R^d (0 for one distinct site, -1 for
- * none), computed exactly; LH_ERR_* as lh_delaunay for bad arguments. */
-lh_status lh_affine_dim(int d, size_t n, const double *xyz, int *dim);
+ * none), computed exactly; opt as lh_delaunay's (only alloc is used; NULL:
+ * defaults); LH_ERR_* as lh_delaunay for bad arguments. */
+lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt, int *dim);
 
 /*
  * lh_tri_insert: adds m sites (m*d doubles, copied) to t; they get the indices
@@ -295,11 +296,13 @@ void lh_tri_free(lh_tri *t);
  * simplex's circumsphere); the boundary is locally convex; the simplices' total
  * volume equals the convex hull's, exactly, so they tile it once (local conditions
  * alone admit coverings wound twice); every site is a vertex or an exact duplicate
- * of one. Returns LH_OK or
- * LH_ERR_INTERNAL with a one-line reason in msg (msg may be NULL; msg_size bytes).
+ * of one. opt: only its allocator is used (NULL: malloc). Returns LH_OK,
+ * LH_ERR_NOMEM, or LH_ERR_INTERNAL with a one-line reason in msg (msg may be NULL;
+ * msg_size bytes).
  */
 lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
-                            const int32_t *simplices, char *msg, size_t msg_size);
+                            const int32_t *simplices, const lh_options *opt, char *msg,
+                            size_t msg_size);
 /* The same for a handle, also verifying its neighbour and hull arrays; for a
  * furthest-site triangulation the conditions are reversed (every interior facet
  * locally furthest-site Delaunay; sites that are not vertices inside the hull). */
