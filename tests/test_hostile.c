@@ -10,6 +10,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -480,6 +481,27 @@ LH_TEST(constructions_at_extreme_scales)
     }
 }
 
+/* The 32-bit index limit: at most INT32_MAX - 1 sites; INT32_MAX of them is
+ * LH_ERR_TOO_LARGE before any coordinate is read (x holds two: ASan would see a read). */
+LH_TEST(the_site_count_limit)
+{
+    const double x[2] = {0, 0};
+    const size_t n = (size_t)INT32_MAX;
+    lh_tri *t = (lh_tri *)x;
+    lh_hull *h = (lh_hull *)x;
+    int k;
+    LH_EXPECT_EQ_INT(lh_delaunay(2, n, x, NULL, &t), LH_ERR_TOO_LARGE);
+    LH_EXPECT_TRUE(t == NULL);
+    LH_EXPECT_EQ_INT(lh_convex_hull(2, n, x, NULL, &h), LH_ERR_TOO_LARGE);
+    LH_EXPECT_TRUE(h == NULL);
+    LH_EXPECT_EQ_INT(lh_affine_dim(2, n, x, NULL, &k), LH_ERR_TOO_LARGE);
+    const double three[6] = {0, 0, 1, 0, 0, 1};
+    LH_ASSERT_EQ_INT(lh_delaunay(2, 3, three, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_insert(t, n - 3, x), LH_ERR_TOO_LARGE); /* n - 3 + 3 = INT32_MAX */
+    LH_EXPECT_EQ_U64(lh_tri_site_count(t), 3);
+    lh_tri_free(t);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
@@ -494,6 +516,7 @@ int main(int argc, char **argv)
         LH_CASE(reader_keeps_extreme_doubles),
         LH_CASE(reader_takes_megabyte_lines),
         LH_CASE(constructions_at_extreme_scales),
+        LH_CASE(the_site_count_limit),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }
