@@ -15,6 +15,7 @@ enum { MAXV = LH_DELAUNAY_MAX_DIM + 2 };
 typedef struct side {
     int32_t facet; /* -1: empty slot */
     int32_t pos;
+    uint64_t hash; /* of its key: a probe rebuilds a stored key only on equal hashes */
 } side;
 
 typedef struct table {
@@ -24,19 +25,18 @@ typedef struct table {
     const int32_t *vert;
 } table;
 
-static int cmp_i32(const void *a, const void *b)
-{
-    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
-    return (x > y) - (x < y);
-}
-
-/* The sorted vertices of facet f without position k, and their hash. */
+/* The sorted vertices of facet f without position k (insertion sort: at most 8),
+ * and their hash. */
 static uint64_t side_key(const int32_t *vert, int nv, int32_t f, int k, int32_t *key)
 {
     int m = 0;
-    for (int i = 0; i < nv; i++)
-        if (i != k) key[m++] = vert[(size_t)f * nv + i];
-    qsort(key, (size_t)m, sizeof *key, cmp_i32);
+    for (int i = 0; i < nv; i++) {
+        if (i == k) continue;
+        int32_t x = vert[(size_t)f * nv + i];
+        int j = m++;
+        for (; j > 0 && key[j - 1] > x; j--) key[j] = key[j - 1];
+        key[j] = x;
+    }
     uint64_t h = 0x9e3779b97f4a7c15u;
     for (int i = 0; i < m; i++) h = (h ^ (uint32_t)key[i]) * 0xff51afd7ed558ccdu;
     return h ^ (h >> 29);
@@ -49,6 +49,7 @@ static side *find(table *t, const int32_t *key, uint64_t h)
     for (size_t i = h & t->mask;; i = (i + 1) & t->mask) {
         side *s = &t->slot[i];
         if (s->facet < 0) return s;
+        if (s->hash != h) continue;
         side_key(t->vert, t->nv, s->facet, s->pos, other);
         if (!memcmp(other, key, (size_t)(t->nv - 1) * sizeof *key)) return s;
     }
@@ -75,10 +76,12 @@ int lh_cli_pair_within(int nv, size_t m, const int32_t *vert, int32_t *nbr)
     for (size_t f = 0; f < m; f++)
         for (int k = 0; k < nv; k++) {
             nbr[f * nv + k] = -1;
-            side *s = find(&t, key, side_key(vert, nv, (int32_t)f, k, key));
+            uint64_t h = side_key(vert, nv, (int32_t)f, k, key);
+            side *s = find(&t, key, h);
             if (s->facet < 0) {
                 s->facet = (int32_t)f;
                 s->pos = k;
+                s->hash = h;
             } else {
                 nbr[f * nv + k] = s->facet;
                 nbr[(size_t)s->facet * nv + s->pos] = (int32_t)f;
@@ -99,9 +102,11 @@ int lh_cli_pair_across(int nv, size_t m, const int32_t *vert, int32_t *nbr, size
     for (size_t g = 0; g < mo; g++)
         for (int k = 0; k < nv; k++) {
             if (onbr[g * nv + k] >= 0) continue;
-            side *s = find(&t, key, side_key(overt, nv, (int32_t)g, k, key));
+            uint64_t h = side_key(overt, nv, (int32_t)g, k, key);
+            side *s = find(&t, key, h);
             s->facet = (int32_t)g;
             s->pos = k;
+            s->hash = h;
         }
     for (size_t f = 0; f < m; f++)
         for (int k = 0; k < nv; k++) {

@@ -11,6 +11,7 @@
  * Everything allocated is freed (a counting allocator). Anything else aborts. Build as
  * fuzz_delaunay.c (fuzz/README.md).
  */
+#include "fuzz_common.h"
 #include "lifthull.h"
 
 #include <stdint.h>
@@ -18,18 +19,6 @@
 #include <string.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-
-static void *count_alloc(void *user, size_t size)
-{
-    ++*(long *)user;
-    return malloc(size);
-}
-
-static void count_free(void *user, void *ptr)
-{
-    --*(long *)user;
-    free(ptr);
-}
 
 static void check_ok(const lh_cells *c, size_t n_points, const char *msg)
 {
@@ -45,17 +34,7 @@ static void check_failure(lh_status st, const lh_cells *c, const char *msg, cons
 {
     if (st != LH_ERR_PARSE && st != LH_ERR_TOO_LARGE && st != LH_ERR_IO) abort();
     if (c->v || c->count || c->nv || c->first_index) abort();
-    size_t len = strlen(name);
-    if (strncmp(msg, name, len) || msg[len] != ':') abort();
-    const char *q = msg + len + 1;
-    for (int field = 0; field < 2; field++) {
-        if (*q < '1' || *q > '9') abort();
-        while (*q >= '0' && *q <= '9') q++;
-        if (*q++ != ':') abort();
-    }
-    if (*q != ' ') abort();
-    for (const char *k = msg; *k; k++)
-        if (*k < 0x20 || *k > 0x7e) abort();
+    lh_fuzz_check_message(msg, name);
 }
 
 /* Writes c as an 'i' file and reads it back: the same cells, base 0. */
@@ -87,7 +66,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (size > 1 && fwrite(data + 1, 1, size - 1, f) != size - 1) abort();
     rewind(f);
     long live = 0;
-    lh_allocator a = {count_alloc, count_free, &live};
+    lh_allocator a = {lh_fuzz_count_alloc, lh_fuzz_count_free, &live};
     const char *name = names[(data[0] >> 3) & 3];
     size_t n_points = points[data[0] & 7];
     char msg[512];

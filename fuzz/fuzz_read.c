@@ -8,6 +8,7 @@
  * input, no line end). Everything allocated is freed (a counting allocator). Anything
  * else aborts. Build as fuzz_delaunay.c (fuzz/README.md).
  */
+#include "fuzz_common.h"
 #include "lifthull.h"
 
 #include <math.h>
@@ -16,18 +17,6 @@
 #include <string.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-
-static void *count_alloc(void *user, size_t size)
-{
-    ++*(long *)user;
-    return malloc(size);
-}
-
-static void count_free(void *user, void *ptr)
-{
-    --*(long *)user;
-    free(ptr);
-}
 
 static void check_ok(const lh_points *p, const char *msg)
 {
@@ -47,10 +36,7 @@ static void check_failure(lh_status st, const lh_points *p, const char *msg, con
         st != LH_ERR_TOO_LARGE && st != LH_ERR_IO)
         abort();
     if (p->xyz || p->attr || p->marker || p->n || p->d) abort();
-    size_t len = strlen(name);
-    if (strncmp(msg, name, len) || msg[len] != ':') abort();
-    for (const char *c = msg; *c; c++)
-        if (*c < 0x20 || *c > 0x7e) abort();
+    lh_fuzz_check_message(msg, name);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -62,7 +48,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (size > 1 && fwrite(data + 1, 1, size - 1, f) != size - 1) abort();
     rewind(f);
     long live = 0;
-    lh_allocator a = {count_alloc, count_free, &live};
+    lh_allocator a = {lh_fuzz_count_alloc, lh_fuzz_count_free, &live};
     const char *name = names[(data[0] >> 2) & 3];
     char msg[512];
     lh_points p;

@@ -32,15 +32,16 @@ lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
     e->xyz = xyz;
     e->dup = dup;
     e->rng = (opt ? opt->seed : LH__DEFAULT_SEED) | 1;
-    for (int j = 0; j < d; j++) { /* rounding is monotone: every difference is within */
-        double lo = n ? xyz[j] : 0, hi = lo;
-        for (size_t i = 1; i < n; i++) {
+    double hi[LH__ENGINE_MAX_DIM]; /* the bounding box, one pass over the sites */
+    for (int j = 0; j < d; j++) e->lo[j] = hi[j] = n ? xyz[j] : 0;
+    for (size_t i = 1; i < n; i++)
+        for (int j = 0; j < d; j++) {
             double x = xyz[i * (size_t)d + j];
-            lo = x < lo ? x : lo;
-            hi = x > hi ? x : hi;
+            e->lo[j] = x < e->lo[j] ? x : e->lo[j];
+            hi[j] = x > hi[j] ? x : hi[j];
         }
-        e->span[j] = hi - lo;
-    }
+    for (int j = 0; j < d; j++) e->span[j] = hi[j] - e->lo[j]; /* rounding is monotone:
+                                                                 every difference is within */
     e->progress = opt ? opt->progress : NULL;
     e->progress_user = opt ? opt->progress_user : NULL;
     return lh_pred_create(&e->alloc, &e->pred);

@@ -74,8 +74,9 @@ typedef struct lh__eng {
                              fit (insert_impl.h), to exercise that path at small n */
     int inside_conflicts; /* 1: the cell containing q always conflicts (Delaunay);
                              0: a site inside the current hull is not inserted */
-    double span[LH__ENGINE_MAX_DIM]; /* per coordinate, fl(max - min) over the sites:
-                                       the static filters' bounds (dims/) */
+    double lo[LH__ENGINE_MAX_DIM];   /* per coordinate, the sites' minimum and     */
+    double span[LH__ENGINE_MAX_DIM]; /* fl(max - min): Morton keys (order.c), the
+                                       static filters' bounds (dims/)            */
     double static_eb[2];  /* dims/: those bounds for orient, insphere (per call) */
     void (*progress)(void *user, size_t done, size_t total); /* lh_options */
     void *progress_user;

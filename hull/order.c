@@ -43,15 +43,9 @@ static void morton_keys(const lh__eng *t, uint64_t *key)
     double lo[LH__ENGINE_MAX_DIM], scale[LH__ENGINE_MAX_DIM];
     int shift[LH__ENGINE_MAX_DIM]; /* a tiny span is first scaled up by 2^-shift */
     const double cells = (double)((UINT64_C(1) << bits) - 1);
-    for (int j = 0; j < d; j++) {
-        double mn = t->xyz[j], mx = mn;
-        for (size_t i = 1; i < t->n; i++) {
-            double x = t->xyz[i * d + j];
-            if (x < mn) mn = x;
-            if (x > mx) mx = x;
-        }
-        lo[j] = mn;
-        double span = mx - mn;
+    for (int j = 0; j < d; j++) { /* the bounding box from lh__eng_init */
+        lo[j] = t->lo[j];
+        double span = t->span[j];
         shift[j] = 0;
         if (span > 0 && span < 0x1p-900) frexp(span, &shift[j]); /* 1/span would overflow */
         scale[j] = span > 0 && span < 1e308 ? cells / ldexp(span, -shift[j]) : 0;

@@ -130,22 +130,12 @@ static void squared_norm(exact_buf *b, lh__bn *out, const double *p, const doubl
     }
 }
 
-static int fill_minor_at(lh_pred *ctx, exact_buf *b_, const double *const *pts, int dim, int m,
-                         const int *rows, const int *cols, int forced, int *scale_out);
-
 /* Fills b with the integer matrix of the minor (the rows reduced by the first when
  * the column of ones is in); returns its size n; *scale is the power of two each
- * coordinate was divided by. */
+ * coordinate was divided by: `forced`, or with INT_MIN the call's own (the lowest set
+ * bit of the entering coordinates; a forced scale must be at most that). */
 static int fill_minor(lh_pred *ctx, exact_buf *b_, const double *const *pts, int dim, int m,
-                      const int *rows, const int *cols, int *scale_out)
-{
-    return fill_minor_at(ctx, b_, pts, dim, m, rows, cols, INT_MIN, scale_out);
-}
-
-/* fill_minor at a given scale (INT_MIN: the call's own), valid when it is at most
- * every entering coordinate's lowest set bit. */
-static int fill_minor_at(lh_pred *ctx, exact_buf *b_, const double *const *pts, int dim, int m,
-                         const int *rows, const int *cols, int forced, int *scale_out)
+                      const int *rows, const int *cols, int forced, int *scale_out)
 {
     exact_buf b;
     int has_ones = cols[0] == 0, has_lift = cols[m - 1] == dim + 1;
@@ -184,7 +174,7 @@ int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
 {
     if (m == 0) return 1;
     exact_buf b;
-    int scale, n = fill_minor(ctx, &b, pts, dim, m, rows, cols, &scale);
+    int scale, n = fill_minor(ctx, &b, pts, dim, m, rows, cols, INT_MIN, &scale);
     return det_sign(&b, &ctx->sub, n, b.ent);
 }
 
@@ -194,7 +184,7 @@ double lh__minor_value(lh_pred *ctx, const double *const *pts, int dim, int m, c
     *e = 0;
     if (m == 0) return 1;
     exact_buf b;
-    int scale, n = fill_minor(ctx, &b, pts, dim, m, rows, cols, &scale);
+    int scale, n = fill_minor(ctx, &b, pts, dim, m, rows, cols, INT_MIN, &scale);
     if (n == 0) return 1;
     lh__bn det = det_value(&b, &ctx->sub, n, b.ent);
     double v = lh__bn_to_double(&det, e);
@@ -260,7 +250,7 @@ void lh__detsum_add(lh_pred *ctx, lh__detsum *s, const double *const *pts, int n
     int idx[LH__MAXN], scale;
     for (int i = 0; i <= s->d; i++) idx[i] = i;
     exact_buf b;
-    int n = fill_minor_at(ctx, &b, pts, s->d, s->d + 1, idx, idx, s->scale, &scale);
+    int n = fill_minor(ctx, &b, pts, s->d, s->d + 1, idx, idx, s->scale, &scale);
     lh__bn det = det_value(&b, &ctx->sub, n, b.ent);
     lh__bn_add(&s->acc, &s->acc, &det, negate);
 }

@@ -1,0 +1,38 @@
+/* fuzz_common.h — what the reader targets share: a counting allocator (nothing may
+ * leak) and the one-line message contract of lifthull's readers. */
+#ifndef LH_FUZZ_COMMON_H
+#define LH_FUZZ_COMMON_H
+
+#include <stdlib.h>
+#include <string.h>
+
+/* user points at a long: live blocks. */
+static void *lh_fuzz_count_alloc(void *user, size_t size)
+{
+    ++*(long *)user;
+    return malloc(size);
+}
+
+static void lh_fuzz_count_free(void *user, void *ptr)
+{
+    --*(long *)user;
+    free(ptr);
+}
+
+/* msg is "NAME:LINE:COL: " (LINE, COL positive) then printable bytes only; else abort. */
+static void lh_fuzz_check_message(const char *msg, const char *name)
+{
+    size_t len = strlen(name);
+    if (strncmp(msg, name, len) || msg[len] != ':') abort();
+    const char *q = msg + len + 1;
+    for (int field = 0; field < 2; field++) {
+        if (*q < '1' || *q > '9') abort();
+        while (*q >= '0' && *q <= '9') q++;
+        if (*q++ != ':') abort();
+    }
+    if (*q != ' ') abort();
+    for (const char *k = msg; *k; k++)
+        if (*k < 0x20 || *k > 0x7e) abort();
+}
+
+#endif
