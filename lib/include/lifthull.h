@@ -73,6 +73,24 @@ const char *lh_status_message(lh_status status);
 /* The enumerator's name, e.g. "LH_ERR_NONFINITE" (static storage, never NULL). */
 const char *lh_status_name(lh_status status);
 
+/* ---- indices ------------------------------------------------------------------- */
+
+/* Site, simplex and cell indices in every array of this API. 32 bits by default
+ * (half the memory of 64; at most LH_INDEX_MAX - 1 sites); a build configured with
+ * -DLH_INDEX_64=ON makes them 64-bit (lifthull_config.h records the choice, so a
+ * program compiled against the installed header matches its library; lh_index_bits
+ * says at run time what the library was built with). */
+#include "lifthull_config.h"
+#if LH_INDEX_BITS == 64
+typedef int64_t lh_index;
+#define LH_INDEX_MAX INT64_MAX
+#else
+typedef int32_t lh_index;
+#define LH_INDEX_MAX INT32_MAX
+#endif
+/* LH_INDEX_BITS of the library (32 or 64). */
+int lh_index_bits(void);
+
 /* ---- memory --------------------------------------------------------------------- */
 
 /* Allocator hooks, per handle. Passing NULL wherever an allocator is asked for
@@ -622,6 +640,65 @@ lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
+
+/* ---- 2D meshing: constrained Delaunay triangulation and quality refinement -------- */
+
+/*
+ * A planar straight-line graph (PSLG), Triangle's .poly in memory. The caller may
+ * fill one (every pointer its own; leave alloc_ and the *_line arrays zero) or get
+ * one from lh_poly_read / lh_rings_read (lh_pslg_free releases it).
+ */
+typedef struct lh_pslg {
+    size_t n;                  /* vertices                                                */
+    double *xy;                /* n*2 coordinates                                         */
+    int attr_count;            /* attributes per vertex (interpolated onto new vertices)  */
+    double *attr;              /* n*attr_count, or NULL when attr_count is 0               */
+    lh_index *vertex_marker;   /* n boundary markers, or NULL                             */
+    size_t segment_count;
+    lh_index *segments;        /* 2 per segment: 0-based vertex indices                   */
+    lh_index *segment_marker;  /* segment_count markers, or NULL                          */
+    size_t hole_count;
+    double *holes;             /* 2 per hole: a point inside it (Triangle's hole seeds)   */
+    size_t region_count;
+    double *regions;           /* 4 per region: x, y, attribute, maximum area (<= 0: no
+                                  bound) — Triangle's regional attributes and -a bounds   */
+    int even_odd;              /* 1: the domain is where a ray to infinity crosses an odd
+                                  number of segments (polygon rings: outer + holes; hole
+                                  seeds then unneeded); 0: Triangle's rule, the convex
+                                  hull minus what a flood from the outside and from each
+                                  hole seed reaches without crossing a segment           */
+    int first_index;           /* readers: the file's first number, 0 or 1; else 0        */
+    /* readers only (NULL otherwise): the line of the file where each item was read,
+       so that a diagnostic can name it (1-based lines) */
+    size_t *vertex_line, *segment_line, *hole_line, *region_line;
+    lh_allocator alloc_;       /* private: the hooks that allocated the arrays            */
+} lh_pslg;
+
+/*
+ * lh_poly_read: Triangle's .poly file. Header "n 2 attributes markers(0|1)", n vertex
+ * lines "i x y [attributes] [marker]"; "segments markers(0|1)", segment lines
+ * "i a b [marker]"; "holes", hole lines "i x y"; optionally "regions", region lines
+ * "i x y attribute max_area". '#' starts a comment; numbering starts at 0 or 1 (the
+ * first vertex's number) and is consecutive. n = 0 means the vertices are in the
+ * .node file of the same name: then out->n is 0, segment endpoints are not range
+ * checked, and the caller attaches the vertices (lh_pslg_take_points). Diagnostics
+ * and statuses as lh_points_read ("NAME:LINE:COL: expected ..., found ...").
+ *
+ * lh_rings_read: polygons as JSON rings, the earcut fixtures' format:
+ * [[[x,y],[x,y],...], [[x,y],...], ...] — an outer ring then hole rings, each ring
+ * closed implicitly (a last point equal to the first is dropped). Every ring becomes
+ * a cycle of segments, even_odd is set.
+ */
+lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
+                       char *msg, size_t msg_size);
+lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
+                        char *msg, size_t msg_size);
+/* Moves p's coordinates, attributes and markers into g, which has none (g->n == 0),
+ * leaving p zeroed; p must have d = 2 and the same allocator hooks as g. Returns LH_OK
+ * or LH_ERR_INVALID_ARGUMENT. */
+lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p);
+/* Frees what a reader allocated (not g) and zeroes g; NULL or a zeroed g is a no-op. */
+void lh_pslg_free(lh_pslg *g);
 
 #ifdef __cplusplus
 }

@@ -7,3 +7,5 @@ int lh_version_number(void)
 }
 
 const char *lh_version_string(void) { return LH_VERSION_STRING; }
+
+int lh_index_bits(void) { return LH_INDEX_BITS; }
