@@ -700,6 +700,109 @@ lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p);
 /* Frees what a reader allocated (not g) and zeroes g; NULL or a zeroed g is a no-op. */
 void lh_pslg_free(lh_pslg *g);
 
+/* Options of lh_triangulate_pslg; lh_trimesh_options_default sets every default.
+ * The letters are Triangle's switches for the same thing. */
+typedef struct lh_trimesh_options {
+    const lh_allocator *alloc; /* NULL: malloc/free                                   */
+    int convex_hull;           /* -c: keep every triangle of the convex hull (holes
+                                  still carved); hull edges become segments (default 0) */
+    double min_angle;          /* -q: degrees; refine until every triangle's smallest
+                                  angle is at least this (0: no angle bound; at most
+                                  LH_TRIMESH_MAX_ANGLE) (default 0)                   */
+    double max_area;           /* -a<x>: refine until no triangle's area exceeds this
+                                  (<= 0: none) (default 0)                           */
+    int region_areas;          /* -a: the regions' maximum areas apply (default 0)   */
+    int region_attributes;     /* -A: each triangle carries its region's attribute
+                                  (default 0)                                        */
+    int conforming;            /* -D: split segments until every triangle is Delaunay
+                                  (no vertex inside any circumcircle) (default 0)     */
+    int boundary_steiner;      /* 1: Steiner points may split every segment (default);
+                                  0 (-Y): none on boundary segments; -1 (-YY): none on
+                                  any segment                                        */
+    size_t max_steiner;        /* -S: at most this many Steiner points (default
+                                  SIZE_MAX: no limit)                                */
+} lh_trimesh_options;
+
+#define LH_TRIMESH_MAX_ANGLE 40.0 /* degrees: beyond it refinement need not end */
+
+void lh_trimesh_options_default(lh_trimesh_options *opt);
+
+/*
+ * lh_triangulate_pslg: the constrained Delaunay triangulation (Chew 1989) of a PSLG,
+ * restricted to its domain, optionally refined (Ruppert 1995; Shewchuk 2002, "Delaunay
+ * refinement algorithms for triangular mesh generation"). Exact: every decision is an
+ * exact orient_2 or incircle, so every triangle is positively oriented, every segment
+ * is a union of edges, and every edge that is not on a segment is locally Delaunay
+ * (lh_trimesh_check). Steiner points are constructions, rounded once each: a point
+ * put on a segment is within an ulp of it, not necessarily exactly on it.
+ *
+ * Degenerate input, resolved and reported in lh_trimesh_stats: exact duplicate
+ * vertices are merged into the first (each later one stays a point, in no triangle);
+ * zero-length segments (after merging) are dropped; a segment overlapping another
+ * shares its edges; a vertex lying on a segment splits it; a hole or region seed
+ * outside the domain is ignored. Errors: segments that cross (LH_ERR_DEGENERATE,
+ * naming both), all vertices collinear or fewer than 3 distinct (LH_ERR_DEGENERATE),
+ * a flood from the outside or a hole that removes every triangle (an unclosed
+ * boundary: LH_ERR_DEGENERATE), a segment endpoint out of range or an option out of
+ * range (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), LH_ERR_NOMEM.
+ * msg (msg_size bytes, may be NULL) receives a one-line reason; when the PSLG came
+ * from a reader it starts with the line of the item at fault and a colon ("17:
+ * segment 3 crosses segment 5 (line 19)"), so "FILE:" + msg names the place. Items are
+ * numbered as in the file (from g->first_index).
+ */
+typedef struct lh_trimesh lh_trimesh;
+lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
+                              lh_trimesh **out, char *msg, size_t msg_size);
+void lh_trimesh_free(lh_trimesh *m);
+
+/* Points: the PSLG's vertices first, with their indices (merged duplicates too), then
+ * the Steiner points. Markers: a vertex's own, a Steiner point's segment's. */
+size_t lh_trimesh_point_count(const lh_trimesh *m);
+const double *lh_trimesh_points(const lh_trimesh *m);         /* 2 per point          */
+const lh_index *lh_trimesh_point_markers(const lh_trimesh *m);/* 1 per point          */
+int lh_trimesh_point_attr_count(const lh_trimesh *m);
+const double *lh_trimesh_point_attrs(const lh_trimesh *m);    /* interpolated; or NULL */
+/* Triangles counterclockwise; neighbour k opposite vertex k, -1 on the boundary. */
+size_t lh_trimesh_triangle_count(const lh_trimesh *m);
+const lh_index *lh_trimesh_triangles(const lh_trimesh *m);
+const lh_index *lh_trimesh_neighbors(const lh_trimesh *m);
+const double *lh_trimesh_triangle_attrs(const lh_trimesh *m); /* region_attributes: 1
+                                                                 per triangle; or NULL */
+/* Subsegments: the edges that lie on input segments (or, with convex_hull, on the
+ * hull), 2 points each, with the segment's marker (1 for hull edges and for segments
+ * without markers on the boundary, 0 inside); and the input segment each lies on (-1:
+ * a hull edge). */
+size_t lh_trimesh_segment_count(const lh_trimesh *m);
+const lh_index *lh_trimesh_segments(const lh_trimesh *m);
+const lh_index *lh_trimesh_segment_markers(const lh_trimesh *m);
+const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m);
+
+/* What happened, and the quality reached. Angles in degrees. */
+typedef struct lh_trimesh_stats {
+    size_t input_vertices, duplicates_merged, segments_dropped, segments_overlapping;
+    size_t holes_ignored, regions_ignored;
+    size_t steiner_points, steiner_on_segments;
+    size_t triangles, bad_triangles; /* bad: below min_angle or above an area bound at
+                                        the end (input angles, -S or -Y stopped them)   */
+    double min_angle, max_angle, min_area, max_area;
+    int steiner_limit_reached;
+} lh_trimesh_stats;
+void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out);
+/* The triangles still bad at the end (lh_trimesh_stats.bad_triangles of them). */
+const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
+
+/*
+ * lh_check_trimesh: exact check of a 2D triangulation of a domain — points (n, xy),
+ * triangles (3 indices each), subsegments (2 indices each): every triangle
+ * counterclockwise with positive area; edges shared by at most two triangles; every subsegment an
+ * edge; every edge on the boundary a subsegment (unless boundary_free); every edge
+ * not a subsegment locally Delaunay (incircle, exact). Returns LH_OK, or
+ * LH_ERR_INTERNAL with a reason in msg, LH_ERR_INVALID_ARGUMENT, LH_ERR_NOMEM.
+ */
+lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
+                           size_t seg_count, const lh_index *segs, int boundary_free,
+                           const lh_allocator *alloc, char *msg, size_t msg_size);
+
 #ifdef __cplusplus
 }
 #endif

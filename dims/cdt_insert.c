@@ -1,0 +1,254 @@
+/*
+ * cdt_insert.c — segment insertion into the 2D constrained Delaunay triangulation
+ * (m2.h). The walk from a collects the triangles the segment crosses and the
+ * vertices left and right of it; the two pseudo-polygons are retriangulated by
+ * Anglada's recursion (M. V. Anglada 1997, "An improved incremental algorithm for
+ * constructing restricted Delaunay triangulations", Computers & Graphics 21(2)):
+ * on base edge pq choose the polygon vertex c whose circle pqc holds no other; the
+ * triangle pqc splits the polygon in two. Every decision is an exact orient_2 or
+ * incircle; a vertex exactly on the segment splits it there (Shewchuk & Brown 2015
+ * §3). Cocircular ties keep the earlier vertex, so the result is deterministic.
+ */
+#include "m2.h"
+
+/* Triangles around vertex a: counterclockwise from vt[a] until back or at the
+ * boundary, then clockwise from vt[a]. */
+typedef struct fan {
+    lh_index a, t0, t;
+    int backward;
+} fan;
+
+static lh_index fan_first(const lh__m2 *m, fan *f, lh_index a)
+{
+    f->a = a;
+    f->t0 = f->t = m->vt[a];
+    f->backward = 0;
+    return f->t;
+}
+
+static lh_index fan_next(const lh__m2 *m, fan *f)
+{
+    const int i = lh__m2_vpos(m, f->t, f->a);
+    lh_index n = m->nb[3 * (size_t)f->t + (f->backward ? (i + 2) % 3 : (i + 1) % 3)];
+    if (!f->backward && n == f->t0) return -1;
+    if (n < 0 && !f->backward) {
+        f->backward = 1;
+        f->t = f->t0;
+        const int j = lh__m2_vpos(m, f->t, f->a);
+        n = m->nb[3 * (size_t)f->t + (j + 2) % 3];
+    }
+    f->t = n;
+    return n;
+}
+
+lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos)
+{
+    fan f;
+    for (lh_index t = fan_first(m, &f, a); t >= 0; t = fan_next(m, &f)) {
+        const int i = lh__m2_vpos(m, t, a);
+        if (m->v[3 * (size_t)t + (i + 1) % 3] == b) {
+            *pos = (i + 2) % 3;
+            return t;
+        }
+    }
+    return -1;
+}
+
+/* Whether u - a and b - a point the same way, given a, u, b collinear and distinct:
+ * each coordinate difference has its exact sign after rounding. */
+static int same_direction(const double *a, const double *u, const double *b)
+{
+    for (int j = 0; j < 2; j++)
+        if ((u[j] > a[j]) != (b[j] > a[j]) || (u[j] < a[j]) != (b[j] < a[j])) return 0;
+    return 1;
+}
+
+/* Marks edge t:pos (and its twin) as subsegment s. */
+static void mark_edge(lh__m2 *m, lh_index t, int pos, lh_index s)
+{
+    m->sg[3 * (size_t)t + pos] = s;
+    const lh_index n = m->nb[3 * (size_t)t + pos];
+    if (n >= 0) m->sg[3 * (size_t)n + lh__m2_npos(m, n, t)] = s;
+}
+
+/* Edge a->u or u->a exists: make it (part of) input segment parent. */
+static lh_status claim_edge(lh__m2 *m, lh_index t, int pos, lh_index a, lh_index u,
+                            lh_index parent)
+{
+    const lh_index s = m->sg[3 * (size_t)t + pos];
+    if (s >= 0) { /* overlapping input segments share the edge */
+        m->smul[s]++;
+        return LH_OK;
+    }
+    lh_index id;
+    lh_status st = lh__m2_add_subseg(m, a, u, parent, &id);
+    if (st == LH_OK) mark_edge(m, t, pos, id);
+    return st;
+}
+
+/* Triangulates the pseudo-polygon p, q, V[0..k-1] (counterclockwise) into c; the
+ * triangle on pq gets subsegment s on that edge. Ranges wait on m's scratch stack. */
+static lh_status retriangulate(lh__m2 *m, lh__m2_cavity *c, lh_index p, lh_index q,
+                               const lh_index *V, size_t k, lh_index s)
+{
+    typedef struct { lh_index p, q; size_t lo, hi; } range;
+    range work[64], *w = work;
+    size_t top = 0, cap = 64;
+    lh_status st = LH_OK;
+    range *heap = NULL;
+    work[top++] = (range){p, q, 0, k};
+    int first = 1;
+    while (top && st == LH_OK) {
+        const range r = w[--top];
+        if (r.lo == r.hi) continue;
+        size_t i = r.lo;
+        for (size_t j = r.lo + 1; j < r.hi; j++)
+            if (lh__m2_incircle(m, r.p, r.q, V[i], lh__m2_pt(m, V[j])) < 0) i = j;
+        const lh_index sg[3] = {-1, -1, first ? s : -1};
+        first = 0;
+        st = lh__m2_cavity_push_tri(m, c, r.p, r.q, V[i], sg);
+        if (top + 2 > cap) { /* deeper than 64 ranges: move to the heap */
+            range *h = lh__alloc(&m->al, 2 * cap * sizeof *h);
+            if (!h) { st = LH_ERR_NOMEM; break; }
+            for (size_t j = 0; j < top; j++) h[j] = w[j];
+            lh__free(&m->al, heap);
+            w = heap = h;
+            cap *= 2;
+        }
+        w[top++] = (range){V[i], r.q, r.lo, i};
+        w[top++] = (range){r.p, V[i], i + 1, r.hi};
+    }
+    lh__free(&m->al, heap);
+    return st;
+}
+
+/* The triangle at a whose wedge holds the direction to b: *u is a vertex of it on
+ * the ray a->b (then *pos names edge a-u), or -1 when the ray enters the interior. */
+static lh_index start_wedge(lh__m2 *m, lh_index a, lh_index b, lh_index *u, int *pos)
+{
+    fan f;
+    const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
+    for (lh_index t = fan_first(m, &f, a); t >= 0; t = fan_next(m, &f)) {
+        const int i = lh__m2_vpos(m, t, a);
+        const lh_index x = m->v[3 * (size_t)t + (i + 1) % 3], y = m->v[3 * (size_t)t + (i + 2) % 3];
+        const int ox = lh__m2_orient(m, a, x, b), oy = lh__m2_orient(m, a, y, b);
+        if (ox == 0 && same_direction(pa, lh__m2_pt(m, x), pb)) {
+            *u = x, *pos = (i + 2) % 3;
+            return t;
+        }
+        if (oy == 0 && same_direction(pa, lh__m2_pt(m, y), pb)) {
+            *u = y, *pos = (i + 1) % 3;
+            return t;
+        }
+        if (ox > 0 && oy < 0) {
+            *u = -1, *pos = i;
+            return t;
+        }
+    }
+    return -1;
+}
+
+static lh_status crossing(lh__m2 *m, lh_index s, lh_index parent, lh__m2_problem *pb)
+{
+    pb->kind = LH__M2_CROSSING;
+    pb->seg[0] = parent;
+    pb->seg[1] = m->sp[s];
+    return LH_ERR_DEGENERATE;
+}
+
+static lh_status chain_push(lh__m2 *m, lh__m2_cavity *c, int side, lh_index v)
+{
+    if (!lh__m2_grow(m, (void **)&c->chain[side], c->chain_count[side], &c->chain_cap[side],
+                     c->chain_count[side] + 1, sizeof(lh_index)))
+        return LH_ERR_NOMEM;
+    c->chain[side][c->chain_count[side]++] = v;
+    return LH_OK;
+}
+
+/* The position in triangle n of its vertex that is neither x nor y. */
+static int other_pos(const lh__m2 *m, lh_index n, lh_index x, lh_index y)
+{
+    const lh_index *v = m->v + 3 * (size_t)n;
+    return v[0] != x && v[0] != y ? 0 : v[1] != x && v[1] != y ? 1 : 2;
+}
+
+/* Walks from a towards b through the interior, from triangle t whose edge opposite
+ * a the segment crosses: c->dead gets the crossed triangles, c->chain[0] the
+ * vertices left of a->b and c->chain[1] those right of it, in the order met; *end
+ * is where the segment stops: b, or a vertex exactly on it (then strictly between). */
+static lh_status walk(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b, lh_index t,
+                      lh_index parent, lh_index *end, lh__m2_problem *pb)
+{
+    const int i = lh__m2_vpos(m, t, a);
+    lh_index right = m->v[3 * (size_t)t + (i + 1) % 3], left = m->v[3 * (size_t)t + (i + 2) % 3];
+    int pos = i;
+    lh__m2_cavity_clear(c);
+    c->chain_count[0] = c->chain_count[1] = 0;
+    lh_status st;
+    if ((st = chain_push(m, c, 0, left)) != LH_OK || (st = chain_push(m, c, 1, right)) != LH_OK)
+        return st;
+    for (;;) {
+        const lh_index s = m->sg[3 * (size_t)t + pos];
+        if (s >= 0) return crossing(m, s, parent, pb);
+        if ((st = lh__m2_cavity_push_dead(m, c, t)) != LH_OK) return st;
+        const lh_index n = m->nb[3 * (size_t)t + pos];
+        if (n < 0) return LH_ERR_INTERNAL; /* b is in the hull: the walk cannot leave it */
+        const lh_index v = m->v[3 * (size_t)n + lh__m2_npos(m, n, t)];
+        const int o = v == b ? 0 : lh__m2_orient(m, a, b, v);
+        if (o == 0) {
+            *end = v;
+            return lh__m2_cavity_push_dead(m, c, n);
+        }
+        if (o > 0) { /* v is left: the next crossed edge joins right and v */
+            pos = other_pos(m, n, right, v);
+            left = v;
+        } else {
+            pos = other_pos(m, n, left, v);
+            right = v;
+        }
+        if ((st = chain_push(m, c, o > 0 ? 0 : 1, v)) != LH_OK) return st;
+        t = n;
+    }
+}
+
+/* Replaces the crossed triangles by the two sides' triangulations, the segment
+ * a-end between them. */
+static lh_status fill(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index end, lh_index parent)
+{
+    lh_index s;
+    lh_status st = lh__m2_add_subseg(m, a, end, parent, &s);
+    if (st != LH_OK) return st;
+    lh_index *L = c->chain[0];
+    const size_t nl = c->chain_count[0];
+    for (size_t i = 0; i < nl / 2; i++) { /* left side: a, end, then the chain backwards */
+        const lh_index x = L[i];
+        L[i] = L[nl - 1 - i];
+        L[nl - 1 - i] = x;
+    }
+    if ((st = retriangulate(m, c, a, end, L, nl, s)) != LH_OK ||
+        (st = retriangulate(m, c, end, a, c->chain[1], c->chain_count[1], s)) != LH_OK)
+        return st;
+    return lh__m2_cavity_apply(m, c);
+}
+
+lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
+                                lh_index parent, lh__m2_problem *pb)
+{
+    while (a != b) {
+        lh_index u, end;
+        int pos;
+        const lh_index t = start_wedge(m, a, b, &u, &pos);
+        if (t < 0) return LH_ERR_INTERNAL;
+        lh_status st;
+        if (u >= 0) { /* an edge along the segment: a vertex on it, or b itself */
+            if ((st = claim_edge(m, t, pos, a, u, parent)) != LH_OK) return st;
+            a = u;
+            continue;
+        }
+        if ((st = walk(m, c, a, b, t, parent, &end, pb)) != LH_OK ||
+            (st = fill(m, c, a, end, parent)) != LH_OK)
+            return st;
+        a = end;
+    }
+    return LH_OK;
+}

@@ -1,0 +1,177 @@
+/*
+ * m2.h — the mutable 2D triangle mesh behind constrained Delaunay triangulation and
+ * quality refinement (dims/m2_*.c, dims/cdt_*.c, dims/refine*.c).
+ *
+ * Encoding (the engine's, in 2D): triangle t has vertices v[3t..3t+2] in
+ * counterclockwise order (orient_2 > 0, exactly), nb[3t+k] the triangle across the
+ * edge opposite v[3t+k] (-1: none — the domain's boundary), sg[3t+k] the subsegment
+ * lying on that edge (-1: unconstrained). Both triangles beside a subsegment name it.
+ * Edge k of t runs from v[3t+(k+1)%3] to v[3t+(k+2)%3]. A dead triangle has v[3t] = -1
+ * and sits on the free list (chained through nb[3t]).
+ *
+ * Subsegments: the pieces of input segments that are edges of the mesh; subsegment s
+ * joins sv[2s], sv[2s+1] and belongs to input segment sp[s] (whose marker it has).
+ * Points: the input vertices first, with their indices, then Steiner points; pseg[p]
+ * is the input segment a Steiner point was put on (-1 otherwise, and for input
+ * vertices); vt[p] is a triangle incident to p (-1 while p is not a vertex: merged
+ * duplicates, points in removed regions).
+ *
+ * Invariants kept by every operation: every live triangle is positively oriented;
+ * neighbour links are symmetric; every unconstrained interior edge is locally
+ * Delaunay (not strictly inside the opposite circumcircle) — so the mesh is a
+ * constrained Delaunay triangulation (Chew 1989) of its points and subsegments.
+ */
+#ifndef LH_M2_H
+#define LH_M2_H
+
+#include "lifthull.h"
+#include "lh_alloc.h"
+
+typedef struct lh__m2 {
+    lh_allocator al;
+    lh_pred *pred;
+    /* points */
+    size_t np, cap_p;
+    double *xy;          /* 2 per point                                       */
+    lh_index *pseg;      /* input segment of a Steiner point on a segment, or -1 */
+    lh_index *vt;        /* an incident live triangle, or -1                  */
+    int attr_count;
+    double *attr;        /* attr_count per point (interpolated for Steiner points) */
+    lh_index *pmark;     /* per point: boundary marker                        */
+    size_t n_input;      /* points 0..n_input-1 are the input vertices        */
+    /* triangles */
+    size_t nt, cap_t, live;
+    lh_index *v, *nb, *sg;
+    lh_index free_head;
+    double *tattr;       /* per triangle: regional attribute (domain pass), or NULL */
+    double *tarea;       /* per triangle: area bound, <= 0 none (domain pass), or NULL */
+    uint32_t *mark;      /* per triangle: visit epochs                        */
+    uint32_t epoch;
+    /* subsegments */
+    size_t ns, cap_s;
+    lh_index *sv, *sp;
+    uint32_t *smul;      /* input segments lying along the subsegment (overlaps: > 1) */
+    /* input segments' markers (n of them), borrowed from the caller's PSLG */
+    const lh_index *seg_marker;
+    lh_index walk_hint;
+} lh__m2;
+
+/* Growth and storage (m2_store.c). Each returns LH_OK or LH_ERR_NOMEM. */
+lh_status lh__m2_init(lh__m2 *m, const lh_allocator *al, size_t n, const double *xy,
+                      int attr_count, const double *attr, const lh_index *marker);
+void lh__m2_free(lh__m2 *m);
+lh_status lh__m2_add_point(lh__m2 *m, const double p[2], lh_index *out);
+lh_status lh__m2_reserve_tris(lh__m2 *m, size_t more);
+lh_index lh__m2_new_tri(lh__m2 *m); /* after lh__m2_reserve_tris */
+void lh__m2_kill_tri(lh__m2 *m, lh_index t);
+lh_status lh__m2_add_subseg(lh__m2 *m, lh_index a, lh_index b, lh_index parent,
+                            lh_index *out);
+uint32_t lh__m2_new_epoch(lh__m2 *m);
+
+static inline const double *lh__m2_pt(const lh__m2 *m, lh_index p) { return m->xy + 2 * (size_t)p; }
+/* orient_2 and the incircle test (< 0: d strictly inside circle abc, abc ccw), exact. */
+int lh__m2_orient(const lh__m2 *m, lh_index a, lh_index b, lh_index c);
+int lh__m2_orient_pt(const lh__m2 *m, lh_index a, lh_index b, const double *c);
+int lh__m2_incircle(const lh__m2 *m, lh_index a, lh_index b, lh_index c, const double *d);
+
+/* The position (0..2) of vertex p in triangle t, or -1. */
+static inline int lh__m2_vpos(const lh__m2 *m, lh_index t, lh_index p)
+{
+    const lh_index *v = m->v + 3 * (size_t)t;
+    return v[0] == p ? 0 : v[1] == p ? 1 : v[2] == p ? 2 : -1;
+}
+/* The position in triangle u of its edge shared with triangle t. */
+static inline int lh__m2_npos(const lh__m2 *m, lh_index u, lh_index t)
+{
+    const lh_index *n = m->nb + 3 * (size_t)u;
+    return n[0] == t ? 0 : n[1] == t ? 1 : 2;
+}
+
+/*
+ * Cavity retriangulation (m2_cavity.c), the one mechanism behind segment insertion
+ * and point insertion: the triangles `dead` are replaced by the triangles `tri`
+ * (3 vertices each, counterclockwise; `tsg` 3 subsegment ids each, -1 for none, or
+ * NULL). Every edge of a new triangle is linked to the new triangle across it, or
+ * to the live triangle that was across the same edge of a dead one (taking that
+ * edge's subsegment), or else gets -1. Returns LH_OK or LH_ERR_NOMEM (mesh
+ * unchanged).
+ */
+typedef struct lh__m2_cavity {
+    size_t dead_count, dead_cap;
+    lh_index *dead;
+    size_t tri_count, tri_cap;
+    lh_index *tri, *tsg;
+    /* scratch: boundary edges (x, y, outside triangle, subsegment) and edge records */
+    size_t bnd_count, bnd_cap;
+    lh_index *bnd;
+    size_t rec_cap;
+    lh_index *rec;     /* 3 per record: low vertex, high vertex, who */
+    size_t stack_count, stack_cap;
+    lh_index *stack;   /* for the callers' searches */
+    lh_index *chain[2];/* segment insertion: the vertices left and right of it */
+    size_t chain_count[2], chain_cap[2];
+} lh__m2_cavity;
+
+void lh__m2_cavity_free(lh__m2 *m, lh__m2_cavity *c);
+lh_status lh__m2_cavity_push_dead(lh__m2 *m, lh__m2_cavity *c, lh_index t);
+lh_status lh__m2_cavity_push_tri(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
+                                 lh_index d, const lh_index sg[3]);
+lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c);
+void lh__m2_cavity_clear(lh__m2_cavity *c);
+lh_status lh__m2_stack_push(lh__m2 *m, lh__m2_cavity *c, lh_index t);
+/* Grows an array of elements of size esz to hold need (doubling), keeping count. */
+int lh__m2_grow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need, size_t esz);
+
+/* Why a segment could not be inserted (cdt_insert.c). */
+typedef struct lh__m2_problem {
+    int kind;            /* LH__M2_CROSSING, or 0                                   */
+    lh_index seg[2];     /* the input segments involved                             */
+} lh__m2_problem;
+enum { LH__M2_CROSSING = 1 };
+
+/* Inserts input segment `parent` from vertex a to vertex b (Anglada 1997): the
+ * triangles it crosses are replaced by the constrained Delaunay triangulations of
+ * the two pseudo-polygons on its sides; vertices lying on it split it. A crossed
+ * subsegment: LH_ERR_DEGENERATE with *pb filled. */
+lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
+                                lh_index parent, lh__m2_problem *pb);
+/* The triangle holding the edge a->b (a before b counterclockwise), with *pos the
+ * edge's index in it; -1 when a->b is not an edge. */
+lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos);
+
+/* The outcome of a point insertion (m2_insert.c). */
+enum {
+    LH__M2_INSERTED = 0,  /* vertex is the new point                                  */
+    LH__M2_DUPLICATE,     /* p is vertex `vertex` already                             */
+    LH__M2_OUTSIDE,       /* the walk left the mesh                                   */
+    LH__M2_BLOCKED,       /* the walk met subsegment `blocked` first                  */
+    LH__M2_ENCROACHES,    /* p is inside the diametral circles of enc[0..enc_count-1],
+                             subsegments on the cavity's boundary (check_encroach)     */
+    LH__M2_REFUSED        /* the cavity is not star-shaped from p (rounding put p on
+                             or beyond a boundary edge): nothing changed              */
+};
+typedef struct lh__m2_ins {
+    int check_encroach;   /* in: refuse p when it encroaches a boundary subsegment    */
+    int result;           /* out: LH__M2_*                                            */
+    lh_index vertex, blocked;
+    size_t enc_count, enc_cap;
+    lh_index *enc;        /* scratch owned by the caller (lh__free with m->al)        */
+} lh__m2_ins;
+
+/* Inserts point p, found by a walk from triangle start; with split >= 0, p goes on
+ * subsegment split (a rounded point of it), which becomes a-p (keeping its id) and
+ * p-b. Returns LH_OK with r->result, or LH_ERR_NOMEM / LH_ERR_INTERNAL. */
+lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index start,
+                              lh_index split, lh__m2_ins *r);
+int lh__m2_encroaches(const lh__m2 *m, lh_index s, const double *p);
+
+/* Build from the Delaunay triangulation of the input vertices (m2_build.c). */
+lh_status lh__m2_from_delaunay(lh__m2 *m, const lh_tri *dt);
+
+/* Point location (m2_locate.c): a triangle whose closed region holds p, found by a
+ * walk from `start` that never crosses a subsegment when `stop_at_segments`; then
+ * *blocked is the subsegment met (else -1) and the result the triangle before it. */
+lh_index lh__m2_locate(lh__m2 *m, lh_index start, const double *p, int stop_at_segments,
+                       lh_index *blocked);
+
+#endif

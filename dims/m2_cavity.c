@@ -1,0 +1,199 @@
+/*
+ * m2_cavity.c — replacing a set of triangles by another that covers the same region
+ * (m2.h, lh__m2_cavity): the one step behind segment insertion (Anglada 1997; Shewchuk
+ * & Brown 2015, "Fast segment insertion and incremental construction of constrained
+ * Delaunay triangulations") and Bowyer-Watson point insertion (Bowyer 1981; Watson
+ * 1981). The caller decides the geometry; this file only relinks: new triangles'
+ * edges are paired by their vertex pair (sorted records), and an edge of a new
+ * triangle that runs the same way as a boundary edge of the cavity takes that edge's
+ * outside neighbour and subsegment.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "m2.h"
+
+int lh__m2_grow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need, size_t esz)
+{
+    if (need <= *cap) return 1;
+    size_t c = *cap ? *cap : 32;
+    while (c < need) c *= 2;
+    if (c > SIZE_MAX / esz) return 0;
+    void *q = lh__alloc(&m->al, c * esz);
+    if (!q) return 0;
+    if (count) memcpy(q, *arr, count * esz);
+    lh__free(&m->al, *arr);
+    *arr = q;
+    *cap = c;
+    return 1;
+}
+
+void lh__m2_cavity_free(lh__m2 *m, lh__m2_cavity *c)
+{
+    lh__free(&m->al, c->dead);
+    lh__free(&m->al, c->tri);
+    lh__free(&m->al, c->tsg);
+    lh__free(&m->al, c->bnd);
+    lh__free(&m->al, c->rec);
+    lh__free(&m->al, c->stack);
+    lh__free(&m->al, c->chain[0]);
+    lh__free(&m->al, c->chain[1]);
+    memset(c, 0, sizeof *c);
+}
+
+void lh__m2_cavity_clear(lh__m2_cavity *c) { c->dead_count = c->tri_count = c->bnd_count = 0; }
+
+lh_status lh__m2_cavity_push_dead(lh__m2 *m, lh__m2_cavity *c, lh_index t)
+{
+    if (!lh__m2_grow(m, (void **)&c->dead, c->dead_count, &c->dead_cap, c->dead_count + 1,
+                     sizeof(lh_index)))
+        return LH_ERR_NOMEM;
+    c->dead[c->dead_count++] = t;
+    return LH_OK;
+}
+
+lh_status lh__m2_stack_push(lh__m2 *m, lh__m2_cavity *c, lh_index t)
+{
+    if (!lh__m2_grow(m, (void **)&c->stack, c->stack_count, &c->stack_cap, c->stack_count + 1,
+                     sizeof(lh_index)))
+        return LH_ERR_NOMEM;
+    c->stack[c->stack_count++] = t;
+    return LH_OK;
+}
+
+lh_status lh__m2_cavity_push_tri(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
+                                 lh_index d, const lh_index sg[3])
+{
+    size_t cap = c->tri_cap;
+    if (!lh__m2_grow(m, (void **)&c->tri, 3 * c->tri_count, &cap, 3 * (c->tri_count + 1),
+                     sizeof(lh_index)))
+        return LH_ERR_NOMEM;
+    size_t cap2 = c->tri_cap;
+    if (!lh__m2_grow(m, (void **)&c->tsg, 3 * c->tri_count, &cap2, 3 * (c->tri_count + 1),
+                     sizeof(lh_index)))
+        return LH_ERR_NOMEM;
+    c->tri_cap = cap < cap2 ? cap : cap2;
+    lh_index *v = c->tri + 3 * c->tri_count, *s = c->tsg + 3 * c->tri_count;
+    v[0] = a, v[1] = b, v[2] = d;
+    for (int k = 0; k < 3; k++) s[k] = sg ? sg[k] : -1;
+    c->tri_count++;
+    return LH_OK;
+}
+
+static int rec_less(const lh_index *x, const lh_index *y)
+{
+    return x[0] != y[0] ? x[0] < y[0] : x[1] != y[1] ? x[1] < y[1] : x[2] < y[2];
+}
+
+static int rec_cmp(const void *x, const void *y)
+{
+    return rec_less(x, y) ? -1 : rec_less(y, x) ? 1 : 0;
+}
+
+/* Sorts the records (3 lh_index each): insertion sort for the usual few dozen. */
+static void sort_records(lh_index *r, size_t n)
+{
+    if (n > 48) {
+        qsort(r, n, 3 * sizeof *r, rec_cmp);
+        return;
+    }
+    for (size_t i = 1; i < n; i++) {
+        lh_index t[3] = {r[3 * i], r[3 * i + 1], r[3 * i + 2]};
+        size_t j = i;
+        for (; j > 0 && rec_less(t, r + 3 * (j - 1)); j--) memcpy(r + 3 * j, r + 3 * (j - 1), sizeof t);
+        memcpy(r + 3 * j, t, sizeof t);
+    }
+}
+
+static void put_record(lh_index *r, lh_index x, lh_index y, lh_index who)
+{
+    r[0] = x < y ? x : y;
+    r[1] = x < y ? y : x;
+    r[2] = who;
+}
+
+/* The cavity's boundary: edges of dead triangles whose other side is not dead. */
+static lh_status collect_boundary(lh__m2 *m, lh__m2_cavity *c, uint32_t e)
+{
+    c->bnd_count = 0;
+    for (size_t i = 0; i < c->dead_count; i++) {
+        const size_t t = (size_t)c->dead[i];
+        for (int k = 0; k < 3; k++) {
+            const lh_index n = m->nb[3 * t + k];
+            if (n >= 0 && m->mark[n] == e) continue;
+            if (!lh__m2_grow(m, (void **)&c->bnd, 5 * c->bnd_count, &c->bnd_cap,
+                             5 * (c->bnd_count + 1), sizeof(lh_index)))
+                return LH_ERR_NOMEM;
+            lh_index *b = c->bnd + 5 * c->bnd_count++;
+            b[0] = m->v[3 * t + (k + 1) % 3];
+            b[1] = m->v[3 * t + (k + 2) % 3];
+            b[2] = n;
+            b[3] = m->sg[3 * t + k];
+            b[4] = n >= 0 ? lh__m2_npos(m, n, (lh_index)t) : -1;
+        }
+    }
+    return LH_OK;
+}
+
+lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
+{
+    const uint32_t e = lh__m2_new_epoch(m);
+    for (size_t i = 0; i < c->dead_count; i++) m->mark[c->dead[i]] = e;
+    lh_status st = collect_boundary(m, c, e);
+    if (st != LH_OK) return st;
+    const size_t nr = 3 * c->tri_count + c->bnd_count;
+    if (!lh__m2_grow(m, (void **)&c->rec, 0, &c->rec_cap, 3 * nr, sizeof(lh_index)))
+        return LH_ERR_NOMEM;
+    if ((st = lh__m2_reserve_tris(m, c->tri_count)) != LH_OK) return st;
+    size_t r = 0;
+    for (size_t i = 0; i < c->tri_count; i++)
+        for (int k = 0; k < 3; k++)
+            put_record(c->rec + 3 * r++, c->tri[3 * i + (k + 1) % 3], c->tri[3 * i + (k + 2) % 3],
+                       (lh_index)(3 * i + k));
+    for (size_t j = 0; j < c->bnd_count; j++)
+        put_record(c->rec + 3 * r++, c->bnd[5 * j], c->bnd[5 * j + 1], -(lh_index)j - 1);
+    sort_records(c->rec, nr);
+
+    /* a cavity never crosses a subsegment, so it lies in one region */
+    const double rattr = m->tattr && c->dead_count ? m->tattr[c->dead[0]] : 0;
+    const double rarea = m->tarea && c->dead_count ? m->tarea[c->dead[0]] : 0;
+    for (size_t i = 0; i < c->dead_count; i++) lh__m2_kill_tri(m, c->dead[i]);
+    lh_index *id = c->stack; /* new triangle ids: reuse the stack's storage */
+    c->stack_count = 0;
+    for (size_t i = 0; i < c->tri_count; i++) {
+        if ((st = lh__m2_stack_push(m, c, lh__m2_new_tri(m))) != LH_OK) return st;
+        id = c->stack;
+        const size_t t = (size_t)id[i];
+        if (m->tattr) m->tattr[t] = rattr, m->tarea[t] = rarea;
+        for (int k = 0; k < 3; k++) {
+            m->v[3 * t + k] = c->tri[3 * i + k];
+            m->sg[3 * t + k] = c->tsg[3 * i + k];
+            m->nb[3 * t + k] = -1;
+            m->vt[c->tri[3 * i + k]] = (lh_index)t;
+        }
+    }
+    /* pair the records: new-new (opposite directions) or new-boundary (same direction) */
+    for (size_t i = 0; i < nr;) {
+        size_t j = i + 1;
+        while (j < nr && c->rec[3 * j] == c->rec[3 * i] && c->rec[3 * j + 1] == c->rec[3 * i + 1]) j++;
+        if (j - i == 2) {
+            const lh_index a = c->rec[3 * i + 2], b = c->rec[3 * i + 5]; /* a < b: boundary first */
+            if (b < 0) return LH_ERR_INTERNAL; /* two boundary edges alike */
+            const size_t tb = (size_t)id[b / 3];
+            if (a >= 0) {
+                const size_t ta = (size_t)id[a / 3];
+                m->nb[3 * ta + a % 3] = (lh_index)tb;
+                m->nb[3 * tb + b % 3] = (lh_index)ta;
+            } else {
+                const lh_index *bd = c->bnd + 5 * (size_t)(-a - 1), n = bd[2];
+                m->nb[3 * tb + b % 3] = n;
+                m->sg[3 * tb + b % 3] = bd[3];
+                if (n >= 0) m->nb[3 * (size_t)n + bd[4]] = (lh_index)tb;
+            }
+        } else if (j - i != 1 || (c->rec[3 * i + 2] < 0 && c->bnd[5 * (size_t)(-c->rec[3 * i + 2] - 1) + 2] >= 0)) {
+            return LH_ERR_INTERNAL; /* an edge on three sides, or an uncovered live edge */
+        }
+        i = j;
+    }
+    return LH_OK;
+}

@@ -1,0 +1,152 @@
+/*
+ * m2_insert.c — Bowyer-Watson insertion of a point into the constrained Delaunay
+ * triangulation (Bowyer 1981; Watson 1981; constrained: the cavity never crosses a
+ * subsegment, Chew 1989). The cavity is the triangles reachable from the one holding
+ * p whose circumcircles hold p strictly (exact incircle), so it is star-shaped from
+ * p; that is checked anyway (exact orient_2 on every new triangle) and a point that
+ * fails it is refused, leaving the mesh as it was. A point splitting subsegment s
+ * starts from both triangles beside s and keeps the two halves as subsegments.
+ */
+#include <math.h>
+
+#include "m2.h"
+
+/* p strictly inside the diametral circle of subsegment s (Ruppert 1995). */
+int lh__m2_encroaches(const lh__m2 *m, lh_index s, const double *p)
+{
+    const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *b = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
+    return (a[0] - p[0]) * (b[0] - p[0]) + (a[1] - p[1]) * (b[1] - p[1]) < 0;
+}
+
+static lh_status grow_cavity(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index split,
+                             uint32_t e, lh__m2_ins *r)
+{
+    lh_status st;
+    for (size_t i = 0; i < c->dead_count; i++) {
+        const size_t t = (size_t)c->dead[i];
+        for (int k = 0; k < 3; k++) {
+            const lh_index n = m->nb[3 * t + k], s = m->sg[3 * t + k];
+            if (n >= 0 && m->mark[n] == e) continue;
+            if (s >= 0) {
+                if (s != split && r->check_encroach && lh__m2_encroaches(m, s, p)) {
+                    if (!lh__m2_grow(m, (void **)&r->enc, r->enc_count, &r->enc_cap,
+                                     r->enc_count + 1, sizeof(lh_index)))
+                        return LH_ERR_NOMEM;
+                    r->enc[r->enc_count++] = s;
+                }
+                continue;
+            }
+            if (n < 0) continue;
+            const lh_index *v = m->v + 3 * (size_t)n;
+            if (lh__m2_incircle(m, v[0], v[1], v[2], p) >= 0) continue;
+            m->mark[n] = e;
+            if ((st = lh__m2_cavity_push_dead(m, c, n)) != LH_OK) return st;
+        }
+    }
+    return LH_OK;
+}
+
+/* The new triangles: p joined to every boundary edge of the cavity but s's. */
+static lh_status fan(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index pi,
+                     lh_index split, const lh_index half[2], uint32_t e, int *bad)
+{
+    const lh_index sa = split >= 0 ? m->sv[2 * (size_t)split] : -1;
+    const lh_index sb = split >= 0 ? m->sv[2 * (size_t)split + 1] : -1;
+    *bad = 0;
+    for (size_t i = 0; i < c->dead_count; i++) {
+        const size_t t = (size_t)c->dead[i];
+        for (int k = 0; k < 3; k++) {
+            const lh_index n = m->nb[3 * t + k];
+            if (n >= 0 && m->mark[n] == e) continue;
+            if (split >= 0 && m->sg[3 * t + k] == split) continue;
+            const lh_index x = m->v[3 * t + (k + 1) % 3], y = m->v[3 * t + (k + 2) % 3];
+            if (pi < 0) { /* first pass: geometry only */
+                if (lh__m2_orient_pt(m, x, y, p) <= 0) *bad = 1;
+                continue;
+            }
+            /* edge opposite x is y-p, opposite y is p-x */
+            lh_index sg[3] = {-1, -1, -1};
+            if (split >= 0) {
+                sg[0] = y == sa ? half[0] : y == sb ? half[1] : -1;
+                sg[1] = x == sa ? half[0] : x == sb ? half[1] : -1;
+            }
+            lh_status st = lh__m2_cavity_push_tri(m, c, x, y, pi, sg);
+            if (st != LH_OK) return st;
+        }
+    }
+    return LH_OK;
+}
+
+lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index start,
+                              lh_index split, lh__m2_ins *r)
+{
+    r->result = LH__M2_INSERTED;
+    r->enc_count = 0;
+    r->vertex = -1;
+    lh__m2_cavity_clear(c);
+    const uint32_t e = lh__m2_new_epoch(m);
+    lh_status st;
+    if (split >= 0) {
+        int pos;
+        const lh_index a = m->sv[2 * (size_t)split], b = m->sv[2 * (size_t)split + 1];
+        lh_index t = lh__m2_find_edge(m, a, b, &pos);
+        if (t < 0) t = lh__m2_find_edge(m, b, a, &pos);
+        if (t < 0) return LH_ERR_INTERNAL;
+        const lh_index n = m->nb[3 * (size_t)t + pos];
+        m->mark[t] = e;
+        if ((st = lh__m2_cavity_push_dead(m, c, t)) != LH_OK) return st;
+        if (n >= 0) {
+            m->mark[n] = e;
+            if ((st = lh__m2_cavity_push_dead(m, c, n)) != LH_OK) return st;
+        }
+    } else {
+        lh_index blocked;
+        const lh_index t = lh__m2_locate(m, start, p, 1, &blocked);
+        if (t < 0 || blocked >= 0) {
+            r->result = t < 0 ? LH__M2_OUTSIDE : LH__M2_BLOCKED;
+            r->blocked = blocked;
+            return LH_OK;
+        }
+        const lh_index *v = m->v + 3 * (size_t)t;
+        for (int k = 0; k < 3; k++) {
+            const double *q = lh__m2_pt(m, v[k]);
+            if (q[0] == p[0] && q[1] == p[1]) {
+                r->result = LH__M2_DUPLICATE;
+                r->vertex = v[k];
+                return LH_OK;
+            }
+        }
+        m->mark[t] = e;
+        if ((st = lh__m2_cavity_push_dead(m, c, t)) != LH_OK) return st;
+    }
+    if ((st = grow_cavity(m, c, p, split, e, r)) != LH_OK) return st;
+    if (r->enc_count) {
+        r->result = LH__M2_ENCROACHES;
+        return LH_OK;
+    }
+    int bad;
+    if ((st = fan(m, c, p, -1, split, NULL, e, &bad)) != LH_OK) return st;
+    if (bad) {
+        r->result = LH__M2_REFUSED;
+        return LH_OK;
+    }
+    lh_index pi, half[2] = {-1, -1};
+    if ((st = lh__m2_add_point(m, p, &pi)) != LH_OK) return st;
+    if (split >= 0) {
+        const lh_index b = m->sv[2 * (size_t)split + 1];
+        if ((st = lh__m2_add_subseg(m, pi, b, m->sp[split], &half[1])) != LH_OK) return st;
+        m->smul[half[1]] = m->smul[split];
+        m->sv[2 * (size_t)split + 1] = pi; /* split keeps a-p */
+        half[0] = split;
+        /* fan() compares with the old endpoints: give it b back for the pass */
+        m->sv[2 * (size_t)split + 1] = b;
+        if ((st = fan(m, c, p, pi, split, half, e, &bad)) != LH_OK) return st;
+        m->sv[2 * (size_t)split + 1] = pi;
+        m->pseg[pi] = m->sp[split];
+    } else if ((st = fan(m, c, p, pi, -1, half, e, &bad)) != LH_OK) {
+        return st;
+    }
+    if ((st = lh__m2_cavity_apply(m, c)) != LH_OK) return st;
+    r->vertex = pi;
+    return LH_OK;
+}

@@ -1,0 +1,174 @@
+/*
+ * m2_store.c — storage of the 2D mesh (m2.h): arrays that double when full, a free
+ * list of triangle slots, visit epochs, and the exact predicates on its points.
+ */
+#include <string.h>
+
+#include "m2.h"
+
+/* Replaces *arr (count elements of size esz) by a copy with room for cap. */
+static int grow(lh__m2 *m, void **arr, size_t count, size_t cap, size_t esz)
+{
+    if (cap > SIZE_MAX / esz) return 0;
+    void *q = lh__alloc(&m->al, cap * esz);
+    if (!q) return 0;
+    if (count) memcpy(q, *arr, count * esz);
+    lh__free(&m->al, *arr);
+    *arr = q;
+    return 1;
+}
+
+static size_t next_cap(size_t cap, size_t need)
+{
+    size_t c = cap ? cap : 16;
+    while (c < need) c = c > SIZE_MAX / 2 ? need : 2 * c;
+    return c;
+}
+
+static lh_status reserve_points(lh__m2 *m, size_t need)
+{
+    if (need <= m->cap_p) return LH_OK;
+    if (need >= (size_t)LH_INDEX_MAX) return LH_ERR_TOO_LARGE;
+    const size_t c = next_cap(m->cap_p, need), n = m->np;
+    if (!grow(m, (void **)&m->xy, 2 * n, 2 * c, sizeof(double)) ||
+        !grow(m, (void **)&m->pseg, n, c, sizeof(lh_index)) ||
+        !grow(m, (void **)&m->vt, n, c, sizeof(lh_index)) ||
+        !grow(m, (void **)&m->pmark, n, c, sizeof(lh_index)) ||
+        (m->attr_count && !grow(m, (void **)&m->attr, n * (size_t)m->attr_count,
+                                c * (size_t)m->attr_count, sizeof(double))))
+        return LH_ERR_NOMEM;
+    m->cap_p = c;
+    return LH_OK;
+}
+
+lh_status lh__m2_init(lh__m2 *m, const lh_allocator *al, size_t n, const double *xy,
+                      int attr_count, const double *attr, const lh_index *marker)
+{
+    memset(m, 0, sizeof *m);
+    m->al = *al;
+    m->free_head = -1;
+    m->walk_hint = -1;
+    m->attr_count = attr_count;
+    lh_status st = lh_pred_create(al, &m->pred);
+    if (st != LH_OK) return st;
+    if ((st = reserve_points(m, n + n / 4 + 16)) != LH_OK) return st;
+    memcpy(m->xy, xy, 2 * n * sizeof(double));
+    for (size_t i = 0; i < n; i++) {
+        m->pseg[i] = -1;
+        m->vt[i] = -1;
+        m->pmark[i] = marker ? marker[i] : 0;
+    }
+    if (attr_count) memcpy(m->attr, attr, n * (size_t)attr_count * sizeof(double));
+    m->np = m->n_input = n;
+    return LH_OK;
+}
+
+void lh__m2_free(lh__m2 *m)
+{
+    void *arrs[] = {m->xy, m->pseg, m->vt, m->attr, m->pmark, m->v, m->nb, m->sg,
+                    m->tattr, m->tarea, m->mark, m->sv, m->sp, m->smul};
+    for (size_t i = 0; i < sizeof arrs / sizeof arrs[0]; i++) lh__free(&m->al, arrs[i]);
+    lh_pred_free(m->pred);
+    memset(m, 0, sizeof *m);
+}
+
+lh_status lh__m2_add_point(lh__m2 *m, const double p[2], lh_index *out)
+{
+    lh_status st = reserve_points(m, m->np + 1);
+    if (st != LH_OK) return st;
+    const size_t i = m->np++;
+    m->xy[2 * i] = p[0];
+    m->xy[2 * i + 1] = p[1];
+    m->pseg[i] = -1;
+    m->vt[i] = -1;
+    m->pmark[i] = 0;
+    for (int a = 0; a < m->attr_count; a++) m->attr[i * (size_t)m->attr_count + a] = 0;
+    *out = (lh_index)i;
+    return LH_OK;
+}
+
+lh_status lh__m2_reserve_tris(lh__m2 *m, size_t more)
+{
+    if (m->cap_t - m->live >= more) return LH_OK; /* free slots: the list and the tail */
+    const size_t need = m->nt + more;
+    if (need >= (size_t)LH_INDEX_MAX / 4) return LH_ERR_TOO_LARGE;
+    const size_t c = next_cap(m->cap_t, need), n = m->nt;
+    if (!grow(m, (void **)&m->v, 3 * n, 3 * c, sizeof(lh_index)) ||
+        !grow(m, (void **)&m->nb, 3 * n, 3 * c, sizeof(lh_index)) ||
+        !grow(m, (void **)&m->sg, 3 * n, 3 * c, sizeof(lh_index)) ||
+        !grow(m, (void **)&m->mark, n, c, sizeof(uint32_t)) ||
+        (m->tattr && !grow(m, (void **)&m->tattr, n, c, sizeof(double))) ||
+        (m->tarea && !grow(m, (void **)&m->tarea, n, c, sizeof(double))))
+        return LH_ERR_NOMEM;
+    m->cap_t = c;
+    return LH_OK;
+}
+
+lh_index lh__m2_new_tri(lh__m2 *m)
+{
+    lh_index t;
+    if (m->free_head >= 0) {
+        t = m->free_head;
+        m->free_head = m->nb[3 * (size_t)t];
+    } else {
+        t = (lh_index)m->nt++;
+    }
+    m->mark[t] = 0;
+    m->live++;
+    return t;
+}
+
+void lh__m2_kill_tri(lh__m2 *m, lh_index t)
+{
+    m->v[3 * (size_t)t] = -1;
+    m->nb[3 * (size_t)t] = m->free_head;
+    m->free_head = t;
+    m->live--;
+}
+
+lh_status lh__m2_add_subseg(lh__m2 *m, lh_index a, lh_index b, lh_index parent,
+                            lh_index *out)
+{
+    if (m->ns == m->cap_s) {
+        const size_t c = next_cap(m->cap_s, m->ns + 1);
+        if (c >= (size_t)LH_INDEX_MAX) return LH_ERR_TOO_LARGE;
+        if (!grow(m, (void **)&m->sv, 2 * m->ns, 2 * c, sizeof(lh_index)) ||
+            !grow(m, (void **)&m->sp, m->ns, c, sizeof(lh_index)) ||
+            !grow(m, (void **)&m->smul, m->ns, c, sizeof(uint32_t)))
+            return LH_ERR_NOMEM;
+        m->cap_s = c;
+    }
+    const size_t s = m->ns++;
+    m->sv[2 * s] = a;
+    m->sv[2 * s + 1] = b;
+    m->sp[s] = parent;
+    m->smul[s] = 1;
+    *out = (lh_index)s;
+    return LH_OK;
+}
+
+uint32_t lh__m2_new_epoch(lh__m2 *m)
+{
+    if (++m->epoch == UINT32_MAX) {
+        memset(m->mark, 0, m->nt * sizeof *m->mark);
+        m->epoch = 1;
+    }
+    return m->epoch;
+}
+
+int lh__m2_orient_pt(const lh__m2 *m, lh_index a, lh_index b, const double *c)
+{
+    const double *p[3] = {lh__m2_pt(m, a), lh__m2_pt(m, b), c};
+    return lh_orient(m->pred, 2, p);
+}
+
+int lh__m2_orient(const lh__m2 *m, lh_index a, lh_index b, lh_index c)
+{
+    return lh__m2_orient_pt(m, a, b, lh__m2_pt(m, c));
+}
+
+int lh__m2_incircle(const lh__m2 *m, lh_index a, lh_index b, lh_index c, const double *d)
+{
+    const double *p[4] = {lh__m2_pt(m, a), lh__m2_pt(m, b), lh__m2_pt(m, c), d};
+    return lh_insphere(m->pred, 2, p);
+}

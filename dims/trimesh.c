@@ -1,0 +1,315 @@
+/*
+ * trimesh.c — lh_triangulate_pslg: the 2D meshing pipeline and its result handle.
+ *   1. the Delaunay triangulation of the vertices (lh_delaunay, exact; duplicates
+ *      merged there);
+ *   2. the segments inserted in input order (cdt_insert.c);
+ *   3. the domain carved and its regions marked (cdt_domain.c);
+ *   4. quality refinement when asked (refine.c);
+ *   5. the arrays of the handle, numbered afresh.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "m2.h"
+#include "refine.h"
+
+struct lh_trimesh {
+    lh_allocator al;
+    size_t np, nt, ns;
+    int na;
+    double *xy, *pattr, *tattr;
+    lh_index *pmark, *tri, *nbr, *seg, *smark, *spar, *bad;
+    lh_trimesh_stats stats;
+};
+
+void lh_trimesh_options_default(lh_trimesh_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->boundary_steiner = 1;
+    o->max_steiner = SIZE_MAX;
+}
+
+/* msg = "LINE: text" when the item has a line, else "text". */
+static void say(char *msg, size_t size, const size_t *lines, size_t item, const char *fmt, ...)
+{
+    if (!msg || !size) return;
+    int k = 0;
+    if (lines) k = snprintf(msg, size, "%zu: ", lines[item]);
+    if (k < 0 || (size_t)k >= size) k = 0;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg + k, size - (size_t)k, fmt, ap);
+    va_end(ap);
+}
+
+static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char *msg, size_t size)
+{
+    const long long base = g->first_index;
+    if ((g->n && !g->xy) || (g->segment_count && !g->segments) || (g->hole_count && !g->holes) ||
+        (g->region_count && !g->regions) || (g->attr_count < 0) || (g->attr_count && g->n && !g->attr)) {
+        say(msg, size, NULL, 0, "an array of the PSLG is missing");
+        return LH_ERR_INVALID_ARGUMENT;
+    }
+    if (!(o->min_angle >= 0 && o->min_angle <= LH_TRIMESH_MAX_ANGLE) || isnan(o->max_area)) {
+        say(msg, size, NULL, 0, "minimum angle %g outside 0..%g degrees", o->min_angle, LH_TRIMESH_MAX_ANGLE);
+        return LH_ERR_INVALID_ARGUMENT;
+    }
+    size_t bad;
+    if (lh_coords_validate(2, g->n, g->xy, &bad) == LH_ERR_NONFINITE) {
+        say(msg, size, g->vertex_line, bad / 2, "vertex %lld: coordinate is NaN or infinite", base + (long long)(bad / 2));
+        return LH_ERR_NONFINITE;
+    }
+    for (size_t s = 0; s < g->segment_count; s++)
+        for (int j = 0; j < 2; j++) {
+            const lh_index v = g->segments[2 * s + j];
+            if (v < 0 || (size_t)v >= g->n) {
+                say(msg, size, g->segment_line, s, "segment %lld: endpoint %lld is not a vertex (%lld..%lld)",
+                    base + (long long)s, base + (long long)v, base, base + (long long)g->n - 1);
+                return LH_ERR_INVALID_ARGUMENT;
+            }
+        }
+    if (lh_coords_validate(2, g->hole_count, g->holes, &bad) == LH_ERR_NONFINITE) {
+        say(msg, size, g->hole_line, bad / 2, "hole %lld: coordinate is NaN or infinite", base + (long long)(bad / 2));
+        return LH_ERR_NONFINITE;
+    }
+    if (lh_coords_validate(4, g->region_count, g->regions, &bad) == LH_ERR_NONFINITE) {
+        say(msg, size, g->region_line, bad / 4, "region %lld: NaN or infinity", base + (long long)(bad / 4));
+        return LH_ERR_NONFINITE;
+    }
+    return LH_OK;
+}
+
+/* Steps 1-2: Delaunay of the vertices, then the segments. */
+static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, const lh_tri *dt,
+                           lh_trimesh_stats *st_out, char *msg, size_t size)
+{
+    const lh_index *dup = lh_tri_duplicate_of(dt);
+    lh_status st = lh__m2_from_delaunay(m, dt);
+    if (st != LH_OK) return st;
+    const long long base = g->first_index;
+    for (size_t s = 0; s < g->segment_count; s++) {
+        const lh_index a = dup[g->segments[2 * s]], b = dup[g->segments[2 * s + 1]];
+        if (a == b) {
+            st_out->segments_dropped++;
+            continue;
+        }
+        const size_t before = m->ns;
+        lh__m2_problem pb = {0, {-1, -1}};
+        st = lh__m2_insert_segment(m, c, a, b, (lh_index)s, &pb);
+        if (st == LH_ERR_DEGENERATE && pb.kind == LH__M2_CROSSING) {
+            const size_t o = (size_t)pb.seg[1];
+            if (g->segment_line)
+                say(msg, size, g->segment_line, s, "segment %lld crosses segment %lld (line %zu)",
+                    base + (long long)s, base + (long long)o, g->segment_line[o]);
+            else
+                say(msg, size, NULL, 0, "segment %lld crosses segment %lld", base + (long long)s, base + (long long)o);
+            return st;
+        }
+        if (st != LH_OK) return st;
+        if (m->ns == before) st_out->segments_overlapping++;
+    }
+    return LH_OK;
+}
+
+/* Step 5: the handle's arrays from the mesh's live triangles. */
+static lh_status harvest(lh_trimesh *r, lh__m2 *m)
+{
+    lh_index *map = lh__alloc(&r->al, (m->nt ? m->nt : 1) * sizeof *map);
+    lh_index *smap = lh__alloc(&r->al, (m->ns ? m->ns : 1) * sizeof *smap);
+    r->np = m->np, r->nt = m->live, r->na = m->attr_count;
+    r->xy = lh__alloc(&r->al, (r->np ? r->np : 1) * 2 * sizeof(double));
+    r->pmark = lh__alloc(&r->al, (r->np ? r->np : 1) * sizeof(lh_index));
+    r->tri = lh__alloc(&r->al, (r->nt ? r->nt : 1) * 3 * sizeof(lh_index));
+    r->nbr = lh__alloc(&r->al, (r->nt ? r->nt : 1) * 3 * sizeof(lh_index));
+    r->seg = lh__alloc(&r->al, (m->ns ? m->ns : 1) * 2 * sizeof(lh_index));
+    r->smark = lh__alloc(&r->al, (m->ns ? m->ns : 1) * sizeof(lh_index));
+    r->spar = lh__alloc(&r->al, (m->ns ? m->ns : 1) * sizeof(lh_index));
+    if (r->na) r->pattr = lh__alloc(&r->al, r->np * (size_t)r->na * sizeof(double));
+    if (m->tattr) r->tattr = lh__alloc(&r->al, (r->nt ? r->nt : 1) * sizeof(double));
+    lh_status st = LH_ERR_NOMEM;
+    if (!map || !smap || !r->xy || !r->pmark || !r->tri || !r->nbr || !r->seg || !r->smark ||
+        !r->spar || (r->na && !r->pattr) || (m->tattr && !r->tattr))
+        goto done;
+    memcpy(r->xy, m->xy, 2 * r->np * sizeof(double));
+    if (r->na) memcpy(r->pattr, m->attr, r->np * (size_t)r->na * sizeof(double));
+    size_t nt = 0;
+    for (size_t t = 0; t < m->nt; t++) map[t] = m->v[3 * t] >= 0 ? (lh_index)nt++ : -1;
+    for (size_t s = 0; s < m->ns; s++) smap[s] = -1;
+    r->ns = 0;
+    for (size_t t = 0; t < m->nt; t++) {
+        if (map[t] < 0) continue;
+        const size_t u = (size_t)map[t];
+        for (int k = 0; k < 3; k++) {
+            const lh_index n = m->nb[3 * t + k], s = m->sg[3 * t + k];
+            r->tri[3 * u + k] = m->v[3 * t + k];
+            r->nbr[3 * u + k] = n >= 0 ? map[n] : -1;
+            if (s < 0 || smap[s] >= 0) continue;
+            smap[s] = (lh_index)r->ns;
+            const lh_index p = m->sp[s], given = p >= 0 && m->seg_marker ? m->seg_marker[p] : 0;
+            r->seg[2 * r->ns] = m->sv[2 * (size_t)s];
+            r->seg[2 * r->ns + 1] = m->sv[2 * (size_t)s + 1];
+            r->smark[r->ns] = given ? given : n < 0 ? 1 : 0;
+            r->spar[r->ns++] = p;
+        }
+        if (r->tattr) r->tattr[u] = m->tattr[t];
+    }
+    /* point markers: the vertex's own, else its first subsegment's */
+    for (size_t p = 0; p < r->np; p++) r->pmark[p] = m->pmark[p];
+    for (size_t s = 0; s < r->ns; s++)
+        for (int j = 0; j < 2; j++)
+            if (!r->pmark[r->seg[2 * s + j]]) r->pmark[r->seg[2 * s + j]] = r->smark[s];
+    st = LH_OK;
+done:
+    lh__free(&r->al, map);
+    lh__free(&r->al, smap);
+    return st;
+}
+
+static void measure(lh_trimesh *r)
+{
+    lh_trimesh_stats *s = &r->stats;
+    s->triangles = r->nt;
+    s->min_angle = s->min_area = r->nt ? INFINITY : 0;
+    s->max_angle = s->max_area = 0;
+    for (size_t t = 0; t < r->nt; t++) {
+        const double *p[3];
+        for (int k = 0; k < 3; k++) p[k] = r->xy + 2 * (size_t)r->tri[3 * t + k];
+        for (int k = 0; k < 3; k++) {
+            const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+            const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+            const double ang = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180 / 3.14159265358979323846);
+            s->min_angle = ang < s->min_angle ? ang : s->min_angle;
+            s->max_angle = ang > s->max_angle ? ang : s->max_angle;
+        }
+        const double area = ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])) / 2;
+        s->min_area = area < s->min_area ? area : s->min_area;
+        s->max_area = area > s->max_area ? area : s->max_area;
+    }
+}
+
+/* Steps 3-5 on a constrained triangulation. */
+static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g,
+                        const lh_trimesh_options *o, const lh_index *dup, char *msg, size_t size)
+{
+    const int keep_hull = o->convex_hull || (g->segment_count == 0 && !g->even_odd);
+    lh_status st = lh__m2_domain(m, c, g, keep_hull, &r->stats.holes_ignored, &r->stats.regions_ignored);
+    if (st == LH_ERR_DEGENERATE) {
+        say(msg, size, NULL, 0, g->even_odd ? "no triangle is inside the polygon rings"
+                                            : "the domain is empty: the flood from the outside or a "
+                                              "hole reached every triangle (is the boundary closed?)");
+        return st;
+    }
+    if (st != LH_OK) return st;
+    lh__refine_opts ro = {o->min_angle, o->max_area, o->region_areas, o->boundary_steiner,
+                          o->max_steiner, g->segments, dup, &r->stats};
+    if ((o->min_angle > 0 || o->max_area > 0 || o->region_areas) && (st = lh__m2_refine(m, c, &ro)) != LH_OK)
+        return st;
+    size_t nbad;
+    lh__m2_bad_triangles(m, &ro, NULL, &nbad);
+    if ((st = harvest(r, m)) != LH_OK) return st;
+    if (!o->region_attributes) {
+        lh__free(&r->al, r->tattr);
+        r->tattr = NULL;
+    }
+    r->stats.steiner_points = m->np - m->n_input;
+    for (size_t p = m->n_input; p < m->np; p++) r->stats.steiner_on_segments += m->pseg[p] >= 0;
+    r->bad = lh__alloc(&r->al, (nbad ? nbad : 1) * sizeof(lh_index));
+    if (!r->bad) return LH_ERR_NOMEM;
+    /* bad triangles in the handle's numbering: live slots in order */
+    size_t live = 0, k = 0;
+    lh__refine_opts q = ro;
+    lh_index *slots = lh__alloc(&r->al, (nbad ? nbad : 1) * sizeof(lh_index));
+    if (!slots) return LH_ERR_NOMEM;
+    lh__m2_bad_triangles(m, &q, slots, &nbad);
+    for (size_t t = 0; t < m->nt && k < nbad; t++) {
+        if (m->v[3 * t] < 0) continue;
+        if ((size_t)slots[k] == t) r->bad[k++] = (lh_index)live;
+        live++;
+    }
+    lh__free(&r->al, slots);
+    r->stats.bad_triangles = nbad;
+    measure(r);
+    return LH_OK;
+}
+
+lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
+                              lh_trimesh **out, char *msg, size_t msg_size)
+{
+    if (msg && msg_size) msg[0] = 0;
+    if (!out) return LH_ERR_INVALID_ARGUMENT;
+    *out = NULL;
+    lh_trimesh_options o;
+    if (opt) o = *opt; else lh_trimesh_options_default(&o);
+    lh_allocator al;
+    if (!g || !lh__allocator_init(&al, o.alloc)) return LH_ERR_INVALID_ARGUMENT;
+    lh_status st = check_input(g, &o, msg, msg_size);
+    if (st != LH_OK) return st;
+    lh_options dopt;
+    lh_options_default(&dopt);
+    dopt.alloc = &al;
+    lh_tri *dt = NULL;
+    if ((st = lh_delaunay(2, g->n, g->xy, &dopt, &dt)) != LH_OK) {
+        if (st == LH_ERR_DEGENERATE)
+            say(msg, msg_size, NULL, 0, "the vertices are all collinear or fewer than 3 distinct: no triangle");
+        return st;
+    }
+    lh_trimesh *r = lh__alloc(&al, sizeof *r);
+    lh__m2 m;
+    lh__m2_cavity c;
+    memset(&c, 0, sizeof c);
+    memset(&m, 0, sizeof m);
+    if (!r) {
+        lh_tri_free(dt);
+        return LH_ERR_NOMEM;
+    }
+    memset(r, 0, sizeof *r);
+    r->al = al;
+    r->stats.input_vertices = g->n;
+    r->stats.duplicates_merged = lh_tri_duplicate_count(dt);
+    st = lh__m2_init(&m, &al, g->n, g->xy, g->attr_count, g->attr, g->vertex_marker);
+    m.seg_marker = g->segment_marker;
+    if (st == LH_OK) st = constrain(&m, &c, g, dt, &r->stats, msg, msg_size);
+    if (st == LH_OK) st = finish(r, &m, &c, g, &o, lh_tri_duplicate_of(dt), msg, msg_size);
+    lh__m2_cavity_free(&m, &c);
+    lh__m2_free(&m);
+    lh_tri_free(dt);
+    if (st != LH_OK) {
+        if (st == LH_ERR_INTERNAL && msg && !msg[0]) say(msg, msg_size, NULL, 0, "internal consistency check failed");
+        lh_trimesh_free(r);
+        return st;
+    }
+    *out = r;
+    return LH_OK;
+}
+
+void lh_trimesh_free(lh_trimesh *r)
+{
+    if (!r) return;
+    void *a[] = {r->xy, r->pattr, r->tattr, r->pmark, r->tri, r->nbr, r->seg, r->smark, r->spar, r->bad};
+    for (size_t i = 0; i < sizeof a / sizeof a[0]; i++) lh__free(&r->al, a[i]);
+    const lh_allocator al = r->al;
+    lh__free(&al, r);
+}
+
+size_t lh_trimesh_point_count(const lh_trimesh *m) { return m ? m->np : 0; }
+const double *lh_trimesh_points(const lh_trimesh *m) { return m ? m->xy : NULL; }
+const lh_index *lh_trimesh_point_markers(const lh_trimesh *m) { return m ? m->pmark : NULL; }
+int lh_trimesh_point_attr_count(const lh_trimesh *m) { return m ? m->na : 0; }
+const double *lh_trimesh_point_attrs(const lh_trimesh *m) { return m ? m->pattr : NULL; }
+size_t lh_trimesh_triangle_count(const lh_trimesh *m) { return m ? m->nt : 0; }
+const lh_index *lh_trimesh_triangles(const lh_trimesh *m) { return m ? m->tri : NULL; }
+const lh_index *lh_trimesh_neighbors(const lh_trimesh *m) { return m ? m->nbr : NULL; }
+const double *lh_trimesh_triangle_attrs(const lh_trimesh *m) { return m ? m->tattr : NULL; }
+size_t lh_trimesh_segment_count(const lh_trimesh *m) { return m ? m->ns : 0; }
+const lh_index *lh_trimesh_segments(const lh_trimesh *m) { return m ? m->seg : NULL; }
+const lh_index *lh_trimesh_segment_markers(const lh_trimesh *m) { return m ? m->smark : NULL; }
+const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m) { return m ? m->spar : NULL; }
+const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m) { return m ? m->bad : NULL; }
+
+void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out)
+{
+    if (!out) return;
+    if (m) *out = m->stats; else memset(out, 0, sizeof *out);
+}
