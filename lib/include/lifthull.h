@@ -678,24 +678,28 @@ typedef struct lh_pslg {
  * lh_poly_read: Triangle's .poly file. Header "n 2 attributes markers(0|1)", n vertex
  * lines "i x y [attributes] [marker]"; "segments markers(0|1)", segment lines
  * "i a b [marker]"; "holes", hole lines "i x y"; optionally "regions", region lines
- * "i x y attribute max_area". '#' starts a comment; numbering starts at 0 or 1 (the
- * first vertex's number) and is consecutive. n = 0 means the vertices are in the
+ * "i x y attribute [max_area]" (no max_area: the attribute's value, as Triangle reads
+ * it). '#' starts a comment; each section is numbered consecutively from 0 or 1, the
+ * endpoints from the first vertex's number. n = 0 means the vertices are in the
  * .node file of the same name: then out->n is 0, segment endpoints are not range
- * checked, and the caller attaches the vertices (lh_pslg_take_points). Diagnostics
- * and statuses as lh_points_read ("NAME:LINE:COL: expected ..., found ...").
+ * checked (numbered from the file's first number, first_index), and the caller
+ * attaches the vertices (lh_pslg_take_points). Diagnostics and statuses as
+ * lh_points_read ("NAME:LINE:COL: expected ..., found ...").
  *
  * lh_rings_read: polygons as JSON rings, the earcut fixtures' format:
  * [[[x,y],[x,y],...], [[x,y],...], ...] — an outer ring then hole rings, each ring
  * closed implicitly (a last point equal to the first is dropped). Every ring becomes
- * a cycle of segments, even_odd is set.
+ * a cycle of segments (a ring of one point, earcut's Steiner point, a vertex alone),
+ * even_odd is set.
  */
 lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
                        char *msg, size_t msg_size);
 lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
                         char *msg, size_t msg_size);
 /* Moves p's coordinates, attributes and markers into g, which has none (g->n == 0),
- * leaving p zeroed; p must have d = 2 and the same allocator hooks as g. Returns LH_OK
- * or LH_ERR_INVALID_ARGUMENT. */
+ * leaving p zeroed; p must have d = 2 and the same allocator hooks as g. g's segment
+ * endpoints are renumbered from p's first_index, which g takes (Triangle numbers them
+ * as the .node). Returns LH_OK or LH_ERR_INVALID_ARGUMENT. */
 lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p);
 /* Frees what a reader allocated (not g) and zeroes g; NULL or a zeroed g is a no-op. */
 void lh_pslg_free(lh_pslg *g);
