@@ -16,6 +16,7 @@ int lh_cli_check(int argc, char **argv);
 int lh_cli_qdelaunay(int argc, char **argv);
 int lh_cli_qvoronoi(int argc, char **argv);
 int lh_cli_qconvex(int argc, char **argv);
+int lh_cli_triangle(int argc, char **argv);
 
 /* Shared by the commands that read points (common.c). */
 #include "lifthull.h"

@@ -54,6 +54,7 @@ typedef struct lh__m2 {
     /* input segments' markers (n of them), borrowed from the caller's PSLG */
     const lh_index *seg_marker;
     lh_index walk_hint;
+    double lens;         /* encroachment: 0 diametral circles, else cos^2 2t (lenses) */
 } lh__m2;
 
 /* Growth and storage (m2_store.c). Each returns LH_OK or LH_ERR_NOMEM. */

@@ -11,11 +11,17 @@
 
 #include "m2.h"
 
-/* p strictly inside the diametral circle of subsegment s (Ruppert 1995). */
+/* p encroaches subsegment s: it sees s under more than 90 degrees (inside the
+ * diametral circle, Ruppert 1995), or, with m->lens set for an angle bound t, more
+ * than 180 - 2t degrees (inside the diametral lens, Shewchuk 2002 §4.4): the apex
+ * angle's cosine is below -cos 2t, i.e. dot < 0 and dot^2 >= cos^2 2t |pa|^2 |pb|^2. */
 int lh__m2_encroaches(const lh__m2 *m, lh_index s, const double *p)
 {
     const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *b = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
-    return (a[0] - p[0]) * (b[0] - p[0]) + (a[1] - p[1]) * (b[1] - p[1]) < 0;
+    const double ax = a[0] - p[0], ay = a[1] - p[1], bx = b[0] - p[0], by = b[1] - p[1];
+    const double dot = ax * bx + ay * by;
+    if (!(dot < 0)) return 0;
+    return m->lens <= 0 || dot * dot >= m->lens * (ax * ax + ay * ay) * (bx * bx + by * by);
 }
 
 static lh_status grow_cavity(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index split,

@@ -165,14 +165,43 @@ static lh_status after_insert(rf *r)
     return LH_OK;
 }
 
-/* Where to split subsegment a-b: concentric shells around an input vertex. */
+/* Whether another subsegment leaves input vertex o at less than 90 degrees from the
+ * direction to x: an acute corner, where splits keep to concentric shells. */
+static int acute_corner(const lh__m2 *m, lh_index o, lh_index x)
+{
+    const double *po = lh__m2_pt(m, o), *px = lh__m2_pt(m, x);
+    const lh_index t0 = m->vt[o];
+    lh_index t = t0;
+    int backward = 0;
+    while (t >= 0) {
+        const int i = lh__m2_vpos(m, t, o);
+        for (int j = 1; j <= 2; j++) { /* the two edges of t at o */
+            const lh_index y = m->v[3 * (size_t)t + (i + j) % 3];
+            if (y == x || m->sg[3 * (size_t)t + (i + 3 - j) % 3] < 0) continue;
+            const double *py = lh__m2_pt(m, y);
+            if ((px[0] - po[0]) * (py[0] - po[0]) + (px[1] - po[1]) * (py[1] - po[1]) > 0) return 1;
+        }
+        lh_index n = m->nb[3 * (size_t)t + (backward ? (i + 2) % 3 : (i + 1) % 3)];
+        if (!backward && n == t0) break;
+        if (n < 0 && !backward) {
+            backward = 1;
+            n = m->nb[3 * (size_t)t0 + (lh__m2_vpos(m, t0, o) + 2) % 3];
+        }
+        t = n;
+    }
+    return 0;
+}
+
+/* Where to split subsegment a-b: its midpoint, or, when one end is an input vertex
+ * at an acute corner and the other is not, at the power of two nearest half its
+ * length from that vertex (concentric shells). */
 static void split_point(const rf *r, lh_index a, lh_index b, double *p)
 {
     const lh__m2 *m = r->m;
     const int ia = (size_t)a < m->n_input, ib = (size_t)b < m->n_input;
     const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
     double f = 0.5;
-    if (ia != ib) {
+    if (ia != ib && acute_corner(m, ia ? a : b, ia ? b : a)) {
         const double len = sqrt(dist2(pa, pb));
         const double d = ldexp(1.0, (int)floor(log2(len / 2) + 0.5)); /* nearest power of 2 */
         f = ia ? d / len : 1 - d / len;
@@ -380,6 +409,7 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
         r.ratio2 = 1 / (s * s); /* 4 (R / shortest)^2 > 1 / sin^2 */
         const double cs = cos(o->min_angle * PI / 180);
         r.off_h = 0.475 * sqrt((1 + cs) / (1 - cs));
+        m->lens = (2 * cs * cs - 1) * (2 * cs * cs - 1);
     }
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < m->np; i++)

@@ -1,0 +1,45 @@
+/* pslg_io.h — 2D meshing input and output for the `triangle` and `mesh` commands:
+ * loading (pslg_load.c) and Triangle's output files (trimesh_write.c). */
+#ifndef LH_CLI_PSLG_IO_H
+#define LH_CLI_PSLG_IO_H
+
+#include <stdio.h>
+
+#include "lifthull.h"
+
+enum { LH_CLI_NODE, LH_CLI_POLY, LH_CLI_RINGS };
+
+typedef struct lh_cli_pslg {
+    lh_pslg g;          /* the graph (for a .node: pointing into pts)  */
+    lh_points pts;      /* a .node's points                            */
+    const char *path;   /* the file read                               */
+    int kind;           /* LH_CLI_*                                    */
+} lh_cli_pslg;
+
+/* Reads path as kind; a .poly without vertices takes base.node's. Returns 1, or 0
+ * after printing the problem (FILE:LINE:COL: ...). */
+int lh_cli_pslg_load(lh_cli_pslg *in, const char *path, const char *base, int kind);
+void lh_cli_pslg_free(lh_cli_pslg *in);
+/* Prints lh_triangulate_pslg's failure as "FILE:LINE: ..." or "FILE: ...". */
+void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg);
+
+/* Triangle's output files and what goes in them (its switches in brackets). */
+typedef struct lh_cli_tri_files {
+    int node, ele, poly;  /* write BASE.node, .ele, .poly (not N, E, P)         */
+    int edge, neigh, off; /* BASE.edge (e), .neigh (n), .off (g)                */
+    int markers;          /* boundary markers in the files (not B)              */
+    int base;             /* first number, 0 (z) or 1                           */
+    int jettison;         /* leave out points in no triangle, renumbering (j)   */
+} lh_cli_tri_files;
+
+/* Writes the files BASE.node etc. whole or not at all (each to a temporary file,
+ * all renamed at the end; none left behind on failure); in supplies the holes and
+ * regions for .poly. Never replaces the input file. Returns 0 (LH_EXIT_OK) or
+ * LH_EXIT_FAIL after printing the problem. */
+int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
+                         const lh_cli_tri_files *w, const char *cmd);
+
+/* The quality report: counts, angle and area ranges, an angle histogram. */
+void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle);
+
+#endif

@@ -1,0 +1,101 @@
+/* pslg_load.c — reading a 2D meshing input for `triangle` and `mesh` (pslg_io.h):
+ * Triangle's .poly (with its .node when the .poly lists no vertices), a .node point
+ * set, or JSON polygon rings. */
+#include "pslg_io.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+static FILE *open_in(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) fprintf(stderr, "%s: %s\n", path, strerror(errno));
+    return f;
+}
+
+/* A .poly whose vertices are in BASE.node: read that and hand its points over. */
+static int attach_node(lh_cli_pslg *in, const char *base)
+{
+    const size_t len = strlen(base);
+    char *node = malloc(len + 6);
+    if (!node) return 0;
+    memcpy(node, base, len);
+    memcpy(node + len, ".node", 6);
+    lh_points pts;
+    memset(&pts, 0, sizeof pts);
+    FILE *f = open_in(node);
+    char msg[512];
+    lh_status st = f ? lh_points_read(f, node, LH_FORMAT_NODE, NULL, &pts, msg, sizeof msg) : LH_ERR_IO;
+    if (f) fclose(f);
+    if (f && st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+    if (st == LH_OK && pts.d != 2) {
+        fprintf(stderr, "%s: the points have %d coordinates, a .poly needs 2\n", node, pts.d);
+        st = LH_ERR_DIMENSION;
+    }
+    if (st == LH_OK && (st = lh_pslg_take_points(&in->g, &pts)) != LH_OK)
+        fprintf(stderr, "%s: %s\n", node, lh_status_message(st));
+    lh_points_free(&pts);
+    free(node);
+    return st == LH_OK;
+}
+
+/* A .node point set: its points become a PSLG without segments. */
+static int load_node(lh_cli_pslg *in, FILE *f)
+{
+    char msg[512];
+    lh_status st = lh_points_read(f, in->path, LH_FORMAT_NODE, NULL, &in->pts, msg, sizeof msg);
+    if (st != LH_OK) {
+        fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+        return 0;
+    }
+    if (in->pts.d != 2) {
+        fprintf(stderr, "%s: the points have %d coordinates; 2D meshing needs 2\n", in->path, in->pts.d);
+        return 0;
+    }
+    in->g.n = in->pts.n;
+    in->g.xy = in->pts.xyz;
+    in->g.attr_count = in->pts.attr_count;
+    in->g.attr = in->pts.attr;
+    in->g.vertex_marker = in->pts.marker;
+    in->g.first_index = in->pts.first_index;
+    return 1;
+}
+
+int lh_cli_pslg_load(lh_cli_pslg *in, const char *path, const char *base, int kind)
+{
+    memset(in, 0, sizeof *in);
+    in->path = path;
+    in->kind = kind;
+    FILE *f = open_in(path);
+    if (!f) return 0;
+    char msg[512];
+    lh_status st = LH_OK;
+    int ok;
+    if (kind == LH_CLI_NODE) {
+        ok = load_node(in, f);
+    } else {
+        st = kind == LH_CLI_RINGS ? lh_rings_read(f, path, NULL, &in->g, msg, sizeof msg)
+                                  : lh_poly_read(f, path, NULL, &in->g, msg, sizeof msg);
+        if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+        ok = st == LH_OK && (kind != LH_CLI_POLY || in->g.n > 0 || attach_node(in, base));
+    }
+    fclose(f);
+    if (!ok) lh_cli_pslg_free(in);
+    return ok;
+}
+
+void lh_cli_pslg_free(lh_cli_pslg *in)
+{
+    lh_pslg_free(&in->g);
+    lh_points_free(&in->pts);
+    memset(in, 0, sizeof *in);
+}
+
+void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg)
+{
+    if (msg[0] >= '0' && msg[0] <= '9')
+        fprintf(stderr, "%s:%s\n", in->path, msg);
+    else
+        fprintf(stderr, "%s: %s\n", in->path, msg[0] ? msg : lh_status_message(st));
+}

@@ -1,0 +1,234 @@
+/* triangle.c — `lifthull triangle`: Shewchuk's Triangle spelled the same way
+ * (switches, file names, formats), for scripts and fingers that know it:
+ *     lifthull triangle -pq30a0.01 A.poly   ->  A.1.node A.1.ele A.1.poly
+ * Computed by lh_triangulate_pslg (exact). Switches Triangle has and lifthull does not
+ * (yet) are refused by name; switches that choose among Triangle's algorithms or its
+ * arithmetic are accepted and change nothing (lifthull is always exact). */
+#include "cli.h"
+#include "pslg_io.h"
+
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct sw {
+    int p, q, a_regions, A, c, Y, O, I, Q, V, S, noP;
+    double angle, area;
+    size_t steiner;
+    lh_cli_tri_files files;
+} sw;
+
+static const char *const usage_text =
+    "usage: lifthull triangle [-pqaAcYSjezBPNEIOQVgnil] FILE[.poly|.node|.json]\n"
+    "\n"
+    "Triangle's command line (J. R. Shewchuk), computed exactly by lifthull: the same\n"
+    "switches, input and output files. FILE.poly (or -p FILE) is a planar straight-line\n"
+    "graph; FILE.node a point set; FILE.json polygon rings ([[[x,y],...], hole, ...]).\n"
+    "Output: FILE.1.node, FILE.1.ele, FILE.1.poly (.poly input) — from FILE.1.* come\n"
+    "FILE.2.* — replacing earlier outputs, never the input; all files or none.\n"
+    "\n"
+    "  -p      triangulate the graph: constrained Delaunay triangulation of its domain\n"
+    "  -q[A]   quality mesh: no angle below A degrees (default 20, at most 40)\n"
+    "  -a[X]   no triangle area above X; -a alone: the .poly regions' area bounds\n"
+    "  -A      regional attributes: each triangle gets its region's attribute\n"
+    "  -c      keep the convex hull (do not carve from the outside)\n"
+    "  -Y      no Steiner points on the boundary; -YY: on no segment\n"
+    "  -S[N]   at most N Steiner points\n"
+    "  -j      leave points that are in no triangle out of the output\n"
+    "  -e      write FILE.1.edge; -n FILE.1.neigh; -g FILE.1.off\n"
+    "  -z      number everything from 0 (default 1)\n"
+    "  -B      no boundary markers; -P no .poly; -N no .node; -E no .ele output\n"
+    "  -I      no iteration number in the output names (FILE.node ...)\n"
+    "  -O      ignore the holes of the .poly\n"
+    "  -Q      quiet; -V verbose: the quality report (angles, areas, histogram)\n"
+    "  -i -F -l -s -C -X   Triangle's choices of algorithm or arithmetic: accepted,\n"
+    "          nothing changes (lifthull is always exact)\n"
+    "not supported: -r (refining a mesh), -D (conforming Delaunay), -o2, -v, -u\n"
+    "\n"
+    "examples:\n"
+    "  lifthull triangle -pq30 A.poly       quality mesh of the letter A\n"
+    "  lifthull triangle -pq30a0.01 A.poly  ... with small triangles\n"
+    "  lifthull triangle dots.node          Delaunay triangulation of points\n"
+    "exit codes: 0 success, 1 failure, 2 usage error, 3 bad input\n";
+
+/* A number right after a switch letter: digits, '.', and an exponent. */
+static int number_after(const char *s, int *j, double *out)
+{
+    const char *p = s + *j + 1;
+    if (!isdigit((unsigned char)*p) && *p != '.') return 0;
+    char *end;
+    *out = strtod(p, &end);
+    *j += (int)(end - p);
+    return 1;
+}
+
+static int parse_switches(const char *s, sw *o)
+{
+    for (int j = 1; s[j]; j++) {
+        double x;
+        switch (s[j]) {
+        case 'p': o->p = 1; break;
+        case 'q': o->q = 1; o->angle = number_after(s, &j, &x) ? x : 20; break;
+        case 'a':
+            if (number_after(s, &j, &x)) o->area = x; else o->a_regions = 1;
+            break;
+        case 'A': o->A = 1; break;
+        case 'c': o->c = 1; break;
+        case 'Y': o->Y++; break;
+        case 'S': o->S = 1; o->steiner = number_after(s, &j, &x) && x >= 0 ? (size_t)x : 0; break;
+        case 'j': o->files.jettison = 1; break;
+        case 'e': o->files.edge = 1; break;
+        case 'n': o->files.neigh = 1; break;
+        case 'g': o->files.off = 1; break;
+        case 'z': o->files.base = 0; break;
+        case 'B': o->files.markers = 0; break;
+        case 'P': o->noP = 1; break;
+        case 'N': o->files.node = 0; break;
+        case 'E': o->files.ele = 0; break;
+        case 'I': o->I = 1; break;
+        case 'O': o->O = 1; break;
+        case 'Q': o->Q = 1; break;
+        case 'V': o->V = 1; break;
+        case 'i': case 'F': case 'l': case 's': case 'C': case 'X': break;
+        case 'r': case 'D': case 'o': case 'v': case 'u': case 'k': case 'L': case 'w': case 'W':
+            fprintf(stderr, "lifthull triangle: -%c is not supported (see lifthull triangle --help)\n", s[j]);
+            return 0;
+        default:
+            fprintf(stderr, "lifthull triangle: unknown switch '%c' in '%s' (see --help)\n", s[j], s);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* FILE's kind and base name (FILE without its extension), malloc'ed. */
+static char *base_of(const char *file, int p, int *kind)
+{
+    const size_t n = strlen(file);
+    static const struct { const char *ext; int kind; } known[] = {
+        {".poly", LH_CLI_POLY}, {".node", LH_CLI_NODE}, {".json", LH_CLI_RINGS}};
+    *kind = p ? LH_CLI_POLY : LH_CLI_NODE;
+    size_t cut = n;
+    for (size_t i = 0; i < sizeof known / sizeof known[0]; i++) {
+        const size_t e = strlen(known[i].ext);
+        if (n > e && !strcmp(file + n - e, known[i].ext)) {
+            cut = n - e;
+            *kind = known[i].kind;
+            if (*kind == LH_CLI_NODE && p) *kind = LH_CLI_POLY;
+        }
+    }
+    char *b = malloc(cut + 1);
+    if (b) memcpy(b, file, cut), b[cut] = 0;
+    return b;
+}
+
+/* The output base: BASE.1, or BASE.(k+1) when BASE ends in .k (Triangle's rule). */
+static char *out_base(const char *base, int no_number)
+{
+    const size_t n = strlen(base);
+    char *o = malloc(n + 24);
+    if (!o) return NULL;
+    size_t d = n;
+    while (d > 0 && isdigit((unsigned char)base[d - 1])) d--;
+    if (no_number) {
+        strcpy(o, base);
+    } else if (d < n && d > 1 && base[d - 1] == '.' && n - d < 18) {
+        memcpy(o, base, d);
+        snprintf(o + d, 24, "%lld", atoll(base + d) + 1);
+    } else {
+        snprintf(o, n + 24, "%s.1", base);
+    }
+    return o;
+}
+
+static int run(const sw *o, const char *file)
+{
+    int kind, rc = LH_EXIT_FAIL;
+    char *base = base_of(file, o->p, &kind), *outb = base ? out_base(base, o->I) : NULL, *path = NULL;
+    lh_cli_pslg in;
+    lh_trimesh *m = NULL;
+    if (!base || !outb) goto done;
+    path = malloc(strlen(base) + 6);
+    if (!path) goto done;
+    if (!strcmp(base, file)) /* no extension: Triangle appends .poly (-p) or .node */
+        sprintf(path, "%s%s", base, kind == LH_CLI_POLY ? ".poly" : ".node");
+    else
+        strcpy(path, file);
+    if (!lh_cli_pslg_load(&in, path, base, kind)) {
+        rc = LH_EXIT_INPUT;
+        goto done;
+    }
+    if (o->O) in.g.hole_count = 0;
+    lh_trimesh_options opt;
+    lh_trimesh_options_default(&opt);
+    opt.convex_hull = o->c;
+    opt.min_angle = o->q ? o->angle : 0;
+    opt.max_area = o->area;
+    opt.region_areas = o->a_regions;
+    opt.region_attributes = o->A;
+    opt.boundary_steiner = o->Y == 0 ? 1 : o->Y == 1 ? 0 : -1;
+    if (o->S) opt.max_steiner = o->steiner;
+    char msg[512];
+    const double t0 = lh_cli_seconds();
+    lh_status st = lh_triangulate_pslg(&in.g, &opt, &m, msg, sizeof msg);
+    const double secs = lh_cli_seconds() - t0;
+    if (st != LH_OK) {
+        lh_cli_pslg_report(&in, st, msg);
+        rc = st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL ? LH_EXIT_FAIL : LH_EXIT_INPUT;
+    } else {
+        rc = lh_cli_trimesh_write(m, &in, outb, &o->files, "triangle");
+        if (rc == LH_EXIT_OK && o->V) lh_cli_trimesh_report(stdout, m, opt.min_angle);
+        if (rc == LH_EXIT_OK && !o->Q && !o->V) {
+            lh_trimesh_stats s;
+            lh_trimesh_get_stats(m, &s);
+            printf("%s: %zu points, %zu triangles (%zu Steiner points), smallest angle %.4g degrees, %.3f s\n",
+                   outb, lh_trimesh_point_count(m), s.triangles, s.steiner_points, s.min_angle, secs);
+            if (s.bad_triangles)
+                printf("%zu triangles are below the bounds (input angles below %.4g degrees%s; -V lists them)\n",
+                       s.bad_triangles, opt.min_angle, s.steiner_limit_reached ? ", or the Steiner limit" : "");
+        }
+    }
+    lh_trimesh_free(m);
+    lh_cli_pslg_free(&in);
+done:
+    if (rc == LH_EXIT_FAIL && !m && !base) fprintf(stderr, "lifthull triangle: out of memory\n");
+    free(base);
+    free(outb);
+    free(path);
+    return rc;
+}
+
+int lh_cli_triangle(int argc, char **argv)
+{
+    sw o;
+    memset(&o, 0, sizeof o);
+    o.files = (lh_cli_tri_files){1, 1, 0, 0, 0, 0, 1, 1, 0};
+    const char *file = NULL;
+    for (int i = 0; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage_text, stdout);
+            return LH_EXIT_OK;
+        }
+        if (argv[i][0] == '-' && argv[i][1]) {
+            if (!parse_switches(argv[i], &o)) return LH_EXIT_USAGE;
+        } else if (file) {
+            fprintf(stderr, "lifthull triangle: one input file, not '%s' and '%s'\n", file, argv[i]);
+            return LH_EXIT_USAGE;
+        } else {
+            file = argv[i];
+        }
+    }
+    if (!file) {
+        fputs(usage_text, stderr);
+        return LH_EXIT_USAGE;
+    }
+    if (o.q && !(o.angle >= 0 && o.angle <= LH_TRIMESH_MAX_ANGLE)) {
+        fprintf(stderr, "lifthull triangle: -q%g: the angle bound must be 0..%g degrees\n", o.angle,
+                LH_TRIMESH_MAX_ANGLE);
+        return LH_EXIT_USAGE;
+    }
+    int kind;
+    free(base_of(file, o.p, &kind));
+    o.files.poly = kind != LH_CLI_NODE && !o.noP; /* Triangle writes a .poly for -p */
+    return run(&o, file);
+}

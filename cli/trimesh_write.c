@@ -1,0 +1,199 @@
+/* trimesh_write.c — a 2D mesh in Triangle's files (.node .ele .poly .edge .neigh,
+ * and .off), the formats of https://www.cs.cmu.edu/~quake/triangle.html's file
+ * pages: headers "count 2 attributes markers", "count 3 attributes", "count markers",
+ * items numbered from the base; neighbour k across from corner k, -1 for none. */
+#include "pslg_io.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "outfile.h"
+
+typedef struct ctx {
+    const lh_trimesh *m;
+    const lh_cli_tri_files *w;
+    lh_index *num;   /* output number of each point (-1: jettisoned) */
+    size_t kept;
+} ctx;
+
+static long long num(const ctx *c, lh_index p) { return (long long)c->num[p] + c->w->base; }
+
+static void write_node(FILE *f, const ctx *c)
+{
+    const lh_trimesh *m = c->m;
+    const double *xy = lh_trimesh_points(m), *at = lh_trimesh_point_attrs(m);
+    const lh_index *mk = lh_trimesh_point_markers(m);
+    const int na = lh_trimesh_point_attr_count(m);
+    fprintf(f, "%zu  2  %d  %d\n", c->kept, na, c->w->markers ? 1 : 0);
+    for (size_t p = 0; p < lh_trimesh_point_count(m); p++) {
+        if (c->num[p] < 0) continue;
+        fprintf(f, "%4lld    %.17g  %.17g", num(c, (lh_index)p), xy[2 * p], xy[2 * p + 1]);
+        for (int j = 0; j < na; j++) fprintf(f, "  %.17g", at[p * (size_t)na + j]);
+        if (c->w->markers) fprintf(f, "    %lld", (long long)mk[p]);
+        fputc('\n', f);
+    }
+}
+
+static void write_ele(FILE *f, const ctx *c)
+{
+    const lh_trimesh *m = c->m;
+    const lh_index *t = lh_trimesh_triangles(m);
+    const double *ta = lh_trimesh_triangle_attrs(m);
+    const size_t nt = lh_trimesh_triangle_count(m);
+    fprintf(f, "%zu  3  %d\n", nt, ta ? 1 : 0);
+    for (size_t i = 0; i < nt; i++) {
+        fprintf(f, "%4lld    %4lld  %4lld  %4lld", (long long)i + c->w->base, num(c, t[3 * i]),
+                num(c, t[3 * i + 1]), num(c, t[3 * i + 2]));
+        if (ta) fprintf(f, "    %.17g", ta[i]);
+        fputc('\n', f);
+    }
+}
+
+static void write_poly(FILE *f, const ctx *c, const lh_pslg *g)
+{
+    const lh_trimesh *m = c->m;
+    const lh_index *s = lh_trimesh_segments(m), *sm = lh_trimesh_segment_markers(m);
+    const size_t ns = lh_trimesh_segment_count(m);
+    fprintf(f, "0  2  %d  %d\n", lh_trimesh_point_attr_count(m), c->w->markers ? 1 : 0);
+    fprintf(f, "%zu  %d\n", ns, c->w->markers ? 1 : 0);
+    for (size_t i = 0; i < ns; i++) {
+        fprintf(f, "%4lld    %4lld  %4lld", (long long)i + c->w->base, num(c, s[2 * i]), num(c, s[2 * i + 1]));
+        if (c->w->markers) fprintf(f, "    %lld", (long long)sm[i]);
+        fputc('\n', f);
+    }
+    fprintf(f, "%zu\n", g->hole_count);
+    for (size_t h = 0; h < g->hole_count; h++)
+        fprintf(f, "%4lld    %.17g  %.17g\n", (long long)h + c->w->base, g->holes[2 * h], g->holes[2 * h + 1]);
+    if (g->region_count) {
+        fprintf(f, "%zu\n", g->region_count);
+        for (size_t r = 0; r < g->region_count; r++) {
+            const double *q = g->regions + 4 * r;
+            fprintf(f, "%4lld    %.17g  %.17g  %.17g  %.17g\n", (long long)r + c->w->base, q[0], q[1], q[2], q[3]);
+        }
+    }
+}
+
+/* The subsegment lying on edge a-b, if any (marker in *mk): a sorted lookup. */
+typedef struct segkey { lh_index lo, hi, mk; } segkey;
+static int segkey_cmp(const void *x, const void *y)
+{
+    const segkey *a = x, *b = y;
+    return a->lo != b->lo ? (a->lo < b->lo ? -1 : 1) : a->hi != b->hi ? (a->hi < b->hi ? -1 : 1) : 0;
+}
+
+static int write_edge(FILE *f, const ctx *c)
+{
+    const lh_trimesh *m = c->m;
+    const size_t nt = lh_trimesh_triangle_count(m), ns = lh_trimesh_segment_count(m);
+    const lh_index *t = lh_trimesh_triangles(m), *nb = lh_trimesh_neighbors(m);
+    const lh_index *s = lh_trimesh_segments(m), *sm = lh_trimesh_segment_markers(m);
+    segkey *k = malloc((ns ? ns : 1) * sizeof *k);
+    if (!k) return 0;
+    for (size_t i = 0; i < ns; i++) {
+        const lh_index a = s[2 * i], b = s[2 * i + 1];
+        k[i] = (segkey){a < b ? a : b, a < b ? b : a, sm[i]};
+    }
+    qsort(k, ns, sizeof *k, segkey_cmp);
+    size_t ne = 0;
+    for (size_t i = 0; i < 3 * nt; i++) ne += nb[i] < 0 || (size_t)nb[i] > i / 3;
+    fprintf(f, "%zu  %d\n", ne, c->w->markers ? 1 : 0);
+    size_t e = 0;
+    for (size_t i = 0; i < nt; i++)
+        for (int j = 0; j < 3; j++) {
+            const lh_index n = nb[3 * i + j];
+            if (n >= 0 && (size_t)n < i) continue;
+            const lh_index a = t[3 * i + (j + 1) % 3], b = t[3 * i + (j + 2) % 3];
+            fprintf(f, "%4lld    %4lld  %4lld", (long long)e++ + c->w->base, num(c, a), num(c, b));
+            if (c->w->markers) {
+                const segkey key = {a < b ? a : b, a < b ? b : a, 0};
+                const segkey *hit = bsearch(&key, k, ns, sizeof *k, segkey_cmp);
+                fprintf(f, "    %lld", hit ? (long long)hit->mk : 0LL);
+            }
+            fputc('\n', f);
+        }
+    free(k);
+    return 1;
+}
+
+static void write_neigh(FILE *f, const ctx *c)
+{
+    const size_t nt = lh_trimesh_triangle_count(c->m);
+    const lh_index *nb = lh_trimesh_neighbors(c->m);
+    fprintf(f, "%zu  3\n", nt);
+    for (size_t i = 0; i < nt; i++) {
+        fprintf(f, "%4lld", (long long)i + c->w->base);
+        for (int j = 0; j < 3; j++)
+            fprintf(f, "  %4lld", nb[3 * i + j] < 0 ? -1LL : (long long)nb[3 * i + j] + c->w->base);
+        fputc('\n', f);
+    }
+}
+
+static void write_off(FILE *f, const ctx *c)
+{
+    const lh_trimesh *m = c->m;
+    const double *xy = lh_trimesh_points(m);
+    const lh_index *t = lh_trimesh_triangles(m);
+    const size_t nt = lh_trimesh_triangle_count(m);
+    fprintf(f, "OFF\n%zu  %zu  0\n", c->kept, nt);
+    for (size_t p = 0; p < lh_trimesh_point_count(m); p++)
+        if (c->num[p] >= 0) fprintf(f, "%.17g  %.17g  0\n", xy[2 * p], xy[2 * p + 1]);
+    for (size_t i = 0; i < nt; i++)
+        fprintf(f, "3  %lld  %lld  %lld\n", (long long)c->num[t[3 * i]], (long long)c->num[t[3 * i + 1]],
+                (long long)c->num[t[3 * i + 2]]);
+}
+
+/* Point numbers: all points, or (j) only those in a triangle, in order. */
+static int number_points(ctx *c)
+{
+    const size_t np = lh_trimesh_point_count(c->m), nt = lh_trimesh_triangle_count(c->m);
+    const lh_index *t = lh_trimesh_triangles(c->m);
+    c->num = malloc((np ? np : 1) * sizeof *c->num);
+    if (!c->num) return 0;
+    for (size_t p = 0; p < np; p++) c->num[p] = c->w->jettison ? -1 : 0;
+    if (c->w->jettison)
+        for (size_t i = 0; i < 3 * nt; i++) c->num[t[i]] = 0;
+    c->kept = 0;
+    for (size_t p = 0; p < np; p++)
+        if (c->num[p] >= 0) c->num[p] = (lh_index)c->kept++;
+    return 1;
+}
+
+int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
+                         const lh_cli_tri_files *w, const char *cmd)
+{
+    static const char *const ext[] = {".node", ".ele", ".poly", ".edge", ".neigh", ".off"};
+    const int want[] = {w->node, w->ele, w->poly, w->edge, w->neigh, w->off};
+    enum { nfiles = 6 };
+    lh_cli_out out[nfiles];
+    char *path[nfiles] = {0};
+    memset(out, 0, sizeof out);
+    ctx c = {m, w, NULL, 0};
+    int ok = number_points(&c), rc = LH_EXIT_OK;
+    if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    for (int i = 0; i < nfiles && ok; i++) {
+        if (!want[i]) continue;
+        const size_t len = strlen(base);
+        path[i] = malloc(len + 8);
+        if (!path[i]) { ok = 0; break; }
+        memcpy(path[i], base, len);
+        strcpy(path[i] + len, ext[i]);
+        /* Triangle replaces its outputs; the input itself never */
+        if (!lh_cli_out_open(&out[i], cmd, path[i], 1, in->path)) { ok = 0; break; }
+        FILE *f = out[i].f;
+        switch (i) {
+        case 0: write_node(f, &c); break;
+        case 1: write_ele(f, &c); break;
+        case 2: write_poly(f, &c, &in->g); break;
+        case 3: ok = write_edge(f, &c); break;
+        case 4: write_neigh(f, &c); break;
+        default: write_off(f, &c); break;
+        }
+    }
+    /* all or none: close the temporaries, renaming only when everything went well */
+    for (int i = 0; i < nfiles; i++)
+        if (out[i].f && lh_cli_out_close(&out[i], cmd, ok) != LH_EXIT_OK) ok = 0, rc = LH_EXIT_FAIL;
+    for (int i = 0; i < nfiles; i++) free(path[i]);
+    free(c.num);
+    return ok ? rc : LH_EXIT_FAIL;
+}
