@@ -153,6 +153,8 @@ enum {
 };
 typedef struct lh__m2_ins {
     int check_encroach;   /* in: refuse p when it encroaches a boundary subsegment    */
+    const double *origin; /* in: walk to p in a straight line from this point of the
+                             start triangle (NULL: the visibility walk)               */
     int result;           /* out: LH__M2_*                                            */
     lh_index vertex, blocked;
     size_t enc_count, enc_cap;
@@ -174,5 +176,9 @@ lh_status lh__m2_from_delaunay(lh__m2 *m, const lh_tri *dt);
  * *blocked is the subsegment met (else -1) and the result the triangle before it. */
 lh_index lh__m2_locate(lh__m2 *m, lh_index start, const double *p, int stop_at_segments,
                        lh_index *blocked);
+/* The straight walk from g, inside triangle t, to p (m2_locate.c): the triangle
+ * holding p, or the one before the subsegment crossed (*blocked), or -1 outside. */
+lh_index lh__m2_walk_line(lh__m2 *m, lh_index t, const double *g, const double *p,
+                          lh_index *blocked);
 
 #endif

@@ -107,7 +107,8 @@ lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_i
         }
     } else {
         lh_index blocked;
-        const lh_index t = lh__m2_locate(m, start, p, 1, &blocked);
+        const lh_index t = r->origin ? lh__m2_walk_line(m, start, r->origin, p, &blocked)
+                                     : lh__m2_locate(m, start, p, 1, &blocked);
         if (t < 0 || blocked >= 0) {
             r->result = t < 0 ? LH__M2_OUTSIDE : LH__M2_BLOCKED;
             r->blocked = blocked;

@@ -54,3 +54,36 @@ lh_index lh__m2_locate(lh__m2 *m, lh_index start, const double *p, int stop_at_s
     }
     return scan(m, p);
 }
+
+/* The straight walk along g -> p from triangle t, which holds g: each step leaves
+ * through the edge x -> y (counterclockwise) with x right of or on the line and y left
+ * of or on it, while p lies strictly beyond that edge. Stops at a subsegment
+ * (*blocked) or the boundary (-1). 4 * live + 64 steps at most, then -1 with
+ * *blocked = -1 (a degenerate line; never seen). */
+lh_index lh__m2_walk_line(lh__m2 *m, lh_index t, const double *g, const double *p,
+                          lh_index *blocked)
+{
+    *blocked = -1;
+    lh_index prev = -1;
+    for (size_t step = 0, limit = 4 * m->live + 64; step < limit; step++) {
+        const lh_index *v = m->v + 3 * (size_t)t;
+        int exit = -1;
+        for (int k = 0; k < 3 && exit < 0; k++) {
+            const lh_index x = v[(k + 1) % 3], y = v[(k + 2) % 3];
+            if (m->nb[3 * (size_t)t + k] == prev && prev >= 0) continue;
+            if (lh__m2_orient_pt(m, x, y, p) >= 0) continue;
+            const double *px = lh__m2_pt(m, x), *py = lh__m2_pt(m, y);
+            const double *ax[3] = {g, p, px}, *ay[3] = {g, p, py};
+            if (lh_orient(m->pred, 2, ax) <= 0 && lh_orient(m->pred, 2, ay) >= 0) exit = k;
+        }
+        if (exit < 0) return t; /* p is in t (closed) */
+        if (m->sg[3 * (size_t)t + exit] >= 0) {
+            *blocked = m->sg[3 * (size_t)t + exit];
+            return t;
+        }
+        prev = t;
+        t = m->nb[3 * (size_t)t + exit];
+        if (t < 0) return -1;
+    }
+    return -1;
+}
