@@ -410,9 +410,8 @@ LH_TEST(poly_text_forms)
     LH_EXPECT_EQ_U64(g.region_line[1], 15);
     lh_pslg_free(&g);
 
-    /* Triangle's defaults: no dimension, no attributes, no markers; sections start at
-     * 0 or 1 each (the endpoints count from the vertices' first number). */
-    LH_ASSERT_EQ_INT(read_text(lh_poly_read, "one.poly", TEXT("2\n1 0 0\n2 1 1\n1\n0 1 2\n0\n0\n"), NULL, &g, msg, sizeof msg),
+    /* Triangle's defaults: no dimension, no attributes, no markers. */
+    LH_ASSERT_EQ_INT(read_text(lh_poly_read, "one.poly", TEXT("2\n1 0 0\n2 1 1\n1\n1 1 2\n0\n0\n"), NULL, &g, msg, sizeof msg),
                      LH_OK);
     LH_EXPECT_EQ_INT(g.first_index, 1);
     LH_EXPECT_EQ_INT(g.attr_count, 0);
@@ -523,6 +522,8 @@ LH_TEST(poly_segment_errors)
          "n0.poly:3:3: expected an endpoint of segment 1 (a vertex number from 1), found '0'"},
         {"n0big.poly", TEXT("0 2\n1 0\n0 0 99999999999\n"), LH_ERR_PARSE,
          "n0big.poly:3:5: expected an endpoint of segment 0 (a vertex number from 0), found '99999999999'"},
+        {"s0.poly", TEXT(V3 "2 0\n0 1 2\n1 2 3\n"), LH_ERR_PARSE,
+         "s0.poly:6:1: expected segment number 1 (this file numbers from 1), found '0'"},
         {"sn.poly", TEXT(V3 "2 0\n1 1 2\n3 2 3\n"), LH_ERR_PARSE,
          "sn.poly:7:1: expected segment number 2 (numbers are consecutive), found '3'"},
         {"smk.poly", TEXT(V3 "1 1\n1 1 2\n"), LH_ERR_PARSE,
@@ -546,6 +547,8 @@ LH_TEST(poly_hole_region_errors)
         {"hy.poly", TEXT(V3 "0\n1\n1 0.5\n"), LH_ERR_PARSE, "hy.poly:7:6: expected coordinate 2 of hole 1, found the end of the line"},
         {"hi.poly", TEXT(V3 "0\n1\n1 inf 0\n"), LH_ERR_NONFINITE,
          "hi.poly:7:3: coordinate 1 of hole 1 is 'inf': NaN and infinities are not points"},
+        {"h0.poly", TEXT("0 2\n1 0\n0 1 2\n1\n1 0 0\n"), LH_ERR_PARSE,
+         "h0.poly:5:1: expected hole number 0 (this file numbers from 0), found '1'"},
         {"hn.poly", TEXT(V3 "0\n2\n1 0 0\n1 1 1\n"), LH_ERR_PARSE,
          "hn.poly:8:1: expected hole number 2 (numbers are consecutive), found '1'"},
         {"ht.poly", TEXT(V3 "0\n2\n1 0 0\n"), LH_ERR_PARSE,

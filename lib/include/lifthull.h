@@ -679,8 +679,8 @@ typedef struct lh_pslg {
  * lines "i x y [attributes] [marker]"; "segments markers(0|1)", segment lines
  * "i a b [marker]"; "holes", hole lines "i x y"; optionally "regions", region lines
  * "i x y attribute [max_area]" (no max_area: the attribute's value, as Triangle reads
- * it). '#' starts a comment; each section is numbered consecutively from 0 or 1, the
- * endpoints from the first vertex's number. n = 0 means the vertices are in the
+ * it). '#' starts a comment; numbering starts at 0 or 1 (the first vertex's number)
+ * and is consecutive, in every section. n = 0 means the vertices are in the
  * .node file of the same name: then out->n is 0, segment endpoints are not range
  * checked (numbered from the file's first number, first_index), and the caller
  * attaches the vertices (lh_pslg_take_points). Diagnostics and statuses as

@@ -16,9 +16,9 @@
  * fields are Triangle's defaults (dimension 2, no attributes, no markers), every field
  * of an item line must be there; region lines are Triangle's too (a fourth number
  * missing is the third's, as triangle.c's readholes reads it: la.poly's regions).
- * Every section is numbered consecutively from 0 or 1; the vertices' first number is
- * the base of the endpoints (with n = 0, the file's first number, until
- * lh_pslg_take_points renumbers them from the .node's). The line of every item is kept
+ * The items are numbered consecutively from the file's first number, 0 or 1, in every
+ * section; the endpoints too (with n = 0, until lh_pslg_take_points renumbers them
+ * from the .node's first number, as Triangle reads them). The line of every item is kept
  * for the triangulator's diagnostics; what the graph means (duplicate vertices,
  * crossing segments) is not looked at here.
  */
@@ -119,12 +119,19 @@ lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p)
 
 /* ---- .poly ----------------------------------------------------------------------- */
 
-/* One section of the file: its items' names, declared count and first number. */
+/* One section of the file: its items' names, declared count, arrays' capacity. */
 typedef struct section {
     const char *one, *many;
     size_t declared, cap;
-    int first;
 } section;
+
+typedef struct poly_ctx {
+    lh__scan *s;
+    lh_pslg *g;
+    section v, seg, hole, reg;
+    int vertex_markers, segment_markers;
+    int based; /* g->first_index is the file's first number */
+} poly_ctx;
 
 /* A section's count (0..LH_READ_MAX_POINTS); or_end: the end of the input may come
  * instead (the optional regions). */
@@ -194,21 +201,24 @@ static lh_status read_header(lh__scan *s, lh_pslg *g, size_t *n, int *markers)
     return st;
 }
 
-/* The number of item i of a section (read into *t): the first 0 or 1, then consecutive. */
-static lh_status item_number(lh__scan *s, section *sec, size_t i, lh__token *t)
+/* The number of item i of a section (read into *t): the file's first number is 0 or 1
+ * (g->first_index), every section counts from it. */
+static lh_status item_number(poly_ctx *x, const section *sec, size_t i, lh__token *t)
 {
-    long long v, want = sec->first + (long long)i;
-    lh__scan_next(s, 1, t);
-    if (lh__word_integer(t, &v) && (i ? v == want : v == 0 || v == 1)) {
-        if (i == 0) sec->first = (int)v;
+    long long v, want = x->g->first_index + (long long)i;
+    lh__scan_next(x->s, 1, t);
+    if (lh__word_integer(t, &v) && (x->based ? v == want : v == 0 || v == 1)) {
+        if (!x->based) x->g->first_index = (int)v;
+        x->based = 1;
         return LH_OK;
     }
-    char what[80], tail[80];
-    if (i == 0) snprintf(what, sizeof what, "the first %s's number (0 or 1)", sec->one);
-    else if (t->kind == LH__TOK_WORD) snprintf(what, sizeof what, "%s number %lld (numbers are consecutive)", sec->one, want);
-    else snprintf(what, sizeof what, "%s number %lld", sec->one, want);
+    char what[120], tail[80];
+    if (!x->based) snprintf(what, sizeof what, "the first %s's number (0 or 1)", sec->one);
+    else if (t->kind != LH__TOK_WORD) snprintf(what, sizeof what, "%s number %lld", sec->one, want);
+    else if (i) snprintf(what, sizeof what, "%s number %lld (numbers are consecutive)", sec->one, want);
+    else snprintf(what, sizeof what, "%s number %lld (this file numbers from %lld)", sec->one, want, want);
     snprintf(tail, sizeof tail, " (%zu %s declared)", sec->declared, sec->declared == 1 ? sec->one : sec->many);
-    return lh__expected(s, LH_ERR_PARSE, t, what, t->kind == LH__TOK_EOF ? tail : NULL);
+    return lh__expected(x->s, LH_ERR_PARSE, t, what, t->kind == LH__TOK_EOF ? tail : NULL);
 }
 
 /* `count` numbers of the current line into x, named "FIELD j of ITEM NUMBER". */
@@ -247,21 +257,14 @@ static lh_status item_end(lh__scan *s, const section *sec, long long number)
     return line_end(s, 0, what);
 }
 
-typedef struct poly_ctx {
-    lh__scan *s;
-    lh_pslg *g;
-    section v, seg, hole, reg;
-    int vertex_markers, segment_markers;
-} poly_ctx;
-
 static lh_status read_vertex(poly_ctx *x, size_t i, double *attr)
 {
     lh_pslg *g = x->g;
     lh__token at;
     double xy[2];
     lh_index m = 0;
-    lh_status st = item_number(x->s, &x->v, i, &at);
-    long long number = x->v.first + (long long)i;
+    lh_status st = item_number(x, &x->v, i, &at);
+    long long number = g->first_index + (long long)i;
     if (st == LH_OK) st = numbers(x->s, 2, "coordinate", "points", &x->v, number, xy);
     if (st == LH_OK) st = numbers(x->s, g->attr_count, "attribute", "accepted", &x->v, number, attr);
     if (st == LH_OK && x->vertex_markers) st = marker(x->s, &x->v, number, &m);
@@ -285,7 +288,7 @@ static lh_status read_vertex(poly_ctx *x, size_t i, double *attr)
 static lh_status endpoint(poly_ctx *x, long long number, lh_index *e)
 {
     lh__token t;
-    long long k, lo = x->g->n ? x->v.first : x->seg.first, hi = lo + (long long)x->g->n - 1;
+    long long k, lo = x->g->first_index, hi = lo + (long long)x->g->n - 1;
     lh__scan_next(x->s, 0, &t);
     if (lh__word_integer(&t, &k) && k >= lo && (x->g->n ? k <= hi : k - lo < LH_INDEX_MAX)) {
         *e = (lh_index)(k - lo);
@@ -302,8 +305,8 @@ static lh_status read_segment(poly_ctx *x, size_t i)
     lh_pslg *g = x->g;
     lh__token at;
     lh_index e[2], m = 0;
-    lh_status st = item_number(x->s, &x->seg, i, &at);
-    long long number = x->seg.first + (long long)i;
+    lh_status st = item_number(x, &x->seg, i, &at);
+    long long number = g->first_index + (long long)i;
     if (st == LH_OK) st = endpoint(x, number, &e[0]);
     if (st == LH_OK) st = endpoint(x, number, &e[1]);
     if (st == LH_OK && x->segment_markers) st = marker(x->s, &x->seg, number, &m);
@@ -328,8 +331,8 @@ static lh_status read_point_item(poly_ctx *x, section *sec, size_t i, int per, d
 {
     lh__token at, t;
     double v[4];
-    lh_status st = item_number(x->s, sec, i, &at);
-    long long number = sec->first + (long long)i;
+    lh_status st = item_number(x, sec, i, &at);
+    long long number = x->g->first_index + (long long)i;
     if (st == LH_OK) st = numbers(x->s, 2, "coordinate", "points", sec, number, v);
     if (st == LH_OK && per == 4) {
         char what[100];
@@ -401,16 +404,12 @@ lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_
     unsigned char pre[LH__PSLG_PRE];
     lh__scan s;
     lh__pslg_scan_init(&s, f, pre, name, msg, msg_size);
-    poly_ctx x = {&s, out, {"vertex", "vertices", 0, 0, 0}, {"segment", "segments", 0, 0, 0},
-                  {"hole", "holes", 0, 0, 0}, {"region", "regions", 0, 0, 0}, 0, 0};
+    poly_ctx x = {&s, out, {"vertex", "vertices", 0, 0}, {"segment", "segments", 0, 0},
+                  {"hole", "holes", 0, 0}, {"region", "regions", 0, 0}, 0, 0, 0};
     st = read_poly(&x);
     if (st != LH_OK) {
         lh_pslg_free(out);
         return st;
     }
-    /* The file's first number: the vertices', else the first section's that has one. */
-    out->first_index = out->n ? x.v.first : out->segment_count ? x.seg.first
-                                          : out->hole_count    ? x.hole.first
-                                                               : x.reg.first;
     return LH_OK;
 }
