@@ -1,0 +1,447 @@
+/* test_trimesh.c — 2D meshing (lifthull.h, "2D meshing"): lh_triangulate_pslg on
+ * Triangle's files and earcut's polygons, checked exactly by lh_check_trimesh (every
+ * triangle counterclockwise, subsegments are edges, boundary edges are subsegments,
+ * every other edge locally Delaunay); the CDT of a polygon with h holes has n + 2h - 2
+ * triangles; quality bounds met but at small input angles; every degenerate input's
+ * resolution or error (message text and status); the checker's own rejections;
+ * determinism; every allocation failure. */
+#include "lh_api_test.h"
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef lh_status (*reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, char *, size_t);
+
+static lh_status load(reader rd, const char *path, lh_pslg *g)
+{
+    char full[512], msg[256];
+    snprintf(full, sizeof full, "%s/%s", LH_TEST_DATA_DIR, path);
+    FILE *f = fopen(full, "rb");
+    if (!f) return LH_ERR_IO;
+    lh_status st = rd(f, path, NULL, g, msg, sizeof msg);
+    fclose(f);
+    return st;
+}
+
+static lh_status load_text(const char *text, lh_pslg *g)
+{
+    FILE *f = lh_test_file(text, strlen(text));
+    if (!f) return LH_ERR_IO;
+    char msg[256];
+    lh_status st = lh_poly_read(f, "t.poly", NULL, g, msg, sizeof msg);
+    fclose(f);
+    return st;
+}
+
+static lh_status check(const lh_trimesh *m, char *msg, size_t size)
+{
+    return lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
+                            lh_trimesh_triangle_count(m), lh_trimesh_triangles(m),
+                            lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0, NULL, msg, size);
+}
+
+/* Meshes g with o (NULL: defaults), asserts the exact check, returns the mesh. */
+static lh_trimesh *mesh_checked(lh_test_state *lh_t_, const lh_pslg *g, const lh_trimesh_options *o,
+                                const char *what)
+{
+    lh_trimesh *m = NULL;
+    char msg[256] = "", cmsg[256] = "";
+    lh_status st = lh_triangulate_pslg(g, o, &m, msg, sizeof msg);
+    if (st != LH_OK) {
+        LH_NOTE("%s: %s (%s)", what, lh_status_name(st), msg);
+        LH_EXPECT_EQ_INT(st, LH_OK);
+        return NULL;
+    }
+    st = check(m, cmsg, sizeof cmsg);
+    if (st != LH_OK) LH_NOTE("%s: %s", what, cmsg);
+    LH_EXPECT_EQ_INT(st, LH_OK);
+    return m;
+}
+
+/* Every non-degenerate input segment is covered by subsegments that name it: their
+ * total count at least one per segment, and with no Steiner point exactly one. */
+static void expect_segments_kept(lh_test_state *lh_t_, const lh_pslg *g, const lh_trimesh *m)
+{
+    size_t *hits = calloc(g->segment_count + 1, sizeof *hits);
+    LH_ASSERT_TRUE(hits != NULL);
+    const lh_index *par = lh_trimesh_segment_parents(m);
+    for (size_t s = 0; s < lh_trimesh_segment_count(m); s++)
+        if (par[s] >= 0) hits[par[s]]++;
+    lh_trimesh_stats st;
+    lh_trimesh_get_stats(m, &st);
+    /* a segment with an endpoint in no triangle lay in a hole or outside: removed */
+    char *used = calloc(lh_trimesh_point_count(m) + 1, 1);
+    LH_ASSERT_TRUE(used != NULL);
+    const lh_index *tri = lh_trimesh_triangles(m);
+    for (size_t i = 0; i < 3 * lh_trimesh_triangle_count(m); i++) used[tri[i]] = 1;
+    size_t missing = 0;
+    for (size_t s = 0; s < g->segment_count; s++)
+        missing += hits[s] == 0 && used[g->segments[2 * s]] && used[g->segments[2 * s + 1]];
+    free(used);
+    LH_EXPECT_EQ_U64(missing, st.segments_dropped + st.segments_overlapping);
+    free(hits);
+}
+
+static const char *const triangle_files[] = {
+    "triangle/A.poly", "triangle/la.poly", "triangle/face.poly", "triangle/double_hex.poly",
+    "triangle/double_hex2.poly", "triangle/double_hex3.poly", "triangle/square_circle_hole.poly",
+    "triangle/fish-and-rectangle.poly"};
+
+LH_TEST(cdt_of_triangle_files_is_exactly_valid)
+{
+    for (size_t i = 0; i < sizeof triangle_files / sizeof triangle_files[0]; i++) {
+        lh_pslg g;
+        LH_ASSERT_EQ_INT(load(lh_poly_read, triangle_files[i], &g), LH_OK);
+        lh_trimesh *m = mesh_checked(lh_t_, &g, NULL, triangle_files[i]);
+        if (m) {
+            lh_trimesh_stats st;
+            lh_trimesh_get_stats(m, &st);
+            LH_EXPECT_EQ_U64(st.steiner_points, 0);
+            LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), g.n);
+            expect_segments_kept(lh_t_, &g, m);
+        }
+        lh_trimesh_free(m);
+        lh_pslg_free(&g);
+    }
+}
+
+/* Polygons (an outer ring and disjoint holes, no crossing, no touching): n + 2h - 2
+ * triangles, n the vertices, h the holes — the count every triangulation without
+ * Steiner points has; each vertex alone inside (earcut's one-point "Steiner" rings)
+ * adds 2. (boxy, eberly-3, eberly-6, rain have rings touching: another count.) */
+LH_TEST(earcut_polygons_have_n_plus_2h_minus_2_triangles)
+{
+    static const char *const files[] = {
+        "polygons/building.json", "polygons/dude.json", "polygons/earcut.json",
+        "polygons/hilbert.json", "polygons/issue34.json",
+        "polygons/issue35.json", "polygons/issue52.json", "polygons/steiner.json"};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        lh_pslg g;
+        LH_ASSERT_EQ_INT(load(lh_rings_read, files[i], &g), LH_OK);
+        lh_trimesh *m = mesh_checked(lh_t_, &g, NULL, files[i]);
+        if (m) {
+            lh_trimesh_stats st;
+            lh_trimesh_get_stats(m, &st);
+            /* rings: a segment closes each, so segments = vertices per ring; one-point
+               rings (earcut's Steiner points) have no segment */
+            size_t rings = 0, alone = g.n;
+            for (size_t s = 0; s < g.segment_count; s++) rings += g.segments[2 * s + 1] < g.segments[2 * s];
+            alone -= g.segment_count; /* a ring of k >= 2 points has k segments */
+            const size_t h = rings - 1, want = g.n + alone + 2 * h - 2;
+            LH_EXPECT_EQ_U64(st.duplicates_merged, 0);
+            if (st.triangles != want) LH_NOTE("%s: n %zu h %zu alone %zu", files[i], g.n, h, alone);
+            LH_EXPECT_EQ_U64(st.triangles, want);
+        }
+        lh_trimesh_free(m);
+        lh_pslg_free(&g);
+    }
+}
+
+/* The smallest angle between two input segments at each vertex (degrees). */
+static double *input_angles(const lh_pslg *g)
+{
+    double *a = malloc((g->n ? g->n : 1) * sizeof *a);
+    if (!a) return NULL;
+    for (size_t i = 0; i < g->n; i++) a[i] = 360;
+    for (size_t s = 0; s < g->segment_count; s++)
+        for (size_t t = s + 1; t < g->segment_count; t++)
+            for (int i = 0; i < 2; i++)
+                for (int j = 0; j < 2; j++) {
+                    const lh_index o = g->segments[2 * s + i];
+                    if (o != g->segments[2 * t + j]) continue;
+                    const double *po = g->xy + 2 * (size_t)o, *pa = g->xy + 2 * (size_t)g->segments[2 * s + 1 - i],
+                                 *pb = g->xy + 2 * (size_t)g->segments[2 * t + 1 - j];
+                    const double ang = fabs(atan2(pa[1] - po[1], pa[0] - po[0]) - atan2(pb[1] - po[1], pb[0] - po[0]));
+                    const double d = fmin(ang, 2 * 3.14159265358979323846 - ang) * 180 / 3.14159265358979323846;
+                    a[o] = fmin(a[o], d);
+                }
+    return a;
+}
+
+LH_TEST(quality_bound_met_but_at_small_input_angles)
+{
+    for (size_t i = 0; i < sizeof triangle_files / sizeof triangle_files[0]; i++) {
+        lh_pslg g;
+        LH_ASSERT_EQ_INT(load(lh_poly_read, triangle_files[i], &g), LH_OK);
+        lh_trimesh_options o;
+        lh_trimesh_options_default(&o);
+        o.min_angle = 30;
+        lh_trimesh *m = mesh_checked(lh_t_, &g, &o, triangle_files[i]);
+        double *small = input_angles(&g);
+        if (m && small) {
+            lh_trimesh_stats st;
+            lh_trimesh_get_stats(m, &st);
+            size_t below = 0;
+            for (size_t v = 0; v < g.n; v++) below += small[v] < 30;
+            if (!below) LH_EXPECT_GE_INT(st.min_angle, 30.0);
+            if (!below) LH_EXPECT_EQ_U64(st.bad_triangles, 0);
+            LH_EXPECT_LE_U64(st.bad_triangles, 4 * below); /* a few per small angle */
+            expect_segments_kept(lh_t_, &g, m);
+        }
+        free(small);
+        lh_trimesh_free(m);
+        lh_pslg_free(&g);
+    }
+}
+
+LH_TEST(area_bound_and_steiner_limit)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load(lh_poly_read, "triangle/A.poly", &g), LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.min_angle = 20;
+    o.max_area = 0.01;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "A -q20 -a0.01");
+    lh_trimesh_stats st;
+    if (m) {
+        lh_trimesh_get_stats(m, &st);
+        LH_EXPECT_LE_DBL(st.max_area, 0.01);
+        LH_EXPECT_GT_U64(st.triangles, 60);
+    }
+    lh_trimesh_free(m);
+    o.max_steiner = 10;
+    m = mesh_checked(lh_t_, &g, &o, "A -S10");
+    if (m) {
+        lh_trimesh_get_stats(m, &st);
+        LH_EXPECT_EQ_U64(st.steiner_points, 10);
+        LH_EXPECT_EQ_INT(st.steiner_limit_reached, 1);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+}
+
+static const char square_with_hole[] =
+    "8 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1\n6 3 1\n7 3 3\n8 1 3\n"
+    "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n"
+    "1\n1 2 2\n";
+
+LH_TEST(holes_are_carved_and_regions_marked)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load_text(square_with_hole, &g), LH_OK);
+    lh_trimesh *m = mesh_checked(lh_t_, &g, NULL, "square with hole");
+    if (m) LH_EXPECT_EQ_U64(lh_trimesh_triangle_count(m), 8); /* 8 + 2 - 2 */
+    lh_trimesh_free(m);
+    g.hole_count = 0; /* no hole: the inner square is meshed too, 2 more triangles */
+    m = mesh_checked(lh_t_, &g, NULL, "no hole");
+    if (m) LH_EXPECT_EQ_U64(lh_trimesh_triangle_count(m), 10);
+    lh_trimesh_free(m);
+    /* regions: the inner square gets attribute 7 */
+    double reg[8] = {2, 2, 7, -1, 0.5, 0.5, 3, -1};
+    g.regions = reg;
+    g.region_count = 2;
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.region_attributes = 1;
+    m = mesh_checked(lh_t_, &g, &o, "regions");
+    if (m) {
+        const double *at = lh_trimesh_triangle_attrs(m);
+        size_t seven = 0, three = 0;
+        for (size_t t = 0; t < lh_trimesh_triangle_count(m); t++) seven += at[t] == 7, three += at[t] == 3;
+        LH_EXPECT_EQ_U64(seven, 2);
+        LH_EXPECT_EQ_U64(three, 8);
+    }
+    lh_trimesh_free(m);
+    g.regions = NULL; /* the reader's arrays only */
+    g.region_count = 0;
+    lh_pslg_free(&g);
+}
+
+static void expect_failure(lh_test_state *lh_t_, const char *text, lh_status want, const char *want_msg)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load_text(text, &g), LH_OK);
+    lh_trimesh *m = (lh_trimesh *)&g;
+    char msg[256];
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), want);
+    LH_EXPECT_TRUE(m == NULL);
+    LH_EXPECT_STREQ(msg, want_msg);
+    lh_pslg_free(&g);
+}
+
+LH_TEST(bad_input_gets_its_error_and_line)
+{
+    expect_failure(lh_t_, "4 2 0 0\n1 0 0\n2 2 2\n3 0 2\n4 2 0\n2 0\n1 1 2\n2 3 4\n0\n",
+                   LH_ERR_DEGENERATE, "8: segment 2 crosses segment 1 (line 7)");
+    expect_failure(lh_t_, "3 2 0 0\n1 0 0\n2 1 0\n3 2 0\n0 0\n0\n", LH_ERR_DEGENERATE,
+                   "the vertices are all collinear or fewer than 3 distinct: no triangle");
+    expect_failure(lh_t_, "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n1 0\n1 1 2\n0\n", LH_ERR_DEGENERATE,
+                   "the domain is empty: the flood from the outside or a hole reached every "
+                   "triangle (is the boundary closed?)");
+    /* NaN cannot come from the reader: a caller's array */
+    double xy[6] = {0, 0, 1, 0, 0, NAN};
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = 3, g.xy = xy;
+    lh_trimesh *m;
+    char msg[128];
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_NONFINITE);
+    LH_EXPECT_STREQ(msg, "vertex 2: coordinate is NaN or infinite");
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(NULL, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    /* an endpoint out of range (the reader catches it in files; a caller's array here) */
+    xy[5] = 1;
+    lh_index seg[2] = {0, 3};
+    g.segments = seg, g.segment_count = 1;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "segment 0: endpoint 3 is not a vertex (0..2)");
+    g.segment_count = 0;
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.min_angle = 41;
+    xy[5] = 1;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+}
+
+LH_TEST(degenerate_input_is_resolved_and_reported)
+{
+    /* vertex 5 duplicates 1, segment 5 has zero length after merging, segment 6
+       overlaps segment 1 in part (vertex 6 lies on it and splits it), the hole seed
+       is outside the domain */
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load_text("6 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 0 0\n6 2 0\n"
+                               "6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 1 5\n6 1 6\n1\n1 9 9\n",
+                               &g),
+                     LH_OK);
+    lh_trimesh *m = mesh_checked(lh_t_, &g, NULL, "degenerate");
+    if (m) {
+        lh_trimesh_stats st;
+        lh_trimesh_get_stats(m, &st);
+        LH_EXPECT_EQ_U64(st.duplicates_merged, 1);
+        LH_EXPECT_EQ_U64(st.segments_dropped, 1);
+        LH_EXPECT_EQ_U64(st.segments_overlapping, 1);
+        LH_EXPECT_EQ_U64(st.holes_ignored, 1);
+        LH_EXPECT_EQ_U64(st.triangles, 3); /* the square with vertex 6 on its bottom side */
+        LH_EXPECT_EQ_U64(lh_trimesh_segment_count(m), 5);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+}
+
+static int cmp3(const void *x, const void *y)
+{
+    const lh_index *a = x, *b = y;
+    for (int k = 0; k < 3; k++)
+        if (a[k] != b[k]) return a[k] < b[k] ? -1 : 1;
+    return 0;
+}
+
+/* Whether two triangle lists hold the same triangles (each rotated to start at its
+ * smallest vertex, then sorted). */
+static int same_triangles(size_t n, const lh_index *a, const lh_index *b)
+{
+    lh_index *x = malloc((3 * n + 1) * sizeof *x), *y = malloc((3 * n + 1) * sizeof *y);
+    int same = x && y;
+    for (size_t t = 0; same && t < n; t++) {
+        int ia = 0, ib = 0;
+        for (int k = 1; k < 3; k++) {
+            if (a[3 * t + k] < a[3 * t + ia]) ia = k;
+            if (b[3 * t + k] < b[3 * t + ib]) ib = k;
+        }
+        for (int k = 0; k < 3; k++) x[3 * t + k] = a[3 * t + (ia + k) % 3], y[3 * t + k] = b[3 * t + (ib + k) % 3];
+    }
+    if (same) {
+        qsort(x, n, 3 * sizeof *x, cmp3);
+        qsort(y, n, 3 * sizeof *y, cmp3);
+        same = !memcmp(x, y, 3 * n * sizeof *x);
+    }
+    free(x);
+    free(y);
+    return same;
+}
+
+LH_TEST(output_is_deterministic_and_independent_of_segment_order)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load(lh_poly_read, "triangle/la.poly", &g), LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    lh_trimesh *a = mesh_checked(lh_t_, &g, &o, "la"), *b = mesh_checked(lh_t_, &g, &o, "la again");
+    if (a && b) {
+        LH_ASSERT_EQ_U64(lh_trimesh_triangle_count(a), lh_trimesh_triangle_count(b));
+        LH_EXPECT_TRUE(!memcmp(lh_trimesh_triangles(a), lh_trimesh_triangles(b),
+                               3 * lh_trimesh_triangle_count(a) * sizeof(lh_index)));
+    }
+    /* segments reversed in order and direction: the same triangles (a CDT of points in
+       general position is unique), as sets */
+    for (size_t s = 0; s < g.segment_count / 2; s++)
+        for (int j = 0; j < 2; j++) {
+            const lh_index x = g.segments[2 * s + j];
+            g.segments[2 * s + j] = g.segments[2 * (g.segment_count - 1 - s) + 1 - j];
+            g.segments[2 * (g.segment_count - 1 - s) + 1 - j] = x;
+        }
+    lh_trimesh *c = mesh_checked(lh_t_, &g, &o, "la reversed");
+    if (a && c) {
+        LH_ASSERT_EQ_U64(lh_trimesh_triangle_count(a), lh_trimesh_triangle_count(c));
+        LH_EXPECT_EQ_INT(same_triangles(lh_trimesh_triangle_count(a), lh_trimesh_triangles(a),
+                                        lh_trimesh_triangles(c)), 1);
+    }
+    lh_trimesh_free(a);
+    lh_trimesh_free(b);
+    lh_trimesh_free(c);
+    lh_pslg_free(&g);
+}
+
+LH_TEST(the_check_rejects_what_is_not_a_cdt)
+{
+    /* the unit square split by the diagonal 0-2, and a fifth point near the centre */
+    const double xy[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    const lh_index good[] = {0, 1, 2, 0, 2, 3}, flipped[] = {0, 2, 1, 0, 2, 3};
+    const lh_index hull[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    char msg[128];
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 4, hull, 0, NULL, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, flipped, 4, hull, 0, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_STREQ(msg, "triangle 0 is not counterclockwise with positive area");
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 0, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_STREQ(msg, "a boundary edge of triangle 1 is not a subsegment");
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 1, NULL, msg, sizeof msg), LH_OK);
+    /* a kite whose diagonal is not Delaunay: (0,0) (2,-1) (4,0) (2,1) split 1-3 is
+       Delaunay, split 0-2 is not */
+    const double kite[] = {0, 0, 2, -0.5, 4, 0, 2, 0.5};
+    const lh_index long_diag[] = {0, 1, 2, 0, 2, 3}, short_diag[] = {0, 1, 3, 1, 2, 3};
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, short_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, long_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_STREQ(msg, "an unconstrained edge of triangle 0 is not locally Delaunay");
+    const lh_index seg[] = {0, 2}; /* ... unless that diagonal is a subsegment */
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, long_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, short_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_STREQ(msg, "subsegment 0 is not an edge of the triangulation");
+}
+
+static lh_status mesh_with(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
+{
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.min_angle = 25;
+    o.region_attributes = 1;
+    o.alloc = a;
+    lh_trimesh *m = NULL;
+    lh_status st = lh_triangulate_pslg(user, &o, &m, NULL, 0);
+    if (st != LH_OK) LH_EXPECT_TRUE(m == NULL);
+    lh_trimesh_free(m);
+    return st;
+}
+
+LH_TEST(every_allocation_failure_is_survived)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load(lh_poly_read, "triangle/A.poly", &g), LH_OK);
+    LH_EXPECT_GT_U64(lh_test_every_failure(lh_t_, mesh_with, &g), 20);
+    lh_pslg_free(&g);
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(cdt_of_triangle_files_is_exactly_valid), LH_CASE(earcut_polygons_have_n_plus_2h_minus_2_triangles),
+        LH_CASE(quality_bound_met_but_at_small_input_angles), LH_CASE(area_bound_and_steiner_limit),
+        LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
+        LH_CASE(degenerate_input_is_resolved_and_reported),
+        LH_CASE(output_is_deterministic_and_independent_of_segment_order),
+        LH_CASE(the_check_rejects_what_is_not_a_cdt), LH_CASE(every_allocation_failure_is_survived),
+    };
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
