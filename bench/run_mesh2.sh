@@ -92,7 +92,7 @@ run_lifthull() {  # SWITCHES FILE
   mkdir -p "$d"
   cp "$work/$2.poly" "$d/$2.poly"
   t0="$(date +%s%N)"
-  err="$("$LH" triangle "$1" "$d/$2.poly" 2>&1 >/dev/null)" || { echo "failed 0"; return; }
+  err="$(LIFTHULL_TIMING=1 "$LH" triangle "$1" "$d/$2.poly" 2>&1 >/dev/null)" || { echo "failed 0"; return; }
   t1="$(date +%s%N)"
   if [[ "$err" == *compute_ms=* ]]; then
     local ms="${err##*compute_ms=}"

@@ -172,6 +172,7 @@ static int run(const sw *o, const char *file)
     const double t0 = lh_cli_seconds();
     lh_status st = lh_triangulate_pslg(&in.g, &opt, &m, msg, sizeof msg);
     const double secs = lh_cli_seconds() - t0;
+    if (getenv("LIFTHULL_TIMING")) fprintf(stderr, "compute_ms=%.3f\n", 1e3 * secs); /* for bench/ */
     if (st != LH_OK) {
         lh_cli_pslg_report(&in, st, msg);
         rc = st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL ? LH_EXIT_FAIL : LH_EXIT_INPUT;

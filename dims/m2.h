@@ -119,9 +119,20 @@ lh_status lh__m2_cavity_push_tri(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_ind
                                  lh_index d, const lh_index sg[3]);
 lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c);
 void lh__m2_cavity_clear(lh__m2_cavity *c);
+/* The fan case of lh__m2_cavity_apply (m2_cavity.c): every new triangle i is
+ * (x, y, p) for one common p, on the boundary edge x->y of dead triangle t at
+ * position k recorded by lh__m2_cavity_push_bnd(m, c, t, k) in the same order. */
+lh_status lh__m2_cavity_push_bnd(lh__m2 *m, lh__m2_cavity *c, lh_index t, int k);
+lh_status lh__m2_cavity_apply_fan(lh__m2 *m, lh__m2_cavity *c);
 lh_status lh__m2_stack_push(lh__m2 *m, lh__m2_cavity *c, lh_index t);
-/* Grows an array of elements of size esz to hold need (doubling), keeping count. */
-int lh__m2_grow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need, size_t esz);
+/* Grows an array of elements of size esz to hold need (doubling), keeping count;
+ * 0 when out of memory. */
+int lh__m2_grow_slow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need, size_t esz);
+static inline int lh__m2_grow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need,
+                              size_t esz)
+{
+    return need <= *cap || lh__m2_grow_slow(m, arr, count, cap, need, esz);
+}
 
 /* Why a segment could not be inserted (cdt_insert.c). */
 typedef struct lh__m2_problem {

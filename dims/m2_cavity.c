@@ -13,9 +13,8 @@
 
 #include "m2.h"
 
-int lh__m2_grow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need, size_t esz)
+int lh__m2_grow_slow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need, size_t esz)
 {
-    if (need <= *cap) return 1;
     size_t c = *cap ? *cap : 32;
     while (c < need) c *= 2;
     if (c > SIZE_MAX / esz) return 0;
@@ -194,6 +193,63 @@ lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
             return LH_ERR_INTERNAL; /* an edge on three sides, or an uncovered live edge */
         }
         i = j;
+    }
+    return LH_OK;
+}
+
+lh_status lh__m2_cavity_push_bnd(lh__m2 *m, lh__m2_cavity *c, lh_index t, int k)
+{
+    if (!lh__m2_grow(m, (void **)&c->bnd, 5 * c->bnd_count, &c->bnd_cap, 5 * (c->bnd_count + 1),
+                     sizeof(lh_index)))
+        return LH_ERR_NOMEM;
+    lh_index *b = c->bnd + 5 * c->bnd_count++;
+    const lh_index n = m->nb[3 * (size_t)t + k];
+    b[0] = m->v[3 * (size_t)t + (k + 1) % 3];
+    b[1] = m->v[3 * (size_t)t + (k + 2) % 3];
+    b[2] = n;
+    b[3] = m->sg[3 * (size_t)t + k];
+    b[4] = n >= 0 ? lh__m2_npos(m, n, t) : -1;
+    return LH_OK;
+}
+
+/* The fan case: new triangle i is (x_i, y_i, p) on boundary edge i (c->bnd, pushed
+ * in the same order), so its neighbour across x_i-y_i is that edge's outside, and
+ * across y_i-p and p-x_i the fan triangles starting at y_i and ending at x_i: a
+ * search among the few triangles of the fan (the general pairing past 32). */
+lh_status lh__m2_cavity_apply_fan(lh__m2 *m, lh__m2_cavity *c)
+{
+    const size_t k = c->tri_count;
+    if (k > 32 || c->bnd_count != k) {
+        c->bnd_count = 0;
+        return lh__m2_cavity_apply(m, c);
+    }
+    lh_status st = lh__m2_reserve_tris(m, k);
+    if (st != LH_OK) return st;
+    const double rattr = m->tattr && c->dead_count ? m->tattr[c->dead[0]] : 0;
+    const double rarea = m->tarea && c->dead_count ? m->tarea[c->dead[0]] : 0;
+    for (size_t i = 0; i < c->dead_count; i++) lh__m2_kill_tri(m, c->dead[i]);
+    lh_index id[32];
+    c->stack_count = 0;
+    for (size_t i = 0; i < k; i++) {
+        if ((st = lh__m2_stack_push(m, c, lh__m2_new_tri(m))) != LH_OK) return st;
+        id[i] = c->stack[i];
+    }
+    for (size_t i = 0; i < k; i++) {
+        const size_t t = (size_t)id[i];
+        const lh_index *v = c->tri + 3 * i, *b = c->bnd + 5 * i;
+        if (m->tattr) m->tattr[t] = rattr, m->tarea[t] = rarea;
+        lh_index nx = -1, ny = -1; /* across y-p: starts at y; across p-x: ends at x */
+        for (size_t j = 0; j < k; j++) {
+            if (c->tri[3 * j] == v[1]) nx = id[j];
+            if (c->tri[3 * j + 1] == v[0]) ny = id[j];
+        }
+        for (int q = 0; q < 3; q++) {
+            m->v[3 * t + q] = v[q];
+            m->vt[v[q]] = (lh_index)t;
+        }
+        m->nb[3 * t] = nx, m->nb[3 * t + 1] = ny, m->nb[3 * t + 2] = b[2];
+        m->sg[3 * t] = c->tsg[3 * i], m->sg[3 * t + 1] = c->tsg[3 * i + 1], m->sg[3 * t + 2] = b[3];
+        if (b[2] >= 0) m->nb[3 * (size_t)b[2] + b[4]] = (lh_index)t;
     }
     return LH_OK;
 }

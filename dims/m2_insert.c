@@ -77,6 +77,7 @@ static lh_status fan(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index pi,
                 sg[1] = x == sa ? half[0] : x == sb ? half[1] : -1;
             }
             lh_status st = lh__m2_cavity_push_tri(m, c, x, y, pi, sg);
+            if (st == LH_OK) st = lh__m2_cavity_push_bnd(m, c, (lh_index)t, k);
             if (st != LH_OK) return st;
         }
     }
@@ -153,7 +154,7 @@ lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_i
     } else if ((st = fan(m, c, p, pi, -1, half, e, &bad)) != LH_OK) {
         return st;
     }
-    if ((st = lh__m2_cavity_apply(m, c)) != LH_OK) return st;
+    if ((st = lh__m2_cavity_apply_fan(m, c)) != LH_OK) return st;
     r->vertex = pi;
     return LH_OK;
 }

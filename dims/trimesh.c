@@ -167,26 +167,43 @@ done:
     return st;
 }
 
-static void measure(lh_trimesh *r)
+/* Angle and area ranges: per triangle the cosines of its smallest and largest angles
+ * (opposite its shortest and longest edges, by the law of cosines), one acos at the
+ * end since acos is decreasing. */
+static void measure(const lh_trimesh *r, lh_trimesh_stats *s)
 {
-    lh_trimesh_stats *s = &r->stats;
     s->triangles = r->nt;
-    s->min_angle = s->min_area = r->nt ? INFINITY : 0;
-    s->max_angle = s->max_area = 0;
+    double cmin = 1, cmax = -1; /* cosine of the largest angle, of the smallest */
+    s->min_area = r->nt ? INFINITY : 0;
+    s->max_area = 0;
     for (size_t t = 0; t < r->nt; t++) {
         const double *p[3];
+        double l2[3];
         for (int k = 0; k < 3; k++) p[k] = r->xy + 2 * (size_t)r->tri[3 * t + k];
         for (int k = 0; k < 3; k++) {
-            const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
-            const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
-            const double ang = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180 / 3.14159265358979323846);
-            s->min_angle = ang < s->min_angle ? ang : s->min_angle;
-            s->max_angle = ang > s->max_angle ? ang : s->max_angle;
+            const double dx = p[(k + 2) % 3][0] - p[(k + 1) % 3][0], dy = p[(k + 2) % 3][1] - p[(k + 1) % 3][1];
+            l2[k] = dx * dx + dy * dy; /* the edge opposite corner k */
+        }
+        int lo = 0, hi = 0;
+        for (int k = 1; k < 3; k++) {
+            if (l2[k] < l2[lo]) lo = k;
+            if (l2[k] > l2[hi]) hi = k;
+        }
+        if (lo == hi) hi = (lo + 1) % 3; /* equilateral */
+        for (int j = 0; j < 2; j++) {
+            const int k = j ? hi : lo;
+            const double b = l2[(k + 1) % 3], c = l2[(k + 2) % 3];
+            double cs = (b + c - l2[k]) / (2 * sqrt(b * c));
+            cs = cs > 1 ? 1 : cs < -1 ? -1 : cs;
+            if (j) cmin = cs < cmin ? cs : cmin; else cmax = cs > cmax ? cs : cmax;
         }
         const double area = ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])) / 2;
         s->min_area = area < s->min_area ? area : s->min_area;
         s->max_area = area > s->max_area ? area : s->max_area;
     }
+    const double deg = 180 / 3.14159265358979323846;
+    s->min_angle = r->nt ? acos(cmax) * deg : 0;
+    s->max_angle = r->nt ? acos(cmin) * deg : 0;
 }
 
 /* Steps 3-5 on a constrained triangulation. */
@@ -206,8 +223,9 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
                           o->max_steiner, g->segments, dup, &r->stats};
     if ((o->min_angle > 0 || o->max_area > 0 || o->region_areas) && (st = lh__m2_refine(m, c, &ro)) != LH_OK)
         return st;
-    size_t nbad;
-    lh__m2_bad_triangles(m, &ro, NULL, &nbad);
+    const int bounded = o->min_angle > 0 || o->max_area > 0 || o->region_areas;
+    size_t nbad = 0;
+    if (bounded) lh__m2_bad_triangles(m, &ro, NULL, &nbad);
     if ((st = harvest(r, m)) != LH_OK) return st;
     if (!o->region_attributes) {
         lh__free(&r->al, r->tattr);
@@ -222,7 +240,7 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     lh__refine_opts q = ro;
     lh_index *slots = lh__alloc(&r->al, (nbad ? nbad : 1) * sizeof(lh_index));
     if (!slots) return LH_ERR_NOMEM;
-    lh__m2_bad_triangles(m, &q, slots, &nbad);
+    if (bounded) lh__m2_bad_triangles(m, &q, slots, &nbad);
     for (size_t t = 0; t < m->nt && k < nbad; t++) {
         if (m->v[3 * t] < 0) continue;
         if ((size_t)slots[k] == t) r->bad[k++] = (lh_index)live;
@@ -230,7 +248,6 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     }
     lh__free(&r->al, slots);
     r->stats.bad_triangles = nbad;
-    measure(r);
     return LH_OK;
 }
 
@@ -311,5 +328,10 @@ const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m) { return m ? m->ba
 void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out)
 {
     if (!out) return;
-    if (m) *out = m->stats; else memset(out, 0, sizeof *out);
+    if (!m) {
+        memset(out, 0, sizeof *out);
+        return;
+    }
+    *out = m->stats;
+    measure(m, out);
 }

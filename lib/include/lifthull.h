@@ -781,7 +781,8 @@ const lh_index *lh_trimesh_segments(const lh_trimesh *m);
 const lh_index *lh_trimesh_segment_markers(const lh_trimesh *m);
 const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m);
 
-/* What happened, and the quality reached. Angles in degrees. */
+/* What happened, and the quality reached (angles in degrees; the ranges are measured
+ * at each call, one pass over the triangles). */
 typedef struct lh_trimesh_stats {
     size_t input_vertices, duplicates_merged, segments_dropped, segments_overlapping;
     size_t holes_ignored, regions_ignored;
