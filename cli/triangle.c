@@ -12,14 +12,14 @@
 #include <string.h>
 
 typedef struct sw {
-    int p, q, a_regions, A, c, Y, O, I, Q, V, S, noP;
+    int p, q, a_regions, A, c, D, Y, O, I, Q, V, S, noP;
     double angle, area;
     size_t steiner;
     lh_cli_tri_files files;
 } sw;
 
 static const char *const usage_text =
-    "usage: lifthull triangle [-pqaAcYSjezBPNEIOQVgnil] FILE[.poly|.node|.json]\n"
+    "usage: lifthull triangle [-pqaAcDYSjezBPNEIOQVgnil] FILE[.poly|.node|.json]\n"
     "\n"
     "Triangle's command line (J. R. Shewchuk), computed exactly by lifthull: the same\n"
     "switches, input and output files. FILE.poly (or -p FILE) is a planar straight-line\n"
@@ -32,6 +32,7 @@ static const char *const usage_text =
     "  -a[X]   no triangle area above X; -a alone: the .poly regions' area bounds\n"
     "  -A      regional attributes: each triangle gets its region's attribute\n"
     "  -c      keep the convex hull (do not carve from the outside)\n"
+    "  -D      conforming Delaunay: segments split until every triangle is Delaunay\n"
     "  -Y      no Steiner points on the boundary; -YY: on no segment\n"
     "  -S[N]   at most N Steiner points\n"
     "  -j      leave points that are in no triangle out of the output\n"
@@ -43,7 +44,7 @@ static const char *const usage_text =
     "  -Q      quiet; -V verbose: the quality report (angles, areas, histogram)\n"
     "  -i -F -l -s -C -X   Triangle's choices of algorithm or arithmetic: accepted,\n"
     "          nothing changes (lifthull is always exact)\n"
-    "not supported: -r (refining a mesh), -D (conforming Delaunay), -o2, -v, -u\n"
+    "not supported: -r (refining a mesh), -o2, -v, -u\n"
     "\n"
     "examples:\n"
     "  lifthull triangle -pq30 A.poly       quality mesh of the letter A\n"
@@ -74,6 +75,7 @@ static int parse_switches(const char *s, sw *o)
             break;
         case 'A': o->A = 1; break;
         case 'c': o->c = 1; break;
+        case 'D': o->D = 1; break;
         case 'Y': o->Y++; break;
         case 'S': o->S = 1; o->steiner = number_after(s, &j, &x) && x >= 0 ? (size_t)x : 0; break;
         case 'j': o->files.jettison = 1; break;
@@ -90,7 +92,7 @@ static int parse_switches(const char *s, sw *o)
         case 'Q': o->Q = 1; break;
         case 'V': o->V = 1; break;
         case 'i': case 'F': case 'l': case 's': case 'C': case 'X': break;
-        case 'r': case 'D': case 'o': case 'v': case 'u': case 'k': case 'L': case 'w': case 'W':
+        case 'r': case 'o': case 'v': case 'u': case 'k': case 'L': case 'w': case 'W':
             fprintf(stderr, "lifthull triangle: -%c is not supported (see lifthull triangle --help)\n", s[j]);
             return 0;
         default:
@@ -162,6 +164,7 @@ static int run(const sw *o, const char *file)
     lh_trimesh_options opt;
     lh_trimesh_options_default(&opt);
     opt.convex_hull = o->c;
+    opt.conforming = o->D;
     opt.min_angle = o->q ? o->angle : 0;
     opt.max_area = o->area;
     opt.region_areas = o->a_regions;

@@ -432,7 +432,7 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
         r.ratio2 = 1 / (s * s); /* 4 (R / shortest)^2 > 1 / sin^2 */
         const double cs = cos(o->min_angle * PI / 180);
         r.off_h = 0.475 * sqrt((1 + cs) / (1 - cs));
-        m->lens = (2 * cs * cs - 1) * (2 * cs * cs - 1);
+        if (!o->conforming) m->lens = (2 * cs * cs - 1) * (2 * cs * cs - 1);
     }
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < m->np; i++)

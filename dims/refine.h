@@ -8,6 +8,9 @@ typedef struct lh__refine_opts {
     double min_angle;          /* degrees, 0: none                                     */
     double max_area;           /* <= 0: none                                           */
     int region_areas;          /* the triangles' region bounds (m->tarea) apply        */
+    int conforming;            /* diametral circles always (no lenses): every subsegment's
+                                  circle empty of its triangles' apexes at the end, so
+                                  every edge is locally Delaunay (lh_trimesh_options)   */
     int boundary_steiner;      /* lh_trimesh_options.boundary_steiner                  */
     size_t max_steiner;
     const lh_index *segments;  /* the input segments (2 each) and the duplicate map:   */

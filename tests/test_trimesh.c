@@ -187,6 +187,38 @@ LH_TEST(quality_bound_met_but_at_small_input_angles)
     }
 }
 
+/* -D: subsegments split until every edge, those on segments too, is locally Delaunay
+ * (checked with no subsegments given, so that every interior edge is tested). */
+LH_TEST(conforming_delaunay_has_every_edge_delaunay)
+{
+    for (size_t i = 0; i < sizeof triangle_files / sizeof triangle_files[0]; i++) {
+        lh_pslg g;
+        LH_ASSERT_EQ_INT(load(lh_poly_read, triangle_files[i], &g), LH_OK);
+        lh_trimesh_options o;
+        lh_trimesh_options_default(&o);
+        o.conforming = 1;
+        lh_trimesh *m = mesh_checked(lh_t_, &g, &o, triangle_files[i]), *cdt = mesh_checked(lh_t_, &g, NULL, "cdt");
+        char msg[256] = "";
+        if (m) {
+            LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
+                                              lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0, NULL, 1,
+                                              NULL, msg, sizeof msg),
+                             LH_OK);
+            expect_segments_kept(lh_t_, &g, m);
+        }
+        if (msg[0]) LH_NOTE("%s: %s", triangle_files[i], msg);
+        /* the plain CDT of these files is not conforming: the test can fail */
+        if (cdt && i == 1) /* la.poly */
+            LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(cdt), lh_trimesh_points(cdt),
+                                              lh_trimesh_triangle_count(cdt), lh_trimesh_triangles(cdt), 0, NULL,
+                                              1, NULL, msg, sizeof msg),
+                             LH_ERR_INTERNAL);
+        lh_trimesh_free(m);
+        lh_trimesh_free(cdt);
+        lh_pslg_free(&g);
+    }
+}
+
 LH_TEST(area_bound_and_steiner_limit)
 {
     lh_pslg g;
@@ -437,7 +469,8 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(cdt_of_triangle_files_is_exactly_valid), LH_CASE(earcut_polygons_have_n_plus_2h_minus_2_triangles),
-        LH_CASE(quality_bound_met_but_at_small_input_angles), LH_CASE(area_bound_and_steiner_limit),
+        LH_CASE(quality_bound_met_but_at_small_input_angles), LH_CASE(conforming_delaunay_has_every_edge_delaunay),
+        LH_CASE(area_bound_and_steiner_limit),
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
