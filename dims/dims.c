@@ -6,10 +6,10 @@
  */
 #include "dt.h"
 
-lh_status lh__dims_insert_2(lh__eng *e, size_t first, size_t count, const int32_t *list);
-lh_status lh__dims_insert_3(lh__eng *e, size_t first, size_t count, const int32_t *list);
-lh_status lh__dims_insert_4(lh__eng *e, size_t first, size_t count, const int32_t *list);
-lh_status lh__dims_insert_5(lh__eng *e, size_t first, size_t count, const int32_t *list);
+lh_status lh__dims_insert_2(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status lh__dims_insert_3(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status lh__dims_insert_4(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status lh__dims_insert_5(lh__eng *e, size_t first, size_t count, const lh_index *list);
 
 static lh__insert_fn pick(int d)
 {

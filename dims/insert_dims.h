@@ -21,7 +21,7 @@ static void prepare_fixed(lh__eng *e)
 }
 
 /* insphere_sos of finite cell v (positively oriented) and vertex q. */
-static inline int lifted_sign_fixed(lh__eng *e, const int32_t *v, int32_t q)
+static inline int lifted_sign_fixed(lh__eng *e, const lh_index *v, lh_index q)
 {
     const double *p[LH_DIM + 2];
     for (int k = 0; k <= LH_DIM; k++) p[k] = lh__eng_site(e, v[k]);

@@ -14,7 +14,7 @@ lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
 {
     if (d < lo || d > hi) return LH_ERR_DIMENSION;
     if (!xyz && n > 0) return LH_ERR_INVALID_ARGUMENT;
-    if (n >= (size_t)INT32_MAX || n > SIZE_MAX / ((size_t)d * sizeof(double)))
+    if (n >= (size_t)LH_INDEX_MAX || n > SIZE_MAX / ((size_t)d * sizeof(double)))
         return LH_ERR_TOO_LARGE;
     if (opt && opt->alloc && (!opt->alloc->alloc || !opt->alloc->free))
         return LH_ERR_INVALID_ARGUMENT;
@@ -22,7 +22,7 @@ lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
 }
 
 lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
-                       const double *xyz, int32_t *dup, const lh_options *opt)
+                       const double *xyz, lh_index *dup, const lh_options *opt)
 {
     memset(e, 0, sizeof *e);
     lh__allocator_init(&e->alloc, alloc);
@@ -58,7 +58,7 @@ void lh__eng_release(lh__eng *e)
     e->pred = NULL;
 }
 
-int lh__eng_finite(const lh__eng *e, int32_t c)
+int lh__eng_finite(const lh__eng *e, lh_index c)
 {
     return e->tds.vert[(size_t)c * e->nv] != LH__INF;
 }
@@ -68,21 +68,21 @@ int lh__eng_finite(const lh__eng *e, int32_t c)
 static lh_status start(lh__eng *e)
 {
     const int nv = e->nv;
-    int32_t s[LH__ENGINE_MAX_DIM + 1] = {0}, cells[LH__ENGINE_MAX_DIM + 2];
+    lh_index s[LH__ENGINE_MAX_DIM + 1] = {0}, cells[LH__ENGINE_MAX_DIM + 2];
     for (int k = 0; k < nv; k++) {
         s[k] = k;
         e->pts[k] = lh__eng_site(e, s[k]);
     }
     if (lh_orient(e->pred, e->d, e->pts) < 0) {
-        int32_t x = s[0];
+        lh_index x = s[0];
         s[0] = s[1];
         s[1] = x;
     }
     for (int i = 0; i <= nv; i++) {
-        int32_t c = lh__tds_new_cell(&e->tds);
+        lh_index c = lh__tds_new_cell(&e->tds);
         if (c < 0) return LH_ERR_NOMEM;
         cells[i] = c;
-        int32_t *v = e->tds.vert + (size_t)c * nv;
+        lh_index *v = e->tds.vert + (size_t)c * nv;
         if (i < nv)
             lh__eng_make_infinite(v, s, nv, i);
         else
@@ -93,7 +93,7 @@ static lh_status start(lh__eng *e)
     return LH_OK;
 }
 
-lh_status lh__eng_insert(lh__eng *e, const int32_t *list, size_t count)
+lh_status lh__eng_insert(lh__eng *e, const lh_index *list, size_t count)
 {
     return (e->insert ? e->insert : lh__eng_insert_generic)(e, 0, count, list);
 }
@@ -116,9 +116,9 @@ static lh_status copy_sites(lh__eng *e)
 static void restore_indices(lh__eng *e)
 {
     const int nv = e->nv;
-    for (int32_t c = 0; c < e->tds.top; c++) {
+    for (lh_index c = 0; c < e->tds.top; c++) {
         if (lh__tds_dead(&e->tds, c)) continue;
-        int32_t *v = e->tds.vert + (size_t)c * nv;
+        lh_index *v = e->tds.vert + (size_t)c * nv;
         for (int k = 0; k < nv; k++)
             if (v[k] >= 0) v[k] = e->order[v[k]];
     }
@@ -126,7 +126,7 @@ static void restore_indices(lh__eng *e)
     e->site = e->site_copy = NULL;
 }
 
-lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
+lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim)
 {
     lh_status st = lh__eng_order(e);
     if (st != LH_OK) return st;
@@ -147,27 +147,27 @@ lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim)
     return LH_OK;
 }
 
-lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count)
+lh_status lh__eng_hull_facets(lh__eng *e, lh_index **out, size_t *count)
 {
     const int nv = e->nv, d = e->d;
     size_t h = 0;
-    for (int32_t c = 0; c < e->tds.top; c++)
+    for (lh_index c = 0; c < e->tds.top; c++)
         if (!lh__tds_dead(&e->tds, c) && !lh__eng_finite(e, c)) h++;
-    int32_t *raw = lh__alloc(&e->alloc, (h * d + 1) * sizeof *raw);
-    int32_t *facets = lh__alloc(&e->alloc, (h * d + 1) * sizeof *facets);
-    int32_t *order = lh__alloc(&e->alloc, (h + 1) * sizeof *order);
+    lh_index *raw = lh__alloc(&e->alloc, (h * d + 1) * sizeof *raw);
+    lh_index *facets = lh__alloc(&e->alloc, (h * d + 1) * sizeof *facets);
+    lh_index *order = lh__alloc(&e->alloc, (h + 1) * sizeof *order);
     lh_status st = raw && facets && order ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK) {
         size_t f = 0;
-        for (int32_t c = 0; c < e->tds.top; c++) {
+        for (lh_index c = 0; c < e->tds.top; c++) {
             if (lh__tds_dead(&e->tds, c) || lh__eng_finite(e, c)) continue;
-            const int32_t *v = e->tds.vert + (size_t)c * nv;
-            int32_t *o = raw + f * d;
+            const lh_index *v = e->tds.vert + (size_t)c * nv;
+            lh_index *o = raw + f * d;
             for (int k = 1; k < nv; k++) o[k - 1] = v[k];
             /* Moving the outside point from position 0 (LH__INF's) to the end takes
              * d exchanges; compensate an odd number with one more. */
             if (d & 1) {
-                int32_t x = o[0];
+                lh_index x = o[0];
                 o[0] = o[1];
                 o[1] = x;
             }

@@ -35,13 +35,13 @@
 #define LH__ENGINE_MAX_DIM LH_ORIENT_MAX_DIM
 
 /* Whether the finite cell with vertices v (positively oriented) conflicts with site q. */
-typedef int (*lh__finite_conflict_fn)(void *user, const int32_t *v, int32_t q);
+typedef int (*lh__finite_conflict_fn)(void *user, const lh_index *v, lh_index q);
 
 struct lh__eng;
 /* An insertion loop (insert_impl.h): inserts vertices list[0..count-1], or
  * first..first+count-1 when list is NULL. */
 typedef lh_status (*lh__insert_fn)(struct lh__eng *e, size_t first, size_t count,
-                                   const int32_t *list);
+                                   const lh_index *list);
 
 typedef struct lh__eng {
     lh_allocator alloc;
@@ -53,13 +53,13 @@ typedef struct lh__eng {
                           insertion order; vertex v is the caller's order[v],
                           mapped back at the end) */
     double *site_copy;
-    int32_t *dup;      /* n, the caller's: filled with the site each one merges into */
+    lh_index *dup;     /* n, the caller's: filled with the site each one merges into */
     size_t ndup;
     lh_pred *pred;
     lh__tds tds;
-    int32_t *order;    /* distinct sites in insertion order */
+    lh_index *order;   /* distinct sites in insertion order */
     size_t norder;
-    int32_t q, hint;
+    lh_index q, hint;
     uint64_t rng;
     lh__finite_conflict_fn finite_conflict;
     void *user;
@@ -91,7 +91,7 @@ static inline const double *lh__eng_input(const lh__eng *e, size_t i)
 
 /* The coordinates of vertex v while building (insertion-order copy: sites close in
  * space are close in memory). */
-static inline const double *lh__eng_site(const lh__eng *e, int32_t v)
+static inline const double *lh__eng_site(const lh__eng *e, lh_index v)
 {
     return e->site + (size_t)v * (size_t)e->d;
 }
@@ -112,7 +112,7 @@ lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
 /* Sets up e (no cells yet) over the caller's sites; dup must hold n entries; the
  * seed comes from opt (NULL: the default). */
 lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
-                       const double *xyz, int32_t *dup, const lh_options *opt);
+                       const double *xyz, lh_index *dup, const lh_options *opt);
 void lh__eng_release(lh__eng *e);
 /* order.c: duplicates merged into e->dup, insertion order in e->order. */
 lh_status lh__eng_order(lh__eng *e);
@@ -128,7 +128,7 @@ int lh__independent_coords(lh_pred *pred, int d, const double *const *pts, int k
 /* All of the above, then every site inserted. LH_ERR_DEGENERATE when the sites
  * span less than R^d (*affdim tells the dimension). Afterwards the cells hold the
  * caller's site indices. */
-lh_status lh__eng_build(lh__eng *e, int32_t cells_hint, int *affdim);
+lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim);
 
 /* order.c: lexicographic order of sites, ties by index; ctx is an lh__lex (for
  * lh__sort_idx). */
@@ -136,24 +136,24 @@ typedef struct lh__lex {
     const double *xyz;
     int d;
 } lh__lex;
-int lh__lex_cmp(const void *ctx, int32_t a, int32_t b);
+int lh__lex_cmp(const void *ctx, lh_index a, lh_index b);
 
 /* A source of fixed-dimension insertion loops (dims/): the one for Delaunay in
  * R^d, or NULL. */
 typedef lh__insert_fn (*lh__insert_pick)(int d);
 
 /* insert_generic.c: the insertion loop with d a runtime value. */
-lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const int32_t *list);
+lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const lh_index *list);
 
 /* Inserts the vertices list[0..count-1] (distinct, none a vertex yet; coordinates
  * in e->site) into the cells of e->tds, which must hold a triangulation made as
  * lh__eng_build's: LH__INF at position 0 of every infinite cell. */
-lh_status lh__eng_insert(lh__eng *e, const int32_t *list, size_t count);
+lh_status lh__eng_insert(lh__eng *e, const lh_index *list, size_t count);
 
 /* v: the infinite cell over the facet of finite cell s (positively oriented) that
  * drops vertex k: LH__INF at position 0 (an invariant the cavity insertion keeps),
  * oriented by an odd permutation of s with LH__INF in place of vertex k. */
-static inline void lh__eng_make_infinite(int32_t *v, const int32_t *s, int nv, int k)
+static inline void lh__eng_make_infinite(lh_index *v, const lh_index *s, int nv, int k)
 {
     for (int j = 0; j < nv; j++) v[j] = s[j];
     if (k > 0) { /* exchange positions 0 and k */
@@ -167,38 +167,38 @@ static inline void lh__eng_make_infinite(int32_t *v, const int32_t *s, int nv, i
 }
 
 /* Whether cell c is finite. */
-int lh__eng_finite(const lh__eng *e, int32_t c);
+int lh__eng_finite(const lh__eng *e, lh_index c);
 /* The convex hull facets: d site indices each, ordered so that orient_d(facet, p) > 0
  * for p outside, in canonical order (see lh__canonical), sorted. Allocates *out. */
-lh_status lh__eng_hull_facets(lh__eng *e, int32_t **out, size_t *count);
+lh_status lh__eng_hull_facets(lh__eng *e, lh_index **out, size_t *count);
 
 /* Canonical order of an oriented tuple: increasing (insertion sort, counting the
  * exchanges' parity), then the last two exchanged if the sort was an odd
  * permutation, so that the orientation is kept. */
-static inline void lh__canonical(int32_t *v, int m)
+static inline void lh__canonical(lh_index *v, int m)
 {
     int parity = 0;
     for (int i = 1; i < m; i++) {
-        int32_t x = v[i];
+        lh_index x = v[i];
         int j = i;
         for (; j > 0 && x < v[j - 1]; j--) v[j] = v[j - 1];
         v[j] = x;
         parity ^= (i - j) & 1;
     }
     if (parity) {
-        int32_t x = v[m - 1];
+        lh_index x = v[m - 1];
         v[m - 1] = v[m - 2];
         v[m - 2] = x;
     }
 }
 /* canon.c: sorts count tuples of m site indices (< n) lexicographically from v into
  * out; order[i] = index in v of out's tuple i. Returns 0 on no memory. */
-int lh__sort_tuples(const lh_allocator *a, const int32_t *v, int m, size_t count,
-                    size_t n, int32_t *out, int32_t *order);
-/* canon.c: sorts the tuples (m int32 each) of t within each bucket
+int lh__sort_tuples(const lh_allocator *a, const lh_index *v, int m, size_t count,
+                    size_t n, lh_index *out, lh_index *order);
+/* canon.c: sorts the tuples (m indices each) of t within each bucket
  * [start[k], start[k+1]), k < nb, lexicographically, moving payload[] along
  * (insertion sort for small buckets, merge sort for large ones). 0 on no memory. */
-int lh__sort_buckets(const lh_allocator *a, int32_t *t, int32_t *payload, const size_t *start,
+int lh__sort_buckets(const lh_allocator *a, lh_index *t, lh_index *payload, const size_t *start,
                      size_t nb, int m);
 
 #endif

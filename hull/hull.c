@@ -14,10 +14,10 @@ struct lh_hull {
     int d;
     size_t n;
     size_t count;
-    int32_t *facets;  /* d per facet, outward, canonical */
+    lh_index *facets; /* d per facet, outward, canonical */
     size_t nvert;
-    int32_t *vertices; /* increasing site indices */
-    int32_t *dup;      /* n */
+    lh_index *vertices; /* increasing site indices */
+    lh_index *dup;     /* n */
     size_t ndup;
 };
 
@@ -44,7 +44,7 @@ static lh_status collect_vertices(lh_hull *h)
     if (h->vertices) {
         size_t k = 0;
         for (size_t i = 0; i < h->n; i++)
-            if (used[i]) h->vertices[k++] = (int32_t)i;
+            if (used[i]) h->vertices[k++] = (lh_index)i;
     }
     lh__free(&h->alloc, used);
     return h->vertices ? LH_OK : LH_ERR_NOMEM;
@@ -73,7 +73,7 @@ lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *o
     lh__eng e;
     st = lh__eng_init(&e, &a, d, n, xyz, h->dup, opt);
     int affdim = -1;
-    if (st == LH_OK) st = lh__eng_build(&e, (int32_t)(n < 1000000 ? 4 * n + 256 : 4000000), &affdim);
+    if (st == LH_OK) st = lh__eng_build(&e, (lh_index)(n < 1000000 ? 4 * n + 256 : 4000000), &affdim);
     if (st == LH_OK) st = lh__eng_hull_facets(&e, &h->facets, &h->count);
     h->ndup = e.ndup;
     lh__eng_release(&e);
@@ -88,7 +88,7 @@ lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *o
 
 int lh_hull_dim(const lh_hull *h) { return h ? h->d : 0; }
 size_t lh_hull_facet_count(const lh_hull *h) { return h ? h->count : 0; }
-const int32_t *lh_hull_facets(const lh_hull *h) { return h ? h->facets : NULL; }
+const lh_index *lh_hull_facets(const lh_hull *h) { return h ? h->facets : NULL; }
 size_t lh_hull_vertex_count(const lh_hull *h) { return h ? h->nvert : 0; }
-const int32_t *lh_hull_vertices(const lh_hull *h) { return h ? h->vertices : NULL; }
-const int32_t *lh_hull_duplicate_of(const lh_hull *h) { return h ? h->dup : NULL; }
+const lh_index *lh_hull_vertices(const lh_hull *h) { return h ? h->vertices : NULL; }
+const lh_index *lh_hull_duplicate_of(const lh_hull *h) { return h ? h->dup : NULL; }

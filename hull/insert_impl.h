@@ -29,10 +29,11 @@
  * is a closed pseudo-manifold: every ridge is in exactly two boundary facets). The
  * two are paired through a hash table keyed on R. Each new cell's old vertices are
  * sorted once; a ridge is that list minus one entry. When its d-1 vertices fit in
- * 64 bits (t->vbits each: always for d <= 3, and for n below 2^21 in 4D, 2^16 in 5D)
- * the key is the ridge itself, packed; otherwise it is the sum of a mix of its
- * vertices (one subtraction from the cell's sum) and equal keys are confirmed by
- * comparing the sorted lists, so a collision costs a probe, never a wrong link.
+ * 64 bits (t->vbits each: for d <= 3 always below 2^32 sites, for n below 2^21 in
+ * 4D, 2^16 in 5D) the key is the ridge itself, packed; otherwise it is the sum of a
+ * mix of its vertices (one subtraction from the cell's sum) and equal keys are
+ * confirmed by comparing the sorted lists, so a collision costs a probe, never a
+ * wrong link.
  */
 #include "engine.h"
 #include "lh_exact.h"
@@ -58,7 +59,7 @@
 #define LH_PREFETCH(p) ((void)(p))
 #endif
 
-static inline int push(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x)
+static inline int push(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_index x)
 {
     if (*len < *cap) {
         (*arr)[(*len)++] = x;
@@ -68,21 +69,21 @@ static inline int push(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int3
 }
 
 /* Whether cell c conflicts with e->q (engine.h: the rule for infinite cells). */
-static inline int conflict(lh__eng *e, int32_t c)
+static inline int conflict(lh__eng *e, lh_index c)
 {
     const lh__tds *t = &e->tds;
-    const int32_t *v = t->vert + (size_t)c * NV;
+    const lh_index *v = t->vert + (size_t)c * NV;
     if (v[0] != LH__INF) return LH_T_FINITE_CONFLICT(e, v, e->q);
     e->pts[0] = lh__eng_site(e, e->q);
     for (int k = 1; k < NV; k++) e->pts[k] = lh__eng_site(e, v[k]);
     int o = LH_T_ORIENT(e, e->pts);
     if (o || !e->finite_conflict) return o > 0;
-    int32_t f = t->nbr[(size_t)c * NV];
+    lh_index f = t->nbr[(size_t)c * NV];
     return LH_T_FINITE_CONFLICT(e, t->vert + (size_t)f * NV, e->q);
 }
 
 /* orient_d of finite cell v with its vertex k replaced by q. */
-static inline int orient_replaced(lh__eng *e, const int32_t *v, int k)
+static inline int orient_replaced(lh__eng *e, const lh_index *v, int k)
 {
     const lh__tds *t = &e->tds;
     (void)t;
@@ -90,22 +91,22 @@ static inline int orient_replaced(lh__eng *e, const int32_t *v, int k)
     return LH_T_ORIENT(e, e->pts);
 }
 
-static int32_t scan_for_conflict(lh__eng *e)
+static lh_index scan_for_conflict(lh__eng *e)
 {
-    for (int32_t c = 0; c < e->tds.top; c++)
+    for (lh_index c = 0; c < e->tds.top; c++)
         if (!lh__tds_dead(&e->tds, c) && conflict(e, c)) return c;
     return -1;
 }
 
 /* A cell in conflict with q, or -1 when q is inside the current hull and no finite
  * cell can conflict (placing mode). */
-static int32_t locate(lh__eng *e)
+static lh_index locate(lh__eng *e)
 {
     const lh__tds *t = &e->tds;
-    int32_t c = e->hint, prev = -1;
+    lh_index c = e->hint, prev = -1;
     size_t limit = 64 + 8 * (size_t)t->live;
     for (size_t step = 0; step < limit; step++) {
-        const int32_t *v = t->vert + (size_t)c * NV;
+        const lh_index *v = t->vert + (size_t)c * NV;
         if (v[0] == LH__INF) {
             if (prev >= 0 || conflict(e, c)) return c; /* entered across its facet */
             prev = c;
@@ -115,7 +116,7 @@ static int32_t locate(lh__eng *e)
         int s = (int)(lh__rng_next(&e->rng) % (uint64_t)NV), moved = 0;
         for (int i = 0; i < NV && !moved; i++) {
             int k = s + i < NV ? s + i : s + i - NV;
-            int32_t n = t->nbr[(size_t)c * NV + k];
+            lh_index n = t->nbr[(size_t)c * NV + k];
             if (n == prev || orient_replaced(e, v, k) >= 0) continue;
             prev = c;
             c = n;
@@ -128,7 +129,7 @@ static int32_t locate(lh__eng *e)
 
 /* The conflict region from `start`: t->cells, and its boundary facets as pairs
  * (cell, k) in t->bound. Returns 0 when memory runs out. */
-static int grow_region(lh__eng *e, int32_t start, uint32_t in, uint32_t out)
+static int grow_region(lh__eng *e, lh_index start, uint32_t in, uint32_t out)
 {
     lh__tds *t = &e->tds;
     t->ncells = t->nbound = 0;
@@ -136,14 +137,14 @@ static int grow_region(lh__eng *e, int32_t start, uint32_t in, uint32_t out)
     t->stamp[start] = in;
     if (!push(t, &t->cells, &t->cells_cap, &t->ncells, start)) return 0;
     for (size_t i = 0; i < t->ncells; i++) {
-        int32_t c = t->cells[i];
+        lh_index c = t->cells[i];
         for (int k = 0; k < NV; k++) { /* the neighbours' misses overlap */
-            int32_t n = t->nbr[(size_t)c * NV + k];
+            lh_index n = t->nbr[(size_t)c * NV + k];
             LH_PREFETCH(t->stamp + n);
             LH_PREFETCH(t->vert + (size_t)n * NV);
         }
         for (int k = 0; k < NV; k++) {
-            int32_t n = t->nbr[(size_t)c * NV + k];
+            lh_index n = t->nbr[(size_t)c * NV + k];
             uint32_t st = t->stamp[n];
             if (st == in) continue;
             if (st != out) {
@@ -163,18 +164,18 @@ static int grow_region(lh__eng *e, int32_t start, uint32_t in, uint32_t out)
     return 1;
 }
 
-static inline uint64_t mix(int32_t v) /* one multiply and a fold: nonlinear in v */
+static inline uint64_t mix(lh_index v) /* one multiply and a fold: nonlinear in v */
 {
-    uint64_t z = (uint64_t)(uint32_t)v * UINT64_C(0x9e3779b97f4a7c15);
+    uint64_t z = (uint64_t)(lh__uindex)v * UINT64_C(0x9e3779b97f4a7c15);
     return z ^ (z >> 29);
 }
 
 /* The old vertices of new cell b (all but position k), increasing, with their
  * positions. */
-static inline void sort_old_vertices(lh__tds *t, size_t b, int32_t N, int k)
+static inline void sort_old_vertices(lh__tds *t, size_t b, lh_index N, int k)
 {
-    const int32_t *v = t->vert + (size_t)N * NV;
-    int32_t *s = t->sorted + b * (NV - 1);
+    const lh_index *v = t->vert + (size_t)N * NV;
+    lh_index *s = t->sorted + b * (NV - 1);
     int8_t *p = t->spos + b * (NV - 1);
     int n = 0;
     for (int j = 0; j < NV; j++) {
@@ -193,7 +194,7 @@ static inline void sort_old_vertices(lh__tds *t, size_t b, int32_t N, int k)
 static int same_ridge(const lh__tds *t, size_t a, int da, size_t b, int db)
 {
     const int m = NV - 1;
-    const int32_t *x = t->sorted + a * m, *y = t->sorted + b * m;
+    const lh_index *x = t->sorted + a * m, *y = t->sorted + b * m;
     for (int i = 0, j = 0; i < m; i++, j++) {
         if (i == da) i++;
         if (j == db) j++;
@@ -204,12 +205,12 @@ static int same_ridge(const lh__tds *t, size_t a, int da, size_t b, int db)
 
 /* The key of the ridge of sorted list s (m entries) without entry drop: packed
  * (vbits per vertex + 1) when exact, else the sum of mixes `sum` minus drop's. */
-static inline uint64_t ridge_key(const int32_t *s, int m, int drop, uint64_t sum, int vbits, int exact)
+static inline uint64_t ridge_key(const lh_index *s, int m, int drop, uint64_t sum, int vbits, int exact)
 {
     if (!exact) return sum - mix(s[drop]);
     uint64_t k = 0;
     for (int x = 0; x < m; x++)
-        if (x != drop) k = k << vbits | (uint64_t)(uint32_t)(s[x] + 1);
+        if (x != drop) k = k << vbits | (uint64_t)(lh__uindex)(s[x] + 1);
     return k;
 }
 
@@ -219,9 +220,9 @@ static void link_new_cells(lh__tds *t)
     const int m = NV - 1, vbits = t->vbits, exact = (m - 1) * vbits <= 64;
     const uint32_t round = t->round;
     const size_t mask = t->ridge_cap - 1;
-    for (size_t b = 0; b < t->nbound; b++) sort_old_vertices(t, b, t->fresh[b], t->bound[2 * b + 1]);
+    for (size_t b = 0; b < t->nbound; b++) sort_old_vertices(t, b, t->fresh[b], (int)t->bound[2 * b + 1]);
     for (size_t b = 0; b < t->nbound; b++) {
-        const int32_t N = t->fresh[b], *s = t->sorted + b * m;
+        const lh_index N = t->fresh[b], *s = t->sorted + b * m;
         uint64_t sum = 0;
         if (!exact)
             for (int i = 0; i < m; i++) sum += mix(s[i]);
@@ -238,7 +239,7 @@ static void link_new_cells(lh__tds *t)
                 size_t rb = r->bd >> 4;
                 int rd = (int)(r->bd & 15);
                 if (r->key == key && (exact || same_ridge(t, b, i, rb, rd))) {
-                    int32_t M = t->fresh[rb];
+                    lh_index M = t->fresh[rb];
                     t->nbr[(size_t)N * NV + t->spos[b * m + i]] = M;
                     t->nbr[(size_t)M * NV + t->spos[rb * m + rd]] = N;
                     r->key = LH__RIDGE_PAIRED;
@@ -251,10 +252,10 @@ static void link_new_cells(lh__tds *t)
 
 /* Inserts e->q from `start`, a cell in conflict with it. The new cells are
  * t->fresh[0..nbound-1]. On LH_ERR_NOMEM the store is unchanged. */
-static lh_status cavity_insert(lh__eng *e, int32_t start)
+static lh_status cavity_insert(lh__eng *e, lh_index start)
 {
     lh__tds *t = &e->tds;
-    const int32_t q = e->q;
+    const lh_index q = e->q;
     lh__tds_next_round(t);
     uint32_t in = 4 * t->round, out = in + 1;
     if (!grow_region(e, start, in, out)) return LH_ERR_NOMEM;
@@ -263,15 +264,15 @@ static lh_status cavity_insert(lh__eng *e, int32_t start)
     for (size_t b = 0; b < t->nbound; b++) /* the outside cells' neighbour rows */
         LH_PREFETCH(t->nbr + (size_t)t->nbr[(size_t)t->bound[2 * b] * NV + t->bound[2 * b + 1]] * NV);
     for (size_t b = 0; b < t->nbound; b++) {
-        int32_t c = t->bound[2 * b], k = t->bound[2 * b + 1];
-        int32_t N = lh__tds_new_cell(t); /* cannot fail after lh__tds_room */
-        int32_t *nvert = t->vert + (size_t)N * NV, *nnbr = t->nbr + (size_t)N * NV;
-        const int32_t *cv = t->vert + (size_t)c * NV;
+        lh_index c = t->bound[2 * b], k = t->bound[2 * b + 1];
+        lh_index N = lh__tds_new_cell(t); /* cannot fail after lh__tds_room */
+        lh_index *nvert = t->vert + (size_t)N * NV, *nnbr = t->nbr + (size_t)N * NV;
+        const lh_index *cv = t->vert + (size_t)c * NV;
         for (int j = 0; j < NV; j++) nvert[j] = cv[j];
         nvert[k] = q;
-        int32_t outside = t->nbr[(size_t)c * NV + k];
+        lh_index outside = t->nbr[(size_t)c * NV + k];
         nnbr[k] = outside;
-        int32_t *on = t->nbr + (size_t)outside * NV;
+        lh_index *on = t->nbr + (size_t)outside * NV;
         int m = 0;
         while (on[m] != c) m++;
         on[m] = N;
@@ -282,14 +283,14 @@ static lh_status cavity_insert(lh__eng *e, int32_t start)
     return LH_OK;
 }
 
-lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const int32_t *list);
-lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const int32_t *list)
+lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list)
 {
     lh_status st = LH_OK;
     LH_T_PREPARE(e);
     for (size_t i = 0; i < count && st == LH_OK; i++) {
-        e->q = list ? list[i] : (int32_t)(first + i);
-        int32_t c = locate(e);
+        e->q = list ? list[i] : (lh_index)(first + i);
+        lh_index c = locate(e);
         if (c < 0) continue; /* inside the current hull: not a vertex (placing modes) */
         st = cavity_insert(e, c);
         if (st == LH_OK) e->hint = e->tds.fresh[0];

@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-int lh__lex_cmp(const void *vctx, int32_t a, int32_t b)
+int lh__lex_cmp(const void *vctx, lh_index a, lh_index b)
 {
     const lh__lex *c = vctx;
     const double *p = c->xyz + (size_t)a * c->d, *q = c->xyz + (size_t)b * c->d;
@@ -20,7 +20,7 @@ int lh__lex_cmp(const void *vctx, int32_t a, int32_t b)
     return (a > b) - (a < b);
 }
 
-static int same_site(const lh__eng *e, int32_t a, int32_t b)
+static int same_site(const lh__eng *e, lh_index a, lh_index b)
 {
     const double *p = lh__eng_input(e, (size_t)a), *q = lh__eng_input(e, (size_t)b);
     for (int j = 0; j < e->d; j++)
@@ -64,7 +64,7 @@ static void morton_keys(const lh__eng *t, uint64_t *key)
 }
 
 /* LSD radix sort of (key, idx) pairs on the low `bits` bits, 11 bits a pass. */
-static void radix_sort(uint64_t *key, int32_t *idx, uint64_t *k2, int32_t *i2, size_t n, int bits)
+static void radix_sort(uint64_t *key, lh_index *idx, uint64_t *k2, lh_index *i2, size_t n, int bits)
 {
     size_t count[1 << 11];
     for (int shift = 0; shift < bits; shift += 11) {
@@ -89,7 +89,7 @@ static void radix_sort(uint64_t *key, int32_t *idx, uint64_t *k2, int32_t *i2, s
 /* Equal sites share a Morton key: in each run of equal keys, an exact lexicographic
  * sort puts equal sites together, smallest index first — that one is the vertex.
  * Compacts the distinct sites into idx (Morton order) and returns their number. */
-static size_t merge_runs(lh__eng *t, const uint64_t *key, int32_t *idx, int32_t *tmp)
+static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_index *tmp)
 {
     lh__lex c = {t->xyz, t->d};
     size_t nrep = 0;
@@ -98,9 +98,9 @@ static size_t merge_runs(lh__eng *t, const uint64_t *key, int32_t *idx, int32_t 
         size_t j = i + 1;
         while (j < t->n && key[j] == key[i]) j++;
         if (j - i > 1) lh__sort_idx(idx + i, tmp, j - i, lh__lex_cmp, &c);
-        int32_t prev = -1;
+        lh_index prev = -1;
         for (size_t k = i; k < j; k++) {
-            int32_t s = idx[k];
+            lh_index s = idx[k];
             if (prev >= 0 && same_site(t, s, prev)) {
                 t->dup[s] = t->dup[prev];
                 t->ndup++;
@@ -117,7 +117,7 @@ static size_t merge_runs(lh__eng *t, const uint64_t *key, int32_t *idx, int32_t 
 
 /* BRIO rounds: a site joins round r with probability 2^-(r+1) (r capped); rounds
  * go from the rarest to the commonest, each keeping the Morton order. */
-static void brio_rounds(lh__eng *b, int32_t *tmp, uint8_t *round)
+static void brio_rounds(lh__eng *b, lh_index *tmp, uint8_t *round)
 {
     enum { ROUNDS = 24 };
     size_t n = b->norder, start[ROUNDS + 1] = {0};
@@ -141,11 +141,11 @@ lh_status lh__eng_order(lh__eng *b)
     lh__eng *t = b;
     size_t n = t->n;
     uint64_t *key = lh__alloc(&t->alloc, (n + 1) * sizeof *key), *k2 = lh__alloc(&t->alloc, (n + 1) * sizeof *k2);
-    int32_t *idx = lh__alloc(&t->alloc, (n + 1) * sizeof *idx), *i2 = lh__alloc(&t->alloc, (n + 1) * sizeof *i2);
+    lh_index *idx = lh__alloc(&t->alloc, (n + 1) * sizeof *idx), *i2 = lh__alloc(&t->alloc, (n + 1) * sizeof *i2);
     lh_status st = key && k2 && idx && i2 ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK && n) {
         morton_keys(t, key);
-        for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
+        for (size_t i = 0; i < n; i++) idx[i] = (lh_index)i;
         radix_sort(key, idx, k2, i2, n, morton_bits(t->d) * t->d);
         b->order = idx;
         b->norder = merge_runs(t, key, idx, i2);
@@ -201,7 +201,7 @@ int lh__eng_initial_simplex(lh__eng *b)
         pts[k + 1] = lh__eng_input(b, (size_t)b->order[i]);
         if (lh__affine_independent(b->pred, d, pts, k + 1)) {
             k++;
-            int32_t s = b->order[i]; /* keep the rest in order: rotate it forward */
+            lh_index s = b->order[i]; /* keep the rest in order: rotate it forward */
             memmove(b->order + k + 1, b->order + k, (i - (size_t)k) * sizeof *b->order);
             b->order[k] = s;
         }

@@ -18,29 +18,29 @@ static void *grow(const lh_allocator *a, void *old, size_t old_bytes, size_t new
     return p;
 }
 
-static lh_status set_capacity(lh__tds *t, int32_t cap)
+static lh_status set_capacity(lh__tds *t, lh_index cap)
 {
     size_t nv = (size_t)t->nv, old = (size_t)t->cap;
-    int32_t *v = grow(&t->alloc, t->vert, old * nv * 4, (size_t)cap * nv * 4);
+    lh_index *v = grow(&t->alloc, t->vert, old * nv * sizeof *v, (size_t)cap * nv * sizeof *v);
     if (!v) return LH_ERR_NOMEM;
     t->vert = v;
-    int32_t *n = grow(&t->alloc, t->nbr, old * nv * 4, (size_t)cap * nv * 4);
+    lh_index *n = grow(&t->alloc, t->nbr, old * nv * sizeof *n, (size_t)cap * nv * sizeof *n);
     if (!n) return LH_ERR_NOMEM;
     t->nbr = n;
-    uint32_t *s = grow(&t->alloc, t->stamp, old * 4, (size_t)cap * 4);
+    uint32_t *s = grow(&t->alloc, t->stamp, old * sizeof *s, (size_t)cap * sizeof *s);
     if (!s) return LH_ERR_NOMEM;
-    memset(s + old, 0, ((size_t)cap - old) * 4);
+    memset(s + old, 0, ((size_t)cap - old) * sizeof *s);
     t->stamp = s;
     t->cap = cap;
     return LH_OK;
 }
 
-lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, int32_t cap_hint)
+lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, lh_index cap_hint)
 {
     memset(t, 0, sizeof *t);
     if (!lh__allocator_init(&t->alloc, alloc)) return LH_ERR_INVALID_ARGUMENT;
     t->nv = nv;
-    t->vbits = 32;
+    t->vbits = LH__TDS_VBITS_MAX;
     t->free_head = -1;
     return set_capacity(t, cap_hint > 16 ? cap_hint : 16);
 }
@@ -65,12 +65,14 @@ lh_status lh__tds_reserve(lh__tds *t, size_t extra)
     if (have + freed >= extra) return LH_OK;
     size_t want = (size_t)t->cap + (size_t)t->cap / 2 + 1024; /* x1.5: less overshoot */
     if (want < (size_t)t->top + extra) want = (size_t)t->top + extra;
-    if (want > INT32_MAX) want = INT32_MAX;
+    size_t most = SIZE_MAX / ((size_t)t->nv * sizeof *t->vert); /* bytes must not overflow */
+    if (most > LH_INDEX_MAX) most = LH_INDEX_MAX;
+    if (want > most) want = most;
     if (want < (size_t)t->top + extra) return LH_ERR_TOO_LARGE;
-    return set_capacity(t, (int32_t)want);
+    return set_capacity(t, (lh_index)want);
 }
 
-uint32_t *lh__tds_finish(lh__tds *t)
+lh_index *lh__tds_finish(lh__tds *t)
 {
     uint32_t *s = t->stamp;
     t->stamp = NULL;
@@ -84,32 +86,37 @@ uint32_t *lh__tds_finish(lh__tds *t)
     t->ridge = NULL;
     t->spos = NULL;
     t->cells_cap = t->bound_cap = t->fresh_cap = t->ridge_cap = t->sorted_cap = 0;
-    return s;
+#if LH_INDEX_BITS == 64
+    lh__free(&t->alloc, s); /* a stamp is narrower than an index */
+    return lh__alloc(&t->alloc, ((size_t)t->cap + 1) * sizeof(lh_index));
+#else
+    return (lh_index *)s;
+#endif
 }
 
-int lh__tds_mirror(const lh__tds *t, int32_t c, int32_t other)
+int lh__tds_mirror(const lh__tds *t, lh_index c, lh_index other)
 {
-    const int32_t *n = t->nbr + (size_t)c * t->nv;
+    const lh_index *n = t->nbr + (size_t)c * t->nv;
     for (int k = 0; k < t->nv; k++)
         if (n[k] == other) return k;
     return -1;
 }
 
-static int index_of(const int32_t *v, int nv, int32_t x)
+static int index_of(const lh_index *v, int nv, lh_index x)
 {
     for (int k = 0; k < nv; k++)
         if (v[k] == x) return k;
     return -1;
 }
 
-void lh__tds_link_all(lh__tds *t, const int32_t *list, int count)
+void lh__tds_link_all(lh__tds *t, const lh_index *list, int count)
 {
     int nv = t->nv;
     for (int a = 0; a < count; a++) {
-        const int32_t *va = t->vert + (size_t)list[a] * nv;
+        const lh_index *va = t->vert + (size_t)list[a] * nv;
         for (int b = 0; b < count; b++) {
             if (a == b) continue;
-            const int32_t *vb = t->vert + (size_t)list[b] * nv;
+            const lh_index *vb = t->vert + (size_t)list[b] * nv;
             int missing = -1, shared = 0;
             for (int k = 0; k < nv; k++) {
                 if (index_of(vb, nv, va[k]) >= 0)
@@ -122,10 +129,10 @@ void lh__tds_link_all(lh__tds *t, const int32_t *list, int count)
     }
 }
 
-int lh__tds_push_slow(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x)
+int lh__tds_push_slow(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_index x)
 {
     size_t nc = *cap ? *cap * 2 : 64;
-    int32_t *p = grow(&t->alloc, *arr, *cap * 4, nc * 4);
+    lh_index *p = grow(&t->alloc, *arr, *cap * sizeof *p, nc * sizeof *p);
     if (!p) return 0;
     *arr = p;
     *cap = nc;
@@ -150,7 +157,7 @@ static int ridge_room(lh__tds *t)
     const size_t m = (size_t)t->nv - 1, nb = t->nbound;
     if (t->sorted_cap < nb) {
         size_t cap = 2 * nb;
-        int32_t *s = grow(&t->alloc, t->sorted, 0, cap * m * sizeof *s);
+        lh_index *s = grow(&t->alloc, t->sorted, 0, cap * m * sizeof *s);
         if (!s) return 0;
         t->sorted = s;
         int8_t *p = grow(&t->alloc, t->spos, 0, cap * m * sizeof *p);
@@ -173,7 +180,7 @@ lh_status lh__tds_room(lh__tds *t)
 {
     if (t->nbound >= (size_t)LH__MAX_NEW_CELLS) return LH_ERR_TOO_LARGE;
     if (t->fresh_cap < t->nbound) {
-        int32_t *p = grow(&t->alloc, t->fresh, 0, t->nbound * 2 * sizeof *p);
+        lh_index *p = grow(&t->alloc, t->fresh, 0, t->nbound * 2 * sizeof *p);
         if (!p) return LH_ERR_NOMEM;
         t->fresh = p;
         t->fresh_cap = t->nbound * 2;

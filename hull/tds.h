@@ -18,6 +18,17 @@
 #define LH__DEAD (-2) /* vert[c*nv] of a free cell */
 #define LH__TDS_MAX_NV (LH_ORIENT_MAX_DIM + 1)
 
+/* The unsigned type as wide as lh_index (hashes and packed keys of indices), and the
+ * bits that hold any vertex index + 1: 32 (as ever) in the 32-bit build, 63 in the
+ * 64-bit one. */
+#if LH_INDEX_BITS == 64
+typedef uint64_t lh__uindex;
+#define LH__TDS_VBITS_MAX 63
+#else
+typedef uint32_t lh__uindex;
+#define LH__TDS_VBITS_MAX 32
+#endif
+
 /* An entry of the table that pairs new cells across their ridges (insert_impl.h):
  * 16 bytes, so that the table of an insertion stays in the first-level cache. */
 typedef struct lh__ridge {
@@ -36,40 +47,41 @@ typedef struct lh__tds {
     int nv;           /* vertices (and neighbours) per cell */
     int vbits;        /* bits that hold every vertex index + 1 (LH__INF + 1 = 0): ridge
                          keys pack the vertices exactly when they fit (insert_impl.h);
-                         32 unless the owner knows better (lh__tds_vertex_bound) */
-    int32_t *vert;    /* nv per cell */
-    int32_t *nbr;     /* nv per cell */
+                         LH__TDS_VBITS_MAX unless the owner knows better
+                         (lh__tds_vertex_bound) */
+    lh_index *vert;   /* nv per cell */
+    lh_index *nbr;    /* nv per cell */
     uint32_t *stamp;  /* per cell: visit marks of the current insertion */
-    int32_t cap;      /* cells allocated */
-    int32_t top;      /* cells ever used: indices < top are live or free */
-    int32_t free_head;
-    int32_t live;     /* cells in use */
+    lh_index cap;     /* cells allocated */
+    lh_index top;     /* cells ever used: indices < top are live or free */
+    lh_index free_head;
+    lh_index live;    /* cells in use */
     uint32_t round;   /* insertion counter behind the stamps */
     /* Scratch of one insertion, kept between insertions (no allocation once warm). */
-    int32_t *cells, *bound, *fresh;
+    lh_index *cells, *bound, *fresh;
     size_t cells_cap, bound_cap, fresh_cap;
     lh__ridge *ridge;        /* open-addressing table of the new cells' ridges */
     size_t ridge_cap;        /* a power of two */
-    int32_t *sorted;         /* per new cell: its old vertices, increasing */
+    lh_index *sorted;        /* per new cell: its old vertices, increasing */
     int8_t *spos;            /* and their positions in the cell */
     size_t sorted_cap;       /* new cells the two have room for */
     size_t ncells, nbound; /* conflict cells; boundary facets (pairs cell, index) */
 } lh__tds;
 
-lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, int32_t cap_hint);
+lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, lh_index cap_hint);
 void lh__tds_release(lh__tds *t);
 lh_status lh__tds_reserve(lh__tds *t, size_t extra);
 /* Declares every vertex index below `bound` (sharper ridge keys). */
 static inline void lh__tds_vertex_bound(lh__tds *t, size_t bound)
 {
     int b = 1;
-    while (b < 32 && ((size_t)1 << b) <= bound) b++;
+    while (b < LH__TDS_VBITS_MAX && ((size_t)1 << b) <= bound) b++;
     t->vbits = b;
 }
 /* A new cell with unset contents, or -1 when memory runs out. */
-static inline int32_t lh__tds_new_cell(lh__tds *t)
+static inline lh_index lh__tds_new_cell(lh__tds *t)
 {
-    int32_t c;
+    lh_index c;
     if (t->free_head >= 0) {
         c = t->free_head;
         t->free_head = t->nbr[(size_t)c * t->nv];
@@ -80,11 +92,12 @@ static inline int32_t lh__tds_new_cell(lh__tds *t)
     t->live++;
     return c;
 }
-/* Ends insertions: frees the insertion scratch and hands over the stamp array (one
- * 32-bit word per cell, t->cap of them) for the caller to reuse and free with
- * lh__free(&t->alloc, ...). No insertion may follow. */
-uint32_t *lh__tds_finish(lh__tds *t);
-static inline void lh__tds_kill(lh__tds *t, int32_t c)
+/* Ends insertions: frees the insertion scratch and hands over an array of t->cap
+ * indices for the caller to reuse and free with lh__free(&t->alloc, ...): the stamp
+ * array itself (one 32-bit word per cell) with 32-bit indices, a new array in its
+ * place with 64-bit ones (NULL when memory runs out). No insertion may follow. */
+lh_index *lh__tds_finish(lh__tds *t);
+static inline void lh__tds_kill(lh__tds *t, lh_index c)
 {
     size_t base = (size_t)c * t->nv;
     t->vert[base] = LH__DEAD;
@@ -92,17 +105,17 @@ static inline void lh__tds_kill(lh__tds *t, int32_t c)
     t->free_head = c;
     t->live--;
 }
-static inline int lh__tds_dead(const lh__tds *t, int32_t c) { return t->vert[(size_t)c * t->nv] == LH__DEAD; }
+static inline int lh__tds_dead(const lh__tds *t, lh_index c) { return t->vert[(size_t)c * t->nv] == LH__DEAD; }
 /* Index k with nbr[c][k] == other; -1 if none. */
-int lh__tds_mirror(const lh__tds *t, int32_t c, int32_t other);
+int lh__tds_mirror(const lh__tds *t, lh_index c, lh_index other);
 /* Sets the neighbours of the cells list[0..count-1] by matching shared facets
  * (quadratic: for the first cells of a triangulation only). */
-void lh__tds_link_all(lh__tds *t, const int32_t *list, int count);
+void lh__tds_link_all(lh__tds *t, const lh_index *list, int count);
 
 /* For the insertion (insert_impl.h): growing a scratch array; starting an
  * insertion (new visit marks); room for the new cells of t->nbound boundary facets
  * and their linking, so that nothing fails afterwards. */
-int lh__tds_push_slow(lh__tds *t, int32_t **arr, size_t *cap, size_t *len, int32_t x);
+int lh__tds_push_slow(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_index x);
 void lh__tds_next_round(lh__tds *t);
 lh_status lh__tds_room(lh__tds *t);
 

@@ -18,7 +18,7 @@ typedef struct line_ctx {
 } line_ctx;
 
 /* Along the line, then by index (so an exact duplicate follows its first site). */
-static int line_cmp(const void *vctx, int32_t a, int32_t b)
+static int line_cmp(const void *vctx, lh_index a, lh_index b)
 {
     const line_ctx *c = vctx;
     double x = c->xyz[(size_t)a * c->d + c->j], y = c->xyz[(size_t)b * c->d + c->j];
@@ -27,15 +27,15 @@ static int line_cmp(const void *vctx, int32_t a, int32_t b)
 }
 
 /* The distinct sites in line order into seq (returns their number); t->dup. */
-static size_t sort_along(lh_tri *t, int32_t *seq, int32_t *tmp)
+static size_t sort_along(lh_tri *t, lh_index *seq, lh_index *tmp)
 {
     line_ctx c = {t->xyz, t->d, t->frame.J[0]};
-    for (size_t i = 0; i < t->n; i++) seq[i] = (int32_t)i;
+    for (size_t i = 0; i < t->n; i++) seq[i] = (lh_index)i;
     lh__sort_idx(seq, tmp, t->n, line_cmp, &c);
     size_t m = 0;
     t->ndup = 0;
     for (size_t i = 0; i < t->n; i++) {
-        int32_t s = seq[i];
+        lh_index s = seq[i];
         if (m && t->xyz[(size_t)seq[m - 1] * t->d + c.j] == t->xyz[(size_t)s * t->d + c.j]) {
             t->dup[s] = seq[m - 1]; /* the same point of the line, a smaller index */
             t->ndup++;
@@ -49,7 +49,7 @@ static size_t sort_along(lh_tri *t, int32_t *seq, int32_t *tmp)
 
 /* Segments seq[i], seq[i+1] (or, furthest-site, the ends), sorted, with neighbours,
  * hull facets and incident simplices. */
-static lh_status write_chain(lh_tri *t, const int32_t *seq, size_t m, int32_t *raw, int32_t *order)
+static lh_status write_chain(lh_tri *t, const lh_index *seq, size_t m, lh_index *raw, lh_index *order)
 {
     size_t count = t->furthest ? 1 : m - 1;
     for (size_t i = 0; i < count; i++) {
@@ -63,8 +63,8 @@ static lh_status write_chain(lh_tri *t, const int32_t *seq, size_t m, int32_t *r
     t->vsimp = lh__alloc(&t->alloc, (t->n + 1) * sizeof *t->vsimp);
     if (!t->simp || !t->nbr || !t->hull || !t->vsimp) return LH_ERR_NOMEM;
     if (!lh__sort_tuples(&t->alloc, raw, 2, count, t->n, t->simp, order)) return LH_ERR_NOMEM;
-    int32_t *pos = raw; /* segment i along the line is output simplex pos[i] */
-    for (size_t s = 0; s < count; s++) pos[order[s]] = (int32_t)s;
+    lh_index *pos = raw; /* segment i along the line is output simplex pos[i] */
+    for (size_t s = 0; s < count; s++) pos[order[s]] = (lh_index)s;
     for (size_t i = 0; i < count; i++) {
         t->nbr[2 * (size_t)pos[i]] = i + 1 < count ? pos[i + 1] : -1; /* opposite the start */
         t->nbr[2 * (size_t)pos[i] + 1] = i > 0 ? pos[i - 1] : -1;   /* opposite the end */
@@ -74,15 +74,15 @@ static lh_status write_chain(lh_tri *t, const int32_t *seq, size_t m, int32_t *r
     t->hull[1] = seq[0] < seq[m - 1] ? seq[m - 1] : seq[0];
     for (size_t i = 0; i < t->n; i++) t->vsimp[i] = -1;
     for (size_t s = count; s-- > 0;)
-        for (int k = 0; k < 2; k++) t->vsimp[t->simp[2 * s + k]] = (int32_t)s;
+        for (int k = 0; k < 2; k++) t->vsimp[t->simp[2 * s + k]] = (lh_index)s;
     return LH_OK;
 }
 
 lh_status lh__dt_chain(lh_tri *t)
 {
-    int32_t *seq = lh__alloc(&t->alloc, (t->n + 1) * sizeof *seq);
-    int32_t *tmp = lh__alloc(&t->alloc, (t->n + 1) * sizeof *tmp);
-    int32_t *raw = lh__alloc(&t->alloc, (2 * t->n + 1) * sizeof *raw);
+    lh_index *seq = lh__alloc(&t->alloc, (t->n + 1) * sizeof *seq);
+    lh_index *tmp = lh__alloc(&t->alloc, (t->n + 1) * sizeof *tmp);
+    lh_index *raw = lh__alloc(&t->alloc, (2 * t->n + 1) * sizeof *raw);
     lh_status st = seq && tmp && raw ? lh_pred_create(&t->alloc, &t->pred) : LH_ERR_NOMEM;
     if (st == LH_OK) {
         size_t m = sort_along(t, seq, tmp);

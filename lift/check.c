@@ -26,15 +26,20 @@ typedef struct chk {
     lh__frame f;
     size_t n, count;
     const double *xyz;
-    int32_t *simp;   /* oriented copy */
-    int32_t *rec;    /* facet records: d sorted vertices, simplex, index */
-    int32_t *nbr;    /* computed neighbours */
+    lh_index *simp;  /* oriented copy */
+    lh_index *rec;   /* facet records: d sorted vertices, simplex, index */
+    lh_index *nbr;   /* computed neighbours */
     lh_pred *pred;
     int furthest;    /* furthest-site: opposite vertices inside, not outside */
     char *msg;
     size_t msg_size;
 } chk;
 
+static lh_status fail(chk *c, const char *fmt, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
 static lh_status fail(chk *c, const char *fmt, ...)
 {
     if (c->msg && c->msg_size) {
@@ -46,9 +51,9 @@ static lh_status fail(chk *c, const char *fmt, ...)
     return LH_ERR_INTERNAL;
 }
 
-static const double *site(const chk *c, int32_t v) { return c->xyz + (size_t)v * c->d; }
+static const double *site(const chk *c, lh_index v) { return c->xyz + (size_t)v * c->d; }
 
-static int orient_of(chk *c, const int32_t *v, int replace, int32_t by)
+static int orient_of(chk *c, const lh_index *v, int replace, lh_index by)
 {
     const double *p[LH_DELAUNAY_MAX_DIM + 1];
     for (int k = 0; k < c->nv; k++) p[k] = site(c, k == replace ? by : v[k]);
@@ -59,17 +64,17 @@ static int orient_of(chk *c, const int32_t *v, int replace, int32_t by)
 static lh_status check_simplices(chk *c)
 {
     for (size_t s = 0; s < c->count; s++) {
-        int32_t *v = c->simp + s * c->nv;
+        lh_index *v = c->simp + s * c->nv;
         for (int k = 0; k < c->nv; k++) {
             if (v[k] < 0 || (size_t)v[k] >= c->n)
-                return fail(c, "simplex %zu: vertex %d is not a site index", s, (int)v[k]);
+                return fail(c, "simplex %zu: vertex %" LH_INDEX_PRI " is not a site index", s, v[k]);
             for (int j = 0; j < k; j++)
-                if (v[j] == v[k]) return fail(c, "simplex %zu repeats site %d", s, (int)v[k]);
+                if (v[j] == v[k]) return fail(c, "simplex %zu repeats site %" LH_INDEX_PRI, s, v[k]);
         }
         int o = orient_of(c, v, -1, 0);
         if (o == 0) return fail(c, "simplex %zu is flat (zero volume)", s);
         if (o < 0) {
-            int32_t x = v[0];
+            lh_index x = v[0];
             v[0] = v[1];
             v[1] = x;
         }
@@ -78,24 +83,24 @@ static lh_status check_simplices(chk *c)
 }
 
 typedef struct rec_ctx {
-    const int32_t *rec;
+    const lh_index *rec;
     int w, keylen;
 } rec_ctx;
 
-static int rec_cmp(const void *vctx, int32_t a, int32_t b)
+static int rec_cmp(const void *vctx, lh_index a, lh_index b)
 {
     const rec_ctx *r = vctx;
-    const int32_t *x = r->rec + (size_t)a * r->w, *y = r->rec + (size_t)b * r->w;
+    const lh_index *x = r->rec + (size_t)a * r->w, *y = r->rec + (size_t)b * r->w;
     for (int k = 0; k < r->keylen; k++)
         if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
     return 0;
 }
 
-static void sort_small(int32_t *v, int m)
+static void sort_small(lh_index *v, int m)
 {
     for (int i = 1; i < m; i++)
         for (int j = i; j > 0 && v[j] < v[j - 1]; j--) {
-            int32_t x = v[j];
+            lh_index x = v[j];
             v[j] = v[j - 1];
             v[j - 1] = x;
         }
@@ -104,15 +109,15 @@ static void sort_small(int32_t *v, int m)
 /* Matches records of `keylen` sorted vertices (+ payload up to width w) and calls
  * pair() for each pair; more than two equal keys is an error. Returns the sorted
  * order in *order (caller frees), or NULL on allocation failure. */
-static int32_t *sorted_records(chk *c, const int32_t *rec, size_t m, int w, int keylen)
+static lh_index *sorted_records(chk *c, const lh_index *rec, size_t m, int w, int keylen)
 {
-    int32_t *idx = lh__alloc(&c->alloc, (m + 1) * sizeof *idx), *tmp = lh__alloc(&c->alloc, (m + 1) * sizeof *tmp);
+    lh_index *idx = lh__alloc(&c->alloc, (m + 1) * sizeof *idx), *tmp = lh__alloc(&c->alloc, (m + 1) * sizeof *tmp);
     if (!idx || !tmp) {
         lh__free(&c->alloc, idx);
         lh__free(&c->alloc, tmp);
         return NULL;
     }
-    for (size_t i = 0; i < m; i++) idx[i] = (int32_t)i;
+    for (size_t i = 0; i < m; i++) idx[i] = (lh_index)i;
     rec_ctx r = {rec, w, keylen};
     lh__sort_idx(idx, tmp, m, rec_cmp, &r);
     lh__free(&c->alloc, tmp);
@@ -129,15 +134,15 @@ static lh_status check_facets(chk *c, size_t *boundary)
     if (!c->rec || !c->nbr) return LH_ERR_NOMEM;
     for (size_t s = 0; s < c->count; s++)
         for (int k = 0; k < nv; k++) {
-            int32_t *r = c->rec + (s * nv + k) * w, j = 0;
+            lh_index *r = c->rec + (s * nv + k) * w, j = 0;
             for (int i = 0; i < nv; i++)
                 if (i != k) r[j++] = c->simp[s * nv + i];
             sort_small(r, d);
-            r[d] = (int32_t)s;
+            r[d] = (lh_index)s;
             r[d + 1] = k;
             c->nbr[s * nv + k] = -1;
         }
-    int32_t *idx = sorted_records(c, c->rec, m, w, d);
+    lh_index *idx = sorted_records(c, c->rec, m, w, d);
     if (!idx) return LH_ERR_NOMEM;
     rec_ctx r = {c->rec, w, d};
     lh_status st = LH_OK;
@@ -145,31 +150,31 @@ static lh_status check_facets(chk *c, size_t *boundary)
     for (size_t i = 0; i < m && st == LH_OK;) {
         size_t j = i + 1;
         while (j < m && rec_cmp(&r, idx[i], idx[j]) == 0) j++;
-        const int32_t *a = c->rec + (size_t)idx[i] * w;
+        const lh_index *a = c->rec + (size_t)idx[i] * w;
         if (j - i > 2) {
-            st = fail(c, "a facet is shared by %zu simplices (%d and %d among them)", j - i,
-                      (int)a[d], (int)c->rec[(size_t)idx[i + 1] * w + d]);
+            st = fail(c, "a facet is shared by %zu simplices (%" LH_INDEX_PRI " and %" LH_INDEX_PRI " among them)", j - i,
+                      a[d], c->rec[(size_t)idx[i + 1] * w + d]);
         } else if (j - i == 1) {
             (*boundary)++;
         } else {
-            const int32_t *b = c->rec + (size_t)idx[i + 1] * w;
-            int32_t sa = a[d], ka = a[d + 1], sb = b[d], kb = b[d + 1];
+            const lh_index *b = c->rec + (size_t)idx[i + 1] * w;
+            lh_index sa = a[d], ka = a[d + 1], sb = b[d], kb = b[d + 1];
             c->nbr[(size_t)sa * nv + ka] = sb;
             c->nbr[(size_t)sb * nv + kb] = sa;
-            const int32_t *va = c->simp + (size_t)sa * nv, *vb = c->simp + (size_t)sb * nv;
-            if (orient_of(c, va, ka, vb[kb]) >= 0) {
-                st = fail(c, "simplices %d and %d overlap: they lie on the same side of their common facet", (int)sa, (int)sb);
+            const lh_index *va = c->simp + (size_t)sa * nv, *vb = c->simp + (size_t)sb * nv;
+            if (orient_of(c, va, (int)ka, vb[kb]) >= 0) {
+                st = fail(c, "simplices %" LH_INDEX_PRI " and %" LH_INDEX_PRI " overlap: they lie on the same side of their common facet", sa, sb);
             } else {
                 const double *p[LH_DELAUNAY_MAX_DIM + 2];
                 for (int k = 0; k < nv; k++) p[k] = site(c, va[k]);
                 p[nv] = site(c, vb[kb]);
                 int in = lh__frame_insphere(c->pred, &c->f, p);
                 if (!c->furthest && in < 0)
-                    st = fail(c, "facet between simplices %d and %d is not locally Delaunay: site %d is inside the circumsphere of %d",
-                              (int)sa, (int)sb, (int)vb[kb], (int)sa);
+                    st = fail(c, "facet between simplices %" LH_INDEX_PRI " and %" LH_INDEX_PRI " is not locally Delaunay: site %" LH_INDEX_PRI " is inside the circumsphere of %" LH_INDEX_PRI,
+                              sa, sb, vb[kb], sa);
                 if (c->furthest && in > 0)
-                    st = fail(c, "facet between simplices %d and %d is not locally furthest-site Delaunay: site %d is outside the circumsphere of %d",
-                              (int)sa, (int)sb, (int)vb[kb], (int)sa);
+                    st = fail(c, "facet between simplices %" LH_INDEX_PRI " and %" LH_INDEX_PRI " is not locally furthest-site Delaunay: site %" LH_INDEX_PRI " is outside the circumsphere of %" LH_INDEX_PRI,
+                              sa, sb, vb[kb], sa);
             }
         }
         i = j;
@@ -183,8 +188,8 @@ static lh_status check_boundary(chk *c, size_t boundary)
 {
     const int nv = c->nv, d = c->f.k, w = d + 2; /* ridge: d-1 vertices, facet id, other */
     size_t m = boundary * d;
-    int32_t *rec = lh__alloc(&c->alloc, (m * w + 1) * sizeof *rec);
-    int32_t *fs = lh__alloc(&c->alloc, (boundary * 2 + 1) * sizeof *fs);
+    lh_index *rec = lh__alloc(&c->alloc, (m * w + 1) * sizeof *rec);
+    lh_index *fs = lh__alloc(&c->alloc, (boundary * 2 + 1) * sizeof *fs);
     if (!rec || !fs) {
         lh__free(&c->alloc, rec);
         lh__free(&c->alloc, fs);
@@ -194,36 +199,36 @@ static lh_status check_boundary(chk *c, size_t boundary)
     for (size_t s = 0; s < c->count; s++)
         for (int k = 0; k < nv; k++) {
             if (c->nbr[s * nv + k] >= 0) continue;
-            fs[2 * f] = (int32_t)s;
+            fs[2 * f] = (lh_index)s;
             fs[2 * f + 1] = k;
-            int32_t fv[LH_DELAUNAY_MAX_DIM], j = 0;
+            lh_index fv[LH_DELAUNAY_MAX_DIM], j = 0;
             for (int i = 0; i < nv; i++)
                 if (i != k) fv[j++] = c->simp[s * nv + i];
             for (int x = 0; x < d; x++) { /* ridge = facet minus fv[x] */
-                int32_t *r = rec + (f * d + x) * w, q = 0;
+                lh_index *r = rec + (f * d + x) * w, q = 0;
                 for (int i = 0; i < d; i++)
                     if (i != x) r[q++] = fv[i];
                 sort_small(r, d - 1);
-                r[d - 1] = (int32_t)f;
+                r[d - 1] = (lh_index)f;
                 r[d] = fv[x];
             }
             f++;
         }
-    int32_t *idx = sorted_records(c, rec, m, w, d - 1);
+    lh_index *idx = sorted_records(c, rec, m, w, d - 1);
     lh_status st = idx ? LH_OK : LH_ERR_NOMEM;
     rec_ctx r = {rec, w, d - 1};
     for (size_t i = 0; st == LH_OK && i < m; i += 2) {
         if (i + 1 >= m || rec_cmp(&r, idx[i], idx[i + 1]) != 0 ||
             (i + 2 < m && rec_cmp(&r, idx[i], idx[i + 2]) == 0)) {
-            st = fail(c, "the boundary is not a closed surface (a ridge of hull facet %d has %s partner)",
-                      (int)fs[2 * rec[(size_t)idx[i] * w + d - 1]], i + 1 >= m || rec_cmp(&r, idx[i], idx[i + 1]) ? "no" : "more than one");
+            st = fail(c, "the boundary is not a closed surface (a ridge of hull facet %" LH_INDEX_PRI " has %s partner)",
+                      fs[2 * rec[(size_t)idx[i] * w + d - 1]], i + 1 >= m || rec_cmp(&r, idx[i], idx[i + 1]) ? "no" : "more than one");
             break;
         }
         for (int side = 0; side < 2 && st == LH_OK; side++) {
-            const int32_t *a = rec + (size_t)idx[i + side] * w, *b = rec + (size_t)idx[i + 1 - side] * w;
-            int32_t s = fs[2 * a[d - 1]], k = fs[2 * a[d - 1] + 1];
-            if (orient_of(c, c->simp + (size_t)s * nv, k, b[d]) < 0)
-                st = fail(c, "the boundary is not convex: site %d is outside the hull facet of simplex %d", (int)b[d], (int)s);
+            const lh_index *a = rec + (size_t)idx[i + side] * w, *b = rec + (size_t)idx[i + 1 - side] * w;
+            lh_index s = fs[2 * a[d - 1]], k = fs[2 * a[d - 1] + 1];
+            if (orient_of(c, c->simp + (size_t)s * nv, (int)k, b[d]) < 0)
+                st = fail(c, "the boundary is not convex: site %" LH_INDEX_PRI " is outside the hull facet of simplex %" LH_INDEX_PRI, b[d], s);
         }
     }
     lh__free(&c->alloc, idx);
@@ -233,7 +238,7 @@ static lh_status check_boundary(chk *c, size_t boundary)
 }
 
 /* Whether sites a and b have equal coordinates. */
-static int same_coords(const chk *c, int32_t a, int32_t b)
+static int same_coords(const chk *c, lh_index a, lh_index b)
 {
     for (int j = 0; j < c->d; j++)
         if (site(c, a)[j] != site(c, b)[j]) return 0;
@@ -241,19 +246,19 @@ static int same_coords(const chk *c, int32_t a, int32_t b)
 }
 
 /* Among equal sites (adjacent in lexicographic order) exactly one is a vertex. */
-static lh_status check_sites_used(chk *c, const int32_t *used)
+static lh_status check_sites_used(chk *c, const lh_index *used)
 {
-    int32_t *idx = lh__alloc(&c->alloc, (c->n + 1) * sizeof *idx), *tmp = lh__alloc(&c->alloc, (c->n + 1) * sizeof *tmp);
+    lh_index *idx = lh__alloc(&c->alloc, (c->n + 1) * sizeof *idx), *tmp = lh__alloc(&c->alloc, (c->n + 1) * sizeof *tmp);
     lh_status st = idx && tmp ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK) {
-        for (size_t i = 0; i < c->n; i++) idx[i] = (int32_t)i;
+        for (size_t i = 0; i < c->n; i++) idx[i] = (lh_index)i;
         lh__lex l = {c->xyz, c->d};
         lh__sort_idx(idx, tmp, c->n, lh__lex_cmp, &l);
         for (size_t i = 0; i < c->n && st == LH_OK;) {
             size_t j = i, vertices = 0;
             for (; j < c->n && same_coords(c, idx[i], idx[j]); j++) vertices += used[idx[j]] != 0;
-            if (vertices == 0) st = fail(c, "site %d is neither a vertex nor a duplicate of one", (int)idx[i]);
-            if (vertices > 1) st = fail(c, "sites %d and %d are equal and both vertices", (int)idx[i], (int)idx[i + 1]);
+            if (vertices == 0) st = fail(c, "site %" LH_INDEX_PRI " is neither a vertex nor a duplicate of one", idx[i]);
+            if (vertices > 1) st = fail(c, "sites %" LH_INDEX_PRI " and %" LH_INDEX_PRI " are equal and both vertices", idx[i], idx[i + 1]);
             i = j;
         }
     }
@@ -264,14 +269,14 @@ static lh_status check_sites_used(chk *c, const int32_t *used)
 
 /* Furthest-site: every site that is not a vertex lies inside or on the boundary of
  * the hull (quadratic: for tests). */
-static lh_status check_sites_inside(chk *c, const int32_t *used)
+static lh_status check_sites_inside(chk *c, const lh_index *used)
 {
     const int nv = c->nv;
     for (size_t s = 0; s < c->count; s++)
         for (int k = 0; k < nv; k++) {
             if (c->nbr[s * nv + k] >= 0) continue;
             for (size_t i = 0; i < c->n; i++)
-                if (!used[i] && orient_of(c, c->simp + s * nv, k, (int32_t)i) < 0)
+                if (!used[i] && orient_of(c, c->simp + s * nv, k, (lh_index)i) < 0)
                     return fail(c, "site %zu is outside the hull facet of simplex %zu", i, s);
         }
     return LH_OK;
@@ -281,13 +286,13 @@ static lh_status check_sites_inside(chk *c, const int32_t *used)
 static lh_status check_cover(chk *c)
 {
     size_t n = c->n;
-    int32_t *mark = lh__alloc(&c->alloc, (c->count + n + 1) * sizeof *mark);
+    lh_index *mark = lh__alloc(&c->alloc, (c->count + n + 1) * sizeof *mark);
     if (!mark) return LH_ERR_NOMEM;
-    int32_t *used = mark + c->count;
+    lh_index *used = mark + c->count;
     memset(mark, 0, (c->count + n) * sizeof *mark);
     lh_status st = LH_OK;
     if (c->count) { /* flood through neighbours, the mark array doubling as a stack */
-        int32_t *stack = lh__alloc(&c->alloc, (c->count + 1) * sizeof *stack);
+        lh_index *stack = lh__alloc(&c->alloc, (c->count + 1) * sizeof *stack);
         if (!stack) {
             lh__free(&c->alloc, mark);
             return LH_ERR_NOMEM;
@@ -296,9 +301,9 @@ static lh_status check_cover(chk *c)
         stack[top++] = 0;
         mark[0] = 1;
         while (top) {
-            int32_t s = stack[--top];
+            lh_index s = stack[--top];
             for (int k = 0; k < c->nv; k++) {
-                int32_t nb = c->nbr[(size_t)s * c->nv + k];
+                lh_index nb = c->nbr[(size_t)s * c->nv + k];
                 if (nb >= 0 && !mark[nb]) {
                     mark[nb] = 1;
                     seen++;
@@ -367,7 +372,7 @@ static void chk_release(chk *c)
     lh_pred_free(c->pred);
 }
 
-static lh_status run_check(chk *c, const int32_t *simplices)
+static lh_status run_check(chk *c, const lh_index *simplices)
 {
     size_t boundary = 0;
     c->simp = lh__alloc(&c->alloc, (c->count * c->nv + 1) * sizeof *c->simp);
@@ -383,7 +388,7 @@ static lh_status run_check(chk *c, const int32_t *simplices)
 }
 
 lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
-                            const int32_t *simplices, const lh_options *opt, char *msg,
+                            const lh_index *simplices, const lh_options *opt, char *msg,
                             size_t msg_size)
 {
     if (d < LH_DELAUNAY_MIN_DIM || d > LH_DELAUNAY_MAX_DIM) return LH_ERR_DIMENSION;
@@ -426,29 +431,29 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
     for (size_t i = 0; st == LH_OK && c.f.k < c.d && i < t->n; i++) { /* all in one flat */
         const double *p[LH_DELAUNAY_MAX_DIM + 1];
         for (int j = 0; j < c.nv; j++) p[j] = site(&c, t->simp[j]);
-        p[c.nv] = site(&c, (int32_t)i);
+        p[c.nv] = site(&c, (lh_index)i);
         if (lh__affine_independent(c.pred, c.d, p, c.nv))
             st = fail(&c, "site %zu is not in the affine hull of simplex 0", i);
     }
     /* The stored arrays: simplices positively oriented as given, neighbours as
      * computed, one hull facet per boundary facet, incident simplices correct. */
     for (size_t s = 0; st == LH_OK && s < t->count; s++) {
-        if (memcmp(c.simp + s * c.nv, t->simp + s * c.nv, (size_t)c.nv * 4) != 0)
+        if (memcmp(c.simp + s * c.nv, t->simp + s * c.nv, (size_t)c.nv * sizeof *c.simp) != 0)
             st = fail(&c, "simplex %zu is stored negatively oriented", s);
         for (int k = 0; st == LH_OK && k < c.nv; k++)
             if (c.nbr[s * c.nv + k] != t->nbr[s * c.nv + k])
-                st = fail(&c, "neighbour %d of simplex %zu is %d, should be %d", k, s,
-                          (int)t->nbr[s * c.nv + k], (int)c.nbr[s * c.nv + k]);
+                st = fail(&c, "neighbour %d of simplex %zu is %" LH_INDEX_PRI ", should be %" LH_INDEX_PRI, k, s,
+                          t->nbr[s * c.nv + k], c.nbr[s * c.nv + k]);
     }
     size_t boundary = 0;
     for (size_t i = 0; st == LH_OK && i < t->count * c.nv; i++) boundary += t->nbr[i] < 0;
     if (st == LH_OK && boundary != t->hull_count)
         st = fail(&c, "%zu hull facets stored, %zu boundary facets found", t->hull_count, boundary);
     for (size_t i = 0; st == LH_OK && i < t->n; i++) {
-        int32_t s = t->vsimp[i];
-        int vertex = t->dup[i] == (int32_t)i && (!t->furthest || s >= 0), has = 0;
+        lh_index s = t->vsimp[i];
+        int vertex = t->dup[i] == (lh_index)i && (!t->furthest || s >= 0), has = 0;
         if (vertex && s >= 0 && (size_t)s < t->count)
-            for (int k = 0; k < c.nv; k++) has |= t->simp[(size_t)s * c.nv + k] == (int32_t)i;
+            for (int k = 0; k < c.nv; k++) has |= t->simp[(size_t)s * c.nv + k] == (lh_index)i;
         if (vertex ? !has : s != -1) st = fail(&c, "the incident simplex of site %zu is wrong", i);
     }
     chk_release(&c);

@@ -18,7 +18,7 @@ void lh_options_default(lh_options *opt)
 }
 
 /* Perturbed insphere of finite cell v (positively oriented) and site q. */
-static int lifted_sign(lh__eng *e, const int32_t *v, int32_t q)
+static int lifted_sign(lh__eng *e, const lh_index *v, lh_index q)
 {
     for (int k = 0; k < e->nv; k++) e->pts[k] = lh__eng_site(e, v[k]);
     e->pts[e->nv] = lh__eng_site(e, q);
@@ -26,13 +26,13 @@ static int lifted_sign(lh__eng *e, const int32_t *v, int32_t q)
 }
 
 /* The lifted visibility of finite cell v from site q: q strictly inside. */
-static int lifted_conflict(void *user, const int32_t *v, int32_t q)
+static int lifted_conflict(void *user, const lh_index *v, lh_index q)
 {
     return lifted_sign(user, v, q) < 0;
 }
 
 /* The furthest-site test (the upper hull): q strictly outside the circumsphere. */
-static int furthest_conflict(void *user, const int32_t *v, int32_t q)
+static int furthest_conflict(void *user, const lh_index *v, lh_index q)
 {
     return lifted_sign(user, v, q) > 0;
 }
@@ -49,11 +49,11 @@ void lh__dt_conflicts(lh__eng *e, int furthest, lh__insert_pick pick)
 /* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,
  * 161n in 2D..5D (measured), with a little room; higher dimensions start smaller
  * and grow. */
-int32_t lh__dt_expected_cells(int d, size_t n)
+lh_index lh__dt_expected_cells(int d, size_t n)
 {
     static const double per_site[LH_DELAUNAY_MAX_DIM + 1] = {0, 0, 2.1, 7.0, 33, 170, 400, 400, 400};
     double c = per_site[d] * (double)n + 256;
-    return c > INT32_MAX / 2 ? INT32_MAX / 2 : (int32_t)c;
+    return c > (double)(LH_INDEX_MAX / 2) ? LH_INDEX_MAX / 2 : (lh_index)c;
 }
 
 void lh_tri_free(lh_tri *t)
@@ -138,7 +138,7 @@ lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *op
     if (st != LH_OK) return st;
     lh_allocator a;
     lh__allocator_init(&a, opt ? opt->alloc : NULL);
-    int32_t *dup = lh__alloc(&a, (n + 1) * sizeof *dup);
+    lh_index *dup = lh__alloc(&a, (n + 1) * sizeof *dup);
     if (!dup) return LH_ERR_NOMEM;
     lh__eng e;
     st = lh__eng_init(&e, &a, d, n, xyz, dup, opt);

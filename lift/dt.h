@@ -46,25 +46,25 @@ struct lh_tri {
     lh__frame frame;  /* k = d unless triangulated in the sites' affine hull */
     size_t n;
     double *xyz;      /* n*d, a copy of the caller's sites */
-    int32_t *dup;     /* n: the site each one was merged into (itself for a vertex) */
+    lh_index *dup;    /* n: the site each one was merged into (itself for a vertex) */
     size_t ndup;
     size_t count;     /* finite simplices */
-    int32_t *simp;    /* (k+1)*count, canonical */
-    int32_t *nbr;     /* (k+1)*count, -1 across the hull */
+    lh_index *simp;   /* (k+1)*count, canonical */
+    lh_index *nbr;    /* (k+1)*count, -1 across the hull */
     size_t hull_count;
-    int32_t *hull;    /* k*hull_count, outward */
-    int32_t *vsimp;   /* n */
+    lh_index *hull;   /* k*hull_count, outward */
+    lh_index *vsimp;  /* n */
     lh_pred *pred;    /* for queries (lh_tri_locate) */
     int furthest;     /* the furthest-site triangulation (lh_options) */
     int affine_hull;  /* lh_options.affine_hull, for lh_tri_insert */
     lh__insert_pick pick; /* the fixed-dimension insertion loops (dims/), or NULL */
     size_t ncells;    /* the Delaunay complex, built on demand (complex.c) */
-    int32_t *cell_off, *cell_vert;
+    lh_index *cell_off, *cell_vert;
     double *centers;  /* d per simplex, the circumcentres, built on demand (voronoi.c) */
 };
 
 /* delaunay.c: a capacity hint, the cells expected for n uniform sites in R^d. */
-int32_t lh__dt_expected_cells(int d, size_t n);
+lh_index lh__dt_expected_cells(int d, size_t n);
 /* delaunay.c: sets e's conflict test: lifted (Delaunay) or reversed (furthest),
  * and its insertion loop from pick (NULL: the generic one). */
 void lh__dt_conflicts(lh__eng *e, int furthest, lh__insert_pick pick);

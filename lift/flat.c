@@ -23,7 +23,7 @@ typedef struct flat_ctx {
     int furthest;
 } flat_ctx;
 
-static int flat_sign(flat_ctx *x, const int32_t *v, int32_t q)
+static int flat_sign(flat_ctx *x, const lh_index *v, lh_index q)
 {
     const double *p[LH_DELAUNAY_MAX_DIM + 2];
     const int nv = x->f.k + 1;
@@ -32,7 +32,7 @@ static int flat_sign(flat_ctx *x, const int32_t *v, int32_t q)
     return lh__insphere_flat_sos(x->e->pred, x->f.d, x->f.k, x->f.J, p);
 }
 
-static int flat_conflict(void *user, const int32_t *v, int32_t q)
+static int flat_conflict(void *user, const lh_index *v, lh_index q)
 {
     flat_ctx *x = user;
     int s = flat_sign(x, v, q);

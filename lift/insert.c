@@ -16,7 +16,7 @@
 /* Exact duplicates by hashing the coordinates' bit patterns (-0.0 read as +0.0,
  * since they compare equal): new site j maps to the first earlier site equal to it. */
 typedef struct dup_table {
-    int32_t *slot; /* site index or -1 */
+    lh_index *slot; /* site index or -1 */
     size_t mask;
     const double *xyz;
     int d;
@@ -36,12 +36,12 @@ static size_t site_hash(const double *p, int d)
 }
 
 /* The site equal to site i already in the table, else i (now in the table). */
-static int32_t dup_find_or_add(dup_table *tb, int32_t i)
+static lh_index dup_find_or_add(dup_table *tb, lh_index i)
 {
     const int d = tb->d;
     const double *p = tb->xyz + (size_t)i * d;
     for (size_t h = site_hash(p, d) & tb->mask;; h = (h + 1) & tb->mask) {
-        int32_t s = tb->slot[h];
+        lh_index s = tb->slot[h];
         if (s < 0) {
             tb->slot[h] = i;
             return i;
@@ -54,7 +54,7 @@ static int32_t dup_find_or_add(dup_table *tb, int32_t i)
 }
 
 /* dup[n_old..n-1] for the new sites; returns the number merged, or -1 on no memory. */
-static long find_duplicates(lh_tri *t, const double *xyz, int32_t *dup, size_t n_old, size_t n)
+static long find_duplicates(lh_tri *t, const double *xyz, lh_index *dup, size_t n_old, size_t n)
 {
     size_t size = 16;
     while (size < 2 * n) size *= 2;
@@ -63,10 +63,10 @@ static long find_duplicates(lh_tri *t, const double *xyz, int32_t *dup, size_t n
     memset(tb.slot, 0xff, size * sizeof *tb.slot);
     long merged = 0;
     for (size_t i = 0; i < n_old; i++)
-        if (dup[i] == (int32_t)i) dup_find_or_add(&tb, (int32_t)i);
+        if (dup[i] == (lh_index)i) dup_find_or_add(&tb, (lh_index)i);
     for (size_t i = n_old; i < n; i++) {
-        dup[i] = dup_find_or_add(&tb, (int32_t)i);
-        merged += dup[i] != (int32_t)i;
+        dup[i] = dup_find_or_add(&tb, (lh_index)i);
+        merged += dup[i] != (lh_index)i;
     }
     lh__free(&t->alloc, tb.slot);
     return merged;
@@ -74,18 +74,18 @@ static long find_duplicates(lh_tri *t, const double *xyz, int32_t *dup, size_t n
 
 /* The new distinct sites (caller's indices) in BRIO order: lh__eng_order over the
  * new sites alone; *count of them in *out (allocated). */
-static lh_status new_site_order(lh_tri *t, const double *xyz, const int32_t *dup, size_t n_old,
-                                size_t m, int32_t **out, size_t *count)
+static lh_status new_site_order(lh_tri *t, const double *xyz, const lh_index *dup, size_t n_old,
+                                size_t m, lh_index **out, size_t *count)
 {
     lh__eng o;
-    int32_t *scratch = lh__alloc(&t->alloc, (m + 1) * sizeof *scratch);
+    lh_index *scratch = lh__alloc(&t->alloc, (m + 1) * sizeof *scratch);
     lh_status st = scratch ? lh__eng_init(&o, &t->alloc, t->d, m, xyz + n_old * t->d, scratch, NULL)
                            : LH_ERR_NOMEM;
     if (scratch && st == LH_OK) st = lh__eng_order(&o);
     if (scratch && st == LH_OK) {
         size_t k = 0;
         for (size_t i = 0; i < o.norder; i++) {
-            int32_t s = (int32_t)n_old + o.order[i];
+            lh_index s = (lh_index)n_old + o.order[i];
             if (dup[s] == s) o.order[k++] = s;
         }
         *out = o.order;
@@ -98,7 +98,7 @@ static lh_status new_site_order(lh_tri *t, const double *xyz, const int32_t *dup
 }
 
 /* The position of x in v (x must be there). */
-static int index_of(const int32_t *v, int32_t x)
+static int index_of(const lh_index *v, lh_index x)
 {
     int k = 0;
     while (v[k] != x) k++;
@@ -108,19 +108,19 @@ static int index_of(const int32_t *v, int32_t x)
 /* Links infinite cell I (made from hull facet k of finite cell s) across its facet
  * opposite vertex j >= 1: turn around the hull ridge (that facet minus v_j) through
  * finite cells until an infinite cell is entered. */
-static void link_infinite(lh__tds *t, int32_t I, int j, int32_t s, int k)
+static void link_infinite(lh__tds *t, lh_index I, int j, lh_index s, int k)
 {
     const int nv = t->nv;
-    int32_t u = t->vert[(size_t)I * nv + j], w = t->vert[(size_t)s * nv + k], cur = s;
+    lh_index u = t->vert[(size_t)I * nv + j], w = t->vert[(size_t)s * nv + k], cur = s;
     for (;;) {
-        const int32_t *cv = t->vert + (size_t)cur * nv;
-        int32_t nxt = t->nbr[(size_t)cur * nv + index_of(cv, u)];
+        const lh_index *cv = t->vert + (size_t)cur * nv;
+        lh_index nxt = t->nbr[(size_t)cur * nv + index_of(cv, u)];
         if (t->vert[(size_t)nxt * nv] == LH__INF) { /* nxt = INF + cur \ {u} */
             t->nbr[(size_t)I * nv + j] = nxt;
             t->nbr[(size_t)nxt * nv + index_of(t->vert + (size_t)nxt * nv, w)] = I;
             return;
         }
-        int32_t y = t->vert[(size_t)nxt * nv + lh__tds_mirror(t, nxt, cur)];
+        lh_index y = t->vert[(size_t)nxt * nv + lh__tds_mirror(t, nxt, cur)];
         u = w;
         w = y;
         cur = nxt;
@@ -133,28 +133,28 @@ static lh_status rebuild_cells(lh__eng *e, const lh_tri *t)
 {
     const int nv = e->nv;
     size_t cells = t->count + t->hull_count;
-    if (cells >= INT32_MAX / 2) return LH_ERR_TOO_LARGE;
-    lh_status st = lh__tds_init(&e->tds, &e->alloc, nv, (int32_t)(cells + cells / 4 + 256));
+    if (cells >= LH_INDEX_MAX / 2) return LH_ERR_TOO_LARGE;
+    lh_status st = lh__tds_init(&e->tds, &e->alloc, nv, (lh_index)(cells + cells / 4 + 256));
     if (st != LH_OK) return st;
     lh__tds_vertex_bound(&e->tds, e->n + 1);
     lh__tds *tds = &e->tds;
     for (size_t s = 0; s < t->count; s++) {
-        int32_t c = lh__tds_new_cell(tds); /* c == s: fresh store, capacity reserved */
+        lh_index c = lh__tds_new_cell(tds); /* c == s: fresh store, capacity reserved */
         memcpy(tds->vert + (size_t)c * nv, t->simp + s * nv, (size_t)nv * sizeof *tds->vert);
     }
     for (size_t s = 0; s < t->count; s++)
         for (int k = 0; k < nv; k++) {
-            int32_t n = t->nbr[s * nv + k];
+            lh_index n = t->nbr[s * nv + k];
             if (n < 0) {
                 n = lh__tds_new_cell(tds);
                 lh__eng_make_infinite(tds->vert + (size_t)n * nv, t->simp + s * nv, nv, k);
-                tds->nbr[(size_t)n * nv] = (int32_t)s;
+                tds->nbr[(size_t)n * nv] = (lh_index)s;
                 for (int j = 1; j < nv; j++) tds->nbr[(size_t)n * nv + j] = -1;
             }
             tds->nbr[s * nv + k] = n;
         }
-    for (int32_t I = (int32_t)t->count; I < tds->top; I++) {
-        int32_t s = tds->nbr[(size_t)I * nv];
+    for (lh_index I = (lh_index)t->count; I < tds->top; I++) {
+        lh_index s = tds->nbr[(size_t)I * nv];
         int k = lh__tds_mirror(tds, s, I);
         for (int j = 1; j < nv; j++)
             if (tds->nbr[(size_t)I * nv + j] < 0) link_infinite(tds, I, j, s, k);
@@ -251,12 +251,12 @@ lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz)
 {
     if (!t || (!xyz && m > 0)) return LH_ERR_INVALID_ARGUMENT;
     if (m == 0) return LH_OK;
-    if (m >= (size_t)INT32_MAX - t->n || t->n + m > SIZE_MAX / ((size_t)t->d * sizeof(double)))
+    if (m >= (size_t)LH_INDEX_MAX - t->n || t->n + m > SIZE_MAX / ((size_t)t->d * sizeof(double)))
         return LH_ERR_TOO_LARGE;
     lh_status st = lh_coords_validate(t->d, m, xyz, NULL);
     if (st != LH_OK) return st;
     lh_tri nt;
-    int32_t *list = NULL;
+    lh_index *list = NULL;
     size_t count = 0;
     lh__eng e;
     int engine = 0;

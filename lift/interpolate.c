@@ -10,7 +10,7 @@
 #include <math.h>
 
 /* The representative of site i (duplicates carry no values of their own). */
-static const double *values_of(const lh_tri *t, int channels, const double *values, int32_t i)
+static const double *values_of(const lh_tri *t, int channels, const double *values, lh_index i)
 {
     return values + (size_t)t->dup[i] * channels;
 }
@@ -22,7 +22,7 @@ static void fill_nan(double *out, int channels)
 
 /* out = sum w_i * values(site_i). */
 static void combine(const lh_tri *t, int channels, const double *values, size_t m,
-                    const int32_t *sites, const double *w, double *out)
+                    const lh_index *sites, const double *w, double *out)
 {
     for (int c = 0; c < channels; c++) out[c] = 0;
     for (size_t i = 0; i < m; i++) {
@@ -32,7 +32,7 @@ static void combine(const lh_tri *t, int channels, const double *values, size_t 
 }
 
 static lh_status linear(lh_tri *t, const double *q, int channels, const double *values,
-                        int32_t *hint, double *out)
+                        lh_index *hint, double *out)
 {
     lh_location loc;
     lh_status st = lh_tri_locate(t, q, *hint, &loc);
@@ -48,9 +48,9 @@ static lh_status linear(lh_tri *t, const double *q, int channels, const double *
 }
 
 static lh_status nearest(lh_tri *t, const double *q, int channels, const double *values,
-                         int32_t *hint, double *out)
+                         lh_index *hint, double *out)
 {
-    int32_t s;
+    lh_index s;
     lh_status st = lh_tri_nearest(t, q, *hint, &s);
     if (st != LH_OK) return st;
     *hint = t->vsimp[s];
@@ -63,12 +63,12 @@ static lh_status nearest(lh_tri *t, const double *q, int channels, const double 
  * neighbours. */
 typedef struct nbuf {
     size_t cap;
-    int32_t *site;
+    lh_index *site;
     double *w;
 } nbuf;
 
 static lh_status natural(lh_tri *t, const double *q, int channels, const double *values,
-                         int32_t *hint, nbuf *b, double *out)
+                         lh_index *hint, nbuf *b, double *out)
 {
     size_t count;
     lh_status st;
@@ -99,7 +99,7 @@ lh_status lh_tri_interpolate(lh_tri *t, lh_interp_method method, size_t m, const
         return LH_ERR_INVALID_ARGUMENT;
     if (method != LH_INTERP_LINEAR && t->furthest) return LH_ERR_INVALID_ARGUMENT;
     if (method == LH_INTERP_NATURAL && (t->d > 3 || t->frame.k != t->d)) return LH_ERR_DIMENSION;
-    int32_t hint = -1;
+    lh_index hint = -1;
     nbuf b = {0, NULL, NULL};
     lh_status st = LH_OK;
     for (size_t i = 0; i < m && st == LH_OK; i++) {

@@ -74,17 +74,17 @@ static double nearest_in_simplex(const double *const *v, int m, const double *q,
 }
 
 /* The simplex containing q, -1 when q is outside the hull, -2 past the step bound. */
-static int32_t walk(lh_tri *t, const double *q, int32_t s)
+static lh_index walk(lh_tri *t, const double *q, lh_index s)
 {
     const int nv = t->frame.k + 1;
     const double *p[MAXV];
     size_t limit = 64 + 4 * t->count;
-    int32_t prev = -1;
+    lh_index prev = -1;
     for (size_t step = 0; step < limit; step++) {
-        const int32_t *v = t->simp + (size_t)s * nv;
+        const lh_index *v = t->simp + (size_t)s * nv;
         int moved = 0;
         for (int k = 0; k < nv && !moved; k++) {
-            int32_t n = t->nbr[(size_t)s * nv + k];
+            lh_index n = t->nbr[(size_t)s * nv + k];
             if (n == prev && n >= 0) continue;
             for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)v[j] * t->d;
             if (lh__frame_orient(t->pred, &t->frame, p) >= 0) continue;
@@ -102,17 +102,17 @@ static int32_t walk(lh_tri *t, const double *q, int32_t s)
  * whose hyperplane holds q (orient_d = 0) — the one with the smallest index, so
  * that the answer depends on q only, not on the walk. Returns -1 when out of
  * memory. */
-static int32_t smallest_holder(lh_tri *t, const double *q, int32_t s)
+static lh_index smallest_holder(lh_tri *t, const double *q, lh_index s)
 {
     const int nv = t->frame.k + 1;
-    int32_t local[64], *seen = local, best = s;
+    lh_index local[64], *seen = local, best = s;
     size_t count = 1, cap = 64;
     seen[0] = s;
     for (size_t i = 0; i < count; i++) {
-        int32_t c = seen[i];
+        lh_index c = seen[i];
         if (c < best) best = c;
         for (int k = 0; k < nv; k++) {
-            int32_t n = t->nbr[(size_t)c * nv + k];
+            lh_index n = t->nbr[(size_t)c * nv + k];
             const double *p[MAXV];
             for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)t->simp[(size_t)c * nv + j] * t->d;
             if (n < 0 || lh__frame_orient(t->pred, &t->frame, p) != 0) continue;
@@ -120,7 +120,7 @@ static int32_t smallest_holder(lh_tri *t, const double *q, int32_t s)
             while (j < count && seen[j] != n) j++;
             if (j < count) continue;
             if (count == cap) {
-                int32_t *more = lh__alloc(&t->alloc, 2 * cap * sizeof *more);
+                lh_index *more = lh__alloc(&t->alloc, 2 * cap * sizeof *more);
                 if (!more) {
                     best = -1;
                     goto done;
@@ -169,7 +169,7 @@ static void locate_outside(lh_tri *t, const double *q, lh_location *out)
     const double *p[MAXV], *ps[MAXV];
     double buf[MAXV * LH_DELAUNAY_MAX_DIM], qs[LH_DELAUNAY_MAX_DIM], best = INFINITY;
     for (size_t f = 0; f < t->hull_count; f++) {
-        const int32_t *v = t->hull + f * k;
+        const lh_index *v = t->hull + f * k;
         for (int j = 0; j < k; j++) p[j] = t->xyz + (size_t)v[j] * d;
         p[k] = q;
         /* not strictly visible (k = 1: the two end sites, which have no orientation) */
@@ -179,14 +179,14 @@ static void locate_outside(lh_tri *t, const double *q, lh_location *out)
         double dist2 = nearest_in_simplex(ps, k, qs, d, bary);
         if (dist2 < best || out->hull_facet < 0) { /* the first visible facet, at least */
             best = dist2;
-            out->hull_facet = (int32_t)f;
+            out->hull_facet = (lh_index)f;
             memcpy(out->bary, bary, (size_t)k * sizeof *bary);
         }
     }
     out->distance = ldexp(sqrt(best), s);
 }
 
-lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *out)
+lh_status lh_tri_locate(lh_tri *t, const double *q, lh_index hint, lh_location *out)
 {
     if (!t || !q || !out) return LH_ERR_INVALID_ARGUMENT;
     if (lh_coords_validate(t->d, 1, q, NULL) != LH_OK) return LH_ERR_NONFINITE;
@@ -199,8 +199,8 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *o
     }
     memset(out, 0, sizeof *out);
     out->simplex = out->hull_facet = -1;
-    int32_t start = hint >= 0 && (size_t)hint < t->count ? hint : 0;
-    int32_t s = walk(t, q, start);
+    lh_index start = hint >= 0 && (size_t)hint < t->count ? hint : 0;
+    lh_index s = walk(t, q, start);
     for (size_t c = 0; s == -2 && c < t->count; c++) { /* the walk's bound: scan */
         const double *p[MAXV];
         int inside = 1;
@@ -208,7 +208,7 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *o
             for (int j = 0; j < nv; j++) p[j] = j == k ? q : t->xyz + (size_t)t->simp[c * nv + j] * t->d;
             inside = lh__frame_orient(t->pred, &t->frame, p) >= 0;
         }
-        if (inside) s = (int32_t)c;
+        if (inside) s = (lh_index)c;
     }
     if (s < 0) {
         locate_outside(t, q, out);

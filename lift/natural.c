@@ -82,7 +82,7 @@ enum { NN_MAXD = 3, NN_MAXV = NN_MAXD + 1, NN_FIRST_CAP = 48 };
 
 /* A natural neighbour and its (not yet normalised) weight. */
 typedef struct nn_pair {
-    int32_t site;
+    lh_index site;
     double w;
 } nn_pair;
 
@@ -92,18 +92,18 @@ typedef struct nn_pair {
 typedef struct nn_ws {
     size_t cap;        /* conflict simplices the arrays hold; sites: cap + d   */
     uint64_t *key;     /* open addressing: simplex s as 2s, site v as 2v+1     */
-    int32_t *val;      /* simplex: conflict index or -1; site: local index     */
+    lh_index *val;     /* simplex: conflict index or -1; site: local index     */
     size_t mask;       /* table size - 1                                       */
     size_t nconf, nsite;
-    int32_t *conf;     /* cap: conflict simplices                              */
-    int32_t *lv;       /* (d+1) per conflict simplex: its local sites          */
-    int32_t *nb;       /* (d+1) per conflict simplex: neighbour's conflict
+    lh_index *conf;    /* cap: conflict simplices                              */
+    lh_index *lv;      /* (d+1) per conflict simplex: its local sites          */
+    lh_index *nb;      /* (d+1) per conflict simplex: neighbour's conflict
                           index, -1 for a non-conflict simplex or the hull     */
     uint8_t *done;     /* per conflict simplex: bit e, its edge e measured     */
     double *cc;        /* d per conflict simplex: circumcentre (relative to q) */
     double *fc;        /* (d+1)*d per conflict simplex: centre of q + facet j
                           where facet j is on the cavity's boundary            */
-    int32_t *site;     /* per local site: its index in t                       */
+    lh_index *site;    /* per local site: its index in t                       */
     double *x;         /* d per local site: coordinates relative to q          */
     double *vol;       /* per local site: d * vol(S_i), accumulated            */
     double *aq;        /* per local site: area of q's new face with it         */
@@ -140,11 +140,11 @@ static void *ws_create(const lh_allocator *a, int d, size_t cap, nn_ws *w)
     off[i++] = o, ok &= reserve(&o, ns * (size_t)d, sizeof(double));       /* root */
     off[i++] = o, ok &= reserve(&o, ns, sizeof(nn_pair));                  /* pair */
     off[i++] = o, ok &= reserve(&o, tsize, sizeof(uint64_t));              /* key  */
-    off[i++] = o, ok &= reserve(&o, tsize, sizeof(int32_t));               /* val  */
-    off[i++] = o, ok &= reserve(&o, cap, sizeof(int32_t));                 /* conf */
-    off[i++] = o, ok &= reserve(&o, cap * nv, sizeof(int32_t));            /* lv   */
-    off[i++] = o, ok &= reserve(&o, cap * nv, sizeof(int32_t));            /* nb   */
-    off[i++] = o, ok &= reserve(&o, ns, sizeof(int32_t));                  /* site */
+    off[i++] = o, ok &= reserve(&o, tsize, sizeof(lh_index));              /* val  */
+    off[i++] = o, ok &= reserve(&o, cap, sizeof(lh_index));                /* conf */
+    off[i++] = o, ok &= reserve(&o, cap * nv, sizeof(lh_index));           /* lv   */
+    off[i++] = o, ok &= reserve(&o, cap * nv, sizeof(lh_index));           /* nb   */
+    off[i++] = o, ok &= reserve(&o, ns, sizeof(lh_index));                 /* site */
     off[i++] = o, ok &= reserve(&o, cap, 1);                               /* done */
     off[i++] = o, ok &= reserve(&o, ns, 1);                                /* rooted */
     char *b = ok ? lh__alloc(a, o) : NULL;
@@ -158,11 +158,11 @@ static void *ws_create(const lh_allocator *a, int d, size_t cap, nn_ws *w)
     w->root = (double *)(b + off[i++]);
     w->pair = (nn_pair *)(b + off[i++]);
     w->key = (uint64_t *)(b + off[i++]);
-    w->val = (int32_t *)(b + off[i++]);
-    w->conf = (int32_t *)(b + off[i++]);
-    w->lv = (int32_t *)(b + off[i++]);
-    w->nb = (int32_t *)(b + off[i++]);
-    w->site = (int32_t *)(b + off[i++]);
+    w->val = (lh_index *)(b + off[i++]);
+    w->conf = (lh_index *)(b + off[i++]);
+    w->lv = (lh_index *)(b + off[i++]);
+    w->nb = (lh_index *)(b + off[i++]);
+    w->site = (lh_index *)(b + off[i++]);
     w->done = (uint8_t *)(b + off[i++]);
     w->rooted = (uint8_t *)(b + off[i++]);
     w->cap = cap;
@@ -188,7 +188,7 @@ static size_t slot(const nn_ws *w, uint64_t k)
 
 /* insphere_d(s, q) < 0: q strictly inside the circumsphere of the positively
  * oriented simplex s. */
-static int in_conflict(lh_tri *t, int32_t s, const double *q)
+static int in_conflict(lh_tri *t, lh_index s, const double *q)
 {
     const int nv = t->d + 1;
     const double *p[NN_MAXV + 1];
@@ -197,22 +197,22 @@ static int in_conflict(lh_tri *t, int32_t s, const double *q)
     return lh_insphere(t->pred, t->d, p) < 0;
 }
 
-static int cmp_i32(const void *a, const void *b)
+static int cmp_index(const void *a, const void *b)
 {
-    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    lh_index x = *(const lh_index *)a, y = *(const lh_index *)b;
     return (x > y) - (x < y);
 }
 
 /* Breadth-first search from s0 (a conflict simplex) over the neighbours; every
  * simplex tested is in the table (-1 when not in conflict). Returns 0 when more
  * than w->cap simplices conflict. */
-static int conflict_region(lh_tri *t, const double *q, int32_t s0, nn_ws *w)
+static int conflict_region(lh_tri *t, const double *q, lh_index s0, nn_ws *w)
 {
     const int nv = t->d + 1;
     w->key[slot(w, 2 * (uint64_t)s0)] = 2 * (uint64_t)s0;
     w->conf[w->nconf++] = s0;
     for (size_t c = 0; c < w->nconf; c++) {
-        const int32_t *nbr = t->nbr + (size_t)w->conf[c] * nv;
+        const lh_index *nbr = t->nbr + (size_t)w->conf[c] * nv;
         for (int k = 0; k < nv; k++) {
             if (nbr[k] < 0) continue;
             uint64_t key = 2 * (uint64_t)nbr[k];
@@ -233,16 +233,16 @@ static int conflict_region(lh_tri *t, const double *q, int32_t s0, nn_ws *w)
 static void index_region(const lh_tri *t, const double *q, nn_ws *w)
 {
     const int d = t->d, nv = d + 1;
-    qsort(w->conf, w->nconf, sizeof *w->conf, cmp_i32);
-    for (size_t c = 0; c < w->nconf; c++) w->val[slot(w, 2 * (uint64_t)w->conf[c])] = (int32_t)c;
+    qsort(w->conf, w->nconf, sizeof *w->conf, cmp_index);
+    for (size_t c = 0; c < w->nconf; c++) w->val[slot(w, 2 * (uint64_t)w->conf[c])] = (lh_index)c;
     for (size_t c = 0; c < w->nconf; c++) {
-        const int32_t *v = t->simp + (size_t)w->conf[c] * nv, *nbr = t->nbr + (size_t)w->conf[c] * nv;
+        const lh_index *v = t->simp + (size_t)w->conf[c] * nv, *nbr = t->nbr + (size_t)w->conf[c] * nv;
         for (int j = 0; j < nv; j++) {
             uint64_t key = 2 * (uint64_t)v[j] + 1;
             size_t i = slot(w, key);
             if (w->key[i] != key) {
                 w->key[i] = key;
-                w->val[i] = (int32_t)w->nsite;
+                w->val[i] = (lh_index)w->nsite;
                 w->site[w->nsite] = v[j];
                 for (int k = 0; k < d; k++)
                     w->x[w->nsite * d + k] = t->xyz[(size_t)v[j] * d + k] - q[k];
@@ -342,7 +342,7 @@ static double unit(const double *a, const double *b, int d, double *n)
 
 /* The face of S_i and S_j on their bisector, of the given measure: adds its
  * cone from each of them, measure * |p_j - p_i| / 2. */
-static void add_shared_face(nn_ws *w, int d, int32_t i, int32_t j, double measure)
+static void add_shared_face(nn_ws *w, int d, lh_index i, lh_index j, double measure)
 {
     double h = 0.5 * dist(w->x + (size_t)i * d, w->x + (size_t)j * d, d) * measure;
     w->vol[i] += h;
@@ -352,7 +352,7 @@ static void add_shared_face(nn_ws *w, int d, int32_t i, int32_t j, double measur
 /* An edge a b of q's new face with local site i: adds its fan triangle from the
  * face's first vertex (2D: the face is the segment; its second end gives the
  * length). */
-static void add_q_face_edge(nn_ws *w, int d, int32_t i, const double *a, const double *b)
+static void add_q_face_edge(nn_ws *w, int d, lh_index i, const double *a, const double *b)
 {
     double *r = w->root + (size_t)i * d;
     if (!w->rooted[i]) {
@@ -377,7 +377,7 @@ static void volumes_2d(nn_ws *w)
 {
     for (size_t c = 0; c < w->nconf; c++)
         for (int k = 0; k < 3; k++) {
-            int32_t n = w->nb[c * 3 + k], i = w->lv[c * 3 + (k + 1) % 3], j = w->lv[c * 3 + (k + 2) % 3];
+            lh_index n = w->nb[c * 3 + k], i = w->lv[c * 3 + (k + 1) % 3], j = w->lv[c * 3 + (k + 2) % 3];
             const double *cc = w->cc + c * 2;
             if (n >= 0) {
                 if ((size_t)n > c) add_shared_face(w, 2, i, j, dist(cc, w->cc + (size_t)n * 2, 2));
@@ -391,7 +391,7 @@ static void volumes_2d(nn_ws *w)
 }
 
 /* 3D: position of local site v in conflict tetrahedron c. */
-static int pos_in(const nn_ws *w, size_t c, int32_t v)
+static int pos_in(const nn_ws *w, size_t c, lh_index v)
 {
     int p = 0;
     while (w->lv[c * 4 + p] != v) p++;
@@ -399,15 +399,15 @@ static int pos_in(const nn_ws *w, size_t c, int32_t v)
 }
 
 /* The vertex of tetrahedron c that is none of i, j, x. */
-static int32_t other(const nn_ws *w, size_t c, int32_t i, int32_t j, int32_t x)
+static lh_index other(const nn_ws *w, size_t c, lh_index i, lh_index j, lh_index x)
 {
     for (int p = 0;; p++) {
-        int32_t v = w->lv[c * 4 + p];
+        lh_index v = w->lv[c * 4 + p];
         if (v != i && v != j && v != x) return v;
     }
 }
 
-static void mark_edge(nn_ws *w, size_t c, int32_t i, int32_t j)
+static void mark_edge(nn_ws *w, size_t c, lh_index i, lh_index j)
 {
     static const uint8_t bit[4][4] = {{0, 1, 2, 4}, {1, 0, 8, 16}, {2, 8, 0, 32}, {4, 16, 32, 0}};
     w->done[c] |= bit[pos_in(w, c, i)][pos_in(w, c, j)];
@@ -432,14 +432,14 @@ static void fan_add(nn_fan *f, const double *v)
  * facet opposite x; in the next tetrahedron leave opposite the vertex of this one
  * that is none of i, j, x. Backwards (leaving opposite l) to the arc's first
  * tetrahedron, or round to c; then forwards, measuring. */
-static void edge_face_3d(nn_ws *w, size_t c, int32_t i, int32_t j, int32_t k, int32_t l)
+static void edge_face_3d(nn_ws *w, size_t c, lh_index i, lh_index j, lh_index k, lh_index l)
 {
     size_t start = c, steps = 0;
-    int32_t x = l;
+    lh_index x = l;
     const double *enter = NULL;
     for (size_t s = c;; steps++) {
         int p = pos_in(w, s, x);
-        int32_t n = w->nb[s * 4 + p], y = other(w, s, i, j, x);
+        lh_index n = w->nb[s * 4 + p], y = other(w, s, i, j, x);
         if (n < 0) { /* s is the arc's first tetrahedron; q + facet p its entry */
             enter = w->fc + (s * 4 + p) * 3;
             start = s;
@@ -462,7 +462,7 @@ static void edge_face_3d(nn_ws *w, size_t c, int32_t i, int32_t j, int32_t k, in
         fan_add(&fan, w->cc + s * 3);
         mark_edge(w, s, i, j);
         int p = pos_in(w, s, x);
-        int32_t n = w->nb[s * 4 + p], y = other(w, s, i, j, x);
+        lh_index n = w->nb[s * 4 + p], y = other(w, s, i, j, x);
         if (n < 0) { /* the arc's exit: with its entry, an edge of q's faces */
             const double *exit = w->fc + (s * 4 + p) * 3;
             fan_add(&fan, exit);
@@ -486,7 +486,7 @@ static void volumes_3d(nn_ws *w)
     static const int e[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
     for (size_t c = 0; c < w->nconf; c++)
         for (int m = 0; m < 6; m++) {
-            const int32_t *v = w->lv + c * 4;
+            const lh_index *v = w->lv + c * 4;
             int a = e[m][0], b = e[m][1], k = e[5 - m][0], l = e[5 - m][1];
             if (w->done[c] & (1u << m)) continue;
             edge_face_3d(w, c, v[a], v[b], v[k], v[l]);
@@ -506,7 +506,7 @@ static void finish_volumes(nn_ws *w, int d)
 
 static int cmp_pair(const void *a, const void *b)
 {
-    int32_t x = ((const nn_pair *)a)->site, y = ((const nn_pair *)b)->site;
+    lh_index x = ((const nn_pair *)a)->site, y = ((const nn_pair *)b)->site;
     return (x > y) - (x < y);
 }
 
@@ -527,7 +527,7 @@ static size_t normalise(nn_pair *p, size_t m)
     return k;
 }
 
-static lh_status write_out(const nn_pair *p, size_t m, size_t cap, int32_t *sites,
+static lh_status write_out(const nn_pair *p, size_t m, size_t cap, lh_index *sites,
                            double *weights, size_t *count)
 {
     *count = m;
@@ -555,19 +555,20 @@ static size_t simplex_pairs(const lh_tri *t, const lh_location *loc, nn_pair *p)
 
 /* 3D: whether the edge a b (sites of tetrahedron s) is on the hull: the walk round it
  * (as edge_face_3d's, over t's arrays) reaches the hull before coming back to s. */
-static int edge_on_hull(const lh_tri *t, int32_t s, int32_t a, int32_t b)
+static int edge_on_hull(const lh_tri *t, lh_index s, lh_index a, lh_index b)
 {
-    const int32_t *v = t->simp + (size_t)s * 4;
-    int32_t x = v[0] != a && v[0] != b ? v[0] : v[1] != a && v[1] != b ? v[1] : v[2];
-    int32_t cur = s;
+    const lh_index *v = t->simp + (size_t)s * 4;
+    lh_index x = v[0] != a && v[0] != b ? v[0] : v[1] != a && v[1] != b ? v[1] : v[2];
+    lh_index cur = s;
     for (size_t steps = 0; steps <= t->count; steps++) {
         v = t->simp + (size_t)cur * 4;
-        int p = 0, y = -1;
+        int p = 0;
+        lh_index y = -1;
         for (int j = 0; j < 4; j++) {
             if (v[j] == x) p = j;
             else if (v[j] != a && v[j] != b) y = v[j];
         }
-        int32_t n = t->nbr[(size_t)cur * 4 + p];
+        lh_index n = t->nbr[(size_t)cur * 4 + p];
         if (n < 0) return 1;
         if (n == s) return 0;
         cur = n;
@@ -604,10 +605,10 @@ static int face_bary(int d, const double *const *v, int m, const double *q, doub
  * have a nonzero orient_d (exact) — a hull facet (its neighbour is -1) or, in 3D,
  * an edge with a hull facet round it. Writes the pairs and returns how many (at
  * most d, normalised); 0 when q is inside the hull and not a site. */
-static size_t special_point(lh_tri *t, const double *q, int32_t s, nn_pair *out)
+static size_t special_point(lh_tri *t, const double *q, lh_index s, nn_pair *out)
 {
     const int d = t->d, nv = d + 1;
-    const int32_t *v = t->simp + (size_t)s * nv, *nbr = t->nbr + (size_t)s * nv;
+    const lh_index *v = t->simp + (size_t)s * nv, *nbr = t->nbr + (size_t)s * nv;
     const double *p[NN_MAXV];
     for (int j = 0; j < nv; j++) {
         const double *x = t->xyz + (size_t)v[j] * d;
@@ -662,7 +663,7 @@ static size_t sibson(nn_ws *w, int d)
 }
 
 static lh_status interior(lh_tri *t, const double *q, const lh_location *loc, size_t cap,
-                          int32_t *sites, double *weights, size_t *count)
+                          lh_index *sites, double *weights, size_t *count)
 {
     const int d = t->d;
     if (!in_conflict(t, loc->simplex, q)) return LH_ERR_INTERNAL; /* not reached */
@@ -691,8 +692,8 @@ static lh_status interior(lh_tri *t, const double *q, const lh_location *loc, si
     }
 }
 
-lh_status lh_tri_natural_coords(lh_tri *t, const double *q, int32_t hint, size_t cap,
-                                int32_t *sites, double *weights, size_t *count)
+lh_status lh_tri_natural_coords(lh_tri *t, const double *q, lh_index hint, size_t cap,
+                                lh_index *sites, double *weights, size_t *count)
 {
     if (!count) return LH_ERR_INVALID_ARGUMENT;
     *count = 0;

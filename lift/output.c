@@ -16,12 +16,12 @@
 enum { AHEAD = 16 }; /* iterations between a prefetch and the use */
 
 /* mark[c]: the smallest vertex of finite cell c, -1 for the others. */
-static void mark_min_vertex(lh__eng *b, int32_t *mark)
+static void mark_min_vertex(lh__eng *b, lh_index *mark)
 {
     const int nv = b->nv;
-    for (int32_t c = 0; c < b->tds.top; c++) {
-        const int32_t *v = b->tds.vert + (size_t)c * nv;
-        int32_t m = v[0];
+    for (lh_index c = 0; c < b->tds.top; c++) {
+        const lh_index *v = b->tds.vert + (size_t)c * nv;
+        lh_index m = v[0];
         for (int k = 1; k < nv; k++)
             if (v[k] < m) m = v[k];
         mark[c] = m; /* LH__INF and LH__DEAD are negative */
@@ -32,26 +32,26 @@ static void mark_min_vertex(lh__eng *b, int32_t *mark)
  * on their smallest vertex (mark[]) gives cell[s], the cell behind simplex s; the
  * canonical tuples are gathered in that order and each bucket is sorted. The
  * random accesses are prefetched AHEAD iterations early. */
-static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell, const int32_t *mark)
+static lh_status place_simplices(lh__eng *b, lh_tri *t, lh_index *cell, const lh_index *mark)
 {
     const int nv = b->nv;
-    const int32_t top = b->tds.top;
+    const lh_index top = b->tds.top;
     size_t *start = lh__alloc(&t->alloc, (t->n + 2) * sizeof *start);
     if (!start) return LH_ERR_NOMEM;
     memset(start, 0, (t->n + 2) * sizeof *start);
-    for (int32_t c = 0; c < top; c++) {
+    for (lh_index c = 0; c < top; c++) {
         if (c + AHEAD < top && mark[c + AHEAD] >= 0) PREFETCH(start + mark[c + AHEAD] + 2);
         if (mark[c] >= 0) start[(size_t)mark[c] + 2]++;
     }
     for (size_t k = 2; k < t->n + 2; k++) start[k] += start[k - 1];
-    for (int32_t c = 0; c < top; c++) {
+    for (lh_index c = 0; c < top; c++) {
         if (c + AHEAD < top && mark[c + AHEAD] >= 0) PREFETCH(start + mark[c + AHEAD] + 1);
         if (mark[c] >= 0) cell[start[(size_t)mark[c] + 1]++] = c;
     }
     for (size_t s = 0; s < t->count; s++) {
         if (s + AHEAD < t->count) PREFETCH(b->tds.vert + (size_t)cell[s + AHEAD] * nv);
-        const int32_t *v = b->tds.vert + (size_t)cell[s] * nv;
-        int32_t *o = t->simp + s * nv;
+        const lh_index *v = b->tds.vert + (size_t)cell[s] * nv;
+        lh_index *o = t->simp + s * nv;
         for (int k = 0; k < nv; k++) o[k] = v[k];
         lh__canonical(o, nv);
     }
@@ -64,20 +64,20 @@ static lh_status place_simplices(lh__eng *b, lh_tri *t, int32_t *cell, const int
 /* Neighbour k of simplex s: across the facet opposite its k-th vertex. Cells are
  * visited in store order (neighbouring cells are mostly close in memory, so their
  * out_of_cell entries too); the simplex's two rows are prefetched. */
-static void set_neighbours(lh__eng *b, lh_tri *t, const int32_t *out_of_cell)
+static void set_neighbours(lh__eng *b, lh_tri *t, const lh_index *out_of_cell)
 {
     const int nv = b->nv;
-    const int32_t top = b->tds.top;
-    for (int32_t c = 0; c < top; c++) {
+    const lh_index top = b->tds.top;
+    for (lh_index c = 0; c < top; c++) {
         if (c + AHEAD < top && out_of_cell[c + AHEAD] >= 0) {
             PREFETCH(t->simp + (size_t)out_of_cell[c + AHEAD] * nv);
             PREFETCH(t->nbr + (size_t)out_of_cell[c + AHEAD] * nv);
         }
-        int32_t s = out_of_cell[c];
+        lh_index s = out_of_cell[c];
         if (s < 0) continue;
-        const int32_t *cv = b->tds.vert + (size_t)c * nv, *cn = b->tds.nbr + (size_t)c * nv;
-        const int32_t *sv = t->simp + (size_t)s * nv;
-        int32_t *sn = t->nbr + (size_t)s * nv;
+        const lh_index *cv = b->tds.vert + (size_t)c * nv, *cn = b->tds.nbr + (size_t)c * nv;
+        const lh_index *sv = t->simp + (size_t)s * nv;
+        lh_index *sn = t->nbr + (size_t)s * nv;
         for (int j = 0; j < nv; j++) {
             int k = 0;
             while (sv[k] != cv[j]) k++;
@@ -86,14 +86,14 @@ static void set_neighbours(lh__eng *b, lh_tri *t, const int32_t *out_of_cell)
     }
 }
 
-static lh_status extract_simplices(lh__eng *b, lh_tri *t, int32_t *out_of_cell)
+static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *out_of_cell)
 {
     const int nv = b->nv;
     mark_min_vertex(b, out_of_cell);
     size_t count = 0;
-    for (int32_t c = 0; c < b->tds.top; c++) count += out_of_cell[c] >= 0;
+    for (lh_index c = 0; c < b->tds.top; c++) count += out_of_cell[c] >= 0;
     t->count = count;
-    int32_t *cell = lh__alloc(&t->alloc, (count + 1) * sizeof *cell);
+    lh_index *cell = lh__alloc(&t->alloc, (count + 1) * sizeof *cell);
     t->simp = lh__alloc(&t->alloc, (count * nv + 1) * sizeof *t->simp);
     lh_status st = cell && t->simp ? place_simplices(b, t, cell, out_of_cell) : LH_ERR_NOMEM;
     if (st == LH_OK) {
@@ -101,10 +101,10 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, int32_t *out_of_cell)
         if (!t->nbr) st = LH_ERR_NOMEM;
     }
     if (st == LH_OK) {
-        for (int32_t c = 0; c < b->tds.top; c++) out_of_cell[c] = -1;
+        for (lh_index c = 0; c < b->tds.top; c++) out_of_cell[c] = -1;
         for (size_t s = 0; s < count; s++) {
             if (s + AHEAD < count) PREFETCH(out_of_cell + cell[s + AHEAD]);
-            out_of_cell[cell[s]] = (int32_t)s;
+            out_of_cell[cell[s]] = (lh_index)s;
         }
         set_neighbours(b, t, out_of_cell);
     }
@@ -115,8 +115,8 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, int32_t *out_of_cell)
 lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
 {
     /* The stamps are no longer needed: their words become the cell -> simplex map. */
-    int32_t *out_of_cell = (int32_t *)lh__tds_finish(&b->tds);
-    lh_status st = extract_simplices(b, t, out_of_cell);
+    lh_index *out_of_cell = lh__tds_finish(&b->tds);
+    lh_status st = out_of_cell ? extract_simplices(b, t, out_of_cell) : LH_ERR_NOMEM;
     if (st == LH_OK) st = lh__eng_hull_facets(b, &t->hull, &t->hull_count);
     if (st == LH_OK) {
         t->vsimp = lh__alloc(&t->alloc, (t->n + 1) * sizeof *t->vsimp);
@@ -129,7 +129,7 @@ lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
         for (size_t c = t->count; c-- > 0;) {
             if (c >= AHEAD)
                 for (int k = 0; k < nv; k++) PREFETCH(t->vsimp + t->simp[(c - AHEAD) * nv + k]);
-            for (int k = 0; k < nv; k++) t->vsimp[t->simp[c * nv + k]] = (int32_t)c;
+            for (int k = 0; k < nv; k++) t->vsimp[t->simp[c * nv + k]] = (lh_index)c;
         }
     }
     lh__free(&b->tds.alloc, out_of_cell);
@@ -140,10 +140,10 @@ int lh_tri_dim(const lh_tri *t) { return t ? t->d : 0; }
 int lh_tri_simplex_dim(const lh_tri *t) { return t ? t->frame.k : 0; }
 size_t lh_tri_site_count(const lh_tri *t) { return t ? t->n : 0; }
 size_t lh_tri_count(const lh_tri *t) { return t ? t->count : 0; }
-const int32_t *lh_tri_simplices(const lh_tri *t) { return t ? t->simp : NULL; }
-const int32_t *lh_tri_neighbors(const lh_tri *t) { return t ? t->nbr : NULL; }
+const lh_index *lh_tri_simplices(const lh_tri *t) { return t ? t->simp : NULL; }
+const lh_index *lh_tri_neighbors(const lh_tri *t) { return t ? t->nbr : NULL; }
 size_t lh_tri_hull_count(const lh_tri *t) { return t ? t->hull_count : 0; }
-const int32_t *lh_tri_hull_facets(const lh_tri *t) { return t ? t->hull : NULL; }
-const int32_t *lh_tri_vertex_simplex(const lh_tri *t) { return t ? t->vsimp : NULL; }
-const int32_t *lh_tri_duplicate_of(const lh_tri *t) { return t ? t->dup : NULL; }
+const lh_index *lh_tri_hull_facets(const lh_tri *t) { return t ? t->hull : NULL; }
+const lh_index *lh_tri_vertex_simplex(const lh_tri *t) { return t ? t->vsimp : NULL; }
+const lh_index *lh_tri_duplicate_of(const lh_tri *t) { return t ? t->dup : NULL; }
 size_t lh_tri_duplicate_count(const lh_tri *t) { return t ? t->ndup : 0; }

@@ -26,6 +26,7 @@
 #ifndef LIFTHULL_H
 #define LIFTHULL_H
 
+#include <inttypes.h> /* PRId32, PRId64 (LH_INDEX_PRI) */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h> /* FILE, for the file formats */
@@ -84,10 +85,14 @@ const char *lh_status_name(lh_status status);
 #if LH_INDEX_BITS == 64
 typedef int64_t lh_index;
 #define LH_INDEX_MAX INT64_MAX
+#define LH_INDEX_PRI PRId64
 #else
 typedef int32_t lh_index;
 #define LH_INDEX_MAX INT32_MAX
+#define LH_INDEX_PRI PRId32
 #endif
+/* LH_INDEX_PRI: printf's conversion for an lh_index, as inttypes.h's PRId32/PRId64:
+ * printf("%" LH_INDEX_PRI "\n", lh_tri_simplices(t)[0]). */
 /* LH_INDEX_BITS of the library (32 or 64). */
 int lh_index_bits(void);
 
@@ -251,7 +256,7 @@ void lh_options_default(lh_options *opt);
  *
  * Returns LH_OK; LH_ERR_DIMENSION (d outside 2..8); LH_ERR_INVALID_ARGUMENT (out or
  * xyz NULL, or an allocator without hooks); LH_ERR_TOO_LARGE (n*d overflows, or more
- * than INT32_MAX - 1 sites); LH_ERR_NONFINITE (a NaN or infinity: lh_coords_validate
+ * than LH_INDEX_MAX - 1 sites); LH_ERR_NONFINITE (a NaN or infinity: lh_coords_validate
  * names the coordinate); LH_ERR_DEGENERATE (fewer than d+1 distinct sites, or all
  * sites in an affine subspace of dimension < d — lh_affine_dim tells which; with
  * opt->affine_hull only for a single distinct site);
@@ -289,20 +294,20 @@ int lh_tri_simplex_dim(const lh_tri *t);
 size_t lh_tri_site_count(const lh_tri *t);   /* n, duplicates included                */
 size_t lh_tri_count(const lh_tri *t);        /* finite simplices                      */
 /* (k+1) * lh_tri_count indices into the sites, canonical order (see lh_delaunay). */
-const int32_t *lh_tri_simplices(const lh_tri *t);
+const lh_index *lh_tri_simplices(const lh_tri *t);
 /* (k+1) * lh_tri_count: neighbour j of simplex s is across the facet opposite its
  * j-th vertex; -1 across the convex hull. */
-const int32_t *lh_tri_neighbors(const lh_tri *t);
+const lh_index *lh_tri_neighbors(const lh_tri *t);
 /* Convex hull facets: lh_tri_hull_count facets of k site indices each, ordered so that
  * orient_k(facet, p) > 0 for points p strictly outside the hull (k = 1: the two end
  * sites of the line, which have no orientation). */
 size_t lh_tri_hull_count(const lh_tri *t);
-const int32_t *lh_tri_hull_facets(const lh_tri *t);
+const lh_index *lh_tri_hull_facets(const lh_tri *t);
 /* Per site: one simplex incident to it (-1 for a merged duplicate, or, furthest-site,
  * for a site that is not a vertex). */
-const int32_t *lh_tri_vertex_simplex(const lh_tri *t);
+const lh_index *lh_tri_vertex_simplex(const lh_tri *t);
 /* Per site: the index of the earlier equal site it was merged into (itself if none). */
-const int32_t *lh_tri_duplicate_of(const lh_tri *t);
+const lh_index *lh_tri_duplicate_of(const lh_tri *t);
 size_t lh_tri_duplicate_count(const lh_tri *t); /* sites merged into an earlier one */
 void lh_tri_free(lh_tri *t);
 
@@ -319,7 +324,7 @@ void lh_tri_free(lh_tri *t);
  * msg_size bytes).
  */
 lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
-                            const int32_t *simplices, const lh_options *opt, char *msg,
+                            const lh_index *simplices, const lh_options *opt, char *msg,
                             size_t msg_size);
 /* The same for a handle, also verifying its neighbour and hull arrays; for a
  * furthest-site triangulation the conditions are reversed (every interior facet
@@ -335,13 +340,13 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
  * handle (the pointers stay valid until lh_tri_free). Returns LH_OK, LH_ERR_NOMEM or
  * LH_ERR_INVALID_ARGUMENT.
  */
-lh_status lh_tri_complex(lh_tri *t, size_t *count, const int32_t **offsets,
-                         const int32_t **vertices);
+lh_status lh_tri_complex(lh_tri *t, size_t *count, const lh_index **offsets,
+                         const lh_index **vertices);
 
 /* Where a query point lies in a triangulation. */
 typedef struct lh_location {
-    int32_t simplex;    /* the simplex whose closed region contains q, or -1 outside  */
-    int32_t hull_facet; /* outside: the nearest hull facet (index into
+    lh_index simplex;   /* the simplex whose closed region contains q, or -1 outside  */
+    lh_index hull_facet; /* outside: the nearest hull facet (index into
                            lh_tri_hull_facets), -1 inside                            */
     double distance;    /* outside: Euclidean distance from q to the hull, else 0    */
     double bary[LH_DELAUNAY_MAX_DIM + 1];
@@ -363,7 +368,7 @@ typedef struct lh_location {
  * (a point shared by more than 64 simplices needs memory). Not const: it
  * uses the handle's predicate context (one thread per handle).
  */
-lh_status lh_tri_locate(lh_tri *t, const double *q, int32_t hint, lh_location *out);
+lh_status lh_tri_locate(lh_tri *t, const double *q, lh_index hint, lh_location *out);
 
 /* ---- Voronoi diagram, nearest site, interpolation ---------------------------------- */
 
@@ -390,7 +395,7 @@ lh_status lh_tri_circumcenters(lh_tri *t, const double **centers);
  * LH_ERR_INVALID_ARGUMENT (t, q or site NULL; or a furthest-site handle; or, when
  * k < d, q off the sites' affine hull), LH_ERR_NONFINITE or LH_ERR_NOMEM.
  */
-lh_status lh_tri_nearest(lh_tri *t, const double *q, int32_t hint, int32_t *site);
+lh_status lh_tri_nearest(lh_tri *t, const double *q, lh_index hint, lh_index *site);
 
 /*
  * lh_tri_natural_coords: Sibson's natural-neighbour coordinates of q (Sibson 1980,
@@ -412,8 +417,8 @@ lh_status lh_tri_nearest(lh_tri *t, const double *q, int32_t hint, int32_t *site
  * than cap natural neighbours: *count is the number needed, nothing written);
  * LH_ERR_NONFINITE; LH_ERR_NOMEM.
  */
-lh_status lh_tri_natural_coords(lh_tri *t, const double *q, int32_t hint, size_t cap,
-                                int32_t *sites, double *weights, size_t *count);
+lh_status lh_tri_natural_coords(lh_tri *t, const double *q, lh_index hint, size_t cap,
+                                lh_index *sites, double *weights, size_t *count);
 
 typedef enum lh_interp_method {
     LH_INTERP_LINEAR = 0,  /* barycentric in the simplex containing q (scipy's
@@ -460,10 +465,10 @@ lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *o
                          lh_hull **out);
 int lh_hull_dim(const lh_hull *h);
 size_t lh_hull_facet_count(const lh_hull *h);
-const int32_t *lh_hull_facets(const lh_hull *h);     /* d per facet              */
+const lh_index *lh_hull_facets(const lh_hull *h);    /* d per facet              */
 size_t lh_hull_vertex_count(const lh_hull *h);
-const int32_t *lh_hull_vertices(const lh_hull *h);   /* increasing site indices  */
-const int32_t *lh_hull_duplicate_of(const lh_hull *h);
+const lh_index *lh_hull_vertices(const lh_hull *h);  /* increasing site indices  */
+const lh_index *lh_hull_duplicate_of(const lh_hull *h);
 void lh_hull_free(lh_hull *h);
 
 /* ---- file formats ------------------------------------------------------------------ */
@@ -521,7 +526,8 @@ typedef enum lh_format {
  * for other values). */
 const char *lh_format_name(lh_format format);
 
-#define LH_READ_MAX_POINTS 2147483646 /* INT32_MAX - 1, as lh_delaunay accepts         */
+#define LH_READ_MAX_POINTS (LH_INDEX_MAX - 1) /* as lh_delaunay accepts: 2^31 - 2
+                                                (2^63 - 2 with 64-bit indices)   */
 #define LH_READ_MAX_TOKEN 255         /* bytes in one number or word                   */
 
 /* Points read from a file. Every array is allocated with the allocator given to
@@ -532,7 +538,7 @@ typedef struct lh_points {
     double *xyz;          /* n*d coordinates, row-major                                 */
     int attr_count;       /* .node: attributes per point; 0 otherwise                   */
     double *attr;         /* n*attr_count attributes, row-major; NULL when none         */
-    int32_t *marker;      /* .node with markers: n boundary markers; NULL otherwise     */
+    lh_index *marker;     /* .node with markers: n boundary markers; NULL otherwise     */
     int first_index;      /* .node: the first point's number (0 or 1); 0 otherwise      */
     lh_format format;     /* the format that was read (never LH_FORMAT_AUTO)           */
     lh_allocator alloc_;  /* private: the hooks that allocated the arrays              */
@@ -565,7 +571,7 @@ void lh_points_free(lh_points *p);
 typedef struct lh_cells {
     int nv;               /* point indices per cell, 2..9                             */
     size_t count;         /* cells                                                    */
-    int32_t *v;           /* count*nv point indices, 0-based                          */
+    lh_index *v;          /* count*nv point indices, 0-based                          */
     int first_index;      /* .ele: the first cell's number (0 or 1), the base of its
                              point indices too; 0 for Qhull's 'i'                    */
     lh_allocator alloc_;  /* private: the hooks that allocated v                     */
@@ -598,8 +604,8 @@ typedef struct lh_mesh_view {
     const double *xyz;       /* n*d, row-major                                          */
     int k;                   /* simplex dimension, >= 1                                 */
     size_t count;            /* cells                                                   */
-    const int32_t *cells;    /* count*(k+1) point indices; NULL only when count is 0    */
-    const int32_t *neighbors;/* count*(k+1): neighbour j of a cell is across the facet
+    const lh_index *cells;   /* count*(k+1) point indices; NULL only when count is 0    */
+    const lh_index *neighbors;/* count*(k+1): neighbour j of a cell is across the facet
                                 opposite its j-th vertex, -1 for none; NULL if unknown    */
     const double *values;    /* n per-point scalars (a point field), or NULL           */
     const char *values_name; /* the field's name (printable ASCII, no blank, none of
@@ -611,14 +617,15 @@ typedef struct lh_mesh_view {
  * an array NULL where it is needed, a cell index outside 0..n-1, a neighbour outside
  * -1..count-1, first_index other than 0 or 1, or a bad values_name give
  * LH_ERR_INVALID_ARGUMENT; a d or k the format cannot hold LH_ERR_DIMENSION; a NaN or
- * infinity among the coordinates or values LH_ERR_NONFINITE; more than INT32_MAX
+ * infinity among the coordinates or values LH_ERR_NONFINITE; more than LH_INDEX_MAX
  * points or cells LH_ERR_TOO_LARGE. A failed write (fprintf or ferror) gives LH_ERR_IO,
  * with the file holding a prefix of the output. Otherwise LH_OK. Doubles as "%.17g".
  *
  * lh_write_vtu   VTK XML UnstructuredGrid (.vtu), ASCII. d = 1..3 (points padded with
  *                zeros to 3 coordinates, as VTK wants), k = 1..3 (VTK cell types 3
  *                line, 5 triangle, 10 tetra). values: point data; neighbors: cell data
- *                "neighbors" with k+1 components.
+ *                "neighbors" with k+1 components. Indices as Int32 (Int64 past
+ *                INT32_MAX points or cells, which only 64-bit indices allow).
  * lh_write_msh   Gmsh MSH 4.1 ASCII: $MeshFormat "4.1 0 8", $Entities (one entity of
  *                dimension k holding everything, bounding box of the points), $Nodes
  *                and $Elements (element types 1 segment, 2 triangle, 4 tetrahedron),

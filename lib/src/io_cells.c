@@ -33,14 +33,14 @@ typedef struct cells_ctx {
     int ele, attrs;
 } cells_ctx;
 
-static lh_status push(cells_ctx *x, const lh__token *at, const int32_t *v)
+static lh_status push(cells_ctx *x, const lh__token *at, const lh_index *v)
 {
     lh_cells *c = x->c;
     if (c->count == x->cap) {
         size_t cap = x->cap ? 2 * x->cap : 256;
         if (cap > x->declared) cap = x->declared;
         if (cap <= c->count) cap = c->count + 1;
-        int32_t *nv = cap > SIZE_MAX / sizeof *nv / (size_t)c->nv ? NULL
+        lh_index *nv = cap > SIZE_MAX / sizeof *nv / (size_t)c->nv ? NULL
                       : lh__alloc(&c->alloc_, cap * (size_t)c->nv * sizeof *nv);
         if (!nv) return lh__fail_at(x->s, LH_ERR_NOMEM, at, "out of memory for the cells");
         if (c->count) memcpy(nv, c->v, c->count * (size_t)c->nv * sizeof *nv);
@@ -54,12 +54,12 @@ static lh_status push(cells_ctx *x, const lh__token *at, const int32_t *v)
 }
 
 /* One point index of cell i (base first_index), in 0..n_points-1 after rebasing. */
-static lh_status index_of(cells_ctx *x, const lh__token *t, size_t i, int32_t *v)
+static lh_status index_of(cells_ctx *x, const lh__token *t, size_t i, lh_index *v)
 {
     long long k;
     long long lo = x->c->first_index, hi = (long long)x->n_points - 1 + lo;
-    if (lh__word_integer(t, &k) && k >= lo && (x->n_points == 0 || k <= hi) && k - lo <= INT32_MAX) {
-        *v = (int32_t)(k - lo);
+    if (lh__word_integer(t, &k) && k >= lo && (x->n_points == 0 || k <= hi) && k - lo <= LH_INDEX_MAX) {
+        *v = (lh_index)(k - lo);
         return LH_OK;
     }
     char what[120];
@@ -94,7 +94,7 @@ static lh_status line_end(cells_ctx *x, size_t i)
 static lh_status read_cell(cells_ctx *x, size_t i)
 {
     lh__token t, at;
-    int32_t v[MAX_NV + 1];
+    lh_index v[MAX_NV + 1];
     lh__scan_next(x->s, 1, &t);
     at = t;
     if (t.kind != LH__TOK_WORD) {

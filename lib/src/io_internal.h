@@ -78,8 +78,8 @@ lh_status lh__fail_at(lh__scan *s, lh_status st, const lh__token *t, const char 
 
 /* A word that is a whole number for strtod: 1 and *x (possibly infinite or NaN), else 0. */
 int lh__word_double(const lh__token *t, double *x);
-/* A word of an optional sign and decimal digits: 1 and *v (saturated at +-2^62),
- * else 0. */
+/* A word of an optional sign and decimal digits: 1 and *v (saturated at +-LLONG_MAX,
+ * beyond every count and index limit of either index width), else 0. */
 int lh__word_integer(const lh__token *t, long long *v);
 /* For a word that is a non-finite number: writes "WHAT is 'TOKEN': NaN and infinities
  * are not NOUN" (or "... which overflows a double") and returns LH_ERR_NONFINITE. */
@@ -109,7 +109,7 @@ typedef struct lh__builder {
  * builder has markers), read at token `at`. On LH_ERR_NOMEM or LH_ERR_TOO_LARGE the
  * arrays are as they were and the message names the point. */
 lh_status lh__push(lh__scan *s, lh__builder *b, const lh__token *at, const double *xyz,
-                   const double *attr, int32_t marker);
+                   const double *attr, lh_index marker);
 
 /* The readers: s scans from the start of the input, b->p->d etc. are set by them. */
 lh_status lh__read_qhull(lh__scan *s, lh__builder *b);

@@ -49,7 +49,7 @@ static void elements(lh__out *o, const lh_mesh_view *m)
              m->count, m->k, element_type[m->k], m->count);
     for (size_t i = 0; i < m->count; i++) {
         lh__outf(o, "%zu", i + 1);
-        for (size_t j = 0; j < per; j++) lh__outf(o, " %ld", (long)m->cells[i * per + j] + 1);
+        for (size_t j = 0; j < per; j++) lh__outf(o, " %" LH_INDEX_PRI, m->cells[i * per + j] + 1);
         lh__outf(o, "\n");
     }
     lh__outf(o, "$EndElements\n");

@@ -87,18 +87,18 @@ static lh_status numbers(lh__scan *s, int count, const char *field, const char *
     return LH_OK;
 }
 
-static lh_status marker_and_end(lh__scan *s, lh__builder *b, long long number, int32_t *marker)
+static lh_status marker_and_end(lh__scan *s, lh__builder *b, long long number, lh_index *marker)
 {
     lh__token t;
     char what[100];
     long long v;
     if (b->markers) {
         lh__scan_next(s, 0, &t);
-        if (!lh__word_integer(&t, &v) || v < INT32_MIN || v > INT32_MAX) {
+        if (!lh__word_integer(&t, &v) || v < -LH_INDEX_MAX - 1 || v > LH_INDEX_MAX) {
             snprintf(what, sizeof what, "the boundary marker of point %lld (an integer)", number);
             return lh__expected(s, LH_ERR_PARSE, &t, what, NULL);
         }
-        *marker = (int32_t)v;
+        *marker = (lh_index)v;
     }
     lh__scan_next(s, 0, &t);
     if (t.kind == LH__TOK_EOL || t.kind == LH__TOK_EOF) return LH_OK;
@@ -109,7 +109,7 @@ static lh_status marker_and_end(lh__scan *s, lh__builder *b, long long number, i
 static lh_status read_point(lh__scan *s, lh__builder *b, size_t i, size_t n, double *attr)
 {
     double x[LH_DELAUNAY_MAX_DIM];
-    int32_t marker = 0;
+    lh_index marker = 0;
     lh__token at;
     lh_status st = point_number(s, b, i, n);
     long long number = b->p->first_index + (long long)i;

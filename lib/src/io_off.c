@@ -15,7 +15,7 @@ lh_status lh_write_off(FILE *f, const lh_mesh_view *m)
         lh__outf(&o, "\n");
     }
     for (size_t i = 0; i < m->count; i++)
-        lh__outf(&o, "3 %d %d %d\n", (int)m->cells[3 * i], (int)m->cells[3 * i + 1],
-                 (int)m->cells[3 * i + 2]);
+        lh__outf(&o, "3 %" LH_INDEX_PRI " %" LH_INDEX_PRI " %" LH_INDEX_PRI "\n", m->cells[3 * i],
+                 m->cells[3 * i + 1], m->cells[3 * i + 2]);
     return lh__out_status(&o);
 }

@@ -56,7 +56,7 @@ lh_status lh__view_check(FILE *f, const lh_mesh_view *m, int dmin, int dmax, int
 {
     if (!f || !m) return LH_ERR_INVALID_ARGUMENT;
     if (m->d < dmin || m->d > dmax || m->k < kmin || m->k > kmax) return LH_ERR_DIMENSION;
-    if (m->n > INT32_MAX || m->count > INT32_MAX) return LH_ERR_TOO_LARGE;
+    if (m->n > LH_INDEX_MAX || m->count > LH_INDEX_MAX) return LH_ERR_TOO_LARGE;
     if ((m->n && !m->xyz) || (m->count && !m->cells)) return LH_ERR_INVALID_ARGUMENT;
     if (m->values_name && !good_name(m->values_name)) return LH_ERR_INVALID_ARGUMENT;
     return check_arrays(m);

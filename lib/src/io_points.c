@@ -52,7 +52,7 @@ static lh_status grow(lh__builder *b, size_t need)
     double *attr = p->attr_count ? move(b->a, p->attr, p->n * (size_t)p->attr_count,
                                         cap * (size_t)p->attr_count, sizeof *attr)
                                  : NULL;
-    int32_t *marker = b->markers ? move(b->a, p->marker, p->n, cap, sizeof *marker) : NULL;
+    lh_index *marker = b->markers ? move(b->a, p->marker, p->n, cap, sizeof *marker) : NULL;
     if (!xyz || (p->attr_count && !attr) || (b->markers && !marker)) {
         lh__free(b->a, xyz);
         lh__free(b->a, attr);
@@ -70,13 +70,15 @@ static lh_status grow(lh__builder *b, size_t need)
 }
 
 lh_status lh__push(lh__scan *s, lh__builder *b, const lh__token *at, const double *xyz,
-                   const double *attr, int32_t marker)
+                   const double *attr, lh_index marker)
 {
     lh_points *p = b->p;
-    if (p->n == LH_READ_MAX_POINTS)
-        return lh__expected(s, LH_ERR_TOO_LARGE, at,
-                            "the end of the input after 2147483646 points (the most lifthull reads)",
-                            NULL);
+    if (p->n == LH_READ_MAX_POINTS) {
+        char what[100];
+        snprintf(what, sizeof what, "the end of the input after %" LH_INDEX_PRI
+                 " points (the most lifthull reads)", LH_READ_MAX_POINTS);
+        return lh__expected(s, LH_ERR_TOO_LARGE, at, what, NULL);
+    }
     if (p->n == b->cap) {
         lh_status st = grow(b, p->n + 1);
         if (st != LH_OK) {

@@ -4,6 +4,7 @@
  * column, as compilers count). A CRLF line end is located at its '\r'. */
 #include "io_internal.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -168,10 +169,10 @@ int lh__word_integer(const lh__token *t, long long *v)
     if (*p == '+' || *p == '-') p++;
     if (!*p) return 0;
     long long x = 0;
-    const long long cap = (long long)1 << 62;
     for (; *p; p++) {
         if (*p < '0' || *p > '9') return 0;
-        x = x >= cap / 10 ? cap : 10 * x + (*p - '0');
+        int digit = *p - '0';
+        x = x > (LLONG_MAX - digit) / 10 ? LLONG_MAX : 10 * x + digit;
     }
     *v = neg ? -x : x;
     return 1;
@@ -222,7 +223,7 @@ lh_status lh__count(lh__scan *s, const lh__token *t, const char *what, size_t *n
 {
     char w[200];
     long long v;
-    snprintf(w, sizeof w, "%s (an integer from 1 to %d)", what, LH_READ_MAX_POINTS);
+    snprintf(w, sizeof w, "%s (an integer from 1 to %" LH_INDEX_PRI ")", what, LH_READ_MAX_POINTS);
     if (!lh__word_integer(t, &v) || v < 1)
         return lh__expected(s, LH_ERR_PARSE, t, t->kind == LH__TOK_WORD ? w : what, NULL);
     if (v > LH_READ_MAX_POINTS) return lh__expected(s, LH_ERR_TOO_LARGE, t, w, NULL);

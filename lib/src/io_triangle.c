@@ -23,7 +23,7 @@ lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index)
 }
 
 /* count rows of k+1 entries from a, each shifted by `add` except -1 (none). */
-static lh_status rows(FILE *f, const lh_mesh_view *m, const int32_t *a, int first_index, int header_zero)
+static lh_status rows(FILE *f, const lh_mesh_view *m, const lh_index *a, int first_index, int header_zero)
 {
     size_t per = (size_t)m->k + 1;
     lh__out o = {f, 0};
@@ -32,8 +32,8 @@ static lh_status rows(FILE *f, const lh_mesh_view *m, const int32_t *a, int firs
     for (size_t i = 0; i < m->count; i++) {
         lh__outf(&o, "%zu", i + (size_t)first_index);
         for (size_t j = 0; j < per; j++) {
-            long v = a[i * per + j];
-            lh__outf(&o, " %ld", v < 0 ? v : v + first_index);
+            lh_index v = a[i * per + j];
+            lh__outf(&o, " %" LH_INDEX_PRI, v < 0 ? v : v + first_index);
         }
         lh__outf(&o, "\n");
     }

@@ -6,12 +6,16 @@
 
 static const int cell_type[4] = {0, 3, 5, 10}; /* by simplex dimension k */
 
-/* `count` rows of `per` int32 values from a (plus `add`), one row a line. */
-static void int_rows(lh__out *o, const int32_t *a, size_t count, size_t per)
+/* VTK's integer type for values up to max (above INT32_MAX only in the 64-bit index
+ * build). */
+static const char *int_type(size_t max) { return max > INT32_MAX ? "Int64" : "Int32"; }
+
+/* `count` rows of `per` indices from a, one row a line. */
+static void int_rows(lh__out *o, const lh_index *a, size_t count, size_t per)
 {
     for (size_t i = 0; i < count; i++) {
         lh__outf(o, "         ");
-        for (size_t j = 0; j < per; j++) lh__outf(o, " %d", (int)a[i * per + j]);
+        for (size_t j = 0; j < per; j++) lh__outf(o, " %" LH_INDEX_PRI, a[i * per + j]);
         lh__outf(o, "\n");
     }
 }
@@ -30,7 +34,8 @@ static void cells(lh__out *o, const lh_mesh_view *m)
 {
     size_t per = (size_t)m->k + 1;
     lh__outf(o, "      <Cells>\n"
-                "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
+                "        <DataArray type=\"%s\" Name=\"connectivity\" format=\"ascii\">\n",
+             int_type(m->n));
     int_rows(o, m->cells, m->count, per);
     lh__outf(o, "        </DataArray>\n"
                 "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
@@ -40,8 +45,8 @@ static void cells(lh__out *o, const lh_mesh_view *m)
     for (size_t i = 0; i < m->count; i++) lh__outf(o, "          %d\n", cell_type[m->k]);
     lh__outf(o, "        </DataArray>\n      </Cells>\n");
     if (!m->neighbors) return;
-    lh__outf(o, "      <CellData>\n        <DataArray type=\"Int32\" Name=\"neighbors\" "
-                "NumberOfComponents=\"%zu\" format=\"ascii\">\n", per);
+    lh__outf(o, "      <CellData>\n        <DataArray type=\"%s\" Name=\"neighbors\" "
+                "NumberOfComponents=\"%zu\" format=\"ascii\">\n", int_type(m->count), per);
     int_rows(o, m->neighbors, m->count, per);
     lh__outf(o, "        </DataArray>\n      </CellData>\n");
 }

@@ -3,9 +3,9 @@
 
 #include <string.h>
 
-void lh__sort_idx(int32_t *idx, int32_t *tmp, size_t count, lh__cmp_fn cmp, const void *ctx)
+void lh__sort_idx(lh_index *idx, lh_index *tmp, size_t count, lh__cmp_fn cmp, const void *ctx)
 {
-    int32_t *src = idx, *dst = tmp;
+    lh_index *src = idx, *dst = tmp;
     for (size_t width = 1; width < count; width *= 2) {
         for (size_t lo = 0; lo < count; lo += 2 * width) {
             size_t mid = lo + width < count ? lo + width : count;
@@ -15,7 +15,7 @@ void lh__sort_idx(int32_t *idx, int32_t *tmp, size_t count, lh__cmp_fn cmp, cons
             while (i < mid) dst[o++] = src[i++];
             while (j < hi) dst[o++] = src[j++];
         }
-        int32_t *t = src;
+        lh_index *t = src;
         src = dst;
         dst = t;
     }
