@@ -52,10 +52,10 @@ static void summary(FILE *f, const lh_points *p, lh_tri *t, double seconds)
 static void simplices(FILE *f, lh_tri *t)
 {
     const int nv = lh_tri_simplex_dim(t) + 1;
-    const int32_t *s = lh_tri_simplices(t);
+    const lh_index *s = lh_tri_simplices(t);
     fprintf(f, "%zu\n", lh_tri_count(t));
     for (size_t i = 0; i < lh_tri_count(t); i++) {
-        for (int k = 0; k < nv; k++) fprintf(f, k ? " %d" : "%d", (int)s[i * nv + k]);
+        for (int k = 0; k < nv; k++) fprintf(f, k ? " %" LH_INDEX_PRI : "%" LH_INDEX_PRI, s[i * nv + k]);
         fputc('\n', f);
     }
 }

@@ -27,10 +27,10 @@ static const char help[] =
 static void facets(FILE *f, const lh_hull *h)
 {
     const int d = lh_hull_dim(h);
-    const int32_t *v = lh_hull_facets(h);
+    const lh_index *v = lh_hull_facets(h);
     fprintf(f, "%zu\n", lh_hull_facet_count(h));
     for (size_t i = 0; i < lh_hull_facet_count(h); i++) {
-        for (int k = 0; k < d; k++) fprintf(f, k ? " %d" : "%d", (int)v[i * d + k]);
+        for (int k = 0; k < d; k++) fprintf(f, k ? " %" LH_INDEX_PRI : "%" LH_INDEX_PRI, v[i * d + k]);
         fputc('\n', f);
     }
 }

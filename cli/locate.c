@@ -30,19 +30,21 @@ static const char help[] =
     "\n"
     "exit codes: 0 done, 1 the computation failed, 2 usage, 3 bad input file.\n";
 
-static void line(FILE *f, lh_tri *t, const lh_location *loc, int32_t nearest)
+static void line(FILE *f, lh_tri *t, const lh_location *loc, lh_index nearest)
 {
     const int k = lh_tri_simplex_dim(t);
     if (loc->simplex >= 0) {
-        fprintf(f, "in %d", (int)loc->simplex);
-        for (int j = 0; j <= k; j++) fprintf(f, " %d", (int)lh_tri_simplices(t)[(size_t)loc->simplex * (k + 1) + j]);
+        fprintf(f, "in %" LH_INDEX_PRI, loc->simplex);
+        for (int j = 0; j <= k; j++)
+            fprintf(f, " %" LH_INDEX_PRI, lh_tri_simplices(t)[(size_t)loc->simplex * (k + 1) + j]);
         for (int j = 0; j <= k; j++) fprintf(f, " %.17g", loc->bary[j] + 0.0); /* no -0 */
     } else {
         fputs("out", f);
-        for (int j = 0; j < k; j++) fprintf(f, " %d", (int)lh_tri_hull_facets(t)[(size_t)loc->hull_facet * k + j]);
+        for (int j = 0; j < k; j++)
+            fprintf(f, " %" LH_INDEX_PRI, lh_tri_hull_facets(t)[(size_t)loc->hull_facet * k + j]);
         fprintf(f, " distance %.17g", loc->distance);
     }
-    fprintf(f, " nearest %d\n", (int)nearest);
+    fprintf(f, " nearest %" LH_INDEX_PRI "\n", nearest);
 }
 
 static lh_status run(FILE *f, lh_tri *t, const lh_points *q)
@@ -50,7 +52,7 @@ static lh_status run(FILE *f, lh_tri *t, const lh_points *q)
     for (size_t i = 0; i < q->n; i++) {
         const double *p = q->xyz + i * q->d;
         lh_location loc;
-        int32_t near;
+        lh_index near;
         lh_status st = lh_tri_locate(t, p, -1, &loc);
         if (st == LH_OK) st = lh_tri_nearest(t, p, loc.simplex, &near);
         if (st != LH_OK) return st;

@@ -45,15 +45,15 @@ typedef struct lh_cli_qmodel {
     const double *xyz;
     int nv;                /* vertices per facet: d + 1, or d for a hull     */
     size_t m;              /* facets                                         */
-    const int32_t *vert;   /* nv per facet                                   */
-    int32_t *nbr;          /* nv per facet, opposite each vertex             */
-    int32_t *own_vert;     /* vert when the model owns it (hull facets)      */
+    const lh_index *vert;  /* nv per facet                                   */
+    lh_index *nbr;         /* nv per facet, opposite each vertex             */
+    lh_index *own_vert;    /* vert when the model owns it (hull facets)      */
     size_t m_other;        /* the other facets                               */
-    int32_t *other;        /* nv per other facet, in site numbering (-1: the
+    lh_index *other;       /* nv per other facet, in site numbering (-1: the
                               empty slot of a vertical facet's d vertices)    */
-    int32_t *inc_off;      /* n + 1: site i's facets are inc[inc_off[i]..]   */
-    int32_t *inc;          /* main facets, then other ones as -(j+1)         */
-    const int32_t *dup;    /* the site each one was merged into              */
+    lh_index *inc_off;     /* n + 1: site i's facets are inc[inc_off[i]..]   */
+    lh_index *inc;         /* main facets, then other ones as -(j+1)         */
+    const lh_index *dup;   /* the site each one was merged into              */
     size_t ndup;
     double seconds;        /* the computation's time                          */
     lh_tri *tri, *tri_other;

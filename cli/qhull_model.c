@@ -12,21 +12,21 @@
 #include <string.h>
 
 /* The distinct sites on the hull (increasing), from the hull facets. */
-static int32_t *hull_sites(const lh_tri *t, size_t n, size_t *count)
+static lh_index *hull_sites(const lh_tri *t, size_t n, size_t *count)
 {
     char *on = calloc(n ? n : 1, 1);
-    int32_t *list = malloc((n ? n : 1) * sizeof *list);
+    lh_index *list = malloc((n ? n : 1) * sizeof *list);
     if (!on || !list) {
         free(on);
         free(list);
         return NULL;
     }
     const int k = lh_tri_simplex_dim(t);
-    const int32_t *h = lh_tri_hull_facets(t);
+    const lh_index *h = lh_tri_hull_facets(t);
     for (size_t i = 0; i < lh_tri_hull_count(t) * (size_t)k; i++) on[h[i]] = 1;
     *count = 0;
     for (size_t i = 0; i < n; i++)
-        if (on[i]) list[(*count)++] = (int32_t)i;
+        if (on[i]) list[(*count)++] = (lh_index)i;
     free(on);
     return list;
 }
@@ -35,7 +35,7 @@ static int32_t *hull_sites(const lh_tri *t, size_t n, size_t *count)
 static lh_status upper_hull(lh_cli_qmodel *mo)
 {
     size_t h;
-    int32_t *sites = hull_sites(mo->tri, mo->n, &h);
+    lh_index *sites = hull_sites(mo->tri, mo->n, &h);
     double *x = sites ? malloc(h * (size_t)mo->d * sizeof *x) : NULL;
     lh_status st = LH_ERR_NOMEM;
     if (x) {
@@ -49,7 +49,7 @@ static lh_status upper_hull(lh_cli_qmodel *mo)
         mo->m_other = lh_tri_count(mo->tri_other);
         mo->other = malloc((mo->m_other ? mo->m_other : 1) * mo->nv * sizeof *mo->other);
         if (!mo->other) st = LH_ERR_NOMEM;
-        const int32_t *s = lh_tri_simplices(mo->tri_other);
+        const lh_index *s = lh_tri_simplices(mo->tri_other);
         for (size_t i = 0; mo->other && i < mo->m_other * mo->nv; i++) mo->other[i] = sites[s[i]];
     }
     free(sites);
@@ -76,21 +76,21 @@ static lh_status lower_hull(lh_cli_qmodel *mo)
 static lh_status vertical_facets(lh_cli_qmodel *mo)
 {
     size_t extra = 0, nv = (size_t)mo->nv;
-    for (size_t i = 0; i < mo->m * nv; i++) extra += mo->nbr[i] == INT32_MIN;
+    for (size_t i = 0; i < mo->m * nv; i++) extra += mo->nbr[i] == LH_CLI_NO_SIDE;
     if (!extra) return LH_OK;
-    int32_t *other = malloc((mo->m_other + extra) * nv * sizeof *other);
+    lh_index *other = malloc((mo->m_other + extra) * nv * sizeof *other);
     if (!other) return LH_ERR_NOMEM;
     memcpy(other, mo->other, mo->m_other * nv * sizeof *other);
     free(mo->other);
     mo->other = other;
     for (size_t i = 0; i < mo->m * nv; i++) {
-        if (mo->nbr[i] != INT32_MIN) continue;
-        int32_t *g = other + mo->m_other * nv;
-        const int32_t *v = mo->vert + i / nv * nv;
+        if (mo->nbr[i] != LH_CLI_NO_SIDE) continue;
+        lh_index *g = other + mo->m_other * nv;
+        const lh_index *v = mo->vert + i / nv * nv;
         for (size_t k = 0, w = 0; k < nv; k++)
             if (k != i % nv) g[w++] = v[k];
         g[nv - 1] = -1;
-        mo->nbr[i] = -(int32_t)++mo->m_other;
+        mo->nbr[i] = -(lh_index)++mo->m_other;
     }
     return LH_OK;
 }
@@ -134,13 +134,13 @@ static lh_status convex(lh_cli_qmodel *mo)
     if (!mo->own_vert) return LH_ERR_NOMEM;
     memcpy(mo->own_vert, lh_hull_facets(mo->hull), mo->m * mo->nv * sizeof *mo->own_vert);
     for (size_t f = 0; f < mo->m; f++) {
-        int32_t *v = mo->own_vert + f * mo->nv, x = v[mo->nv - 1];
+        lh_index *v = mo->own_vert + f * mo->nv, x = v[mo->nv - 1];
         v[mo->nv - 1] = v[mo->nv - 2];
         v[mo->nv - 2] = x;
     }
     mo->vert = mo->own_vert;
     mo->dup = lh_hull_duplicate_of(mo->hull);
-    for (size_t i = 0; i < mo->n; i++) mo->ndup += mo->dup[i] != (int32_t)i;
+    for (size_t i = 0; i < mo->n; i++) mo->ndup += mo->dup[i] != (lh_index)i;
     mo->nbr = malloc((mo->m ? mo->m : 1) * mo->nv * sizeof *mo->nbr);
     if (!mo->nbr || !lh_cli_pair_within(mo->nv, mo->m, mo->vert, mo->nbr)) return LH_ERR_NOMEM;
     return LH_OK;
@@ -157,12 +157,12 @@ static lh_status incidence(lh_cli_qmodel *mo)
     for (size_t i = 0; i < mo->m_other * mo->nv; i++)
         if (mo->other[i] >= 0) mo->inc_off[mo->other[i] + 1]++; /* -1: a vertical facet's slot */
     for (size_t i = 0; i < mo->n; i++) mo->inc_off[i + 1] += mo->inc_off[i];
-    int32_t *fill = malloc((mo->n ? mo->n : 1) * sizeof *fill);
+    lh_index *fill = malloc((mo->n ? mo->n : 1) * sizeof *fill);
     if (!fill) return LH_ERR_NOMEM;
     memcpy(fill, mo->inc_off, mo->n * sizeof *fill);
-    for (size_t i = 0; i < mo->m * mo->nv; i++) mo->inc[fill[mo->vert[i]]++] = (int32_t)(i / mo->nv);
+    for (size_t i = 0; i < mo->m * mo->nv; i++) mo->inc[fill[mo->vert[i]]++] = (lh_index)(i / mo->nv);
     for (size_t i = 0; i < mo->m_other * mo->nv; i++)
-        if (mo->other[i] >= 0) mo->inc[fill[mo->other[i]]++] = -(int32_t)(i / mo->nv) - 1;
+        if (mo->other[i] >= 0) mo->inc[fill[mo->other[i]]++] = -(lh_index)(i / mo->nv) - 1;
     free(fill);
     return LH_OK;
 }

@@ -7,6 +7,7 @@
  */
 #include "qhull.h"
 #include "qhull_print.h"
+#include "qhull_sides.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -50,7 +51,7 @@ static void lifted_point(FILE *f, const lh_cli_qmodel *mo, lift_scale s, size_t 
 
 static int is_vertex(const lh_cli_qmodel *mo, size_t i)
 {
-    for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+    for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
         if (mo->inc[k] >= 0) return 1;
     return 0;
 }
@@ -59,14 +60,14 @@ static void print_i(FILE *f, const lh_cli_qmodel *mo)
 {
     fprintf(f, "%zu\n", mo->m);
     for (size_t s = 0; s < mo->m; s++) {
-        for (int k = 0; k < mo->nv; k++) fprintf(f, "%d ", (int)mo->vert[s * mo->nv + k]);
+        for (int k = 0; k < mo->nv; k++) fprintf(f, "%" LH_INDEX_PRI " ", mo->vert[s * mo->nv + k]);
         fputc('\n', f);
     }
 }
 
 static int desc(const void *a, const void *b)
 {
-    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    lh_index x = *(const lh_index *)a, y = *(const lh_index *)b;
     return (x < y) - (x > y);
 }
 
@@ -74,21 +75,21 @@ static void print_fv(FILE *f, const lh_cli_qmodel *mo)
 {
     fprintf(f, "%zu\n", mo->m);
     for (size_t s = 0; s < mo->m; s++) {
-        int32_t v[LH_DELAUNAY_MAX_DIM + 1];
+        lh_index v[LH_DELAUNAY_MAX_DIM + 1];
         memcpy(v, mo->vert + s * mo->nv, mo->nv * sizeof *v);
         qsort(v, (size_t)mo->nv, sizeof *v, desc);
         fprintf(f, "%d", mo->nv);
-        for (int k = 0; k < mo->nv; k++) fprintf(f, " %d", (int)v[k]);
+        for (int k = 0; k < mo->nv; k++) fprintf(f, " %" LH_INDEX_PRI, v[k]);
         fputc('\n', f);
     }
 }
 
-static void print_id(FILE *f, int32_t id)
+static void print_id(FILE *f, lh_index id)
 {
-    if (id == INT32_MIN)
+    if (id == LH_CLI_NO_SIDE)
         fputs(" -0", f); /* a hull side with no upper facet across: never expected */
     else
-        fprintf(f, " %d", (int)id);
+        fprintf(f, " %" LH_INDEX_PRI, id);
 }
 
 static void print_fn(FILE *f, const lh_cli_qmodel *mo)
@@ -105,8 +106,8 @@ static void print_fN(FILE *f, const lh_cli_qmodel *mo)
 {
     fprintf(f, "%zu\n", mo->n);
     for (size_t i = 0; i < mo->n; i++) {
-        fprintf(f, "%d", (int)(mo->inc_off[i + 1] - mo->inc_off[i]));
-        for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++) print_id(f, mo->inc[k]);
+        fprintf(f, "%" LH_INDEX_PRI, mo->inc_off[i + 1] - mo->inc_off[i]);
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++) print_id(f, mo->inc[k]);
         fputc('\n', f);
     }
 }
@@ -144,7 +145,7 @@ static void print_o(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     }
     for (size_t t = 0; t < mo->m; t++) {
         fprintf(f, "%d ", mo->nv);
-        for (int k = 0; k < mo->nv; k++) fprintf(f, "%d ", (int)mo->vert[t * mo->nv + k]);
+        for (int k = 0; k < mo->nv; k++) fprintf(f, "%" LH_INDEX_PRI " ", mo->vert[t * mo->nv + k]);
         fputc('\n', f);
     }
 }
@@ -157,7 +158,7 @@ static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
         if (pass) fprintf(f, "%zu\n", count);
         for (size_t i = 0; i < mo->n; i++) {
             int on = 0;
-            for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !on; k++)
+            for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !on; k++)
                 on = o->prog == LH_QPROG_CONVEX || mo->inc[k] < 0;
             if (!on) continue;
             if (pass) fprintf(f, "%zu\n", i);

@@ -14,11 +14,11 @@
 
 /* Whether simplex s containing site i has an open side (on the hull) that contains
  * every site of `keep` (count sites). */
-static int open_side_with(const lh_cli_qmodel *mo, int32_t s, const int32_t *keep, int count)
+static int open_side_with(const lh_cli_qmodel *mo, lh_index s, const lh_index *keep, int count)
 {
     for (int k = 0; k < mo->nv; k++) {
         if (mo->nbr[(size_t)s * mo->nv + k] >= 0) continue;
-        int32_t drop = mo->vert[(size_t)s * mo->nv + k];
+        lh_index drop = mo->vert[(size_t)s * mo->nv + k];
         int ok = 1;
         for (int c = 0; c < count; c++) ok &= keep[c] != drop;
         if (ok) return 1;
@@ -26,16 +26,16 @@ static int open_side_with(const lh_cli_qmodel *mo, int32_t s, const int32_t *kee
     return 0;
 }
 
-static int contains(const lh_cli_qmodel *mo, int32_t s, int32_t v)
+static int contains(const lh_cli_qmodel *mo, lh_index s, lh_index v)
 {
     for (int k = 0; k < mo->nv; k++)
         if (mo->vert[(size_t)s * mo->nv + k] == v) return 1;
     return 0;
 }
 
-static int cmp_i32(const void *a, const void *b)
+static int cmp_index(const void *a, const void *b)
 {
-    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    lh_index x = *(const lh_index *)a, y = *(const lh_index *)b;
     return (x > y) - (x < y);
 }
 
@@ -48,20 +48,22 @@ typedef struct ridge_pass {
 
 /* A ridge needs d vertices, the one at infinity counted once, to be printed: Qhull
  * leaves out the unbounded ridges with fewer (qh_eachvoronoi, "count >= hull_dim - 1"). */
-static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, int32_t i, int32_t j, int unbounded)
+static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, lh_index i, lh_index j, int unbounded)
 {
     if ((rp->which == 'i' && unbounded) || (rp->which == 'o' && !unbounded)) return;
     const int d = mo->d;
     int around = 0; /* the simplices around edge ij */
-    for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+    for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
         around += mo->inc[k] >= 0 && contains(mo, mo->inc[k], j);
     if (around + unbounded < d) return;
     rp->count++;
     if (!rp->f) return;
     if (rp->which == 'v') {
-        fprintf(rp->f, "%d %d %d%s", around + unbounded + 2, (int)i, (int)j, unbounded ? " 0" : "");
-        for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
-            if (mo->inc[k] >= 0 && contains(mo, mo->inc[k], j)) fprintf(rp->f, " %d", (int)mo->inc[k] + 1);
+        fprintf(rp->f, "%d %" LH_INDEX_PRI " %" LH_INDEX_PRI "%s", around + unbounded + 2, i, j,
+                unbounded ? " 0" : "");
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+            if (mo->inc[k] >= 0 && contains(mo, mo->inc[k], j))
+                fprintf(rp->f, " %" LH_INDEX_PRI, mo->inc[k] + 1);
         fputc('\n', rp->f);
         return;
     }
@@ -77,7 +79,7 @@ static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, int32_t i, int3
         n[c] /= len;
         off -= n[c] * 0.5 * (a[c] + b[c]);
     }
-    fprintf(rp->f, "%d %d %d ", d + 3, (int)i, (int)j);
+    fprintf(rp->f, "%d %" LH_INDEX_PRI " %" LH_INDEX_PRI " ", d + 3, i, j);
     lh_cli_qcoords(rp->f, n, d);
     fprintf(rp->f, "%6.16g \n", off);
 }
@@ -85,8 +87,8 @@ static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, int32_t i, int3
 /* Every Delaunay edge ij, i < j, in increasing order. */
 static int ridges(ridge_pass *rp, const lh_cli_qmodel *mo)
 {
-    int32_t *mark = calloc(mo->n ? mo->n : 1, sizeof *mark);
-    int32_t *nb = malloc((mo->n ? mo->n : 1) * sizeof *nb);
+    lh_index *mark = calloc(mo->n ? mo->n : 1, sizeof *mark);
+    lh_index *nb = malloc((mo->n ? mo->n : 1) * sizeof *nb);
     if (!mark || !nb) {
         free(mark);
         free(nb);
@@ -94,22 +96,22 @@ static int ridges(ridge_pass *rp, const lh_cli_qmodel *mo)
     }
     for (size_t i = 0; i < mo->n; i++) {
         size_t cnt = 0;
-        for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
             for (int v = 0; mo->inc[k] >= 0 && v < mo->nv; v++) {
-                int32_t j = mo->vert[(size_t)mo->inc[k] * mo->nv + v];
-                if (j > (int32_t)i && mark[j] != (int32_t)i + 1) {
-                    mark[j] = (int32_t)i + 1;
+                lh_index j = mo->vert[(size_t)mo->inc[k] * mo->nv + v];
+                if (j > (lh_index)i && mark[j] != (lh_index)i + 1) {
+                    mark[j] = (lh_index)i + 1;
                     nb[cnt++] = j;
                 }
             }
-        qsort(nb, cnt, sizeof *nb, cmp_i32);
+        qsort(nb, cnt, sizeof *nb, cmp_index);
         for (size_t c = 0; c < cnt; c++) {
-            int32_t pair[2] = {(int32_t)i, nb[c]};
+            lh_index pair[2] = {(lh_index)i, nb[c]};
             int unbounded = 0;
-            for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !unbounded; k++)
+            for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !unbounded; k++)
                 unbounded = mo->inc[k] >= 0 && contains(mo, mo->inc[k], nb[c]) &&
                             open_side_with(mo, mo->inc[k], pair, 2);
-            print_ridge(rp, mo, (int32_t)i, nb[c], unbounded);
+            print_ridge(rp, mo, (lh_index)i, nb[c], unbounded);
         }
     }
     free(mark);
@@ -129,18 +131,18 @@ static int print_ridges(FILE *f, const lh_cli_qmodel *mo, int which)
 
 /* The simplices around site i in the plane, in cyclic order: from one with an open
  * side through i (when i is on the hull) across the sides through i. */
-static size_t cyclic_2d(const lh_cli_qmodel *mo, int32_t i, int32_t *out)
+static size_t cyclic_2d(const lh_cli_qmodel *mo, lh_index i, lh_index *out)
 {
-    int32_t first = mo->inc[mo->inc_off[i]];
-    for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+    lh_index first = mo->inc[mo->inc_off[i]];
+    for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
         if (mo->inc[k] >= 0 && open_side_with(mo, mo->inc[k], &i, 1)) first = mo->inc[k];
     size_t count = 0;
-    int32_t prev = -1, cur = first;
+    lh_index prev = -1, cur = first;
     while (cur >= 0 && (count == 0 || cur != first)) {
         out[count++] = cur;
-        int32_t next = -1;
+        lh_index next = -1;
         for (int k = 0; k < 3; k++) {
-            int32_t nb = mo->nbr[(size_t)cur * 3 + k];
+            lh_index nb = mo->nbr[(size_t)cur * 3 + k];
             if (mo->vert[(size_t)cur * 3 + k] != i && nb >= 0 && nb != prev) next = nb;
         }
         prev = cur;
@@ -151,20 +153,20 @@ static size_t cyclic_2d(const lh_cli_qmodel *mo, int32_t i, int32_t *out)
 
 static int print_regions(FILE *f, const lh_cli_qmodel *mo)
 {
-    int32_t *list = malloc((mo->m ? mo->m : 1) * sizeof *list);
+    lh_index *list = malloc((mo->m ? mo->m : 1) * sizeof *list);
     if (!list) return 0;
     for (size_t i = 0; i < mo->n; i++) {
         size_t count = 0;
         int unbounded = 0;
-        for (int32_t k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++) {
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++) {
             if (mo->inc[k] < 0) continue;
             list[count++] = mo->inc[k];
-            int32_t site = (int32_t)i;
+            lh_index site = (lh_index)i;
             unbounded |= open_side_with(mo, mo->inc[k], &site, 1);
         }
-        if (count && mo->d == 2) count = cyclic_2d(mo, (int32_t)i, list);
+        if (count && mo->d == 2) count = cyclic_2d(mo, (lh_index)i, list);
         fprintf(f, "%zu", count + (count && unbounded));
-        for (size_t c = 0; c < count; c++) fprintf(f, " %d", (int)list[c] + 1);
+        for (size_t c = 0; c < count; c++) fprintf(f, " %" LH_INDEX_PRI, list[c] + 1);
         fputs(count && unbounded ? " 0\n" : "\n", f);
     }
     free(list);

@@ -147,14 +147,14 @@ static void paths_world_segment(paths *p, const view *v, const double *a, const 
 
 /* ---- geometry ------------------------------------------------------------------------ */
 
-static const double *site(const lh_cli_svg *s, int32_t i) { return s->sites + 2 * (size_t)i; }
+static const double *site(const lh_cli_svg *s, lh_index i) { return s->sites + 2 * (size_t)i; }
 
 /* Whether triangle t's vertices are valid site indices (a bad caller array is skipped,
  * never read out of bounds). */
 static int tri_ok(const lh_cli_svg *s, size_t t)
 {
     for (int k = 0; k < 3; k++) {
-        int32_t i = s->tris[3 * t + k];
+        lh_index i = s->tris[3 * t + k];
         if (i < 0 || (size_t)i >= s->site_count) return 0;
     }
     return 1;
@@ -176,9 +176,9 @@ static int circumcentre(const lh_cli_svg *s, size_t t, double *c, double *radius
 
 /* The neighbour across the edge opposite vertex k of t, -1 across the hull, -2 if the
  * caller's value is out of range. */
-static int32_t neighbor(const lh_cli_svg *s, const int32_t *nb, size_t t, int k)
+static lh_index neighbor(const lh_cli_svg *s, const lh_index *nb, size_t t, int k)
 {
-    int32_t u = nb[3 * t + k];
+    lh_index u = nb[3 * t + k];
     return u >= -1 && (u < 0 || (size_t)u < s->tri_count) ? u : -2;
 }
 
@@ -201,7 +201,7 @@ static void voronoi_ray(paths *p, const view *v, const lh_cli_svg *s, size_t t, 
 /* ---- layers ------------------------------------------------------------------------- */
 
 /* Each edge once: from the triangle with the smaller index, or the hull triangle. */
-static void draw_delaunay(FILE *f, const view *v, const lh_cli_svg *s, const int32_t *nb)
+static void draw_delaunay(FILE *f, const view *v, const lh_cli_svg *s, const lh_index *nb)
 {
     char style[160];
     snprintf(style, sizeof style, "fill=\"none\" stroke=\"#1f5fa8\" stroke-width=\"%.3g\" stroke-linecap=\"round\"", v->line);
@@ -209,7 +209,7 @@ static void draw_delaunay(FILE *f, const view *v, const lh_cli_svg *s, const int
     for (size_t t = 0; t < s->tri_count; t++) {
         if (!tri_ok(s, t)) continue;
         for (int k = 0; k < 3; k++) {
-            int32_t u = neighbor(s, nb, t, k);
+            lh_index u = neighbor(s, nb, t, k);
             if (u == -2 || (u >= 0 && (size_t)u < t)) continue;
             paths_world_segment(&p, v, site(s, s->tris[3 * t + (k + 1) % 3]), site(s, s->tris[3 * t + (k + 2) % 3]));
         }
@@ -217,7 +217,7 @@ static void draw_delaunay(FILE *f, const view *v, const lh_cli_svg *s, const int
     paths_close(&p);
 }
 
-static void draw_voronoi(FILE *f, const view *v, const lh_cli_svg *s, const int32_t *nb)
+static void draw_voronoi(FILE *f, const view *v, const lh_cli_svg *s, const lh_index *nb)
 {
     char style[160];
     snprintf(style, sizeof style, "fill=\"none\" stroke=\"#c8401a\" stroke-width=\"%.3g\" stroke-linecap=\"round\"", v->line);
@@ -226,7 +226,7 @@ static void draw_voronoi(FILE *f, const view *v, const lh_cli_svg *s, const int3
         double c[2], c2[2], r;
         if (!tri_ok(s, t) || !circumcentre(s, t, c, &r)) continue;
         for (int k = 0; k < 3; k++) {
-            int32_t u = neighbor(s, nb, t, k);
+            lh_index u = neighbor(s, nb, t, k);
             if (u == -1) voronoi_ray(&p, v, s, t, k, c);
             else if (u >= 0 && (size_t)u > t && tri_ok(s, (size_t)u) && circumcentre(s, (size_t)u, c2, &r))
                 paths_world_segment(&p, v, c, c2);
@@ -312,7 +312,7 @@ static void put_legend(FILE *f, const lh_cli_svg *s)
 /* Neighbours from the triangles alone: the two slots 3t+k holding the same edge (as
  * its sorted end points) are each other's neighbours. */
 typedef struct edge_key {
-    int32_t lo, hi, slot;
+    lh_index lo, hi, slot;
 } edge_key;
 
 static int edge_cmp(const void *pa, const void *pb)
@@ -323,11 +323,11 @@ static int edge_cmp(const void *pa, const void *pb)
     return (a->slot > b->slot) - (a->slot < b->slot);
 }
 
-static int32_t *build_neighbors(const lh_cli_svg *s)
+static lh_index *build_neighbors(const lh_cli_svg *s)
 {
     size_t slots = 3 * s->tri_count;
-    if (s->tri_count > INT32_MAX / 3) return NULL;
-    int32_t *nb = malloc((slots ? slots : 1) * sizeof *nb);
+    if (s->tri_count > LH_INDEX_MAX / 3) return NULL;
+    lh_index *nb = malloc((slots ? slots : 1) * sizeof *nb);
     edge_key *e = malloc((slots ? slots : 1) * sizeof *e);
     if (!nb || !e) {
         free(nb);
@@ -335,8 +335,8 @@ static int32_t *build_neighbors(const lh_cli_svg *s)
         return NULL;
     }
     for (size_t i = 0; i < slots; i++) {
-        int32_t a = s->tris[i - i % 3 + (i + 1) % 3], b = s->tris[i - i % 3 + (i + 2) % 3];
-        e[i] = (edge_key){a < b ? a : b, a < b ? b : a, (int32_t)i};
+        lh_index a = s->tris[i - i % 3 + (i + 1) % 3], b = s->tris[i - i % 3 + (i + 2) % 3];
+        e[i] = (edge_key){a < b ? a : b, a < b ? b : a, (lh_index)i};
         nb[i] = -1;
     }
     qsort(e, slots, sizeof *e, edge_cmp);
@@ -352,8 +352,8 @@ static int32_t *build_neighbors(const lh_cli_svg *s)
 
 int lh_cli_svg_write(FILE *f, const lh_cli_svg *s)
 {
-    int32_t *own = NULL;
-    const int32_t *nb = s->neighbors;
+    lh_index *own = NULL;
+    const lh_index *nb = s->neighbors;
     if (!nb && s->tri_count && (s->draw_delaunay || s->draw_voronoi)) {
         nb = own = build_neighbors(s);
         if (!own) return -1;

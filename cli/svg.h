@@ -3,6 +3,8 @@
 #ifndef LH_CLI_SVG_H
 #define LH_CLI_SVG_H
 
+#include "lifthull.h" /* lh_index */
+
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -12,8 +14,8 @@ typedef struct lh_cli_svg {
     size_t site_count;        /* n                                                   */
     const double *sites;      /* 2n doubles: x, y of each site (y up, as in the input) */
     size_t tri_count;         /* triangles, may be 0 (then only sites are drawn)     */
-    const int32_t *tris;      /* 3 * tri_count site indices, either orientation      */
-    const int32_t *neighbors; /* 3 * tri_count, or NULL (then computed here): the
+    const lh_index *tris;     /* 3 * tri_count site indices, either orientation      */
+    const lh_index *neighbors; /* 3 * tri_count, or NULL (then computed here): the
                                  neighbour across the edge opposite vertex k, -1
                                  across the convex hull (lh_tri_neighbors' layout)   */
     int draw_delaunay;        /* nonzero: the triangles' edges                       */
