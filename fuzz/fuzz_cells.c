@@ -44,7 +44,8 @@ static void round_trip(const lh_cells *c, size_t n_points, const lh_allocator *a
     if (!f) return;
     fprintf(f, "%zu\n", c->count);
     for (size_t i = 0; i < c->count; i++)
-        for (int k = 0; k < c->nv; k++) fprintf(f, "%d%c", (int)c->v[i * c->nv + k], k + 1 < c->nv ? ' ' : '\n');
+        for (int k = 0; k < c->nv; k++)
+            fprintf(f, "%" LH_INDEX_PRI "%c", c->v[i * c->nv + k], k + 1 < c->nv ? ' ' : '\n');
     rewind(f);
     lh_cells back;
     char msg[512];

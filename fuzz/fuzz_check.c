@@ -54,14 +54,14 @@ static unsigned next(bytes *b)
 
 typedef struct list {
     size_t count;
-    int32_t v[MAXS * (MAXD + 1)];
+    lh_index v[MAXS * (MAXD + 1)];
 } list;
 
-static const double *site(const double *x, int d, int32_t i) { return x + (size_t)i * d; }
+static const double *site(const double *x, int d, lh_index i) { return x + (size_t)i * d; }
 
 /* The sign-exact determinant of the d x d matrix [p_i - p_0] for integer sites
  * (|coordinate| <= 128, so |entries| <= 256 and Bareiss's minors fit in int64). */
-static int64_t det_int(int d, const double *x, const int32_t *v)
+static int64_t det_int(int d, const double *x, const lh_index *v)
 {
     int64_t m[MAXD][MAXD], prev = 1;
     int sign = 1;
@@ -87,7 +87,7 @@ static int64_t det_int(int d, const double *x, const int32_t *v)
     return sign * m[d - 1][d - 1];
 }
 
-static int cmp_rows(const int32_t *a, const int32_t *b, int w)
+static int cmp_rows(const lh_index *a, const lh_index *b, int w)
 {
     for (int k = 0; k < w; k++)
         if (a[k] != b[k]) return a[k] < b[k] ? -1 : 1;
@@ -104,10 +104,10 @@ static void canonical(int d, const list *in, list *out)
     out->count = in->count;
     memcpy(out->v, in->v, in->count * (size_t)w * sizeof *in->v);
     for (size_t s = 0; s < out->count; s++) {
-        int32_t *v = out->v + s * w;
+        lh_index *v = out->v + s * w;
         for (int a = 1; a < w; a++)
             for (int b = a; b > 0 && v[b] < v[b - 1]; b--) {
-                int32_t t = v[b];
+                lh_index t = v[b];
                 v[b] = v[b - 1];
                 v[b - 1] = t;
             }
@@ -130,7 +130,7 @@ static int general_position(lh_pred *p, int d, size_t n, const double *x)
 {
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < i; j++)
-            if (!memcmp(site(x, d, (int32_t)i), site(x, d, (int32_t)j), (size_t)d * sizeof *x)) return 0;
+            if (!memcmp(site(x, d, (lh_index)i), site(x, d, (lh_index)j), (size_t)d * sizeof *x)) return 0;
     int m = d + 2, idx[MAXD + 2];
     if ((int)n < m) return 1;
     for (int k = 0; k < m; k++) idx[k] = k;
@@ -157,8 +157,8 @@ static int brute_force(lh_pred *p, int d, size_t n, const double *x, const list 
     int64_t sum = 0;
     int global = 1;
     for (size_t s = 0; s < l->count; s++) {
-        int32_t v[MAXD + 1];
-        memcpy(v, l->v + s * w, sizeof(int32_t) * (size_t)w);
+        lh_index v[MAXD + 1];
+        memcpy(v, l->v + s * w, sizeof(lh_index) * (size_t)w);
         for (int k = 0; k < w; k++) {
             if (v[k] < 0 || (size_t)v[k] >= n) abort();
             for (int j = 0; j < k; j++)
@@ -177,14 +177,14 @@ static int brute_force(lh_pred *p, int d, size_t n, const double *x, const list 
             pts[1] = t;
         }
         for (size_t q = 0; q < n; q++) {
-            pts[w] = site(x, d, (int32_t)q);
+            pts[w] = site(x, d, (lh_index)q);
             global &= lh_insphere(p, d, pts) >= 0; /* q not strictly inside s's sphere */
         }
     }
     for (size_t i = 0; i < n; i++) {
         int ok = used[i];
         for (size_t j = 0; j < n && !ok; j++)
-            ok = used[j] && !memcmp(site(x, d, (int32_t)i), site(x, d, (int32_t)j), (size_t)d * sizeof *x);
+            ok = used[j] && !memcmp(site(x, d, (lh_index)i), site(x, d, (lh_index)j), (size_t)d * sizeof *x);
         global &= ok; /* site i a vertex or a duplicate of one */
     }
     global &= sum == volume; /* the simplices tile the convex hull */
@@ -212,7 +212,7 @@ static void edit(bytes *b, int d, size_t n, list *l)
     int w = d + 1;
     unsigned op = next(b) % 5;
     size_t s = l->count ? next(b) % l->count : 0;
-    int32_t vtx = (int32_t)(next(b) % (n + 2)) - 1; /* -1 .. n: invalid ones too */
+    lh_index vtx = (lh_index)(next(b) % (n + 2)) - 1; /* -1 .. n: invalid ones too */
     int k = (int)(next(b) % (unsigned)w);
     switch (op) {
     case 0: /* replace one vertex */
@@ -232,7 +232,7 @@ static void edit(bytes *b, int d, size_t n, list *l)
         break;
     case 3: /* add a simplex */
         if (l->count < MAXS) {
-            for (int j = 0; j < w; j++) l->v[l->count * w + j] = (int32_t)(next(b) % (n + 2)) - 1;
+            for (int j = 0; j < w; j++) l->v[l->count * w + j] = (lh_index)(next(b) % (n + 2)) - 1;
             l->count++;
         }
         break;
@@ -240,7 +240,7 @@ static void edit(bytes *b, int d, size_t n, list *l)
         if (l->count) {
             size_t s2 = next(b) % l->count;
             int k2 = (int)(next(b) % (unsigned)w);
-            int32_t t = l->v[s * w + k];
+            lh_index t = l->v[s * w + k];
             l->v[s * w + k] = l->v[s2 * w + k2];
             l->v[s2 * w + k2] = t;
         }
@@ -282,7 +282,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     /* A: an arbitrary list */
     l.count = next(&b) % 9;
-    for (size_t i = 0; i < l.count * (size_t)w; i++) l.v[i] = (int32_t)(next(&b) % (n + 2)) - 1;
+    for (size_t i = 0; i < l.count * (size_t)w; i++) l.v[i] = (lh_index)(next(&b) % (n + 2)) - 1;
     if (run(d, n, x, &l, with_msg)) {
         if (st != LH_OK) abort(); /* accepted a list for sites with no triangulation */
         if (brute_force(p, d, n, x, &l, volume) && gp && !same_multiset(d, &l, &real)) abort();

@@ -21,11 +21,11 @@ static int same(const lh_tri *a, const lh_tri *b)
     int k = lh_tri_simplex_dim(a);
     size_t c = lh_tri_count(a), h = lh_tri_hull_count(a), n = lh_tri_site_count(a);
     if (k != lh_tri_simplex_dim(b) || c != lh_tri_count(b) || h != lh_tri_hull_count(b)) return 0;
-    size_t s = (size_t)(k + 1) * c * sizeof(int32_t);
+    size_t s = (size_t)(k + 1) * c * sizeof(lh_index);
     return !memcmp(lh_tri_simplices(a), lh_tri_simplices(b), s) &&
            !memcmp(lh_tri_neighbors(a), lh_tri_neighbors(b), s) &&
-           !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)k * h * sizeof(int32_t)) &&
-           !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(int32_t));
+           !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)k * h * sizeof(lh_index)) &&
+           !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(lh_index));
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -42,7 +42,7 @@ static int same_site(int d, const double *a, const double *b)
     return 1;
 }
 
-static int cmp_rows(const int32_t *a, const int32_t *b, int w)
+static int cmp_rows(const lh_index *a, const lh_index *b, int w)
 {
     for (int k = 0; k < w; k++)
         if (a[k] != b[k]) return a[k] < b[k] ? -1 : 1;
@@ -52,11 +52,11 @@ static int cmp_rows(const int32_t *a, const int32_t *b, int w)
 static int ridge_w; /* qsort has no user pointer; set before each sort */
 static int cmp_ridge(const void *a, const void *b) { return cmp_rows(a, b, ridge_w); }
 
-static void sort_small(int32_t *v, int w)
+static void sort_small(lh_index *v, int w)
 {
     for (int a = 1; a < w; a++)
         for (int b = a; b > 0 && v[b] < v[b - 1]; b--) {
-            int32_t t = v[b];
+            lh_index t = v[b];
             v[b] = v[b - 1];
             v[b - 1] = t;
         }
@@ -64,7 +64,7 @@ static void sort_small(int32_t *v, int w)
 
 /* 1 when no d+1 of the distinct sites rep[0..m-1] are affinely dependent; stops
  * (returning 0, "unknown") after `budget` orientation tests. */
-static int general_position(lh_pred *p, int d, const double *x, const int32_t *rep, int m, long budget)
+static int general_position(lh_pred *p, int d, const double *x, const lh_index *rep, int m, long budget)
 {
     int idx[MAXD + 1];
     if (m < d + 1) return 0;
@@ -85,25 +85,25 @@ static int same_hull(const lh_hull *a, const lh_hull *b, int d, size_t n)
 {
     size_t m = lh_hull_facet_count(a), v = lh_hull_vertex_count(a);
     return m == lh_hull_facet_count(b) && v == lh_hull_vertex_count(b) &&
-           !memcmp(lh_hull_facets(a), lh_hull_facets(b), m * (size_t)d * sizeof(int32_t)) &&
-           !memcmp(lh_hull_vertices(a), lh_hull_vertices(b), v * sizeof(int32_t)) &&
-           !memcmp(lh_hull_duplicate_of(a), lh_hull_duplicate_of(b), n * sizeof(int32_t));
+           !memcmp(lh_hull_facets(a), lh_hull_facets(b), m * (size_t)d * sizeof(lh_index)) &&
+           !memcmp(lh_hull_vertices(a), lh_hull_vertices(b), v * sizeof(lh_index)) &&
+           !memcmp(lh_hull_duplicate_of(a), lh_hull_duplicate_of(b), n * sizeof(lh_index));
 }
 
 static void check_hull(lh_pred *p, int d, size_t n, const double *x, const lh_hull *h)
 {
     size_t m = lh_hull_facet_count(h);
-    const int32_t *f = lh_hull_facets(h), *dup = lh_hull_duplicate_of(h);
+    const lh_index *f = lh_hull_facets(h), *dup = lh_hull_duplicate_of(h);
     if (lh_hull_dim(h) != d || m < (size_t)d + 1 || !f || !dup) abort();
     for (size_t i = 0; i < n; i++) { /* the first equal site */
         size_t j = 0;
         while (!same_site(d, x + j * d, x + i * d)) j++;
-        if (dup[i] != (int32_t)j) abort();
+        if (dup[i] != (lh_index)j) abort();
     }
     uint8_t used[MAXN] = {0};
     for (size_t i = 0; i < m; i++) {
-        const int32_t *v = f + i * d;
-        int32_t s[MAXD];
+        const lh_index *v = f + i * d;
+        lh_index s[MAXD];
         for (int k = 0; k < d; k++) {
             if (v[k] < 0 || (size_t)v[k] >= n || dup[v[k]] != v[k]) abort();
             used[v[k]] = 1;
@@ -131,11 +131,11 @@ static void check_hull(lh_pred *p, int d, size_t n, const double *x, const lh_hu
     /* ridges: each (d-1)-subset of a facet, sorted, then counted in runs */
     int w = d - 1;
     size_t r = m * (size_t)d;
-    int32_t *ridge = malloc(r * (size_t)w * sizeof *ridge);
+    lh_index *ridge = malloc(r * (size_t)w * sizeof *ridge);
     if (!ridge) abort();
     for (size_t i = 0; i < m; i++)
         for (int skip = 0; skip < d; skip++) {
-            int32_t *o = ridge + (i * d + skip) * w;
+            lh_index *o = ridge + (i * d + skip) * w;
             for (int k = 0, q = 0; k < d; k++)
                 if (k != skip) o[q++] = f[i * d + k];
             sort_small(o, w);
@@ -150,9 +150,9 @@ static void check_hull(lh_pred *p, int d, size_t n, const double *x, const lh_hu
     }
     free(ridge);
     size_t nv = lh_hull_vertex_count(h), k = 0;
-    const int32_t *vert = lh_hull_vertices(h);
+    const lh_index *vert = lh_hull_vertices(h);
     for (size_t i = 0; i < n; i++)
-        if (used[i] && (k >= nv || vert[k++] != (int32_t)i)) abort();
+        if (used[i] && (k >= nv || vert[k++] != (lh_index)i)) abort();
     if (k != nv) abort(); /* a listed vertex no facet uses */
 }
 
@@ -189,18 +189,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     check_hull(p, d, n, x, h2);
     if (LH_FUZZ_HULL_SEED_STRICT && !same_hull(h, h2, d, n)) abort();
     lh_hull_free(h2);
-    int32_t rep[MAXN];
+    lh_index rep[MAXN];
     int m = 0;
-    const int32_t *dup = lh_hull_duplicate_of(h);
+    const lh_index *dup = lh_hull_duplicate_of(h);
     for (size_t i = 0; i < n; i++)
-        if (dup[i] == (int32_t)i) rep[m++] = (int32_t)i;
+        if (dup[i] == (lh_index)i) rep[m++] = (lh_index)i;
     if (general_position(p, d, x, rep, m, 20000)) {
         lh_tri *t = NULL;
         lh_options_default(&o);
         if (lh_delaunay(d, n, x, &o, &t) != LH_OK) abort();
         size_t c = lh_tri_hull_count(t);
         if (c != lh_hull_facet_count(h) ||
-            memcmp(lh_tri_hull_facets(t), lh_hull_facets(h), c * (size_t)d * sizeof(int32_t)))
+            memcmp(lh_tri_hull_facets(t), lh_hull_facets(h), c * (size_t)d * sizeof(lh_index)))
             abort(); /* in general position the hull is the Delaunay triangulation's */
         lh_tri_free(t);
     }

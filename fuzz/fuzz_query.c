@@ -42,7 +42,7 @@ static double affine_scale(int c, int d, const double *q)
     return v;
 }
 
-static int contains(lh_pred *p, int d, const double *x, const int32_t *v, const double *q)
+static int contains(lh_pred *p, int d, const double *x, const lh_index *v, const double *q)
 {
     for (int k = 0; k <= d; k++) {
         const double *pts[MAXD + 1];
@@ -84,7 +84,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     lh_pred *p;
     if (lh_pred_create(NULL, &p) != LH_OK) abort();
     size_t count = lh_tri_count(t), hulls = lh_tri_hull_count(t);
-    const int32_t *simp = lh_tri_simplices(t), *dup = lh_tri_duplicate_of(t);
+    const lh_index *simp = lh_tri_simplices(t), *dup = lh_tri_duplicate_of(t);
     double values[MAXN * 2], lin[MAXQ * 2], nat[MAXQ * 2], near[MAXQ * 2];
     double vmax[2] = {0, 0}; /* the largest value at a site: the scale of the rounding */
     for (size_t i = 0; i < n; i++)
@@ -100,20 +100,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         const double *qi = q + i * d;
         lh_location loc, loc2;
         if (lh_tri_locate(t, qi, -1, &loc) != LH_OK) abort();
-        int32_t hint = (int32_t)((flags >> 1) % count);
+        lh_index hint = (lh_index)((flags >> 1) % count);
         if (lh_tri_locate(t, qi, hint, &loc2) != LH_OK || loc2.simplex != loc.simplex) abort();
-        int32_t first = -1;
+        lh_index first = -1;
         for (size_t s = 0; s < count && first < 0; s++)
-            if (contains(p, d, x, simp + s * (d + 1), qi)) first = (int32_t)s;
+            if (contains(p, d, x, simp + s * (d + 1), qi)) first = (lh_index)s;
         if (loc.simplex != first) abort(); /* not the smallest simplex containing q */
         int inside = first >= 0;
         if (!inside && (loc.hull_facet < 0 || (size_t)loc.hull_facet >= hulls || !(loc.distance > 0))) abort();
-        int32_t site = -1;
+        lh_index site = -1;
         if (lh_tri_nearest(t, qi, hint, &site) != LH_OK || site < 0 || (size_t)site >= n || dup[site] != site)
             abort();
         for (size_t j = 0; j < n; j++) {
             int c = lh_compare_distance(p, d, qi, x + (size_t)site * d, x + j * d);
-            if (c > 0 || (c == 0 && (int32_t)j < site && dup[j] == (int32_t)j)) abort();
+            if (c > 0 || (c == 0 && (lh_index)j < site && dup[j] == (lh_index)j)) abort();
         }
         for (int c = 0; c < 2; c++) {
             double want = affine(c, d, qi), scale = affine_scale(c, d, qi) + vmax[c];

@@ -64,7 +64,7 @@ static lh_status q_check(lh_test_state *lh_t_, lh_tri *t)
 static lh_status q_complex(lh_test_state *lh_t_, lh_tri *t)
 {
     size_t count;
-    const int32_t *off, *v;
+    const lh_index *off, *v;
     lh_status st = lh_tri_complex(t, &count, &off, &v);
     if (st == LH_OK) LH_EXPECT_EQ_U64(count, 64); /* the 4^3 unit cubes */
     return st;

@@ -17,16 +17,16 @@ static void grid_cells(lh_test_state *lh_t_, int d, int side, size_t want_cells,
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
     size_t count;
-    const int32_t *off, *v;
+    const lh_index *off, *v;
     LH_ASSERT_EQ_INT(lh_tri_complex(t, &count, &off, &v), LH_OK);
     LH_EXPECT_EQ_U64(count, want_cells);
     for (size_t c = 0; c < count; c++) {
         LH_EXPECT_EQ_INT(off[c + 1] - off[c], want_size);
-        for (int32_t k = off[c] + 1; k < off[c + 1]; k++) LH_EXPECT_LT_INT(v[k - 1], v[k]);
+        for (lh_index k = off[c] + 1; k < off[c + 1]; k++) LH_EXPECT_LT_INT(v[k - 1], v[k]);
         if (c) LH_EXPECT_LT_INT(v[off[c - 1]], v[off[c]] + 1); /* sorted by first vertex */
     }
     size_t again;
-    const int32_t *off2, *v2;
+    const lh_index *off2, *v2;
     LH_EXPECT_EQ_INT(lh_tri_complex(t, &again, &off2, &v2), LH_OK); /* cached */
     LH_EXPECT_TRUE(off2 == off && v2 == v && again == count);
     lh_tri_free(t);
@@ -47,7 +47,7 @@ LH_TEST(cocircular_sites_form_one_cell)
     LH_ASSERT_EQ_INT(lh_delaunay(2, 12, x, NULL, &t), LH_OK);
     LH_EXPECT_EQ_U64(lh_tri_count(t), 10);
     size_t count;
-    const int32_t *off, *v;
+    const lh_index *off, *v;
     LH_ASSERT_EQ_INT(lh_tri_complex(t, &count, &off, &v), LH_OK);
     LH_EXPECT_EQ_U64(count, 1);
     LH_EXPECT_EQ_INT(off[1], 12);
@@ -68,10 +68,10 @@ LH_TEST(general_position_cells_are_the_simplices)
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(3, N, x, NULL, &t), LH_OK);
     size_t count;
-    const int32_t *off, *v;
+    const lh_index *off, *v;
     LH_ASSERT_EQ_INT(lh_tri_complex(t, &count, &off, &v), LH_OK);
     LH_EXPECT_EQ_U64(count, lh_tri_count(t));
-    LH_EXPECT_EQ_INT(off[count], 4 * (int32_t)count);
+    LH_EXPECT_EQ_INT(off[count], 4 * (lh_index)count);
     lh_tri_free(t);
 }
 

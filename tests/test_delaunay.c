@@ -64,28 +64,28 @@ LH_TEST(smallest_inputs)
 }
 
 /* Canonical text of a triangulation with sites renamed through `name`. */
-static char *signature(const lh_tri *t, const int32_t *name)
+static char *signature(const lh_tri *t, const lh_index *name)
 {
     int nv = lh_tri_dim(t) + 1;
     size_t count = lh_tri_count(t);
-    int32_t *s = malloc(count * nv * sizeof *s);
+    lh_index *s = malloc(count * nv * sizeof *s);
     for (size_t i = 0; i < count * nv; i++) s[i] = name ? name[lh_tri_simplices(t)[i]] : lh_tri_simplices(t)[i];
     for (size_t i = 0; i < count; i++) /* sort each simplex (orientation ignored) */
         for (int a = 1; a < nv; a++)
             for (int b = a; b > 0 && s[i * nv + b] < s[i * nv + b - 1]; b--) {
-                int32_t tmp = s[i * nv + b];
+                lh_index tmp = s[i * nv + b];
                 s[i * nv + b] = s[i * nv + b - 1];
                 s[i * nv + b - 1] = tmp;
             }
     for (size_t i = 1; i < count; i++) /* insertion sort of rows: small inputs only */
         for (size_t j = i; j > 0 && memcmp(s + j * nv, s + (j - 1) * nv, nv * sizeof *s) < 0; j--)
             for (int k = 0; k < nv; k++) {
-                int32_t tmp = s[j * nv + k];
+                lh_index tmp = s[j * nv + k];
                 s[j * nv + k] = s[(j - 1) * nv + k];
                 s[(j - 1) * nv + k] = tmp;
             }
-    char *out = malloc(count * nv * 12 + 1), *o = out;
-    for (size_t i = 0; i < count * nv; i++) o += sprintf(o, "%d ", (int)s[i]);
+    char *out = malloc(count * nv * 21 + 1), *o = out;
+    for (size_t i = 0; i < count * nv; i++) o += sprintf(o, "%" LH_INDEX_PRI " ", s[i]);
     *o = 0;
     free(s);
     return out;
@@ -98,13 +98,13 @@ LH_TEST(output_depends_only_on_the_site_set)
             if (fam != F_CUBE && fam != F_GRID && fam != F_SPHERE_EXACT && fam != F_DUPLICATES) continue;
             size_t n = d == 2 ? 300 : d == 3 ? 200 : 80;
             double *x = malloc(n * d * sizeof *x), *y = malloc(n * d * sizeof *y);
-            int32_t *perm = malloc(n * sizeof *perm), *inv = malloc(n * sizeof *inv);
+            lh_index *perm = malloc(n * sizeof *perm), *inv = malloc(n * sizeof *inv);
             lh_fam_seed((uint64_t)(7 * d + fam));
             n = lh_fam_make(fam, d, n, x);
-            for (size_t i = 0; i < n; i++) perm[i] = (int32_t)i;
+            for (size_t i = 0; i < n; i++) perm[i] = (lh_index)i;
             for (size_t i = n - 1; i > 0; i--) {
                 size_t j = lh_fam_rnd() % (i + 1);
-                int32_t tmp = perm[i];
+                lh_index tmp = perm[i];
                 perm[i] = perm[j];
                 perm[j] = tmp;
             }
@@ -170,7 +170,7 @@ LH_TEST(duplicates_are_merged_and_reported)
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(2, 7, x, NULL, &t), LH_OK);
     LH_EXPECT_EQ_U64(lh_tri_duplicate_count(t), 3);
-    const int32_t *dup = lh_tri_duplicate_of(t);
+    const lh_index *dup = lh_tri_duplicate_of(t);
     LH_EXPECT_EQ_INT(dup[3], 1);
     LH_EXPECT_EQ_INT(dup[4], 0);
     LH_EXPECT_EQ_INT(dup[6], 0);
@@ -219,7 +219,7 @@ LH_TEST(the_check_rejects_what_is_not_delaunay)
 {
     /* A unit square split along the wrong diagonal of a non-cocircular quad. */
     double x[] = {0, 0, 2, 0, 2, 1, 0, 1.2};
-    int32_t good[] = {0, 1, 2, 0, 2, 3}, bad[] = {0, 1, 3, 1, 2, 3}, flat[] = {0, 1, 1};
+    lh_index good[] = {0, 1, 2, 0, 2, 3}, bad[] = {0, 1, 3, 1, 2, 3}, flat[] = {0, 1, 1};
     char msg[200];
     lh_status a = lh_check_delaunay(2, 4, x, 2, good, NULL, msg, sizeof msg);
     lh_status b = lh_check_delaunay(2, 4, x, 2, bad, NULL, msg, sizeof msg);
@@ -229,7 +229,7 @@ LH_TEST(the_check_rejects_what_is_not_delaunay)
     LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, x, 1, flat, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
     LH_EXPECT_TRUE(strstr(msg, "repeats") != NULL);
     double c[] = {0, 0, 1, 0, 2, 0, 1, 1}; /* a flat triangle along y = 0 */
-    int32_t cf[] = {0, 1, 3, 1, 2, 3, 0, 2, 1};
+    lh_index cf[] = {0, 1, 3, 1, 2, 3, 0, 2, 1};
     LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, c, 3, cf, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
     LH_EXPECT_TRUE(strstr(msg, "flat") != NULL);
 }
@@ -251,7 +251,7 @@ static lh_status delaunay_run(lh_test_state *lh_t_, const lh_allocator *a, const
         return st;
     }
     size_t count;
-    const int32_t *off, *v;
+    const lh_index *off, *v;
     st = lh_tri_complex(t, &count, &off, &v);
     lh_location loc;
     if (st == LH_OK) st = lh_tri_locate(t, x, -1, &loc);

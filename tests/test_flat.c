@@ -55,7 +55,7 @@ LH_TEST(a_plane_in_3d_gives_the_2d_triangulation)
             LH_EXPECT_EQ_INT(lh_tri_check(flat, msg, sizeof msg), LH_OK);
             LH_EXPECT_TRUE(lh_test_same_tri(flat, want));
             size_t c1, c2;
-            const int32_t *o1, *v1, *o2, *v2;
+            const lh_index *o1, *v1, *o2, *v2;
             LH_EXPECT_EQ_INT(lh_tri_complex(flat, &c1, &o1, &v1), LH_OK);
             LH_EXPECT_EQ_INT(lh_tri_complex(want, &c2, &o2, &v2), LH_OK);
             LH_EXPECT_EQ_U64(c1, c2);
@@ -190,7 +190,7 @@ LH_TEST(collinear_sites_give_the_chain)
         LH_EXPECT_EQ_U64(lh_tri_hull_count(t), 2);
         char msg[200] = "";
         LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
-        const int32_t *s = lh_tri_simplices(t), *dup = lh_tri_duplicate_of(t);
+        const lh_index *s = lh_tri_simplices(t), *dup = lh_tri_duplicate_of(t);
         for (size_t i = 0; i < lh_tri_count(t); i++) /* oriented along the line */
             LH_EXPECT_EQ_INT(tt[s[2 * i + 1]] - tt[s[2 * i]], furthest ? 29 : 1);
         LH_EXPECT_EQ_INT(dup[30], 22); /* t = 4 first appears as site 22 (7 * 22 % 30) */
@@ -208,7 +208,7 @@ LH_TEST(collinear_sites_give_the_chain)
     double in[3] = {5 + 2.5, 5, 6.5}, out[3] = {5 - 2, -4, -7}, off[3] = {6, 2, 3};
     LH_ASSERT_EQ_INT(lh_tri_locate(t, in, -1, &loc), LH_OK);
     LH_ASSERT_TRUE(loc.simplex >= 0);
-    const int32_t *s = lh_tri_simplices(t) + 2 * loc.simplex;
+    const lh_index *s = lh_tri_simplices(t) + 2 * loc.simplex;
     LH_EXPECT_TRUE((tt[s[0]] == 2 && tt[s[1]] == 3));
     LH_ASSERT_EQ_INT(lh_tri_locate(t, out, -1, &loc), LH_OK);
     LH_EXPECT_EQ_INT(loc.simplex, -1);

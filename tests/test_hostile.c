@@ -90,7 +90,7 @@ static void expect_scale_invariant(lh_test_state *lh_t_, int d, size_t n, const 
         LH_EXPECT_EQ_U64(lh_tri_duplicate_count(b), lh_tri_duplicate_count(a));
         if (lh_tri_count(a) == lh_tri_count(b))
             LH_EXPECT_TRUE(!memcmp(lh_tri_simplices(a), lh_tri_simplices(b),
-                                   lh_tri_count(a) * (size_t)(d + 1) * sizeof(int32_t)));
+                                   lh_tri_count(a) * (size_t)(d + 1) * sizeof(lh_index)));
         /* The hull: exactly convex at the new scale (no site strictly outside a facet).
          * Which boundary sites are vertices may differ from the unit scale (it does at
          * 2^-1050 and below in 2D): lh_convex_hull leaves that open. */
@@ -115,7 +115,7 @@ static void expect_scale_invariant(lh_test_state *lh_t_, int d, size_t n, const 
             LH_EXPECT_EQ_INT(lh_tri_locate(a, q, -1, &la), LH_OK);
             LH_EXPECT_EQ_INT(lh_tri_locate(b, qy, -1, &lb), LH_OK);
             LH_EXPECT_EQ_INT(lb.simplex, la.simplex);
-            int32_t na = -1, nb = -1;
+            lh_index na = -1, nb = -1;
             if (la.simplex >= 0) { /* outside at 2^1000: lh_tri_nearest is defect 1 */
                 LH_EXPECT_EQ_INT(lh_tri_nearest(a, q, -1, &na), LH_OK);
                 LH_EXPECT_EQ_INT(lh_tri_nearest(b, qy, -1, &nb), LH_OK);
@@ -210,7 +210,7 @@ LH_TEST(nonfinite_coordinates_everywhere)
         LH_EXPECT_EQ_INT(lh_affine_dim(2, 4, y, NULL, &k), LH_ERR_NONFINITE);
         LH_ASSERT_EQ_INT(lh_delaunay(2, 4, x, NULL, &t), LH_OK);
         lh_location loc;
-        int32_t site;
+        lh_index site;
         LH_EXPECT_EQ_INT(lh_tri_locate(t, y + 4, -1, &loc), LH_ERR_NONFINITE);
         LH_EXPECT_EQ_INT(lh_tri_nearest(t, y + 4, -1, &site), LH_ERR_NONFINITE);
         LH_EXPECT_EQ_INT(lh_tri_insert(t, 2, y + 2), LH_ERR_NONFINITE);
@@ -224,8 +224,9 @@ LH_TEST(nonfinite_coordinates_everywhere)
 
 /* Row "10^6 identical points": LH_ERR_DEGENERATE (affine dimension 0) from lh_delaunay
  * with and without affine_hull and from lh_convex_hull, in well under a second each,
- * with at most 8d + 32 bytes per site allocated (measured 8d + 29: a copy of the
- * coordinates and a few indices). */
+ * with at most 8d + 20 bytes per site allocated and three indices' width more: 8d + 32
+ * (measured 8d + 29: a copy of the coordinates, two Morton keys and three indices);
+ * 8d + 44 with 64-bit indices (measured 8d + 41). */
 LH_TEST(a_million_identical_sites)
 {
     const size_t n = 1000000;
@@ -254,7 +255,7 @@ LH_TEST(a_million_identical_sites)
         double secs = (double)(clock() - c0) / CLOCKS_PER_SEC;
         LH_EXPECT_LE_DBL(secs, 10.0); /* measured 0.5 s (2D), 0.7 s (3D) for the four calls, Release */
         LH_EXPECT_EQ_U64(p.live, 0);
-        LH_EXPECT_LE_U64(p.peak, n * (size_t)(d * 8 + 32));
+        LH_EXPECT_LE_U64(p.peak, n * ((size_t)d * 8 + 20 + 3 * sizeof(lh_index)));
         if (LH_FAILED()) LH_NOTE("d %d: %.2f s, peak %zu bytes, largest block %zu", d, secs, p.peak, p.largest);
         free(x);
     }
@@ -324,7 +325,7 @@ static void expect_count(lh_test_state *lh_t_, int d, size_t n, const double *x,
     LH_EXPECT_EQ_U64(lh_tri_count(t), count);
     LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
     size_t cells = 0;
-    const int32_t *off, *v;
+    const lh_index *off, *v;
     LH_EXPECT_EQ_INT(lh_tri_complex(t, &cells, &off, &v), LH_OK);
     LH_EXPECT_EQ_U64(cells, complex_cells);
     lh_tri_free(t);
@@ -473,7 +474,7 @@ LH_TEST(constructions_at_extreme_scales)
         LH_EXPECT_EQ_INT(loc.simplex, -1);
         LH_EXPECT_TRUE(loc.hull_facet >= 0);
         LH_EXPECT_LE_DBL(fabs(ldexp(loc.distance, -e) - 2), 1e-15);
-        int32_t near;
+        lh_index near;
         LH_EXPECT_EQ_INT(lh_tri_nearest(t, os, -1, &near), LH_OK);
         LH_EXPECT_EQ_INT(near, 1); /* (1,0) and (1,1) tie: the smaller index */
         if (LH_FAILED()) LH_NOTE("scale 2^%d", e);
@@ -481,12 +482,13 @@ LH_TEST(constructions_at_extreme_scales)
     }
 }
 
-/* The 32-bit index limit: at most INT32_MAX - 1 sites; INT32_MAX of them is
- * LH_ERR_TOO_LARGE before any coordinate is read (x holds two: ASan would see a read). */
+/* The index limit: at most LH_INDEX_MAX - 1 sites; LH_INDEX_MAX of them is
+ * LH_ERR_TOO_LARGE before any coordinate is read (x holds two: ASan would see a read).
+ * With 64-bit indices n*d doubles would not fit in size_t either: both checks say so. */
 LH_TEST(the_site_count_limit)
 {
     const double x[2] = {0, 0};
-    const size_t n = (size_t)INT32_MAX;
+    const size_t n = (size_t)LH_INDEX_MAX;
     lh_tri *t = (lh_tri *)x;
     lh_hull *h = (lh_hull *)x;
     int k;
@@ -497,7 +499,7 @@ LH_TEST(the_site_count_limit)
     LH_EXPECT_EQ_INT(lh_affine_dim(2, n, x, NULL, &k), LH_ERR_TOO_LARGE);
     const double three[6] = {0, 0, 1, 0, 0, 1};
     LH_ASSERT_EQ_INT(lh_delaunay(2, 3, three, NULL, &t), LH_OK);
-    LH_EXPECT_EQ_INT(lh_tri_insert(t, n - 3, x), LH_ERR_TOO_LARGE); /* n - 3 + 3 = INT32_MAX */
+    LH_EXPECT_EQ_INT(lh_tri_insert(t, n - 3, x), LH_ERR_TOO_LARGE); /* n - 3 + 3 = LH_INDEX_MAX */
     LH_EXPECT_EQ_U64(lh_tri_site_count(t), 3);
     lh_tri_free(t);
 }

@@ -25,7 +25,7 @@ static void check_hull(lh_test_state *lh_t_, int d, size_t n, const double *x, c
     lh_pred *p;
     LH_ASSERT_EQ_INT(lh_pred_create(NULL, &p), LH_OK);
     size_t m = lh_hull_facet_count(h);
-    const int32_t *f = lh_hull_facets(h);
+    const lh_index *f = lh_hull_facets(h);
     LH_EXPECT_GT_U64(m, (size_t)d);
     for (size_t i = 0; i < m && !LH_FAILED(); i++) {
         const double *pts[9];
@@ -42,16 +42,16 @@ static void check_hull(lh_test_state *lh_t_, int d, size_t n, const double *x, c
     }
     /* Ridges: (d-1)-subsets of each facet, counted by sorting. */
     size_t r = m * d, w = (size_t)d - 1;
-    int32_t *ridge = malloc((r * w + 1) * sizeof *ridge);
+    lh_index *ridge = malloc((r * w + 1) * sizeof *ridge);
     for (size_t i = 0; i < m; i++)
         for (int skip = 0; skip < d; skip++) {
-            int32_t *o = ridge + (i * d + skip) * w;
+            lh_index *o = ridge + (i * d + skip) * w;
             int q = 0;
             for (int k = 0; k < d; k++)
                 if (k != skip) o[q++] = f[i * d + k];
             for (size_t a = 1; a < w; a++)
                 for (size_t b = a; b > 0 && o[b] < o[b - 1]; b--) {
-                    int32_t t = o[b];
+                    lh_index t = o[b];
                     o[b] = o[b - 1];
                     o[b - 1] = t;
                 }
@@ -120,7 +120,7 @@ LH_TEST(unit_cube_and_bad_input)
     /* Every corner is a vertex, the interior site never; the edge site may be one
      * (then its facets are coplanar with their neighbours: 14 instead of 12). */
     size_t nv = lh_hull_vertex_count(h);
-    const int32_t *v = lh_hull_vertices(h);
+    const lh_index *v = lh_hull_vertices(h);
     LH_EXPECT_TRUE(nv == 8 || nv == 9);
     for (int i = 0; i < 8; i++) LH_EXPECT_EQ_INT(v[i], i);
     if (nv == 9) LH_EXPECT_EQ_INT(v[8], 9);

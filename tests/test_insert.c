@@ -101,8 +101,8 @@ LH_TEST(inserted_duplicates_are_merged_into_the_first)
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(2, 5, x, NULL, &t), LH_OK);
     LH_ASSERT_EQ_INT(lh_tri_insert(t, n - 5, x + 10), LH_OK);
-    const int32_t *dup = lh_tri_duplicate_of(t);
-    int32_t want[11] = {0, 1, 2, 3, 4, 1, 2, 7, 7, 4, 10};
+    const lh_index *dup = lh_tri_duplicate_of(t);
+    lh_index want[11] = {0, 1, 2, 3, 4, 1, 2, 7, 7, 4, 10};
     for (size_t i = 0; i < n; i++) LH_EXPECT_EQ_INT(dup[i], want[i]);
     LH_EXPECT_EQ_U64(lh_tri_duplicate_count(t), 4);
     LH_EXPECT_EQ_INT(lh_tri_vertex_simplex(t)[5], -1);
@@ -110,10 +110,10 @@ LH_TEST(inserted_duplicates_are_merged_into_the_first)
 }
 
 /* A copy of t's simplices (to see that a failed call changed nothing). */
-static int32_t *copy_simplices(const lh_tri *t)
+static lh_index *copy_simplices(const lh_tri *t)
 {
-    size_t s = (size_t)(lh_tri_dim(t) + 1) * lh_tri_count(t) * sizeof(int32_t);
-    int32_t *c = malloc(s + 1);
+    size_t s = (size_t)(lh_tri_dim(t) + 1) * lh_tri_count(t) * sizeof(lh_index);
+    lh_index *c = malloc(s + 1);
     memcpy(c, lh_tri_simplices(t), s);
     return c;
 }
@@ -123,7 +123,7 @@ LH_TEST(bad_input_leaves_the_triangulation_unchanged)
     double x[] = {0, 0, 1, 0, 0, 1, 1, 1}, more[] = {0.5, 0.5, NAN, 0.2, 7, 7};
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(2, 4, x, NULL, &t), LH_OK);
-    int32_t *before = copy_simplices(t);
+    lh_index *before = copy_simplices(t);
     size_t count = lh_tri_count(t);
     LH_EXPECT_EQ_INT(lh_tri_insert(NULL, 1, more), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_EQ_INT(lh_tri_insert(t, 1, NULL), LH_ERR_INVALID_ARGUMENT);
@@ -134,7 +134,7 @@ LH_TEST(bad_input_leaves_the_triangulation_unchanged)
     LH_EXPECT_EQ_INT(lh_tri_insert(t, SIZE_MAX / 2, more), LH_ERR_TOO_LARGE);
     LH_EXPECT_EQ_U64(lh_tri_site_count(t), 4);
     LH_ASSERT_EQ_U64(lh_tri_count(t), count);
-    LH_EXPECT_TRUE(!memcmp(before, lh_tri_simplices(t), count * 3 * sizeof(int32_t)));
+    LH_EXPECT_TRUE(!memcmp(before, lh_tri_simplices(t), count * 3 * sizeof(lh_index)));
     LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
     free(before);
     lh_tri_free(t);
@@ -155,7 +155,7 @@ LH_TEST(every_allocation_failure_leaves_the_triangulation_unchanged)
         o.alloc = &a;
         lh_tri *t;
         LH_ASSERT_EQ_INT(lh_delaunay(D, N, x, &o, &t), LH_OK);
-        int32_t *before = copy_simplices(t);
+        lh_index *before = copy_simplices(t);
         size_t count = lh_tri_count(t);
         c.fail_at = c.calls + k; /* the k-th allocation of the insertion fails */
         lh_status st = lh_tri_insert(t, M, x + N * D);
@@ -164,7 +164,7 @@ LH_TEST(every_allocation_failure_leaves_the_triangulation_unchanged)
             LH_EXPECT_EQ_U64(lh_tri_count(t), count);
             LH_EXPECT_EQ_U64(lh_tri_site_count(t), N);
             if (lh_tri_count(t) == count)
-                LH_EXPECT_TRUE(!memcmp(before, lh_tri_simplices(t), count * (D + 1) * sizeof(int32_t)));
+                LH_EXPECT_TRUE(!memcmp(before, lh_tri_simplices(t), count * (D + 1) * sizeof(lh_index)));
         }
         c.fail_at = 0; /* the check allocates through the handle's hooks too */
         LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);

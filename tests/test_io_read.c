@@ -12,6 +12,15 @@
 /* Input text with its length, so that NUL bytes can be part of it. */
 #define TEXT(s) s, sizeof(s) - 1
 
+/* LH_READ_MAX_POINTS as the messages show it, and the count one above it. */
+#if LH_INDEX_BITS == 64
+#define MAX_POINTS "9223372036854775806"
+#define ABOVE_MAX "9223372036854775807"
+#else
+#define MAX_POINTS "2147483646"
+#define ABOVE_MAX "2147483647"
+#endif
+
 
 static lh_status read_text(const char *name, const char *text, size_t len, lh_format fmt,
                            const lh_allocator *a, lh_points *p, char *msg, size_t size)
@@ -76,13 +85,13 @@ LH_TEST(qhull_cli_messages)
         {A, "text", TEXT("2\n3\n0 abc\n1 0\n0 1\n"), LH_ERR_PARSE,
          "text:3:3: expected coordinate 2 of point 1 (a number), found 'abc'"},
         {A, "count_text", TEXT("2\nmany\n0 0\n"), LH_ERR_PARSE,
-         "count_text:2:1: expected the number of points (an integer from 1 to 2147483646), found 'many'"},
-        {A, "huge_count", TEXT("2\n1000000000000\n0 0\n"), LH_ERR_TOO_LARGE,
-         "huge_count:2:1: expected the number of points (an integer from 1 to 2147483646), found '1000000000000'"},
+         "count_text:2:1: expected the number of points (an integer from 1 to " MAX_POINTS "), found 'many'"},
+        {A, "huge_count", TEXT("2\n10000000000000000000\n0 0\n"), LH_ERR_TOO_LARGE,
+         "huge_count:2:1: expected the number of points (an integer from 1 to " MAX_POINTS "), found '10000000000000000000'"},
         {A, "binary", TEXT("\x7f" "ELF\x02\x01\x01\x00\xff\xfe"), LH_ERR_PARSE,
          "binary:1:1: expected the dimension, found a non-text byte 0x7f"},
         {A, "zero_count", TEXT("2\n0\n"), LH_ERR_PARSE,
-         "zero_count:2:1: expected the number of points (an integer from 1 to 2147483646), found '0'"},
+         "zero_count:2:1: expected the number of points (an integer from 1 to " MAX_POINTS "), found '0'"},
     };
     check_bad_cases(lh_t_, cases, LH_COUNT(cases));
 }
@@ -100,11 +109,11 @@ LH_TEST(qhull_header_errors)
          "big:1:1: expected the dimension (an integer from 2 to 8), found '99999999999999999999...'"},
         {Q, "nocount", TEXT("3 rbox c\n"), LH_ERR_PARSE, "nocount:2:1: expected the number of points, found the end of the input"},
         {Q, "negcount", TEXT("3 -4\n"), LH_ERR_PARSE,
-         "negcount:1:3: expected the number of points (an integer from 1 to 2147483646), found '-4'"},
+         "negcount:1:3: expected the number of points (an integer from 1 to " MAX_POINTS "), found '-4'"},
         {Q, "fcount", TEXT("3\n4.0\n"), LH_ERR_PARSE,
-         "fcount:2:1: expected the number of points (an integer from 1 to 2147483646), found '4.0'"},
-        {Q, "maxcount", TEXT("3\n2147483647\n"), LH_ERR_TOO_LARGE,
-         "maxcount:2:1: expected the number of points (an integer from 1 to 2147483646), found '2147483647'"},
+         "fcount:2:1: expected the number of points (an integer from 1 to " MAX_POINTS "), found '4.0'"},
+        {Q, "maxcount", TEXT("3\n" ABOVE_MAX "\n"), LH_ERR_TOO_LARGE,
+         "maxcount:2:1: expected the number of points (an integer from 1 to " MAX_POINTS "), found '" ABOVE_MAX "'"},
         {Q, "nulc", TEXT("# a\0b\n2 1\n0 0\n"), LH_ERR_PARSE, "nulc:1:4: expected the dimension, found a NUL byte"},
         {Q, "bytecount", TEXT("2\n\x01\n"), LH_ERR_PARSE, "bytecount:2:1: expected the number of points, found a non-text byte 0x01"},
         {Q, "utf16", TEXT("\xff\xfe" "2\0"), LH_ERR_PARSE, "utf16:1:1: expected the dimension, found a non-text byte 0xff"},
@@ -189,8 +198,8 @@ LH_TEST(node_errors)
          "na.node:2:7: attribute 1 of point 1 is 'nan': NaN and infinities are not accepted"},
         {N, "nc.node", TEXT("1 3 0 0\n1 0 inf 0\n"), LH_ERR_NONFINITE,
          "nc.node:2:5: coordinate 2 of point 1 is 'inf': NaN and infinities are not points"},
-        {N, "big.node", TEXT("1000000000000 2 0 0\n"), LH_ERR_TOO_LARGE,
-         "big.node:1:1: expected the number of points (an integer from 1 to 2147483646), found '1000000000000'"},
+        {N, "big.node", TEXT("10000000000000000000 2 0 0\n"), LH_ERR_TOO_LARGE,
+         "big.node:1:1: expected the number of points (an integer from 1 to " MAX_POINTS "), found '10000000000000000000'"},
     };
     check_bad_cases(lh_t_, cases, LH_COUNT(cases));
 }
@@ -317,7 +326,7 @@ LH_TEST(node_good)
                                "2 1 0 2 3 -1\n\n"
                                "  3 0 1 4 5 0 # last\n";
     static const double xyz[] = {0, 0, 1, 0, 0, 1}, attr[] = {0.5, 1.5, 2, 3, 4, 5};
-    static const int32_t marker[] = {7, -1, 0};
+    static const lh_index marker[] = {7, -1, 0};
     lh_points p;
     char msg[256];
     LH_ASSERT_EQ_INT(read_text("good.node", TEXT(text), A, NULL, &p, msg, sizeof msg), LH_OK);
@@ -493,7 +502,10 @@ LH_TEST(read_error_and_arguments)
     LH_EXPECT_EQ_INT(read_text(NULL, TEXT("2 -x"), Q, NULL, &p, msg, 1), LH_ERR_PARSE);
     LH_EXPECT_STREQ(msg, "");
     LH_EXPECT_EQ_INT(read_text(NULL, TEXT("2 -x"), Q, NULL, &p, msg, sizeof msg), LH_ERR_PARSE);
-    LH_EXPECT_STREQ(msg, "<input>:1:3: expected the number of points (an integer from 1 to 2147483646), found '-x'");
+    LH_EXPECT_STREQ(msg, "<input>:1:3: expected the number of points (an integer from 1 to " MAX_POINTS "), found '-x'");
+    char max_points[32]; /* MAX_POINTS is LH_READ_MAX_POINTS */
+    snprintf(max_points, sizeof max_points, "%" LH_INDEX_PRI, LH_READ_MAX_POINTS);
+    LH_EXPECT_STREQ(max_points, MAX_POINTS);
     lh_points_free(NULL);
     lh_points_free(&p);
     LH_EXPECT_STREQ(lh_format_name(LH_FORMAT_COLUMNS), "columns");

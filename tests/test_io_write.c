@@ -12,8 +12,8 @@ static const char *self_path; /* argv[0]: a file that exists, opened read-only b
 
 /* Two triangles of a square-ish quad, with neighbours and a point field. */
 static const double quad_xyz[] = {0, 0, 1, 0, 0, 1, 1, 1.5};
-static const int32_t quad_cells[] = {0, 1, 2, 1, 3, 2};
-static const int32_t quad_nbrs[] = {1, -1, -1, -1, 0, -1};
+static const lh_index quad_cells[] = {0, 1, 2, 1, 3, 2};
+static const lh_index quad_nbrs[] = {1, -1, -1, -1, 0, -1};
 static const double quad_values[] = {0, 0.5, 1, 0.1};
 
 static lh_mesh_view quad(void)
@@ -115,7 +115,7 @@ LH_TEST(off_text)
                   "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1.5 0\n3 0 1 2\n3 1 3 2\n");
     /* A tetrahedron's boundary in 3D. */
     static const double xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-    static const int32_t faces[] = {1, 2, 3, 0, 3, 2, 0, 1, 3, 0, 2, 1};
+    static const lh_index faces[] = {1, 2, 3, 0, 3, 2, 0, 1, 3, 0, 2, 1};
     lh_mesh_view s = {3, 4, xyz, 2, 4, faces, NULL, NULL, NULL};
     expect_output(lh_t_, lh_write_off, NULL, 0, &s,
                   "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 1 2 3\n3 0 3 2\n3 0 1 3\n3 0 2 1\n");
@@ -124,7 +124,7 @@ LH_TEST(off_text)
 LH_TEST(segments_and_tetrahedra)
 {
     static const double xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-    static const int32_t tet[] = {0, 1, 2, 3}, nb[] = {-1, -1, -1, -1};
+    static const lh_index tet[] = {0, 1, 2, 3}, nb[] = {-1, -1, -1, -1};
     lh_mesh_view m = {3, 4, xyz, 3, 1, tet, nb, NULL, NULL};
     char *text;
     LH_EXPECT_EQ_INT(capture(lh_write_vtu, NULL, 0, &m, &text), LH_OK);
@@ -135,7 +135,7 @@ LH_TEST(segments_and_tetrahedra)
                    strstr(text, "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n"));
     free(text);
     static const double line[] = {0, 1, 3};
-    static const int32_t segs[] = {0, 1, 1, 2};
+    static const lh_index segs[] = {0, 1, 1, 2};
     lh_mesh_view l = {1, 3, line, 1, 2, segs, NULL, NULL, NULL};
     LH_EXPECT_EQ_INT(capture(lh_write_msh, NULL, 0, &l, &text), LH_OK);
     LH_EXPECT_TRUE(text && strstr(text, "$Elements\n1 2 1 2\n1 1 1 2\n1 1 2\n2 2 3\n"));
@@ -149,7 +149,7 @@ LH_TEST(segments_and_tetrahedra)
 /* Every bad view: the status, and nothing written. */
 LH_TEST(argument_errors)
 {
-    static const int32_t bad_cell[] = {0, 1, 4, 1, 3, 2}, bad_nbr[] = {1, -2, -1, -1, 0, -1};
+    static const lh_index bad_cell[] = {0, 1, 4, 1, 3, 2}, bad_nbr[] = {1, -2, -1, -1, 0, -1};
     static const double nan_xyz[] = {0, 0, 1, 0, 0, NAN, 1, 1.5}, inf_values[] = {0, INFINITY, 0, 0};
     struct {
         lh_mesh_view m;

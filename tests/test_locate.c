@@ -36,7 +36,7 @@ LH_TEST(queries_inside_outside_and_on_sites)
         LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
         const int nv = d + 1;
         int inside = 0, outside = 0;
-        int32_t hint = -1;
+        lh_index hint = -1;
         for (int k = 0; k < 400 && !LH_FAILED(); k++) {
             double q[8];
             if (k % 4 == 3) /* a site: on the triangulation's vertices */
@@ -48,7 +48,7 @@ LH_TEST(queries_inside_outside_and_on_sites)
             if (loc.simplex >= 0) {
                 inside++;
                 hint = loc.simplex;
-                const int32_t *v = lh_tri_simplices(t) + (size_t)loc.simplex * nv;
+                const lh_index *v = lh_tri_simplices(t) + (size_t)loc.simplex * nv;
                 const double *p[9];
                 for (int f = 0; f < nv; f++) { /* q on the inner side of every facet */
                     for (int j = 0; j < nv; j++) p[j] = j == f ? q : x + (size_t)v[j] * d;
@@ -77,7 +77,7 @@ LH_TEST(queries_inside_outside_and_on_sites)
                     if (sqrt(s) < nearest_site) nearest_site = sqrt(s);
                 }
                 LH_EXPECT_LE_DBL(loc.distance, nearest_site + 1e-12);
-                const int32_t *f = lh_tri_hull_facets(t) + (size_t)loc.hull_facet * d;
+                const lh_index *f = lh_tri_hull_facets(t) + (size_t)loc.hull_facet * d;
                 double r2 = 0; /* the reported nearest point is at that distance */
                 for (int c = 0; c < d; c++) {
                     double r = 0;
@@ -88,7 +88,7 @@ LH_TEST(queries_inside_outside_and_on_sites)
                 if (d == 2) { /* brute force: every hull edge */
                     double best = INFINITY;
                     for (size_t e = 0; e < lh_tri_hull_count(t); e++) {
-                        const int32_t *h = lh_tri_hull_facets(t) + 2 * e;
+                        const lh_index *h = lh_tri_hull_facets(t) + 2 * e;
                         double s = seg_dist(x + 2 * h[0], x + 2 * h[1], q);
                         if (s < best) best = s;
                     }
@@ -128,22 +128,22 @@ LH_TEST(points_on_shared_faces_get_the_smallest_simplex)
         for (int k = 0; k < 200 && !LH_FAILED(); k++) {
             double q[8];
             for (int j = 0; j < d; j++) q[j] = 0.5 * (double)(rng_state = rng_state * 6364136223846793005u + 1442695040888963407u, (rng_state >> 33) % (2 * side - 1));
-            int32_t want = -1;
+            lh_index want = -1;
             for (size_t c = 0; c < lh_tri_count(t) && want < 0; c++) {
-                const int32_t *v = lh_tri_simplices(t) + c * nv;
+                const lh_index *v = lh_tri_simplices(t) + c * nv;
                 int in = 1;
                 for (int f = 0; f < nv && in; f++) {
                     const double *p[9];
                     for (int j = 0; j < nv; j++) p[j] = j == f ? q : x + (size_t)v[j] * d;
                     in = lh_orient(pred, d, p) >= 0;
                 }
-                if (in) want = (int32_t)c;
+                if (in) want = (lh_index)c;
             }
             for (int h = -1; h < 3; h++) {
                 lh_location loc;
-                int32_t hint = h < 0 ? -1 : (int32_t)((size_t)h * lh_tri_count(t) / 3);
+                lh_index hint = h < 0 ? -1 : (lh_index)((size_t)h * lh_tri_count(t) / 3);
                 LH_ASSERT_EQ_INT(lh_tri_locate(t, q, hint, &loc), LH_OK);
-                if (loc.simplex != want) LH_NOTE("d=%d query %d hint %d", d, k, (int)hint);
+                if (loc.simplex != want) LH_NOTE("d=%d query %d hint %" LH_INDEX_PRI, d, k, hint);
                 LH_EXPECT_EQ_INT(loc.simplex, want);
             }
         }

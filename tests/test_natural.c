@@ -29,7 +29,7 @@ static double *make_sites(int fam, int d, size_t *n, uint64_t seed)
 static void point_in_simplex(lh_tri *t, const double *x, size_t s, double lo, double *q)
 {
     const int d = lh_tri_dim(t);
-    const int32_t *v = lh_tri_simplices(t) + s * (size_t)(d + 1);
+    const lh_index *v = lh_tri_simplices(t) + s * (size_t)(d + 1);
     double b[4], sum = 0;
     for (int j = 0; j <= d; j++) sum += b[j] = lo + lh_fam_unif();
     for (int c = 0; c < d; c++) {
@@ -44,10 +44,10 @@ static void point_in_simplex(lh_tri *t, const double *x, size_t s, double lo, do
 static double lin_tol = 1e-10; /* relative linear-precision tolerance */
 
 static double check_coords(lh_test_state *lh_t_, lh_tri *t, const double *x, const double *q,
-                           size_t m, const int32_t *s, const double *w)
+                           size_t m, const lh_index *s, const double *w)
 {
     const int d = lh_tri_dim(t);
-    const int32_t *dup = lh_tri_duplicate_of(t);
+    const lh_index *dup = lh_tri_duplicate_of(t);
     double sum = 0, r[3] = {0, 0, 0}, far = 0;
     LH_EXPECT_TRUE(m >= 1);
     for (size_t i = 0; i < m; i++) {
@@ -77,7 +77,7 @@ static double check_coords(lh_test_state *lh_t_, lh_tri *t, const double *x, con
 
 /* Natural coordinates of q, checked; returns the count (0 if q was outside). */
 static size_t coords_checked(lh_test_state *lh_t_, lh_tri *t, const double *x, const double *q,
-                             int32_t *s, double *w)
+                             lh_index *s, double *w)
 {
     size_t m = 99;
     lh_status st = lh_tri_natural_coords(t, q, -1, CAP, s, w, &m);
@@ -98,7 +98,7 @@ LH_TEST(random_sites_linear_precision)
 {
     static const int fams[] = {F_CUBE, F_BALL, F_CLUSTERS, F_GRID_JITTER, F_DUPLICATES,
                                F_OFFSET_1E9, F_SPREAD_1E9, F_MIXED, F_NEAR_PLANE};
-    int32_t *s = malloc(CAP * sizeof *s);
+    lh_index *s = malloc(CAP * sizeof *s);
     double *w = malloc(CAP * sizeof *w);
     for (int d = 2; d <= 3; d++)
         for (size_t f = 0; f < LH_COUNT(fams) && !LH_FAILED(); f++) {
@@ -130,11 +130,11 @@ LH_TEST(near_the_hull)
         double *x = make_sites(F_BALL, d, &n, 31);
         lh_tri *t;
         LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
-        const int32_t *hf = lh_tri_hull_facets(t);
-        int32_t s[CAP];
+        const lh_index *hf = lh_tri_hull_facets(t);
+        lh_index s[CAP];
         double w[CAP];
         for (int k = 0; k < 1300 && !LH_FAILED(); k++) {
-            const int32_t *f = hf + (lh_fam_rnd() % lh_tri_hull_count(t)) * (size_t)d;
+            const lh_index *f = hf + (lh_fam_rnd() % lh_tri_hull_count(t)) * (size_t)d;
             const double *a = x + (size_t)f[0] * d, *b = x + (size_t)f[1] * d;
             const double *c = d == 3 ? x + (size_t)f[2] * d : a;
             double u[3] = {0}, v[3] = {0}, nrm[3], q[3], sb = 0, bw[3];
@@ -166,7 +166,7 @@ LH_TEST(nearly_collinear_hull_sites_3d)
     double *x = make_sites(F_GRID_JITTER, 3, &n, 103);
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(3, n, x, NULL, &t), LH_OK);
-    int32_t s[CAP];
+    lh_index s[CAP];
     double w[CAP];
     lin_tol = 1e-3;
     for (int k = 0; k < 1000 && !LH_FAILED(); k++) {
@@ -190,10 +190,10 @@ LH_TEST(query_at_site)
         LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
         LH_EXPECT_GT_U64(lh_tri_duplicate_count(t), 0);
         for (size_t i = 0; i < n; i++) {
-            int32_t s[8];
+            lh_index s[8];
             double w[8];
             size_t m = 0;
-            LH_EXPECT_EQ_INT(lh_tri_natural_coords(t, x + i * d, (int32_t)i % 5, 8, s, w, &m), LH_OK);
+            LH_EXPECT_EQ_INT(lh_tri_natural_coords(t, x + i * d, (lh_index)i % 5, 8, s, w, &m), LH_OK);
             LH_EXPECT_EQ_U64(m, 1);
             LH_EXPECT_EQ_INT(s[0], lh_tri_duplicate_of(t)[i]);
             LH_EXPECT_EQ_DBL(w[0], 1.0);
@@ -221,7 +221,7 @@ LH_TEST(query_on_hull_boundary)
             int axis = k % d, axis2 = (k / d) % d;
             q[axis] = (k / 7) % 2;            /* on a face (2D: an edge) */
             if (d == 3 && k % 3 == 0 && axis2 != axis) q[axis2] = (k / 5) % 2; /* on an edge */
-            int32_t s[CAP];
+            lh_index s[CAP];
             double w[CAP];
             size_t m = coords_checked(lh_t_, t, x, q, s, w);
             LH_EXPECT_TRUE(m >= 1 && m <= (size_t)d);
@@ -229,7 +229,7 @@ LH_TEST(query_on_hull_boundary)
                 LH_EXPECT_EQ_DBL(x[(size_t)s[i] * d + axis], q[axis]);
             /* the boundary value is the limit from inside */
             double qi[3], ws[CAP];
-            int32_t ss[CAP];
+            lh_index ss[CAP];
             memcpy(qi, q, sizeof qi);
             for (int j = 0; j < d; j++) qi[j] += (q[j] == 0 ? 1e-9 : q[j] == 1 ? -1e-9 : 0);
             size_t mi = 0;
@@ -253,7 +253,7 @@ LH_TEST(query_outside_and_bad_arguments)
     double x[] = {0, 0, 1, 0, 0, 1, 1, 1, 0.3, 0.6};
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(2, 5, x, NULL, &t), LH_OK);
-    int32_t s[8];
+    lh_index s[8];
     double w[8];
     size_t m = 7;
     double out[2] = {1.5, 0.5}, touch[2] = {1 + 0x1p-52, 0.5}, in[2] = {0.5, 0.5};
@@ -292,7 +292,7 @@ LH_TEST(cap_too_small)
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(3, n, x, NULL, &t), LH_OK);
     double q[3] = {0.5, 0.5, 0.5};
-    int32_t s[CAP];
+    lh_index s[CAP];
     double w[CAP];
     size_t need = 0, m = 0;
     LH_EXPECT_EQ_INT(lh_tri_natural_coords(t, q, -1, 0, NULL, NULL, &need), LH_ERR_TOO_LARGE);
@@ -312,7 +312,7 @@ LH_TEST(unsupported_dimensions)
     size_t n = 40;
     double *x = make_sites(F_CUBE, 4, &n, 3);
     lh_tri *t;
-    int32_t s[64];
+    lh_index s[64];
     double w[64], q[4] = {0.5, 0.5, 0.5, 0.5};
     size_t m = 7;
     LH_ASSERT_EQ_INT(lh_delaunay(4, n, x, NULL, &t), LH_OK);
@@ -337,7 +337,7 @@ LH_TEST(unsupported_dimensions)
  * q), and at random. */
 LH_TEST(degenerate_sites)
 {
-    int32_t *s = malloc(CAP * sizeof *s);
+    lh_index *s = malloc(CAP * sizeof *s);
     double *w = malloc(CAP * sizeof *w);
     for (int d = 2; d <= 3; d++) {
         const int side = d == 2 ? 7 : 5;
@@ -454,7 +454,7 @@ LH_TEST(brute_force_2d)
         LH_ASSERT_EQ_INT(lh_delaunay(2, n, x, NULL, &t), LH_OK);
         for (int k = 0; k < 50 && !LH_FAILED(); k++) {
             double q[2], bw[64];
-            int32_t s[64];
+            lh_index s[64];
             double w[64];
             point_in_simplex(t, x, lh_fam_rnd() % lh_tri_count(t), 0.02, q);
             size_t m = coords_checked(lh_t_, t, x, q, s, w);
@@ -490,11 +490,11 @@ LH_TEST(independent_of_hint)
         for (int k = 0; k < 100; k++) {
             double q[3];
             point_in_simplex(t, x, lh_fam_rnd() % lh_tri_count(t), 0.0, q);
-            int32_t s0[256], s1[256];
+            lh_index s0[256], s1[256];
             double w0[256], w1[256];
             size_t m0, m1;
             LH_ASSERT_EQ_INT(lh_tri_natural_coords(t, q, -1, 256, s0, w0, &m0), LH_OK);
-            int32_t hint = (int32_t)(lh_fam_rnd() % lh_tri_count(t));
+            lh_index hint = (lh_index)(lh_fam_rnd() % lh_tri_count(t));
             LH_ASSERT_EQ_INT(lh_tri_natural_coords(t, q, hint, 256, s1, w1, &m1), LH_OK);
             LH_ASSERT_EQ_U64(m0, m1);
             LH_EXPECT_TRUE(!memcmp(s0, s1, m0 * sizeof *s0) && !memcmp(w0, w1, m0 * sizeof *w0));
@@ -525,7 +525,7 @@ static lh_status alloc_run(lh_test_state *lh_t_, const lh_allocator *a, const vo
     lh_tri *t = NULL;
     lh_status st = lh_delaunay(c->d, n, x, &opt, &t);
     if (st == LH_OK) {
-        int32_t s[CAP];
+        lh_index s[CAP];
         double w[CAP];
         size_t m = 7;
         st = lh_tri_natural_coords(t, c->q, -1, CAP, s, w, &m);

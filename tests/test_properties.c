@@ -20,23 +20,23 @@ enum { MAXV = 6 }; /* d <= 5 */
 
 /* A set of sorted vertex tuples of one size (faces), open addressing. */
 typedef struct faceset {
-    int32_t *key; /* cap * m, first entry -1: empty */
+    lh_index *key; /* cap * m, first entry -1: empty */
     size_t cap, size;
     int m;
 } faceset;
 
-static uint64_t hash(const int32_t *t, int m)
+static uint64_t hash(const lh_index *t, int m)
 {
     uint64_t h = 0x9e3779b97f4a7c15u;
     for (int i = 0; i < m; i++) h = (h ^ (uint32_t)t[i]) * 0xff51afd7ed558ccdu;
     return h ^ (h >> 31);
 }
 
-static void set_add(faceset *s, const int32_t *t);
+static void set_add(faceset *s, const lh_index *t);
 
 static void set_grow(faceset *s)
 {
-    faceset g = {malloc((s->cap ? 2 * s->cap : 1024) * s->m * sizeof(int32_t)), s->cap ? 2 * s->cap : 1024, 0, s->m};
+    faceset g = {malloc((s->cap ? 2 * s->cap : 1024) * s->m * sizeof(lh_index)), s->cap ? 2 * s->cap : 1024, 0, s->m};
     for (size_t i = 0; i < g.cap; i++) g.key[i * g.m] = -1;
     for (size_t i = 0; i < s->cap; i++)
         if (s->key[i * s->m] >= 0) set_add(&g, s->key + i * s->m);
@@ -44,11 +44,11 @@ static void set_grow(faceset *s)
     *s = g;
 }
 
-static void set_add(faceset *s, const int32_t *t)
+static void set_add(faceset *s, const lh_index *t)
 {
     if (2 * (s->size + 1) > s->cap) set_grow(s);
     for (size_t h = hash(t, s->m) & (s->cap - 1);; h = (h + 1) & (s->cap - 1)) {
-        int32_t *k = s->key + h * s->m;
+        lh_index *k = s->key + h * s->m;
         if (k[0] < 0) {
             memcpy(k, t, s->m * sizeof *t);
             s->size++;
@@ -66,11 +66,11 @@ static long euler(const lh_tri *t)
     for (int m = 1; m <= nv; m++) f[m - 1] = (faceset){NULL, 0, 0, m};
     for (int m = 1; m <= nv; m++) set_grow(&f[m - 1]);
     for (size_t s = 0; s < lh_tri_count(t); s++) {
-        int32_t v[MAXV], sub[MAXV];
+        lh_index v[MAXV], sub[MAXV];
         memcpy(v, lh_tri_simplices(t) + s * nv, nv * sizeof *v);
         for (int i = 1; i < nv; i++) /* insertion sort */
             for (int j = i; j > 0 && v[j - 1] > v[j]; j--) {
-                int32_t x = v[j];
+                lh_index x = v[j];
                 v[j] = v[j - 1];
                 v[j - 1] = x;
             }
@@ -114,7 +114,7 @@ static double absdet(double *a, int k)
 
 /* d! times the volume of the simplex with apex o over the m = d points v (or the
  * d+1 points of a full simplex when o is NULL). */
-static double cone(int d, const double *x, const double *o, const int32_t *v)
+static double cone(int d, const double *x, const double *o, const lh_index *v)
 {
     double a[MAXV * MAXV];
     const double *base = o ? o : x + (size_t)v[0] * d;
@@ -163,7 +163,7 @@ static void one_input(lh_test_state *lh_t_, uint64_t seed)
         LH_EXPECT_EQ_INT(euler(t), 1);
         check_volume(lh_t_, d, n, x, t);
         for (size_t i = 0; i < n; i++)
-            if (lh_tri_duplicate_of(t)[i] == (int32_t)i) LH_EXPECT_TRUE(lh_tri_vertex_simplex(t)[i] >= 0);
+            if (lh_tri_duplicate_of(t)[i] == (lh_index)i) LH_EXPECT_TRUE(lh_tri_vertex_simplex(t)[i] >= 0);
         check_insert(lh_t_, d, n, x, t);
         lh_tri_free(t);
     } else {

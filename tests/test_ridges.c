@@ -9,7 +9,7 @@
 #include <string.h>
 
 /* The lifted test, through the public predicate. */
-static int lifted(void *user, const int32_t *v, int32_t q)
+static int lifted(void *user, const lh_index *v, lh_index q)
 {
     lh__eng *e = user;
     const double *p[LH__ENGINE_MAX_DIM + 2];
@@ -25,7 +25,7 @@ LH_TEST(hashed_ridge_keys_give_the_same_triangulation)
     for (int d = 4; d <= 6 && !LH_FAILED(); d++)
         for (int f = 0; f < 3 && !LH_FAILED(); f++) {
             double *x = malloc(size[d] * d * sizeof *x);
-            int32_t *dup = malloc(size[d] * sizeof *dup);
+            lh_index *dup = malloc(size[d] * sizeof *dup);
             lh_fam_seed((uint64_t)(3 * d + f));
             size_t n = lh_fam_make(fams[f], d, size[d], x);
             lh__eng e;
@@ -37,11 +37,11 @@ LH_TEST(hashed_ridge_keys_give_the_same_triangulation)
             int affdim;
             LH_EXPECT_EQ_INT(lh__eng_build(&e, 1024, &affdim), LH_OK);
             const int nv = d + 1;
-            int32_t *raw = malloc((size_t)e.tds.top * nv * sizeof *raw);
-            int32_t *cells = malloc((size_t)e.tds.top * nv * sizeof *cells);
-            int32_t *order = malloc((size_t)e.tds.top * sizeof *order);
+            lh_index *raw = malloc((size_t)e.tds.top * nv * sizeof *raw);
+            lh_index *cells = malloc((size_t)e.tds.top * nv * sizeof *cells);
+            lh_index *order = malloc((size_t)e.tds.top * sizeof *order);
             size_t count = 0;
-            for (int32_t c = 0; c < e.tds.top; c++) {
+            for (lh_index c = 0; c < e.tds.top; c++) {
                 if (lh__tds_dead(&e.tds, c) || !lh__eng_finite(&e, c)) continue;
                 memcpy(raw + count * nv, e.tds.vert + (size_t)c * nv, (size_t)nv * sizeof *raw);
                 lh__canonical(raw + count * nv, nv);

@@ -1,7 +1,8 @@
-/* test_status.c — pinned status values, messages, names, version. */
+/* test_status.c — pinned status values, messages, names, version, index width. */
 #include "lh_test.h"
 #include "lifthull.h"
 
+#include <stdio.h>
 #include <string.h>
 
 LH_TEST(status_values_are_pinned)
@@ -39,10 +40,24 @@ LH_TEST(version_matches_header)
                      LH_VERSION_MAJOR * 10000 + LH_VERSION_MINOR * 100 + LH_VERSION_PATCH);
 }
 
+/* The library was built with the index width the header (lifthull_config.h) says. */
+LH_TEST(index_width_matches_header)
+{
+    LH_EXPECT_EQ_INT(lh_index_bits(), LH_INDEX_BITS);
+    LH_EXPECT_EQ_INT(LH_INDEX_BITS, 8 * (int)sizeof(lh_index));
+    LH_EXPECT_TRUE(LH_INDEX_BITS == 32 || LH_INDEX_BITS == 64);
+    LH_EXPECT_TRUE(LH_INDEX_MAX == (LH_INDEX_BITS == 64 ? INT64_MAX : INT32_MAX));
+    LH_EXPECT_TRUE(LH_READ_MAX_POINTS == LH_INDEX_MAX - 1);
+    char text[32];
+    snprintf(text, sizeof text, "%" LH_INDEX_PRI, (lh_index)-LH_INDEX_MAX);
+    LH_EXPECT_STREQ(text, LH_INDEX_BITS == 64 ? "-9223372036854775807" : "-2147483647");
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {LH_CASE(status_values_are_pinned),
                                          LH_CASE(status_messages_are_distinct),
-                                         LH_CASE(version_matches_header)};
+                                         LH_CASE(version_matches_header),
+                                         LH_CASE(index_width_matches_header)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

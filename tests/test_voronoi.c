@@ -39,7 +39,7 @@ LH_TEST(circumcenters_are_empty_sphere_centres)
             LH_ASSERT_TRUE(t);
             const double *c;
             LH_ASSERT_EQ_INT(lh_tri_circumcenters(t, &c), LH_OK);
-            const int32_t *s = lh_tri_simplices(t);
+            const lh_index *s = lh_tri_simplices(t);
             double worst = 0;
             for (size_t i = 0; i < lh_tri_count(t); i++) {
                 const double *ci = c + i * d;
@@ -110,10 +110,10 @@ LH_TEST(nearest_matches_brute_force)
                 int kind = i % 3; /* a site, a midpoint (ties), a random point */
                 for (int j = 0; j < d; j++)
                     q[j] = kind == 0 ? p[j] : kind == 1 ? 0.5 * (p[j] + r[j]) : 2.5 * lh_fam_unif() - 1.25;
-                int32_t best = -1, got = -2;
+                lh_index best = -1, got = -2;
                 for (size_t s = 0; s < n; s++)
                     if (best < 0 || lh_compare_distance(ctx, d, q, x + s * d, x + (size_t)best * d) < 0)
-                        best = (int32_t)s;
+                        best = (lh_index)s;
                 LH_EXPECT_EQ_INT(lh_tri_nearest(t, q, i % 2 ? -1 : 3, &got), LH_OK);
                 if (got != best) LH_NOTE("d=%d %s query %d", d, lh_fam_name[fams[f]], i);
                 LH_EXPECT_EQ_INT(got, best);
@@ -160,7 +160,7 @@ LH_TEST(interpolation_reproduces_affine_functions)
         LH_EXPECT_GT_U64(inside, m / 8);
         LH_ASSERT_EQ_INT(lh_tri_interpolate(t, LH_INTERP_NEAREST, m, q, 2, v, out), LH_OK);
         for (size_t i = 0; i < m; i++) {
-            int32_t s;
+            lh_index s;
             LH_ASSERT_EQ_INT(lh_tri_nearest(t, q + i * d, -1, &s), LH_OK);
             LH_EXPECT_EQ_DBL(out[2 * i], v[2 * s]);
         }
@@ -182,7 +182,7 @@ LH_TEST(bad_arguments)
 {
     const double x[8] = {0, 0, 1, 0, 0, 1, 1, 1}, q[2] = {0.5, NAN}, v[4] = {1, 2, 3, 4};
     double out[2];
-    int32_t s;
+    lh_index s;
     lh_tri *t = build(2, 4, x);
     LH_ASSERT_TRUE(t);
     LH_EXPECT_EQ_INT(lh_tri_nearest(t, q, -1, &s), LH_ERR_NONFINITE);

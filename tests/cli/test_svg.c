@@ -106,7 +106,7 @@ LH_TEST(neighbors_computed)
 LH_TEST(no_triangles)
 {
     static const double xy[] = {0, 0, 2, 1, 1, 3};
-    static const int32_t bad[] = {0, 1, 7};
+    static const lh_index bad[] = {0, 1, 7};
     lh_cli_svg s = {3, xy, 0, NULL, NULL, 1, 1, 1, 1, NULL};
     FILE *f = fopen("test_svg_sites.svg", "w");
     LH_ASSERT_TRUE(f != NULL);
@@ -173,7 +173,7 @@ LH_TEST(ten_thousand_sites)
 LH_TEST(write_error)
 {
     static const double xy[] = {0, 0, 1, 0, 0, 1};
-    static const int32_t tri[] = {0, 1, 2};
+    static const lh_index tri[] = {0, 1, 2};
     FILE *f = fopen("/dev/full", "w");
     if (!f) return; /* not on this system */
     lh_cli_svg s = {3, xy, 1, tri, NULL, 1, 1, 1, 1, NULL};

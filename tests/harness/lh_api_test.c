@@ -10,12 +10,12 @@ int lh_test_same_tri(const lh_tri *a, const lh_tri *b)
     if (k != lh_tri_simplex_dim(b) || n != lh_tri_site_count(b) || c != lh_tri_count(b) ||
         h != lh_tri_hull_count(b) || lh_tri_duplicate_count(a) != lh_tri_duplicate_count(b))
         return 0;
-    size_t s = (size_t)(k + 1) * c * sizeof(int32_t);
+    size_t s = (size_t)(k + 1) * c * sizeof(lh_index);
     return !memcmp(lh_tri_simplices(a), lh_tri_simplices(b), s) &&
            !memcmp(lh_tri_neighbors(a), lh_tri_neighbors(b), s) &&
-           !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)k * h * sizeof(int32_t)) &&
-           !memcmp(lh_tri_vertex_simplex(a), lh_tri_vertex_simplex(b), n * sizeof(int32_t)) &&
-           !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(int32_t));
+           !memcmp(lh_tri_hull_facets(a), lh_tri_hull_facets(b), (size_t)k * h * sizeof(lh_index)) &&
+           !memcmp(lh_tri_vertex_simplex(a), lh_tri_vertex_simplex(b), n * sizeof(lh_index)) &&
+           !memcmp(lh_tri_duplicate_of(a), lh_tri_duplicate_of(b), n * sizeof(lh_index));
 }
 
 long lh_test_every_failure(lh_test_state *lh_t_, lh_test_alloc_run run, const void *user)

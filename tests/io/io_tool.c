@@ -33,7 +33,7 @@ static int print_points(const lh_points *p)
     for (size_t i = 0; i < p->n; i++) {
         for (int j = 0; j < p->d; j++) printf("%s%.17g", j ? " " : "", p->xyz[i * (size_t)p->d + j]);
         for (int j = 0; j < p->attr_count; j++) printf(" %.17g", p->attr[i * (size_t)p->attr_count + j]);
-        if (p->marker) printf(" %d", (int)p->marker[i]);
+        if (p->marker) printf(" %" LH_INDEX_PRI, p->marker[i]);
         printf("\n");
     }
     return 0;
