@@ -9,6 +9,8 @@
  * incircle; a vertex exactly on the segment splits it there (Shewchuk & Brown 2015
  * §3). Cocircular ties keep the earlier vertex, so the result is deterministic.
  */
+#include <math.h>
+
 #include "m2.h"
 
 /* Triangles around vertex a: counterclockwise from vt[a] until back or at the
@@ -151,6 +153,7 @@ static lh_index start_wedge(lh__m2 *m, lh_index a, lh_index b, lh_index *u, int 
 static lh_status crossing(lh__m2 *m, lh_index s, lh_index parent, lh__m2_problem *pb)
 {
     pb->kind = LH__M2_CROSSING;
+    pb->sub = s;
     pb->seg[0] = parent;
     pb->seg[1] = m->sp[s];
     return LH_ERR_DEGENERATE;
@@ -231,6 +234,34 @@ static lh_status fill(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index end, lh_
     return lh__m2_cavity_apply(m, c);
 }
 
+/* Puts a vertex at the crossing of a-b with subsegment s (the intersection of the two
+ * lines, rounded once: it lies within an ulp or so of both), splitting s there
+ * (m2_insert.c). *x is the new vertex, or -1 when rounding put it where it cannot go
+ * (on an endpoint, or outside the two triangles beside s). */
+static lh_status split_crossing(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b, lh_index s,
+                                lh_index *x)
+{
+    const lh_index e = m->sv[2 * (size_t)s], f = m->sv[2 * (size_t)s + 1];
+    const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b), *pe = lh__m2_pt(m, e), *pf = lh__m2_pt(m, f);
+    const double bx = pb[0] - pa[0], by = pb[1] - pa[1], fx = pf[0] - pe[0], fy = pf[1] - pe[1];
+    const double t = ((pe[0] - pa[0]) * fy - (pe[1] - pa[1]) * fx) / (bx * fy - by * fx);
+    const double p[2] = {pa[0] + t * bx, pa[1] + t * by};
+    const double u = fabs(fx) > fabs(fy) ? (p[0] - pe[0]) / fx : (p[1] - pe[1]) / fy; /* along s */
+    lh__m2_ins r = {0};
+    lh_status st = lh__m2_insert_point(m, c, p, -1, s, &r);
+    lh__free(&m->al, r.enc);
+    *x = st == LH_OK && r.result == LH__M2_INSERTED ? r.vertex : -1;
+    if (*x < 0) return st;
+    const lh_index parent = m->sp[s];
+    m->pmark[*x] = parent >= 0 && m->seg_marker ? m->seg_marker[parent] : 0;
+    for (int j = 0; j < m->attr_count; j++) {
+        const size_t na = (size_t)m->attr_count;
+        m->attr[(size_t)*x * na + j] = (1 - u) * m->attr[(size_t)e * na + j] + u * m->attr[(size_t)f * na + j];
+    }
+    m->crossings++;
+    return LH_OK;
+}
+
 lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
                                 lh_index parent, lh__m2_problem *pb)
 {
@@ -245,9 +276,18 @@ lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_inde
             a = u;
             continue;
         }
-        if ((st = walk(m, c, a, b, t, parent, &end, pb)) != LH_OK ||
-            (st = fill(m, c, a, end, parent)) != LH_OK)
-            return st;
+        st = walk(m, c, a, b, t, parent, &end, pb);
+        if (st == LH_ERR_DEGENERATE && m->split_crossings && pb->kind == LH__M2_CROSSING) {
+            /* the first crossing from a: a-x crosses nothing, x-b is what is left */
+            lh_index x;
+            if ((st = split_crossing(m, c, a, b, pb->sub, &x)) != LH_OK) return st;
+            if (x < 0) return LH_ERR_DEGENERATE; /* pb still names the two segments */
+            pb->kind = 0;
+            if ((st = lh__m2_insert_segment(m, c, a, x, parent, pb)) != LH_OK) return st;
+            a = x;
+            continue;
+        }
+        if (st != LH_OK || (st = fill(m, c, a, end, parent)) != LH_OK) return st;
         a = end;
     }
     return LH_OK;

@@ -55,6 +55,8 @@ typedef struct lh__m2 {
     const lh_index *seg_marker;
     lh_index walk_hint;
     double lens;         /* encroachment: 0 diametral circles, else cos^2 2t (lenses) */
+    int split_crossings; /* segment insertion: a crossing gets a vertex, not an error */
+    size_t crossings;    /* vertices put at crossings                                */
 } lh__m2;
 
 /* Growth and storage (m2_store.c). Each returns LH_OK or LH_ERR_NOMEM. */
@@ -138,13 +140,15 @@ static inline int lh__m2_grow(lh__m2 *m, void **arr, size_t count, size_t *cap, 
 typedef struct lh__m2_problem {
     int kind;            /* LH__M2_CROSSING, or 0                                   */
     lh_index seg[2];     /* the input segments involved                             */
+    lh_index sub;        /* the subsegment crossed                                  */
 } lh__m2_problem;
 enum { LH__M2_CROSSING = 1 };
 
 /* Inserts input segment `parent` from vertex a to vertex b (Anglada 1997): the
  * triangles it crosses are replaced by the constrained Delaunay triangulations of
  * the two pseudo-polygons on its sides; vertices lying on it split it. A crossed
- * subsegment: LH_ERR_DEGENERATE with *pb filled. */
+ * subsegment: LH_ERR_DEGENERATE with *pb filled, or with m->split_crossings a vertex
+ * at the crossing splitting both (cdt_insert.c). */
 lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
                                 lh_index parent, lh__m2_problem *pb);
 /* The triangle holding the edge a->b (a before b counterclockwise), with *pos the

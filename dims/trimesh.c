@@ -96,7 +96,7 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, const 
             continue;
         }
         const size_t before = m->ns;
-        lh__m2_problem pb = {0, {-1, -1}};
+        lh__m2_problem pb = {0, {-1, -1}, -1};
         st = lh__m2_insert_segment(m, c, a, b, (lh_index)s, &pb);
         if (st == LH_ERR_DEGENERATE && pb.kind == LH__M2_CROSSING) {
             const size_t o = (size_t)pb.seg[1];
@@ -233,6 +233,7 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
         r->tattr = NULL;
     }
     r->stats.steiner_points = m->np - m->n_input;
+    r->stats.crossings_split = m->crossings;
     for (size_t p = m->n_input; p < m->np; p++) r->stats.steiner_on_segments += m->pseg[p] >= 0;
     r->bad = lh__alloc(&r->al, (nbad ? nbad : 1) * sizeof(lh_index));
     if (!r->bad) return LH_ERR_NOMEM;
@@ -288,6 +289,7 @@ lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
     r->stats.duplicates_merged = lh_tri_duplicate_count(dt);
     st = lh__m2_init(&m, &al, g->n, g->xy, g->attr_count, g->attr, g->vertex_marker);
     m.seg_marker = g->segment_marker;
+    m.split_crossings = o.split_crossings;
     if (st == LH_OK) st = constrain(&m, &c, g, dt, &r->stats, msg, msg_size);
     if (st == LH_OK) st = finish(r, &m, &c, g, &o, lh_tri_duplicate_of(dt), msg, msg_size);
     lh__m2_cavity_free(&m, &c);

@@ -328,6 +328,47 @@ LH_TEST(bad_input_gets_its_error_and_line)
     LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
 }
 
+/* split_crossings: an X becomes four segments meeting at a new vertex; earcut's
+ * self-crossing water polygons (proper crossings counted by the oracle harness: 2, 19,
+ * 65, 133) are meshed with one vertex per crossing. */
+LH_TEST(crossings_are_split_when_asked)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load_text("4 2 0 0\n1 0 0\n2 2 2\n3 0 2\n4 2 0\n2 0\n1 1 2\n2 3 4\n0\n", &g), LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.split_crossings = 1;
+    o.convex_hull = 1;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "X");
+    lh_trimesh_stats st;
+    if (m) {
+        lh_trimesh_get_stats(m, &st);
+        LH_EXPECT_EQ_U64(st.crossings_split, 1);
+        LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), 5);
+        LH_EXPECT_EQ_U64(lh_trimesh_triangle_count(m), 4);
+        const double *x = lh_trimesh_points(m) + 8;
+        LH_EXPECT_EQ_DBL(x[0], 1.0);
+        LH_EXPECT_EQ_DBL(x[1], 1.0);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+    static const struct { const char *file; size_t crossings; } water[] = {
+        {"polygons/simplified-us-border.json", 2}, {"polygons/water.json", 19}};
+    for (size_t i = 0; i < sizeof water / sizeof water[0]; i++) {
+        LH_ASSERT_EQ_INT(load(lh_rings_read, water[i].file, &g), LH_OK);
+        char msg[256];
+        LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_DEGENERATE);
+        o.convex_hull = 0;
+        m = mesh_checked(lh_t_, &g, &o, water[i].file);
+        if (m) {
+            lh_trimesh_get_stats(m, &st);
+            LH_EXPECT_EQ_U64(st.crossings_split, water[i].crossings);
+        }
+        lh_trimesh_free(m);
+        lh_pslg_free(&g);
+    }
+}
+
 LH_TEST(degenerate_input_is_resolved_and_reported)
 {
     /* vertex 5 duplicates 1, segment 5 has zero length after merging, segment 6
@@ -472,7 +513,7 @@ int main(int argc, char **argv)
         LH_CASE(quality_bound_met_but_at_small_input_angles), LH_CASE(conforming_delaunay_has_every_edge_delaunay),
         LH_CASE(area_bound_and_steiner_limit),
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
-        LH_CASE(degenerate_input_is_resolved_and_reported),
+        LH_CASE(crossings_are_split_when_asked), LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
         LH_CASE(the_check_rejects_what_is_not_a_cdt), LH_CASE(every_allocation_failure_is_survived),
     };

@@ -732,6 +732,10 @@ typedef struct lh_trimesh_options {
                                   any segment                                        */
     size_t max_steiner;        /* -S: at most this many Steiner points (default
                                   SIZE_MAX: no limit)                                */
+    int split_crossings;       /* 1: segments that cross get a vertex at their
+                                  crossing (the lines' intersection, rounded once) and
+                                  are split there; 0: crossing segments are an error
+                                  naming both (default 0)                            */
 } lh_trimesh_options;
 
 #define LH_TRIMESH_MAX_ANGLE 40.0 /* degrees: beyond it refinement need not end */
@@ -751,8 +755,10 @@ void lh_trimesh_options_default(lh_trimesh_options *opt);
  * vertices are merged into the first (each later one stays a point, in no triangle);
  * zero-length segments (after merging) are dropped; a segment overlapping another
  * shares its edges; a vertex lying on a segment splits it; a hole or region seed
- * outside the domain is ignored. Errors: segments that cross (LH_ERR_DEGENERATE,
- * naming both), all vertices collinear or fewer than 3 distinct (LH_ERR_DEGENERATE),
+ * outside the domain is ignored; segments that cross get a vertex at the crossing
+ * with opt->split_crossings. Errors: segments that cross (LH_ERR_DEGENERATE, naming
+ * both; also when split_crossings cannot place the rounded crossing), all vertices
+ * collinear or fewer than 3 distinct (LH_ERR_DEGENERATE),
  * a flood from the outside or a hole that removes every triangle (an unclosed
  * boundary: LH_ERR_DEGENERATE), a segment endpoint out of range or an option out of
  * range (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), LH_ERR_NOMEM.
@@ -793,7 +799,7 @@ const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m);
 typedef struct lh_trimesh_stats {
     size_t input_vertices, duplicates_merged, segments_dropped, segments_overlapping;
     size_t holes_ignored, regions_ignored;
-    size_t steiner_points, steiner_on_segments;
+    size_t steiner_points, steiner_on_segments, crossings_split;
     size_t triangles, bad_triangles; /* bad: below min_angle or above an area bound at
                                         the end (input angles, -S or -Y stopped them)   */
     double min_angle, max_angle, min_area, max_area;
