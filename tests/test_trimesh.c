@@ -369,6 +369,85 @@ LH_TEST(crossings_are_split_when_asked)
     }
 }
 
+/* earcut's degenerate rings (zero-area, self-touching, shared points, holes outside
+ * or touching, self-crossing): each meshed and exactly valid, or refused with
+ * LH_ERR_DEGENERATE and a message (crossings without split_crossings; an empty
+ * domain); with split_crossings none is refused for crossing. */
+LH_TEST(earcut_degenerate_rings_are_valid_or_refused_clearly)
+{
+    static const char *const files[] = {
+        "bad-diagonals", "bad-hole", "collinear-diagonal", "degenerate", "empty-square",
+        "filtered-bridge-jhl", "hole-touching-outer", "hourglass", "infinite-loop-jhl",
+        "issue107", "issue111", "issue119", "issue131", "issue142", "issue147", "issue149",
+        "issue16", "issue17", "issue186", "issue29", "issue45", "issue83", "outside-ring",
+        "self-tangent-1", "self-tangent-2", "self-tangent-3", "self-tangent-4", "self-touching",
+        "shared-points", "touching-holes", "touching-holes2", "touching-holes3",
+        "touching-holes4", "touching-holes5", "touching-holes6", "touching2", "touching3",
+        "touching4"};
+    size_t meshed = 0;
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        char path[128];
+        snprintf(path, sizeof path, "polygons/degenerate/%s.json", files[i]);
+        lh_pslg g;
+        LH_ASSERT_EQ_INT(load(lh_rings_read, path, &g), LH_OK);
+        for (int split = 0; split < 2; split++) {
+            lh_trimesh_options o;
+            lh_trimesh_options_default(&o);
+            o.split_crossings = split;
+            lh_trimesh *m = NULL;
+            char msg[256] = "", cmsg[256] = "";
+            lh_status st = lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg);
+            if (st == LH_OK) {
+                LH_EXPECT_EQ_INT(check(m, cmsg, sizeof cmsg), LH_OK);
+                if (cmsg[0]) LH_NOTE("%s: %s", files[i], cmsg);
+                meshed += split;
+            } else {
+                if (st != LH_ERR_DEGENERATE || !msg[0]) LH_NOTE("%s split %d: %s %s", files[i], split, lh_status_name(st), msg);
+                LH_EXPECT_EQ_INT(st, LH_ERR_DEGENERATE);
+                LH_EXPECT_TRUE(msg[0] != 0);
+                if (split) LH_EXPECT_TRUE(strstr(msg, "crosses") == NULL);
+            }
+            lh_trimesh_free(m);
+        }
+        lh_pslg_free(&g);
+    }
+    LH_NOTE("%zu of %zu meshed with split_crossings", meshed, sizeof files / sizeof files[0]);
+    LH_EXPECT_GE_INT(meshed, 30);
+}
+
+/* CGAL's Mesh_2 regression: an edge 8e-16 long among nine constraints. */
+LH_TEST(cgal_tiny_edge_is_meshed)
+{
+    char full[512];
+    snprintf(full, sizeof full, "%s/degenerate/cgal_issue_781_very_tiny_edge.txt", LH_TEST_DATA_DIR);
+    FILE *f = fopen(full, "r");
+    LH_ASSERT_TRUE(f != NULL);
+    double xy[40];
+    lh_index seg[18];
+    size_t np = 0, k;
+    LH_ASSERT_TRUE(fscanf(f, "%zu", &k) == 1 && k == 1);
+    LH_ASSERT_TRUE(fscanf(f, "%lf %lf", xy, xy + 1) == 2);
+    np = 1;
+    LH_ASSERT_TRUE(fscanf(f, "%zu", &k) == 1 && k == 9);
+    for (size_t s = 0; s < 9; s++) {
+        LH_ASSERT_TRUE(fscanf(f, "%lf %lf %lf %lf", xy + 2 * np, xy + 2 * np + 1, xy + 2 * np + 2, xy + 2 * np + 3) == 4);
+        seg[2 * s] = (lh_index)np, seg[2 * s + 1] = (lh_index)np + 1;
+        np += 2;
+    }
+    fclose(f);
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = np, g.xy = xy, g.segment_count = 9, g.segments = seg;
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.convex_hull = 1;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "tiny edge");
+    lh_trimesh_free(m);
+    o.min_angle = 20.7;
+    m = mesh_checked(lh_t_, &g, &o, "tiny edge -q20.7");
+    lh_trimesh_free(m);
+}
+
 LH_TEST(degenerate_input_is_resolved_and_reported)
 {
     /* vertex 5 duplicates 1, segment 5 has zero length after merging, segment 6
@@ -513,7 +592,8 @@ int main(int argc, char **argv)
         LH_CASE(quality_bound_met_but_at_small_input_angles), LH_CASE(conforming_delaunay_has_every_edge_delaunay),
         LH_CASE(area_bound_and_steiner_limit),
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
-        LH_CASE(crossings_are_split_when_asked), LH_CASE(degenerate_input_is_resolved_and_reported),
+        LH_CASE(crossings_are_split_when_asked), LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
+        LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
         LH_CASE(the_check_rejects_what_is_not_a_cdt), LH_CASE(every_allocation_failure_is_survived),
     };
