@@ -10,7 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static int same_file(const char *a, const char *b)
+int lh_cli_same_file(const char *a, const char *b)
 {
     struct stat sa, sb;
     return a && b && stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
@@ -49,7 +49,7 @@ int lh_cli_out_open(lh_cli_out *o, const char *cmd, const char *path, int replac
         o->f = stdout;
         return 1;
     }
-    if (same_file(path, input)) {
+    if (lh_cli_same_file(path, input)) {
         fprintf(stderr, "lifthull %s: '%s' is the input file; it is not overwritten\n", cmd, path);
         return 0;
     }

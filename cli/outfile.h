@@ -25,4 +25,7 @@ int lh_cli_out_open(lh_cli_out *o, const char *cmd, const char *path, int replac
  * after printing the problem. */
 int lh_cli_out_close(lh_cli_out *o, const char *cmd, int ok);
 
+/* Whether a and b (either may be NULL) name one existing file (device and inode). */
+int lh_cli_same_file(const char *a, const char *b);
+
 #endif

@@ -13,6 +13,8 @@ typedef struct lh_cli_pslg {
     lh_pslg g;          /* the graph (for a .node: pointing into pts)  */
     lh_points pts;      /* a .node's points                            */
     const char *path;   /* the file read                               */
+    char *node_path;    /* BASE.node when the .poly had no vertices (read
+                           too, so never written), or NULL              */
     int kind;           /* LH_CLI_*                                    */
 } lh_cli_pslg;
 
@@ -34,8 +36,8 @@ typedef struct lh_cli_tri_files {
 
 /* Writes the files BASE.node etc. whole or not at all (each to a temporary file,
  * all renamed at the end; none left behind on failure); in supplies the holes and
- * regions for .poly. Never replaces the input file. Returns 0 (LH_EXIT_OK) or
- * LH_EXIT_FAIL after printing the problem. */
+ * regions for .poly. Never replaces an input file (in->path, in->node_path).
+ * Returns 0 (LH_EXIT_OK) or LH_EXIT_FAIL after printing the problem. */
 int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
                          const lh_cli_tri_files *w, const char *cmd);
 

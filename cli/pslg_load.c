@@ -36,7 +36,7 @@ static int attach_node(lh_cli_pslg *in, const char *base)
     if (st == LH_OK && (st = lh_pslg_take_points(&in->g, &pts)) != LH_OK)
         fprintf(stderr, "%s: %s\n", node, lh_status_message(st));
     lh_points_free(&pts);
-    free(node);
+    in->node_path = node; /* an input too: never written */
     return st == LH_OK;
 }
 
@@ -89,6 +89,7 @@ void lh_cli_pslg_free(lh_cli_pslg *in)
 {
     lh_pslg_free(&in->g);
     lh_points_free(&in->pts);
+    free(in->node_path);
     memset(in, 0, sizeof *in);
 }
 

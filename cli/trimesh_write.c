@@ -178,7 +178,12 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
         if (!path[i]) { ok = 0; break; }
         memcpy(path[i], base, len);
         strcpy(path[i] + len, ext[i]);
-        /* Triangle replaces its outputs; the input itself never */
+        /* Triangle replaces its outputs; the inputs themselves never */
+        if (lh_cli_same_file(path[i], in->node_path)) {
+            fprintf(stderr, "lifthull %s: '%s' is an input file; it is not overwritten\n", cmd, path[i]);
+            ok = 0;
+            break;
+        }
         if (!lh_cli_out_open(&out[i], cmd, path[i], 1, in->path)) { ok = 0; break; }
         FILE *f = out[i].f;
         switch (i) {
