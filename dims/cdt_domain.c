@@ -7,7 +7,9 @@
  * rule for polygon rings: crossing a subsegment lain along by an odd number of input
  * segments changes sides; the triangles on the odd side stay. Regions flood the same
  * way from their seeds, later seeds overriding earlier ones, as in Triangle.
- * Afterwards every boundary edge is a subsegment (hull edges kept by -c become
+ * With an existing mesh to refine (lh_pslg.cover), its triangles are the domain
+ * (cdt_cover.c) and only the holes' floods carve. Afterwards every boundary edge is a
+ * subsegment (hull edges kept by -c become
  * subsegments of no input segment), which is what refinement relies on.
  */
 #include <string.h>
@@ -161,11 +163,17 @@ static lh_status regions(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, size_t *
 lh_status lh__m2_domain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, int convex_hull,
                         size_t *holes_ignored, size_t *regions_ignored)
 {
+    lh__cover *cv = m->cover;
     const uint32_t e = lh__m2_new_epoch(m);
-    lh_status st = g->even_odd ? even_odd(m, c, e) : infect(m, c, g, convex_hull, e, holes_ignored);
+    lh_status st;
+    if (cv) /* the old mesh is the domain; holes are still carved */
+        st = lh__cover_outside(m, c, cv, e);
+    else
+        st = g->even_odd ? even_odd(m, c, e) : LH_OK;
+    if (st == LH_OK && !g->even_odd) st = infect(m, c, g, convex_hull || cv, e, holes_ignored);
     if (st != LH_OK) return st;
     carve(m, e);
     if (m->live == 0) return LH_ERR_DEGENERATE;
-    if ((st = seal(m)) != LH_OK) return st;
-    return regions(m, c, g, regions_ignored);
+    if ((st = seal(m)) != LH_OK || (st = regions(m, c, g, regions_ignored)) != LH_OK) return st;
+    return cv && g->cover_area ? lh__cover_areas(m, cv, g->cover_area) : LH_OK;
 }

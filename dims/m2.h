@@ -56,6 +56,7 @@ typedef struct lh__m2 {
     lh_index walk_hint;
     double lens;         /* encroachment: 0 diametral circles, else cos^2 2t (lenses) */
     int split_crossings; /* segment insertion: a crossing gets a vertex, not an error */
+    struct lh__cover *cover; /* an existing mesh to refine, whose union is the domain */
     size_t crossings;    /* vertices put at crossings                                */
 } lh__m2;
 
@@ -191,6 +192,8 @@ lh_status lh__m2_from_delaunay(lh__m2 *m, const lh_tri *dt);
  * *blocked is the subsegment met (else -1) and the result the triangle before it. */
 lh_index lh__m2_locate(lh__m2 *m, lh_index start, const double *p, int stop_at_segments,
                        lh_index *blocked);
+/* Every live triangle in turn: the first holding p (closed), or -1. */
+lh_index lh__m2_scan(const lh__m2 *m, const double *p);
 /* The straight walk from g, inside triangle t, to p (m2_locate.c): the triangle
  * holding p, or the one before the subsegment crossed (*blocked), or -1 outside. */
 lh_index lh__m2_walk_line(lh__m2 *m, lh_index t, const double *g, const double *p,

@@ -15,7 +15,7 @@ static int contains(const lh__m2 *m, lh_index t, const double *p)
            lh__m2_orient_pt(m, v[2], v[0], p) >= 0;
 }
 
-static lh_index scan(const lh__m2 *m, const double *p)
+lh_index lh__m2_scan(const lh__m2 *m, const double *p)
 {
     for (size_t t = 0; t < m->nt; t++)
         if (m->v[3 * t] >= 0 && contains(m, (lh_index)t, p)) return (lh_index)t;
@@ -27,7 +27,7 @@ lh_index lh__m2_locate(lh__m2 *m, lh_index start, const double *p, int stop_at_s
 {
     *blocked = -1;
     if (start < 0 || m->v[3 * (size_t)start] < 0) start = m->walk_hint;
-    if (start < 0 || m->v[3 * (size_t)start] < 0) return scan(m, p);
+    if (start < 0 || m->v[3 * (size_t)start] < 0) return lh__m2_scan(m, p);
     uint32_t rot = (uint32_t)start * 2654435761u;
     lh_index t = start;
     for (size_t step = 0, limit = 4 * m->live + 64; step < limit; step++) {
@@ -52,7 +52,7 @@ lh_index lh__m2_locate(lh__m2 *m, lh_index start, const double *p, int stop_at_s
             return t;
         }
     }
-    return scan(m, p);
+    return lh__m2_scan(m, p);
 }
 
 /* The straight walk along g -> p from triangle t, which holds g: each step leaves

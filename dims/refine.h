@@ -24,6 +24,29 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o);
 lh_status lh__m2_bad_triangles(lh__m2 *m, const lh__refine_opts *o, lh_index *bad,
                                size_t *count);
 
+/* An existing mesh to refine (cdt_cover.c): its triangles, linked, and its boundary
+ * edges (2 vertices each, the old interior on the left). */
+typedef struct lh__cover { /* m2.h's struct lh__cover */
+    lh__m2 mesh;
+    lh_index *old;       /* per triangle of mesh: its index in lh_pslg.cover      */
+    lh_index *bnd;
+    size_t bnd_count;
+} lh__cover;
+/* The subsegment parent of boundary edge i, and back (the map is an involution). */
+#define LH__COVER_PARENT(i) (-(lh_index)(i) - 2)
+
+lh_status lh__cover_build(lh__cover *cv, const lh_allocator *al, const lh_pslg *g,
+                          const lh_index *dup);
+void lh__cover_free(lh__cover *cv);
+/* Inserts the boundary edges as segments (before the input's). */
+lh_status lh__cover_segments(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv,
+                             lh__m2_problem *pb);
+/* Marks with epoch e the triangles outside the old mesh. */
+lh_status lh__cover_outside(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, uint32_t e);
+/* m->tarea[t] = area[old triangle holding t's centroid], for every live t. */
+lh_status lh__cover_areas(lh__m2 *m, lh__cover *cv, const double *area);
+
+/* The domain (cdt_domain.c): Triangle's flood, the even-odd rule, or m->cover. */
 lh_status lh__m2_domain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, int convex_hull,
                         size_t *holes_ignored, size_t *regions_ignored);
 

@@ -89,6 +89,11 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, const 
     lh_status st = lh__m2_from_delaunay(m, dt);
     if (st != LH_OK) return st;
     const long long base = g->first_index;
+    lh__m2_problem pb0 = {0, {-1, -1}, -1};
+    if (m->cover && (st = lh__cover_segments(m, c, m->cover, &pb0)) != LH_OK) {
+        if (st == LH_ERR_DEGENERATE) say(msg, size, NULL, 0, "the mesh to refine has crossing edges");
+        return st;
+    }
     for (size_t s = 0; s < g->segment_count; s++) {
         const lh_index a = dup[g->segments[2 * s]], b = dup[g->segments[2 * s + 1]];
         if (a == b) {
@@ -290,10 +295,20 @@ lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
     st = lh__m2_init(&m, &al, g->n, g->xy, g->attr_count, g->attr, g->vertex_marker);
     m.seg_marker = g->segment_marker;
     m.split_crossings = o.split_crossings;
+    lh__cover cover;
+    memset(&cover, 0, sizeof cover);
+    if (st == LH_OK && g->cover_count) {
+        st = lh__cover_build(&cover, &al, g, lh_tri_duplicate_of(dt));
+        if (st == LH_ERR_INVALID_ARGUMENT || st == LH_ERR_DEGENERATE)
+            say(msg, msg_size, NULL, 0, st == LH_ERR_DEGENERATE ? "the mesh to refine has no triangle of positive area"
+                : "the mesh to refine names a point that does not exist, or has an edge of three triangles");
+        m.cover = &cover;
+    }
     if (st == LH_OK) st = constrain(&m, &c, g, dt, &r->stats, msg, msg_size);
     if (st == LH_OK) st = finish(r, &m, &c, g, &o, lh_tri_duplicate_of(dt), msg, msg_size);
     lh__m2_cavity_free(&m, &c);
     lh__m2_free(&m);
+    lh__cover_free(&cover);
     lh_tri_free(dt);
     if (st != LH_OK) {
         if (st == LH_ERR_INTERNAL && msg && !msg[0]) say(msg, msg_size, NULL, 0, "internal consistency check failed");

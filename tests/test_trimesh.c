@@ -448,6 +448,83 @@ LH_TEST(cgal_tiny_edge_is_meshed)
     lh_trimesh_free(m);
 }
 
+/* Refining an existing mesh (Triangle's -ra): bbox.1's 12 triangles with their area
+ * bounds (-1: none) are the domain; the result covers exactly their union and every
+ * new triangle meets the bound of the old one holding its centroid. */
+LH_TEST(an_existing_mesh_is_refined_with_its_area_bounds)
+{
+    char path[512], msg[256];
+    lh_points pts;
+    lh_cells cells;
+    snprintf(path, sizeof path, "%s/triangle/bbox.1.node", LH_TEST_DATA_DIR);
+    FILE *f = fopen(path, "r");
+    LH_ASSERT_TRUE(f != NULL);
+    LH_ASSERT_EQ_INT(lh_points_read(f, "bbox.1.node", LH_FORMAT_NODE, NULL, &pts, msg, sizeof msg), LH_OK);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/triangle/bbox.1.ele", LH_TEST_DATA_DIR);
+    f = fopen(path, "r");
+    LH_ASSERT_TRUE(f != NULL);
+    LH_ASSERT_EQ_INT(lh_cells_read(f, "bbox.1.ele", pts.n, NULL, &cells, msg, sizeof msg), LH_OK);
+    fclose(f);
+    LH_ASSERT_EQ_INT(cells.nv, 3);
+    double area[12];
+    snprintf(path, sizeof path, "%s/triangle/bbox.1.area", LH_TEST_DATA_DIR);
+    f = fopen(path, "r");
+    LH_ASSERT_TRUE(f != NULL);
+    size_t k = 0;
+    LH_ASSERT_TRUE(fscanf(f, "%zu", &k) == 1 && k == 12 && cells.count == 12);
+    for (size_t i = 0; i < 12; i++) {
+        int num;
+        LH_ASSERT_TRUE(fscanf(f, "%d %lf", &num, area + i) == 2);
+    }
+    fclose(f);
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = pts.n, g.xy = pts.xyz, g.cover_count = cells.count, g.cover = cells.v, g.cover_area = area;
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.region_areas = 1;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "bbox -ra");
+    if (m) {
+        double old_total = 0, total = 0;
+        for (size_t i = 0; i < 12; i++) {
+            const double *a = pts.xyz + 2 * (size_t)cells.v[3 * i], *b = pts.xyz + 2 * (size_t)cells.v[3 * i + 1],
+                         *c = pts.xyz + 2 * (size_t)cells.v[3 * i + 2];
+            old_total += fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
+        }
+        const double *xy = lh_trimesh_points(m);
+        const lh_index *t = lh_trimesh_triangles(m);
+        size_t bounded = 0;
+        for (size_t i = 0; i < lh_trimesh_triangle_count(m); i++) {
+            const double *a = xy + 2 * (size_t)t[3 * i], *b = xy + 2 * (size_t)t[3 * i + 1], *c = xy + 2 * (size_t)t[3 * i + 2];
+            const double ar = ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
+            total += ar;
+            const double p[2] = {(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3};
+            for (size_t j = 0; j < 12; j++) { /* the old triangle holding the centroid */
+                const double *u = pts.xyz + 2 * (size_t)cells.v[3 * j], *v = pts.xyz + 2 * (size_t)cells.v[3 * j + 1],
+                             *w = pts.xyz + 2 * (size_t)cells.v[3 * j + 2];
+                const double s1 = (v[0] - u[0]) * (p[1] - u[1]) - (v[1] - u[1]) * (p[0] - u[0]);
+                const double s2 = (w[0] - v[0]) * (p[1] - v[1]) - (w[1] - v[1]) * (p[0] - v[0]);
+                const double s3 = (u[0] - w[0]) * (p[1] - w[1]) - (u[1] - w[1]) * (p[0] - w[0]);
+                if ((s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0)) {
+                    if (area[j] > 0) LH_EXPECT_LE_DBL(ar, area[j]), bounded++;
+                    break;
+                }
+            }
+        }
+        LH_EXPECT_TRUE(fabs(total - old_total) <= 1e-12 * old_total);
+        LH_EXPECT_GT_U64(bounded, 10);
+        LH_EXPECT_GT_U64(lh_trimesh_triangle_count(m), 12);
+    }
+    lh_trimesh_free(m);
+    /* a cover naming a point that does not exist */
+    cells.v[0] = (lh_index)pts.n;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "the mesh to refine names a point that does not exist, or has an edge of three triangles");
+    lh_cells_free(&cells);
+    lh_points_free(&pts);
+}
+
 LH_TEST(degenerate_input_is_resolved_and_reported)
 {
     /* vertex 5 duplicates 1, segment 5 has zero length after merging, segment 6
@@ -593,7 +670,8 @@ int main(int argc, char **argv)
         LH_CASE(area_bound_and_steiner_limit),
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
         LH_CASE(crossings_are_split_when_asked), LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
-        LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(degenerate_input_is_resolved_and_reported),
+        LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
+        LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
         LH_CASE(the_check_rejects_what_is_not_a_cdt), LH_CASE(every_allocation_failure_is_survived),
     };

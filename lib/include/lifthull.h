@@ -674,6 +674,15 @@ typedef struct lh_pslg {
                                   seeds then unneeded); 0: Triangle's rule, the convex
                                   hull minus what a flood from the outside and from each
                                   hole seed reaches without crossing a segment           */
+    size_t cover_count;        /* refining an existing mesh (Triangle's -r): its triangles
+                                  (3 vertex indices each, either orientation) are the
+                                  domain instead of the rules above, and its boundary
+                                  edges are segments; 0: none. Caller's arrays (no
+                                  reader fills them; lh_pslg_free leaves them)           */
+    lh_index *cover;
+    double *cover_area;        /* cover_count area bounds (<= 0: none), applied like the
+                                  regions' with lh_trimesh_options.region_areas (-ra); or
+                                  NULL                                                   */
     int first_index;           /* readers: the file's first number, 0 or 1; else 0        */
     /* readers only (NULL otherwise): the line of the file where each item was read,
        so that a diagnostic can name it (1-based lines) */
