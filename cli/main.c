@@ -24,6 +24,7 @@ static const command commands[] = {
     {"qvoronoi", lh_cli_qvoronoi, "Qhull's qvoronoi, exact: same options and formats (o p Fv Fi Fo ...)"},
     {"qconvex", lh_cli_qconvex, "Qhull's qconvex, exact: same options and formats (i o n Fn FN ...)"},
     {"triangle", lh_cli_triangle, "Triangle's 2D meshing, exact: same switches and files (-pq30a0.1 A.poly)"},
+    {"mesh", lh_cli_mesh, "2D quality meshing of a .poly, .node or polygon rings (VTK, Gmsh, Triangle, SVG)"},
     {"selfcheck", lh_cli_selfcheck, "check the exact predicates on near-degenerate cases"},
 };
 enum { n_commands = sizeof commands / sizeof commands[0] };

@@ -32,6 +32,8 @@ typedef struct lh_cli_tri_files {
     int markers;          /* boundary markers in the files (not B)              */
     int base;             /* first number, 0 (z) or 1                           */
     int jettison;         /* leave out points in no triangle, renumbering (j)   */
+    int no_replace;       /* refuse to replace existing files (mesh without -f;
+                             Triangle replaces its outputs)                    */
 } lh_cli_tri_files;
 
 /* Writes the files BASE.node etc. whole or not at all (each to a temporary file,
@@ -43,5 +45,10 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
 
 /* The quality report: counts, angle and area ranges, an angle histogram. */
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle);
+
+/* An SVG picture of m (mesh_svg.c): triangles shaded by their smallest angle, red
+ * below min_angle (0: no bound), the subsegments thick, the bad triangles outlined
+ * red, a legend headed by title. Returns 0, or -1 on a write error or out of memory. */
+int lh_cli_trimesh_svg(FILE *f, const lh_trimesh *m, double min_angle, const char *title);
 
 #endif

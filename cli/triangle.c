@@ -206,7 +206,7 @@ int lh_cli_triangle(int argc, char **argv)
 {
     sw o;
     memset(&o, 0, sizeof o);
-    o.files = (lh_cli_tri_files){1, 1, 0, 0, 0, 0, 1, 1, 0};
+    o.files = (lh_cli_tri_files){1, 1, 0, 0, 0, 0, 1, 1, 0, 0};
     const char *file = NULL;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {

@@ -184,7 +184,7 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
             ok = 0;
             break;
         }
-        if (!lh_cli_out_open(&out[i], cmd, path[i], 1, in->path)) { ok = 0; break; }
+        if (!lh_cli_out_open(&out[i], cmd, path[i], !w->no_replace, in->path)) { ok = 0; break; }
         FILE *f = out[i].f;
         switch (i) {
         case 0: write_node(f, &c); break;

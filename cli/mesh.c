@@ -1,0 +1,329 @@
+/* mesh.c — `lifthull mesh`: 2D meshing with lifthull's own long options — the
+ * computation of `lifthull triangle` (lh_triangulate_pslg: constrained Delaunay
+ * triangulation of a .poly, .node or JSON rings, optionally refined), written in the
+ * format -o's extension names, or the quality report on standard output. */
+#define _POSIX_C_SOURCE 200809L /* open_memstream */
+#include "cli.h"
+#include "outfile.h"
+#include "pslg_io.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char help[] =
+    "usage: lifthull mesh [OPTIONS] FILE[.poly|.node|.json] [-o OUT [-f]]\n"
+    "\n"
+    "The constrained Delaunay triangulation of a planar straight-line graph (Triangle's\n"
+    "FILE.poly; a .poly without vertices takes FILE.node's), of a point set (FILE.node)\n"
+    "or of polygons with holes (FILE.json: [[[x,y],...], hole, ...], even-odd rule),\n"
+    "restricted to its domain and refined on request (Ruppert/Shewchuk Delaunay\n"
+    "refinement with off-centres). Exact: every segment is kept, every other edge is\n"
+    "locally Delaunay. The same computation as `lifthull triangle`, spelled the\n"
+    "lifthull way.\n"
+    "\n"
+    "Output: without -o the quality report (counts, angle and area ranges, an angle\n"
+    "histogram, the triangles left below the bounds) on standard output; with -o OUT\n"
+    "the format its extension names, written whole or not at all, never an input:\n"
+    "  .vtu   VTK (ParaView): triangles, neighbours, point data 'marker' (boundary\n"
+    "         markers), cell data 'region' with --attributes\n"
+    "  .msh   Gmsh 4.1 (markers as node data)    .off  OFF\n"
+    "  .node  Triangle's files OUT.node, OUT.ele, and OUT.poly for a .poly or .json\n"
+    "         input (.ele names the same three)\n"
+    "  .svg   a picture: triangles shaded by their smallest angle, those below the\n"
+    "         bound red, the segments drawn thick\n"
+    "\n"
+    "options:\n"
+    "  --min-angle DEG        refine until no angle is below DEG degrees (0..40;\n"
+    "                         default 0: no bound); angles between input segments\n"
+    "                         below it stay, their triangles reported\n"
+    "  --quality              the same with 20 degrees (unless --min-angle is given)\n"
+    "  --max-area A           refine until no triangle's area is above A\n"
+    "  --region-areas         the .poly regions' area bounds apply\n"
+    "  --attributes           each triangle gets its region's attribute\n"
+    "  --convex-hull          keep the convex hull (no carving from the outside)\n"
+    "  --conforming           split segments until every triangle is Delaunay\n"
+    "  --no-boundary-steiner  no Steiner points on boundary segments (Triangle's -Y)\n"
+    "  --no-segment-steiner   no Steiner points on any segment (Triangle's -YY)\n"
+    "  --max-steiner N        at most N Steiner points\n"
+    "  --ignore-holes         ignore the .poly's holes\n"
+    "  --split-crossings      segments that cross get a vertex at the crossing\n"
+    "                         (default: an error naming both)\n"
+    "  --report               print the quality report as well as writing -o\n"
+    "  -o OUT                 write OUT; an existing file needs -f\n"
+    "  -f                     -o may replace existing files\n"
+    "  -q                     no summary line after writing -o\n"
+    "\n"
+    "examples:\n"
+    "  lifthull mesh A.poly --min-angle 30                quality report\n"
+    "  lifthull mesh A.poly --min-angle 30 --max-area 0.01 -o A.vtu\n"
+    "  lifthull mesh face.poly --quality -o face.svg\n"
+    "  lifthull mesh lake.json --min-angle 25 -o lake.node   lake.node/.ele/.poly\n"
+    "\n"
+    "exit codes: 0 done (triangles below the bounds are reported, not an error), 1 out\n"
+    "of memory or an output file could not be written, 2 usage, 3 bad input file\n"
+    "(unreadable, malformed, crossing segments, an empty domain, collinear points).\n";
+
+typedef struct mesh_args {
+    lh_trimesh_options opt;
+    const char *file, *output;
+    int force, quiet, report, ignore_holes, quality, angle_given;
+} mesh_args;
+
+static int usage_error(const char *what, const char *arg)
+{
+    fprintf(stderr, "lifthull mesh: %s '%s' (lifthull mesh --help)\n", what, arg);
+    return -1;
+}
+
+/* The value of option `name`: a number within lo..hi (whole with `whole`). Returns
+ * 1, or 0 after printing the problem. */
+static int number(const char *name, const char *s, double lo, double hi, int whole, double *out)
+{
+    char *end;
+    const double x = strtod(s, &end);
+    if (end == s || *end || !(x >= lo && x <= hi) || (whole && (!s[0] || s[strspn(s, "0123456789")]))) {
+        char what[96];
+        snprintf(what, sizeof what, "%s takes %s from %g to %g, not", name, whole ? "a whole number" : "a number",
+                 lo, hi);
+        usage_error(what, s);
+        return 0;
+    }
+    *out = x;
+    return 1;
+}
+
+/* Returns 0 to go on, 1 after --help, -1 after a usage error. */
+static int parse(mesh_args *a, int argc, char **argv)
+{
+    memset(a, 0, sizeof *a);
+    lh_trimesh_options_default(&a->opt);
+    static const char *const valued[] = {"-o", "--min-angle", "--max-area", "--max-steiner", "--threads"};
+    for (int i = 0; i < argc; i++) {
+        const char *s = argv[i];
+        if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+            fputs(help, stdout);
+            return 1;
+        }
+        if (s[0] != '-' || !s[1]) {
+            if (a->file) return usage_error("one input file only, not also", s);
+            a->file = s;
+            continue;
+        }
+        const char *v = NULL;
+        for (size_t k = 0; k < sizeof valued / sizeof valued[0]; k++)
+            if (!strcmp(s, valued[k])) {
+                if (i + 1 == argc) return usage_error("a value is needed after", s);
+                v = argv[++i];
+            }
+        double x;
+        if (!strcmp(s, "-o")) a->output = v;
+        else if (!strcmp(s, "-f")) a->force = 1;
+        else if (!strcmp(s, "-q")) a->quiet = 1;
+        else if (!strcmp(s, "--report")) a->report = 1;
+        else if (!strcmp(s, "--quality")) a->quality = 1;
+        else if (!strcmp(s, "--region-areas")) a->opt.region_areas = 1;
+        else if (!strcmp(s, "--attributes")) a->opt.region_attributes = 1;
+        else if (!strcmp(s, "--convex-hull")) a->opt.convex_hull = 1;
+        else if (!strcmp(s, "--conforming")) a->opt.conforming = 1;
+        else if (!strcmp(s, "--split-crossings")) a->opt.split_crossings = 1;
+        else if (!strcmp(s, "--no-boundary-steiner")) a->opt.boundary_steiner = a->opt.boundary_steiner < 0 ? -1 : 0;
+        else if (!strcmp(s, "--no-segment-steiner")) a->opt.boundary_steiner = -1;
+        else if (!strcmp(s, "--ignore-holes")) a->ignore_holes = 1;
+        else if (!strcmp(s, "--min-angle")) {
+            if (!number(s, v, 0, LH_TRIMESH_MAX_ANGLE, 0, &a->opt.min_angle)) return -1;
+            a->angle_given = 1;
+        } else if (!strcmp(s, "--max-area")) {
+            if (!number(s, v, 0, 1e308, 0, &a->opt.max_area)) return -1;
+        } else if (!strcmp(s, "--max-steiner")) {
+            if (!number(s, v, 0, 1e15, 1, &x)) return -1;
+            a->opt.max_steiner = (size_t)x;
+        } else if (!strcmp(s, "--threads")) { /* every command takes it; one thread for now */
+            if (!number(s, v, 1, 4096, 1, &x)) return -1;
+            if (x > 1) fprintf(stderr, "lifthull mesh: --threads %s: one thread for now (reserved for the parallel engine)\n", v);
+        } else {
+            return usage_error("unknown option", s);
+        }
+    }
+    if (a->quality && !a->angle_given) a->opt.min_angle = 20;
+    if (!a->file) {
+        fprintf(stderr, "lifthull mesh: an input file is needed (lifthull mesh --help)\n");
+        return -1;
+    }
+    return 0;
+}
+
+/* What the end of name says: one of the `n` extensions (its index), or -1. */
+static int ext_index(const char *name, const char *const *exts, int n, size_t *stem)
+{
+    const size_t len = strlen(name);
+    for (int i = 0; i < n; i++) {
+        const size_t e = strlen(exts[i]);
+        if (len > e && !strcmp(name + len - e, exts[i]) && name[len - e - 1] != '/') {
+            *stem = len - e;
+            return i;
+        }
+    }
+    return -1;
+}
+
+enum { OUT_VTU, OUT_MSH, OUT_OFF, OUT_NODE, OUT_ELE, OUT_SVG, OUT_COUNT };
+static const char *const out_ext[OUT_COUNT] = {".vtu", ".msh", ".off", ".node", ".ele", ".svg"};
+
+/* The region attribute as VTK cell data, spliced into lh_write_vtu's document (the
+ * library's view carries point data only): before the line that closes its
+ * CellData (the neighbours are always there), else a CellData of its own before
+ * the Piece ends. Returns 1, or 0 on a write error. */
+static int vtu_with_regions(FILE *out, const lh_mesh_view *v, const double *region, lh_status *st)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&buf, &len);
+    if (!mem) {
+        *st = LH_ERR_NOMEM;
+        return 0;
+    }
+    *st = lh_write_vtu(mem, v);
+    if (fclose(mem) != 0 && *st == LH_OK) *st = LH_ERR_NOMEM;
+    int ok = *st == LH_OK;
+    if (ok) {
+        const char *close = strstr(buf, "</CellData>"), *piece = strstr(buf, "</Piece>");
+        const char *at = close ? close : piece;
+        if (!at) {
+            *st = LH_ERR_INTERNAL;
+            ok = 0;
+        } else {
+            while (at > buf && at[-1] != '\n') at--; /* the line's start */
+            fwrite(buf, 1, (size_t)(at - buf), out);
+            if (!close) fputs("      <CellData>\n", out);
+            fputs("        <DataArray type=\"Float64\" Name=\"region\" format=\"ascii\">\n", out);
+            for (size_t i = 0; i < v->count; i++) fprintf(out, "          %.17g\n", region[i]);
+            fputs("        </DataArray>\n", out);
+            if (!close) fputs("      </CellData>\n", out);
+            fputs(at, out);
+        }
+    }
+    free(buf);
+    return ok;
+}
+
+/* One file (.vtu .msh .off .svg) through the whole-or-nothing mechanism. */
+static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind)
+{
+    const size_t np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m);
+    if (lh_cli_same_file(a->output, in->node_path)) {
+        fprintf(stderr, "lifthull mesh: '%s' is an input file; it is not overwritten\n", a->output);
+        return LH_EXIT_FAIL;
+    }
+    double *marker = malloc((np ? np : 1) * sizeof *marker);
+    if (!marker) {
+        fprintf(stderr, "lifthull mesh: out of memory\n");
+        return LH_EXIT_FAIL;
+    }
+    const lh_index *pm = lh_trimesh_point_markers(m);
+    for (size_t p = 0; p < np; p++) marker[p] = (double)pm[p];
+    lh_mesh_view v = {2, np, lh_trimesh_points(m), 2, nt, lh_trimesh_triangles(m), lh_trimesh_neighbors(m),
+                      kind == OUT_OFF ? NULL : marker, "marker"};
+    lh_cli_out out;
+    if (!lh_cli_out_open(&out, "mesh", a->output, a->force, in->path)) {
+        free(marker);
+        return LH_EXIT_FAIL;
+    }
+    lh_status st = LH_OK;
+    int ok;
+    switch (kind) {
+    case OUT_VTU:
+        ok = lh_trimesh_triangle_attrs(m) ? vtu_with_regions(out.f, &v, lh_trimesh_triangle_attrs(m), &st)
+                                          : (st = lh_write_vtu(out.f, &v)) == LH_OK;
+        break;
+    case OUT_MSH: ok = (st = lh_write_msh(out.f, &v)) == LH_OK; break;
+    case OUT_OFF: ok = (st = lh_write_off(out.f, &v)) == LH_OK; break;
+    default: {
+        char title[256];
+        const char *slash = strrchr(a->file, '/');
+        snprintf(title, sizeof title, "lifthull mesh %s", slash ? slash + 1 : a->file);
+        ok = lh_cli_trimesh_svg(out.f, m, a->opt.min_angle, title) == 0;
+        if (!ok) st = LH_ERR_IO;
+    }
+    }
+    if (!ok && st != LH_ERR_IO) fprintf(stderr, "lifthull mesh: %s: %s\n", a->output, lh_status_message(st));
+    free(marker);
+    return lh_cli_out_close(&out, "mesh", ok);
+}
+
+static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind, size_t stem)
+{
+    if (kind != OUT_NODE && kind != OUT_ELE) return write_one(a, in, m, kind);
+    char *base = malloc(stem + 1);
+    if (!base) {
+        fprintf(stderr, "lifthull mesh: out of memory\n");
+        return LH_EXIT_FAIL;
+    }
+    memcpy(base, a->output, stem);
+    base[stem] = 0;
+    /* Triangle's three files, numbered from 1, with markers; .poly for a graph */
+    lh_cli_tri_files w = {1, 1, in->kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force};
+    const int rc = lh_cli_trimesh_write(m, in, base, &w, "mesh");
+    free(base);
+    return rc;
+}
+
+int lh_cli_mesh(int argc, char **argv)
+{
+    mesh_args a;
+    int r = parse(&a, argc, argv);
+    if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    static const char *const in_ext[] = {".poly", ".node", ".json"};
+    static const int in_kind[] = {LH_CLI_POLY, LH_CLI_NODE, LH_CLI_RINGS};
+    size_t stem, out_stem = 0;
+    const int ik = ext_index(a.file, in_ext, 3, &stem);
+    if (ik < 0) {
+        usage_error("the input's name must end in .poly, .node or .json:", a.file);
+        return LH_EXIT_USAGE;
+    }
+    const int ok_kind = a.output ? ext_index(a.output, out_ext, OUT_COUNT, &out_stem) : -1;
+    if (a.output && ok_kind < 0) {
+        usage_error("-o: the name must end in .vtu, .msh, .off, .node, .ele or .svg:", a.output);
+        return LH_EXIT_USAGE;
+    }
+    char *base = malloc(stem + 1);
+    if (!base) {
+        fprintf(stderr, "lifthull mesh: out of memory\n");
+        return LH_EXIT_FAIL;
+    }
+    memcpy(base, a.file, stem);
+    base[stem] = 0;
+    lh_cli_pslg in;
+    const int loaded = lh_cli_pslg_load(&in, a.file, base, in_kind[ik]);
+    free(base);
+    if (!loaded) return LH_EXIT_INPUT;
+    if (a.ignore_holes) in.g.hole_count = 0;
+    char msg[512];
+    lh_trimesh *m = NULL;
+    lh_status st = lh_triangulate_pslg(&in.g, &a.opt, &m, msg, sizeof msg);
+    int rc;
+    if (st != LH_OK) {
+        lh_cli_pslg_report(&in, st, msg);
+        rc = st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL ? LH_EXIT_FAIL : LH_EXIT_INPUT;
+    } else if (!a.output) {
+        lh_cli_trimesh_report(stdout, m, a.opt.min_angle);
+        rc = lh_cli_finish_output("mesh");
+    } else {
+        rc = write_output(&a, &in, m, ok_kind, out_stem);
+        if (rc == LH_EXIT_OK && a.report) {
+            lh_cli_trimesh_report(stdout, m, a.opt.min_angle);
+        } else if (rc == LH_EXIT_OK && !a.quiet) {
+            lh_trimesh_stats s;
+            lh_trimesh_get_stats(m, &s);
+            printf("%s: %zu points, %zu triangles (%zu Steiner points), smallest angle %.4g degrees\n", a.output,
+                   lh_trimesh_point_count(m), s.triangles, s.steiner_points, s.min_angle);
+            if (s.bad_triangles)
+                printf("%zu triangles are below the bounds (small input angles%s; --report lists them)\n",
+                       s.bad_triangles, s.steiner_limit_reached ? " or the Steiner limit" : "");
+        }
+        if (rc == LH_EXIT_OK) rc = lh_cli_finish_output("mesh");
+    }
+    lh_trimesh_free(m);
+    lh_cli_pslg_free(&in);
+    return rc;
+}
