@@ -211,12 +211,41 @@ static void measure(const lh_trimesh *r, lh_trimesh_stats *s)
     s->max_angle = r->nt ? acos(cmin) * deg : 0;
 }
 
+/* The even-odd rule needs closed rings. The parity of the segments a path crosses
+ * is the same for every path between two points exactly when every vertex ends an
+ * even number of segments (the segments' mod-2 boundary is empty; merged duplicates
+ * are one vertex, a zero-length segment counts twice at it, an overlap or a vertex on
+ * a segment changes no parity). cdt_domain.c's parity flood relies on that: with an
+ * open chain it would keep a triangle beside a removed one across an edge that is no
+ * segment (sealed as a "hull" subsegment), the domain depending on the flood's order.
+ * *at: the first vertex ending an odd number of segments, or -1. */
+static lh_status open_ring_vertex(const lh_pslg *g, const lh_index *dup, const lh_allocator *al, lh_index *at)
+{
+    unsigned char *odd = lh__alloc(al, g->n ? g->n : 1);
+    if (!odd) return LH_ERR_NOMEM;
+    memset(odd, 0, g->n);
+    for (size_t i = 0; i < 2 * g->segment_count; i++) odd[dup[g->segments[i]]] ^= 1;
+    *at = -1;
+    for (size_t v = 0; v < g->n && *at < 0; v++)
+        if (odd[v]) *at = (lh_index)v;
+    lh__free(al, odd);
+    return LH_OK;
+}
+
 /* Steps 3-5 on a constrained triangulation. */
 static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g,
                         const lh_trimesh_options *o, const lh_index *dup, char *msg, size_t size)
 {
     const int keep_hull = o->convex_hull || (g->segment_count == 0 && !g->even_odd);
-    lh_status st = lh__m2_domain(m, c, g, keep_hull, &r->stats.holes_ignored, &r->stats.regions_ignored);
+    lh_index open = -1;
+    lh_status st = g->even_odd ? open_ring_vertex(g, dup, &r->al, &open) : LH_OK;
+    if (st != LH_OK) return st;
+    if (open >= 0) {
+        say(msg, size, g->vertex_line, (size_t)open, "vertex %lld ends an odd number of segments: the even-odd "
+            "rule needs closed rings", (long long)g->first_index + (long long)open);
+        return LH_ERR_DEGENERATE;
+    }
+    st = lh__m2_domain(m, c, g, keep_hull, &r->stats.holes_ignored, &r->stats.regions_ignored);
     if (st == LH_ERR_DEGENERATE) {
         say(msg, size, NULL, 0, g->even_odd ? "no triangle is inside the polygon rings"
                                             : "the domain is empty: the flood from the outside or a "

@@ -769,8 +769,10 @@ void lh_trimesh_options_default(lh_trimesh_options *opt);
  * both; also when split_crossings cannot place the rounded crossing), all vertices
  * collinear or fewer than 3 distinct (LH_ERR_DEGENERATE),
  * a flood from the outside or a hole that removes every triangle (an unclosed
- * boundary: LH_ERR_DEGENERATE), a segment endpoint out of range or an option out of
- * range (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), LH_ERR_NOMEM.
+ * boundary: LH_ERR_DEGENERATE), with even_odd a vertex ending an odd number of
+ * segments (rings not closed, the parity undefined: LH_ERR_DEGENERATE, naming it),
+ * a segment endpoint out of range or an option out of range
+ * (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), LH_ERR_NOMEM.
  * msg (msg_size bytes, may be NULL) receives a one-line reason; when the PSLG came
  * from a reader it starts with the line of the item at fault and a colon ("17:
  * segment 3 crosses segment 5 (line 19)"), so "FILE:" + msg names the place. Items are
