@@ -2,6 +2,7 @@
  * m2_store.c — storage of the 2D mesh (m2.h): arrays that double when full, a free
  * list of triangle slots, visit epochs, and the exact predicates on its points.
  */
+#include <math.h>
 #include <string.h>
 
 #include "m2.h"
@@ -156,9 +157,29 @@ uint32_t lh__m2_new_epoch(lh__m2 *m)
     return m->epoch;
 }
 
+/*
+ * The predicates on the mesh's points: a floating-point filter first (Shewchuk 1997,
+ * "Adaptive precision floating-point arithmetic and fast robust geometric
+ * predicates", §4.2-4.3: the error of the plain evaluation is below (3 + 16e)e resp.
+ * (10 + 96e)e times the permanent, e = 2^-53), trusted only when the permanent is
+ * finite and far above underflow (2^-900, where no product of the evaluation can have
+ * lost digits); otherwise, and whenever the sign is not certain, the exact
+ * predicates of lib/ decide (lh_orient, lh_insphere). Same answers, only faster.
+ */
+#define LH_EPS 1.1102230246251565e-16 /* 2^-53 */
+#define LH_TINY 1.2e-271              /* ~2^-900 */
+
 int lh__m2_orient_pt(const lh__m2 *m, lh_index a, lh_index b, const double *c)
 {
-    const double *p[3] = {lh__m2_pt(m, a), lh__m2_pt(m, b), c};
+    const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
+    const double l = (pa[0] - c[0]) * (pb[1] - c[1]), r = (pa[1] - c[1]) * (pb[0] - c[0]);
+    const double det = l - r, perm = fabs(l) + fabs(r);
+    const double bound = (3 + 16 * LH_EPS) * LH_EPS * perm;
+    if (perm > LH_TINY && perm < INFINITY) {
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+    }
+    const double *p[3] = {pa, pb, c};
     return lh_orient(m->pred, 2, p);
 }
 
@@ -169,6 +190,21 @@ int lh__m2_orient(const lh__m2 *m, lh_index a, lh_index b, lh_index c)
 
 int lh__m2_incircle(const lh__m2 *m, lh_index a, lh_index b, lh_index c, const double *d)
 {
-    const double *p[4] = {lh__m2_pt(m, a), lh__m2_pt(m, b), lh__m2_pt(m, c), d};
+    const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b), *pc = lh__m2_pt(m, c);
+    const double adx = pa[0] - d[0], ady = pa[1] - d[1], bdx = pb[0] - d[0], bdy = pb[1] - d[1];
+    const double cdx = pc[0] - d[0], cdy = pc[1] - d[1];
+    const double bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy, ab = adx * bdy - bdx * ady;
+    const double al = adx * adx + ady * ady, bl = bdx * bdx + bdy * bdy, cl = cdx * cdx + cdy * cdy;
+    /* lh_insphere's sign: < 0 inside for abc counterclockwise, the opposite of this
+       determinant's (Shewchuk's incircle is > 0 inside) */
+    const double det = al * bc + bl * ca + cl * ab;
+    const double perm = (fabs(bdx * cdy) + fabs(cdx * bdy)) * al + (fabs(cdx * ady) + fabs(adx * cdy)) * bl +
+                        (fabs(adx * bdy) + fabs(bdx * ady)) * cl;
+    const double bound = (10 + 96 * LH_EPS) * LH_EPS * perm;
+    if (perm > LH_TINY && perm < INFINITY) {
+        if (det > bound) return -1;
+        if (-det > bound) return 1;
+    }
+    const double *p[4] = {pa, pb, pc, d};
     return lh_insphere(m->pred, 2, p);
 }
