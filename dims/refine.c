@@ -45,6 +45,8 @@ typedef struct rf {
     lh_index *segq;         /* 2 per entry: subsegment, forced */
     size_t segq_count, segq_cap;
     size_t steiner;
+    unsigned char *stuck;   /* per subsegment: a split was refused or is too short */
+    size_t stuck_count, stuck_cap;
 } rf;
 
 static double dist2(const double *a, const double *b)
@@ -115,9 +117,28 @@ static lh_status queue_triangle(rf *r, lh_index t)
     return LH_OK;
 }
 
-/* Whether the policy allows splitting subsegment s (Triangle's -Y, -YY). */
+/* Subsegment s cannot be split: its rounded split point was refused (the cavity not
+ * star-shaped from it, as beside the slightly bent chain of a rounded crossing) or it
+ * is shorter than minlen. Invariant: every pass of run() inserts a point or removes a
+ * queue entry for good; a triangle requeued for a subsegment that never splits would
+ * loop forever without a Steiner point (the -S budget never reached), so such a
+ * subsegment is never queued again and the triangle is treated as at a -Y segment. */
+static lh_status set_stuck(rf *r, lh_index s)
+{
+    const size_t need = (size_t)s + 1;
+    if (need > r->stuck_count) {
+        if (!lh__m2_grow(r->m, (void **)&r->stuck, r->stuck_count, &r->stuck_cap, need, 1)) return LH_ERR_NOMEM;
+        memset(r->stuck + r->stuck_count, 0, need - r->stuck_count);
+        r->stuck_count = need;
+    }
+    r->stuck[s] = 1;
+    return LH_OK;
+}
+
+/* Whether the policy allows splitting subsegment s (Triangle's -Y, -YY), and it can. */
 static int splittable(const rf *r, lh_index s, lh_index t, int pos)
 {
+    if ((size_t)s < r->stuck_count && r->stuck[s]) return 0;
     if (r->o->boundary_steiner > 0) return 1;
     if (r->o->boundary_steiner < 0) return 0;
     (void)s;
@@ -244,13 +265,15 @@ static lh_status split_segment(rf *r, lh_index s, int *done)
     lh__m2 *m = r->m;
     const lh_index a = m->sv[2 * (size_t)s], b = m->sv[2 * (size_t)s + 1];
     *done = 0;
-    if (dist2(lh__m2_pt(m, a), lh__m2_pt(m, b)) < r->minlen2) return LH_OK;
+    if ((size_t)s < r->stuck_count && r->stuck[s]) return LH_OK;
+    if (dist2(lh__m2_pt(m, a), lh__m2_pt(m, b)) < r->minlen2) return set_stuck(r, s);
     double p[2];
     split_point(r, s, p);
     r->ins.check_encroach = 0;
     r->ins.origin = NULL;
     lh_status st = lh__m2_insert_point(m, r->c, p, -1, s, &r->ins);
-    if (st != LH_OK || r->ins.result != LH__M2_INSERTED) return st;
+    if (st != LH_OK) return st;
+    if (r->ins.result != LH__M2_INSERTED) return set_stuck(r, s);
     const double la = sqrt(dist2(p, lh__m2_pt(m, a))), lb = sqrt(dist2(p, lh__m2_pt(m, b)));
     const double w[3] = {lb / (la + lb), la / (la + lb), 0};
     const lh_index from[3] = {a, b, -1};
@@ -446,6 +469,7 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
     o->out->steiner_points = r.steiner;
     lh__free(&m->al, r.heap);
     lh__free(&m->al, r.segq);
+    lh__free(&m->al, r.stuck);
     lh__free(&m->al, r.ins.enc);
     return st;
 }
