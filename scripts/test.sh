@@ -3,6 +3,8 @@
 # the whole suite twice, fuzz, and run valgrind:
 #   build-asan/  clang, AddressSanitizer + UndefinedBehaviorSanitizer, warnings as
 #                errors; the long oracle tests at LH_TEST_SCALE=0.2
+#   build-idx64/ gcc, Release, 64-bit indices (LH_INDEX_64); the suite at LH_TEST_SCALE=0.1
+#                but for the oracle cross-checks
 #   build-fuzz/  clang, libFuzzer + ASan + UBSan: every fuzz target for 30 s on a copy
 #                of its corpus (scripts/fuzz.sh), two at a time
 #   build/       gcc, Release, warnings as errors, benchmarks built and smoke-run;
@@ -23,6 +25,12 @@ CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo 
 cmake --build build-asan -j "$jobs" >/dev/null
 LH_TEST_SCALE=0.2 ASAN_OPTIONS=detect_leaks=1 \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure || status=1
+
+echo "== 64-bit index build (gcc, small) =="
+CC=gcc CXX=g++ cmake -S . -B build-idx64 -DLH_INDEX_64=ON -DCMAKE_BUILD_TYPE=Release \
+  -DLH_WERROR=ON -DLH_BUILD_TESTS=ON >/dev/null
+cmake --build build-idx64 -j "$jobs" >/dev/null
+LH_TEST_SCALE=0.1 ctest --test-dir build-idx64 -j "$jobs" -LE oracle --output-on-failure || status=1
 
 echo "== fuzzing (clang, libFuzzer + ASan + UBSan, 30 s a target) =="
 bash scripts/fuzz.sh 30 || status=1
