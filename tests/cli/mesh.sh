@@ -1,0 +1,152 @@
+#!/usr/bin/env bash
+# mesh.sh LIFTHULL DATA: `lifthull mesh` end to end on Triangle's inputs (DATA =
+# tests/data/triangle) — the quality report, each option's effect on it, every -o
+# format read back (XML checked by xmllint when installed, else by Python's parser;
+# headers of .msh .off .node .ele .poly), whole-or-nothing output files that need -f
+# to replace and never replace an input, usage errors (exit 2) and bad input (exit 3).
+set -u
+lh="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; data="$(cd "$2" && pwd)"
+tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+cd "$tmp"
+pass=0; fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL $*"; }
+matches() { if [ -z "$2" ]; then [ ! -s "$1" ]; else grep -Eq -- "$2" "$1"; fi; }
+# expect NAME CODE STDERR_REGEX STDOUT_REGEX -- COMMAND...: exit code and both streams.
+expect() {
+  local name="$1" code="$2" err="$3" out="$4"; shift 5
+  "$@" > out.txt 2> err.txt; local got=$?
+  # a sanitizer's report fails the case whatever the exit code (ASan exits 1 too)
+  if grep -Eq 'Sanitizer|runtime error:' err.txt; then bad "$name: $(grep -E -m1 'Sanitizer|runtime error:' err.txt)"
+  elif [ "$got" -eq "$code" ] && matches err.txt "$err" && matches out.txt "$out"; then ok
+  else bad "$name: exit $got (want $code); stderr: $(head -c 300 err.txt); stdout: $(head -c 300 out.txt)"; fi
+}
+line() { sed -n "$2p" "$1" | tr -s ' \t' ' ' | sed 's/^ //; s/ $//'; }
+same() { if [ "$2" = "$3" ]; then ok; else bad "$1: '$2', want '$3'"; fi; }
+exists() { for f in "$@"; do [ -e "$f" ] || { bad "$f missing"; return; }; done; ok; }
+absent() { for f in "$@"; do [ ! -e "$f" ] || { bad "$f exists"; return; }; done; ok; }
+# xml NAME FILE: well-formed XML
+if command -v xmllint > /dev/null; then xml() { xmllint --noout "$2" 2> xml.err && ok || bad "$1: $(head -c 300 xml.err)"; }
+elif command -v python3 > /dev/null; then xml() { python3 -c 'import sys, xml.dom.minidom as m; m.parse(sys.argv[1])' "$2" 2> xml.err && ok || bad "$1: $(tail -1 xml.err)"; }
+else xml() { ok; }; fi
+# field REPORT REGEX: the first number after REGEX in the report
+field() { sed -nE "s/.*$2 ([0-9.e+-]+).*/\1/p" "$1" | head -1; }
+# ge A B: A >= B as numbers
+ge() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a + 0 >= b + 0) }'; }
+
+cp "$data"/A.poly "$data"/box.poly "$data"/la.poly "$data"/face.poly .
+
+expect "--help" 0 '' '^usage: lifthull mesh' -- "$lh" mesh --help
+grep -q '^exit codes: 0' out.txt && grep -q '^examples:' out.txt && ok || bad "--help lacks examples or exit codes"
+"$lh" --help | grep -q '^  mesh ' && ok || bad "mesh not in lifthull --help"
+
+# without -o: the report
+expect "report" 0 '' '^Mesh: 29 points \(29 input, 0 Steiner: 0 on segments\), 29 triangles, 29 subsegments$' -- "$lh" mesh A.poly
+grep -q '^Angle histogram' out.txt && ok || bad "report: no histogram"
+expect "--min-angle 30" 0 '' '^Triangles below the bounds: 0$' -- "$lh" mesh A.poly --min-angle 30
+ge "$(field out.txt 'Angles: smallest')" 30 && ok || bad "--min-angle 30: $(grep Angles out.txt)"
+expect "--quality" 0 '' '^Angles' -- "$lh" mesh --quality A.poly
+ge "$(field out.txt 'Angles: smallest')" 20 && ok || bad "--quality: $(grep Angles out.txt)"
+! ge "$(field out.txt 'Angles: smallest')" 30 && ok || bad "--quality is 20 degrees, got $(grep Angles out.txt)"
+expect "--quality --min-angle 25" 0 '' '^Angles' -- "$lh" mesh A.poly --min-angle 25 --quality
+ge "$(field out.txt 'Angles: smallest')" 25 && ok || bad "--min-angle wins over --quality: $(grep Angles out.txt)"
+expect "--max-area" 0 '' '^Areas' -- "$lh" mesh A.poly --max-area 0.001
+ge 0.001 "$(field out.txt 'Areas: smallest [0-9.e+-]+, largest')" && ok || bad "--max-area 0.001: $(grep Areas out.txt)"
+expect "--no-segment-steiner" 0 '' ' 0 on segments\), ' -- "$lh" mesh A.poly --quality --no-segment-steiner
+expect "--no-boundary-steiner" 0 '' ' 0 on segments\), ' -- "$lh" mesh A.poly --quality --no-boundary-steiner
+expect "--max-steiner" 0 '' '^Mesh: 34 points \(29 input, 5 Steiner' -- "$lh" mesh A.poly --min-angle 30 --max-steiner 5
+grep -q 'the Steiner point limit was reached' out.txt && ok || bad "--max-steiner: no limit note"
+expect "--ignore-holes" 0 '' '^Mesh: 29 points .*, 30 triangles' -- "$lh" mesh A.poly --ignore-holes
+expect "--conforming" 0 '' '^Mesh' -- "$lh" mesh A.poly --conforming
+expect "--convex-hull" 0 '' '^Mesh' -- "$lh" mesh box.poly --convex-hull
+expect "unclosed" 3 '^box\.poly: the domain is empty' '' -- "$lh" mesh box.poly
+
+# -o: each format, parsed back
+"$lh" mesh A.poly --min-angle 30 > rep.txt
+pts="$(sed -nE 's/^Mesh: ([0-9]+) points.*/\1/p' rep.txt)"; tris="$(sed -nE 's/.*\), ([0-9]+) triangles.*/\1/p' rep.txt)"
+expect "-o vtu" 0 '' "^A\.vtu: $pts points, $tris triangles" -- "$lh" mesh A.poly --min-angle 30 -o A.vtu
+xml "A.vtu is XML" A.vtu
+grep -q "<Piece NumberOfPoints=\"$pts\" NumberOfCells=\"$tris\">" A.vtu && ok || bad "A.vtu: counts"
+grep -q 'Name="marker"' A.vtu && ok || bad "A.vtu: no marker point data"
+grep -q 'Name="region"' A.vtu && bad "A.vtu: region without --attributes" || ok
+expect "-o vtu --attributes" 0 '' '' -- "$lh" mesh la.poly --attributes -o la.vtu -q
+xml "la.vtu is XML" la.vtu
+same "la.vtu region values" "$(awk '/Name="region"/ { on = 1; next } /<\/DataArray>/ { on = 0 } on { print $1 + 0 }' la.vtu | sort -u -g | tr '\n' ' ')" "0 0.05 0.2 0.4 0.8 3 "
+same "la.vtu one value a cell" "$(awk '/Name="region"/ { on = 1; next } /<\/DataArray>/ { on = 0 } on' la.vtu | wc -l | tr -d ' ')" "$(sed -nE 's/.*NumberOfCells="([0-9]+)".*/\1/p' la.vtu)"
+expect "-o msh" 0 '' '' -- "$lh" mesh A.poly --min-angle 30 -o A.msh -q
+same "A.msh header" "$(sed -n 1,2p A.msh | tr '\n' ' ')" '$MeshFormat 4.1 0 8 '
+grep -q '^\$Elements' A.msh && grep -q '^\$NodeData' A.msh && ok || bad "A.msh: no elements or node data"
+expect "-o off" 0 '' '' -- "$lh" mesh A.poly --min-angle 30 -o A.off -q
+same "A.off header" "$(line A.off 1) $(line A.off 2)" "OFF $pts $tris 0"
+same "A.off lines" "$(wc -l < A.off | tr -d ' ')" "$((2 + pts + tris))"
+expect "-o node" 0 '' '' -- "$lh" mesh A.poly --min-angle 30 -o m.node -q
+exists m.node m.ele m.poly
+same "m.node header" "$(line m.node 1)" "$pts 2 1 1"
+same "m.ele header" "$(line m.ele 1)" "$tris 3 0"
+same "m.poly header" "$(line m.poly 1)" "0 2 1 1"
+same "m.node numbered from 1" "$(line m.node 2 | cut -d' ' -f1)" "1"
+expect "-o ele names the same files" 0 '' '' -- "$lh" mesh A.poly -o e.ele -q
+exists e.node e.ele e.poly
+expect "-o svg" 0 '' '' -- "$lh" mesh A.poly --min-angle 30 -o A.svg -q
+xml "A.svg is XML" A.svg
+grep -q '<svg xmlns="http://www.w3.org/2000/svg" viewBox=' A.svg && grep -q 'id="segments"' A.svg && ok || bad "A.svg: no svg root or segments"
+expect "-o svg, bad triangles" 0 '' 'triangles are below the bounds' -- "$lh" mesh la.poly --min-angle 30 -o la.svg
+xml "la.svg is XML" la.svg
+grep -A1 '<g id="bad"' la.svg | grep -q '<path d="M' && ok || bad "la.svg: the bad triangles are not outlined"
+expect "--report with -o" 0 '' '^Mesh: ' -- "$lh" mesh A.poly -o r.off --report
+grep -q '^r\.off:' out.txt && bad "--report: the summary line too" || ok
+expect "-q" 0 '' '' -- "$lh" mesh A.poly -o q.off -q
+
+# whole or nothing; -f to replace; never an input
+expect "exists" 1 "lifthull mesh: 'A\.vtu' exists \(use -f to replace it\)" '' -- "$lh" mesh A.poly -o A.vtu
+expect "-f replaces" 0 '' '' -- "$lh" mesh A.poly -o A.vtu -f -q
+expect ".node exists" 1 "'m\.node' exists" '' -- "$lh" mesh A.poly -o m.node
+cp A.poly A.orig
+expect "never the input" 1 "lifthull mesh: 'A\.poly' is the input file; it is not overwritten" '' -- "$lh" mesh A.poly -o A.node -f
+cmp -s A.poly A.orig && ok || bad "A.poly changed"
+absent A.node A.ele
+mkdir u.ele
+expect "unwritable .ele" 1 "lifthull mesh: " '' -- "$lh" mesh A.poly -o u.node
+absent u.node u.poly
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n' > sq.node
+printf '0 2 0 0\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' > sq.poly
+cp sq.node sq.orig
+expect "vertices from sq.node" 0 '' '^Mesh: 4 points' -- "$lh" mesh sq.poly
+expect "never the .node read" 1 "'sq\.node' is an input file; it is not overwritten" '' -- "$lh" mesh sq.poly -o sq.node -f
+cmp -s sq.node sq.orig && ok || bad "sq.node changed"
+absent sq.ele
+ln sq.node link.vtu
+expect "never the .node read, by another name" 1 "'link\.vtu' is an input file" '' -- "$lh" mesh sq.poly -o link.vtu -f -q
+cmp -s sq.node sq.orig && ok || bad "sq.node changed through link.vtu"
+same "no temporaries" "$(ls | grep -c tmp)" "0"
+
+# other inputs: a point set, polygon rings
+printf '5 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n5 0.5 0.5\n' > dots.node
+expect ".node input" 0 '' '^Mesh: 5 points .*, 4 triangles' -- "$lh" mesh dots.node
+expect ".node to .node" 0 '' '' -- "$lh" mesh dots.node -o d.node -q
+exists d.node d.ele; absent d.poly
+printf '[[[0,0],[4,0],[4,4],[0,4]],[[1,1],[1,3],[3,3],[3,1]]]\n' > ring.json
+expect ".json input" 0 '' '^Mesh: 8 points .*, 8 triangles' -- "$lh" mesh ring.json
+expect ".json to .svg" 0 '' '' -- "$lh" mesh ring.json --quality -o ring.svg -q
+xml "ring.svg is XML" ring.svg
+
+# usage errors (2) and bad input (3)
+expect "no file" 2 "lifthull mesh: an input file is needed" '' -- "$lh" mesh
+expect "unknown option" 2 "lifthull mesh: unknown option '--frobnicate'" '' -- "$lh" mesh A.poly --frobnicate
+expect "value needed" 2 "a value is needed after '--max-area'" '' -- "$lh" mesh A.poly --max-area
+expect "angle range" 2 "--min-angle takes a number from 0 to 40, not '45'" '' -- "$lh" mesh A.poly --min-angle 45
+expect "angle text" 2 "--min-angle takes a number from 0 to 40, not 'abc'" '' -- "$lh" mesh A.poly --min-angle abc
+expect "steiner count" 2 "--max-steiner takes a whole number" '' -- "$lh" mesh A.poly --max-steiner -1
+expect "two files" 2 "one input file only, not also 'B\.poly'" '' -- "$lh" mesh A.poly B.poly
+expect "input name" 2 "must end in \.poly, \.node or \.json: 'A\.txt'" '' -- "$lh" mesh A.txt
+expect "output name" 2 "-o: the name must end in \.vtu, \.msh, \.off, \.node, \.ele or \.svg: 'A\.txt'" '' -- "$lh" mesh A.poly -o A.txt
+expect "missing file" 3 "^nosuch\.poly: No such file or directory" '' -- "$lh" mesh nosuch.poly
+printf '# two segments that cross\n4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 2\n2 3 4\n0\n' > cross.poly
+expect "crossing segments" 3 '^cross\.poly:9: segment 2 crosses segment 1 \(line 8\)$' '' -- "$lh" mesh cross.poly -o cross.vtu
+absent cross.vtu
+expect "--split-crossings" 0 '' '^Mesh: 5 points' -- "$lh" mesh cross.poly --split-crossings --convex-hull
+printf '4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 3\n2 3 7\n0\n' > range.poly
+expect "endpoint out of range" 3 "^range\.poly:8:5: expected an endpoint of segment 2 \(a vertex number from 1 to 4\), found '7'$" '' -- "$lh" mesh range.poly
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,172 @@
+#!/usr/bin/env bash
+# triangle.sh LIFTHULL DATA: `lifthull triangle` end to end on Triangle's own inputs
+# (DATA = tests/data/triangle) — its output file names (FILE.1.*, FILE.k -> FILE.k+1,
+# -I), -z numbering, the .edge/.neigh files and every header line, the switches that
+# suppress files or markers (-P -N -E -B, -j), -Q and -V, usage errors (unknown and
+# unsupported switches, exit 2), bad input (exit 3, FILE:LINE[:COL]), and output files
+# written all or none, never over an input.
+set -u
+lh="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; data="$(cd "$2" && pwd)"
+tmp="$(mktemp -d)"; trap 'chmod -R u+w "$tmp"; rm -rf "$tmp"' EXIT
+cd "$tmp"
+pass=0; fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL $*"; }
+# matches FILE REGEX: REGEX found in FILE; an empty REGEX: FILE is empty.
+matches() { if [ -z "$2" ]; then [ ! -s "$1" ]; else grep -Eq -- "$2" "$1"; fi; }
+# expect NAME CODE STDERR_REGEX STDOUT_REGEX -- COMMAND...: exit code and both streams.
+expect() {
+  local name="$1" code="$2" err="$3" out="$4"; shift 5
+  "$@" > out.txt 2> err.txt; local got=$?
+  # a sanitizer's report fails the case whatever the exit code (ASan exits 1 too)
+  if grep -Eq 'Sanitizer|runtime error:' err.txt; then bad "$name: $(grep -E -m1 'Sanitizer|runtime error:' err.txt)"
+  elif [ "$got" -eq "$code" ] && matches err.txt "$err" && matches out.txt "$out"; then ok
+  else bad "$name: exit $got (want $code); stderr: $(head -c 300 err.txt); stdout: $(head -c 300 out.txt)"; fi
+}
+# line FILE N: line N of FILE with blanks squeezed to one space.
+line() { sed -n "$2p" "$1" | tr -s ' \t' ' ' | sed 's/^ //; s/ $//'; }
+# same NAME GOT WANT
+same() { if [ "$2" = "$3" ]; then ok; else bad "$1: '$2', want '$3'"; fi; }
+exists() { for f in "$@"; do [ -e "$f" ] || { bad "$f missing"; return; }; done; ok; }
+absent() { for f in "$@"; do [ ! -e "$f" ] || { bad "$f exists"; return; }; done; ok; }
+fresh() { rm -rf w; mkdir w; for f in "$@"; do cp "$data/$f" w/; done; cd w; }
+
+expect "--help" 0 '' '^usage: lifthull triangle' -- "$lh" triangle --help
+expect "no file" 2 '^usage: lifthull triangle' '' -- "$lh" triangle -p
+
+# names: A.poly -> A.1.*, A.1.poly -> A.2.*, no extension with -p -> A.poly
+fresh A.poly
+expect "-p A.poly" 0 '' '^A\.1: 29 points, 29 triangles \(0 Steiner points\), smallest angle' -- "$lh" triangle -p A.poly
+exists A.1.node A.1.ele A.1.poly; absent A.1.edge A.1.neigh A.1.off
+# A.poly: 29 vertices with one attribute and markers, 29 segments, one hole
+same "A.1.node header" "$(line A.1.node 1)" "29 2 1 1"
+same "A.1.node first" "$(line A.1.node 2 | cut -d' ' -f1)" "1"
+same "A.1.ele header" "$(line A.1.ele 1)" "29 3 0"
+same "A.1.poly header" "$(line A.1.poly 1)" "0 2 1 1"
+same "A.1.poly segments" "$(line A.1.poly 2)" "29 1"
+same "A.1.poly holes" "$(grep -v '^ ' A.1.poly | sed -n 3p | tr -d ' ')" "1"
+same "A.1.ele lines" "$(wc -l < A.1.ele | tr -d ' ')" "30"
+expect "-pQ A.1.poly" 0 '' '' -- "$lh" triangle -pQ A.1.poly
+exists A.2.node A.2.ele A.2.poly
+same "A.2.ele = A.1.ele" "$(cmp -s A.1.ele A.2.ele && echo same)" "same"
+rm -f A.1.*
+expect "-pQ A (no extension)" 0 '' '' -- "$lh" triangle -pQ A
+exists A.1.node A.1.ele A.1.poly
+cd ..
+
+# -q30: the bound met (A has no input angle below 30 degrees); -V the report
+fresh A.poly
+expect "-pq30V" 0 '' '^Angles: smallest (3[0-9]|[4-9][0-9])' -- "$lh" triangle -pq30V A.poly
+matches out.txt '^Triangles below the bounds: 0$' && ok || bad "-V: bad triangles line: $(cat out.txt)"
+expect "-q41 refused" 2 "the angle bound must be 0\.\.40 degrees" '' -- "$lh" triangle -pq41 A.poly
+cd ..
+
+# -z: everything from 0; -e, -n: the .edge and .neigh files
+fresh A.poly
+expect "-pzenQ" 0 '' '' -- "$lh" triangle -pzenQ A.poly
+exists A.1.edge A.1.neigh
+same "-z .node first" "$(line A.1.node 2 | cut -d' ' -f1)" "0"
+same "-z .ele first" "$(line A.1.ele 2 | cut -d' ' -f1)" "0"
+same "-z .poly first segment" "$(line A.1.poly 3 | cut -d' ' -f1)" "0"
+same "-z .edge first" "$(line A.1.edge 2 | cut -d' ' -f1)" "0"
+same "-z .neigh first" "$(line A.1.neigh 2 | cut -d' ' -f1)" "0"
+# every point number in the .ele is 0..28
+same "-z .ele range" "$(awk 'NR > 1 && NF { for (i = 2; i <= 4; i++) { if ($i < lo || lo == "") lo = $i; if ($i > hi) hi = $i } } END { print lo, hi }' A.1.ele)" "0 28"
+# 29 triangles: 3*29 = 2E - B edge sides, B = 29 boundary edges, so E = 58; markers on
+same ".edge header" "$(line A.1.edge 1)" "58 1"
+same ".neigh header" "$(line A.1.neigh 1)" "29 3"
+same ".edge boundary markers" "$(awk 'NR > 1 && $4 == 1' A.1.edge | wc -l | tr -d ' ')" "29"
+same ".neigh -1 count" "$(awk 'NR > 1 { for (i = 2; i <= 4; i++) n += $i == -1 } END { print n }' A.1.neigh)" "29"
+cd ..
+
+# -B: no markers anywhere; -P -N -E: no .poly, .node, .ele
+fresh A.poly
+expect "-peBQ" 0 '' '' -- "$lh" triangle -peBQ A.poly
+same "-B .node header" "$(line A.1.node 1)" "29 2 1 0"
+same "-B .node fields" "$(line A.1.node 2 | wc -w | tr -d ' ')" "4"
+same "-B .poly segments" "$(line A.1.poly 2)" "29 0"
+same "-B .edge header" "$(line A.1.edge 1)" "58 0"
+rm -f A.1.*
+expect "-pPQ" 0 '' '' -- "$lh" triangle -pPQ A.poly
+exists A.1.node A.1.ele; absent A.1.poly
+rm -f A.1.*
+expect "-pNQ" 0 '' '' -- "$lh" triangle -pNQ A.poly
+exists A.1.ele A.1.poly; absent A.1.node
+rm -f A.1.*
+expect "-pEQ" 0 '' '' -- "$lh" triangle -pEQ A.poly
+exists A.1.node A.1.poly; absent A.1.ele
+rm -f A.1.*
+expect "-pgQ" 0 '' '' -- "$lh" triangle -pgQ A.poly
+same "-g .off header" "$(line A.1.off 1) $(line A.1.off 2)" "OFF 29 29 0"
+cd ..
+
+# -j: a duplicate point is in no triangle; -j leaves it out of the .node
+mkdir -p j; cd j
+printf '6 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n5 0.5 0.5\n6 1 0\n' > dots.node
+expect ".node input" 0 '' '^dots\.1: 6 points, 4 triangles' -- "$lh" triangle dots.node
+same ".node: no .poly" "$(ls | tr '\n' ' ')" "dots.1.ele dots.1.node dots.node err.txt out.txt "
+same "without -j" "$(line dots.1.node 1)" "6 2 0 1"
+expect "-jQ" 0 '' '' -- "$lh" triangle -jQ dots.node
+same "-j .node header" "$(line dots.1.node 1)" "5 2 0 1"
+same "-j .ele range" "$(awk 'NR > 1 { for (i = 2; i <= 4; i++) if ($i > hi) hi = $i } END { print hi }' dots.1.ele)" "5"
+cd ..
+
+# -I: no iteration number, so the output would be the input: refused, nothing written
+fresh A.poly
+cp A.poly A.orig
+expect "-pI refuses A.poly" 1 "lifthull triangle: 'A\.poly' is the input file; it is not overwritten" '' -- "$lh" triangle -pIQ A.poly
+cmp -s A.poly A.orig && ok || bad "-pI changed A.poly"
+absent A.node A.ele
+same "-pI leaves nothing" "$(ls | tr '\n' ' ')" "A.orig A.poly err.txt out.txt "
+expect "-pIP writes beside it" 0 '' '' -- "$lh" triangle -pIPQ A.poly
+exists A.node A.ele
+cmp -s A.poly A.orig && ok || bad "-pIP changed A.poly"
+cd ..
+# a .poly without vertices reads FILE.node: that is an input too
+mkdir -p v; cd v
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n' > sq.node
+printf '0 2 0 0\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' > sq.poly
+cp sq.node sq.orig
+expect "vertices from the .node" 0 '' '^sq\.1: 4 points, 2 triangles' -- "$lh" triangle -p sq.poly
+expect "-pIP refuses the .node" 1 "lifthull triangle: 'sq\.node' is an input file; it is not overwritten" '' -- "$lh" triangle -pIPQ sq.poly
+cmp -s sq.node sq.orig && ok || bad "-pIP changed sq.node"
+absent sq.ele
+cd ..
+
+# all or none: one output path that cannot be written (a directory), nothing left
+fresh A.poly
+mkdir A.1.ele
+expect "unwritable output" 1 "lifthull triangle: " '' -- "$lh" triangle -pQ A.poly
+absent A.1.node A.1.poly
+same "no temporaries" "$(ls | grep -c tmp)" "0"
+cd ..
+
+# usage errors: exit 2, the switch named
+fresh A.poly
+expect "unknown switch" 2 "lifthull triangle: unknown switch 'x' in '-pxq'" '' -- "$lh" triangle -pxq A.poly
+expect "-r refused" 2 "lifthull triangle: -r is not supported" '' -- "$lh" triangle -pr A.poly
+expect "-u refused" 2 "lifthull triangle: -u is not supported" '' -- "$lh" triangle -pu A.poly
+expect "-v refused" 2 "lifthull triangle: -v is not supported" '' -- "$lh" triangle -pv A.poly
+expect "two files" 2 "one input file, not 'A\.poly' and 'B\.poly'" '' -- "$lh" triangle -p A.poly B.poly
+expect "accepted, no effect" 0 '' '' -- "$lh" triangle -pQiFlsCX A.poly
+expect "-D conforming" 0 '' '' -- "$lh" triangle -pDQ A.poly
+cd ..
+
+# bad input: exit 3, the place named
+mkdir -p b; cd b
+expect "missing file" 3 "^nosuch\.poly: No such file or directory" '' -- "$lh" triangle -p nosuch.poly
+printf '# two segments that cross\n4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 2\n2 3 4\n0\n' > cross.poly
+expect "crossing segments" 3 '^cross\.poly:9: segment 2 crosses segment 1 \(line 8\)$' '' -- "$lh" triangle -p cross.poly
+absent cross.1.node cross.1.ele cross.1.poly
+printf '4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 3\n2 3 7\n0\n' > range.poly
+expect "endpoint out of range" 3 "^range\.poly:8:5: expected an endpoint of segment 2 \(a vertex number from 1 to 4\), found '7'$" '' -- "$lh" triangle -p range.poly
+printf '3 2 0 0\n1 0 0\n2 1 1\n3 2 2\n0 0\n0\n' > line.poly
+expect "collinear" 3 "^line\.poly: the vertices are all collinear" '' -- "$lh" triangle -p line.poly
+cp "$data/box.poly" .
+expect "unclosed boundary" 3 "^box\.poly: the domain is empty" '' -- "$lh" triangle -p box.poly
+expect "-c keeps the hull" 0 '' '' -- "$lh" triangle -pcQ box.poly
+exists box.1.node box.1.ele box.1.poly
+cd ..
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
