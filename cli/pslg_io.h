@@ -16,12 +16,18 @@ typedef struct lh_cli_pslg {
     char *node_path;    /* BASE.node when the .poly had no vertices (read
                            too, so never written), or NULL              */
     int kind;           /* LH_CLI_*                                    */
+    lh_cells ele;       /* -r: the mesh to refine (BASE.ele), in g.cover */
+    double *area;       /* -ra: its triangles' area bounds (BASE.area)   */
 } lh_cli_pslg;
 
 /* Reads path as kind; a .poly without vertices takes base.node's. Returns 1, or 0
  * after printing the problem (FILE:LINE:COL: ...). */
 int lh_cli_pslg_load(lh_cli_pslg *in, const char *path, const char *base, int kind);
 void lh_cli_pslg_free(lh_cli_pslg *in);
+/* Triangle's -r: BASE.ele (triangles of the points read) becomes in->g.cover and,
+ * with area, BASE.area its cover_area. Returns 1, or 0 after printing the problem
+ * (FILE:LINE:COL: ...). */
+int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area);
 /* Prints lh_triangulate_pslg's failure as "FILE:LINE: ..." or "FILE: ...". */
 void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg);
 

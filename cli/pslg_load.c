@@ -89,6 +89,8 @@ void lh_cli_pslg_free(lh_cli_pslg *in)
 {
     lh_pslg_free(&in->g);
     lh_points_free(&in->pts);
+    lh_cells_free(&in->ele);
+    free(in->area);
     free(in->node_path);
     memset(in, 0, sizeof *in);
 }
@@ -99,4 +101,81 @@ void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg)
         fprintf(stderr, "%s:%s\n", in->path, msg);
     else
         fprintf(stderr, "%s: %s\n", in->path, msg[0] ? msg : lh_status_message(st));
+}
+
+/* BASE.area: "count" then "number area" lines numbered from 0 or 1, one per triangle of
+ * the .ele (Triangle's format; -1 or any value <= 0: no bound). */
+static int load_area(lh_cli_pslg *in, const char *path)
+{
+    FILE *f = open_in(path);
+    if (!f) return 0;
+    in->area = malloc((in->ele.count ? in->ele.count : 1) * sizeof *in->area);
+    char line[512];
+    size_t lineno = 0, count = 0, got = 0;
+    long long first = -1;
+    int ok = in->area != NULL;
+    while (ok && fgets(line, sizeof line, f)) {
+        lineno++;
+        char *h = strchr(line, '#');
+        if (h) *h = 0;
+        char *p = line, *end;
+        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') p++;
+        if (!*p) continue;
+        if (!count) { /* the header */
+            const long long c = strtoll(p, &end, 10);
+            if (end == p || c != (long long)in->ele.count) {
+                fprintf(stderr, "%s:%zu: expected the triangle count of the .ele (%zu), found '%.40s'\n", path, lineno,
+                        in->ele.count, p);
+                ok = 0;
+            }
+            count = (size_t)c;
+            continue;
+        }
+        const long long num = strtoll(p, &end, 10);
+        const double a = end != p ? strtod(end, &p) : 0;
+        if (first < 0) first = num;
+        if (end == p || got >= count || num != first + (long long)got || (first != 0 && first != 1) || a != a) {
+            fprintf(stderr, "%s:%zu: expected triangle %lld's number and area, found '%.40s'\n", path, lineno,
+                    (first < 0 ? 1 : first) + (long long)got, line);
+            ok = 0;
+            break;
+        }
+        in->area[got++] = a;
+    }
+    if (ok && got != in->ele.count) {
+        fprintf(stderr, "%s:%zu: expected %zu areas, found %zu\n", path, lineno, in->ele.count, got);
+        ok = 0;
+    }
+    fclose(f);
+    return ok;
+}
+
+int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area)
+{
+    const size_t len = strlen(base);
+    char *path = malloc(len + 6);
+    if (!path) return 0;
+    memcpy(path, base, len);
+    memcpy(path + len, ".ele", 5);
+    FILE *f = open_in(path);
+    char msg[512];
+    lh_status st = f ? lh_cells_read(f, path, in->g.n, NULL, &in->ele, msg, sizeof msg) : LH_ERR_IO;
+    if (f) fclose(f);
+    if (f && st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+    if (st == LH_OK && in->ele.nv != 3) {
+        fprintf(stderr, "%s: %d points a cell; a triangle mesh has 3\n", path, in->ele.nv);
+        st = LH_ERR_PARSE;
+    }
+    int ok = st == LH_OK;
+    if (ok) {
+        in->g.cover = in->ele.v;
+        in->g.cover_count = in->ele.count;
+    }
+    if (ok && area) {
+        memcpy(path + len, ".area", 6);
+        ok = load_area(in, path);
+        in->g.cover_area = in->area;
+    }
+    free(path);
+    return ok;
 }

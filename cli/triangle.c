@@ -12,14 +12,14 @@
 #include <string.h>
 
 typedef struct sw {
-    int p, q, a_regions, A, c, D, Y, O, I, Q, V, S, noP;
+    int p, r, q, a_regions, A, c, D, Y, O, I, Q, V, S, noP;
     double angle, area;
     size_t steiner;
     lh_cli_tri_files files;
 } sw;
 
 static const char *const usage_text =
-    "usage: lifthull triangle [-pqaAcDYSjezBPNEIOQVgnil] FILE[.poly|.node|.json]\n"
+    "usage: lifthull triangle [-prqaAcDYSjezBPNEIOQVgnil] FILE[.poly|.node|.json]\n"
     "\n"
     "Triangle's command line (J. R. Shewchuk), computed exactly by lifthull: the same\n"
     "switches, input and output files. FILE.poly (or -p FILE) is a planar straight-line\n"
@@ -28,6 +28,8 @@ static const char *const usage_text =
     "FILE.2.* — replacing earlier outputs, never the input; all files or none.\n"
     "\n"
     "  -p      triangulate the graph: constrained Delaunay triangulation of its domain\n"
+    "  -r      refine FILE.node + FILE.ele (with -p FILE.poly's segments and holes,\n"
+    "          with -a FILE.area's per-triangle bounds): FILE.1 -> FILE.2\n"
     "  -q[A]   quality mesh: no angle below A degrees (default 20, at most 40)\n"
     "  -a[X]   no triangle area above X; -a alone: the .poly regions' area bounds\n"
     "  -A      regional attributes: each triangle gets its region's attribute\n"
@@ -44,7 +46,7 @@ static const char *const usage_text =
     "  -Q      quiet; -V verbose: the quality report (angles, areas, histogram)\n"
     "  -i -F -l -s -C -X   Triangle's choices of algorithm or arithmetic: accepted,\n"
     "          nothing changes (lifthull is always exact)\n"
-    "not supported: -r (refining a mesh), -o2, -v, -u\n"
+    "not supported: -o2, -v, -u\n"
     "\n"
     "examples:\n"
     "  lifthull triangle -pq30 A.poly       quality mesh of the letter A\n"
@@ -69,6 +71,7 @@ static int parse_switches(const char *s, sw *o)
         double x;
         switch (s[j]) {
         case 'p': o->p = 1; break;
+        case 'r': o->r = 1; break;
         case 'q': o->q = 1; o->angle = number_after(s, &j, &x) ? x : 20; break;
         case 'a':
             if (number_after(s, &j, &x)) o->area = x; else o->a_regions = 1;
@@ -92,7 +95,7 @@ static int parse_switches(const char *s, sw *o)
         case 'Q': o->Q = 1; break;
         case 'V': o->V = 1; break;
         case 'i': case 'F': case 'l': case 's': case 'C': case 'X': break;
-        case 'r': case 'o': case 'v': case 'u': case 'k': case 'L': case 'w': case 'W':
+        case 'o': case 'v': case 'u': case 'k': case 'L': case 'w': case 'W':
             fprintf(stderr, "lifthull triangle: -%c is not supported (see lifthull triangle --help)\n", s[j]);
             return 0;
         default:
@@ -108,7 +111,8 @@ static char *base_of(const char *file, int p, int *kind)
 {
     const size_t n = strlen(file);
     static const struct { const char *ext; int kind; } known[] = {
-        {".poly", LH_CLI_POLY}, {".node", LH_CLI_NODE}, {".json", LH_CLI_RINGS}};
+        {".poly", LH_CLI_POLY}, {".node", LH_CLI_NODE}, {".json", LH_CLI_RINGS},
+        {".ele", LH_CLI_NODE}, {".area", LH_CLI_NODE}}; /* -r: BASE.node, BASE.ele */
     *kind = p ? LH_CLI_POLY : LH_CLI_NODE;
     size_t cut = n;
     for (size_t i = 0; i < sizeof known / sizeof known[0]; i++) {
@@ -152,11 +156,15 @@ static int run(const sw *o, const char *file)
     if (!base || !outb) goto done;
     path = malloc(strlen(base) + 6);
     if (!path) goto done;
-    if (!strcmp(base, file)) /* no extension: Triangle appends .poly (-p) or .node */
-        sprintf(path, "%s%s", base, kind == LH_CLI_POLY ? ".poly" : ".node");
-    else
+    /* Triangle reads BASE.poly with -p, else BASE.node, whatever extension FILE has
+       (but for polygon rings, which have no other form) */
+    if (kind == LH_CLI_RINGS)
         strcpy(path, file);
-    if (!lh_cli_pslg_load(&in, path, base, kind)) {
+    else
+        sprintf(path, "%s%s", base, kind == LH_CLI_POLY ? ".poly" : ".node");
+    if (!lh_cli_pslg_load(&in, path, base, kind) ||
+        (o->r && !lh_cli_pslg_load_mesh(&in, base, o->a_regions))) {
+        if (in.path) lh_cli_pslg_free(&in);
         rc = LH_EXIT_INPUT;
         goto done;
     }

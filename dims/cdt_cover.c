@@ -7,8 +7,10 @@
  * along a boundary edge the same way is inside, the other way outside (an exact
  * comparison of collinear directions), and a flood across edges that are not on the
  * boundary carries that to the rest. An old triangle's area bound goes to the new
- * triangles whose centroids it holds (m2_locate.c's walk on the old mesh, linked by
- * sorted edge records, from an old triangle at a vertex of the new one).
+ * triangles whose centroids it holds — at the start and for every triangle that
+ * refinement makes, since a cavity may span several old triangles (m2_locate.c's walk
+ * on the old mesh, linked by sorted edge records, from the last one found or an old
+ * triangle at a vertex of the new one).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -164,20 +166,25 @@ lh_status lh__cover_outside(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, ui
     return LH_OK;
 }
 
+void lh__cover_area_of(lh__m2 *m, lh__cover *cv, const double *area, lh_index t)
+{
+    double p[2] = {0, 0};
+    for (int k = 0; k < 3; k++) {
+        const double *q = lh__m2_pt(m, m->v[3 * (size_t)t + k]);
+        p[0] += q[0] / 3, p[1] += q[1] / 3;
+    }
+    lh_index blocked, o = cv->mesh.walk_hint >= 0 ? lh__m2_locate(&cv->mesh, -1, p, 0, &blocked) : -1;
+    for (int k = 0; k < 3 && o < 0; k++) { /* from an old triangle at each corner */
+        const lh_index v = m->v[3 * (size_t)t + k];
+        if ((size_t)v < cv->mesh.np && cv->mesh.vt[v] >= 0) o = lh__m2_locate(&cv->mesh, cv->mesh.vt[v], p, 0, &blocked);
+    }
+    if (o < 0) o = lh__m2_scan(&cv->mesh, p);
+    if (o >= 0) m->tarea[t] = area[cv->old[o]];
+}
+
 lh_status lh__cover_areas(lh__m2 *m, lh__cover *cv, const double *area)
 {
-    for (size_t t = 0; t < m->nt; t++) {
-        if (m->v[3 * t] < 0) continue;
-        double p[2] = {0, 0};
-        for (int k = 0; k < 3; k++) {
-            const double *q = lh__m2_pt(m, m->v[3 * t + k]);
-            p[0] += q[0] / 3, p[1] += q[1] / 3;
-        }
-        lh_index blocked, o = -1;
-        for (int k = 0; k < 3 && o < 0; k++) /* from an old triangle at each corner */
-            if (cv->mesh.vt[m->v[3 * t + k]] >= 0) o = lh__m2_locate(&cv->mesh, cv->mesh.vt[m->v[3 * t + k]], p, 0, &blocked);
-        if (o < 0) o = lh__m2_scan(&cv->mesh, p);
-        if (o >= 0) m->tarea[t] = area[cv->old[o]];
-    }
+    for (size_t t = 0; t < m->nt; t++)
+        if (m->v[3 * t] >= 0) lh__cover_area_of(m, cv, area, (lh_index)t);
     return LH_OK;
 }

@@ -179,6 +179,7 @@ static lh_status after_insert(rf *r)
     lh_status st;
     for (size_t i = 0; i < r->c->stack_count; i++) {
         const lh_index t = r->c->stack[i];
+        if (r->o->cover_area) lh__cover_area_of(m, m->cover, r->o->cover_area, t);
         if ((st = queue_triangle(r, t)) != LH_OK) return st;
         for (int k = 0; k < 3; k++) {
             const lh_index s = m->sg[3 * (size_t)t + k];
@@ -455,8 +456,12 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
         r.ratio2 = 1 / (s * s); /* 4 (R / shortest)^2 > 1 / sin^2 */
         const double cs = cos(o->min_angle * PI / 180);
         r.off_h = 0.475 * sqrt((1 + cs) / (1 - cs));
-        if (!o->conforming) m->lens = (2 * cs * cs - 1) * (2 * cs * cs - 1);
     }
+    /* the lens of the angle bound; with none (area bounds only) the lens is flat, a
+       point encroaches only what it lies on (as Triangle does without -q), and only
+       centres beyond a subsegment split it */
+    const double cs = cos(o->min_angle * PI / 180);
+    if (!o->conforming) m->lens = (2 * cs * cs - 1) * (2 * cs * cs - 1);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < m->np; i++)
         for (int j = 0; j < 2; j++) {

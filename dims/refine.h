@@ -15,6 +15,7 @@ typedef struct lh__refine_opts {
     size_t max_steiner;
     const lh_index *segments;  /* the input segments (2 each) and the duplicate map:   */
     const lh_index *dup;       /* for the small-angle rule                             */
+    const double *cover_area;  /* the old mesh's area bounds (m->cover), or NULL        */
     lh_trimesh_stats *out;     /* steiner_points, steiner_limit_reached                */
 } lh__refine_opts;
 
@@ -43,7 +44,8 @@ lh_status lh__cover_segments(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv,
                              lh__m2_problem *pb);
 /* Marks with epoch e the triangles outside the old mesh. */
 lh_status lh__cover_outside(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, uint32_t e);
-/* m->tarea[t] = area[old triangle holding t's centroid], for every live t. */
+/* m->tarea[t] = area[old triangle holding t's centroid], for t / every live t. */
+void lh__cover_area_of(lh__m2 *m, lh__cover *cv, const double *area, lh_index t);
 lh_status lh__cover_areas(lh__m2 *m, lh__cover *cv, const double *area);
 
 /* The domain (cdt_domain.c): Triangle's flood, the even-odd rule, or m->cover. */

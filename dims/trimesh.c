@@ -254,7 +254,8 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     }
     if (st != LH_OK) return st;
     lh__refine_opts ro = {o->min_angle, o->max_area, o->region_areas, o->conforming,
-                          o->boundary_steiner, o->max_steiner, g->segments, dup, &r->stats};
+                          o->boundary_steiner, o->max_steiner, g->segments, dup,
+                          m->cover ? g->cover_area : NULL, &r->stats};
     if ((o->min_angle > 0 || o->max_area > 0 || o->region_areas || o->conforming) &&
         (st = lh__m2_refine(m, c, &ro)) != LH_OK)
         return st;

@@ -141,10 +141,27 @@ absent A.1.node A.1.poly
 same "no temporaries" "$(ls | grep -c tmp)" "0"
 cd ..
 
+# -r: refine bbox.1.node + bbox.1.ele (-a: with bbox.1.area's bounds) into bbox.2.*
+fresh bbox.1.node bbox.1.ele bbox.1.area
+expect "-r" 0 '' '^bbox\.2: ' -- "$lh" triangle -r bbox.1
+exists bbox.2.node bbox.2.ele
+absent bbox.2.poly
+same "-r keeps the 12 triangles' union, no Steiner point" "$(head -1 bbox.2.ele | awk '{print $1}')" "12"
+expect "-ra" 0 '' '' -- "$lh" triangle -raQ bbox.1.ele
+same "-ra splits the bounded triangle" "$(awk 'NR == 1 {print ($1 > 40)}' bbox.2.ele)" "1"
+printf '12\n1 -1\n2 -1\n' > short.area; cp bbox.1.node short.node; cp bbox.1.ele short.ele
+expect "-ra short .area" 3 '^short\.area:[0-9]+: expected 12 areas, found 2$' '' -- "$lh" triangle -ra short
+printf '3  3  0\n1 1 2 3\n2 1 2 99\n3 4 5 6\n' > bad.ele; cp bbox.1.node bad.node
+expect "-r bad .ele" 3 '^bad\.ele:3:' '' -- "$lh" triangle -r bad
+cp bbox.1.node nothere.node
+expect "-r missing .ele" 3 '^nothere\.ele: No such file' '' -- "$lh" triangle -r nothere.node
+absent bad.1.node short.1.node
+cd ..
+
 # usage errors: exit 2, the switch named
 fresh A.poly
 expect "unknown switch" 2 "lifthull triangle: unknown switch 'x' in '-pxq'" '' -- "$lh" triangle -pxq A.poly
-expect "-r refused" 2 "lifthull triangle: -r is not supported" '' -- "$lh" triangle -pr A.poly
+expect "-o refused" 2 "lifthull triangle: -o is not supported" '' -- "$lh" triangle -po2 A.poly
 expect "-u refused" 2 "lifthull triangle: -u is not supported" '' -- "$lh" triangle -pu A.poly
 expect "-v refused" 2 "lifthull triangle: -v is not supported" '' -- "$lh" triangle -pv A.poly
 expect "two files" 2 "one input file, not 'A\.poly' and 'B\.poly'" '' -- "$lh" triangle -p A.poly B.poly
