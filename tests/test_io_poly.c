@@ -520,8 +520,8 @@ LH_TEST(poly_segment_errors)
          "ef.poly:6:5: expected an endpoint of segment 1 (a vertex number from 1 to 3), found '2.0'"},
         {"n0.poly", TEXT("0 2\n1 0\n1 0 1\n"), LH_ERR_PARSE,
          "n0.poly:3:3: expected an endpoint of segment 1 (a vertex number from 1), found '0'"},
-        {"n0big.poly", TEXT("0 2\n1 0\n0 0 99999999999\n"), LH_ERR_PARSE,
-         "n0big.poly:3:5: expected an endpoint of segment 0 (a vertex number from 0), found '99999999999'"},
+        {"n0big.poly", TEXT("0 2\n1 0\n0 0 99999999999999999999\n"), LH_ERR_PARSE, /* past either width */
+         "n0big.poly:3:5: expected an endpoint of segment 0 (a vertex number from 0), found '99999999999999999999'"},
         {"s0.poly", TEXT(V3 "2 0\n0 1 2\n1 2 3\n"), LH_ERR_PARSE,
          "s0.poly:6:1: expected segment number 1 (this file numbers from 1), found '0'"},
         {"sn.poly", TEXT(V3 "2 0\n1 1 2\n3 2 3\n"), LH_ERR_PARSE,

@@ -241,7 +241,7 @@ static lh_status marker(lh__scan *s, const section *sec, long long number, lh_in
     lh__token t;
     long long v;
     lh__scan_next(s, 0, &t);
-    if (lh__word_integer(&t, &v) && v >= INT32_MIN && v <= INT32_MAX) {
+    if (lh__word_integer(&t, &v) && v >= -LH_INDEX_MAX - 1 && v <= LH_INDEX_MAX) { /* an lh_index */
         *m = (lh_index)v;
         return LH_OK;
     }
