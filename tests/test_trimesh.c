@@ -654,11 +654,23 @@ static lh_status mesh_with(lh_test_state *lh_t_, const lh_allocator *a, const vo
     return st;
 }
 
+static lh_status check_with(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
+{
+    (void)lh_t_;
+    const lh_trimesh *m = user;
+    return lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
+                            lh_trimesh_triangles(m), lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0, a,
+                            NULL, 0);
+}
+
 LH_TEST(every_allocation_failure_is_survived)
 {
     lh_pslg g;
     LH_ASSERT_EQ_INT(load(lh_poly_read, "triangle/A.poly", &g), LH_OK);
     LH_EXPECT_GT_U64(lh_test_every_failure(lh_t_, mesh_with, &g), 20);
+    lh_trimesh *m = mesh_checked(lh_t_, &g, NULL, "A");
+    if (m) LH_EXPECT_GE_INT(lh_test_every_failure(lh_t_, check_with, m), 2);
+    lh_trimesh_free(m);
     lh_pslg_free(&g);
 }
 
