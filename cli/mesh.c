@@ -47,6 +47,8 @@ static const char help[] =
     "  --no-segment-steiner   no Steiner points on any segment (Triangle's -YY)\n"
     "  --max-steiner N        at most N Steiner points\n"
     "  --ignore-holes         ignore the .poly's holes\n"
+    "  --smooth N             N passes of smoothing after refinement: free Steiner\n"
+    "                         points move to raise the smallest angle around them\n"
     "  --split-crossings      segments that cross get a vertex at the crossing\n"
     "                         (default: an error naming both)\n"
     "  --report               print the quality report as well as writing -o\n"
@@ -98,7 +100,7 @@ static int parse(mesh_args *a, int argc, char **argv)
 {
     memset(a, 0, sizeof *a);
     lh_trimesh_options_default(&a->opt);
-    static const char *const valued[] = {"-o", "--min-angle", "--max-area", "--max-steiner", "--threads"};
+    static const char *const valued[] = {"-o", "--min-angle", "--max-area", "--max-steiner", "--smooth", "--threads"};
     for (int i = 0; i < argc; i++) {
         const char *s = argv[i];
         if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
@@ -138,6 +140,9 @@ static int parse(mesh_args *a, int argc, char **argv)
         } else if (!strcmp(s, "--max-steiner")) {
             if (!number(s, v, 0, 1e15, 1, &x)) return -1;
             a->opt.max_steiner = (size_t)x;
+        } else if (!strcmp(s, "--smooth")) {
+            if (!number(s, v, 0, 1000, 1, &x)) return -1;
+            a->opt.smooth = (int)x;
         } else if (!strcmp(s, "--threads")) { /* every command takes it; one thread for now */
             if (!number(s, v, 1, 4096, 1, &x)) return -1;
             if (x > 1) fprintf(stderr, "lifthull mesh: --threads %s: one thread for now (reserved for the parallel engine)\n", v);

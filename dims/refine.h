@@ -48,6 +48,10 @@ lh_status lh__cover_outside(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, ui
 void lh__cover_area_of(lh__m2 *m, lh__cover *cv, const double *area, lh_index t);
 lh_status lh__cover_areas(lh__m2 *m, lh__cover *cv, const double *area);
 
+/* Laplacian smoothing of the free Steiner points, `passes` times at most, each
+ * followed by Lawson's flips (smooth.c); *moved counts the moves. */
+lh_status lh__m2_smooth(lh__m2 *m, lh__m2_cavity *c, int passes, double max_area, size_t *moved);
+
 /* The domain (cdt_domain.c): Triangle's flood, the even-odd rule, or m->cover. */
 lh_status lh__m2_domain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, int convex_hull,
                         size_t *holes_ignored, size_t *regions_ignored);

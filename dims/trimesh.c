@@ -52,6 +52,10 @@ static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char
         say(msg, size, NULL, 0, "an array of the PSLG is missing");
         return LH_ERR_INVALID_ARGUMENT;
     }
+    if (o->smooth < 0) {
+        say(msg, size, NULL, 0, "smoothing passes %d below 0", o->smooth);
+        return LH_ERR_INVALID_ARGUMENT;
+    }
     if (!(o->min_angle >= 0 && o->min_angle <= LH_TRIMESH_MAX_ANGLE) || isnan(o->max_area)) {
         say(msg, size, NULL, 0, "minimum angle %g outside 0..%g degrees", o->min_angle, LH_TRIMESH_MAX_ANGLE);
         return LH_ERR_INVALID_ARGUMENT;
@@ -258,6 +262,8 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
                           m->cover ? g->cover_area : NULL, &r->stats};
     if ((o->min_angle > 0 || o->max_area > 0 || o->region_areas || o->conforming) &&
         (st = lh__m2_refine(m, c, &ro)) != LH_OK)
+        return st;
+    if (o->smooth > 0 && (st = lh__m2_smooth(m, c, o->smooth, o->max_area, &r->stats.smoothing_moves)) != LH_OK)
         return st;
     const int bounded = o->min_angle > 0 || o->max_area > 0 || o->region_areas;
     size_t nbad = 0;

@@ -219,6 +219,58 @@ LH_TEST(conforming_delaunay_has_every_edge_delaunay)
     }
 }
 
+/* Smoothing: points move, the mesh stays an exactly valid CDT, its smallest angle does
+ * not go down and the area bound still holds; the mean of the triangles' smallest
+ * angles goes up. */
+static double mean_min_angle(const lh_trimesh *m)
+{
+    const double *xy = lh_trimesh_points(m);
+    const lh_index *t = lh_trimesh_triangles(m);
+    double sum = 0;
+    for (size_t i = 0; i < lh_trimesh_triangle_count(m); i++) {
+        double worst = 180;
+        for (int k = 0; k < 3; k++) {
+            const double *o = xy + 2 * (size_t)t[3 * i + k], *u = xy + 2 * (size_t)t[3 * i + (k + 1) % 3],
+                         *v = xy + 2 * (size_t)t[3 * i + (k + 2) % 3];
+            const double a = atan2(fabs((u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])),
+                                   (u[0] - o[0]) * (v[0] - o[0]) + (u[1] - o[1]) * (v[1] - o[1]));
+            worst = fmin(worst, a * 180 / 3.14159265358979323846);
+        }
+        sum += worst;
+    }
+    return sum / (double)lh_trimesh_triangle_count(m);
+}
+
+LH_TEST(smoothing_raises_angles_and_keeps_the_mesh_valid)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load(lh_poly_read, "triangle/A.poly", &g), LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.min_angle = 25;
+    o.max_area = 0.0005;
+    lh_trimesh *a = mesh_checked(lh_t_, &g, &o, "A");
+    o.smooth = 5;
+    lh_trimesh *b = mesh_checked(lh_t_, &g, &o, "A smoothed");
+    if (a && b) {
+        lh_trimesh_stats sa, sb;
+        lh_trimesh_get_stats(a, &sa);
+        lh_trimesh_get_stats(b, &sb);
+        LH_EXPECT_GT_U64(sb.smoothing_moves, 10);
+        LH_EXPECT_EQ_U64(sb.triangles, sa.triangles);
+        LH_EXPECT_LE_DBL(sa.min_angle, sb.min_angle);
+        LH_EXPECT_LE_DBL(sb.max_area, 0.0005);
+        const double ma = mean_min_angle(a), mb = mean_min_angle(b);
+        LH_NOTE("mean smallest angle %.3f -> %.3f, smallest %.3f -> %.3f, %zu moves", ma, mb, sa.min_angle,
+                sb.min_angle, sb.smoothing_moves);
+        LH_EXPECT_LE_DBL(ma + 0.5, mb);
+        expect_segments_kept(lh_t_, &g, b);
+    }
+    lh_trimesh_free(a);
+    lh_trimesh_free(b);
+    lh_pslg_free(&g);
+}
+
 LH_TEST(area_bound_and_steiner_limit)
 {
     lh_pslg g;
@@ -679,7 +731,7 @@ int main(int argc, char **argv)
     static const lh_test_case cases[] = {
         LH_CASE(cdt_of_triangle_files_is_exactly_valid), LH_CASE(earcut_polygons_have_n_plus_2h_minus_2_triangles),
         LH_CASE(quality_bound_met_but_at_small_input_angles), LH_CASE(conforming_delaunay_has_every_edge_delaunay),
-        LH_CASE(area_bound_and_steiner_limit),
+        LH_CASE(smoothing_raises_angles_and_keeps_the_mesh_valid), LH_CASE(area_bound_and_steiner_limit),
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
         LH_CASE(crossings_are_split_when_asked), LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),

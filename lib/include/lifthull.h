@@ -745,6 +745,12 @@ typedef struct lh_trimesh_options {
                                   crossing (the lines' intersection, rounded once) and
                                   are split there; 0: crossing segments are an error
                                   naming both (default 0)                            */
+    int smooth;                /* passes of smoothing after refinement: each Steiner
+                                  point on no segment moves to its neighbours' centroid
+                                  when that raises the smallest angle around it, keeps
+                                  every triangle positive and within its area bound;
+                                  then flips make the mesh constrained Delaunay again.
+                                  The smallest angle never decreases (default 0)      */
 } lh_trimesh_options;
 
 #define LH_TRIMESH_MAX_ANGLE 40.0 /* degrees: beyond it refinement need not end */
@@ -810,7 +816,7 @@ const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m);
 typedef struct lh_trimesh_stats {
     size_t input_vertices, duplicates_merged, segments_dropped, segments_overlapping;
     size_t holes_ignored, regions_ignored;
-    size_t steiner_points, steiner_on_segments, crossings_split;
+    size_t steiner_points, steiner_on_segments, crossings_split, smoothing_moves;
     size_t triangles, bad_triangles; /* bad: below min_angle or above an area bound at
                                         the end (input angles, -S or -Y stopped them)   */
     double min_angle, max_angle, min_area, max_area;

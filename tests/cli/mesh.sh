@@ -145,6 +145,8 @@ printf '# two segments that cross\n4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1
 expect "crossing segments" 3 '^cross\.poly:9: segment 2 crosses segment 1 \(line 8\)$' '' -- "$lh" mesh cross.poly -o cross.vtu
 absent cross.vtu
 expect "--split-crossings" 0 '' '^Mesh: 5 points' -- "$lh" mesh cross.poly --split-crossings --convex-hull
+expect "--smooth" 0 '' '^Smoothing: [1-9][0-9]* moves$' -- "$lh" mesh A.poly --min-angle 28 --max-area 0.0005 --smooth 5
+expect "--smooth -1" 2 'smooth' '' -- "$lh" mesh A.poly --smooth -1
 printf '4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 3\n2 3 7\n0\n' > range.poly
 expect "endpoint out of range" 3 "^range\.poly:8:5: expected an endpoint of segment 2 \(a vertex number from 1 to 4\), found '7'$" '' -- "$lh" mesh range.poly
 
