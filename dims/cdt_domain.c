@@ -111,8 +111,10 @@ static void carve(lh__m2 *m, uint32_t e)
             if (n >= 0 && m->mark[n] == e) m->nb[3 * t + k] = -1;
         }
     }
+    const size_t live = m->live;
     for (size_t t = 0; t < m->nt; t++)
         if (m->v[3 * t] >= 0 && m->mark[t] == e) lh__m2_kill_tri(m, (lh_index)t);
+    if (m->live == live) return; /* nothing removed: every vt still names a live triangle */
     for (size_t p = 0; p < m->np; p++) m->vt[p] = -1;
     for (size_t t = 0; t < m->nt; t++)
         if (m->v[3 * t] >= 0)
@@ -135,9 +137,11 @@ static lh_status seal(lh__m2 *m)
     return LH_OK;
 }
 
-/* Regional attributes and area bounds by flood from each region's seed. */
+/* Regional attributes and area bounds by flood from each region's seed (none, and
+ * m->tattr, m->tarea NULL, without regions or an old mesh's area bounds). */
 static lh_status regions(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, size_t *ignored)
 {
+    if (!g->region_count && !g->cover_area) return LH_OK; /* no per-triangle data */
     m->tattr = lh__alloc(&m->al, (m->cap_t ? m->cap_t : 1) * sizeof(double));
     m->tarea = lh__alloc(&m->al, (m->cap_t ? m->cap_t : 1) * sizeof(double));
     if (!m->tattr || !m->tarea) return LH_ERR_NOMEM;

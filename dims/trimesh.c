@@ -272,6 +272,10 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     if (!o->region_attributes) {
         lh__free(&r->al, r->tattr);
         r->tattr = NULL;
+    } else if (!r->tattr) { /* -A without regions: attribute 0 everywhere, as Triangle */
+        r->tattr = lh__alloc(&r->al, (r->nt ? r->nt : 1) * sizeof *r->tattr);
+        if (!r->tattr) return LH_ERR_NOMEM;
+        for (size_t t = 0; t < r->nt; t++) r->tattr[t] = 0;
     }
     r->stats.steiner_points = m->np - m->n_input;
     r->stats.crossings_split = m->crossings;
