@@ -100,6 +100,19 @@ lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_i
         if (t < 0) t = lh__m2_find_edge(m, b, a, &pos);
         if (t < 0) return LH_ERR_INTERNAL;
         const lh_index n = m->nb[3 * (size_t)t + pos];
+        /* The two triangles beside the subsegment join the cavity whatever incircle
+         * says, so p must lie in or on both circumcircles: only then are the new edges
+         * from p locally Delaunay (Bowyer-Watson's argument). A rounded split point can
+         * miss: beside a subsegment much shorter than the circle's radius R (below about
+         * sqrt(8 R ulp)) the circle's sagitta is under the rounding, and p rounded to
+         * the far side left an unconstrained edge that was not Delaunay. Refused. */
+        for (int j = 0; j < 2; j++) {
+            const lh_index u = j ? n : t;
+            if (u >= 0 && lh__m2_incircle(m, m->v[3 * (size_t)u], m->v[3 * (size_t)u + 1], m->v[3 * (size_t)u + 2], p) > 0) {
+                r->result = LH__M2_REFUSED;
+                return LH_OK;
+            }
+        }
         m->mark[t] = e;
         if ((st = lh__m2_cavity_push_dead(m, c, t)) != LH_OK) return st;
         if (n >= 0) {
