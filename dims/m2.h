@@ -185,7 +185,7 @@ lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_i
 int lh__m2_encroaches(const lh__m2 *m, lh_index s, const double *p);
 
 /* Build from the Delaunay triangulation of the input vertices (m2_build.c). */
-lh_status lh__m2_from_delaunay(lh__m2 *m, const lh_tri *dt);
+lh_status lh__m2_from_delaunay(lh__m2 *m, lh_tri *dt); /* takes dt's simplex arrays */
 
 /* Point location (m2_locate.c): a triangle whose closed region holds p, found by a
  * walk from `start` that never crosses a subsegment when `stop_at_segments`; then

@@ -143,7 +143,9 @@ lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
     const size_t nr = 3 * c->tri_count + c->bnd_count;
     if (!lh__m2_grow(m, (void **)&c->rec, 0, &c->rec_cap, 3 * nr, sizeof(lh_index)))
         return LH_ERR_NOMEM;
-    if ((st = lh__m2_reserve_tris(m, c->tri_count)) != LH_OK) return st;
+    /* the dead triangles' slots are reused: only the excess needs room */
+    if (c->tri_count > c->dead_count && (st = lh__m2_reserve_tris(m, c->tri_count - c->dead_count)) != LH_OK)
+        return st;
     size_t r = 0;
     for (size_t i = 0; i < c->tri_count; i++)
         for (int k = 0; k < 3; k++)
@@ -223,7 +225,7 @@ lh_status lh__m2_cavity_apply_fan(lh__m2 *m, lh__m2_cavity *c)
         c->bnd_count = 0;
         return lh__m2_cavity_apply(m, c);
     }
-    lh_status st = lh__m2_reserve_tris(m, k);
+    lh_status st = k > c->dead_count ? lh__m2_reserve_tris(m, k - c->dead_count) : LH_OK;
     if (st != LH_OK) return st;
     const double rattr = m->tattr && c->dead_count ? m->tattr[c->dead[0]] : 0;
     const double rarea = m->tarea && c->dead_count ? m->tarea[c->dead[0]] : 0;

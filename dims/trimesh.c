@@ -86,7 +86,7 @@ static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char
 }
 
 /* Steps 1-2: Delaunay of the vertices, then the segments. */
-static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, const lh_tri *dt,
+static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri *dt,
                            lh_trimesh_stats *st_out, char *msg, size_t size)
 {
     const lh_index *dup = lh_tri_duplicate_of(dt);
@@ -122,50 +122,61 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, const 
     return LH_OK;
 }
 
-/* Step 5: the handle's arrays from the mesh's live triangles. */
+/* Step 5: the handle's arrays from the mesh's live triangles. The point arrays and,
+ * when no triangle slot is free, the triangle arrays are taken over as they are (the
+ * mesh's own allocations, same hooks); otherwise the triangles are renumbered. */
 static lh_status harvest(lh_trimesh *r, lh__m2 *m)
 {
-    lh_index *map = lh__alloc(&r->al, (m->nt ? m->nt : 1) * sizeof *map);
+    const int dense = m->live == m->nt;
+    lh_index *map = dense ? NULL : lh__alloc(&r->al, (m->nt ? m->nt : 1) * sizeof *map);
     lh_index *smap = lh__alloc(&r->al, (m->ns ? m->ns : 1) * sizeof *smap);
     r->np = m->np, r->nt = m->live, r->na = m->attr_count;
-    r->xy = lh__alloc(&r->al, (r->np ? r->np : 1) * 2 * sizeof(double));
-    r->pmark = lh__alloc(&r->al, (r->np ? r->np : 1) * sizeof(lh_index));
-    r->tri = lh__alloc(&r->al, (r->nt ? r->nt : 1) * 3 * sizeof(lh_index));
-    r->nbr = lh__alloc(&r->al, (r->nt ? r->nt : 1) * 3 * sizeof(lh_index));
+    r->xy = m->xy, m->xy = NULL;
+    r->pmark = m->pmark, m->pmark = NULL;
+    r->pattr = m->attr, m->attr = NULL;
+    if (dense) {
+        r->tri = m->v, m->v = NULL;
+        r->nbr = m->nb, m->nb = NULL;
+        r->tattr = m->tattr, m->tattr = NULL;
+    } else {
+        r->tri = lh__alloc(&r->al, (r->nt ? r->nt : 1) * 3 * sizeof(lh_index));
+        r->nbr = lh__alloc(&r->al, (r->nt ? r->nt : 1) * 3 * sizeof(lh_index));
+        if (m->tattr) r->tattr = lh__alloc(&r->al, (r->nt ? r->nt : 1) * sizeof(double));
+    }
     r->seg = lh__alloc(&r->al, (m->ns ? m->ns : 1) * 2 * sizeof(lh_index));
     r->smark = lh__alloc(&r->al, (m->ns ? m->ns : 1) * sizeof(lh_index));
     r->spar = lh__alloc(&r->al, (m->ns ? m->ns : 1) * sizeof(lh_index));
-    if (r->na) r->pattr = lh__alloc(&r->al, r->np * (size_t)r->na * sizeof(double));
-    if (m->tattr) r->tattr = lh__alloc(&r->al, (r->nt ? r->nt : 1) * sizeof(double));
     lh_status st = LH_ERR_NOMEM;
-    if (!map || !smap || !r->xy || !r->pmark || !r->tri || !r->nbr || !r->seg || !r->smark ||
-        !r->spar || (r->na && !r->pattr) || (m->tattr && !r->tattr))
+    if ((!dense && (!map || (m->tattr && !r->tattr))) || !smap || !r->tri || !r->nbr || !r->seg ||
+        !r->smark || !r->spar)
         goto done;
-    memcpy(r->xy, m->xy, 2 * r->np * sizeof(double));
-    if (r->na) memcpy(r->pattr, m->attr, r->np * (size_t)r->na * sizeof(double));
-    size_t nt = 0;
-    for (size_t t = 0; t < m->nt; t++) map[t] = m->v[3 * t] >= 0 ? (lh_index)nt++ : -1;
+    if (!dense) {
+        size_t nt = 0;
+        for (size_t t = 0; t < m->nt; t++) map[t] = m->v[3 * t] >= 0 ? (lh_index)nt++ : -1;
+    }
     for (size_t s = 0; s < m->ns; s++) smap[s] = -1;
     r->ns = 0;
+    const lh_index *sg = m->sg, *v = dense ? r->tri : m->v, *nb = dense ? r->nbr : m->nb;
     for (size_t t = 0; t < m->nt; t++) {
-        if (map[t] < 0) continue;
-        const size_t u = (size_t)map[t];
+        if (v[3 * t] < 0) continue;
+        const size_t u = dense ? t : (size_t)map[t];
         for (int k = 0; k < 3; k++) {
-            const lh_index n = m->nb[3 * t + k], s = m->sg[3 * t + k];
-            r->tri[3 * u + k] = m->v[3 * t + k];
-            r->nbr[3 * u + k] = n >= 0 ? map[n] : -1;
+            const lh_index n = nb[3 * t + k], s = sg[3 * t + k];
+            if (!dense) {
+                r->tri[3 * u + k] = v[3 * t + k];
+                r->nbr[3 * u + k] = n >= 0 ? map[n] : -1;
+            }
             if (s < 0 || smap[s] >= 0) continue;
             smap[s] = (lh_index)r->ns;
             const lh_index p = m->sp[s], given = p >= 0 && m->seg_marker ? m->seg_marker[p] : 0;
             r->seg[2 * r->ns] = m->sv[2 * (size_t)s];
             r->seg[2 * r->ns + 1] = m->sv[2 * (size_t)s + 1];
             r->smark[r->ns] = given ? given : n < 0 ? 1 : 0;
-            r->spar[r->ns++] = p;
+            r->spar[r->ns++] = p >= 0 ? p : -1; /* hull and old-mesh edges: no input segment */
         }
-        if (r->tattr) r->tattr[u] = m->tattr[t];
+        if (!dense && r->tattr) r->tattr[u] = m->tattr[t];
     }
     /* point markers: the vertex's own, else its first subsegment's */
-    for (size_t p = 0; p < r->np; p++) r->pmark[p] = m->pmark[p];
     for (size_t s = 0; s < r->ns; s++)
         for (int j = 0; j < 2; j++)
             if (!r->pmark[r->seg[2 * s + j]]) r->pmark[r->seg[2 * s + j]] = r->smark[s];
@@ -176,9 +187,6 @@ done:
     return st;
 }
 
-/* Angle and area ranges: per triangle the cosines of its smallest and largest angles
- * (opposite its shortest and longest edges, by the law of cosines), one acos at the
- * end since acos is decreasing. */
 static void measure(const lh_trimesh *r, lh_trimesh_stats *s)
 {
     s->triangles = r->nt;
@@ -265,9 +273,23 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
         return st;
     if (o->smooth > 0 && (st = lh__m2_smooth(m, c, o->smooth, o->max_area, &r->stats.smoothing_moves)) != LH_OK)
         return st;
+    /* the triangles still bad, in the handle's numbering (live slots in order), before
+       harvest takes the mesh's arrays over */
     const int bounded = o->min_angle > 0 || o->max_area > 0 || o->region_areas;
     size_t nbad = 0;
     if (bounded) lh__m2_bad_triangles(m, &ro, NULL, &nbad);
+    r->bad = lh__alloc(&r->al, (nbad ? nbad : 1) * sizeof(lh_index));
+    if (!r->bad) return LH_ERR_NOMEM;
+    if (bounded) lh__m2_bad_triangles(m, &ro, r->bad, &nbad);
+    size_t live = 0, k = 0;
+    for (size_t t = 0; t < m->nt && k < nbad; t++) {
+        if (m->v[3 * t] < 0) continue;
+        if ((size_t)r->bad[k] == t) r->bad[k++] = (lh_index)live;
+        live++;
+    }
+    r->stats.steiner_points = m->np - m->n_input;
+    r->stats.crossings_split = m->crossings;
+    for (size_t p = m->n_input; p < m->np; p++) r->stats.steiner_on_segments += m->pseg[p] >= 0;
     if ((st = harvest(r, m)) != LH_OK) return st;
     if (!o->region_attributes) {
         lh__free(&r->al, r->tattr);
@@ -277,23 +299,6 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
         if (!r->tattr) return LH_ERR_NOMEM;
         for (size_t t = 0; t < r->nt; t++) r->tattr[t] = 0;
     }
-    r->stats.steiner_points = m->np - m->n_input;
-    r->stats.crossings_split = m->crossings;
-    for (size_t p = m->n_input; p < m->np; p++) r->stats.steiner_on_segments += m->pseg[p] >= 0;
-    r->bad = lh__alloc(&r->al, (nbad ? nbad : 1) * sizeof(lh_index));
-    if (!r->bad) return LH_ERR_NOMEM;
-    /* bad triangles in the handle's numbering: live slots in order */
-    size_t live = 0, k = 0;
-    lh__refine_opts q = ro;
-    lh_index *slots = lh__alloc(&r->al, (nbad ? nbad : 1) * sizeof(lh_index));
-    if (!slots) return LH_ERR_NOMEM;
-    if (bounded) lh__m2_bad_triangles(m, &q, slots, &nbad);
-    for (size_t t = 0; t < m->nt && k < nbad; t++) {
-        if (m->v[3 * t] < 0) continue;
-        if ((size_t)slots[k] == t) r->bad[k++] = (lh_index)live;
-        live++;
-    }
-    lh__free(&r->al, slots);
     r->stats.bad_triangles = nbad;
     return LH_OK;
 }
