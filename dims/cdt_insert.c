@@ -262,13 +262,55 @@ static lh_status split_crossing(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_inde
     return LH_OK;
 }
 
+/* With split_crossings an input segment's chain of subsegments bends at each rounded
+ * crossing vertex, so an input segment overlapping it (a duplicate, or collinear and
+ * sharing a stretch) no longer runs along it: inserted straight, it crossed the chain
+ * beside each bend and made a second chain, an ulp or so from the first along their
+ * whole length, whose slivers refinement split without end (gigabytes for a
+ * four-vertex input). So an overlap follows the chain: from a, a subsegment of an
+ * input segment on parent's line (exact orient_2 of the input endpoints) to a vertex
+ * w nearer b than a and ahead of a is claimed like an edge along the segment (w = b,
+ * or w before b). Returns the triangle holding that edge (*pos, *w), or -1. */
+static lh_index along_chain(const lh__m2 *m, lh_index a, lh_index b, lh_index parent, lh_index *w,
+                            int *pos)
+{
+    if (!m->split_crossings || !m->in_seg || parent < 0) return -1;
+    const lh_index *P = m->in_seg + 2 * (size_t)parent;
+    const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
+    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d2 = dx * dx + dy * dy;
+    fan f;
+    for (lh_index t = fan_first(m, &f, a); t >= 0; t = fan_next(m, &f)) {
+        const int i = lh__m2_vpos(m, t, a);
+        for (int j = 1; j <= 2; j++) { /* edge a-x is opposite position k */
+            const int k = (i + 3 - j) % 3;
+            const lh_index e = m->sg[3 * (size_t)t + k], x = m->v[3 * (size_t)t + (i + j) % 3];
+            if (e < 0 || m->sp[e] < 0) continue;
+            const lh_index *Q = m->in_seg + 2 * (size_t)m->sp[e];
+            if (lh__m2_orient(m, P[0], P[1], Q[0]) || lh__m2_orient(m, P[0], P[1], Q[1])) continue;
+            const double *px = lh__m2_pt(m, x);
+            const double ex = pb[0] - px[0], ey = pb[1] - px[1];
+            if (x != b && !((px[0] - pa[0]) * dx + (px[1] - pa[1]) * dy > 0 && ex * ex + ey * ey < d2)) continue;
+            *w = x, *pos = k;
+            return t;
+        }
+    }
+    return -1;
+}
+
 lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
                                 lh_index parent, lh__m2_problem *pb)
 {
     while (a != b) {
         lh_index u, end;
         int pos;
-        const lh_index t = start_wedge(m, a, b, &u, &pos);
+        lh_index t = along_chain(m, a, b, parent, &u, &pos);
+        if (t >= 0) {
+            lh_status st = claim_edge(m, t, pos, a, u, parent);
+            if (st != LH_OK) return st;
+            a = u;
+            continue;
+        }
+        t = start_wedge(m, a, b, &u, &pos);
         if (t < 0) return LH_ERR_INTERNAL;
         lh_status st;
         if (u >= 0) { /* an edge along the segment: a vertex on it, or b itself */

@@ -56,6 +56,8 @@ typedef struct lh__m2 {
     lh_index walk_hint;
     double lens;         /* encroachment: 0 diametral circles, else cos^2 2t (lenses) */
     int split_crossings; /* segment insertion: a crossing gets a vertex, not an error */
+    const lh_index *in_seg; /* the input segments (2 each), borrowed: an overlap follows
+                               a chain bent by crossings (cdt_insert.c, along_chain) */
     struct lh__cover *cover; /* an existing mesh to refine, whose union is the domain */
     size_t crossings;    /* vertices put at crossings                                */
 } lh__m2;

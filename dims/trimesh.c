@@ -340,6 +340,7 @@ lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
     st = lh__m2_init(&m, &al, g->n, g->xy, g->attr_count, g->attr, g->vertex_marker);
     m.seg_marker = g->segment_marker;
     m.split_crossings = o.split_crossings;
+    m.in_seg = g->segments;
     lh__cover cover;
     memset(&cover, 0, sizeof cover);
     if (st == LH_OK && g->cover_count) {

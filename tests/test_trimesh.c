@@ -421,6 +421,41 @@ LH_TEST(crossings_are_split_when_asked)
     }
 }
 
+/* A segment repeated after a crossing bent its first copy (a rounded crossing vertex)
+ * follows the bent chain and shares its edges, making no second crossing (fuzz_trimesh:
+ * the second, almost coincident chain made refinement split without end); earcut's
+ * water-huge polygons, refused before for a crossing their rounded points could not
+ * split, are meshed. */
+LH_TEST(an_overlap_follows_a_chain_bent_at_a_crossing)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load_text("4 2 0 0\n1 8 0\n2 -8 -8\n3 1 8\n4 8 -8\n"
+                               "5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 2\n5 2 1\n0\n", &g), LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.split_crossings = 1;
+    o.min_angle = 20;
+    o.max_steiner = 10000; /* a failure ends, not runs for ever */
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "repeated segment");
+    lh_trimesh_stats st;
+    if (m) {
+        lh_trimesh_get_stats(m, &st);
+        LH_EXPECT_EQ_U64(st.crossings_split, 1);
+        LH_EXPECT_EQ_U64(st.segments_overlapping, 1);
+        LH_EXPECT_LE_U64(st.steiner_points, 100);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+    o.min_angle = 0;
+    o.max_steiner = SIZE_MAX;
+    const char *huge[] = {"polygons/water-huge.json", "polygons/water-huge2.json"};
+    for (size_t i = 0; i < 2; i++) {
+        LH_ASSERT_EQ_INT(load(lh_rings_read, huge[i], &g), LH_OK);
+        lh_trimesh_free(mesh_checked(lh_t_, &g, &o, huge[i]));
+        lh_pslg_free(&g);
+    }
+}
+
 /* earcut's degenerate rings (zero-area, self-touching, shared points, holes outside
  * or touching, self-crossing): each meshed and exactly valid, or refused with
  * LH_ERR_DEGENERATE and a message (crossings without split_crossings; an empty
@@ -733,7 +768,8 @@ int main(int argc, char **argv)
         LH_CASE(quality_bound_met_but_at_small_input_angles), LH_CASE(conforming_delaunay_has_every_edge_delaunay),
         LH_CASE(smoothing_raises_angles_and_keeps_the_mesh_valid), LH_CASE(area_bound_and_steiner_limit),
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
-        LH_CASE(crossings_are_split_when_asked), LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
+        LH_CASE(crossings_are_split_when_asked), LH_CASE(an_overlap_follows_a_chain_bent_at_a_crossing),
+        LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
