@@ -16,9 +16,9 @@
  * Termination with small input angles (Shewchuk 2002, §6): a triangle whose shortest
  * edge joins points on two segments that meet at an input vertex at less than 60°,
  * at equal distances from it (the same shell), is not split; it is reported as bad.
- * A subsegment shorter than 2^-40 of the domain's diameter is never split (a guard
- * against endless splitting by rounding; it is reported the same way), and the
- * Steiner budget (-S) stops everything.
+ * A subsegment shorter than 2^-40 of the domain's diameter (or of its largest
+ * coordinate, when larger) is never split (a guard against endless splitting by
+ * rounding; it is reported the same way), and the Steiner budget (-S) stops everything.
  * Decisions that change the mesh are exact (m2_insert.c); the quality measures,
  * split points and centres are floating-point constructions.
  */
@@ -468,7 +468,13 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
             const double x = m->xy[2 * i + j];
             lo[j] = x < lo[j] ? x : lo[j], hi[j] = x > hi[j] ? x : hi[j];
         }
-    r.minlen2 = ldexp(dist2(lo, hi), -80);
+    /* 2^-40 of the larger of the diameter and the largest coordinate: relative to the
+       diameter alone it could lie below the rounding of coordinates far from the
+       origin (an ulp of 10^6 is 1.2e-10), and splits towards a small angle's apex
+       went down onto the grid of doubles, where rounded points keep no shell's shape,
+       without end (fuzz_trimesh, finding 6) */
+    const double mag = fmax(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
+    r.minlen2 = ldexp(fmax(dist2(lo, hi), mag * mag), -80);
     lh_status st = start(&r);
     if (st == LH_OK) st = run(&r);
     o->out->steiner_points = r.steiner;

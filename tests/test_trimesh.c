@@ -456,6 +456,31 @@ LH_TEST(an_overlap_follows_a_chain_bent_at_a_crossing)
     }
 }
 
+/* A 12-degree angle between a segment and a kept hull edge, 10^6 from the origin:
+ * refinement towards its apex stops at the minimum length (here 2^-40 of the largest
+ * coordinate, above the rounding), not on the grid of doubles without end. */
+LH_TEST(a_small_angle_far_from_the_origin_ends)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load_text("4 2 0 0\n1 1000000 1000002\n2 999997 1000002\n3 1000002 999992\n"
+                               "4 999992 999992\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n", &g), LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.split_crossings = 1;
+    o.convex_hull = 1;
+    o.min_angle = 30;
+    o.max_steiner = 20000; /* a failure ends, not runs for ever */
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "small angle at 10^6");
+    lh_trimesh_stats st;
+    if (m) {
+        lh_trimesh_get_stats(m, &st);
+        LH_EXPECT_EQ_INT(st.steiner_limit_reached, 0);
+        LH_EXPECT_LE_U64(st.steiner_points, 2000);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+}
+
 /* earcut's degenerate rings (zero-area, self-touching, shared points, holes outside
  * or touching, self-crossing): each meshed and exactly valid, or refused with
  * LH_ERR_DEGENERATE and a message (crossings without split_crossings; an empty
@@ -769,6 +794,7 @@ int main(int argc, char **argv)
         LH_CASE(smoothing_raises_angles_and_keeps_the_mesh_valid), LH_CASE(area_bound_and_steiner_limit),
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
         LH_CASE(crossings_are_split_when_asked), LH_CASE(an_overlap_follows_a_chain_bent_at_a_crossing),
+        LH_CASE(a_small_angle_far_from_the_origin_ends),
         LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
         LH_CASE(degenerate_input_is_resolved_and_reported),
