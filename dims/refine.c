@@ -472,7 +472,7 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
        diameter alone it could lie below the rounding of coordinates far from the
        origin (an ulp of 10^6 is 1.2e-10), and splits towards a small angle's apex
        went down onto the grid of doubles, where rounded points keep no shell's shape,
-       without end (fuzz_trimesh, finding 6) */
+       without end (fuzz/README.md, finding 8) */
     const double mag = fmax(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
     r.minlen2 = ldexp(fmax(dist2(lo, hi), mag * mag), -80);
     lh_status st = start(&r);

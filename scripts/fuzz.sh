@@ -11,10 +11,10 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 secs="${1:-30}"
-targets=(fuzz_delaunay fuzz_read fuzz_hull fuzz_check fuzz_cells fuzz_query fuzz_poly)
+targets=(fuzz_delaunay fuzz_read fuzz_hull fuzz_check fuzz_cells fuzz_query fuzz_poly fuzz_trimesh)
 # -max_len per target: a few dozen points (the point targets cap n anyway); files for the readers
 declare -A max_len=([fuzz_delaunay]=400 [fuzz_read]=2048 [fuzz_hull]=300 [fuzz_check]=200
-                    [fuzz_cells]=1024 [fuzz_query]=200 [fuzz_poly]=2048)
+                    [fuzz_cells]=1024 [fuzz_query]=200 [fuzz_poly]=2048 [fuzz_trimesh]=256)
 
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined"
 if ! { CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLH_BUILD_FUZZ=ON \

@@ -56,7 +56,7 @@ $lh points 200 -d 2 --exact-sphere -o "$vgdir/p2.txt" || status=1
   echo "$vg $t/test_voronoi nearest_matches_brute_force circumcenters_are_empty_sphere_centres compare_distance_is_exact bad_arguments every_allocation_failure_is_survived"
   echo "$vg $t/test_delaunay furthest_site_triangulation output_depends_only_on_the_site_set smallest_inputs duplicates_are_merged_and_reported bad_input_gets_its_status the_check_rejects_what_is_not_delaunay every_allocation_failure_is_survived"
   for x in test_io_read test_cells test_io_write test_complex; do echo "$vg $t/$x"; done
-  for x in delaunay read hull check cells query poly; do echo "$vg $t/fuzz_${x}_replay fuzz/corpus/$x/*"; done
+  for x in delaunay read hull check cells query poly trimesh; do echo "$vg $t/fuzz_${x}_replay fuzz/corpus/$x/*"; done
   echo "$vg $lh delaunay $vgdir/p3.txt -o $vgdir/t3.txt"
   echo "$vg $lh check $vgdir/p3.txt $vgdir/t3.txt"
   echo "$vg $lh hull $vgdir/p3.txt"
