@@ -49,19 +49,24 @@ t=build/tests lh=build/cli/lifthull
 vg="valgrind -q --error-exitcode=1 --leak-check=full"
 $lh points 200 -d 3 --integer 4 -o "$vgdir/p3.txt" || status=1
 $lh points 200 -d 2 --exact-sphere -o "$vgdir/p2.txt" || status=1
+$lh delaunay "$vgdir/p3.txt" -o "$vgdir/t3.txt" || status=1 # for `check`: the lanes run in any order
+cp tests/data/triangle/A.poly "$vgdir/" || status=1
 {
   # the slowest first (each 15-35 s under valgrind), so that the two lanes end together
   echo "$vg $t/test_hull hull_is_exactly_convex_and_closed general_position_hull_equals_delaunay_hull unit_cube_and_bad_input"
   echo "$vg $t/test_locate queries_inside_outside_and_on_sites points_on_shared_faces_get_the_smallest_simplex"
   echo "$vg $t/test_voronoi nearest_matches_brute_force circumcenters_are_empty_sphere_centres compare_distance_is_exact bad_arguments every_allocation_failure_is_survived"
   echo "$vg $t/test_delaunay furthest_site_triangulation output_depends_only_on_the_site_set smallest_inputs duplicates_are_merged_and_reported bad_input_gets_its_status the_check_rejects_what_is_not_delaunay every_allocation_failure_is_survived"
-  for x in test_io_read test_cells test_io_write test_complex; do echo "$vg $t/$x"; done
+  for x in test_io_read test_cells test_io_write test_complex test_io_poly; do echo "$vg $t/$x"; done
+  echo "$vg $t/test_trimesh cdt_of_triangle_files_is_exactly_valid quality_bound_met_but_at_small_input_angles bad_input_gets_its_error_and_line the_check_rejects_what_is_not_a_cdt"
   for x in delaunay read hull check cells query poly trimesh; do echo "$vg $t/fuzz_${x}_replay fuzz/corpus/$x/*"; done
-  echo "$vg $lh delaunay $vgdir/p3.txt -o $vgdir/t3.txt"
+  echo "$vg $lh delaunay $vgdir/p3.txt -o $vgdir/t3v.txt"
   echo "$vg $lh check $vgdir/p3.txt $vgdir/t3.txt"
   echo "$vg $lh hull $vgdir/p3.txt"
   echo "$vg $lh voronoi $vgdir/p2.txt"
   echo "$vg $lh qdelaunay i Qt TI $vgdir/p2.txt"
+  echo "$vg $lh triangle -pq30Q $vgdir/A.poly"
+  echo "$vg $lh mesh $vgdir/A.poly --min-angle 25 --smooth 2 -o $vgdir/A.svg"
 } > "$vgdir/commands"
 # two at a time; a command's output is shown only when it fails
 if xargs -d '\n' -P "$jobs" -I{} bash -c 'log="$(mktemp)"; if {} >"$log" 2>&1; then rm -f "$log"; else
