@@ -125,15 +125,6 @@ lh_status lh__cover_segments(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, l
     return LH_OK;
 }
 
-/* Whether x -> y runs the way a -> b does (the four collinear): each coordinate's
- * difference has its exact sign after rounding. */
-static int same_way(const double *x, const double *y, const double *a, const double *b)
-{
-    for (int j = 0; j < 2; j++)
-        if ((y[j] > x[j]) != (b[j] > a[j]) || (y[j] < x[j]) != (b[j] < a[j])) return 0;
-    return 1;
-}
-
 lh_status lh__cover_outside(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, uint32_t e)
 {
     const uint32_t in = lh__m2_new_epoch(m);
@@ -146,7 +137,7 @@ lh_status lh__cover_outside(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, ui
             if (s < 0 || m->sp[s] > LH__COVER_PARENT(0)) continue;
             const size_t i = (size_t)LH__COVER_PARENT(m->sp[s]); /* the map is its own inverse */
             const double *x = lh__m2_pt(m, m->v[3 * t + (k + 1) % 3]), *y = lh__m2_pt(m, m->v[3 * t + (k + 2) % 3]);
-            if (m->mark[t] != in && same_way(x, y, lh__m2_pt(m, cv->bnd[2 * i]), lh__m2_pt(m, cv->bnd[2 * i + 1]))) {
+            if (m->mark[t] != in && lh__m2_same_way(x, y, lh__m2_pt(m, cv->bnd[2 * i]), lh__m2_pt(m, cv->bnd[2 * i + 1]))) {
                 m->mark[t] = in;
                 if ((st = lh__m2_stack_push(m, c, (lh_index)t)) != LH_OK) return st;
             }

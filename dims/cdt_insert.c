@@ -13,40 +13,10 @@
 
 #include "m2.h"
 
-/* Triangles around vertex a: counterclockwise from vt[a] until back or at the
- * boundary, then clockwise from vt[a]. */
-typedef struct fan {
-    lh_index a, t0, t;
-    int backward;
-} fan;
-
-static lh_index fan_first(const lh__m2 *m, fan *f, lh_index a)
-{
-    f->a = a;
-    f->t0 = f->t = m->vt[a];
-    f->backward = 0;
-    return f->t;
-}
-
-static lh_index fan_next(const lh__m2 *m, fan *f)
-{
-    const int i = lh__m2_vpos(m, f->t, f->a);
-    lh_index n = m->nb[3 * (size_t)f->t + (f->backward ? (i + 2) % 3 : (i + 1) % 3)];
-    if (!f->backward && n == f->t0) return -1;
-    if (n < 0 && !f->backward) {
-        f->backward = 1;
-        f->t = f->t0;
-        const int j = lh__m2_vpos(m, f->t, f->a);
-        n = m->nb[3 * (size_t)f->t + (j + 2) % 3];
-    }
-    f->t = n;
-    return n;
-}
-
 lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos)
 {
-    fan f;
-    for (lh_index t = fan_first(m, &f, a); t >= 0; t = fan_next(m, &f)) {
+    lh__m2_fan f;
+    for (lh_index t = lh__m2_fan_first(m, &f, a); t >= 0; t = lh__m2_fan_next(m, &f)) {
         const int i = lh__m2_vpos(m, t, a);
         if (m->v[3 * (size_t)t + (i + 1) % 3] == b) {
             *pos = (i + 2) % 3;
@@ -54,15 +24,6 @@ lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos)
         }
     }
     return -1;
-}
-
-/* Whether u - a and b - a point the same way, given a, u, b collinear and distinct:
- * each coordinate difference has its exact sign after rounding. */
-static int same_direction(const double *a, const double *u, const double *b)
-{
-    for (int j = 0; j < 2; j++)
-        if ((u[j] > a[j]) != (b[j] > a[j]) || (u[j] < a[j]) != (b[j] < a[j])) return 0;
-    return 1;
 }
 
 /* Marks edge t:pos (and its twin) as subsegment s. */
@@ -128,17 +89,17 @@ static lh_status retriangulate(lh__m2 *m, lh__m2_cavity *c, lh_index p, lh_index
  * the ray a->b (then *pos names edge a-u), or -1 when the ray enters the interior. */
 static lh_index start_wedge(lh__m2 *m, lh_index a, lh_index b, lh_index *u, int *pos)
 {
-    fan f;
+    lh__m2_fan f;
     const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
-    for (lh_index t = fan_first(m, &f, a); t >= 0; t = fan_next(m, &f)) {
+    for (lh_index t = lh__m2_fan_first(m, &f, a); t >= 0; t = lh__m2_fan_next(m, &f)) {
         const int i = lh__m2_vpos(m, t, a);
         const lh_index x = m->v[3 * (size_t)t + (i + 1) % 3], y = m->v[3 * (size_t)t + (i + 2) % 3];
         const int ox = lh__m2_orient(m, a, x, b), oy = lh__m2_orient(m, a, y, b);
-        if (ox == 0 && same_direction(pa, lh__m2_pt(m, x), pb)) {
+        if (ox == 0 && lh__m2_same_way(pa, lh__m2_pt(m, x), pa, pb)) {
             *u = x, *pos = (i + 2) % 3;
             return t;
         }
-        if (oy == 0 && same_direction(pa, lh__m2_pt(m, y), pb)) {
+        if (oy == 0 && lh__m2_same_way(pa, lh__m2_pt(m, y), pa, pb)) {
             *u = y, *pos = (i + 1) % 3;
             return t;
         }
@@ -278,8 +239,8 @@ static lh_index along_chain(const lh__m2 *m, lh_index a, lh_index b, lh_index pa
     const lh_index *P = m->in_seg + 2 * (size_t)parent;
     const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
     const double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d2 = dx * dx + dy * dy;
-    fan f;
-    for (lh_index t = fan_first(m, &f, a); t >= 0; t = fan_next(m, &f)) {
+    lh__m2_fan f;
+    for (lh_index t = lh__m2_fan_first(m, &f, a); t >= 0; t = lh__m2_fan_next(m, &f)) {
         const int i = lh__m2_vpos(m, t, a);
         for (int j = 1; j <= 2; j++) { /* edge a-x is opposite position k */
             const int k = (i + 3 - j) % 3;

@@ -86,11 +86,52 @@ static inline int lh__m2_vpos(const lh__m2 *m, lh_index t, lh_index p)
     const lh_index *v = m->v + 3 * (size_t)t;
     return v[0] == p ? 0 : v[1] == p ? 1 : v[2] == p ? 2 : -1;
 }
+/* Whether x -> y runs the way a -> b does, the four points collinear (and x != y,
+ * a != b): each coordinate's difference has its exact sign after rounding. */
+static inline int lh__m2_same_way(const double *x, const double *y, const double *a, const double *b)
+{
+    for (int j = 0; j < 2; j++)
+        if ((y[j] > x[j]) != (b[j] > a[j]) || (y[j] < x[j]) != (b[j] < a[j])) return 0;
+    return 1;
+}
+
+/* The triangles around vertex a: counterclockwise from vt[a] until back or at the
+ * boundary, then clockwise from vt[a]:
+ *     lh__m2_fan f;
+ *     for (lh_index t = lh__m2_fan_first(m, &f, a); t >= 0; t = lh__m2_fan_next(m, &f)) */
+typedef struct lh__m2_fan {
+    lh_index a, t0, t;
+    int backward;
+} lh__m2_fan;
+
+static inline lh_index lh__m2_fan_first(const lh__m2 *m, lh__m2_fan *f, lh_index a)
+{
+    f->a = a;
+    f->t0 = f->t = m->vt[a];
+    f->backward = 0;
+    return f->t;
+}
+
 /* The position in triangle u of its edge shared with triangle t. */
 static inline int lh__m2_npos(const lh__m2 *m, lh_index u, lh_index t)
 {
     const lh_index *n = m->nb + 3 * (size_t)u;
     return n[0] == t ? 0 : n[1] == t ? 1 : 2;
+}
+
+static inline lh_index lh__m2_fan_next(const lh__m2 *m, lh__m2_fan *f)
+{
+    const int i = lh__m2_vpos(m, f->t, f->a);
+    lh_index n = m->nb[3 * (size_t)f->t + (f->backward ? (i + 2) % 3 : (i + 1) % 3)];
+    if (!f->backward && n == f->t0) return -1;
+    if (n < 0 && !f->backward) {
+        f->backward = 1;
+        f->t = f->t0;
+        const int j = lh__m2_vpos(m, f->t, f->a);
+        n = m->nb[3 * (size_t)f->t + (j + 2) % 3];
+    }
+    f->t = n;
+    return n;
 }
 
 /*

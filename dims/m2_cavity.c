@@ -13,20 +13,6 @@
 
 #include "m2.h"
 
-int lh__m2_grow_slow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need, size_t esz)
-{
-    size_t c = *cap ? *cap : 32;
-    while (c < need) c *= 2;
-    if (c > SIZE_MAX / esz) return 0;
-    void *q = lh__alloc(&m->al, c * esz);
-    if (!q) return 0;
-    if (count) memcpy(q, *arr, count * esz);
-    lh__free(&m->al, *arr);
-    *arr = q;
-    *cap = c;
-    return 1;
-}
-
 void lh__m2_cavity_free(lh__m2 *m, lh__m2_cavity *c)
 {
     lh__free(&m->al, c->dead);

@@ -26,6 +26,14 @@ static size_t next_cap(size_t cap, size_t need)
     return c;
 }
 
+int lh__m2_grow_slow(lh__m2 *m, void **arr, size_t count, size_t *cap, size_t need, size_t esz)
+{
+    const size_t c = next_cap(*cap, need);
+    if (!grow(m, arr, count, c, esz)) return 0;
+    *cap = c;
+    return 1;
+}
+
 static lh_status reserve_points(lh__m2 *m, size_t need)
 {
     if (need <= m->cap_p) return LH_OK;

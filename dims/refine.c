@@ -200,10 +200,8 @@ static lh_status after_insert(rf *r)
 static int corner_below(const lh__m2 *m, lh_index o, lh_index x, lh_index parent, double cmin)
 {
     const double *po = lh__m2_pt(m, o), *px = lh__m2_pt(m, x);
-    const lh_index t0 = m->vt[o];
-    lh_index t = t0;
-    int backward = 0;
-    while (t >= 0) {
+    lh__m2_fan f;
+    for (lh_index t = lh__m2_fan_first(m, &f, o); t >= 0; t = lh__m2_fan_next(m, &f)) {
         const int i = lh__m2_vpos(m, t, o);
         for (int j = 1; j <= 2; j++) { /* the two edges of t at o */
             const lh_index y = m->v[3 * (size_t)t + (i + j) % 3];
@@ -214,13 +212,6 @@ static int corner_below(const lh__m2 *m, lh_index o, lh_index x, lh_index parent
             const double dot = ux * vx + uy * vy;
             if (dot > 0 && dot * dot > cmin * cmin * (ux * ux + uy * uy) * (vx * vx + vy * vy)) return 1;
         }
-        lh_index n = m->nb[3 * (size_t)t + (backward ? (i + 2) % 3 : (i + 1) % 3)];
-        if (!backward && n == t0) break;
-        if (n < 0 && !backward) {
-            backward = 1;
-            n = m->nb[3 * (size_t)t0 + (lh__m2_vpos(m, t0, o) + 2) % 3];
-        }
-        t = n;
     }
     return 0;
 }

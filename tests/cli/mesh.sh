@@ -5,26 +5,7 @@
 # headers of .msh .off .node .ele .poly), whole-or-nothing output files that need -f
 # to replace and never replace an input, usage errors (exit 2) and bad input (exit 3).
 set -u
-lh="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; data="$(cd "$2" && pwd)"
-tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
-cd "$tmp"
-pass=0; fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL $*"; }
-matches() { if [ -z "$2" ]; then [ ! -s "$1" ]; else grep -Eq -- "$2" "$1"; fi; }
-# expect NAME CODE STDERR_REGEX STDOUT_REGEX -- COMMAND...: exit code and both streams.
-expect() {
-  local name="$1" code="$2" err="$3" out="$4"; shift 5
-  "$@" > out.txt 2> err.txt; local got=$?
-  # a sanitizer's report fails the case whatever the exit code (ASan exits 1 too)
-  if grep -Eq 'Sanitizer|runtime error:' err.txt; then bad "$name: $(grep -E -m1 'Sanitizer|runtime error:' err.txt)"
-  elif [ "$got" -eq "$code" ] && matches err.txt "$err" && matches out.txt "$out"; then ok
-  else bad "$name: exit $got (want $code); stderr: $(head -c 300 err.txt); stdout: $(head -c 300 out.txt)"; fi
-}
-line() { sed -n "$2p" "$1" | tr -s ' \t' ' ' | sed 's/^ //; s/ $//'; }
-same() { if [ "$2" = "$3" ]; then ok; else bad "$1: '$2', want '$3'"; fi; }
-exists() { for f in "$@"; do [ -e "$f" ] || { bad "$f missing"; return; }; done; ok; }
-absent() { for f in "$@"; do [ ! -e "$f" ] || { bad "$f exists"; return; }; done; ok; }
+. "$(dirname "${BASH_SOURCE[0]}")/harness.sh"
 # xml NAME FILE: well-formed XML
 if command -v xmllint > /dev/null; then xml() { xmllint --noout "$2" 2> xml.err && ok || bad "$1: $(head -c 300 xml.err)"; }
 elif command -v python3 > /dev/null; then xml() { python3 -c 'import sys, xml.dom.minidom as m; m.parse(sys.argv[1])' "$2" 2> xml.err && ok || bad "$1: $(tail -1 xml.err)"; }
@@ -150,5 +131,4 @@ expect "--smooth -1" 2 'smooth' '' -- "$lh" mesh A.poly --smooth -1
 printf '4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 3\n2 3 7\n0\n' > range.poly
 expect "endpoint out of range" 3 "^range\.poly:8:5: expected an endpoint of segment 2 \(a vertex number from 1 to 4\), found '7'$" '' -- "$lh" mesh range.poly
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish
