@@ -1,18 +1,28 @@
 // bench_delaunay — whole Delaunay triangulations: lifthull next to CGAL (dD, DT2, DT3),
-// Qhull (libqhull_r, as qdelaunay Qt) and TetGen, on the same uniform random sites.
+// Qhull (libqhull_r, as qdelaunay Qt) and TetGen, on the same sites.
 //
-// Two modes:
+// Three modes:
 //
-//   bench_delaunay run TOOL D N SEED [--timeout S]
-//       Generates N sites uniform in [0,1)^D (seeded; identical for every tool), computes
-//       one triangulation in this process and prints one line:
-//         TOOL D N seconds=<wall> cpu=<user+sys> simplices=<finite simplices> peak_kb=<maxrss>
-//       TOOL: lifthull | cgal_dd | cgal_2 | cgal_3 | qhull | tetgen | none
-//       ("none" only generates the sites: the memory of the input alone).
+//   bench_delaunay run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere]
+//       Generates the sites (seeded; identical for every tool): by default N sites uniform
+//       in [0,1)^D; --dist grid or sphere: an integer grid of about N points or N integer
+//       points on one sphere (bench_sites.h). Computes one triangulation in this process
+//       and prints one line:
+//         TOOL D N seconds=<wall> cpu=<user+sys> simplices=<finite simplices> peak_kb=<peak RSS, KiB>
+//           sites=<sites generated>
+//       (one line), and for lifthull also the predicate counters of the build
+//       (lh_pred_counters): pred_calls= pred_filter= pred_grid= pred_exact= pred_zero=
+//       pred_sos_general=.
+//       TOOL: lifthull | lifthull_generic | cgal_dd | cgal_2 | cgal_3 | qhull | tetgen | none
+//       ("none" only generates the sites: the memory of the input alone). With --dist
+//       sphere, Qhull runs with 'Qz' added (it refuses cospherical input without it).
 //       The timer starts when the sites are in the tool's input form and stops when the
 //       tool has returned its triangulation and its simplex count is known; destruction
-//       is not timed. peak_kb is getrusage(RUSAGE_SELF).ru_maxrss of the whole process
-//       (libraries, the input, the tool), read after the computation.
+//       is not timed. peak_kb is the whole process's peak resident set (libraries, the
+//       input, the tool), read after the computation: VmHWM of /proc/self/status, which
+//       starts afresh at exec (getrusage's ru_maxrss keeps the spawning parent's peak
+//       across fork+exec: a Python driver's 25 MB would hide a small run's own), or
+//       ru_maxrss where /proc is missing.
 //
 //   bench_delaunay suite [--quick] [--rounds R] [--dims 2,3,..] [--tools a,b,..]
 //                        [--scale K] [--seed S] [--timeout S]
@@ -24,6 +34,9 @@
 //       by r, on the sites of seed S+r. Reports medians, ratios tool/lifthull (so "2.3x"
 //       means lifthull took 2.3 times less time), bars, and checks that every tool counted
 //       the same number of simplices. Markdown on stdout, progress on stderr.
+//
+//   bench_delaunay info
+//       Prints the machine and build facts the suite's report starts with (Markdown list).
 //
 // Input forms (what each tool's caller holds while the tool runs, so part of its peak):
 //   lifthull  the flat array of n*d doubles (lh_delaunay copies it internally).
@@ -40,7 +53,9 @@
 
 #include <lifthull.h>
 
+#include "bench_counters.h"
 #include "bench_machine.h"
+#include "bench_sites.h"
 
 #include <CGAL/Delaunay_triangulation.h>
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -59,7 +74,6 @@
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -92,6 +106,9 @@ namespace {
 // 'Qc' is set by qdelaunay and implies 'Qi'; 'Qt' triangulates). With no output file,
 // qh_new_qhull runs qh_prepare_output, which performs the Qt triangulation.
 const char *const kQhullCmd = "qhull d Qbb Qt Qc";
+// For --dist sphere: Qhull refuses cospherical input under Qbb (QH6019) and advises 'Qz',
+// a point at infinity, which qdelaunay users add for such input.
+const char *const kQhullCmdCospherical = "qhull d Qbb Qt Qc Qz";
 // TetGen switches: Delaunay tetrahedralization of the points (no 'p': no PLC, no
 // quality), quiet. Output goes to a tetgenio (library mode writes no files).
 const char *const kTetgenSwitches = "Q";
@@ -110,7 +127,12 @@ double cpu_s() {
            double(ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_stime.tv_usec);
 }
 
+// Peak resident set of this program image, in KiB (see the header comment).
 long peak_kb() {
+    std::ifstream f("/proc/self/status");
+    std::string line;
+    while (std::getline(f, line))
+        if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6); // "VmHWM: 1234 kB"
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     return ru.ru_maxrss; // kilobytes on Linux
@@ -123,20 +145,14 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
-// Sites uniform in [0,1)^d: n*d doubles, each a multiple of 2^-53, from mt19937_64.
-std::vector<double> gen_sites(int d, size_t n, uint64_t seed) {
-    std::mt19937_64 g(seed);
-    std::vector<double> xyz(n * size_t(d));
-    for (double &x : xyz) x = double(g() >> 11) * 0x1p-53;
-    return xyz;
-}
-
 void release(std::vector<double> &v) { std::vector<double>().swap(v); }
 
 struct Timing {
     double wall = 0, cpu = 0;
     double hull_wall = -1; // Qhull only: the time before its Qt/output step
     size_t simplices = 0;
+    bool have_counters = false; // lifthull only: its predicate counters
+    lh_pred_counters counters{};
 };
 
 struct Stopwatch {
@@ -165,6 +181,8 @@ Timing run_lifthull(int d, size_t n, std::vector<double> &xyz, bool generic) {
     if (st != LH_OK) die("lh_delaunay", lh_status_message(st));
     t.simplices = lh_tri_count(tri);
     sw.stop(t);
+    lh_bench_tri_counters(tri, &t.counters);
+    t.have_counters = true;
     lh_tri_free(tri);
     return t;
 }
@@ -255,11 +273,11 @@ int qhull_steps(qhT *qh, int d, int n, coordT *pts, char *cmd, double *t_hull) {
     return code;
 }
 
-Timing run_qhull(int d, size_t n, std::vector<double> &xyz) {
+Timing run_qhull(int d, size_t n, std::vector<double> &xyz, const char *qhull_cmd) {
     static qhT qh_qh;
     qhT *qh = &qh_qh;
     QHULL_LIB_CHECK
-    std::vector<char> cmd(kQhullCmd, kQhullCmd + std::strlen(kQhullCmd) + 1);
+    std::vector<char> cmd(qhull_cmd, qhull_cmd + std::strlen(qhull_cmd) + 1);
     Timing t;
     double t_hull = 0;
     Stopwatch sw;
@@ -331,18 +349,25 @@ size_t parse_count(const char *s) {
 }
 
 int cmd_run(int argc, char **argv) {
-    // argv: run TOOL D N SEED [--timeout S]
+    // argv: run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere]
     if (argc < 5) {
-        std::fprintf(stderr, "usage: bench_delaunay run TOOL D N SEED [--timeout S]\n");
+        std::fprintf(stderr, "usage: bench_delaunay run TOOL D N SEED [--timeout S] "
+                             "[--dist uniform|grid|sphere]\n");
         return 1;
     }
     std::string tool = argv[1];
     int d = std::atoi(argv[2]);
     size_t n = parse_count(argv[3]);
     uint64_t seed = std::strtoull(argv[4], nullptr, 0);
+    SiteDist dist = SiteDist::uniform;
     for (int i = 5; i < argc; ++i) {
         if (std::string(argv[i]) == "--timeout" && i + 1 < argc) {
             alarm(unsigned(std::max(1, std::atoi(argv[++i])))); // SIGALRM ends the process
+        } else if (std::string(argv[i]) == "--dist" && i + 1 < argc) {
+            if (!site_dist_parse(argv[++i], &dist)) {
+                std::fprintf(stderr, "bench_delaunay run: unknown distribution %s\n", argv[i]);
+                return 1;
+            }
         } else {
             std::fprintf(stderr, "bench_delaunay run: unknown argument %s\n", argv[i]);
             return 1;
@@ -357,7 +382,15 @@ int cmd_run(int argc, char **argv) {
         std::fprintf(stderr, "bench_delaunay run: %s was not built in\n", tool.c_str());
         return 1;
     }
-    std::vector<double> xyz = gen_sites(d, n, seed);
+    std::vector<double> xyz;
+    std::string gen_err;
+    if (!site_make(dist, d, n, seed, &xyz, &gen_err)) {
+        std::fprintf(stderr, "bench_delaunay run: %s sites: %s\n", site_dist_name(dist),
+                     gen_err.c_str());
+        return 1;
+    }
+    const size_t requested = n, sites = xyz.size() / size_t(d); // grid: k^D, not N
+    n = sites;
     Timing t;
     if (tool == "lifthull") t = run_lifthull(d, n, xyz, false);
     else if (tool == "lifthull_generic") t = run_lifthull(d, n, xyz, true);
@@ -365,7 +398,8 @@ int cmd_run(int argc, char **argv) {
     else if (tool == "cgal_2") t = run_cgal_2(n, xyz);
     else if (tool == "cgal_3") t = run_cgal_3(n, xyz);
 #ifdef LH_BENCH_HAVE_QHULL
-    else if (tool == "qhull") t = run_qhull(d, n, xyz);
+    else if (tool == "qhull")
+        t = run_qhull(d, n, xyz, dist == SiteDist::sphere ? kQhullCmdCospherical : kQhullCmd);
 #endif
 #ifdef LH_BENCH_HAVE_TETGEN
     else if (tool == "tetgen") t = run_tetgen(n, xyz);
@@ -374,9 +408,17 @@ int cmd_run(int argc, char **argv) {
         volatile double sink = xyz.empty() ? 0.0 : xyz.back();
         (void)sink;
     }
-    std::printf("%s %d %zu seconds=%.6f cpu=%.6f simplices=%zu peak_kb=%ld", tool.c_str(), d, n,
-                t.wall, t.cpu, t.simplices, peak_kb());
+    std::printf("%s %d %zu seconds=%.6f cpu=%.6f simplices=%zu peak_kb=%ld sites=%zu", tool.c_str(),
+                d, requested, t.wall, t.cpu, t.simplices, peak_kb(), sites);
     if (t.hull_wall >= 0) std::printf(" hull_seconds=%.6f", t.hull_wall);
+    if (t.have_counters) {
+        const lh_pred_counters &k = t.counters;
+        std::printf(" pred_calls=%llu pred_filter=%llu pred_grid=%llu pred_exact=%llu pred_zero=%llu"
+                    " pred_sos_general=%llu",
+                    (unsigned long long)k.calls, (unsigned long long)k.filter_exits,
+                    (unsigned long long)k.grid_exits, (unsigned long long)k.exact_exits,
+                    (unsigned long long)k.zero_results, (unsigned long long)k.sos_general);
+    }
     std::printf("\n");
     std::fflush(stdout);
     // Skip destructors: tearing down a million-cell triangulation is not measured and
@@ -538,12 +580,37 @@ void suite_usage() {
                  "usage: bench_delaunay suite [--quick] [--rounds R] [--dims 2,3,4,5]\n"
                  "                            [--tools lifthull,cgal_dd,...] [--scale K]\n"
                  "                            [--seed S] [--timeout S]\n"
-                 "       bench_delaunay run TOOL D N SEED [--timeout S]\n"
+                 "       bench_delaunay run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere]\n"
+                 "       bench_delaunay info   (machine and build facts)\n"
                  "  sizes: (2,10^6) (3,10^6) (4,10^5) (5,2*10^4); --quick divides N by 20 and\n"
                  "  runs 2 rounds (--scale K divides by K); R interleaved rounds (default 3;\n"
                  "  the criterion needs >= 3)\n"
                  "  tools: lifthull cgal_dd qhull cgal_2 cgal_3 tetgen (none: input only,\n"
                  "  always run); --timeout: per child process (default 1800 s, quick 120 s)\n");
+}
+
+// The machine and build facts every report starts with: a Markdown list on stdout.
+void print_build_facts() {
+    struct utsname un;
+    std::string kernel = uname(&un) == 0 ? std::string(un.sysname) + " " + un.release + " " +
+                                               un.machine
+                                         : "unknown";
+    std::printf("- CPU: %s (%ld logical CPUs online), memory %s\n", cpu_model().c_str(),
+                sysconf(_SC_NPROCESSORS_ONLN), mem_total().c_str());
+    std::printf("- OS: %s\n", kernel.c_str());
+    std::printf("- lifthull %s, C compiler: %s, flags: `%s`\n", lh_version_string(),
+                LH_BENCH_C_COMPILER, LH_BENCH_C_FLAGS);
+    std::printf("- bench C++ compiler: %s, flags: `%s`, build type %s\n", LH_BENCH_CXX_COMPILER,
+                LH_BENCH_CXX_FLAGS, LH_BENCH_BUILD_TYPE);
+    std::printf("- CGAL %s (Epick, Epick_d<Dimension_tag<D>>), Eigen %d.%d.%d", CGAL_VERSION_STR,
+                EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION);
+#ifdef LH_BENCH_HAVE_QHULL
+    std::printf(", Qhull %s (libqhull_r, `%s`)", qh_version, kQhullCmd);
+#endif
+#ifdef LH_BENCH_HAVE_TETGEN
+    std::printf(", TetGen 1.5 (libtet, switches `%s`)", kTetgenSwitches);
+#endif
+    std::printf("\n");
 }
 
 struct Config {
@@ -678,26 +745,7 @@ int cmd_suite(int argc, char **argv) {
     const double t_total = now_s() - t_start;
 
     // ---- report ----
-    struct utsname un;
-    std::string kernel = uname(&un) == 0 ? std::string(un.sysname) + " " + un.release + " " +
-                                               un.machine
-                                         : "unknown";
-    std::printf("- CPU: %s (%ld logical CPUs online), memory %s\n", cpu_model().c_str(),
-                sysconf(_SC_NPROCESSORS_ONLN), mem_total().c_str());
-    std::printf("- OS: %s\n", kernel.c_str());
-    std::printf("- lifthull %s, C compiler: %s, flags: `%s`\n", lh_version_string(),
-                LH_BENCH_C_COMPILER, LH_BENCH_C_FLAGS);
-    std::printf("- bench C++ compiler: %s, flags: `%s`, build type %s\n", LH_BENCH_CXX_COMPILER,
-                LH_BENCH_CXX_FLAGS, LH_BENCH_BUILD_TYPE);
-    std::printf("- CGAL %s (Epick, Epick_d<Dimension_tag<D>>), Eigen %d.%d.%d", CGAL_VERSION_STR,
-                EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION);
-#ifdef LH_BENCH_HAVE_QHULL
-    std::printf(", Qhull %s (libqhull_r, `%s`)", qh_version, kQhullCmd);
-#endif
-#ifdef LH_BENCH_HAVE_TETGEN
-    std::printf(", TetGen 1.5 (libtet, switches `%s`)", kTetgenSwitches);
-#endif
-    std::printf("\n");
+    print_build_facts();
     for (auto &t : skipped) std::printf("- **%s: not built** (library not found at configure time)\n", t.c_str());
     std::printf("- sites uniform in [0,1)^D (mt19937_64, 53-bit doubles); %d interleaved round(s), "
                 "round r on seed %llu+r, every run a separate process; total %.0f s\n",
@@ -893,6 +941,10 @@ int cmd_suite(int argc, char **argv) {
 int main(int argc, char **argv) {
     if (argc >= 2 && std::string(argv[1]) == "run") return cmd_run(argc - 1, argv + 1);
     if (argc >= 2 && std::string(argv[1]) == "suite") return cmd_suite(argc - 1, argv + 1);
+    if (argc == 2 && std::string(argv[1]) == "info") {
+        print_build_facts();
+        return 0;
+    }
     if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
         suite_usage();
         return 0;
