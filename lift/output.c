@@ -62,13 +62,16 @@ static lh_status place_simplices(lh__eng *b, lh_tri *t, lh_index *cell, const lh
 }
 
 /* Neighbour k of simplex s: across the facet opposite its k-th vertex. Cells are
- * visited in store order (neighbouring cells are mostly close in memory, so their
- * out_of_cell entries too); the simplex's two rows are prefetched. */
+ * visited in store order; the neighbours' out_of_cell entries are prefetched 2*AHEAD
+ * cells early (the free list scatters them), the simplex's two rows AHEAD early. */
 static void set_neighbours(lh__eng *b, lh_tri *t, const lh_index *out_of_cell)
 {
     const int nv = b->nv;
     const lh_index top = b->tds.top;
     for (lh_index c = 0; c < top; c++) {
+        if (c + 2 * AHEAD < top && out_of_cell[c + 2 * AHEAD] >= 0)
+            for (int j = 0; j < nv; j++) /* free-list reuse scatters neighbours */
+                PREFETCH(out_of_cell + b->tds.nbr[(size_t)(c + 2 * AHEAD) * nv + j]);
         if (c + AHEAD < top && out_of_cell[c + AHEAD] >= 0) {
             PREFETCH(t->simp + (size_t)out_of_cell[c + AHEAD] * nv);
             PREFETCH(t->nbr + (size_t)out_of_cell[c + AHEAD] * nv);
