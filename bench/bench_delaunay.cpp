@@ -413,10 +413,11 @@ int cmd_run(int argc, char **argv) {
     if (t.hull_wall >= 0) std::printf(" hull_seconds=%.6f", t.hull_wall);
     if (t.have_counters) {
         const lh_pred_counters &k = t.counters;
-        std::printf(" pred_calls=%llu pred_filter=%llu pred_grid=%llu pred_exact=%llu pred_zero=%llu"
-                    " pred_sos_general=%llu",
+        std::printf(" pred_calls=%llu pred_filter=%llu pred_grid=%llu pred_residue=%llu"
+                    " pred_exact=%llu pred_zero=%llu pred_sos_general=%llu",
                     (unsigned long long)k.calls, (unsigned long long)k.filter_exits,
-                    (unsigned long long)k.grid_exits, (unsigned long long)k.exact_exits,
+                    (unsigned long long)k.grid_exits, (unsigned long long)k.residue_exits,
+                    (unsigned long long)k.exact_exits,
                     (unsigned long long)k.zero_results, (unsigned long long)k.sos_general);
     }
     std::printf("\n");

@@ -215,8 +215,8 @@ class Sweep:
 def write_csv(path, records):
     """Every run, one row: the raw data behind the report."""
     cols = ["d", "dist", "n", "sites", "tool", "seed", "ok", "seconds", "cpu", "simplices",
-            "peak_kb", "pred_calls", "pred_filter", "pred_grid", "pred_exact", "pred_zero",
-            "pred_sos_general", "error"]
+            "peak_kb", "pred_calls", "pred_filter", "pred_grid", "pred_residue", "pred_exact",
+            "pred_zero", "pred_sos_general", "error"]
     with open(path, "w", newline="", encoding="utf-8") as f:
         w = csv.writer(f)
         w.writerow(cols)

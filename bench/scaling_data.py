@@ -162,8 +162,8 @@ class Results:
         ok = [r for r in self.ok_runs(d, dist, n, "lifthull") if "pred_calls" in r]
         if not ok:
             return None
-        keys = ["pred_calls", "pred_filter", "pred_grid", "pred_exact", "pred_zero",
-                "pred_sos_general"]
+        keys = ["pred_calls", "pred_filter", "pred_grid", "pred_residue", "pred_exact",
+                "pred_zero", "pred_sos_general"]
         tot = {k: sum(r.get(k, 0) for r in ok) for k in keys}
         tot["rounds"] = len(ok)
         return tot

@@ -244,12 +244,13 @@ def _exact_fraction(res, out):
             "engines' inline filters included) is counted by the stage that settled it "
             "(`lh_pred_counters`, summed over the rounds): the floating-point *filter*; the "
             "filter's *grid* bound, which certifies an exact zero without exact arithmetic "
-            "when the coordinates lie on a common grid; or the *exact* integer stage. "
+            "when the coordinates lie on a common grid; *residues*, which prove an exact "
+            "zero modulo machine-word moduli; or the multi-limb *exact* integer stage. "
             "*Zero*: unperturbed answer exactly 0, which the symbolic perturbation then "
             "decides (*SoS general*: by its slower general search).", ""]
-    out.append("| D | sites | n | calls per site | filter | grid | **exact stage** | zero | "
-               "SoS general |")
-    out.append("|---:|---|---:|---:|---:|---:|---:|---:|---:|")
+    out.append("| D | sites | n | calls per site | filter | grid | residues | **exact stage** | "
+               "zero | SoS general |")
+    out.append("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     worst = {}
     for d, dist in res.configs():
         for n in res.sizes(d, dist):
@@ -262,7 +263,8 @@ def _exact_fraction(res, out):
             worst[dist] = max(worst.get(dist, (0, "")), (frac, f"{d}D n={sd.fmt_n(sites)}"))
             out.append(f"| {d} | {sd.DIST_LABEL[dist]} | {sd.fmt_n(sites)} | "
                        f"{calls / c['rounds'] / sites:.0f} | {_pct(c['pred_filter'], calls)} | "
-                       f"{_pct(c['pred_grid'], calls)} | **{_pct(c['pred_exact'], calls)}** | "
+                       f"{_pct(c['pred_grid'], calls)} | {_pct(c.get('pred_residue', 0), calls)} | "
+                       f"**{_pct(c['pred_exact'], calls)}** | "
                        f"{_pct(c['pred_zero'], calls)} | {_pct(c['pred_sos_general'], calls)} |")
     out.append("")
     if worst:

@@ -200,10 +200,10 @@ int lh_cli_selfcheck(int argc, char **argv)
         lh_pred_counters_get(ctx, &cnt);
         printf("selfcheck: %ld cases, %ld wrong (exact predicates); plain doubles got %ld "
                "wrong; of %llu calls, %llu were settled by the filter, %llu by the "
-               "granularity rule, %llu by the exact stage\n",
+               "granularity rule, %llu by residues, %llu by the exact stage\n",
                cases, wrong, naive_wrong, (unsigned long long)cnt.calls,
                (unsigned long long)cnt.filter_exits, (unsigned long long)cnt.grid_exits,
-               (unsigned long long)cnt.exact_exits);
+               (unsigned long long)cnt.residue_exits, (unsigned long long)cnt.exact_exits);
         if (wrong) rc = LH_EXIT_FAIL;
     }
     lh_pred_free(ctx);

@@ -1,7 +1,7 @@
 /* test_pred_basic.c — predicates on configurations whose signs are known by
  * construction, in every dimension; invariance under exact translation and
  * power-of-two scaling (which moves the work between filter and exact stage);
- * counters; argument checks; allocation failure in lh_pred_create. */
+ * counters, the residue stage's exact zeros; argument checks; allocation failure in lh_pred_create. */
 #include "lh_test.h"
 #include "lifthull.h"
 
@@ -141,6 +141,62 @@ LH_TEST(counters_record_the_stage_that_answered)
     lh_pred_free(ctx);
 }
 
+/* Rows of cfg c from a flat list of npts points in R^dim, scaled by f (exact here). */
+static void set_points(cfg *c, int dim, int npts, const double *xs, double f)
+{
+    memset(c, 0, sizeof *c);
+    c->dim = dim;
+    c->npts = npts;
+    for (int i = 0; i < npts; i++) {
+        for (int j = 0; j < dim; j++) c->x[i][j] = xs[i * dim + j] * f;
+        c->p[i] = c->x[i];
+    }
+}
+
+/* Exactly cospherical points too wide for the granularity rule: the residue stage
+ * must prove the zero (no multi-limb arithmetic), and must not claim a zero when a
+ * coordinate moves by one ulp. */
+LH_TEST(residues_prove_exact_zeros_of_wide_coordinates)
+{
+    lh_pred *ctx = make();
+    LH_ASSERT_TRUE(ctx != NULL);
+    lh_pred_counters n;
+    /* 3D: lattice points on the sphere of radius 7m (2^2 + 3^2 + 6^2 = 7^2). */
+    static const double s3[] = {7, 0, 0, 0, 7, 0, 0, 0, 7, 2, 3, 6, 6, 2, 3};
+    cfg c;
+    set_points(&c, 3, 5, s3, 123457);
+    LH_EXPECT_EQ_INT(lh_insphere(ctx, 3, c.p), 0);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.residue_exits, 1);
+    LH_EXPECT_EQ_U64(n.exact_exits, 0);
+    /* 4D: full 53-bit mantissas at 2^-60 (five moduli), the sphere of radius 2m. */
+    static const double s4[] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2,
+                                1, 1, 1, 1, 1, -1, 1, -1};
+    set_points(&c, 4, 6, s4, ldexp(0x1p52 + 1, -60));
+    LH_EXPECT_EQ_INT(lh_insphere(ctx, 4, c.p), 0);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.residue_exits, 2);
+    LH_EXPECT_EQ_U64(n.exact_exits, 0);
+    /* One ulp off the sphere, either way: nonzero, opposite, from the exact stage. */
+    double keep = c.x[5][0];
+    c.x[5][0] = nextafter(keep, INFINITY);
+    int out = lh_insphere(ctx, 4, c.p);
+    c.x[5][0] = nextafter(keep, 0);
+    int in = lh_insphere(ctx, 4, c.p);
+    LH_EXPECT_TRUE(out != 0 && in == -out);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.residue_exits, 2);
+    LH_EXPECT_EQ_U64(n.exact_exits, 2);
+    /* orient_3: four points of the plane z = x + y with 41-bit integer coordinates. */
+    static const double s3p[] = {1, 2, 3, 5, -7, -2, -11, 13, 2, 17, 19, 36};
+    set_points(&c, 3, 4, s3p, 0x1p40 + 1);
+    LH_EXPECT_EQ_INT(lh_orient(ctx, 3, c.p), 0);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.residue_exits, 3);
+    LH_EXPECT_EQ_U64(n.exact_exits, 2);
+    lh_pred_free(ctx);
+}
+
 LH_TEST(invalid_arguments_answer_zero_and_count_nothing)
 {
     lh_pred *ctx = make();
@@ -237,6 +293,7 @@ int main(int argc, char **argv)
         LH_CASE(orient_of_unit_simplex_in_every_dimension),
         LH_CASE(insphere_inside_on_outside_in_every_dimension),
         LH_CASE(counters_record_the_stage_that_answered),
+        LH_CASE(residues_prove_exact_zeros_of_wide_coordinates),
         LH_CASE(invalid_arguments_answer_zero_and_count_nothing),
         LH_CASE(create_fails_cleanly_at_every_allocation)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);

@@ -890,7 +890,7 @@ static int lib_sos(lh_pred *ctx, int kind, int D, const double *const *pts)
 
 typedef struct fam_stats {
     long cases, zeros, pos, neg, naive_wrong, perm_checked, radon_checked, sosref_checked;
-    uint64_t exact; /* exact-stage exits of the plain calls */
+    uint64_t exact; /* exits of the plain calls by residues or the exact stage */
 } fam_stats;
 
 typedef struct run_info {
@@ -981,7 +981,8 @@ static int check_case(lh_test_state *lh_t_, lh_pred *ctx, oracle_ws *o, rng *r,
     lh_pred_counters_get(ctx, &before);
     int lib = lib_plain(ctx, kind, D, pts);
     lh_pred_counters_get(ctx, &after);
-    fs->exact += after.exact_exits - before.exact_exits;
+    fs->exact += after.exact_exits - before.exact_exits + after.residue_exits -
+                 before.residue_exits;
     CASE_EQ(lib, oracle);
     if (bad && !*what) what = "plain sign";
 
@@ -1203,7 +1204,7 @@ static void run_oracle(lh_test_state *lh_t_, int kind, int D)
     lh_pred_counters_get(ctx, &cnt);
     long zeros = 0;
     for (int f = 0; f < F_COUNT; f++) zeros += fs[f].zeros;
-    uint64_t answered = cnt.filter_exits + cnt.exact_exits;
+    uint64_t answered = cnt.filter_exits + cnt.residue_exits + cnt.exact_exits;
     double exact_fraction = answered ? (double)cnt.exact_exits / (double)answered : 0.0;
     char fam_buf[F_COUNT * 96];
     size_t len = 0;
@@ -1214,11 +1215,11 @@ static void run_oracle(lh_test_state *lh_t_, int kind, int D)
                                 fs[f].naive_wrong, fs[f].perm_checked, fs[f].radon_checked,
                                 fs[f].sosref_checked);
     printf("oracle %s_%d: cases=%ld oracle_zeros=%ld exact_fraction=%.4f (calls=%llu "
-           "filter=%llu exact=%llu zero=%llu sos_fast=%llu sos_general=%llu) time=%.2fs "
+           "filter=%llu residue=%llu exact=%llu zero=%llu sos_fast=%llu sos_general=%llu) time=%.2fs "
            "seed=%#llx%s\n",
            pred, D, done, zeros, exact_fraction, (unsigned long long)cnt.calls,
-           (unsigned long long)cnt.filter_exits, (unsigned long long)cnt.exact_exits,
-           (unsigned long long)cnt.zero_results, (unsigned long long)cnt.sos_fast,
+           (unsigned long long)cnt.filter_exits, (unsigned long long)cnt.residue_exits,
+           (unsigned long long)cnt.exact_exits, (unsigned long long)cnt.zero_results, (unsigned long long)cnt.sos_fast,
            (unsigned long long)cnt.sos_general, now_seconds() - t0,
            (unsigned long long)seed, fam_buf);
     fflush(stdout);
@@ -1229,7 +1230,7 @@ static void run_oracle(lh_test_state *lh_t_, int kind, int D)
         LH_EXPECT_GT_INT(fs[F_NEAR].zeros, 0);
         LH_EXPECT_GT_INT(fs[F_NEAR].pos, 0);
         LH_EXPECT_GT_INT(fs[F_NEAR].neg, 0);
-        /* ...and needed the exact stage. orient_1 is exempt: the sign of p_1 - p_0 is
+        /* ...and needed exact arithmetic (residues or the exact stage). orient_1 is exempt: the sign of p_1 - p_0 is
          * a comparison of two doubles, which floating point gets right every time. */
         if (!(kind == ORIENT && D == 1)) {
             LH_EXPECT_GT_U64(fs[F_NEAR].exact, 0);

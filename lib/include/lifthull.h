@@ -141,7 +141,9 @@ lh_status lh_coords_validate(int d, size_t n, const double *xyz, size_t *bad_ind
  * proven error bound; when that is uncertain, the same bound against the
  * determinant's granularity (every coordinate a multiple of a known power of two,
  * as on integer grids, so the determinant is too: exact zeros are recognised here);
- * only then exact integer arithmetic. Each call counts which stage answered
+ * then residues modulo word-sized coprime moduli, which prove the exact zeros of
+ * other degenerate input (lattice points on a sphere, say) when the bound allows;
+ * only then exact multi-limb integer arithmetic. Each call counts which stage answered
  * (lh_pred_counters).
  *
  * The *_sos variants apply Simulation of Simplicity (Edelsbrunner & Muecke 1990)
@@ -191,6 +193,7 @@ typedef struct lh_pred_counters {
     uint64_t calls;         /* predicate calls (all four kinds)                      */
     uint64_t filter_exits;  /* answered by the floating-point filter                 */
     uint64_t grid_exits;    /* answered by the filter's bound against granularity    */
+    uint64_t residue_exits; /* proven exactly 0 by residues modulo machine words     */
     uint64_t exact_exits;   /* needed the exact integer stage                        */
     uint64_t zero_results;  /* unperturbed answer was an exact 0 (any stage)         */
     uint64_t sos_fast;      /* perturbation decided by one cofactor scan             */

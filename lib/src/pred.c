@@ -1,14 +1,12 @@
 /*
  * pred.c — the public predicates: filter, then exact stage, then (for *_sos) the
  * perturbation; the context that holds counters and the exact stage's scratch.
- * Stages: lh_filter.gen.h (generated), pred_exact.c, pred_sos.c.
+ * Stages: lh_filter.gen.h (generated), pred_bound.c, pred_exact.c, pred_sos.c.
  */
 #include "lh_alloc.h"
 #include "lh_filter.gen.h"
 #include "pred_internal.h"
 
-#include <limits.h>
-#include <math.h>
 #include <string.h>
 
 static void subsets_init(lh__subsets *sub)
@@ -92,46 +90,17 @@ static inline int run_filter(int dim, int lifted, const double *const *p, int *s
     }
 }
 
-/*
- * The granularity rule. Every coordinate in column j is a multiple of 2^g_j (g_j the
- * lowest set bit over the column's coordinates), hence so is every exact entry
- * p_i - p_0 of the translated matrix, and the lifted entries are multiples of
- * 2^(2 min g_j); the determinant is then a multiple of 2^G, G = sum g_j (+ 2 min g_j).
- * If the filter's proven bound err < 2^(G-1), the determinant is the multiple of 2^G
- * within err of the computed value: 0 when |computed| <= err. This decides integer
- * grids and other exactly degenerate dyadic data without the exact stage.
- */
-static int granular_sign(int dim, int lifted, const double *const *p, double det,
-                         double err, int *sign)
-{
-    if (!(err >= 0)) return 0;
-    int npts = dim + 1 + lifted, G = 0, gmin = INT_MAX;
-    for (int j = 0; j < dim; j++) {
-        int g = INT_MAX;
-        for (int i = 0; i < npts; i++) {
-            if (p[i][j] == 0) continue;
-            int e = lh__dbl_low_exp(p[i][j]);
-            if (e < g) g = e;
-        }
-        if (g == INT_MAX) g = 0; /* an all-zero column: any granularity holds */
-        G += g;
-        if (g < gmin) gmin = g;
-    }
-    if (lifted) G += 2 * gmin;
-    if (G < -2000 || !(err < ldexp(1.0, G - 1))) return 0;
-    *sign = det > err ? 1 : det < -err ? -1 : 0;
-    return 1;
-}
-
-/* Filter, granularity rule, exact stage; counts the stage when `count` is set. */
+/* Filter, granularity rule, residues (exact zeros), exact stage; counts the stage
+ * when `count` is set. */
 static inline int evaluate(lh_pred *ctx, int dim, int lifted, const double *const *pts, int count)
 {
-    int s;
+    int s, stage;
     double det = 0, err = -1;
     if (run_filter(dim, lifted, pts, &s, &det, &err)) {
         if (count) ctx->count.filter_exits++;
-    } else if (granular_sign(dim, lifted, pts, det, err, &s)) {
-        if (count) ctx->count.grid_exits++;
+    } else if ((stage = lh__bound_sign(&ctx->sub, dim, lifted, pts, det, err, &s))) {
+        if (count && stage == LH__BY_GRANULARITY) ctx->count.grid_exits++;
+        if (count && stage == LH__BY_RESIDUES) ctx->count.residue_exits++;
     } else {
         if (count) ctx->count.exact_exits++;
         s = lifted ? lh__insphere_exact(ctx, dim, pts) : lh__orient_exact(ctx, dim, pts);

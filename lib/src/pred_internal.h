@@ -51,6 +51,14 @@ struct lh_pred {
 int lh__orient_exact(lh_pred *ctx, int k, const double *const *pts);
 int lh__insphere_exact(lh_pred *ctx, int d, const double *const *pts);
 
+/* The stages between the filter and the exact one (pred_bound.c), given the
+ * filter's rounded determinant det and its proven error bound err (< 0: none) for
+ * orient_dim, or insphere_dim when `lifted`: LH__BY_GRANULARITY or LH__BY_RESIDUES
+ * with *sign set when one decides (residues only ever prove 0), else 0. */
+enum { LH__BY_GRANULARITY = 1, LH__BY_RESIDUES = 2 };
+int lh__bound_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
+                   double det, double err, int *sign);
+
 /* Filtered then exact, unperturbed (the body of lh_orient without the counting of
  * a call; used by the perturbation's fast path). */
 int lh__orient_sign(lh_pred *ctx, int k, const double *const *pts);
