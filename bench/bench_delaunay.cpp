@@ -53,7 +53,6 @@
 
 #include <lifthull.h>
 
-#include "bench_counters.h"
 #include "bench_machine.h"
 #include "bench_sites.h"
 
@@ -181,7 +180,7 @@ Timing run_lifthull(int d, size_t n, std::vector<double> &xyz, bool generic) {
     if (st != LH_OK) die("lh_delaunay", lh_status_message(st));
     t.simplices = lh_tri_count(tri);
     sw.stop(t);
-    lh_bench_tri_counters(tri, &t.counters);
+    lh_tri_pred_counters(tri, &t.counters);
     t.have_counters = true;
     lh_tri_free(tri);
     return t;

@@ -164,6 +164,32 @@ LH_TEST(a_vertex_of_huge_degree)
     free(x);
 }
 
+/* A 4x4x4 grid scaled by 2^40 + 1: its exact zeros (cospherical cube corners,
+ * coplanar faces) are too wide for the granularity rule and are proven by residues;
+ * every nonzero sign is the filter's. The stages add up to the calls. */
+LH_TEST(predicate_counters_report_the_stages)
+{
+    double x[64 * 3];
+    for (int i = 0; i < 64; i++) {
+        x[3 * i] = (i % 4) * (0x1p40 + 1);
+        x[3 * i + 1] = (i / 4 % 4) * (0x1p40 + 1);
+        x[3 * i + 2] = (i / 16) * (0x1p40 + 1);
+    }
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(3, 64, x, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    lh_pred_counters c;
+    lh_tri_pred_counters(t, &c);
+    LH_EXPECT_GT_U64(c.calls, 0);
+    LH_EXPECT_EQ_U64(c.filter_exits + c.grid_exits + c.residue_exits + c.exact_exits, c.calls);
+    LH_EXPECT_GT_U64(c.residue_exits, 0);
+    LH_EXPECT_EQ_U64(c.exact_exits, 0);
+    LH_EXPECT_GT_U64(c.zero_results, 0);
+    lh_tri_free(t);
+    lh_tri_pred_counters(NULL, &c);
+    LH_EXPECT_EQ_U64(c.calls, 0);
+}
+
 LH_TEST(duplicates_are_merged_and_reported)
 {
     double x[] = {0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1, 1, 0, 0};
@@ -377,7 +403,7 @@ int main(int argc, char **argv)
     static const lh_test_case cases[] = {LH_CASE(furthest_site_triangulation),LH_CASE(every_allocation_failure_is_survived_by_the_hull),
         LH_CASE(every_family_passes_the_exact_check), LH_CASE(smallest_inputs),
         LH_CASE(output_depends_only_on_the_site_set), LH_CASE(a_vertex_of_huge_degree),
-        LH_CASE(duplicates_are_merged_and_reported),
+        LH_CASE(duplicates_are_merged_and_reported), LH_CASE(predicate_counters_report_the_stages),
         LH_CASE(bad_input_gets_its_status), LH_CASE(the_check_rejects_what_is_not_delaunay),
         LH_CASE(every_allocation_failure_is_survived), LH_CASE(progress_is_reported_and_changes_nothing)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);

@@ -312,6 +312,10 @@ const lh_index *lh_tri_vertex_simplex(const lh_tri *t);
 /* Per site: the index of the earlier equal site it was merged into (itself if none). */
 const lh_index *lh_tri_duplicate_of(const lh_tri *t);
 size_t lh_tri_duplicate_count(const lh_tri *t); /* sites merged into an earlier one */
+/* How often each predicate stage ran for t (lh_pred_counters): the whole lh_delaunay
+ * run (the fixed-dimension engines' inline filters included), then every query and
+ * insertion since. All zero for t NULL. */
+void lh_tri_pred_counters(const lh_tri *t, lh_pred_counters *out);
 void lh_tri_free(lh_tri *t);
 
 /*
