@@ -31,12 +31,15 @@ static inline int lifted_sign_fixed(lh__eng *e, const lh_index *v, lh_index q)
         e->filtered++;
         return s;
     }
-    double det, err;
-    if (LH_CAT(lh__insphere_filter_, LH_DIM)(p, &s, &det, &err) && s) {
-        e->filtered++;
-        return s;
+    double det = 0, err = -1; /* err stays -1 outside the filter's band */
+    if (LH_CAT(lh__insphere_filter_, LH_DIM)(p, &s, &det, &err)) {
+        if (s) {
+            e->filtered++;
+            return s;
+        }
+        return lh__insphere_sos_fast(e->pred, LH_DIM, p); /* a zero column: perturbed */
     }
-    return lh__insphere_sos_fast(e->pred, LH_DIM, p); /* exact, then perturbed */
+    return lh__insphere_sos_unfiltered(e->pred, LH_DIM, p, det, err); /* exact, perturbed */
 }
 
 static inline int orient_fixed(lh__eng *e, const double *const *p)
@@ -46,12 +49,12 @@ static inline int orient_fixed(lh__eng *e, const double *const *p)
         e->filtered++;
         return s;
     }
-    double det, err;
+    double det = 0, err = -1; /* err stays -1 outside the filter's band */
     if (LH_CAT(lh__orient_filter_, LH_DIM)(p, &s, &det, &err)) {
         e->filtered++;
         return s;
     }
-    return lh__orient_fast(e->pred, LH_DIM, p);
+    return lh__orient_unfiltered(e->pred, LH_DIM, p, det, err);
 }
 
 #define LH_T_D LH_DIM

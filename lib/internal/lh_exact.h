@@ -34,6 +34,12 @@ int lh__dbl_low_exp(double x);
  * loops (d within range, ctx and pts valid; counted as public calls). */
 int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts);
 int lh__orient_fast(lh_pred *ctx, int k, const double *const *pts);
+/* The same, for a caller whose lh_filter.gen.h filter returned 0 with det and err:
+ * the stages after the filter, without running it again. */
+int lh__insphere_sos_unfiltered(lh_pred *ctx, int d, const double *const *pts, double det,
+                                double err);
+int lh__orient_unfiltered(lh_pred *ctx, int k, const double *const *pts, double det,
+                          double err);
 
 /* Counts n calls of lh_orient/lh_insphere that a caller settled with the inline
  * filters of lh_filter.gen.h (dims/), as filter exits. */

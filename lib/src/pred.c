@@ -90,21 +90,31 @@ static inline int run_filter(int dim, int lifted, const double *const *p, int *s
     }
 }
 
-/* Filter, granularity rule, residues (exact zeros), exact stage; counts the stage
- * when `count` is set. */
-static inline int evaluate(lh_pred *ctx, int dim, int lifted, const double *const *pts, int count)
+/* The stages after a filter that could not decide (det, err its value and bound):
+ * granularity rule, residues (exact zeros), exact stage; counts the stage when
+ * `count` is set. */
+static int after_filter(lh_pred *ctx, int dim, int lifted, const double *const *pts,
+                        double det, double err, int count)
 {
-    int s, stage;
-    double det = 0, err = -1;
-    if (run_filter(dim, lifted, pts, &s, &det, &err)) {
-        if (count) ctx->count.filter_exits++;
-    } else if ((stage = lh__bound_sign(&ctx->sub, dim, lifted, pts, det, err, &s))) {
-        if (count && stage == LH__BY_GRANULARITY) ctx->count.grid_exits++;
-        if (count && stage == LH__BY_RESIDUES) ctx->count.residue_exits++;
-    } else {
+    int s, stage = lh__bound_sign(&ctx->sub, dim, lifted, pts, det, err, &s);
+    if (count && stage == LH__BY_GRANULARITY) ctx->count.grid_exits++;
+    if (count && stage == LH__BY_RESIDUES) ctx->count.residue_exits++;
+    if (!stage) {
         if (count) ctx->count.exact_exits++;
         s = lifted ? lh__insphere_exact(ctx, dim, pts) : lh__orient_exact(ctx, dim, pts);
     }
+    if (count && !s) ctx->count.zero_results++;
+    return s;
+}
+
+/* Filter, then the stages after it. */
+static inline int evaluate(lh_pred *ctx, int dim, int lifted, const double *const *pts, int count)
+{
+    int s;
+    double det = 0, err = -1;
+    if (!run_filter(dim, lifted, pts, &s, &det, &err))
+        return after_filter(ctx, dim, lifted, pts, det, err, count);
+    if (count) ctx->count.filter_exits++;
     if (count && !s) ctx->count.zero_results++;
     return s;
 }
@@ -139,6 +149,21 @@ int lh__orient_fast(lh_pred *ctx, int k, const double *const *pts)
 {
     ctx->count.calls++;
     return evaluate(ctx, k, 0, pts, 1);
+}
+
+int lh__insphere_sos_unfiltered(lh_pred *ctx, int d, const double *const *pts, double det,
+                                double err)
+{
+    ctx->count.calls++;
+    int s = after_filter(ctx, d, 1, pts, det, err, 1);
+    return s ? s : lh__sos_sign(ctx, pts, d, 1);
+}
+
+int lh__orient_unfiltered(lh_pred *ctx, int k, const double *const *pts, double det,
+                          double err)
+{
+    ctx->count.calls++;
+    return after_filter(ctx, k, 0, pts, det, err, 1);
 }
 
 int lh_orient_sos(lh_pred *ctx, int k, const double *const *pts)
