@@ -67,16 +67,29 @@ static void significance_order(const double *const *pts, int dim, int n, int *or
 
 static int cofactor_parity(int r, int c) { return (r + c) & 1 ? -1 : 1; }
 
+/* The most significant of the rows not in `done` (a bit mask). */
+static int most_significant(const double *const *pts, int dim, int n, unsigned done)
+{
+    int best = -1;
+    for (int i = 0; i < n; i++)
+        if (!(done >> i & 1) && (best < 0 || precedes(pts, dim, best, i))) best = i;
+    return best;
+}
+
 /* The cofactor signs along the first perturbable column, most significant row
- * first (see above). With a column map (in-flat insphere) the cofactors are exact
- * minors of the mapped columns; otherwise filtered orient signs. */
+ * first (see above); the rows are picked in that order one at a time, since the
+ * first cofactor is nonzero in nearly every call. With a column map (in-flat
+ * insphere) the cofactors are exact minors of the mapped columns; otherwise
+ * filtered orient signs. */
 static int fast_path(lh_pred *ctx, const double *const *pts, int pdim, int dim, int lifted,
-                     const int *cmap, const int *order)
+                     const int *cmap)
 {
     int n = dim + 1 + lifted;
     const double *others[LH__MAXN];
+    unsigned done = 0;
     for (int t = n - 1; t >= 0; t--) {
-        int r = order[t], m = 0, s;
+        int r = most_significant(pts, pdim, n, done), m = 0, s;
+        done |= 1u << r;
         if (cmap) { /* lifted: the other rows, every column but the lifted one */
             int rows[LH__MAXN];
             for (int i = 0; i < n; i++)
@@ -214,14 +227,14 @@ static int general_search(lh_pred *ctx, const double *const *pts, int pdim, int 
 static int sos_sign(lh_pred *ctx, const double *const *pts, int pdim, int dim, int lifted,
                     const int *cmap)
 {
-    int order[LH__MAXN];
-    significance_order(pts, pdim, dim + 1 + lifted, order);
-    int s = fast_path(ctx, pts, pdim, dim, lifted, cmap, order);
+    int s = fast_path(ctx, pts, pdim, dim, lifted, cmap);
     if (s) {
         ctx->count.sos_fast++;
         return s;
     }
     ctx->count.sos_general++;
+    int order[LH__MAXN];
+    significance_order(pts, pdim, dim + 1 + lifted, order);
     return general_search(ctx, pts, pdim, dim, lifted, cmap, order);
 }
 
