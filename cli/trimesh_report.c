@@ -39,6 +39,7 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
         fprintf(out, "Input resolved: %zu duplicate vertices merged, %zu zero-length segments dropped, "
                      "%zu overlapping segments shared, %zu holes and %zu regions outside the domain ignored\n",
                 s.duplicates_merged, s.segments_dropped, s.segments_overlapping, s.holes_ignored, s.regions_ignored);
+    if (s.steiner_removed) fprintf(out, "Steiner points removed again (Chew's rule): %zu\n", s.steiner_removed);
     if (s.smoothing_moves) fprintf(out, "Smoothing: %zu moves\n", s.smoothing_moves);
     if (s.crossings_split) fprintf(out, "Crossing segments split: %zu\n", s.crossings_split);
     fprintf(out, "Angles: smallest %.4g, largest %.4g degrees\n", s.min_angle, s.max_angle);

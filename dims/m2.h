@@ -13,8 +13,9 @@
  * joins sv[2s], sv[2s+1] and belongs to input segment sp[s] (whose marker it has).
  * Points: the input vertices first, with their indices, then Steiner points; pseg[p]
  * is the input segment a Steiner point was put on (-1 otherwise, and for input
- * vertices); vt[p] is a triangle incident to p (-1 while p is not a vertex: merged
- * duplicates, points in removed regions).
+ * vertices; LH__M2_REMOVED for a Steiner point removed again, which the output
+ * leaves out); vt[p] is a triangle incident to p (-1 while p is not a vertex: merged
+ * duplicates, points in removed regions, removed Steiner points).
  *
  * Invariants kept by every operation: every live triangle is positively oriented;
  * neighbour links are symmetric; every unconstrained interior edge is locally
@@ -226,6 +227,17 @@ typedef struct lh__m2_ins {
 lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index start,
                               lh_index split, lh__m2_ins *r);
 int lh__m2_encroaches(const lh__m2 *m, lh_index s, const double *p);
+
+/* Removes free vertex p (a vertex on no subsegment, inside the mesh): its triangles
+ * become the constrained Delaunay triangulation of its link, the new triangles are
+ * left in c->stack, and pseg[p] = LH__M2_REMOVED. *removed = 0 when p is not such a
+ * vertex or the link's triangulation is blocked (m2_remove.c): the mesh is unchanged.
+ * Returns LH_OK or LH_ERR_NOMEM / LH_ERR_INTERNAL. */
+enum { LH__M2_REMOVED = -2 };
+lh_status lh__m2_remove_vertex(lh__m2 *m, lh__m2_cavity *c, lh_index p, int *removed);
+/* Drops the removed Steiner points, renumbering the later ones down (input vertices
+ * keep their indices). Returns LH_OK or LH_ERR_NOMEM (mesh unchanged). */
+lh_status lh__m2_drop_removed(lh__m2 *m);
 
 /* Build from the Delaunay triangulation of the input vertices (m2_build.c). */
 lh_status lh__m2_from_delaunay(lh__m2 *m, lh_tri *dt); /* takes dt's simplex arrays */

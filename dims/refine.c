@@ -47,6 +47,8 @@ typedef struct rf {
     size_t steiner;
     unsigned char *stuck;   /* per subsegment: a split was refused or is too short */
     size_t stuck_count, stuck_cap;
+    lh_index *gone;         /* free vertices to remove before a split (Chew's rule) */
+    size_t gone_count, gone_cap;
 } rf;
 
 static double dist2(const double *a, const double *b)
@@ -75,6 +77,17 @@ static double badness(const rf *r, lh_index t)
     if (r->o->region_areas && m->tarea && m->tarea[t] > 0 && (bound <= 0 || m->tarea[t] < bound))
         bound = m->tarea[t];
     return bound > 0 && area2 / 2 > bound ? -1 : 0;
+}
+
+/* Whether segment x-y passes strictly within the circle (o, r2): its nearest point
+ * to o is closer than the radius. */
+static int edge_meets_disc(const double *x, const double *y, const double *o, double r2)
+{
+    const double dx = y[0] - x[0], dy = y[1] - x[1], l2 = dx * dx + dy * dy;
+    double f = l2 > 0 ? ((o[0] - x[0]) * dx + (o[1] - x[1]) * dy) / l2 : 0;
+    f = f < 0 ? 0 : f > 1 ? 1 : f;
+    const double q[2] = {x[0] + f * dx, x[1] + f * dy};
+    return dist2(q, o) < r2;
 }
 
 static void heap_up(item *h, size_t i)
@@ -252,19 +265,77 @@ static void set_point_data(rf *r, lh_index pi, lh_index s, const double *w, cons
     }
 }
 
-static lh_status split_segment(rf *r, lh_index s, int *done)
+/* Chew's rule (Chew 1993; Triangle runs it too): the free vertices strictly inside
+ * the diametral circle of subsegment s, about to be split because a triangle's centre
+ * was rejected, are removed first (m2_remove.c), and the triangles that replace them
+ * queued like an insertion's. Found by a flood from s's sides across unconstrained
+ * edges that pass within the circle; a vertex whose removal is declined stays. */
+static lh_status remove_free_in_circle(rf *r, lh_index s)
+{
+    lh__m2 *m = r->m;
+    const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *b = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
+    const double o[2] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}, r2 = dist2(a, b) / 4;
+    int pos;
+    lh_index t = lh__m2_find_edge(m, m->sv[2 * (size_t)s], m->sv[2 * (size_t)s + 1], &pos);
+    if (t < 0) t = lh__m2_find_edge(m, m->sv[2 * (size_t)s + 1], m->sv[2 * (size_t)s], &pos);
+    if (t < 0) return LH_OK;
+    const uint32_t e = lh__m2_new_epoch(m);
+    lh__m2_cavity *c = r->c;
+    lh_status st;
+    r->gone_count = 0;
+    c->stack_count = 0;
+    const lh_index n0 = m->nb[3 * (size_t)t + pos];
+    for (int j = 0; j < 2; j++) {
+        const lh_index u = j ? n0 : t;
+        if (u < 0) continue;
+        m->mark[u] = e;
+        if ((st = lh__m2_stack_push(m, c, u)) != LH_OK) return st;
+    }
+    for (size_t i = 0; i < c->stack_count; i++) {
+        const size_t u = (size_t)c->stack[i];
+        for (int k = 0; k < 3; k++) {
+            const lh_index x = m->v[3 * u + k];
+            if ((size_t)x >= m->n_input && m->pseg[x] == -1 && dist2(lh__m2_pt(m, x), o) < r2) {
+                size_t g = 0;
+                while (g < r->gone_count && r->gone[g] != x) g++;
+                if (g == r->gone_count) {
+                    if (!lh__m2_grow(m, (void **)&r->gone, r->gone_count, &r->gone_cap, r->gone_count + 1, sizeof(lh_index)))
+                        return LH_ERR_NOMEM;
+                    r->gone[r->gone_count++] = x;
+                }
+            }
+            const lh_index n = m->nb[3 * u + k];
+            if (n < 0 || m->mark[n] == e || m->sg[3 * u + k] >= 0 ||
+                !edge_meets_disc(lh__m2_pt(m, m->v[3 * u + (k + 1) % 3]), lh__m2_pt(m, m->v[3 * u + (k + 2) % 3]), o, r2))
+                continue;
+            m->mark[n] = e;
+            if ((st = lh__m2_stack_push(m, c, n)) != LH_OK) return st;
+        }
+    }
+    for (size_t g = 0; g < r->gone_count; g++) {
+        int removed;
+        if ((st = lh__m2_remove_vertex(m, c, r->gone[g], &removed)) != LH_OK) return st;
+        if (!removed) continue;
+        r->o->out->steiner_removed++;
+        if ((st = after_insert(r)) != LH_OK) return st;
+    }
+    return LH_OK;
+}
+
+static lh_status split_segment(rf *r, lh_index s, int forced, int *done)
 {
     lh__m2 *m = r->m;
     const lh_index a = m->sv[2 * (size_t)s], b = m->sv[2 * (size_t)s + 1];
     *done = 0;
     if ((size_t)s < r->stuck_count && r->stuck[s]) return LH_OK;
     if (dist2(lh__m2_pt(m, a), lh__m2_pt(m, b)) < r->minlen2) return set_stuck(r, s);
+    lh_status st;
+    if (forced && (st = remove_free_in_circle(r, s)) != LH_OK) return st;
     double p[2];
     split_point(r, s, p);
     r->ins.check_encroach = 0;
     r->ins.origin = NULL;
-    lh_status st = lh__m2_insert_point(m, r->c, p, -1, s, &r->ins);
-    if (st != LH_OK) return st;
+    if ((st = lh__m2_insert_point(m, r->c, p, -1, s, &r->ins)) != LH_OK) return st;
     if (r->ins.result != LH__M2_INSERTED) return set_stuck(r, s);
     const double la = sqrt(dist2(p, lh__m2_pt(m, a))), lb = sqrt(dist2(p, lh__m2_pt(m, b)));
     const double w[3] = {lb / (la + lb), la / (la + lb), 0};
@@ -409,7 +480,7 @@ static lh_status run(rf *r)
             lh_index t;
             int pos, done;
             if (!encroached(r, s, &t, &pos) && !forced) continue;
-            if ((st = split_segment(r, s, &done)) != LH_OK) return st;
+            if ((st = split_segment(r, s, forced, &done)) != LH_OK) return st;
             continue;
         }
         if (!r->heap_count) return LH_OK;
@@ -472,6 +543,7 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
     lh__free(&m->al, r.heap);
     lh__free(&m->al, r.segq);
     lh__free(&m->al, r.stuck);
+    lh__free(&m->al, r.gone);
     lh__free(&m->al, r.ins.enc);
     return st;
 }

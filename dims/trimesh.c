@@ -273,6 +273,7 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
         return st;
     if (o->smooth > 0 && (st = lh__m2_smooth(m, c, o->smooth, o->max_area, &r->stats.smoothing_moves)) != LH_OK)
         return st;
+    if ((st = lh__m2_drop_removed(m)) != LH_OK) return st;
     /* the triangles still bad, in the handle's numbering (live slots in order), before
        harvest takes the mesh's arrays over */
     const int bounded = o->min_angle > 0 || o->max_area > 0 || o->region_areas;

@@ -824,6 +824,8 @@ typedef struct lh_trimesh_stats {
     size_t input_vertices, duplicates_merged, segments_dropped, segments_overlapping;
     size_t holes_ignored, regions_ignored;
     size_t steiner_points, steiner_on_segments, crossings_split, smoothing_moves;
+    size_t steiner_removed;          /* Steiner points inserted and removed again by
+                                        refinement (Chew's rule); not in the output  */
     size_t triangles, bad_triangles; /* bad: below min_angle or above an area bound at
                                         the end (input angles, -S or -Y stopped them)   */
     double min_angle, max_angle, min_area, max_area;

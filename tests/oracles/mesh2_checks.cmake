@@ -73,8 +73,7 @@ set(LH_MESH2_CASES
   box:q30:triangle/box.poly:--convex
   double_hex:q30:triangle/double_hex.poly
   double_hex2:q30:triangle/double_hex2.poly
-  # known gap (issue #7): 75 triangles against Triangle's 60 (1.25); the bar is 1.15
-  double_hex3:q30:triangle/double_hex3.poly:--ratio=1.30
+  double_hex3:q30:triangle/double_hex3.poly
   square_circle_hole:q30:triangle/square_circle_hole.poly
   dude:q30:polygons/dude.json
   eberly_6:q30:polygons/eberly-6.json
