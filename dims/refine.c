@@ -168,6 +168,34 @@ static lh_status queue_segment(rf *r, lh_index s, int forced)
     return LH_OK;
 }
 
+/* Whether vertex p encroaches subsegment s for splitting: inside its lens or circle
+ * (lh__m2_encroaches) and at least minlen from its line. A vertex nearer than that is
+ * a feature below the resolution floor: halving s would go on until the pieces are
+ * as short as that distance, each one encroached again by the vertices of the other
+ * side — 2^40 pieces for two segments an ulp apart (earcut's infinite-loop-jhl.json,
+ * segments 10^-28 apart: without end). Such a feature is left, and reported. */
+static int encroaches_resolvably(const rf *r, lh_index s, const double *p)
+{
+    const lh__m2 *m = r->m;
+    if (!lh__m2_encroaches(m, s, p)) return 0;
+    const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *b = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
+    const double cr = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+    return cr * cr >= r->minlen2 * dist2(a, b); /* distance^2 = cr^2 / |ab|^2 */
+}
+
+/* Whether triangle t is thinner than minlen (its smallest altitude, twice its area over
+ * its longest edge): a sliver at the resolution floor, whose rejected centre does not
+ * force a split (see encroaches_resolvably). */
+static int below_floor(const rf *r, lh_index t)
+{
+    const lh__m2 *m = r->m;
+    const lh_index *v = m->v + 3 * (size_t)t;
+    const double *a = lh__m2_pt(m, v[0]), *b = lh__m2_pt(m, v[1]), *c = lh__m2_pt(m, v[2]);
+    const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    const double lmax = fmax(dist2(b, c), fmax(dist2(c, a), dist2(a, b)));
+    return area2 * area2 < r->minlen2 * lmax;
+}
+
 /* Subsegment s encroached by the apex of a triangle beside it (and splittable):
  * returns 1 and the triangle/edge holding it. */
 static int encroached(const rf *r, lh_index s, lh_index *tt, int *pp)
@@ -180,8 +208,8 @@ static int encroached(const rf *r, lh_index s, lh_index *tt, int *pp)
     if (t < 0) return 0;
     *tt = t, *pp = pos;
     const lh_index n = m->nb[3 * (size_t)t + pos];
-    if (lh__m2_encroaches(m, s, lh__m2_pt(m, m->v[3 * (size_t)t + pos]))) return 1;
-    return n >= 0 && lh__m2_encroaches(m, s, lh__m2_pt(m, m->v[3 * (size_t)n + lh__m2_npos(m, n, t)]));
+    if (encroaches_resolvably(r, s, lh__m2_pt(m, m->v[3 * (size_t)t + pos]))) return 1;
+    return n >= 0 && encroaches_resolvably(r, s, lh__m2_pt(m, m->v[3 * (size_t)n + lh__m2_npos(m, n, t)]));
 }
 
 /* After an insertion: queue the new triangles that are bad and the subsegments on
@@ -429,6 +457,7 @@ static lh_status split_triangle(rf *r, const item *it)
     lh_status st = lh__m2_insert_point(m, r->c, p, it->t, -1, &r->ins);
     if (st != LH_OK) return st;
     if (r->ins.result == LH__M2_ENCROACHES || r->ins.result == LH__M2_BLOCKED) {
+        if (below_floor(r, it->t)) return LH_OK; /* left bad */
         size_t queued = 0;
         const size_t n = r->ins.result == LH__M2_BLOCKED ? 1 : r->ins.enc_count;
         for (size_t i = 0; i < n; i++) {

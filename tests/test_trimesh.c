@@ -537,7 +537,9 @@ LH_TEST(a_small_angle_far_from_the_origin_ends)
 /* earcut's degenerate rings (zero-area, self-touching, shared points, holes outside
  * or touching, self-crossing): each meshed and exactly valid, or refused with
  * LH_ERR_DEGENERATE and a message (crossings without split_crossings; an empty
- * domain); with split_crossings none is refused for crossing. */
+ * domain); with split_crossings none is refused for crossing. Refined at 20 and 30
+ * degrees each ends well inside a Steiner budget of 20,000 (infinite-loop-jhl's two
+ * segments 10^-28 apart split without end before the resolution floor of refine.c). */
 LH_TEST(earcut_degenerate_rings_are_valid_or_refused_clearly)
 {
     static const char *const files[] = {
@@ -555,17 +557,24 @@ LH_TEST(earcut_degenerate_rings_are_valid_or_refused_clearly)
         snprintf(path, sizeof path, "polygons/degenerate/%s.json", files[i]);
         lh_pslg g;
         LH_ASSERT_EQ_INT(load(lh_rings_read, path, &g), LH_OK);
-        for (int split = 0; split < 2; split++) {
+        for (int run = 0; run < 6; run++) {
+            const int split = run & 1;
             lh_trimesh_options o;
             lh_trimesh_options_default(&o);
             o.split_crossings = split;
+            o.min_angle = run < 2 ? 0 : run < 4 ? 20 : 30;
+            o.max_steiner = 20000;
             lh_trimesh *m = NULL;
             char msg[256] = "", cmsg[256] = "";
             lh_status st = lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg);
             if (st == LH_OK) {
                 LH_EXPECT_EQ_INT(check(m, cmsg, sizeof cmsg), LH_OK);
                 if (cmsg[0]) LH_NOTE("%s: %s", files[i], cmsg);
-                meshed += split;
+                lh_trimesh_stats ts;
+                lh_trimesh_get_stats(m, &ts);
+                if (ts.steiner_limit_reached) LH_NOTE("%s run %d: the Steiner budget ran out", files[i], run);
+                LH_EXPECT_EQ_INT(ts.steiner_limit_reached, 0);
+                meshed += run == 1;
             } else {
                 if (st != LH_ERR_DEGENERATE || !msg[0]) LH_NOTE("%s split %d: %s %s", files[i], split, lh_status_name(st), msg);
                 LH_EXPECT_EQ_INT(st, LH_ERR_DEGENERATE);
