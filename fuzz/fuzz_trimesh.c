@@ -363,8 +363,10 @@ static void check_mesh(const input *in, const lh_trimesh *m)
         st.steiner_points != np - n || st.crossings_split > st.steiner_on_segments ||
         (st.crossings_split && !(in->crossing && o->split_crossings)) ||
         st.steiner_points - st.crossings_split > o->max_steiner ||
-        (st.steiner_limit_reached && st.steiner_points - st.crossings_split != o->max_steiner) ||
-        (!in->refine && st.steiner_points != st.crossings_split) || st.steiner_on_segments > st.steiner_points ||
+        /* the budget counts the points refinement inserted, removed again (Chew's rule) or not */
+        (st.steiner_limit_reached && st.steiner_points + st.steiner_removed - st.crossings_split != o->max_steiner) ||
+        (!in->refine && (st.steiner_points != st.crossings_split || st.steiner_removed)) ||
+        st.steiner_on_segments > st.steiner_points ||
         (!o->smooth && st.smoothing_moves))
         abort();
     const lh_index *bad = lh_trimesh_bad_triangles(m);
