@@ -258,6 +258,31 @@ static lh_index along_chain(const lh__m2 *m, lh_index a, lh_index b, lh_index pa
     return -1;
 }
 
+/* With split_crossings, the rest a-b of input segment `parent` after a bend at a
+ * rounded crossing vertex a no longer runs exactly through the input vertices on the
+ * segment: the walk then meets subsegment s beside such a vertex e, and the crossing
+ * of a-b with s, rounded, lands on e or where it cannot go — an error "crosses" for
+ * segments that only touch (fuzz/README.md, finding 9). The input segment passes
+ * exactly through e (orient_2 of its input endpoints, exact), so the chain goes to e:
+ * returns the endpoint of s that lies on the input segment ahead of a (nearer b, and
+ * not b), or -1. */
+static lh_index vertex_on_parent_ahead(const lh__m2 *m, lh_index a, lh_index b, lh_index parent,
+                                       lh_index s)
+{
+    if (!m->in_seg || parent < 0) return -1;
+    const lh_index *P = m->in_seg + 2 * (size_t)parent;
+    const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
+    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d2 = dx * dx + dy * dy;
+    for (int j = 0; j < 2; j++) {
+        const lh_index e = m->sv[2 * (size_t)s + j];
+        if (e == a || e == b || e == P[0] || e == P[1] || lh__m2_orient(m, P[0], P[1], e)) continue;
+        const double *pe = lh__m2_pt(m, e);
+        const double ex = pb[0] - pe[0], ey = pb[1] - pe[1];
+        if ((pe[0] - pa[0]) * dx + (pe[1] - pa[1]) * dy > 0 && ex * ex + ey * ey < d2) return e;
+    }
+    return -1;
+}
+
 lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
                                 lh_index parent, lh__m2_problem *pb)
 {
@@ -281,9 +306,11 @@ lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_inde
         }
         st = walk(m, c, a, b, t, parent, &end, pb);
         if (st == LH_ERR_DEGENERATE && m->split_crossings && pb->kind == LH__M2_CROSSING) {
-            /* the first crossing from a: a-x crosses nothing, x-b is what is left */
-            lh_index x;
-            if ((st = split_crossing(m, c, a, b, pb->sub, &x)) != LH_OK) return st;
+            /* the first crossing from a: a-x crosses nothing, x-b is what is left;
+               x is the vertex of the crossed subsegment that the input segment runs
+               through exactly, if any, else a new vertex at the crossing */
+            lh_index x = vertex_on_parent_ahead(m, a, b, parent, pb->sub);
+            if (x < 0 && (st = split_crossing(m, c, a, b, pb->sub, &x)) != LH_OK) return st;
             if (x < 0) return LH_ERR_DEGENERATE; /* pb still names the two segments */
             pb->kind = 0;
             if ((st = lh__m2_insert_segment(m, c, a, x, parent, pb)) != LH_OK) return st;

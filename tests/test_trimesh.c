@@ -534,6 +534,45 @@ LH_TEST(a_small_angle_far_from_the_origin_ends)
     lh_pslg_free(&g);
 }
 
+/* fuzz/README.md finding 9: a ring on the grid -8..8 at (x + 2^40) 2^-8, where a
+ * rounded crossing vertex is 2^-12 of a grid unit off its segment. Segment 13
+ * ((-8,-2) to (7,-5)) passes exactly through vertex 3 (-3,-3) after a crossing with
+ * segment 7; from the bent vertex the rest missed vertex 3 and the crossing beside it
+ * was refused: "segment 13 crosses segment 2" for segments that only touch. The rest
+ * now goes through the vertex the input segment runs through. */
+LH_TEST(a_bent_segment_still_meets_the_vertex_on_it)
+{
+    static const int grid[29][2] = {
+        {4, -8}, {-8, 1}, {-8, -8}, {-3, -3}, {-7, -8}, {4, -8}, {-8, -4}, {-7, -7}, {1, 2}, {-1, -7},
+        {-7, -8}, {-8, -8}, {-8, -8}, {-8, -2}, {7, -5}, {0, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8},
+        {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}};
+    double xy[58];
+    lh_index seg[58];
+    for (int i = 0; i < 29; i++) {
+        for (int j = 0; j < 2; j++) xy[2 * i + j] = (grid[i][j] + ldexp(1, 40)) * ldexp(1, -8);
+        seg[2 * i] = i, seg[2 * i + 1] = (i + 1) % 29;
+    }
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = 29, g.xy = xy, g.segment_count = 29, g.segments = seg, g.even_odd = 1;
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.split_crossings = 1;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "bent ring");
+    if (m) {
+        lh_trimesh_stats st;
+        lh_trimesh_get_stats(m, &st);
+        LH_EXPECT_GT_U64(st.crossings_split, 0);
+        /* segment 13's chain goes through vertex 3 */
+        const lh_index *par = lh_trimesh_segment_parents(m), *sv = lh_trimesh_segments(m);
+        size_t at3 = 0;
+        for (size_t s = 0; s < lh_trimesh_segment_count(m); s++)
+            at3 += par[s] == 13 && (sv[2 * s] == 3 || sv[2 * s + 1] == 3);
+        LH_EXPECT_EQ_U64(at3, 2);
+    }
+    lh_trimesh_free(m);
+}
+
 /* earcut's degenerate rings (zero-area, self-touching, shared points, holes outside
  * or touching, self-crossing): each meshed and exactly valid, or refused with
  * LH_ERR_DEGENERATE and a message (crossings without split_crossings; an empty
@@ -857,7 +896,7 @@ int main(int argc, char **argv)
         LH_CASE(smoothing_raises_angles_and_keeps_the_mesh_valid), LH_CASE(area_bound_and_steiner_limit),
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
         LH_CASE(crossings_are_split_when_asked), LH_CASE(an_overlap_follows_a_chain_bent_at_a_crossing),
-        LH_CASE(a_small_angle_far_from_the_origin_ends),
+        LH_CASE(a_small_angle_far_from_the_origin_ends), LH_CASE(a_bent_segment_still_meets_the_vertex_on_it),
         LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
         LH_CASE(degenerate_input_is_resolved_and_reported),
