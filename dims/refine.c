@@ -169,23 +169,25 @@ static lh_status queue_segment(rf *r, lh_index s, int forced)
 }
 
 /* Whether vertex p encroaches subsegment s for splitting: inside its lens or circle
- * (lh__m2_encroaches) and at least minlen from its line. A vertex nearer than that is
- * a feature below the resolution floor: halving s would go on until the pieces are
- * as short as that distance, each one encroached again by the vertices of the other
- * side — 2^40 pieces for two segments an ulp apart (earcut's infinite-loop-jhl.json,
- * segments 10^-28 apart: without end). Such a feature is left, and reported. */
+ * (lh__m2_encroaches), and not within 2^-40 of s's length from its line. A vertex
+ * nearer than that is a feature below the resolution floor: halving s would go on
+ * until the pieces are 2^40 times shorter, each one encroached again by the vertices
+ * of the other side — 2^40 pieces for two segments 10^-28 apart (earcut's
+ * infinite-loop-jhl.json: without end). Such a feature is left, and reported. */
 static int encroaches_resolvably(const rf *r, lh_index s, const double *p)
 {
     const lh__m2 *m = r->m;
     if (!lh__m2_encroaches(m, s, p)) return 0;
     const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *b = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
     const double cr = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-    return cr * cr >= r->minlen2 * dist2(a, b); /* distance^2 = cr^2 / |ab|^2 */
+    const double l2 = dist2(a, b);
+    return cr * cr >= 0x1p-80 * l2 * l2; /* distance = |cr| / |ab| */
 }
 
-/* Whether triangle t is thinner than minlen (its smallest altitude, twice its area over
- * its longest edge): a sliver at the resolution floor, whose rejected centre does not
- * force a split (see encroaches_resolvably). */
+/* Whether triangle t is a sliver below the resolution floor: its smallest altitude
+ * (twice its area over its longest edge) under 2^-40 of its longest edge, an angle
+ * under 2^-40 radians. Its rejected centre forces no split (see
+ * encroaches_resolvably); it is left, and reported. */
 static int below_floor(const rf *r, lh_index t)
 {
     const lh__m2 *m = r->m;
@@ -193,7 +195,7 @@ static int below_floor(const rf *r, lh_index t)
     const double *a = lh__m2_pt(m, v[0]), *b = lh__m2_pt(m, v[1]), *c = lh__m2_pt(m, v[2]);
     const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
     const double lmax = fmax(dist2(b, c), fmax(dist2(c, a), dist2(a, b)));
-    return area2 * area2 < r->minlen2 * lmax;
+    return area2 * area2 < 0x1p-80 * lmax * lmax;
 }
 
 /* Subsegment s encroached by the apex of a triangle beside it (and splittable):
