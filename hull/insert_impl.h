@@ -26,8 +26,10 @@
  * Linking the new cells: the new cell N made from boundary facet (c, k) meets,
  * across its facet opposite vertex v_j (j != k), the new cell made from the other
  * boundary facet that contains the ridge R = c \ {v_k, v_j} (the cavity's boundary
- * is a closed pseudo-manifold: every ridge is in exactly two boundary facets). The
- * two are paired through a hash table keyed on R. Each new cell's old vertices are
+ * is a closed pseudo-manifold: every ridge is in exactly two boundary facets). A
+ * Delaunay insertion finds it by turning around R through the dead cells
+ * (link_by_turning); the other modes (placing, the furthest-site hull) pair the two
+ * through a hash table keyed on R. Each new cell's old vertices are
  * sorted once; a ridge is that list minus one entry. When its d-1 vertices fit in
  * 64 bits (t->vbits each: for d <= 3 always below 2^32 sites, for n below 2^21 in
  * 4D, 2^16 in 5D) the key is the ridge itself, packed; otherwise it is the sum of a
@@ -250,6 +252,49 @@ static void link_new_cells(lh__tds *t)
     }
 }
 
+/* Pairs the new cells by turning around their ridges through the dead cells, for a
+ * Delaunay insertion (inside_conflicts): the conflict region is then a ball (it is
+ * star-shaped from q), so the dead cells around a ridge R on its boundary form a
+ * path from one boundary facet holding R to the other. Each dead cell's boundary
+ * facet first points at its new cell; from boundary facet (c, k), the new cell's
+ * facet opposite vertex j (R = c minus v_j and v_k) is crossed through c's facet
+ * opposite j, R + x with x = v_k; a dead cell R + x + w entered there is left through
+ * R + w, until the facet crossed is a boundary facet, whose new cell is the
+ * neighbour (the way CGAL's 3D data structure builds a star, Boissonnat, Devillers,
+ * Pion, Teillaud & Yvinec 2002, "Triangulations in CGAL", CGTA 22). Every step is in
+ * cells just visited by grow_region, and nothing is hashed or sorted. Both cells of
+ * a pair are linked at once. The dead cells' rows are overwritten (they are freed
+ * next). */
+static void link_by_turning(lh__eng *e)
+{
+    lh__tds *t = &e->tds;
+    /* a dead cell's boundary facet holds -2 - b (its new cell is fresh[b]): a
+       neighbour >= 0 is then a dead cell, with no look at the stamps */
+    for (size_t b = 0; b < t->nbound; b++) t->nbr[(size_t)t->bound[2 * b] * NV + t->bound[2 * b + 1]] = -2 - (lh_index)b;
+    for (size_t b = 0; b < t->nbound; b++) {
+        const lh_index N = t->fresh[b], c = t->bound[2 * b];
+        const int k = (int)t->bound[2 * b + 1];
+        for (int j = 0; j < NV; j++) {
+            if (j == k || t->nbr[(size_t)N * NV + j] >= 0) continue;
+            lh_index cur = c, x = t->vert[(size_t)c * NV + k], nx;
+            int pos = j, px = 0;
+            while ((nx = t->nbr[(size_t)cur * NV + pos]) >= 0) {
+                const lh_index *vv = t->vert + (size_t)nx * NV, *nn = t->nbr + (size_t)nx * NV;
+                int m = 0;
+                px = 0;
+                for (int i = 1; i < NV; i++) /* branch-free: exactly one of each matches */
+                    m += i * (nn[i] == cur), px += i * (vv[i] == x);
+                x = vv[m], pos = px, cur = nx;
+            }
+            const lh_index M = t->fresh[-2 - nx], *cv = t->vert + (size_t)cur * NV;
+            px = 0;
+            for (int i = 1; i < NV; i++) px += i * (cv[i] == x);
+            t->nbr[(size_t)N * NV + j] = M;
+            t->nbr[(size_t)M * NV + px] = N;
+        }
+    }
+}
+
 /* Inserts e->q from `start`, a cell in conflict with it. The new cells are
  * t->fresh[0..nbound-1]. On LH_ERR_NOMEM the store is unchanged. */
 static lh_status cavity_insert(lh__eng *e, lh_index start)
@@ -268,7 +313,7 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
         lh_index N = lh__tds_new_cell(t); /* cannot fail after lh__tds_room */
         lh_index *nvert = t->vert + (size_t)N * NV, *nnbr = t->nbr + (size_t)N * NV;
         const lh_index *cv = t->vert + (size_t)c * NV;
-        for (int j = 0; j < NV; j++) nvert[j] = cv[j];
+        for (int j = 0; j < NV; j++) nvert[j] = cv[j], nnbr[j] = -1;
         nvert[k] = q;
         lh_index outside = t->nbr[(size_t)c * NV + k];
         nnbr[k] = outside;
@@ -278,7 +323,10 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
         on[m] = N;
         t->fresh[b] = N;
     }
-    link_new_cells(t);
+    if (e->inside_conflicts)
+        link_by_turning(e);
+    else
+        link_new_cells(t);
     for (size_t i = 0; i < t->ncells; i++) lh__tds_kill(t, t->cells[i]);
     return LH_OK;
 }
