@@ -136,8 +136,8 @@ static inline lh_index lh__m2_fan_next(const lh__m2 *m, lh__m2_fan *f)
 }
 
 /*
- * Cavity retriangulation (m2_cavity.c), the one mechanism behind segment insertion
- * and point insertion: the triangles `dead` are replaced by the triangles `tri`
+ * Cavity retriangulation (m2_cavity.c), the one mechanism behind segment insertion,
+ * point insertion and vertex removal: the triangles `dead` are replaced by the triangles `tri`
  * (3 vertices each, counterclockwise; `tsg` 3 subsegment ids each, -1 for none, or
  * NULL). Every edge of a new triangle is linked to the new triangle across it, or
  * to the live triangle that was across the same edge of a dead one (taking that
