@@ -26,6 +26,13 @@ lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos)
     return -1;
 }
 
+lh_index lh__m2_find_subseg(const lh__m2 *m, lh_index s, int *pos)
+{
+    const lh_index a = m->sv[2 * (size_t)s], b = m->sv[2 * (size_t)s + 1];
+    const lh_index t = lh__m2_find_edge(m, a, b, pos);
+    return t >= 0 ? t : lh__m2_find_edge(m, b, a, pos);
+}
+
 /* Marks edge t:pos (and its twin) as subsegment s. */
 static void mark_edge(lh__m2 *m, lh_index t, int pos, lh_index s)
 {
@@ -223,6 +230,14 @@ static lh_status split_crossing(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_inde
     return LH_OK;
 }
 
+/* Whether x lies ahead of a towards b and nearer b than a (rounded arithmetic: a
+ * choice among vertices an exact test already put on the segment's line). */
+static int ahead_towards(const double *pa, const double *pb, const double *px)
+{
+    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1], ex = pb[0] - px[0], ey = pb[1] - px[1];
+    return (px[0] - pa[0]) * dx + (px[1] - pa[1]) * dy > 0 && ex * ex + ey * ey < dx * dx + dy * dy;
+}
+
 /* With split_crossings an input segment's chain of subsegments bends at each rounded
  * crossing vertex, so an input segment overlapping it (a duplicate, or collinear and
  * sharing a stretch) no longer runs along it: inserted straight, it crossed the chain
@@ -238,7 +253,6 @@ static lh_index along_chain(const lh__m2 *m, lh_index a, lh_index b, lh_index pa
     if (!m->split_crossings || !m->in_seg || parent < 0) return -1;
     const lh_index *P = m->in_seg + 2 * (size_t)parent;
     const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
-    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d2 = dx * dx + dy * dy;
     lh__m2_fan f;
     for (lh_index t = lh__m2_fan_first(m, &f, a); t >= 0; t = lh__m2_fan_next(m, &f)) {
         const int i = lh__m2_vpos(m, t, a);
@@ -248,9 +262,7 @@ static lh_index along_chain(const lh__m2 *m, lh_index a, lh_index b, lh_index pa
             if (e < 0 || m->sp[e] < 0) continue;
             const lh_index *Q = m->in_seg + 2 * (size_t)m->sp[e];
             if (lh__m2_orient(m, P[0], P[1], Q[0]) || lh__m2_orient(m, P[0], P[1], Q[1])) continue;
-            const double *px = lh__m2_pt(m, x);
-            const double ex = pb[0] - px[0], ey = pb[1] - px[1];
-            if (x != b && !((px[0] - pa[0]) * dx + (px[1] - pa[1]) * dy > 0 && ex * ex + ey * ey < d2)) continue;
+            if (x != b && !ahead_towards(pa, pb, lh__m2_pt(m, x))) continue;
             *w = x, *pos = k;
             return t;
         }
@@ -271,14 +283,10 @@ static lh_index vertex_on_parent_ahead(const lh__m2 *m, lh_index a, lh_index b, 
 {
     if (!m->in_seg || parent < 0) return -1;
     const lh_index *P = m->in_seg + 2 * (size_t)parent;
-    const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
-    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d2 = dx * dx + dy * dy;
     for (int j = 0; j < 2; j++) {
         const lh_index e = m->sv[2 * (size_t)s + j];
         if (e == a || e == b || e == P[0] || e == P[1] || lh__m2_orient(m, P[0], P[1], e)) continue;
-        const double *pe = lh__m2_pt(m, e);
-        const double ex = pb[0] - pe[0], ey = pb[1] - pe[1];
-        if ((pe[0] - pa[0]) * dx + (pe[1] - pa[1]) * dy > 0 && ex * ex + ey * ey < d2) return e;
+        if (ahead_towards(lh__m2_pt(m, a), lh__m2_pt(m, b), lh__m2_pt(m, e))) return e;
     }
     return -1;
 }

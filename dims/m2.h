@@ -199,6 +199,9 @@ lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_inde
 /* The triangle holding the edge a->b (a before b counterclockwise), with *pos the
  * edge's index in it; -1 when a->b is not an edge. */
 lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos);
+/* A triangle beside subsegment s (its edge either way round), with *pos the edge's
+ * index in it; -1 when s is no edge. */
+lh_index lh__m2_find_subseg(const lh__m2 *m, lh_index s, int *pos);
 
 /* The outcome of a point insertion (m2_insert.c). */
 enum {

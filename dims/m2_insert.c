@@ -95,9 +95,7 @@ lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_i
     lh_status st;
     if (split >= 0) {
         int pos;
-        const lh_index a = m->sv[2 * (size_t)split], b = m->sv[2 * (size_t)split + 1];
-        lh_index t = lh__m2_find_edge(m, a, b, &pos);
-        if (t < 0) t = lh__m2_find_edge(m, b, a, &pos);
+        const lh_index t = lh__m2_find_subseg(m, split, &pos);
         if (t < 0) return LH_ERR_INTERNAL;
         const lh_index n = m->nb[3 * (size_t)t + pos];
         /* The two triangles beside the subsegment join the cavity whatever incircle

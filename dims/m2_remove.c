@@ -103,11 +103,8 @@ lh_status lh__m2_drop_removed(lh__m2 *m)
     if (!map) return LH_ERR_NOMEM;
     const size_t na = (size_t)m->attr_count;
     size_t q = m->n_input;
-    for (size_t p = 0; p < m->np; p++) {
-        if (p < m->n_input) {
-            map[p] = (lh_index)p;
-            continue;
-        }
+    for (size_t p = 0; p < m->n_input; p++) map[p] = (lh_index)p;
+    for (size_t p = m->n_input; p < m->np; p++) {
         if (m->pseg[p] == LH__M2_REMOVED) {
             map[p] = -1;
             continue;

@@ -57,15 +57,22 @@ static double dist2(const double *a, const double *b)
     return dx * dx + dy * dy;
 }
 
+/* Triangle t's squared edge lengths (l2[k] opposite vertex k); returns twice its area. */
+static double measure(const lh__m2 *m, lh_index t, double l2[3])
+{
+    const lh_index *v = m->v + 3 * (size_t)t;
+    const double *a = lh__m2_pt(m, v[0]), *b = lh__m2_pt(m, v[1]), *c = lh__m2_pt(m, v[2]);
+    l2[0] = dist2(b, c), l2[1] = dist2(c, a), l2[2] = dist2(a, b);
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
 /* The badness of triangle t: > 0 for an angle below the bound (the squared ratio),
  * -1 for an area above its bound only, 0 for a good triangle. */
 static double badness(const rf *r, lh_index t)
 {
     const lh__m2 *m = r->m;
-    const lh_index *v = m->v + 3 * (size_t)t;
-    const double *a = lh__m2_pt(m, v[0]), *b = lh__m2_pt(m, v[1]), *c = lh__m2_pt(m, v[2]);
-    const double la = dist2(b, c), lb = dist2(c, a), lc = dist2(a, b);
-    const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    double l2[3];
+    const double area2 = measure(m, t, l2), la = l2[0], lb = l2[1], lc = l2[2];
     if (r->ratio2 > 0) {
         const double lmin = la < lb ? (la < lc ? la : lc) : (lb < lc ? lb : lc);
         /* R^2 = la lb lc / (4 area2^2) with squared lengths and twice the area, so
@@ -190,11 +197,8 @@ static int encroaches_resolvably(const rf *r, lh_index s, const double *p)
  * encroaches_resolvably); it is left, and reported. */
 static int below_floor(const rf *r, lh_index t)
 {
-    const lh__m2 *m = r->m;
-    const lh_index *v = m->v + 3 * (size_t)t;
-    const double *a = lh__m2_pt(m, v[0]), *b = lh__m2_pt(m, v[1]), *c = lh__m2_pt(m, v[2]);
-    const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    const double lmax = fmax(dist2(b, c), fmax(dist2(c, a), dist2(a, b)));
+    double l2[3];
+    const double area2 = measure(r->m, t, l2), lmax = fmax(l2[0], fmax(l2[1], l2[2]));
     return area2 * area2 < 0x1p-80 * lmax * lmax;
 }
 
@@ -203,10 +207,8 @@ static int below_floor(const rf *r, lh_index t)
 static int encroached(const rf *r, lh_index s, lh_index *tt, int *pp)
 {
     const lh__m2 *m = r->m;
-    const lh_index a = m->sv[2 * (size_t)s], b = m->sv[2 * (size_t)s + 1];
     int pos;
-    lh_index t = lh__m2_find_edge(m, a, b, &pos);
-    if (t < 0) t = lh__m2_find_edge(m, b, a, &pos);
+    const lh_index t = lh__m2_find_subseg(m, s, &pos);
     if (t < 0) return 0;
     *tt = t, *pp = pos;
     const lh_index n = m->nb[3 * (size_t)t + pos];
@@ -302,8 +304,7 @@ static lh_status free_vertices_in_circle(rf *r, lh_index s, const double *o, dou
     lh__m2 *m = r->m;
     lh__m2_cavity *c = r->c;
     int pos;
-    lh_index t = lh__m2_find_edge(m, m->sv[2 * (size_t)s], m->sv[2 * (size_t)s + 1], &pos);
-    if (t < 0) t = lh__m2_find_edge(m, m->sv[2 * (size_t)s + 1], m->sv[2 * (size_t)s], &pos);
+    const lh_index t = lh__m2_find_subseg(m, s, &pos);
     r->gone_count = c->stack_count = 0;
     if (t < 0) return LH_OK;
     const uint32_t e = lh__m2_new_epoch(m);
@@ -318,12 +319,13 @@ static lh_status free_vertices_in_circle(rf *r, lh_index s, const double *o, dou
         const size_t u = (size_t)c->stack[i];
         for (int k = 0; k < 3; k++) {
             const lh_index x = m->v[3 * u + k], n = m->nb[3 * u + k];
-            size_t g = 0;
-            while (g < r->gone_count && r->gone[g] != x) g++;
-            if ((size_t)x >= m->n_input && m->pseg[x] == -1 && g == r->gone_count && dist2(lh__m2_pt(m, x), o) < r2) {
-                if (!lh__m2_grow(m, (void **)&r->gone, r->gone_count, &r->gone_cap, g + 1, sizeof(lh_index)))
+            if ((size_t)x >= m->n_input && m->pseg[x] == -1 && dist2(lh__m2_pt(m, x), o) < r2) {
+                size_t g = 0;
+                while (g < r->gone_count && r->gone[g] != x) g++;
+                if (g == r->gone_count &&
+                    !lh__m2_grow(m, (void **)&r->gone, r->gone_count, &r->gone_cap, g + 1, sizeof(lh_index)))
                     return LH_ERR_NOMEM;
-                r->gone[r->gone_count++] = x;
+                if (g == r->gone_count) r->gone[r->gone_count++] = x;
             }
             if (n < 0 || m->mark[n] == e || m->sg[3 * u + k] >= 0 ||
                 !edge_meets_disc(lh__m2_pt(m, m->v[3 * u + (k + 1) % 3]), lh__m2_pt(m, m->v[3 * u + (k + 2) % 3]), o, r2))
@@ -469,9 +471,7 @@ static lh_status split_triangle(rf *r, const item *it)
         for (size_t i = 0; i < n; i++) {
             const lh_index s = r->ins.result == LH__M2_BLOCKED ? r->ins.blocked : r->ins.enc[i];
             int pos;
-            const lh_index a = m->sv[2 * (size_t)s], b = m->sv[2 * (size_t)s + 1];
-            lh_index t = lh__m2_find_edge(m, a, b, &pos);
-            if (t < 0) t = lh__m2_find_edge(m, b, a, &pos);
+            const lh_index t = lh__m2_find_subseg(m, s, &pos);
             if (t >= 0 && splittable(r, s, t, pos)) {
                 if ((st = queue_segment(r, s, 1)) != LH_OK) return st;
                 queued++;

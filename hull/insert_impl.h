@@ -265,6 +265,15 @@ static void link_new_cells(lh__tds *t)
  * cells just visited by grow_region, and nothing is hashed or sorted. Both cells of
  * a pair are linked at once. The dead cells' rows are overwritten (they are freed
  * next). */
+/* The position of x in a row of NV entries holding it once, branch-free. */
+static inline int row_pos(const lh__tds *t, const lh_index *row, lh_index x)
+{
+    (void)t; /* NV reads t->nv in the runtime-dimension build */
+    int p = 0;
+    for (int i = 1; i < NV; i++) p += i * (row[i] == x);
+    return p;
+}
+
 static void link_by_turning(lh__eng *e)
 {
     lh__tds *t = &e->tds;
@@ -277,20 +286,15 @@ static void link_by_turning(lh__eng *e)
         for (int j = 0; j < NV; j++) {
             if (j == k || t->nbr[(size_t)N * NV + j] >= 0) continue;
             lh_index cur = c, x = t->vert[(size_t)c * NV + k], nx;
-            int pos = j, px = 0;
+            int pos = j;
             while ((nx = t->nbr[(size_t)cur * NV + pos]) >= 0) {
-                const lh_index *vv = t->vert + (size_t)nx * NV, *nn = t->nbr + (size_t)nx * NV;
-                int m = 0;
-                px = 0;
-                for (int i = 1; i < NV; i++) /* branch-free: exactly one of each matches */
-                    m += i * (nn[i] == cur), px += i * (vv[i] == x);
-                x = vv[m], pos = px, cur = nx;
+                const lh_index *vv = t->vert + (size_t)nx * NV;
+                const int m = row_pos(t, t->nbr + (size_t)nx * NV, cur);
+                pos = row_pos(t, vv, x), x = vv[m], cur = nx;
             }
-            const lh_index M = t->fresh[-2 - nx], *cv = t->vert + (size_t)cur * NV;
-            px = 0;
-            for (int i = 1; i < NV; i++) px += i * (cv[i] == x);
+            const lh_index M = t->fresh[-2 - nx];
             t->nbr[(size_t)N * NV + j] = M;
-            t->nbr[(size_t)M * NV + px] = N;
+            t->nbr[(size_t)M * NV + row_pos(t, t->vert + (size_t)cur * NV, x)] = N;
         }
     }
 }
