@@ -2,60 +2,76 @@
  * increasing order but for one exchange that keeps the orientation, and tuples
  * sorted lexicographically, so that an output depends only on the site set. */
 #include "engine.h"
-#include "lh_sort.h"
 
 #include <string.h>
 
-static int tuple_less(const lh_index *x, const lh_index *y, int m)
+/* Whether tuple x comes before y, their first entries being equal. With 32-bit
+ * indices (nonnegative here) the entries are compared two at a time, packed into a
+ * word: the first pair almost always decides, so the one data-dependent outcome is
+ * a value, not a branch to mispredict. */
+static inline int tail_less(const lh_index *x, const lh_index *y, int m)
 {
-    for (int k = 0; k < m; k++)
+#if LH_INDEX_BITS == 32
+    for (int k = 1; k < m; k += 2) {
+        const uint64_t a = (uint64_t)(uint32_t)x[k] << 32 | (k + 1 < m ? (uint32_t)x[k + 1] : 0);
+        const uint64_t b = (uint64_t)(uint32_t)y[k] << 32 | (k + 1 < m ? (uint32_t)y[k + 1] : 0);
+        if (a != b) return a < b;
+    }
+#else
+    for (int k = 1; k < m; k++)
         if (x[k] != y[k]) return x[k] < y[k];
+#endif
     return 0;
 }
 
-typedef struct tuple_ctx {
-    const lh_index *v;
-    int m;
-} tuple_ctx;
-
-static int tuple_cmp(const void *vctx, lh_index a, lh_index b)
-{
-    const tuple_ctx *c = vctx;
-    const lh_index *x = c->v + (size_t)a * c->m, *y = c->v + (size_t)b * c->m;
-    for (int k = 0; k < c->m; k++)
-        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
-    return 0;
-}
-
-/* Insertion sort of the tuples at positions lo..hi-1, payload alongside. */
-static void insertion_sort(lh_index *t, lh_index *payload, size_t lo, size_t hi, int m)
+/* Insertion sort of the tuples at positions lo..hi-1 of a bucket, payload
+ * alongside. */
+static inline void insertion_sort(lh_index *t, lh_index *payload, size_t lo, size_t hi, int m)
 {
     for (size_t i = lo + 1; i < hi; i++) {
         lh_index key[LH__ENGINE_MAX_DIM + 1], p = payload[i];
-        memcpy(key, t + i * m, (size_t)m * sizeof *key);
+        for (int k = 0; k < m; k++) key[k] = t[i * m + k];
         size_t j = i;
-        for (; j > lo && tuple_less(key, t + (j - 1) * m, m); j--) {
-            memcpy(t + j * m, t + (j - 1) * m, (size_t)m * sizeof *t);
+        for (; j > lo && tail_less(key, t + (j - 1) * m, m); j--) {
+            for (int k = 0; k < m; k++) t[j * m + k] = t[(j - 1) * m + k];
             payload[j] = payload[j - 1];
         }
-        memcpy(t + j * m, key, (size_t)m * sizeof *key);
+        for (int k = 0; k < m; k++) t[j * m + k] = key[k];
         payload[j] = p;
     }
 }
 
-/* Merge sort of a large bucket through an index, then the tuples and payload are
- * permuted; scratch holds the bucket's size in indices (2x) and tuples. */
-static void merge_sort_bucket(lh_index *t, lh_index *payload, size_t lo, size_t hi, int m,
-                              lh_index *idx, lh_index *tmp, lh_index *copy)
+/* Bottom-up merge sort of a large bucket through an index (stable), then the
+ * tuples and payload are permuted; scratch holds the bucket's size in indices (2x)
+ * and tuples. */
+static inline void merge_sort_bucket(lh_index *t, lh_index *payload, size_t lo, size_t hi, int m,
+                                     lh_index *idx, lh_index *tmp, lh_index *copy)
 {
-    size_t k = hi - lo;
-    for (size_t i = 0; i < k; i++) idx[i] = (lh_index)i;
-    tuple_ctx c = {t + lo * m, m};
-    lh__sort_idx(idx, tmp, k, tuple_cmp, &c);
-    memcpy(copy, t + lo * m, k * (size_t)m * sizeof *copy);
-    for (size_t i = 0; i < k; i++) memcpy(t + (lo + i) * m, copy + (size_t)idx[i] * m, (size_t)m * sizeof *t);
-    for (size_t i = 0; i < k; i++) tmp[i] = payload[lo + idx[i]];
-    memcpy(payload + lo, tmp, k * sizeof *tmp);
+    const size_t k = hi - lo;
+    const lh_index *b = t + lo * m;
+    lh_index *x = idx, *y = tmp;
+    for (size_t i = 0; i < k; i++) x[i] = (lh_index)i;
+    for (size_t w = 1; w < k; w *= 2) {
+        for (size_t l = 0; l < k; l += 2 * w) {
+            size_t mid = l + w < k ? l + w : k, r = l + 2 * w < k ? l + 2 * w : k;
+            size_t i = l, j = mid, o = l;
+            while (i < mid && j < r) { /* no branch on the comparison */
+                const int right = tail_less(b + (size_t)x[j] * m, b + (size_t)x[i] * m, m);
+                y[o++] = right ? x[j] : x[i];
+                j += (size_t)right;
+                i += (size_t)!right;
+            }
+            while (i < mid) y[o++] = x[i++];
+            while (j < r) y[o++] = x[j++];
+        }
+        lh_index *z = x;
+        x = y, y = z;
+    }
+    memcpy(copy, b, k * (size_t)m * sizeof *copy);
+    for (size_t i = 0; i < k; i++)
+        for (int c = 0; c < m; c++) t[(lo + i) * m + c] = copy[(size_t)x[i] * m + c];
+    for (size_t i = 0; i < k; i++) y[i] = payload[lo + x[i]];
+    memcpy(payload + lo, y, k * sizeof *y);
 }
 
 int lh__sort_buckets(const lh_allocator *a, lh_index *t, lh_index *payload, const size_t *start,
@@ -78,10 +94,15 @@ int lh__sort_buckets(const lh_allocator *a, lh_index *t, lh_index *payload, cons
         }
     }
     for (size_t k = 0; k < nb; k++) {
-        if (start[k + 1] - start[k] > SMALL)
-            merge_sort_bucket(t, payload, start[k], start[k + 1], m, idx, tmp, copy);
-        else
-            insertion_sort(t, payload, start[k], start[k + 1], m);
+        const size_t lo = start[k], hi = start[k + 1];
+#define MERGE(mm) merge_sort_bucket(t, payload, lo, hi, mm, idx, tmp, copy)
+#define INSERT(mm) insertion_sort(t, payload, lo, hi, mm)
+        if (hi - lo > SMALL)
+            LH__WITH_CONSTANT_M(m, MERGE);
+        else if (hi - lo > 1)
+            LH__WITH_CONSTANT_M(m, INSERT);
+#undef MERGE
+#undef INSERT
     }
     lh__free(a, idx);
     lh__free(a, tmp);

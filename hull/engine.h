@@ -172,24 +172,45 @@ int lh__eng_finite(const lh__eng *e, lh_index c);
  * for p outside, in canonical order (see lh__canonical), sorted. Allocates *out. */
 lh_status lh__eng_hull_facets(lh__eng *e, lh_index **out, size_t *count);
 
-/* Canonical order of an oriented tuple: increasing (insertion sort, counting the
- * exchanges' parity), then the last two exchanged if the sort was an odd
- * permutation, so that the orientation is kept. */
+/* Canonical order of an oriented tuple of m distinct entries: increasing, then the
+ * last two exchanged if sorting was an odd permutation, so that the orientation is
+ * kept. rank[j] is entry j's position in that order: its rank among the entries,
+ * with ranks m-2 and m-1 exchanged when the inversions are odd. Branch-free (the
+ * entries of a tuple are in random order: a sort's branches would mispredict). */
+static inline void lh__canonical_ranks(const lh_index *v, int m, int *rank)
+{
+    int inv = 0;
+    for (int j = 0; j < m; j++) {
+        int r = 0;
+        for (int i = 0; i < m; i++) r += v[i] < v[j];
+        for (int i = 0; i < j; i++) inv += v[i] > v[j];
+        rank[j] = r;
+    }
+    const int odd = inv & 1;
+    for (int j = 0; j < m; j++) rank[j] = odd && rank[j] >= m - 2 ? 2 * m - 3 - rank[j] : rank[j];
+}
+
+/* call(m) with m a constant when it is 3 to 6 (a simplex in 2D to 5D, the
+ * dimensions dims/ compiles: the hot loops over a tuple unroll), else call(m). */
+#define LH__WITH_CONSTANT_M(m, call) \
+    do {                             \
+        switch (m) {                 \
+        case 3: call(3); break;      \
+        case 4: call(4); break;      \
+        case 5: call(5); break;      \
+        case 6: call(6); break;      \
+        default: call(m); break;     \
+        }                            \
+    } while (0)
+
+/* The tuple v (m entries) rewritten in canonical order. */
 static inline void lh__canonical(lh_index *v, int m)
 {
-    int parity = 0;
-    for (int i = 1; i < m; i++) {
-        lh_index x = v[i];
-        int j = i;
-        for (; j > 0 && x < v[j - 1]; j--) v[j] = v[j - 1];
-        v[j] = x;
-        parity ^= (i - j) & 1;
-    }
-    if (parity) {
-        lh_index x = v[m - 1];
-        v[m - 1] = v[m - 2];
-        v[m - 2] = x;
-    }
+    int rank[LH__ENGINE_MAX_DIM + 1];
+    lh_index c[LH__ENGINE_MAX_DIM + 1];
+    lh__canonical_ranks(v, m, rank);
+    for (int j = 0; j < m; j++) c[rank[j]] = v[j];
+    for (int j = 0; j < m; j++) v[j] = c[j];
 }
 /* canon.c: sorts count tuples of m site indices (< n) lexicographically from v into
  * out; order[i] = index in v of out's tuple i. Returns 0 on no memory. */

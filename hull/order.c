@@ -28,18 +28,25 @@ static int same_site(const lh__eng *e, lh_index a, lh_index b)
     return 1;
 }
 
-/* Bits per coordinate of the Morton keys: 16 is ample for locality (2^16 cells a
- * side), and equal keys only cost an exact comparison. */
-static int morton_bits(int d) { return 63 / d < 16 ? 63 / d : 16; }
+/* Bits per coordinate of the Morton keys: enough for about 8n cells over the
+ * bounding box (locality needs no more: a cell then holds at most a few sites, kept
+ * in input order), at most 16 and 63/d. Equal keys only cost an exact comparison. */
+static int morton_bits(int d, size_t n)
+{
+    int lg = 3;
+    while (lg < 64 && (n >> (lg - 3)) > 1) lg++; /* about log2(8n) */
+    int bits = (lg + d - 1) / d, cap = 63 / d < 16 ? 63 / d : 16;
+    return bits < cap ? bits : cap;
+}
 
-/* Morton (Z-order) key of every site: each coordinate quantised to morton_bits(d)
+/* Morton (Z-order) key of every site: each coordinate quantised to morton_bits(d, n)
  * bits over the bounding box, bits interleaved from the most significant down. A
  * span too wide for doubles quantises to 0 (keys tie; correctness does not depend
  * on them); a span so small that its reciprocal overflows is scaled by a power of
  * two first (exact). */
 static void morton_keys(const lh__eng *t, uint64_t *key)
 {
-    int d = t->d, bits = morton_bits(d);
+    int d = t->d, bits = morton_bits(d, t->n);
     double lo[LH__ENGINE_MAX_DIM], scale[LH__ENGINE_MAX_DIM];
     int shift[LH__ENGINE_MAX_DIM]; /* a tiny span is first scaled up by 2^-shift */
     const double cells = (double)((UINT64_C(1) << bits) - 1);
@@ -63,26 +70,40 @@ static void morton_keys(const lh__eng *t, uint64_t *key)
     }
 }
 
-/* LSD radix sort of (key, idx) pairs on the low `bits` bits, 11 bits a pass. */
+/* LSD radix sort of (key, idx) pairs on the low `bits` bits, in as few passes of
+ * at most 12 bits as there can be (a count table of 4096 stays in L1/L2); the
+ * passes go back and forth between the arrays and the scratch k2, i2. */
 static void radix_sort(uint64_t *key, lh_index *idx, uint64_t *k2, lh_index *i2, size_t n, int bits)
 {
-    size_t count[1 << 11];
-    for (int shift = 0; shift < bits; shift += 11) {
+    enum { MAX_DIGIT = 12 };
+    size_t count[1 << MAX_DIGIT];
+    const int passes = (bits + MAX_DIGIT - 1) / MAX_DIGIT;
+    const int digit = passes ? (bits + passes - 1) / passes : 0;
+    const uint64_t mask = (UINT64_C(1) << digit) - 1;
+    uint64_t *ka = key, *kb = k2;
+    lh_index *ia = idx, *ib = i2;
+    for (int shift = 0; shift < bits; shift += digit) {
         memset(count, 0, sizeof count);
-        for (size_t i = 0; i < n; i++) count[(key[i] >> shift) & 2047]++;
+        for (size_t i = 0; i < n; i++) count[(ka[i] >> shift) & mask]++;
         size_t sum = 0;
-        for (int b = 0; b < 2048; b++) {
+        for (size_t b = 0; b <= mask; b++) {
             size_t c = count[b];
             count[b] = sum;
             sum += c;
         }
         for (size_t i = 0; i < n; i++) {
-            size_t o = count[(key[i] >> shift) & 2047]++;
-            k2[o] = key[i];
-            i2[o] = idx[i];
+            size_t o = count[(ka[i] >> shift) & mask]++;
+            kb[o] = ka[i];
+            ib[o] = ia[i];
         }
-        memcpy(key, k2, n * sizeof *key);
-        memcpy(idx, i2, n * sizeof *idx);
+        uint64_t *kt = ka;
+        ka = kb, kb = kt;
+        lh_index *it = ia;
+        ia = ib, ib = it;
+    }
+    if (ka != key) {
+        memcpy(key, ka, n * sizeof *key);
+        memcpy(idx, ia, n * sizeof *idx);
     }
 }
 
@@ -146,7 +167,7 @@ lh_status lh__eng_order(lh__eng *b)
     if (st == LH_OK && n) {
         morton_keys(t, key);
         for (size_t i = 0; i < n; i++) idx[i] = (lh_index)i;
-        radix_sort(key, idx, k2, i2, n, morton_bits(t->d) * t->d);
+        radix_sort(key, idx, k2, i2, n, morton_bits(t->d, n) * t->d);
         b->order = idx;
         b->norder = merge_runs(t, key, idx, i2);
         brio_rounds(b, i2, (uint8_t *)k2);

@@ -15,6 +15,24 @@
 #endif
 enum { AHEAD = 16 }; /* iterations between a prefetch and the use */
 
+/* Simplex row o := finite cell row v in canonical order (lh__canonical_ranks). */
+static inline void canonical_row(const lh_index *v, int nv, lh_index *o)
+{
+    int rank[LH__ENGINE_MAX_DIM + 1];
+    lh__canonical_ranks(v, nv, rank);
+    for (int k = 0; k < nv; k++) o[rank[k]] = v[k];
+}
+
+/* Neighbour row sn of the simplex made from cell (cv, cn): the cell's neighbour
+ * across vertex j is the simplex's across vertex rank[j]. */
+static inline void neighbour_row(const lh_index *cv, const lh_index *cn, int nv,
+                                 const lh_index *out_of_cell, lh_index *sn)
+{
+    int rank[LH__ENGINE_MAX_DIM + 1];
+    lh__canonical_ranks(cv, nv, rank);
+    for (int j = 0; j < nv; j++) sn[rank[j]] = out_of_cell[cn[j]];
+}
+
 /* mark[c]: the smallest vertex of finite cell c, -1 for the others. */
 static void mark_min_vertex(lh__eng *b, lh_index *mark)
 {
@@ -52,8 +70,9 @@ static lh_status place_simplices(lh__eng *b, lh_tri *t, lh_index *cell, const lh
         if (s + AHEAD < t->count) PREFETCH(b->tds.vert + (size_t)cell[s + AHEAD] * nv);
         const lh_index *v = b->tds.vert + (size_t)cell[s] * nv;
         lh_index *o = t->simp + s * nv;
-        for (int k = 0; k < nv; k++) o[k] = v[k];
-        lh__canonical(o, nv);
+#define ROW(m) canonical_row(v, m, o)
+        LH__WITH_CONSTANT_M(nv, ROW);
+#undef ROW
     }
     /* Placing advanced start[v+1] to bucket v's end: bucket k is start[k]..start[k+1]. */
     int ok = lh__sort_buckets(&t->alloc, t->simp, cell, start, t->n, nv);
@@ -61,9 +80,11 @@ static lh_status place_simplices(lh__eng *b, lh_tri *t, lh_index *cell, const lh
     return ok ? LH_OK : LH_ERR_NOMEM;
 }
 
-/* Neighbour k of simplex s: across the facet opposite its k-th vertex. Cells are
- * visited in store order; the neighbours' out_of_cell entries are prefetched 2*AHEAD
- * cells early (the free list scatters them), the simplex's two rows AHEAD early. */
+/* Neighbour k of simplex s: across the facet opposite its k-th vertex, the cell's
+ * vertex j of canonical rank k (lh__canonical_ranks: the simplex is not read back).
+ * Cells are visited in store order; the neighbours' out_of_cell entries are
+ * prefetched 2*AHEAD cells early (the free list scatters them), the simplex's
+ * neighbour row AHEAD early. */
 static void set_neighbours(lh__eng *b, lh_tri *t, const lh_index *out_of_cell)
 {
     const int nv = b->nv;
@@ -72,20 +93,14 @@ static void set_neighbours(lh__eng *b, lh_tri *t, const lh_index *out_of_cell)
         if (c + 2 * AHEAD < top && out_of_cell[c + 2 * AHEAD] >= 0)
             for (int j = 0; j < nv; j++) /* free-list reuse scatters neighbours */
                 PREFETCH(out_of_cell + b->tds.nbr[(size_t)(c + 2 * AHEAD) * nv + j]);
-        if (c + AHEAD < top && out_of_cell[c + AHEAD] >= 0) {
-            PREFETCH(t->simp + (size_t)out_of_cell[c + AHEAD] * nv);
-            PREFETCH(t->nbr + (size_t)out_of_cell[c + AHEAD] * nv);
-        }
+        if (c + AHEAD < top && out_of_cell[c + AHEAD] >= 0) PREFETCH(t->nbr + (size_t)out_of_cell[c + AHEAD] * nv);
         lh_index s = out_of_cell[c];
         if (s < 0) continue;
         const lh_index *cv = b->tds.vert + (size_t)c * nv, *cn = b->tds.nbr + (size_t)c * nv;
-        const lh_index *sv = t->simp + (size_t)s * nv;
         lh_index *sn = t->nbr + (size_t)s * nv;
-        for (int j = 0; j < nv; j++) {
-            int k = 0;
-            while (sv[k] != cv[j]) k++;
-            sn[k] = out_of_cell[cn[j]];
-        }
+#define ROW(m) neighbour_row(cv, cn, m, out_of_cell, sn)
+        LH__WITH_CONSTANT_M(nv, ROW);
+#undef ROW
     }
 }
 
