@@ -107,29 +107,35 @@ static void radix_sort(uint64_t *key, lh_index *idx, uint64_t *k2, lh_index *i2,
     }
 }
 
-/* Equal sites share a Morton key: in each run of equal keys, an exact lexicographic
- * sort puts equal sites together, smallest index first — that one is the vertex.
- * Compacts the distinct sites into idx (Morton order) and returns their number. */
+/* Equal sites share a Morton key, and the radix sort keeps a run of equal keys in
+ * increasing index order. A short run is searched pair by pair for equal sites, a
+ * long one sorted exactly (lexicographically, ties by index) so that equal sites are
+ * adjacent; either way the smallest index of equal sites is the vertex. Compacts the
+ * distinct sites into idx (Morton order) and returns their number. */
 static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_index *tmp)
 {
+    enum { FEW = 8 }; /* the keys' resolution makes most runs one or two sites */
     lh__lex c = {t->xyz, t->d};
     size_t nrep = 0;
     t->ndup = 0;
     for (size_t i = 0; i < t->n;) {
         size_t j = i + 1;
         while (j < t->n && key[j] == key[i]) j++;
-        if (j - i > 1) lh__sort_idx(idx + i, tmp, j - i, lh__lex_cmp, &c);
-        lh_index prev = -1;
+        const int sorted = j - i > FEW;
+        if (sorted) lh__sort_idx(idx + i, tmp, j - i, lh__lex_cmp, &c);
+        const size_t first = nrep; /* this run's distinct sites: idx[first..nrep) */
         for (size_t k = i; k < j; k++) {
-            lh_index s = idx[k];
-            if (prev >= 0 && same_site(t, s, prev)) {
-                t->dup[s] = t->dup[prev];
+            lh_index s = idx[k], rep = s;
+            for (size_t r = sorted && nrep > first ? nrep - 1 : first; r < nrep; r++)
+                if (same_site(t, s, idx[r])) {
+                    rep = idx[r];
+                    break;
+                }
+            t->dup[s] = rep;
+            if (rep != s)
                 t->ndup++;
-            } else {
-                t->dup[s] = s;
+            else
                 idx[nrep++] = s;
-            }
-            prev = s;
         }
         i = j;
     }

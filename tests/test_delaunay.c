@@ -208,6 +208,36 @@ LH_TEST(duplicates_are_merged_and_reported)
     lh_tri_free(t);
 }
 
+/* Distinct sites 1e-9 apart share a Morton cell with the copies of each other:
+ * `copies` copies of each of three such sites, interleaved, beside the unit
+ * square's corners. A run of at most 8 equal keys is searched pair by pair, a
+ * longer one sorted (hull/order.c); both must map every copy to its first
+ * occurrence and keep the three sites apart. */
+static void crowded_cell(lh_test_state *lh_t_, int copies)
+{
+    const double near[3][2] = {{0.5, 0.5}, {0.5 + 1e-9, 0.5}, {0.5, 0.5 + 1e-9}};
+    double x[2 * (4 + 3 * 10)] = {0, 0, 1, 0, 0, 1, 1, 1};
+    const int n = 4 + 3 * copies;
+    for (int i = 4; i < n; i++) {
+        x[2 * i] = near[(i - 4) % 3][0];
+        x[2 * i + 1] = near[(i - 4) % 3][1];
+    }
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(2, (size_t)n, x, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_U64(lh_tri_duplicate_count(t), (uint64_t)(3 * copies - 3));
+    const lh_index *dup = lh_tri_duplicate_of(t);
+    for (int i = 0; i < n; i++) LH_EXPECT_EQ_INT(dup[i], i < 7 ? i : 4 + (i - 4) % 3);
+    LH_EXPECT_EQ_U64(lh_tri_count(t), 8); /* 7 vertices, 4 on the hull: 2*7 - 4 - 2 */
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    lh_tri_free(t);
+}
+
+LH_TEST(duplicates_in_one_morton_cell_short_and_long_runs)
+{
+    crowded_cell(lh_t_, 2);  /* a run of 6 */
+    crowded_cell(lh_t_, 10); /* a run of 30 */
+}
+
 LH_TEST(bad_input_gets_its_status)
 {
     double x[4 * 3] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}; /* coplanar in 3D */
@@ -403,7 +433,7 @@ int main(int argc, char **argv)
     static const lh_test_case cases[] = {LH_CASE(furthest_site_triangulation),LH_CASE(every_allocation_failure_is_survived_by_the_hull),
         LH_CASE(every_family_passes_the_exact_check), LH_CASE(smallest_inputs),
         LH_CASE(output_depends_only_on_the_site_set), LH_CASE(a_vertex_of_huge_degree),
-        LH_CASE(duplicates_are_merged_and_reported), LH_CASE(predicate_counters_report_the_stages),
+        LH_CASE(duplicates_are_merged_and_reported), LH_CASE(duplicates_in_one_morton_cell_short_and_long_runs), LH_CASE(predicate_counters_report_the_stages),
         LH_CASE(bad_input_gets_its_status), LH_CASE(the_check_rejects_what_is_not_delaunay),
         LH_CASE(every_allocation_failure_is_survived), LH_CASE(progress_is_reported_and_changes_nothing)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
