@@ -2,6 +2,7 @@
  * increasing order but for one exchange that keeps the orientation, and tuples
  * sorted lexicographically, so that an output depends only on the site set. */
 #include "engine.h"
+#include "lh_sort.h"
 
 #include <string.h>
 
@@ -110,13 +111,44 @@ int lh__sort_buckets(const lh_allocator *a, lh_index *t, lh_index *payload, cons
     return 1;
 }
 
+typedef struct tuple_ctx {
+    const lh_index *v;
+    int m;
+} tuple_ctx;
+
+static int tuple_cmp(const void *vctx, lh_index a, lh_index b)
+{
+    const tuple_ctx *c = vctx;
+    const lh_index *x = c->v + (size_t)a * c->m, *y = c->v + (size_t)b * c->m;
+    for (int k = 0; k < c->m; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
+
+/* Few tuples for the range of indices (a 2D hull's few dozen edges among 10^6
+ * sites): a merge sort of their positions, no table of n buckets. */
+static int sort_few_tuples(const lh_allocator *a, const lh_index *v, int m, size_t count,
+                           lh_index *out, lh_index *order)
+{
+    lh_index *tmp = lh__alloc(a, (count + 1) * sizeof *tmp);
+    if (!tmp) return 0;
+    for (size_t i = 0; i < count; i++) order[i] = (lh_index)i;
+    tuple_ctx c = {v, m};
+    lh__sort_idx(order, tmp, count, tuple_cmp, &c);
+    for (size_t i = 0; i < count; i++) memcpy(out + i * m, v + (size_t)order[i] * m, (size_t)m * sizeof *v);
+    lh__free(a, tmp);
+    return 1;
+}
+
 /* Sorts count canonical tuples (m indices each) lexicographically into out, with
  * order[i] the input position of out's tuple i: a counting sort on the first entry
  * (a site index below n) gathers the tuples bucket by bucket, then each bucket is
- * sorted (lh__sort_buckets). Returns 0 on no memory. */
+ * sorted (lh__sort_buckets); or, when there are few tuples for n, sort_few_tuples.
+ * Returns 0 on no memory. */
 int lh__sort_tuples(const lh_allocator *a, const lh_index *v, int m, size_t count,
                     size_t n, lh_index *out, lh_index *order)
 {
+    if (count < n / 8) return sort_few_tuples(a, v, m, count, out, order);
     size_t *start = lh__alloc(a, (n + 2) * sizeof *start);
     if (!start) return 0;
     memset(start, 0, (n + 2) * sizeof *start);
