@@ -111,20 +111,6 @@ int lh__sort_buckets(const lh_allocator *a, lh_index *t, lh_index *payload, cons
     return 1;
 }
 
-typedef struct tuple_ctx {
-    const lh_index *v;
-    int m;
-} tuple_ctx;
-
-static int tuple_cmp(const void *vctx, lh_index a, lh_index b)
-{
-    const tuple_ctx *c = vctx;
-    const lh_index *x = c->v + (size_t)a * c->m, *y = c->v + (size_t)b * c->m;
-    for (int k = 0; k < c->m; k++)
-        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
-    return 0;
-}
-
 /* Few tuples for the range of indices (a 2D hull's few dozen edges among 10^6
  * sites): a merge sort of their positions, no table of n buckets. */
 static int sort_few_tuples(const lh_allocator *a, const lh_index *v, int m, size_t count,
@@ -133,8 +119,8 @@ static int sort_few_tuples(const lh_allocator *a, const lh_index *v, int m, size
     lh_index *tmp = lh__alloc(a, (count + 1) * sizeof *tmp);
     if (!tmp) return 0;
     for (size_t i = 0; i < count; i++) order[i] = (lh_index)i;
-    tuple_ctx c = {v, m};
-    lh__sort_idx(order, tmp, count, tuple_cmp, &c);
+    lh__rows c = {v, m, m};
+    lh__sort_idx(order, tmp, count, lh__rows_cmp, &c);
     for (size_t i = 0; i < count; i++) memcpy(out + i * m, v + (size_t)order[i] * m, (size_t)m * sizeof *v);
     lh__free(a, tmp);
     return 1;

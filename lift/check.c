@@ -82,20 +82,6 @@ static lh_status check_simplices(chk *c)
     return LH_OK;
 }
 
-typedef struct rec_ctx {
-    const lh_index *rec;
-    int w, keylen;
-} rec_ctx;
-
-static int rec_cmp(const void *vctx, lh_index a, lh_index b)
-{
-    const rec_ctx *r = vctx;
-    const lh_index *x = r->rec + (size_t)a * r->w, *y = r->rec + (size_t)b * r->w;
-    for (int k = 0; k < r->keylen; k++)
-        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
-    return 0;
-}
-
 static void sort_small(lh_index *v, int m)
 {
     for (int i = 1; i < m; i++)
@@ -118,8 +104,8 @@ static lh_index *sorted_records(chk *c, const lh_index *rec, size_t m, int w, in
         return NULL;
     }
     for (size_t i = 0; i < m; i++) idx[i] = (lh_index)i;
-    rec_ctx r = {rec, w, keylen};
-    lh__sort_idx(idx, tmp, m, rec_cmp, &r);
+    lh__rows r = {rec, w, keylen};
+    lh__sort_idx(idx, tmp, m, lh__rows_cmp, &r);
     lh__free(&c->alloc, tmp);
     return idx;
 }
@@ -144,12 +130,12 @@ static lh_status check_facets(chk *c, size_t *boundary)
         }
     lh_index *idx = sorted_records(c, c->rec, m, w, d);
     if (!idx) return LH_ERR_NOMEM;
-    rec_ctx r = {c->rec, w, d};
+    lh__rows r = {c->rec, w, d};
     lh_status st = LH_OK;
     *boundary = 0;
     for (size_t i = 0; i < m && st == LH_OK;) {
         size_t j = i + 1;
-        while (j < m && rec_cmp(&r, idx[i], idx[j]) == 0) j++;
+        while (j < m && lh__rows_cmp(&r, idx[i], idx[j]) == 0) j++;
         const lh_index *a = c->rec + (size_t)idx[i] * w;
         if (j - i > 2) {
             st = fail(c, "a facet is shared by %zu simplices (%" LH_INDEX_PRI " and %" LH_INDEX_PRI " among them)", j - i,
@@ -216,12 +202,12 @@ static lh_status check_boundary(chk *c, size_t boundary)
         }
     lh_index *idx = sorted_records(c, rec, m, w, d - 1);
     lh_status st = idx ? LH_OK : LH_ERR_NOMEM;
-    rec_ctx r = {rec, w, d - 1};
+    lh__rows r = {rec, w, d - 1};
     for (size_t i = 0; st == LH_OK && i < m; i += 2) {
-        if (i + 1 >= m || rec_cmp(&r, idx[i], idx[i + 1]) != 0 ||
-            (i + 2 < m && rec_cmp(&r, idx[i], idx[i + 2]) == 0)) {
+        if (i + 1 >= m || lh__rows_cmp(&r, idx[i], idx[i + 1]) != 0 ||
+            (i + 2 < m && lh__rows_cmp(&r, idx[i], idx[i + 2]) == 0)) {
             st = fail(c, "the boundary is not a closed surface (a ridge of hull facet %" LH_INDEX_PRI " has %s partner)",
-                      fs[2 * rec[(size_t)idx[i] * w + d - 1]], i + 1 >= m || rec_cmp(&r, idx[i], idx[i + 1]) ? "no" : "more than one");
+                      fs[2 * rec[(size_t)idx[i] * w + d - 1]], i + 1 >= m || lh__rows_cmp(&r, idx[i], idx[i + 1]) ? "no" : "more than one");
             break;
         }
         for (int side = 0; side < 2 && st == LH_OK; side++) {

@@ -12,4 +12,12 @@ typedef int (*lh__cmp_fn)(const void *ctx, lh_index a, lh_index b);
 
 void lh__sort_idx(lh_index *idx, lh_index *tmp, size_t count, lh__cmp_fn cmp, const void *ctx);
 
+/* Rows of `width` indices compared lexicographically on their first `keylen`. */
+typedef struct lh__rows {
+    const lh_index *v;
+    int width, keylen;
+} lh__rows;
+/* An lh__cmp_fn over rows a and b of the lh__rows at ctx. */
+int lh__rows_cmp(const void *ctx, lh_index a, lh_index b);
+
 #endif

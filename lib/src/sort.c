@@ -21,3 +21,12 @@ void lh__sort_idx(lh_index *idx, lh_index *tmp, size_t count, lh__cmp_fn cmp, co
     }
     if (src != idx) memcpy(idx, src, count * sizeof *idx);
 }
+
+int lh__rows_cmp(const void *ctx, lh_index a, lh_index b)
+{
+    const lh__rows *r = ctx;
+    const lh_index *x = r->v + (size_t)a * r->width, *y = r->v + (size_t)b * r->width;
+    for (int k = 0; k < r->keylen; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
