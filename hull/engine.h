@@ -216,9 +216,10 @@ static inline void lh__canonical(lh_index *v, int m)
  * out; order[i] = index in v of out's tuple i. Returns 0 on no memory. */
 int lh__sort_tuples(const lh_allocator *a, const lh_index *v, int m, size_t count,
                     size_t n, lh_index *out, lh_index *order);
-/* canon.c: sorts the tuples (m indices each) of t within each bucket
- * [start[k], start[k+1]), k < nb, lexicographically, moving payload[] along
- * (insertion sort for small buckets, merge sort for large ones). 0 on no memory. */
+/* canon.c: sorts the tuples (m site indices each, nonnegative) of t within each
+ * bucket [start[k], start[k+1]), k < nb, lexicographically, moving payload[] along
+ * (insertion sort for small buckets, merge sort for large ones). The tuples of a
+ * bucket share their first entry (comparisons start at the second). 0 on no memory. */
 int lh__sort_buckets(const lh_allocator *a, lh_index *t, lh_index *payload, const size_t *start,
                      size_t nb, int m);
 
