@@ -252,6 +252,15 @@ static void link_new_cells(lh__tds *t)
     }
 }
 
+/* The position of x in a row of NV entries holding it once, branch-free. */
+static inline int row_pos(const lh__tds *t, const lh_index *row, lh_index x)
+{
+    (void)t; /* NV reads t->nv in the runtime-dimension build */
+    int p = 0;
+    for (int i = 1; i < NV; i++) p += i * (row[i] == x);
+    return p;
+}
+
 /* Pairs the new cells by turning around their ridges through the dead cells, for a
  * Delaunay insertion (inside_conflicts): the conflict region is then a ball (it is
  * star-shaped from q), so the dead cells around a ridge R on its boundary form a
@@ -265,15 +274,6 @@ static void link_new_cells(lh__tds *t)
  * cells just visited by grow_region, and nothing is hashed or sorted. Both cells of
  * a pair are linked at once. The dead cells' rows are overwritten (they are freed
  * next). */
-/* The position of x in a row of NV entries holding it once, branch-free. */
-static inline int row_pos(const lh__tds *t, const lh_index *row, lh_index x)
-{
-    (void)t; /* NV reads t->nv in the runtime-dimension build */
-    int p = 0;
-    for (int i = 1; i < NV; i++) p += i * (row[i] == x);
-    return p;
-}
-
 static void link_by_turning(lh__eng *e)
 {
     lh__tds *t = &e->tds;
@@ -322,9 +322,7 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
         lh_index outside = t->nbr[(size_t)c * NV + k];
         nnbr[k] = outside;
         lh_index *on = t->nbr + (size_t)outside * NV;
-        int m = 0;
-        while (on[m] != c) m++;
-        on[m] = N;
+        on[row_pos(t, on, c)] = N;
         t->fresh[b] = N;
     }
     if (e->inside_conflicts)
@@ -349,12 +347,6 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
  * place and two more are taken. Same cavity as cavity_insert (the same conflict
  * test on the same cells), so the same triangulation.
  */
-
-static inline int mirror_2(const lh__tds *t, lh_index c, lh_index other)
-{
-    const lh_index *n = t->nbr + (size_t)c * 3;
-    return n[0] == other ? 0 : n[1] == other ? 1 : 2;
-}
 
 /* Cell N := (q, a, b) in this cyclic order with neighbours (o, next, prev) opposite
  * them, rotated so that LH__INF, when present, comes first. */
@@ -392,7 +384,7 @@ static lh_status tour_cavity_2(lh__eng *e, lh_index start)
         LH_PREFETCH(t->nbr + (size_t)n * 3);
         if (conflict(e, n)) {
             if (t->ncells >= (size_t)t->live) return LH_ERR_INTERNAL; /* not a tree */
-            int j = mirror_2(t, n, c);
+            int j = row_pos(t, t->nbr + (size_t)n * 3, c);
             if (!push(t, &t->cells, &t->cells_cap, &t->ncells, n) ||
                 !push(t, &t->fresh, &t->fresh_cap, &depth, n) ||
                 !push(t, &t->fresh, &t->fresh_cap, &depth, (lh_index)((j == 2 ? 0 : j + 1) << 2 | 2)))
@@ -400,7 +392,7 @@ static lh_status tour_cavity_2(lh__eng *e, lh_index start)
             continue;
         }
         const lh_index *cv = t->vert + (size_t)c * 3;
-        lh_index rec[4] = {cv[k == 2 ? 0 : k + 1], cv[k == 0 ? 2 : k - 1], n, mirror_2(t, n, c)};
+        lh_index rec[4] = {cv[k == 2 ? 0 : k + 1], cv[k == 0 ? 2 : k - 1], n, row_pos(t, t->nbr + (size_t)n * 3, c)};
         for (int x = 0; x < 4; x++)
             if (!push(t, &t->bound, &t->bound_cap, &nb4, rec[x])) return LH_ERR_NOMEM;
     }
