@@ -165,8 +165,7 @@ static int ridge_room(lh__tds *t)
         t->spos = p;
         t->sorted_cap = cap;
     }
-    size_t want = 16;
-    while (want < nb * m + nb * m / 2) want *= 2; /* load at most 2/3 */
+    size_t want = lh__ridge_slots(nb * m);
     if (t->ridge_cap >= want) return 1;
     lh__ridge *r = grow(&t->alloc, t->ridge, 0, want * sizeof *r);
     if (!r) return 0;

@@ -40,6 +40,16 @@ typedef struct lh__ridge {
 #define LH__RIDGE_PAIRED UINT64_MAX /* no exact key is all ones (a vertex + 1 is
                                        below 2^vbits - 1 ... see lh__tds_vertex_bound);
                                        hashed keys that are get compared */
+/* The slots an insertion uses for `entries` ridges: a power of two, a prefix of the
+ * table, so that a small cavity's entries stay in the first-level cache whatever
+ * the largest one was; at most 1/8 full up to 2^16 slots (probes then rarely
+ * collide, insert_impl.h), at most 2/3 beyond. */
+static inline size_t lh__ridge_slots(size_t entries)
+{
+    size_t slots = 16;
+    while (slots < entries + entries / 2 || (slots < 8 * entries && slots < (1u << 16))) slots *= 2;
+    return slots;
+}
 #define LH__MAX_NEW_CELLS (INT32_C(1) << 27) /* b fits in bd */
 
 typedef struct lh__tds {
