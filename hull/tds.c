@@ -150,7 +150,7 @@ void lh__tds_next_round(lh__tds *t)
     t->round++;
 }
 
-/* Room for the ridges of nbound new cells (the table at most half full) and their
+/* Room for the ridges of nbound new cells (lh__ridge_slots) and their
  * sorted vertex lists. */
 static int ridge_room(lh__tds *t)
 {

@@ -46,9 +46,11 @@ typedef struct lh__ridge {
  * collide, insert_impl.h), at most 2/3 beyond. */
 static inline size_t lh__ridge_slots(size_t entries)
 {
-    size_t slots = 16;
-    while (slots < entries + entries / 2 || (slots < 8 * entries && slots < (1u << 16))) slots *= 2;
-    return slots;
+    size_t want = 8 * entries < (1u << 16) ? 8 * entries : (1u << 16);
+    if (want < entries + entries / 2) want = entries + entries / 2;
+    uint64_t v = (uint64_t)(want < 16 ? 16 : want) - 1; /* the next power of two */
+    v |= v >> 1, v |= v >> 2, v |= v >> 4, v |= v >> 8, v |= v >> 16, v |= v >> 32;
+    return (size_t)v + 1;
 }
 #define LH__MAX_NEW_CELLS (INT32_C(1) << 27) /* b fits in bd */
 
