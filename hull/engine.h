@@ -188,7 +188,10 @@ static inline void lh__canonical_ranks(const lh_index *v, int m, int *rank)
         rank[j] = r;
     }
     const int odd = inv & 1;
-    for (int j = 0; j < m; j++) rank[j] = odd && rank[j] >= m - 2 ? 2 * m - 3 - rank[j] : rank[j];
+    for (int j = 0; j < m; j++) { /* & (a cmov), not && (a branch) */
+        const int flip = odd & (rank[j] >= m - 2), other = 2 * m - 3 - rank[j];
+        rank[j] = flip ? other : rank[j];
+    }
 }
 
 /* call(m) with m a constant when it is 3 to 6 (a simplex in 2D to 5D, the

@@ -91,7 +91,8 @@ static inline int orient_replaced(lh__eng *e, const lh_index *v, int k)
 {
     const lh__tds *t = &e->tds;
     (void)t;
-    for (int j = 0; j < NV; j++) e->pts[j] = lh__eng_site(e, j == k ? e->q : v[j]);
+    for (int j = 0; j < NV; j++) e->pts[j] = lh__eng_site(e, v[j]);
+    e->pts[k] = lh__eng_site(e, e->q); /* after the loop: no branch on j == k in it */
     return LH_T_ORIENT(e, e->pts);
 }
 
@@ -427,6 +428,8 @@ static inline void set_fan_cell(lh__tds *t, lh_index N, const lh_index v3[3], co
     }
 }
 
+static const int8_t NEXT_3[3] = {1, 2, 0}; /* the next position, cyclically: a load, not a branch */
+
 /* The tour from `start` (in conflict with q): dead cells in t->cells, boundary
  * edges in t->bound as (a, b, outside cell, index of the dead cell in its row).
  * Returns LH_OK, LH_ERR_NOMEM, or LH_ERR_INTERNAL should the region not be a tree. */
@@ -445,7 +448,7 @@ static lh_status tour_cavity_2(lh__eng *e, lh_index start)
             depth -= 2;
             continue;
         }
-        t->fresh[depth - 1] = (lh_index)((k == 2 ? 0 : k + 1) << 2 | (left - 1));
+        t->fresh[depth - 1] = (lh_index)(NEXT_3[k] << 2 | (left - 1));
         lh_index n = t->nbr[(size_t)c * 3 + k];
         LH_PREFETCH(t->nbr + (size_t)n * 3);
         if (conflict(e, n)) {
@@ -453,12 +456,12 @@ static lh_status tour_cavity_2(lh__eng *e, lh_index start)
             int j = row_pos(t, t->nbr + (size_t)n * 3, c);
             if (!push(t, &t->cells, &t->cells_cap, &t->ncells, n) ||
                 !push(t, &t->fresh, &t->fresh_cap, &depth, n) ||
-                !push(t, &t->fresh, &t->fresh_cap, &depth, (lh_index)((j == 2 ? 0 : j + 1) << 2 | 2)))
+                !push(t, &t->fresh, &t->fresh_cap, &depth, (lh_index)(NEXT_3[j] << 2 | 2)))
                 return LH_ERR_NOMEM;
             continue;
         }
         const lh_index *cv = t->vert + (size_t)c * 3;
-        lh_index rec[4] = {cv[k == 2 ? 0 : k + 1], cv[k == 0 ? 2 : k - 1], n, row_pos(t, t->nbr + (size_t)n * 3, c)};
+        lh_index rec[4] = {cv[NEXT_3[k]], cv[NEXT_3[NEXT_3[k]]], n, row_pos(t, t->nbr + (size_t)n * 3, c)};
         for (int x = 0; x < 4; x++)
             if (!push(t, &t->bound, &t->bound_cap, &nb4, rec[x])) return LH_ERR_NOMEM;
     }
