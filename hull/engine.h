@@ -71,8 +71,8 @@ typedef struct lh__eng {
     uint64_t filtered;    /* predicate calls settled by inline filters, not yet
                              added to pred's counters */
     int hashed_ridges;    /* tests: link new cells as large n does where packed keys
-                             fit (insert_impl.h: hashed keys, turning in 3D), to
-                             exercise those paths at small n */
+                             fit (insert_impl.h: hashed keys; turning, not twins,
+                             in 2D and 3D), to exercise those paths at small n */
     int inside_conflicts; /* 1: the cell containing q always conflicts (Delaunay);
                              0: a site inside the current hull is not inserted */
     double lo[LH__ENGINE_MAX_DIM];   /* per coordinate, the sites' minimum and     */

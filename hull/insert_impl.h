@@ -27,8 +27,8 @@
  * across its facet opposite vertex v_j (j != k), the new cell made from the other
  * boundary facet that contains the ridge R = c \ {v_k, v_j} (the cavity's boundary
  * is a closed pseudo-manifold: every ridge is in exactly two boundary facets). In
- * 3D, R is an edge, directed by each cell's orientation the opposite way in the
- * other: the two are twins in a table of directed edges (link_twin_edges).
+ * 2D and 3D, R is a vertex or an edge, oriented by each cell the opposite way in
+ * the other: the two are twins in a table of oriented ridges (link_twins).
  * Otherwise a Delaunay insertion finds the other cell by turning around R through
  * the dead cells (link_by_turning); the other modes (placing, the furthest-site
  * hull) pair the two through a hash table keyed on R. Each new cell's old vertices are
@@ -302,20 +302,21 @@ static void link_by_turning(lh__eng *e)
     }
 }
 
-/* Pairing the new cells of a 3D insertion (four vertices a cell) as twin half-edges.
- * The new cell made from boundary facet (c, k) carries that facet's triangle; the
- * triangles tile the cavity's boundary, a closed surface, and each is oriented by
- * its cell (two cells oriented alike induce opposite orientations on the facet they
- * share: the boundary operator of simplicial homology). The cell's facet opposite
- * position j (j != k) holds q and the triangle's edge TWIN_EDGE[k][j] = (a, b),
- * directed so that the neighbour across that facet holds the same edge as (b, a).
- * Every new cell enters its three directed edges in the ridge table (a prefix at
- * most 1/8 full: lh__ridge_slots), then finds its three neighbours under the
- * reversed edges. No branch depends on which cell of a pair comes first, unlike
- * turning (link_by_turning: half of a 3D run's mispredicted branches, callgrind) or
- * link_new_cells. In 4D and 5D, where a ridge's vertices must first be put in a
- * canonical order, turning measured faster. Needs 2 vbits <= 64. Returns 0 if an
- * edge has no twin. */
+/* Pairing the new cells as twins, in 2D and 3D. The new cell made from boundary
+ * facet (c, k) carries that facet; the facets tile the cavity's boundary, a closed
+ * pseudo-manifold, and each is oriented by its cell (two cells oriented alike
+ * induce opposite orientations on the facet they share: the boundary operator of
+ * simplicial homology). In 3D the cell's facet opposite position j (j != k) holds q
+ * and the boundary triangle's edge TWIN_EDGE[k][j] = (a, b), directed so that the
+ * neighbour across that facet holds the same edge as (b, a); in 2D it holds q and
+ * the boundary edge's end TWIN_VERTEX[k][j] = a, with a sign (a is the edge's first
+ * or last vertex) that is the other one in the neighbour. Every new cell enters its
+ * keys in the ridge table (a prefix at most 1/8 full: lh__ridge_slots), then finds
+ * its neighbours under the reversed keys. No branch depends on which cell of a
+ * pair comes first, unlike turning (link_by_turning: half of a 3D run's
+ * mispredicted branches, callgrind) or link_new_cells. In 4D and 5D, where a
+ * ridge's vertices must first be put in a canonical order, turning measured
+ * faster. The 3D key needs 2 vbits <= 64. Returns 0 if a key has no twin. */
 static const int8_t TWIN_EDGE[4][4][2] = {
     /* positions {0..3} \ {k, j}, increasing, exchanged when j + (k, or k - 1 when
        j < k) is odd: the facet opposite j is (-1)^j times its vertices in order */
@@ -324,41 +325,53 @@ static const int8_t TWIN_EDGE[4][4][2] = {
     {{3, 1}, {0, 3}, {0, 0}, {1, 0}},
     {{1, 2}, {2, 0}, {0, 1}, {0, 0}},
 };
+static const int8_t TWIN_VERTEX[3][3][2] = { /* position {0..2} \ {k, j}, parity */
+    {{0, 0}, {2, 1}, {1, 0}},
+    {{2, 0}, {0, 0}, {0, 1}},
+    {{1, 1}, {0, 0}, {0, 0}},
+};
 
-static inline size_t twin_slot(const lh__tds *t, const lh_index *v, const int8_t e[2], int rev, uint64_t *key)
+/* The key of new cell v's ridge opposite position j (its new vertex at k), reversed
+ * when `rev`, and its slot. nv: 3 or 4, a constant where link_twins is inlined. */
+static inline size_t twin_slot(const lh__tds *t, const lh_index *v, int nv, int k, int j, int rev, uint64_t *key)
 {
-    const lh_index a = v[e[rev]], b = v[e[!rev]];
-    *key = (uint64_t)(lh__uindex)(a + 1) << t->vbits | (uint64_t)(lh__uindex)(b + 1);
+    if (nv == 3) {
+        const int8_t *p = TWIN_VERTEX[k][j];
+        *key = (uint64_t)(lh__uindex)(v[p[0]] + 1) << 1 | (uint64_t)(p[1] ^ rev);
+    } else {
+        const int8_t *e = TWIN_EDGE[k][j];
+        *key = (uint64_t)(lh__uindex)(v[e[rev]] + 1) << t->vbits | (uint64_t)(lh__uindex)(v[e[!rev]] + 1);
+    }
     return (size_t)((*key * UINT64_C(0x9e3779b97f4a7c15)) >> 40);
 }
 
-static int link_twin_edges(lh__tds *t)
+static inline int link_twins(lh__tds *t, const int nv)
 {
     const uint32_t round = t->round;
-    const size_t mask = lh__ridge_slots(3 * t->nbound) - 1;
+    const size_t mask = lh__ridge_slots((size_t)(nv - 1) * t->nbound) - 1;
     for (size_t b = 0; b < t->nbound; b++) {
         const int k = (int)t->bound[2 * b + 1];
-        const lh_index *v = t->vert + (size_t)t->fresh[b] * 4;
-        for (int i = 1; i < 4; i++) {
-            const int j = (k + i) & 3;
+        const lh_index *v = t->vert + (size_t)t->fresh[b] * nv;
+        for (int i = 1; i < nv; i++) {
+            const int j = k + i < nv ? k + i : k + i - nv;
             uint64_t key;
-            size_t h = twin_slot(t, v, TWIN_EDGE[k][j], 0, &key) & mask;
+            size_t h = twin_slot(t, v, nv, k, j, 0, &key) & mask;
             while (t->ridge[h].round == round) h = (h + 1) & mask;
             t->ridge[h] = (lh__ridge){key, round, (uint32_t)b << 4 | (uint32_t)j};
         }
     }
     for (size_t b = 0; b < t->nbound; b++) {
         const int k = (int)t->bound[2 * b + 1];
-        const lh_index N = t->fresh[b], *v = t->vert + (size_t)N * 4;
-        for (int i = 1; i < 4; i++) {
-            const int j = (k + i) & 3;
+        const lh_index N = t->fresh[b], *v = t->vert + (size_t)N * nv;
+        for (int i = 1; i < nv; i++) {
+            const int j = k + i < nv ? k + i : k + i - nv;
             uint64_t key;
-            size_t h = twin_slot(t, v, TWIN_EDGE[k][j], 1, &key) & mask;
+            size_t h = twin_slot(t, v, nv, k, j, 1, &key) & mask;
             for (;; h = (h + 1) & mask) {
                 if (t->ridge[h].round != round) return 0;
                 if (t->ridge[h].key == key) break;
             }
-            t->nbr[(size_t)N * 4 + j] = t->fresh[t->ridge[h].bd >> 4];
+            t->nbr[(size_t)N * nv + j] = t->fresh[t->ridge[h].bd >> 4];
         }
     }
     return 1;
@@ -390,8 +403,8 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
         on[row_pos(t, on, c)] = N;
         t->fresh[b] = N;
     }
-    if (NV == 4 && 2 * t->vbits <= 64 && !e->hashed_ridges) {
-        if (!link_twin_edges(t)) return LH_ERR_INTERNAL;
+    if ((NV == 3 || (NV == 4 && 2 * t->vbits <= 64)) && !e->hashed_ridges) {
+        if (!(NV == 3 ? link_twins(t, 3) : link_twins(t, 4))) return LH_ERR_INTERNAL;
     } else if (e->inside_conflicts)
         link_by_turning(e);
     else
