@@ -44,12 +44,15 @@
  */
 #include "pred_internal.h"
 
-/* Lexicographic order of points; equal points by argument position. */
+/* Lexicographic order of points; equal points by argument position. Branch-free,
+ * from the last coordinate up: on grids and spheres of lattice points, leading
+ * coordinates are often equal, and an early exit mispredicts. */
 static int precedes(const double *const *pts, int dim, int a, int b)
 {
-    for (int c = 0; c < dim; c++)
-        if (pts[a][c] != pts[b][c]) return pts[a][c] < pts[b][c];
-    return a < b;
+    const double *pa = pts[a], *pb = pts[b];
+    int lt = a < b;
+    for (int c = dim - 1; c >= 0; c--) lt = (pa[c] < pb[c]) | ((pa[c] == pb[c]) & lt);
+    return lt;
 }
 
 /* order[0] is the least significant row, order[n-1] the most significant. */
@@ -71,8 +74,10 @@ static int cofactor_parity(int r, int c) { return (r + c) & 1 ? -1 : 1; }
 static int most_significant(const double *const *pts, int dim, int n, unsigned done)
 {
     int best = -1;
-    for (int i = 0; i < n; i++)
-        if (!(done >> i & 1) && (best < 0 || precedes(pts, dim, best, i))) best = i;
+    for (int i = 0; i < n; i++) {
+        const int take = !(done >> i & 1) & ((best < 0) || precedes(pts, dim, best, i));
+        best = take ? i : best;
+    }
     return best;
 }
 
