@@ -31,10 +31,10 @@
  * the other: the two are twins in a table of oriented ridges (link_twins).
  * Otherwise a Delaunay insertion finds the other cell by turning around R through
  * the dead cells (link_by_turning); the other modes (placing, the furthest-site
- * hull) pair the two through a hash table keyed on R. Each new cell's old vertices are
- * sorted once; a ridge is that list minus one entry. When its d-1 vertices fit in
- * 64 bits (t->vbits each: for d <= 3 always below 2^32 sites, for n below 2^21 in
- * 4D, 2^16 in 5D) the key is the ridge itself, packed; otherwise it is the sum of a
+ * hull) pair the two through a hash table keyed on R (link_new_cells). Each new
+ * cell's old vertices are sorted once; a ridge is that list minus one entry. When
+ * its vertices fit in 64 bits (t->vbits each: for n below 2^21 in 4D, 2^16 in 5D)
+ * the key is the ridge itself, packed; otherwise it is the sum of a
  * mix of its vertices (one subtraction from the cell's sum) and equal keys are
  * confirmed by comparing the sorted lists, so a collision costs a probe, never a
  * wrong link.
