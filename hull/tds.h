@@ -109,6 +109,11 @@ static inline lh_index lh__tds_new_cell(lh__tds *t)
  * array itself (one 32-bit word per cell) with 32-bit indices, a new array in its
  * place with 64-bit ones (NULL when memory runs out). No insertion may follow. */
 lh_index *lh__tds_finish(lh__tds *t);
+/* cell_sort.c, after lh__tds_finish: the finite cells (vertices below n) in
+ * canonical form (canon.c) and lexicographic order at rows 0..*count-1, the other
+ * rows after them, in place; orig (t->top entries) receives each row's position
+ * before, and neighbour entries still name those positions. */
+lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count);
 static inline void lh__tds_kill(lh__tds *t, lh_index c)
 {
     size_t base = (size_t)c * t->nv;

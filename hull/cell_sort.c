@@ -1,0 +1,231 @@
+/*
+ * cell_sort.c — the store's finite cells put in the canonical form of lifthull's
+ * outputs (canon.c) in place, so that an output's simplex and neighbour arrays are
+ * the store's own and the cells are never copied: each finite cell's vertex and
+ * neighbour rows are permuted together into canonical order, then the rows are
+ * sorted lexicographically, the finite cells first.
+ *
+ * The sort is an in-place most-significant-digit radix sort on a row's first vertex
+ * (American flag sort: McIlroy, Bostic & McIlroy, "Engineering radix sort",
+ * Computing Systems 6(1), 1993, §2.3), with digits of at most DIGIT_BITS bits so
+ * that a pass's bucket heads stay in the second-level cache; rows with the same
+ * first vertex are ordered by the rest of the tuple (insertion sort for small
+ * groups, heapsort for the large groups of a degenerate input).
+ */
+#include "engine.h"
+#include "lh_alloc.h"
+
+#include <string.h>
+
+enum { DIGIT_BITS = 11, SMALL = 16, MAX_LEVELS = 64 / DIGIT_BITS + 1 };
+
+/* The rows being sorted. Every function below takes the row length nv as an
+ * argument, a constant where lh__tds_sort_cells calls them for 2D to 5D
+ * (LH__WITH_CONSTANT_M), so that row moves unroll. */
+typedef struct rows {
+    lh_index *vert, *nbr, *orig; /* rows of nv; orig: one per row */
+    size_t n;                    /* the key of a row that is not a finite cell */
+    int levels;                  /* digit passes: level i reads key bits lo[i]..hi[i]-1 */
+    int lo[MAX_LEVELS], hi[MAX_LEVELS];
+    size_t *scratch;             /* per level: bucket heads and ends */
+    uint16_t *dig;               /* per row: its digit in the current pass */
+} rows;
+
+/* A row's sort key: its first vertex for a finite cell, n for the others (the
+ * vertex at infinity or a free cell's mark comes first in those). */
+static inline size_t key_of(const lh_index *v, size_t n) { return v[0] < 0 ? n : (size_t)v[0]; }
+
+/* Whether row x comes before row y: keys, then (finite cells) the other vertices. */
+static inline int row_less(const lh_index *x, const lh_index *y, int nv, size_t n)
+{
+    const size_t kx = key_of(x, n), ky = key_of(y, n);
+    if (kx != ky) return kx < ky;
+    if (kx == n) return 0;
+    for (int k = 1; k < nv; k++)
+        if (x[k] != y[k]) return x[k] < y[k];
+    return 0;
+}
+
+static inline void copy_row(lh_index *dst, const lh_index *src, int nv)
+{
+    for (int k = 0; k < nv; k++) dst[k] = src[k];
+}
+
+static inline void swap_entries(lh_index *a, lh_index *b, int nv)
+{
+    for (int k = 0; k < nv; k++) {
+        const lh_index x = a[k];
+        a[k] = b[k], b[k] = x;
+    }
+}
+
+static inline void swap_rows(const rows *r, size_t a, size_t b, int nv)
+{
+    swap_entries(r->vert + a * nv, r->vert + b * nv, nv);
+    swap_entries(r->nbr + a * nv, r->nbr + b * nv, nv);
+    swap_entries(r->orig + a, r->orig + b, 1);
+}
+
+static void insertion_sort(const rows *r, size_t lo, size_t hi, int nv)
+{
+    for (size_t i = lo + 1; i < hi; i++) {
+        lh_index v[LH__TDS_MAX_NV], nb[LH__TDS_MAX_NV], o = r->orig[i];
+        copy_row(v, r->vert + i * nv, nv);
+        copy_row(nb, r->nbr + i * nv, nv);
+        size_t j = i;
+        for (; j > lo && row_less(v, r->vert + (j - 1) * nv, nv, r->n); j--) {
+            copy_row(r->vert + j * nv, r->vert + (j - 1) * nv, nv);
+            copy_row(r->nbr + j * nv, r->nbr + (j - 1) * nv, nv);
+            r->orig[j] = r->orig[j - 1];
+        }
+        copy_row(r->vert + j * nv, v, nv);
+        copy_row(r->nbr + j * nv, nb, nv);
+        r->orig[j] = o;
+    }
+}
+
+/* Heapsort of rows lo..hi-1 (Williams 1964): in place and O(k log k) whatever the
+ * input, for the many cells around one vertex of cospherical sites. */
+static void sift_down(const rows *r, size_t lo, size_t i, size_t k, int nv)
+{
+    for (size_t c; (c = 2 * i + 1) < k; i = c) {
+        if (c + 1 < k && row_less(r->vert + (lo + c) * nv, r->vert + (lo + c + 1) * nv, nv, r->n)) c++;
+        if (!row_less(r->vert + (lo + i) * nv, r->vert + (lo + c) * nv, nv, r->n)) return;
+        swap_rows(r, lo + i, lo + c, nv);
+    }
+}
+
+static void heap_sort(const rows *r, size_t lo, size_t hi, int nv)
+{
+    const size_t k = hi - lo;
+    for (size_t i = k / 2; i-- > 0;) sift_down(r, lo, i, k, nv);
+    for (size_t end = k; end-- > 1;) {
+        swap_rows(r, lo, lo + end, nv);
+        sift_down(r, lo, 0, end, nv);
+    }
+}
+
+/* Moves the rows of a cycle that starts at row i, whose digit is not b, into their
+ * buckets' next free places (head), the last into row i. The next place comes from
+ * dig, not from the row in hand, so the rows' cache misses overlap. */
+static inline void follow_cycle(const rows *r, size_t *head, size_t i, size_t b, int nv)
+{
+    lh_index v[LH__TDS_MAX_NV], nb[LH__TDS_MAX_NV], o = r->orig[i];
+    copy_row(v, r->vert + i * nv, nv);
+    copy_row(nb, r->nbr + i * nv, nv);
+    size_t k = r->dig[i];
+    do {
+        const size_t j = head[k]++;
+        const size_t next = r->dig[j];
+        r->dig[j] = (uint16_t)k;
+        swap_entries(r->vert + j * nv, v, nv);
+        swap_entries(r->nbr + j * nv, nb, nv);
+        swap_entries(r->orig + j, &o, 1);
+        k = next;
+    } while (k != b);
+    copy_row(r->vert + i * nv, v, nv);
+    copy_row(r->nbr + i * nv, nb, nv);
+    r->orig[i] = o;
+    r->dig[i] = (uint16_t)b;
+}
+
+/* One digit pass over rows lo..hi-1 (their keys agree above bit r->hi[level]):
+ * counts, then the rows are permuted into their buckets cycle by cycle, each
+ * moving once. Bucket k ends at the returned end[k]; returns the bucket count. */
+static inline size_t flag_pass(const rows *r, size_t lo, size_t hi, int level, int nv, size_t **ends)
+{
+    const int sh = r->lo[level];
+    const size_t nb = (size_t)1 << (r->hi[level] - sh), mask = nb - 1;
+    size_t *head = r->scratch + (size_t)level * 2 * ((size_t)1 << DIGIT_BITS), *end = head + nb;
+    memset(end, 0, nb * sizeof *end);
+    for (size_t i = lo; i < hi; i++) {
+        r->dig[i] = (uint16_t)(key_of(r->vert + i * nv, r->n) >> sh & mask);
+        end[r->dig[i]]++;
+    }
+    for (size_t b = 0, s = lo; b < nb; b++) {
+        head[b] = s;
+        s += end[b];
+        end[b] = s;
+    }
+    for (size_t b = 0; b < nb; b++)
+        for (; head[b] < end[b]; head[b]++)
+            if (r->dig[head[b]] != b) follow_cycle(r, head, head[b], b, nv);
+    *ends = end;
+    return nb;
+}
+
+/* Rows lo..hi-1 sorted: a digit pass per level, then each bucket on the next
+ * digits, depth first. The recursion is a loop over per-level cursors (no
+ * recursive call, so that it inlines with nv constant). */
+static inline void sort_rows(const rows *r, size_t lo, size_t hi, int nv)
+{
+    size_t *end[MAX_LEVELS], nb[MAX_LEVELS], next[MAX_LEVELS], from[MAX_LEVELS];
+    int level = 0;
+    for (;;) {
+        if (hi - lo <= SMALL) {
+            if (hi - lo > 1) insertion_sort(r, lo, hi, nv);
+        } else if (level < r->levels) { /* a pass, then its buckets */
+            nb[level] = flag_pass(r, lo, hi, level, nv, &end[level]);
+            next[level] = 0;
+            from[level] = lo;
+            level++;
+        } else if (key_of(r->vert + lo * nv, r->n) < r->n) { /* one first vertex */
+            heap_sort(r, lo, hi, nv);
+        }
+        while (level > 0 && next[level - 1] == nb[level - 1]) level--;
+        if (level == 0) return;
+        lo = from[level - 1];
+        hi = from[level - 1] = end[level - 1][next[level - 1]++];
+    }
+}
+
+/* Each finite cell's vertex row in canonical order (lh__canonical_ranks), its
+ * neighbour row permuted alike; returns the number of finite cells. */
+static size_t canonical_rows(lh__tds *t, int nv)
+{
+    size_t count = 0;
+    for (lh_index c = 0; c < t->top; c++) {
+        lh_index *v = t->vert + (size_t)c * nv, *nb = t->nbr + (size_t)c * nv;
+        if (v[0] < 0) continue;
+        count++;
+        int rank[LH__TDS_MAX_NV];
+        lh_index cv[LH__TDS_MAX_NV], cn[LH__TDS_MAX_NV];
+        lh__canonical_ranks(v, nv, rank);
+        for (int k = 0; k < nv; k++) cv[rank[k]] = v[k], cn[rank[k]] = nb[k];
+        copy_row(v, cv, nv);
+        copy_row(nb, cn, nv);
+    }
+    return count;
+}
+
+lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count)
+{
+    rows r = {t->vert, t->nbr, orig, n, 0, {0}, {0}, NULL, NULL};
+    int bits = 1;
+    while (bits < 64 && (n >> bits) != 0) bits++; /* keys are 0..n */
+    r.levels = (bits + DIGIT_BITS - 1) / DIGIT_BITS;
+    const int width = (bits + r.levels - 1) / r.levels;
+    for (int i = 0, top = bits; i < r.levels; i++) {
+        r.hi[i] = top;
+        r.lo[i] = top > width ? top - width : 0;
+        top = r.lo[i];
+    }
+    r.scratch = lh__alloc(&t->alloc, (size_t)r.levels * 2 * ((size_t)1 << DIGIT_BITS) * sizeof *r.scratch);
+    r.dig = lh__alloc(&t->alloc, ((size_t)t->top + 1) * sizeof *r.dig);
+    if (!r.scratch || !r.dig) {
+        lh__free(&t->alloc, r.scratch);
+        lh__free(&t->alloc, r.dig);
+        return LH_ERR_NOMEM;
+    }
+    for (lh_index c = 0; c < t->top; c++) orig[c] = c;
+#define SORT(m)                                    \
+    do {                                           \
+        *count = canonical_rows(t, m);             \
+        sort_rows(&r, 0, (size_t)t->top, m);       \
+    } while (0)
+    LH__WITH_CONSTANT_M(t->nv, SORT);
+#undef SORT
+    lh__free(&t->alloc, r.scratch);
+    lh__free(&t->alloc, r.dig);
+    return LH_OK;
+}
