@@ -73,8 +73,10 @@ void lh_tri_free(lh_tri *t)
     lh__free(&a, t);
 }
 
-static lh_status new_handle(int d, size_t n, const double *xyz, const lh_options *opt,
-                            lh_tri **out)
+/* The handle, its duplicate map allocated; its copy of the sites comes after the
+ * build (copy_sites), which reads the caller's array: the two copies, the handle's
+ * and the engine's insertion-order one, never coexist. */
+static lh_status new_handle(int d, size_t n, const lh_options *opt, lh_tri **out)
 {
     lh_allocator a;
     lh__allocator_init(&a, opt ? opt->alloc : NULL);
@@ -86,14 +88,20 @@ static lh_status new_handle(int d, size_t n, const double *xyz, const lh_options
     t->frame.d = t->frame.k = d;
     for (int j = 0; j < d; j++) t->frame.J[j] = j;
     t->n = n;
-    t->xyz = lh__alloc(&a, (n * (size_t)d + 1) * sizeof *t->xyz);
     t->dup = lh__alloc(&a, (n + 1) * sizeof *t->dup);
-    if (!t->xyz || !t->dup) {
+    if (!t->dup) {
         lh_tri_free(t);
         return LH_ERR_NOMEM;
     }
-    if (n) memcpy(t->xyz, xyz, n * (size_t)d * sizeof *t->xyz);
     *out = t;
+    return LH_OK;
+}
+
+static lh_status copy_sites(lh_tri *t, const double *xyz)
+{
+    t->xyz = lh__alloc(&t->alloc, (t->n * (size_t)t->d + 1) * sizeof *t->xyz);
+    if (!t->xyz) return LH_ERR_NOMEM;
+    if (t->n) memcpy(t->xyz, xyz, t->n * (size_t)t->d * sizeof *t->xyz);
     return LH_OK;
 }
 
@@ -105,9 +113,9 @@ lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *
     lh_status st = lh__eng_check_args(d, LH_DELAUNAY_MIN_DIM, LH_DELAUNAY_MAX_DIM, n, xyz, opt);
     if (st != LH_OK) return st;
     lh_tri *t;
-    if ((st = new_handle(d, n, xyz, opt, &t)) != LH_OK) return st;
+    if ((st = new_handle(d, n, opt, &t)) != LH_OK) return st;
     lh__eng e;
-    st = lh__eng_init(&e, &t->alloc, d, n, t->xyz, t->dup, opt);
+    st = lh__eng_init(&e, &t->alloc, d, n, xyz, t->dup, opt);
     int furthest = opt && opt->furthest_site;
     t->pick = pick;
     lh__dt_conflicts(&e, furthest, pick);
@@ -122,6 +130,7 @@ lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *
     }
     t->ndup = e.ndup;
     lh__eng_release(&e);
+    if ((st == LH_OK || st == LH_ERR_DEGENERATE) && copy_sites(t, xyz) != LH_OK) st = LH_ERR_NOMEM;
     if (st == LH_ERR_DEGENERATE && t->affine_hull && affdim >= 1) st = lh__dt_flat(t, opt, affdim);
     if (st != LH_OK) {
         lh_tri_free(t);
