@@ -7,7 +7,7 @@
  *
  * The sort is an in-place most-significant-digit radix sort on a row's first vertex
  * (American flag sort: McIlroy, Bostic & McIlroy, "Engineering radix sort",
- * Computing Systems 6(1), 1993, §2.3), with digits of at most DIGIT_BITS bits so
+ * Computing Systems 6(1), 1993), with digits of at most DIGIT_BITS bits so
  * that a pass's bucket heads stay in the second-level cache; rows with the same
  * first vertex are ordered by the rest of the tuple (insertion sort for small
  * groups, heapsort for the large groups of a degenerate input).

@@ -219,6 +219,10 @@ static inline uint64_t ridge_key(const lh_index *s, int m, int drop, uint64_t su
     return k;
 }
 
+/* The home slot of a ridge key in the ridge table (Fibonacci hashing), before the
+ * mask of lh__ridge_slots. */
+static inline size_t ridge_slot(uint64_t key) { return (size_t)((key * UINT64_C(0x9e3779b97f4a7c15)) >> 40); }
+
 /* Pairs the new cells t->fresh[] across their ridges (see the top). */
 static void link_new_cells(lh__tds *t)
 {
@@ -233,7 +237,7 @@ static void link_new_cells(lh__tds *t)
             for (int i = 0; i < m; i++) sum += mix(s[i]);
         for (int i = 0; i < m; i++) {
             uint64_t key = ridge_key(s, m, i, sum, vbits, exact);
-            for (size_t h = (size_t)((key * UINT64_C(0x9e3779b97f4a7c15)) >> 40) & mask;; h = (h + 1) & mask) {
+            for (size_t h = ridge_slot(key) & mask;; h = (h + 1) & mask) {
                 lh__ridge *r = t->ridge + h;
                 if (r->round != round) { /* free: the first of the pair */
                     r->key = key;
@@ -342,7 +346,7 @@ static inline size_t twin_slot(const lh__tds *t, const lh_index *v, int nv, int 
         const int8_t *e = TWIN_EDGE[k][j];
         *key = (uint64_t)(lh__uindex)(v[e[rev]] + 1) << t->vbits | (uint64_t)(lh__uindex)(v[e[!rev]] + 1);
     }
-    return (size_t)((*key * UINT64_C(0x9e3779b97f4a7c15)) >> 40);
+    return ridge_slot(*key);
 }
 
 static inline int link_twins(lh__tds *t, const int nv)

@@ -130,8 +130,11 @@ lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *
     }
     t->ndup = e.ndup;
     lh__eng_release(&e);
-    if ((st == LH_OK || st == LH_ERR_DEGENERATE) && copy_sites(t, xyz) != LH_OK) st = LH_ERR_NOMEM;
-    if (st == LH_ERR_DEGENERATE && t->affine_hull && affdim >= 1) st = lh__dt_flat(t, opt, affdim);
+    const int flat = st == LH_ERR_DEGENERATE && t->affine_hull && affdim >= 1;
+    if (st == LH_OK || flat) { /* the handle is kept: it needs its sites */
+        lh_status cs = copy_sites(t, xyz);
+        st = cs != LH_OK ? cs : flat ? lh__dt_flat(t, opt, affdim) : LH_OK;
+    }
     if (st != LH_OK) {
         lh_tri_free(t);
         return st;
