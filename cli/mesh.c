@@ -325,6 +325,7 @@ int lh_cli_mesh(int argc, char **argv)
             if (s.bad_triangles)
                 printf("%zu triangles are below the bounds (small input angles%s; --report lists them)\n",
                        s.bad_triangles, s.steiner_limit_reached ? " or the Steiner limit" : "");
+            if (s.segments_unsplit) lh_cli_trimesh_unsplit(stdout, &s);
         }
         if (rc == LH_EXIT_OK) rc = lh_cli_finish_output("mesh");
     }

@@ -51,6 +51,8 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
 
 /* The quality report: counts, angle and area ranges, an angle histogram. */
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle);
+/* The line that says refinement left subsegments unsplit (stats.segments_unsplit). */
+void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s);
 
 /* An SVG picture of m (mesh_svg.c): triangles shaded by their smallest angle, red
  * below min_angle (0: no bound), the subsegments thick, the bad triangles outlined

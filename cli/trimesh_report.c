@@ -6,6 +6,13 @@
 
 static double len(const double *a, const double *b) { return hypot(b[0] - a[0], b[1] - a[1]); }
 
+void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s)
+{
+    fprintf(out, "%zu subsegments could not be split (shorter than 2^-40 of the domain's size, or their "
+                 "split point refused): edges beside them may not be Delaunay, nor triangles meet the bounds\n",
+            s->segments_unsplit);
+}
+
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
 {
     lh_trimesh_stats s;
@@ -39,6 +46,7 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
         fprintf(out, "Input resolved: %zu duplicate vertices merged, %zu zero-length segments dropped, "
                      "%zu overlapping segments shared, %zu holes and %zu regions outside the domain ignored\n",
                 s.duplicates_merged, s.segments_dropped, s.segments_overlapping, s.holes_ignored, s.regions_ignored);
+    if (s.segments_unsplit) lh_cli_trimesh_unsplit(out, &s);
     if (s.steiner_removed) fprintf(out, "Steiner points removed again (Chew's rule): %zu\n", s.steiner_removed);
     if (s.smoothing_moves) fprintf(out, "Smoothing: %zu moves\n", s.smoothing_moves);
     if (s.crossings_split) fprintf(out, "Crossing segments split: %zu\n", s.crossings_split);

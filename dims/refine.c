@@ -18,7 +18,8 @@
  * at equal distances from it (the same shell), is not split; it is reported as bad.
  * A subsegment shorter than 2^-40 of the domain's diameter (or of its largest
  * coordinate, when larger) is never split (a guard against endless splitting by
- * rounding; it is reported the same way), and the Steiner budget (-S) stops everything.
+ * rounding), nor one whose split point was refused: both are counted
+ * (stats.segments_unsplit), and the Steiner budget (-S) stops everything.
  * Decisions that change the mesh are exact (m2_insert.c); the quality measures,
  * split points and centres are floating-point constructions.
  */
@@ -575,6 +576,8 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
     lh_status st = start(&r);
     if (st == LH_OK) st = run(&r);
     o->out->steiner_points = r.steiner;
+    o->out->segments_unsplit = 0;
+    for (size_t s = 0; s < r.stuck_count; s++) o->out->segments_unsplit += r.stuck[s];
     lh__free(&m->al, r.heap);
     lh__free(&m->al, r.segq);
     lh__free(&m->al, r.stuck);

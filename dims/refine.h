@@ -16,7 +16,8 @@ typedef struct lh__refine_opts {
     const lh_index *segments;  /* the input segments (2 each) and the duplicate map:   */
     const lh_index *dup;       /* for the small-angle rule                             */
     const double *cover_area;  /* the old mesh's area bounds (m->cover), or NULL        */
-    lh_trimesh_stats *out;     /* steiner_points, steiner_removed, steiner_limit_reached */
+    lh_trimesh_stats *out;     /* steiner_points, steiner_removed, steiner_limit_reached,
+                                  segments_unsplit */
 } lh__refine_opts;
 
 lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o);

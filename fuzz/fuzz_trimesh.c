@@ -22,14 +22,15 @@
  * convex hull kept and no hole). Never LH_ERR_INTERNAL, LH_ERR_INVALID_ARGUMENT or
  * LH_ERR_NOMEM. On LH_OK, with an empty message:
  *   - lh_check_trimesh passes (boundary_free = 0); with conforming alone (no bound,
- *     crossing split, smoothing move or limit), also with no subsegments (every edge
- *     Delaunay);
+ *     crossing split, smoothing move, limit or unsplit subsegment), also with no
+ *     subsegments (every edge Delaunay);
  *   - indices in range, neighbours symmetric across the same edge, -1 only on
  *     subsegments; the input vertices first and unchanged; a vertex equal to an
  *     earlier one in no triangle, duplicates_merged their count; a subsegment's input
  *     vertices on its parent segment, parent -1 only where the hull is kept;
- *   - no Steiner point but crossings unless refinement was asked; stats.triangles,
- *     steiner_points, crossings_split and steiner_limit_reached consistent with
+ *   - no Steiner point but crossings, and no unsplit subsegment, unless refinement
+ *     was asked; stats.triangles, steiner_points, crossings_split and
+ *     steiner_limit_reached consistent with
  *     max_steiner (which counts refinement's points); the bad list increasing, and
  *     every triangle not on it within the angle and area bounds (measured here);
  *     min_angle at least the bound and max_area at most the global bound unless
@@ -365,7 +366,7 @@ static void check_mesh(const input *in, const lh_trimesh *m)
         st.steiner_points - st.crossings_split > o->max_steiner ||
         /* the budget counts the points refinement inserted, removed again (Chew's rule) or not */
         (st.steiner_limit_reached && st.steiner_points + st.steiner_removed - st.crossings_split != o->max_steiner) ||
-        (!in->refine && (st.steiner_points != st.crossings_split || st.steiner_removed)) ||
+        (!in->refine && (st.steiner_points != st.crossings_split || st.steiner_removed || st.segments_unsplit)) ||
         st.steiner_on_segments > st.steiner_points ||
         (!o->smooth && st.smoothing_moves))
         abort();
@@ -398,9 +399,10 @@ static void check_mesh(const input *in, const lh_trimesh *m)
        chains bent at rounded crossings leaves some subsegments unsplittable), with an
        angle or area bound (splits towards a small angle's apex stop at the minimum
        length, a subsegment there still encroached) or with smoothing (it restores the
-       constrained Delaunay property only) */
-    if (o->conforming && !st.steiner_limit_reached && o->boundary_steiner == 1 && !st.crossings_split &&
-        o->min_angle == 0 && o->max_area <= 0 && !o->region_areas && !st.smoothing_moves &&
+       constrained Delaunay property only), nor with subsegments refinement could not
+       split (README finding 10: unit features at 2^40, the resolution floor) */
+    if (o->conforming && !st.steiner_limit_reached && !st.segments_unsplit && o->boundary_steiner == 1 &&
+        !st.crossings_split && o->min_angle == 0 && o->max_area <= 0 && !o->region_areas && !st.smoothing_moves &&
         lh_check_trimesh(np, xy, nt, tri, 0, NULL, 1, NULL, msg, sizeof msg) != LH_OK)
         abort();
     if ((o->region_attributes != 0) != (lh_trimesh_triangle_attrs(m) != NULL)) abort();

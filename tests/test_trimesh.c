@@ -257,6 +257,9 @@ LH_TEST(conforming_delaunay_has_every_edge_delaunay)
                                               lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0, NULL, 1,
                                               NULL, msg, sizeof msg),
                              LH_OK);
+            lh_trimesh_stats st;
+            lh_trimesh_get_stats(m, &st);
+            LH_EXPECT_EQ_U64(st.segments_unsplit, 0);
             expect_segments_kept(lh_t_, &g, m);
         }
         if (msg[0]) LH_NOTE("%s: %s", triangle_files[i], msg);
@@ -532,6 +535,43 @@ LH_TEST(a_small_angle_far_from_the_origin_ends)
     }
     lh_trimesh_free(m);
     lh_pslg_free(&g);
+}
+
+/* fuzz/README.md finding 10: a ring of unit features on the grid -8..8 at x + 2^40,
+ * with input angles of 5 to 10 degrees at (-8,-7), conforming (-D). The resolution
+ * floor (2^-40 of the largest coordinate: one grid unit) stops the splits towards
+ * the apex, and edges there stay not Delaunay: the count says so. Without it the
+ * mesh claimed to be conforming and was not. */
+LH_TEST(conforming_below_the_floor_is_reported)
+{
+    static const int grid[30][2] = {
+        {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, 0}, {-8, 5}, {4, 7}, {5, -6}, {-8, -7},
+        {-2, -8}, {1, -8}, {-8, -7}, {2, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8},
+        {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}, {-8, -8}};
+    double xy[60];
+    lh_index seg[60];
+    for (int i = 0; i < 30; i++) {
+        for (int j = 0; j < 2; j++) xy[2 * i + j] = grid[i][j] + ldexp(1, 40);
+        seg[2 * i] = i, seg[2 * i + 1] = (i + 1) % 30;
+    }
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = 30, g.xy = xy, g.segment_count = 30, g.segments = seg;
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.conforming = 1;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "conforming at 2^40");
+    if (m) {
+        lh_trimesh_stats st;
+        lh_trimesh_get_stats(m, &st);
+        char msg[256] = "";
+        const lh_status conforming = lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
+                                                      lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0,
+                                                      NULL, 1, NULL, msg, sizeof msg);
+        LH_EXPECT_GT_U64(st.segments_unsplit, 0);
+        if (conforming != LH_OK) LH_NOTE("not conforming, as reported: %s", msg);
+    }
+    lh_trimesh_free(m);
 }
 
 /* fuzz/README.md finding 9: a ring on the grid -8..8 at (x + 2^40) 2^-8, where a
@@ -897,6 +937,7 @@ int main(int argc, char **argv)
         LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
         LH_CASE(crossings_are_split_when_asked), LH_CASE(an_overlap_follows_a_chain_bent_at_a_crossing),
         LH_CASE(a_small_angle_far_from_the_origin_ends), LH_CASE(a_bent_segment_still_meets_the_vertex_on_it),
+        LH_CASE(conforming_below_the_floor_is_reported),
         LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
         LH_CASE(degenerate_input_is_resolved_and_reported),

@@ -830,6 +830,11 @@ typedef struct lh_trimesh_stats {
                                         the end (input angles, -S or -Y stopped them)   */
     double min_angle, max_angle, min_area, max_area;
     int steiner_limit_reached;
+    size_t segments_unsplit;         /* subsegments refinement had to split and could
+                                        not: below the resolution floor (2^-40 of the
+                                        domain's size) or their split point refused.
+                                        Edges beside them may stay not Delaunay
+                                        (conforming) and triangles bad               */
 } lh_trimesh_stats;
 void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out);
 /* The triangles still bad at the end (lh_trimesh_stats.bad_triangles of them). */
