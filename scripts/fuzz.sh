@@ -3,7 +3,11 @@
 # local campaigns. Builds the fuzz targets with clang 14 (libFuzzer, AddressSanitizer +
 # UndefinedBehaviorSanitizer, UB fatal, the library instrumented too) in build-fuzz/,
 # then runs every target for SECONDS (default 30) on a copy of its corpus
-# (fuzz/corpus/<target>/; the checkout is not touched), two at a time. Any finding (a
+# (fuzz/corpus/<target>/; the checkout is not touched), two at a time, from the fixed
+# random seed LH_FUZZ_SEED (default 1): a run explores the same inputs in the same
+# order every time, so CI's verdict on a commit is reproducible (a slower machine only
+# stops earlier in that sequence), and a local run of SECONDS or more covers what CI
+# will run. Campaigns for new findings set another seed. Any finding (a
 # failed assertion, a sanitizer report, a leak, an input slower than 20 s) fails the
 # script, which prints the input and the command that reproduces it. Exit status: 0
 # clean, 1 a finding, 2 a build failure.
@@ -11,6 +15,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 secs="${1:-30}"
+seed="${LH_FUZZ_SEED:-1}"
 targets=(fuzz_delaunay fuzz_read fuzz_hull fuzz_check fuzz_cells fuzz_query fuzz_poly fuzz_trimesh)
 # -max_len per target: a few dozen points (the point targets cap n anyway); files for the readers
 declare -A max_len=([fuzz_delaunay]=400 [fuzz_read]=2048 [fuzz_hull]=300 [fuzz_check]=200
@@ -32,7 +37,7 @@ run_one() { # target: fuzz a copy of its corpus; the log in $work/<target>.log
   local t="$1" name="${1#fuzz_}"
   mkdir -p "$work/$t.corpus" "$work/$t.art"
   cp fuzz/corpus/"$name"/* "$work/$t.corpus/" 2>/dev/null || true
-  build-fuzz/fuzz/"$t" -max_total_time="$secs" -max_len="${max_len[$t]}" -timeout=20 \
+  build-fuzz/fuzz/"$t" -max_total_time="$secs" -seed="$seed" -max_len="${max_len[$t]}" -timeout=20 \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/$t.art/" \
     "$work/$t.corpus" >"$work/$t.log" 2>&1
 }
@@ -41,7 +46,7 @@ report() { # target: one line, or the finding
   local t="$1" rc="$2" runs
   runs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/$t.log" | tail -1)"
   if [ "$rc" -eq 0 ]; then
-    printf 'fuzz: %-14s %s s, %s runs, no finding\n' "$t" "$secs" "${runs:-?}"
+    printf 'fuzz: %-14s %s s, seed %s, %s runs, no finding\n' "$t" "$secs" "$seed" "${runs:-?}"
     return 0
   fi
   echo "fuzz: $t FOUND A PROBLEM (exit $rc); the end of its log:" >&2
@@ -53,6 +58,7 @@ report() { # target: one line, or the finding
     echo "fuzz: the input ($(wc -c < "$a") bytes; its first 128 in hex), kept as build-fuzz/findings/${a##*/}:" >&2
     od -An -tx1 -v "$a" | head -8 >&2
     echo "fuzz: reproduce with  build-fuzz/fuzz/$t build-fuzz/findings/${a##*/}" >&2
+    echo "      (found from seed $seed: LH_FUZZ_SEED=$seed bash scripts/fuzz.sh $secs runs the same search)" >&2
     echo "      (or any compiler: cmake -DLH_BUILD_FUZZ=ON, then the replay driver build/fuzz/$t FILE)" >&2
   done
   return 1

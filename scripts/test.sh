@@ -9,8 +9,9 @@
 #                of its corpus (scripts/fuzz.sh), two at a time
 #   build/       gcc, Release, warnings as errors, benchmarks built and smoke-run;
 #                first valgrind memcheck on a quick subset of its binaries, then the suite
-# The Release run comes last, so the final lines are CTest's own summary. Any failure
-# in any stage makes the exit status 1.
+# The Release run comes last, so the final lines are CTest's own summary; the line
+# before it names the earlier stages that failed, if any. Any failure in any stage
+# makes the exit status 1.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -18,22 +19,24 @@ jobs="$(nproc)"
 
 bash scripts/deps.sh test
 
-status=0
+status=0 failed=""
+fail() { status=1; failed="$failed $1"; } # stage: remember it for the summary
+
 echo "== sanitizer build (clang, ASan+UBSan) =="
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DLH_SANITIZE=ON -DLH_WERROR=ON -DLH_BUILD_TESTS=ON >/dev/null
 cmake --build build-asan -j "$jobs" >/dev/null
 LH_TEST_SCALE=0.2 ASAN_OPTIONS=detect_leaks=1 \
-  ctest --test-dir build-asan -j "$jobs" --output-on-failure || status=1
+  ctest --test-dir build-asan -j "$jobs" --output-on-failure || fail asan
 
 echo "== 64-bit index build (gcc, small) =="
 CC=gcc CXX=g++ cmake -S . -B build-idx64 -DLH_INDEX_64=ON -DCMAKE_BUILD_TYPE=Release \
   -DLH_WERROR=ON -DLH_BUILD_TESTS=ON >/dev/null
 cmake --build build-idx64 -j "$jobs" >/dev/null
-LH_TEST_SCALE=0.1 ctest --test-dir build-idx64 -j "$jobs" -LE oracle --output-on-failure || status=1
+LH_TEST_SCALE=0.1 ctest --test-dir build-idx64 -j "$jobs" -LE oracle --output-on-failure || fail idx64
 
 echo "== fuzzing (clang, libFuzzer + ASan + UBSan, 30 s a target) =="
-bash scripts/fuzz.sh 30 || status=1
+bash scripts/fuzz.sh 30 || fail fuzz
 
 echo "== release build (gcc) =="
 CC=gcc CXX=g++ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DLH_WERROR=ON \
@@ -47,10 +50,10 @@ echo "== valgrind memcheck (quick subset of the release build) =="
 vgdir="$(mktemp -d "${TMPDIR:-/tmp}/lifthull-vg.XXXXXX")"
 t=build/tests lh=build/cli/lifthull
 vg="valgrind -q --error-exitcode=1 --leak-check=full"
-$lh points 200 -d 3 --integer 4 -o "$vgdir/p3.txt" || status=1
-$lh points 200 -d 2 --exact-sphere -o "$vgdir/p2.txt" || status=1
-$lh delaunay "$vgdir/p3.txt" -o "$vgdir/t3.txt" || status=1 # for `check`: the lanes run in any order
-cp tests/data/triangle/A.poly "$vgdir/" || status=1
+$lh points 200 -d 3 --integer 4 -o "$vgdir/p3.txt" || fail valgrind-setup
+$lh points 200 -d 2 --exact-sphere -o "$vgdir/p2.txt" || fail valgrind-setup
+$lh delaunay "$vgdir/p3.txt" -o "$vgdir/t3.txt" || fail valgrind-setup # for `check`: the lanes run in any order
+cp tests/data/triangle/A.poly "$vgdir/" || fail valgrind-setup
 {
   # the slowest first (each 15-35 s under valgrind), so that the two lanes end together
   echo "$vg $t/test_hull hull_is_exactly_convex_and_closed general_position_hull_equals_delaunay_hull unit_cube_and_bad_input"
@@ -74,8 +77,13 @@ if xargs -d '\n' -P "$jobs" -I{} bash -c 'log="$(mktemp)"; if {} >"$log" 2>&1; t
      < "$vgdir/commands"; then
   echo "valgrind: $(wc -l < "$vgdir/commands") runs clean"
 else
-  status=1
+  fail valgrind
 fi
 rm -rf "$vgdir"
+if [ -n "$failed" ]; then
+  echo "== stages before the release suite: FAILED:$failed (their output is above) ==" >&2
+else
+  echo "== stages before the release suite: asan, idx64, fuzz, valgrind passed =="
+fi
 ctest --test-dir build -j "$jobs" --output-on-failure || status=1
 exit "$status"
