@@ -34,6 +34,14 @@
 
 #define LH__ENGINE_MAX_DIM LH_ORIENT_MAX_DIM
 
+/* A hot helper inlined whatever the compiler's size heuristics say (the runtime-
+ * dimension predicates of insert_generic.c, whose switches on d look large). */
+#if defined(__GNUC__) || defined(__clang__)
+#define LH__ALWAYS_INLINE __attribute__((always_inline)) inline
+#else
+#define LH__ALWAYS_INLINE inline
+#endif
+
 /* Whether the finite cell with vertices v (positively oriented) conflicts with site q. */
 typedef int (*lh__finite_conflict_fn)(void *user, const lh_index *v, lh_index q);
 
@@ -66,19 +74,21 @@ typedef struct lh__eng {
     lh__insert_fn insert; /* NULL: lh__eng_insert_generic; dims/ has fixed-d ones
                              whose conflict test is built in (the caller's
                              choice must match finite_conflict) */
-    int conflict_sign;    /* dims/: the lifted sign that means conflict: -1 for
-                             Delaunay (inside), +1 furthest-site (outside) */
+    int conflict_sign;    /* the lifted sign that means conflict: -1 for Delaunay
+                             (inside), +1 furthest-site (outside), tested inline by
+                             dims/ and insert_generic.c; 0: finite_conflict decides */
     uint64_t filtered;    /* predicate calls settled by inline filters, not yet
                              added to pred's counters */
     int hashed_ridges;    /* tests: link new cells as large n does where packed keys
-                             fit (insert_impl.h: hashed keys; turning, not twins,
-                             in 2D and 3D), to exercise those paths at small n */
+                             fit (insert_impl.h: hashed keys; turning, not twins
+                             or the 2D tour, in 2D and 3D), to exercise those
+                             paths at small n */
     int inside_conflicts; /* 1: the cell containing q always conflicts (Delaunay);
                              0: a site inside the current hull is not inserted */
     double lo[LH__ENGINE_MAX_DIM];   /* per coordinate, the sites' minimum and     */
     double span[LH__ENGINE_MAX_DIM]; /* fl(max - min): Morton keys (order.c), the
                                        static filters' bounds (dims/)            */
-    double static_eb[2];  /* dims/: those bounds for orient, insphere (per call) */
+    double static_eb[2];  /* those bounds for orient, insphere (per insertion call) */
     void (*progress)(void *user, size_t done, size_t total); /* lh_options */
     void *progress_user;
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */

@@ -417,7 +417,7 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
     return LH_OK;
 }
 
-#if defined(LH_T_D) && LH_T_D == 2
+#if !defined(LH_T_D) || LH_T_D == 2
 /*
  * The 2D cavity of a Delaunay insertion (inside_conflicts): inserting a site never
  * removes a vertex, so no vertex lies inside the conflict region, a triangulated
@@ -429,7 +429,10 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
  * other two edges, so the cells are linked without visit stamps or the ridge table.
  * A disk of m triangles has m + 2 boundary edges: the dead cells are reused in
  * place and two more are taken. Same cavity as cavity_insert (the same conflict
- * test on the same cells), so the same triangulation.
+ * test on the same cells), so the same triangulation. The runtime-dimension build
+ * takes it too when d = 2 (a choice made per insertion on t->nv, like the twins'),
+ * except under hashed_ridges, which test_ridges sets to check cavity_insert's
+ * 2D linking against it.
  */
 
 /* Cell N := (q, a, b) in this cyclic order with neighbours (o, next, prev) opposite
@@ -503,7 +506,9 @@ static lh_status cavity_insert_2(lh__eng *e, lh_index start)
     }
     return LH_OK;
 }
-#define CAVITY_INSERT(e, c) ((e)->inside_conflicts ? cavity_insert_2(e, c) : cavity_insert(e, c))
+#define CAVITY_INSERT(e, c)                                           \
+    (NV == 3 && (e)->inside_conflicts && !(e)->hashed_ridges ? cavity_insert_2(e, c) \
+                                                             : cavity_insert(e, c))
 #else
 #define CAVITY_INSERT(e, c) cavity_insert(e, c)
 #endif
@@ -512,6 +517,8 @@ lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list)
 {
     lh_status st = LH_OK;
+    const lh__tds *t = &e->tds; /* NV reads t->nv in the runtime-dimension build */
+    (void)t;
     LH_T_PREPARE(e);
     for (size_t i = 0; i < count && st == LH_OK; i++) {
         e->q = list ? list[i] : (lh_index)(first + i);
