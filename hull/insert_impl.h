@@ -118,7 +118,9 @@ static lh_index locate(lh__eng *e)
             c = t->nbr[(size_t)c * NV];
             continue;
         }
-        int s = (int)(lh__rng_next(&e->rng) % (uint64_t)NV), moved = 0;
+        /* the first facet tried: the high half of a random word times NV, over 2^32
+           (a multiply, not a division by the runtime NV of the generic build) */
+        int s = (int)((lh__rng_next(&e->rng) >> 32) * (uint64_t)NV >> 32), moved = 0;
         for (int i = 0; i < NV && !moved; i++) {
             int k = s + i < NV ? s + i : s + i - NV;
             lh_index n = t->nbr[(size_t)c * NV + k];
