@@ -2869,7 +2869,7 @@ static inline int lh__insphere_filter_8(const double *const *p, int *sign, doubl
     return 0;
 }
 
-/* Static filters for the fixed-dimension engines (dims/): one bound per
+/* Static filters for the engine's insertion loop (hull/insert_preds.h): one bound per
  * computation, from the column spans of its sites (see the generator). */
 
 #define LH__ORIENT_C_2 0x1.0000000001005p-50 /* the bound constant of orient_2 */
@@ -3270,6 +3270,57 @@ static inline double lh__static_bound(int lifted, int d, const double *span)
     }
     if (lifted && !(lift >= lo * lo && lift <= hi * hi)) return INFINITY;
     return lifted ? b * lift : b;
+}
+
+/* The dynamic filter of orient_d (lifted 0) or insphere_d (lifted 1) for d = 1..8
+ * given as a value, as above. */
+static inline int lh__filter_d(int lifted, int d, const double *const *p, int *sign,
+                               double *det, double *err)
+{
+    if (lifted) {
+        switch (d) {
+        case 1: return lh__insphere_filter_1(p, sign, det, err);
+        case 2: return lh__insphere_filter_2(p, sign, det, err);
+        case 3: return lh__insphere_filter_3(p, sign, det, err);
+        case 4: return lh__insphere_filter_4(p, sign, det, err);
+        case 5: return lh__insphere_filter_5(p, sign, det, err);
+        case 6: return lh__insphere_filter_6(p, sign, det, err);
+        case 7: return lh__insphere_filter_7(p, sign, det, err);
+        default: return lh__insphere_filter_8(p, sign, det, err);
+        }
+    }
+    switch (d) {
+    case 1: return lh__orient_filter_1(p, sign, det, err);
+    case 2: return lh__orient_filter_2(p, sign, det, err);
+    case 3: return lh__orient_filter_3(p, sign, det, err);
+    case 4: return lh__orient_filter_4(p, sign, det, err);
+    case 5: return lh__orient_filter_5(p, sign, det, err);
+    case 6: return lh__orient_filter_6(p, sign, det, err);
+    case 7: return lh__orient_filter_7(p, sign, det, err);
+    default: return lh__orient_filter_8(p, sign, det, err);
+    }
+}
+
+/* The static filter of orient_d or insphere_d for d given as a value: its sign,
+ * or 0 when it cannot decide or d (outside 2..5) has none. */
+static inline int lh__static_d(int lifted, int d, const double *const *p, double eb)
+{
+    if (lifted) {
+        switch (d) {
+        case 2: return lh__insphere_static_2(p, eb);
+        case 3: return lh__insphere_static_3(p, eb);
+        case 4: return lh__insphere_static_4(p, eb);
+        case 5: return lh__insphere_static_5(p, eb);
+        default: return 0;
+        }
+    }
+    switch (d) {
+    case 2: return lh__orient_static_2(p, eb);
+    case 3: return lh__orient_static_3(p, eb);
+    case 4: return lh__orient_static_4(p, eb);
+    case 5: return lh__orient_static_5(p, eb);
+    default: return 0;
+    }
 }
 
 #endif

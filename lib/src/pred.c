@@ -62,34 +62,6 @@ void lh_pred_counters_reset(lh_pred *ctx)
     if (ctx) memset(&ctx->count, 0, sizeof ctx->count);
 }
 
-/* Direct calls (not a table of pointers) so that each generated filter is inlined. */
-static inline int run_filter(int dim, int lifted, const double *const *p, int *s,
-                             double *det, double *err)
-{
-    if (!lifted) {
-        switch (dim) {
-        case 1: return lh__orient_filter_1(p, s, det, err);
-        case 2: return lh__orient_filter_2(p, s, det, err);
-        case 3: return lh__orient_filter_3(p, s, det, err);
-        case 4: return lh__orient_filter_4(p, s, det, err);
-        case 5: return lh__orient_filter_5(p, s, det, err);
-        case 6: return lh__orient_filter_6(p, s, det, err);
-        case 7: return lh__orient_filter_7(p, s, det, err);
-        default: return lh__orient_filter_8(p, s, det, err);
-        }
-    }
-    switch (dim) {
-    case 1: return lh__insphere_filter_1(p, s, det, err);
-    case 2: return lh__insphere_filter_2(p, s, det, err);
-    case 3: return lh__insphere_filter_3(p, s, det, err);
-    case 4: return lh__insphere_filter_4(p, s, det, err);
-    case 5: return lh__insphere_filter_5(p, s, det, err);
-    case 6: return lh__insphere_filter_6(p, s, det, err);
-    case 7: return lh__insphere_filter_7(p, s, det, err);
-    default: return lh__insphere_filter_8(p, s, det, err);
-    }
-}
-
 /* The stages after a filter that could not decide (det, err its value and bound):
  * granularity rule, residues (exact zeros), exact stage; counts the stage when
  * `count` is set. */
@@ -112,7 +84,7 @@ static inline int evaluate(lh_pred *ctx, int dim, int lifted, const double *cons
 {
     int s;
     double det = 0, err = -1;
-    if (!run_filter(dim, lifted, pts, &s, &det, &err))
+    if (!lh__filter_d(lifted, dim, pts, &s, &det, &err))
         return after_filter(ctx, dim, lifted, pts, det, err, count);
     if (count) ctx->count.filter_exits++;
     if (count && !s) ctx->count.zero_results++;
