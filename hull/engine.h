@@ -12,14 +12,15 @@
  *   - an infinite cell conflicts when q is strictly beyond its facet (orient_d > 0);
  *     when q lies on the facet's hyperplane it conflicts exactly when the finite
  *     cell across the facet does (CGAL's rule), so no flat cell ever appears;
- *   - a finite cell conflicts when finite_conflict says so.
- * With finite_conflict = NULL no finite cell conflicts: a placing triangulation,
- * whose infinite cells are the convex hull (qconvex's job); sites inside the current
- * hull are not inserted. lift/ passes the lifted test (insphere < 0) and gets the
- * Delaunay triangulation, the lower hull of the lifted sites (inside_conflicts: the
- * simplex containing q is always in conflict); or the reversed test (insphere > 0,
- * inside_conflicts = 0) and gets the furthest-site Delaunay triangulation, the upper
- * hull, whose vertices are the convex hull's.
+ *   - a finite cell conflicts when the lifted test says so (conflict_sign set: the
+ *     insertion loops evaluate it inline), else when finite_conflict does.
+ * With neither, no finite cell conflicts: a placing triangulation, whose infinite
+ * cells are the convex hull (qconvex's job); sites inside the current hull are not
+ * inserted. lift/ sets conflict_sign -1 (insphere < 0) and gets the Delaunay
+ * triangulation, the lower hull of the lifted sites (inside_conflicts: the simplex
+ * containing q is always in conflict); or +1 (insphere > 0, inside_conflicts = 0)
+ * and gets the furthest-site Delaunay triangulation, the upper hull, whose vertices
+ * are the convex hull's; lift/flat.c passes its own test in the k-flat.
  *
  * Steps: sites ordered (order.c: Morton radix sort, exact duplicates merged, BRIO
  * rounds), an initial simplex of d+1 affinely independent sites (exact), then for
@@ -34,8 +35,8 @@
 
 #define LH__ENGINE_MAX_DIM LH_ORIENT_MAX_DIM
 
-/* A hot helper inlined whatever the compiler's size heuristics say (the runtime-
- * dimension predicates of insert_generic.c, whose switches on d look large). */
+/* A hot helper inlined whatever the compiler's size heuristics say (the insertion
+ * loop's predicates, insert_preds.h, whose switches on a run-time d look large). */
 #if defined(__GNUC__) || defined(__clang__)
 #define LH__ALWAYS_INLINE __attribute__((always_inline)) inline
 #else
@@ -71,12 +72,11 @@ typedef struct lh__eng {
     uint64_t rng;
     lh__finite_conflict_fn finite_conflict;
     void *user;
-    lh__insert_fn insert; /* NULL: lh__eng_insert_generic; dims/ has fixed-d ones
-                             whose conflict test is built in (the caller's
-                             choice must match finite_conflict) */
+    lh__insert_fn insert; /* NULL: lh__eng_insert_generic; dims/ has fixed-d ones,
+                             which test finite cells by conflict_sign only */
     int conflict_sign;    /* the lifted sign that means conflict: -1 for Delaunay
-                             (inside), +1 furthest-site (outside), tested inline by
-                             dims/ and insert_generic.c; 0: finite_conflict decides */
+                             (inside), +1 furthest-site (outside); 0: finite_conflict
+                             decides (NULL: no finite cell conflicts) */
     uint64_t filtered;    /* predicate calls settled by inline filters, not yet
                              added to pred's counters */
     int hashed_ridges;    /* tests: link new cells as large n does where packed keys
@@ -87,7 +87,7 @@ typedef struct lh__eng {
                              0: a site inside the current hull is not inserted */
     double lo[LH__ENGINE_MAX_DIM];   /* per coordinate, the sites' minimum and     */
     double span[LH__ENGINE_MAX_DIM]; /* fl(max - min): Morton keys (order.c), the
-                                       static filters' bounds (dims/)            */
+                                       static filters' bounds (insert_preds.h)   */
     double static_eb[2];  /* those bounds for orient, insphere (per insertion call) */
     void (*progress)(void *user, size_t done, size_t total); /* lh_options */
     void *progress_user;

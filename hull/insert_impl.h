@@ -8,9 +8,10 @@
  *   LH_T_NAME   the entry function's name (external linkage);
  *   LH_T_D      the dimension, a constant (optional: e->d when undefined);
  *   LH_T_FINITE_CONFLICT(e, v, q)  whether the finite cell with vertices v conflicts
- *               with vertex q (optional: the engine's finite_conflict callback);
- *   LH_T_ORIENT(e, pts)  orient_d of pts (optional: lh__orient_fast);
- *   LH_T_PREPARE(e)  run once per call before inserting (optional: nothing).
+ *               with vertex q (engine.h: the rule);
+ *   LH_T_ORIENT(e, pts)  orient_d of pts;
+ *   LH_T_PREPARE(e)  run once per call before inserting.
+ * Both builds take the last three from insert_preds.h.
  *
  * Location: a remembering stochastic visibility walk (Devillers, Pion & Teillaud,
  * "Walking in a triangulation", IJFCS 13(2), 2002) from the last new cell. It stops
@@ -47,14 +48,8 @@
 #else
 #define NV (t->nv) /* every function below has the store t in scope */
 #endif
-#ifndef LH_T_FINITE_CONFLICT
-#define LH_T_FINITE_CONFLICT(e, v, q) ((e)->finite_conflict && (e)->finite_conflict((e)->user, v, q))
-#endif
-#ifndef LH_T_ORIENT
-#define LH_T_ORIENT(e, pts) lh__orient_fast((e)->pred, (e)->d, pts)
-#endif
-#ifndef LH_T_PREPARE
-#define LH_T_PREPARE(e) ((void)(e))
+#if !defined(LH_T_NAME) || !defined(LH_T_FINITE_CONFLICT) || !defined(LH_T_ORIENT) || !defined(LH_T_PREPARE)
+#error "insert_impl.h: define LH_T_NAME, LH_T_FINITE_CONFLICT, LH_T_ORIENT and LH_T_PREPARE first"
 #endif
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -81,7 +76,7 @@ static inline int conflict(lh__eng *e, lh_index c)
     e->pts[0] = lh__eng_site(e, e->q);
     for (int k = 1; k < NV; k++) e->pts[k] = lh__eng_site(e, v[k]);
     int o = LH_T_ORIENT(e, e->pts);
-    if (o || !e->finite_conflict) return o > 0;
+    if (o || !(e->conflict_sign || e->finite_conflict)) return o > 0; /* placing: none */
     lh_index f = t->nbr[(size_t)c * NV];
     return LH_T_FINITE_CONFLICT(e, t->vert + (size_t)f * NV, e->q);
 }

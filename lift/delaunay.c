@@ -17,31 +17,12 @@ void lh_options_default(lh_options *opt)
     opt->seed = LH__DEFAULT_SEED;
 }
 
-/* Perturbed insphere of finite cell v (positively oriented) and site q. */
-static int lifted_sign(lh__eng *e, const lh_index *v, lh_index q)
-{
-    for (int k = 0; k < e->nv; k++) e->pts[k] = lh__eng_site(e, v[k]);
-    e->pts[e->nv] = lh__eng_site(e, q);
-    return lh__insphere_sos_fast(e->pred, e->d, e->pts);
-}
-
-/* The lifted visibility of finite cell v from site q: q strictly inside. */
-static int lifted_conflict(void *user, const lh_index *v, lh_index q)
-{
-    return lifted_sign(user, v, q) < 0;
-}
-
-/* The furthest-site test (the upper hull): q strictly outside the circumsphere. */
-static int furthest_conflict(void *user, const lh_index *v, lh_index q)
-{
-    return lifted_sign(user, v, q) > 0;
-}
-
+/* The lifted visibility of a finite cell from q, tested inline by the insertion
+ * loops (insert_preds.h): q strictly inside the circumsphere (Delaunay), or strictly
+ * outside (furthest-site: the upper hull). */
 void lh__dt_conflicts(lh__eng *e, int furthest, lh__insert_pick pick)
 {
-    e->finite_conflict = furthest ? furthest_conflict : lifted_conflict;
     e->inside_conflicts = !furthest;
-    e->user = e;
     e->conflict_sign = furthest ? 1 : -1;
     e->insert = pick ? pick(e->d) : NULL;
 }

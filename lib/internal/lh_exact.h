@@ -30,10 +30,9 @@ void lh__detsum_free(lh__detsum *s);
 /* Exponent of the lowest set bit of x (finite, nonzero). */
 int lh__dbl_low_exp(double x);
 
-/* lh_insphere_sos and lh_orient without argument checks, for the engine's inner
- * loops (d within range, ctx and pts valid; counted as public calls). */
+/* lh_insphere_sos without argument checks, for the engine's inner loops (d within
+ * range, ctx and pts valid; counted as a public call). */
 int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts);
-int lh__orient_fast(lh_pred *ctx, int k, const double *const *pts);
 /* The same, for a caller whose lh_filter.gen.h filter returned 0 with det and err:
  * the stages after the filter, without running it again. */
 int lh__insphere_sos_unfiltered(lh_pred *ctx, int d, const double *const *pts, double det,

@@ -117,12 +117,6 @@ int lh__insphere_sos_fast(lh_pred *ctx, int d, const double *const *pts)
     return s ? s : lh__sos_sign(ctx, pts, d, 1);
 }
 
-int lh__orient_fast(lh_pred *ctx, int k, const double *const *pts)
-{
-    ctx->count.calls++;
-    return evaluate(ctx, k, 0, pts, 1);
-}
-
 int lh__insphere_sos_unfiltered(lh_pred *ctx, int d, const double *const *pts, double det,
                                 double err)
 {
