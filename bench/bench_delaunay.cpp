@@ -13,7 +13,8 @@
 //       (one line), and for lifthull also the predicate counters of the build
 //       (lh_pred_counters): pred_calls= pred_filter= pred_grid= pred_exact= pred_zero=
 //       pred_sos_general=.
-//       TOOL: lifthull | lifthull_generic | cgal_dd | cgal_2 | cgal_3 | qhull | tetgen | none
+//       TOOL: lifthull | lifthull_generic | lifthull_t2 (lh_options.threads = 2) | cgal_dd |
+//             cgal_2 | cgal_3 | qhull | tetgen | none
 //       ("none" only generates the sites: the memory of the input alone). With --dist
 //       sphere, Qhull runs with 'Qz' added (it refuses cospherical input without it).
 //       The timer starts when the sites are in the tool's input form and stops when the
@@ -169,10 +170,11 @@ struct Stopwatch {
 
 // ---- the tools ----------------------------------------------------------------------
 
-Timing run_lifthull(int d, size_t n, std::vector<double> &xyz, bool generic) {
+Timing run_lifthull(int d, size_t n, std::vector<double> &xyz, bool generic, int threads = 1) {
     lh_options opt;
     lh_options_default(&opt);
     opt.generic_engine = generic; // the runtime-d engine (same output, for comparison)
+    opt.threads = threads;        // lifthull_t2: two threads (same output)
     lh_tri *tri = nullptr;
     Timing t;
     Stopwatch sw;
@@ -314,7 +316,7 @@ Timing run_tetgen(size_t n, std::vector<double> &xyz) {
 }
 #endif
 
-const char *const kAllTools[] = {"lifthull", "lifthull_generic", "cgal_dd", "qhull", "cgal_2", "cgal_3", "tetgen"};
+const char *const kAllTools[] = {"lifthull", "lifthull_generic", "lifthull_t2", "cgal_dd", "qhull", "cgal_2", "cgal_3", "tetgen"};
 
 bool tool_built(const std::string &tool) {
 #ifndef LH_BENCH_HAVE_QHULL
@@ -328,7 +330,7 @@ bool tool_built(const std::string &tool) {
 }
 
 bool tool_fits(const std::string &tool, int d) {
-    if (tool == "lifthull" || tool == "lifthull_generic")
+    if (tool == "lifthull" || tool == "lifthull_generic" || tool == "lifthull_t2")
         return d >= LH_DELAUNAY_MIN_DIM && d <= LH_DELAUNAY_MAX_DIM;
     if (tool == "cgal_dd") return d >= 2 && d <= 6;
     if (tool == "cgal_2") return d == 2;
@@ -393,6 +395,7 @@ int cmd_run(int argc, char **argv) {
     Timing t;
     if (tool == "lifthull") t = run_lifthull(d, n, xyz, false);
     else if (tool == "lifthull_generic") t = run_lifthull(d, n, xyz, true);
+    else if (tool == "lifthull_t2") t = run_lifthull(d, n, xyz, false, 2);
     else if (tool == "cgal_dd") t = run_cgal_dd(d, n, xyz);
     else if (tool == "cgal_2") t = run_cgal_2(n, xyz);
     else if (tool == "cgal_3") t = run_cgal_3(n, xyz);
@@ -585,7 +588,8 @@ void suite_usage() {
                  "  sizes: (2,10^6) (3,10^6) (4,10^5) (5,2*10^4); --quick divides N by 20 and\n"
                  "  runs 2 rounds (--scale K divides by K); R interleaved rounds (default 3;\n"
                  "  the criterion needs >= 3)\n"
-                 "  tools: lifthull cgal_dd qhull cgal_2 cgal_3 tetgen (none: input only,\n"
+                 "  tools: lifthull lifthull_generic lifthull_t2 cgal_dd qhull cgal_2 cgal_3\n"
+                 "  tetgen (none: input only,\n"
                  "  always run); --timeout: per child process (default 1800 s, quick 120 s)\n");
 }
 
@@ -809,6 +813,53 @@ int cmd_suite(int argc, char **argv) {
                     bar(has(ci, "cgal_dd") && has(ci, "lifthull_generic"), rg >= 2.0).c_str());
     }
 
+    // The speed issue's bars, for lifthull on two threads (lifthull_t2), the machine's
+    // cores: wall time, as every other tool's.
+    bool any_t2 = false;
+    for (size_t ci = 0; ci < configs.size(); ++ci) any_t2 |= has(ci, "lifthull_t2");
+    if (any_t2) {
+        std::printf("\n### Two threads: lifthull_t2 (lh_options.threads = 2) against every tool, median "
+                    "wall seconds (ratio tool / lifthull_t2), and the speed issue's bars\n\n");
+        std::printf("| D | N | lifthull 1 thread | lifthull 2 threads | its CPU s | CGAL dD | Qhull Qt | "
+                    "CGAL DT2/DT3 | TetGen | speed issue's bars |\n");
+        std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+        for (size_t ci = 0; ci < configs.size(); ++ci) {
+            const Config &c = configs[ci];
+            if (!has(ci, "lifthull_t2")) continue;
+            double t2 = med_wall(ci, "lifthull_t2");
+            std::vector<double> cpu;
+            for (auto &x : results[ci]["lifthull_t2"])
+                if (x.ok) cpu.push_back(x.cpu);
+            auto cell = [&](const std::string &t) -> std::string {
+                if (!has(ci, t)) return "—";
+                double v = med_wall(ci, t);
+                return std::isnan(v) ? "failed" : fmt_s(v) + " (" + fmt_x(v / t2) + ")";
+            };
+            // 2D: 2.5x CGAL DT2; 3D: 2.5x DT3 and 4x TetGen; 4D, 5D: 5x CGAL dD, 10x Qhull.
+            std::string bars;
+            auto add = [&](const char *name, const std::string &t, double want) {
+                if (!has(ci, t)) return;
+                double r = med_wall(ci, t) / t2;
+                bool pass = r >= want;
+                (pass ? bar_pass : bar_fail)++;
+                char b[96];
+                std::snprintf(b, sizeof b, "%s%s >= %.1fx: %s", bars.empty() ? "" : "; ", name, want,
+                              pass ? "PASS" : "**FAIL**");
+                bars += b;
+            };
+            if (c.d == 2) add("DT2", "cgal_2", 2.5);
+            if (c.d == 3) add("DT3", "cgal_3", 2.5), add("TetGen", "tetgen", 4.0);
+            if (c.d >= 4) add("CGAL dD", "cgal_dd", 5.0), add("Qhull", "qhull", 10.0);
+            std::printf("| %d | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", c.d, fmt_n(c.n).c_str(),
+                        cell("lifthull").c_str(), std::isnan(t2) ? "failed" : fmt_s(t2).c_str(),
+                        fmt_s(median(cpu)).c_str(), cell("cgal_dd").c_str(), cell("qhull").c_str(),
+                        (c.d == 2 ? cell("cgal_2") : c.d == 3 ? cell("cgal_3") : std::string("—")).c_str(),
+                        cell("tetgen").c_str(), bars.empty() ? "—" : bars.c_str());
+        }
+        std::printf("\n(The lifthull 1 thread column's ratio is its time over lifthull_t2's: the "
+                    "speed-up of the second thread.)\n");
+    }
+
     std::printf("\n### Peak memory: median MiB of the process's maximum RSS (ratio tool / lifthull)\n\n");
     std::printf("| D | N | input only | lifthull | CGAL dD | Qhull Qt | CGAL DT2/DT3 | TetGen | "
                 "below CGAL dD | below Qhull | speed issue: <= 0.7x every CGAL |\n");
@@ -840,7 +891,8 @@ int cmd_suite(int argc, char **argv) {
     std::printf("\nBars (engine issue): lifthull >= 2x faster than CGAL dD and >= 3x faster than "
                 "Qhull Qt at every size, peak memory below both; and the generic engine alone "
                 "(lh_options.generic_engine: the dimension a runtime value) >= 2x faster than "
-                "CGAL dD. %d passed, %d failed%s.\n",
+                "CGAL dD. With lifthull_t2, also the speed issue's time bars (the table above). "
+                "%d passed, %d failed%s.\n",
                 bar_pass, bar_fail,
                 (o.quick || o.scale != 1) ? " (reduced sizes: not the criterion)" : "");
 

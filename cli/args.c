@@ -26,6 +26,7 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
                       int max_files, int argc, char **argv, const char *help)
 {
     memset(a, 0, sizeof *a);
+    a->threads = 1;
     for (int i = 0; i < argc; i++) {
         const char *s = argv[i];
         if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
@@ -57,11 +58,11 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
             if (a->format == (lh_format)-1) return usage_error(cmd, "--format takes qhull, node or columns, not", f);
             break;
         }
-        case 't': { /* reserved: every command accepts it; one thread for now */
+        case 't': { /* every command accepts it */
             char *end;
             long k = strtol(argv[++i], &end, 10);
-            if (*end || k < 1 || k > 4096) return usage_error(cmd, "--threads takes 1..4096, not", argv[i]);
-            if (k > 1) fprintf(stderr, "lifthull %s: --threads %ld: one thread for now (reserved for the parallel engine)\n", cmd, k);
+            if (*end || k < 0 || k > 4096) return usage_error(cmd, "--threads takes 0..4096, not", argv[i]);
+            a->threads = (int)k;
             break;
         }
         default: {

@@ -17,13 +17,14 @@ typedef struct lh_cli_args {
     const char *method; /* -m NAME                              */
     int values;         /* --values K                           */
     lh_format format;   /* --format qhull|node|columns (auto)   */
+    int threads;        /* --threads N: lh_options.threads (1)   */
     const char *file[3];
     int nfile;
 } lh_cli_args;
 
 /* Parses argv for command `cmd` accepting the options named in `accepted` (letters
  * s u a q f o m, and 'c' for --circles, 'v' for --values; every command takes
- * --threads N, reserved for the parallel engine: one thread for now, and --format
+ * --threads N, the threads of its Delaunay triangulation (0: one per CPU), and --format
  * F to read the input files as Qhull points, .node or columns) and up to max_files
  * operands (at least min_files). `help` is printed on --help or -h. Returns 0; 1 after
  * --help; -1 after printing a usage error. */

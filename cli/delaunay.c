@@ -72,6 +72,7 @@ int lh_cli_delaunay(int argc, char **argv)
     lh_options_default(&opt);
     opt.furthest_site = a.furthest;
     opt.affine_hull = a.affine;
+    opt.threads = a.threads;
     lh_cli_progress prog;
     lh_cli_progress_attach(&prog, "delaunay", a.quiet, &opt);
     lh_tri *t;

@@ -82,8 +82,11 @@ static int method_of(const char *m, lh_interp_method *out)
 static int interpolate(const lh_cli_args *a, lh_interp_method m, lh_points *s, const lh_points *q,
                        const double *v, int k, const char **names)
 {
+    lh_options opt;
+    lh_options_default(&opt);
+    opt.threads = a->threads;
     lh_tri *t;
-    lh_status st = lh_delaunay(s->d, s->n, s->xyz, NULL, &t);
+    lh_status st = lh_delaunay(s->d, s->n, s->xyz, &opt, &t);
     if (st != LH_OK) {
         lh_cli_report_failure(names[0], s->d, s->n, s->xyz, st);
         return LH_EXIT_FAIL;

@@ -72,10 +72,13 @@ int lh_cli_locate(int argc, char **argv)
     int status = LH_EXIT_FAIL;
     lh_tri *t = NULL;
     lh_status st = LH_OK;
+    lh_options opt;
+    lh_options_default(&opt);
+    opt.threads = a.threads;
     if (q.d != s.d) {
         fprintf(stderr, "%s: the queries have dimension %d, the sites (%s) %d\n", names[1], q.d, names[0], s.d);
         status = LH_EXIT_INPUT;
-    } else if ((st = lh_delaunay(s.d, s.n, s.xyz, NULL, &t)) != LH_OK) {
+    } else if ((st = lh_delaunay(s.d, s.n, s.xyz, &opt, &t)) != LH_OK) {
         lh_cli_report_failure(names[0], s.d, s.n, s.xyz, st);
     } else {
         lh_cli_out out;

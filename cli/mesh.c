@@ -143,9 +143,9 @@ static int parse(mesh_args *a, int argc, char **argv)
         } else if (!strcmp(s, "--smooth")) {
             if (!number(s, v, 0, 1000, 1, &x)) return -1;
             a->opt.smooth = (int)x;
-        } else if (!strcmp(s, "--threads")) { /* every command takes it; one thread for now */
-            if (!number(s, v, 1, 4096, 1, &x)) return -1;
-            if (x > 1) fprintf(stderr, "lifthull mesh: --threads %s: one thread for now (reserved for the parallel engine)\n", v);
+        } else if (!strcmp(s, "--threads")) { /* every command takes it; meshing is sequential */
+            if (!number(s, v, 0, 4096, 1, &x)) return -1;
+            if (x != 1) fprintf(stderr, "lifthull mesh: --threads %s: meshing runs on one thread\n", v);
         } else {
             return usage_error("unknown option", s);
         }

@@ -33,6 +33,7 @@ static int svg(const lh_cli_args *a, const lh_points *pts, const char *name)
 {
     lh_options opt;
     lh_options_default(&opt);
+    opt.threads = a->threads;
     lh_cli_progress prog;
     lh_cli_progress_attach(&prog, "voronoi", a->quiet, &opt);
     lh_tri *t;

@@ -10,14 +10,18 @@ lh_status lh__dims_insert_2(lh__eng *e, size_t first, size_t count, const lh_ind
 lh_status lh__dims_insert_3(lh__eng *e, size_t first, size_t count, const lh_index *list);
 lh_status lh__dims_insert_4(lh__eng *e, size_t first, size_t count, const lh_index *list);
 lh_status lh__dims_insert_5(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status lh__dims_insert_2_par(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status lh__dims_insert_3_par(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status lh__dims_insert_4_par(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status lh__dims_insert_5_par(lh__eng *e, size_t first, size_t count, const lh_index *list);
 
-static lh__insert_fn pick(int d)
+static lh__insert_fn pick(int d, int parallel)
 {
     switch (d) {
-    case 2: return lh__dims_insert_2;
-    case 3: return lh__dims_insert_3;
-    case 4: return lh__dims_insert_4;
-    case 5: return lh__dims_insert_5;
+    case 2: return parallel ? lh__dims_insert_2_par : lh__dims_insert_2;
+    case 3: return parallel ? lh__dims_insert_3_par : lh__dims_insert_3;
+    case 4: return parallel ? lh__dims_insert_4_par : lh__dims_insert_4;
+    case 5: return parallel ? lh__dims_insert_5_par : lh__dims_insert_5;
     default: return NULL;
     }
 }

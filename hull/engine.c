@@ -42,6 +42,7 @@ lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
         }
     for (int j = 0; j < d; j++) e->span[j] = hi[j] - e->lo[j]; /* rounding is monotone:
                                                                  every difference is within */
+    e->threads = opt ? lh__threads(opt->threads) : 1;
     e->progress = opt ? opt->progress : NULL;
     e->progress_user = opt ? opt->progress_user : NULL;
     return lh_pred_create(&e->alloc, &e->pred);
@@ -98,30 +99,43 @@ lh_status lh__eng_insert(lh__eng *e, const lh_index *list, size_t count)
     return (e->insert ? e->insert : lh__eng_insert_generic)(e, 0, count, list);
 }
 
+static void copy_range(void *ctx, size_t lo, size_t hi)
+{
+    lh__eng *e = ctx;
+    const size_t d = (size_t)e->d;
+    for (size_t i = lo; i < hi; i++) {
+        const double *p = lh__eng_input(e, (size_t)e->order[i]);
+        for (size_t j = 0; j < d; j++) e->site_copy[i * d + j] = p[j];
+    }
+}
+
 /* e->site: the distinct sites in insertion order. */
 static lh_status copy_sites(lh__eng *e)
 {
     const size_t d = (size_t)e->d;
     e->site_copy = lh__alloc(&e->alloc, (e->norder * d + 1) * sizeof *e->site_copy);
     if (!e->site_copy) return LH_ERR_NOMEM;
-    for (size_t i = 0; i < e->norder; i++) {
-        const double *p = lh__eng_input(e, (size_t)e->order[i]);
-        for (size_t j = 0; j < d; j++) e->site_copy[i * d + j] = p[j];
-    }
+    lh__par_range(e->threads, e->norder, copy_range, e);
     e->site = e->site_copy;
     return LH_OK;
+}
+
+static void restore_range(void *ctx, size_t lo, size_t hi)
+{
+    lh__eng *e = ctx;
+    const int nv = e->nv;
+    for (size_t c = lo; c < hi; c++) {
+        if (lh__tds_dead(&e->tds, (lh_index)c)) continue;
+        lh_index *v = e->tds.vert + c * nv;
+        for (int k = 0; k < nv; k++)
+            if (v[k] >= 0) v[k] = e->order[v[k]];
+    }
 }
 
 /* Vertex v becomes the caller's index order[v]; the copy of the sites goes. */
 static void restore_indices(lh__eng *e)
 {
-    const int nv = e->nv;
-    for (lh_index c = 0; c < e->tds.top; c++) {
-        if (lh__tds_dead(&e->tds, c)) continue;
-        lh_index *v = e->tds.vert + (size_t)c * nv;
-        for (int k = 0; k < nv; k++)
-            if (v[k] >= 0) v[k] = e->order[v[k]];
-    }
+    lh__par_range(e->threads, (size_t)e->tds.top, restore_range, e);
     lh__free(&e->alloc, e->site_copy);
     e->site = e->site_copy = NULL;
 }
@@ -136,6 +150,11 @@ lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim)
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
     if (!e->hashed_ridges) lh__tds_vertex_bound(&e->tds, e->norder + 1);
     if ((st = start(e)) != LH_OK) return st;
+    if (e->threads > 1 && e->insert_par) {
+        st = lh__eng_insert_parallel(e, (size_t)e->nv);
+        if (st == LH_OK) restore_indices(e);
+        return st;
+    }
     lh__insert_fn insert = e->insert ? e->insert : lh__eng_insert_generic;
     const size_t chunk = e->progress ? (size_t)1 << 16 : e->norder; /* progress reports */
     for (size_t at = (size_t)e->nv; at < e->norder; at += chunk) {

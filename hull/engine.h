@@ -51,6 +51,14 @@ struct lh__eng;
  * first..first+count-1 when list is NULL. */
 typedef lh_status (*lh__insert_fn)(struct lh__eng *e, size_t first, size_t count,
                                    const lh_index *list);
+/* What a parallel worker's insertion returns when it met a cell that another worker
+ * holds (hull/parallel.h): nothing was changed, the site is left for later. Not an
+ * lh_status the API returns. */
+#define LH__RETRY ((lh_status)-1000)
+/* BRIO rounds (order.c); lh__eng.round_end marks them in the insertion order. */
+#define LH__BRIO_ROUNDS 24
+#define LH__MAX_THREADS 64 /* workers of one computation, at most */
+struct lh__par;
 
 typedef struct lh__eng {
     lh_allocator alloc;
@@ -74,6 +82,15 @@ typedef struct lh__eng {
     void *user;
     lh__insert_fn insert; /* NULL: lh__eng_insert_generic; dims/ has fixed-d ones,
                              which test finite cells by conflict_sign only */
+    lh__insert_fn insert_par; /* the same loop for a worker of a parallel phase
+                                 (hull/parallel.c), or NULL: Delaunay only */
+    int threads;          /* workers of the parallel phases (1: none) */
+    struct lh__par *par;  /* a worker's locks and deferred sites (NULL: sequential) */
+    size_t round_end[LH__BRIO_ROUNDS]; /* end of each BRIO round in order[] */
+    size_t par_sites, par_deferred; /* sites given to parallel workers, and those
+                                       they left to the sequential pass */
+    size_t par_scratch;   /* tests: a worker's cavity bound in boundary facets (0:
+                             parallel.c's), small to make workers defer sites */
     int conflict_sign;    /* the lifted sign that means conflict: -1 for Delaunay
                              (inside), +1 furthest-site (outside); 0: finite_conflict
                              decides (NULL: no finite cell conflicts) */
@@ -150,11 +167,29 @@ typedef struct lh__lex {
 int lh__lex_cmp(const void *ctx, lh_index a, lh_index b);
 
 /* A source of fixed-dimension insertion loops (dims/): the one for Delaunay in
- * R^d, or NULL. */
-typedef lh__insert_fn (*lh__insert_pick)(int d);
+ * R^d (its parallel worker when `parallel`), or NULL. */
+typedef lh__insert_fn (*lh__insert_pick)(int d, int parallel);
 
-/* insert_generic.c: the insertion loop with d a runtime value. */
+/* insert_generic.c: the insertion loop with d a runtime value; _par: its parallel
+ * worker (insert_generic_par.c). */
 lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const lh_index *list);
+lh_status lh__eng_insert_generic_par(lh__eng *e, size_t first, size_t count, const lh_index *list);
+/* parallel.c: inserts order positions at..e->norder-1 as lh__eng_build's loop does,
+ * splitting the larger BRIO rounds among e->threads workers (e->insert_par). */
+lh_status lh__eng_insert_parallel(lh__eng *e, size_t at);
+/* parallel.c: the workers lh_options.threads asks for (0: one per online CPU). */
+int lh__threads(int requested);
+/* parallel.c: fn(ctx, w, nw) for w = 0..nw-1 at once, w = 0 on the calling thread,
+ * the others on threads of their own (or here, after, should one not start); a
+ * share is the range [lh__share(count, w, nw), lh__share(count, w + 1, nw)). */
+void lh__par_for(int nw, void (*fn)(void *ctx, int w, int nw), void *ctx);
+static inline size_t lh__share(size_t count, int w, int nw)
+{
+    return count / (size_t)nw * (size_t)w + count % (size_t)nw * (size_t)w / (size_t)nw;
+}
+/* fn(ctx, lo, hi) over the shares of 0..n-1 among at most nw threads (one when n
+ * is small), for loops whose iterations touch disjoint data. */
+void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx);
 
 /* Inserts the vertices list[0..count-1] (distinct, none a vertex yet; coordinates
  * in e->site) into the cells of e->tds, which must hold a triangulation made as

@@ -10,7 +10,10 @@
  *   LH_T_FINITE_CONFLICT(e, v, q)  whether the finite cell with vertices v conflicts
  *               with vertex q (engine.h: the rule);
  *   LH_T_ORIENT(e, pts)  orient_d of pts;
- *   LH_T_PREPARE(e)  run once per call before inserting.
+ *   LH_T_PREPARE(e)  run once per call before inserting;
+ *   LH_T_PARALLEL  (optional) defined: the entry function is a worker of a
+ *               parallel phase (parallel.h: it locks every cell before reading it
+ *               and defers the sites whose cells another worker holds).
  * Both builds take the last three from insert_preds.h.
  *
  * Location: a remembering stochastic visibility walk (Devillers, Pion & Teillaud,
@@ -52,6 +55,15 @@
 #error "insert_impl.h: define LH_T_NAME, LH_T_FINITE_CONFLICT, LH_T_ORIENT and LH_T_PREPARE first"
 #endif
 
+/* HOLD(e, c): whether this computation may read and write cell c; always in a
+ * sequential build, once locked in a parallel worker. */
+#ifdef LH_T_PARALLEL
+#include "parallel.h"
+#define HOLD(e, c) lh__par_lock((e)->par, c)
+#else
+#define HOLD(e, c) 1
+#endif
+
 #if defined(__GNUC__) || defined(__clang__)
 #define LH_PREFETCH(p) __builtin_prefetch(p)
 #else
@@ -67,7 +79,8 @@ static inline int push(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_
     return lh__tds_push_slow(t, arr, cap, len, x);
 }
 
-/* Whether cell c conflicts with e->q (engine.h: the rule for infinite cells). */
+/* Whether cell c (held) conflicts with e->q (engine.h: the rule for infinite
+ * cells); -1 when a cell it needs is another worker's. */
 static inline int conflict(lh__eng *e, lh_index c)
 {
     const lh__tds *t = &e->tds;
@@ -78,6 +91,7 @@ static inline int conflict(lh__eng *e, lh_index c)
     int o = LH_T_ORIENT(e, e->pts);
     if (o || !(e->conflict_sign || e->finite_conflict)) return o > 0; /* placing: none */
     lh_index f = t->nbr[(size_t)c * NV];
+    if (!HOLD(e, f)) return -1;
     return LH_T_FINITE_CONFLICT(e, t->vert + (size_t)f * NV, e->q);
 }
 
@@ -91,15 +105,18 @@ static inline int orient_replaced(lh__eng *e, const lh_index *v, int k)
     return LH_T_ORIENT(e, e->pts);
 }
 
+#ifndef LH_T_PARALLEL
 static lh_index scan_for_conflict(lh__eng *e)
 {
     for (lh_index c = 0; c < e->tds.top; c++)
         if (!lh__tds_dead(&e->tds, c) && conflict(e, c)) return c;
     return -1;
 }
+#endif
 
 /* A cell in conflict with q, or -1 when q is inside the current hull and no finite
- * cell can conflict (placing mode). */
+ * cell can conflict (placing mode), or -2 when a cell on the way is another
+ * worker's. Starts from the hint (held). */
 static lh_index locate(lh__eng *e)
 {
     const lh__tds *t = &e->tds;
@@ -108,9 +125,12 @@ static lh_index locate(lh__eng *e)
     for (size_t step = 0; step < limit; step++) {
         const lh_index *v = t->vert + (size_t)c * NV;
         if (v[0] == LH__INF) {
-            if (prev >= 0 || conflict(e, c)) return c; /* entered across its facet */
+            if (prev >= 0) return c; /* entered across its facet */
+            int x = conflict(e, c);
+            if (x) return x > 0 ? c : -2;
             prev = c;
             c = t->nbr[(size_t)c * NV];
+            if (!HOLD(e, c)) return -2;
             continue;
         }
         /* the first facet tried: the high half of a random word times NV, over 2^32
@@ -120,17 +140,23 @@ static lh_index locate(lh__eng *e)
             int k = s + i < NV ? s + i : s + i - NV;
             lh_index n = t->nbr[(size_t)c * NV + k];
             if (n == prev || orient_replaced(e, v, k) >= 0) continue;
+            if (!HOLD(e, n)) return -2;
             prev = c;
             c = n;
             moved = 1;
         }
         if (!moved) return e->inside_conflicts ? c : -1; /* q in the closed simplex c */
     }
+#ifdef LH_T_PARALLEL
+    return -2; /* the cells are shared: left to the sequential pass */
+#else
     return scan_for_conflict(e); /* not reached in practice */
+#endif
 }
 
 /* The conflict region from `start`: t->cells, and its boundary facets as pairs
- * (cell, k) in t->bound. Returns 0 when memory runs out. */
+ * (cell, k) in t->bound. Returns 1; 0 when memory runs out; -1 when a cell it
+ * reaches is another worker's. */
 static int grow_region(lh__eng *e, lh_index start, uint32_t in, uint32_t out)
 {
     lh__tds *t = &e->tds;
@@ -147,10 +173,13 @@ static int grow_region(lh__eng *e, lh_index start, uint32_t in, uint32_t out)
         }
         for (int k = 0; k < NV; k++) {
             lh_index n = t->nbr[(size_t)c * NV + k];
+            if (!HOLD(e, n)) return -1;
             uint32_t st = t->stamp[n];
             if (st == in) continue;
             if (st != out) {
-                if (conflict(e, n)) {
+                int x = conflict(e, n);
+                if (x < 0) return -1;
+                if (x) {
                     t->stamp[n] = in;
                     LH_PREFETCH(t->nbr + (size_t)n * NV); /* read when n is expanded */
                     if (!push(t, &t->cells, &t->cells_cap, &t->ncells, n)) return 0;
@@ -379,14 +408,16 @@ static inline int link_twins(lh__tds *t, const int nv)
 }
 
 /* Inserts e->q from `start`, a cell in conflict with it. The new cells are
- * t->fresh[0..nbound-1]. On LH_ERR_NOMEM the store is unchanged. */
+ * t->fresh[0..nbound-1]. On LH_ERR_NOMEM and LH__RETRY the store is unchanged
+ * (but for visit marks). */
 static lh_status cavity_insert(lh__eng *e, lh_index start)
 {
     lh__tds *t = &e->tds;
     const lh_index q = e->q;
     lh__tds_next_round(t);
     uint32_t in = 4 * t->round, out = in + 1;
-    if (!grow_region(e, start, in, out)) return LH_ERR_NOMEM;
+    int g = grow_region(e, start, in, out);
+    if (g <= 0) return g ? LH__RETRY : LH_ERR_NOMEM;
     lh_status st = lh__tds_room(t);
     if (st != LH_OK) return st;
     for (size_t b = 0; b < t->nbound; b++) /* the outside cells' neighbour rows */
@@ -449,7 +480,8 @@ static const int8_t NEXT_3[3] = {1, 2, 0}; /* the next position, cyclically: a l
 
 /* The tour from `start` (in conflict with q): dead cells in t->cells, boundary
  * edges in t->bound as (a, b, outside cell, index of the dead cell in its row).
- * Returns LH_OK, LH_ERR_NOMEM, or LH_ERR_INTERNAL should the region not be a tree. */
+ * Returns LH_OK, LH_ERR_NOMEM, LH__RETRY (a cell is another worker's), or
+ * LH_ERR_INTERNAL should the region not be a tree. */
 static lh_status tour_cavity_2(lh__eng *e, lh_index start)
 {
     lh__tds *t = &e->tds;
@@ -468,7 +500,9 @@ static lh_status tour_cavity_2(lh__eng *e, lh_index start)
         t->fresh[depth - 1] = (lh_index)(NEXT_3[k] << 2 | (left - 1));
         lh_index n = t->nbr[(size_t)c * 3 + k];
         LH_PREFETCH(t->nbr + (size_t)n * 3);
-        if (conflict(e, n)) {
+        int cf = HOLD(e, n) ? conflict(e, n) : -1;
+        if (cf < 0) return LH__RETRY;
+        if (cf) {
             if (t->ncells >= (size_t)t->live) return LH_ERR_INTERNAL; /* not a tree */
             int j = row_pos(t, t->nbr + (size_t)n * 3, c);
             if (!push(t, &t->cells, &t->cells_cap, &t->ncells, n) ||
@@ -511,6 +545,35 @@ static lh_status cavity_insert_2(lh__eng *e, lh_index start)
 #endif
 
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list);
+#ifdef LH_T_PARALLEL
+/* A worker: inserts what it can, defers the rest (e->par), holds nothing at the
+ * end. Fails only on an internal error. */
+lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list)
+{
+    lh__par *p = e->par;
+    lh__tds *t = &e->tds;
+    lh_status st = LH_OK;
+    LH_T_PREPARE(e);
+    for (size_t i = 0; i < count && (st == LH_OK || st == LH__RETRY || st == LH_ERR_NOMEM); i++) {
+        e->q = list ? list[i] : (lh_index)(first + i);
+        lh_index c = p->stopped ? -2 : locate(e);
+        st = c >= 0 ? CAVITY_INSERT(e, c) : c == -1 ? LH_OK : LH__RETRY; /* -1: not a vertex */
+        if (st == LH_OK && c >= 0) {
+            e->hint = t->fresh[0];
+            lh__par_keep(p, e->hint);
+        } else if (st != LH_OK) {
+            /* out of cells (not a cavity too large for the scratch): stop trying */
+            if (st == LH_ERR_NOMEM && (size_t)(t->cap - t->live) < 4 * t->nbound + 64) p->stopped = 1;
+            p->deferred[p->ndeferred++] = e->q;
+        }
+        lh__par_release(p, e->hint);
+    }
+    lh__par_release(p, -1);
+    lh__pred_count_filtered(e->pred, e->filtered);
+    e->filtered = 0;
+    return st == LH__RETRY || st == LH_ERR_NOMEM ? LH_OK : st;
+}
+#else
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list)
 {
     lh_status st = LH_OK;
@@ -528,6 +591,8 @@ lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list
     e->filtered = 0;
     return st;
 }
+#endif
 
 #undef CAVITY_INSERT
+#undef HOLD
 #undef NV

@@ -44,30 +44,42 @@ static int morton_bits(int d, size_t n)
  * span too wide for doubles quantises to 0 (keys tie; correctness does not depend
  * on them); a span so small that its reciprocal overflows is scaled by a power of
  * two first (exact). */
-static void morton_keys(const lh__eng *t, uint64_t *key)
-{
-    int d = t->d, bits = morton_bits(d, t->n);
-    double lo[LH__ENGINE_MAX_DIM], scale[LH__ENGINE_MAX_DIM];
+typedef struct morton {
+    const lh__eng *t;
+    uint64_t *key;
+    int bits;
+    double cells, lo[LH__ENGINE_MAX_DIM], scale[LH__ENGINE_MAX_DIM];
     int shift[LH__ENGINE_MAX_DIM]; /* a tiny span is first scaled up by 2^-shift */
-    const double cells = (double)((UINT64_C(1) << bits) - 1);
-    for (int j = 0; j < d; j++) { /* the bounding box from lh__eng_init */
-        lo[j] = t->lo[j];
-        double span = t->span[j];
-        shift[j] = 0;
-        if (span > 0 && span < 0x1p-900) frexp(span, &shift[j]); /* 1/span would overflow */
-        scale[j] = span > 0 && span < 1e308 ? cells / ldexp(span, -shift[j]) : 0;
-    }
-    for (size_t i = 0; i < t->n; i++) {
-        const double *p = t->xyz + i * d;
+} morton;
+
+static void morton_range(void *ctx, size_t lo, size_t hi)
+{
+    const morton *m = ctx;
+    const int d = m->t->d;
+    for (size_t i = lo; i < hi; i++) {
+        const double *p = m->t->xyz + i * d;
         uint64_t cell[LH__ENGINE_MAX_DIM], k = 0;
         for (int j = 0; j < d; j++) {
-            double x = (shift[j] ? ldexp(p[j] - lo[j], -shift[j]) : p[j] - lo[j]) * scale[j];
-            cell[j] = x > 0 ? (x < cells ? (uint64_t)x : (uint64_t)cells) : 0;
+            double x = (m->shift[j] ? ldexp(p[j] - m->lo[j], -m->shift[j]) : p[j] - m->lo[j]) * m->scale[j];
+            cell[j] = x > 0 ? (x < m->cells ? (uint64_t)x : (uint64_t)m->cells) : 0;
         }
-        for (int bit = bits - 1; bit >= 0; bit--)
+        for (int bit = m->bits - 1; bit >= 0; bit--)
             for (int j = 0; j < d; j++) k = (k << 1) | ((cell[j] >> bit) & 1);
-        key[i] = k;
+        m->key[i] = k;
     }
+}
+
+static void morton_keys(const lh__eng *t, uint64_t *key)
+{
+    morton m = {t, key, morton_bits(t->d, t->n), 0, {0}, {0}, {0}};
+    m.cells = (double)((UINT64_C(1) << m.bits) - 1);
+    for (int j = 0; j < t->d; j++) { /* the bounding box from lh__eng_init */
+        m.lo[j] = t->lo[j];
+        double span = t->span[j];
+        if (span > 0 && span < 0x1p-900) frexp(span, &m.shift[j]); /* 1/span would overflow */
+        m.scale[j] = span > 0 && span < 1e308 ? m.cells / ldexp(span, -m.shift[j]) : 0;
+    }
+    lh__par_range(t->threads, t->n, morton_range, &m);
 }
 
 /* LSD radix sort of (key, idx) pairs on the low `bits` bits, in as few passes of
@@ -146,7 +158,7 @@ static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_inde
  * go from the rarest to the commonest, each keeping the Morton order. */
 static void brio_rounds(lh__eng *b, lh_index *tmp, uint8_t *round)
 {
-    enum { ROUNDS = 24 };
+    enum { ROUNDS = LH__BRIO_ROUNDS };
     size_t n = b->norder, start[ROUNDS + 1] = {0};
     for (size_t i = 0; i < n; i++) {
         uint64_t x = lh__rng_next(&b->rng);
@@ -160,6 +172,7 @@ static void brio_rounds(lh__eng *b, lh_index *tmp, uint8_t *round)
     }
     for (int r = 0; r < ROUNDS; r++) start[r + 1] += start[r];
     for (size_t i = 0; i < n; i++) tmp[start[round[i]]++] = b->order[i];
+    for (int r = 0; r < ROUNDS; r++) b->round_end[r] = start[r]; /* now the ends */
     memcpy(b->order, tmp, n * sizeof *tmp);
 }
 

@@ -9,6 +9,8 @@
 #include <string.h>
 
 
+static int ridge_room(lh__tds *t);
+
 static void *grow(const lh_allocator *a, void *old, size_t old_bytes, size_t new_bytes)
 {
     void *p = lh__alloc(a, new_bytes);
@@ -63,6 +65,7 @@ lh_status lh__tds_reserve(lh__tds *t, size_t extra)
 {
     size_t have = (size_t)(t->cap - t->top), freed = (size_t)(t->top - t->live);
     if (have + freed >= extra) return LH_OK;
+    if (t->frozen) return LH_ERR_NOMEM;
     size_t want = (size_t)t->cap + (size_t)t->cap / 2 + 1024; /* x1.5: less overshoot */
     if (want < (size_t)t->top + extra) want = (size_t)t->top + extra;
     size_t most = SIZE_MAX / ((size_t)t->nv * sizeof *t->vert); /* bytes must not overflow */
@@ -131,6 +134,7 @@ void lh__tds_link_all(lh__tds *t, const lh_index *list, int count)
 
 int lh__tds_push_slow(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_index x)
 {
+    if (t->frozen) return 0;
     size_t nc = *cap ? *cap * 2 : 64;
     lh_index *p = grow(&t->alloc, *arr, *cap * sizeof *p, nc * sizeof *p);
     if (!p) return 0;
@@ -140,14 +144,46 @@ int lh__tds_push_slow(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_i
     return 1;
 }
 
+void lh__tds_reset_rounds(lh__tds *t)
+{
+    memset(t->stamp, 0, (size_t)t->cap * sizeof *t->stamp);
+    if (t->ridge) memset(t->ridge, 0, t->ridge_cap * sizeof *t->ridge);
+    t->round = 0;
+}
+
 void lh__tds_next_round(lh__tds *t)
 {
-    if (t->round >= UINT32_MAX / 4 - 1) {
-        memset(t->stamp, 0, (size_t)t->cap * sizeof *t->stamp);
-        if (t->ridge) memset(t->ridge, 0, t->ridge_cap * sizeof *t->ridge);
-        t->round = 0;
-    }
+    if (t->round >= LH__TDS_MAX_ROUND) lh__tds_reset_rounds(t);
     t->round++;
+}
+
+lh_status lh__tds_reserve_top(lh__tds *t, size_t extra)
+{
+    if ((size_t)(t->cap - t->top) >= extra) return LH_OK;
+    size_t want = (size_t)t->cap + (size_t)t->cap / 2 + 1024; /* as lh__tds_reserve */
+    if (want < (size_t)t->top + extra) want = (size_t)t->top + extra;
+    size_t most = SIZE_MAX / ((size_t)t->nv * sizeof *t->vert);
+    if (most > LH_INDEX_MAX) most = LH_INDEX_MAX;
+    if (want > most) want = most;
+    if (want < (size_t)t->top + extra) return LH_ERR_TOO_LARGE;
+    return set_capacity(t, (lh_index)want);
+}
+
+lh_status lh__tds_scratch(lh__tds *t, size_t facets)
+{
+    lh_index **arr[3] = {&t->cells, &t->bound, &t->fresh};
+    size_t *cap[3] = {&t->cells_cap, &t->bound_cap, &t->fresh_cap};
+    for (int i = 0; i < 3; i++) {
+        if (*cap[i] >= 4 * facets) continue;
+        lh_index *p = grow(&t->alloc, *arr[i], 0, 4 * facets * sizeof *p);
+        if (!p) return LH_ERR_NOMEM;
+        *arr[i] = p;
+        *cap[i] = 4 * facets;
+    }
+    t->nbound = facets;
+    int ok = ridge_room(t);
+    t->nbound = 0;
+    return ok ? LH_OK : LH_ERR_NOMEM;
 }
 
 /* Room for the ridges of nbound new cells (lh__ridge_slots) and their
@@ -155,6 +191,7 @@ void lh__tds_next_round(lh__tds *t)
 static int ridge_room(lh__tds *t)
 {
     const size_t m = (size_t)t->nv - 1, nb = t->nbound;
+    if (t->frozen && (t->sorted_cap < nb || t->ridge_cap < lh__ridge_slots(nb * m))) return 0;
     if (t->sorted_cap < nb) {
         size_t cap = 2 * nb;
         lh_index *s = grow(&t->alloc, t->sorted, 0, cap * m * sizeof *s);
@@ -179,6 +216,7 @@ lh_status lh__tds_room(lh__tds *t)
 {
     if (t->nbound >= (size_t)LH__MAX_NEW_CELLS) return LH_ERR_TOO_LARGE;
     if (t->fresh_cap < t->nbound) {
+        if (t->frozen) return LH_ERR_NOMEM;
         lh_index *p = grow(&t->alloc, t->fresh, 0, t->nbound * 2 * sizeof *p);
         if (!p) return LH_ERR_NOMEM;
         t->fresh = p;

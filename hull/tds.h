@@ -78,6 +78,9 @@ typedef struct lh__tds {
     int8_t *spos;            /* and their positions in the cell */
     size_t sorted_cap;       /* new cells the two have room for */
     size_t ncells, nbound; /* conflict cells; boundary facets (pairs cell, index) */
+    int frozen;            /* nothing may be allocated (a worker of a parallel phase,
+                              hull/parallel.c): growing the scratch or the cells
+                              fails, as when memory runs out */
 } lh__tds;
 
 lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, lh_index cap_hint);
@@ -112,8 +115,9 @@ lh_index *lh__tds_finish(lh__tds *t);
 /* cell_sort.c, after lh__tds_finish: the finite cells (vertices below n) in
  * canonical form (canon.c) and lexicographic order at rows 0..*count-1, the other
  * rows after them, in place; orig (t->top entries) receives each row's position
- * before, and neighbour entries still name those positions. */
-lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count);
+ * before, and neighbour entries still name those positions. `threads` share the
+ * work (hull/parallel.c). */
+lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count, int threads);
 static inline void lh__tds_kill(lh__tds *t, lh_index c)
 {
     size_t base = (size_t)c * t->nv;
@@ -135,5 +139,15 @@ void lh__tds_link_all(lh__tds *t, const lh_index *list, int count);
 int lh__tds_push_slow(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_index x);
 void lh__tds_next_round(lh__tds *t);
 lh_status lh__tds_room(lh__tds *t);
+/* The last round before the visit marks start over (lh__tds_reset_rounds: every
+ * stamp and ridge entry cleared, round 0); 4 stamps a round must fit in 32 bits. */
+#define LH__TDS_MAX_ROUND (UINT32_MAX / 4 - 1)
+void lh__tds_reset_rounds(lh__tds *t);
+
+/* For parallel phases (hull/parallel.c): room for `extra` cells above top (not
+ * counting free ones); scratch for insertions of up to `facets` boundary facets,
+ * allocated now (a frozen store cannot grow it). */
+lh_status lh__tds_reserve_top(lh__tds *t, size_t extra);
+lh_status lh__tds_scratch(lh__tds *t, size_t facets);
 
 #endif

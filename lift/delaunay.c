@@ -15,6 +15,7 @@ void lh_options_default(lh_options *opt)
     if (!opt) return;
     memset(opt, 0, sizeof *opt);
     opt->seed = LH__DEFAULT_SEED;
+    opt->threads = 1;
 }
 
 /* The lifted visibility of a finite cell from q, tested inline by the insertion
@@ -24,7 +25,9 @@ void lh__dt_conflicts(lh__eng *e, int furthest, lh__insert_pick pick)
 {
     e->inside_conflicts = !furthest;
     e->conflict_sign = furthest ? 1 : -1;
-    e->insert = pick ? pick(e->d) : NULL;
+    e->insert = pick ? pick(e->d, 0) : NULL;
+    lh__insert_fn par = pick ? pick(e->d, 1) : NULL; /* parallel phases: Delaunay only */
+    e->insert_par = furthest ? NULL : par ? par : lh__eng_insert_generic_par;
 }
 
 /* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,

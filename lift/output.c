@@ -16,6 +16,30 @@
 #endif
 enum { AHEAD = 16 }; /* iterations between a prefetch and the use */
 
+typedef struct remap {
+    const lh_index *orig;
+    lh_index *simplex_of, *nb;
+    size_t top, count, nv;
+} remap;
+
+static void invert_range(void *ctx, size_t lo, size_t hi)
+{
+    const remap *j = ctx;
+    for (size_t r = lo; r < hi; r++) {
+        if (r + AHEAD < hi) PREFETCH(j->simplex_of + j->orig[r + AHEAD]);
+        j->simplex_of[j->orig[r]] = r < j->count ? (lh_index)r : -1;
+    }
+}
+
+static void remap_range(void *ctx, size_t lo, size_t hi)
+{
+    const remap *j = ctx;
+    for (size_t i = lo; i < hi; i++) {
+        if (i + AHEAD * j->nv < hi) PREFETCH(j->simplex_of + j->nb[i + AHEAD * j->nv]);
+        j->nb[i] = j->simplex_of[j->nb[i]];
+    }
+}
+
 /* The simplices are the store's rows 0..count-1 once sorted in place
  * (lh__tds_sort_cells), and its arrays pass to t: no copy of the cells coexists
  * with them. Each neighbour entry, a row's position before the sort, becomes its
@@ -26,20 +50,14 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *orig)
     lh__tds *s = &b->tds;
     const size_t nv = (size_t)b->nv, top = (size_t)s->top;
     size_t count = 0;
-    lh_status st = lh__tds_sort_cells(s, t->n, orig, &count);
+    lh_status st = lh__tds_sort_cells(s, t->n, orig, &count, b->threads);
     lh_index *simplex_of = NULL;
     if (st == LH_OK && !(simplex_of = lh__alloc(&t->alloc, (top + 1) * sizeof *simplex_of)))
         st = LH_ERR_NOMEM;
     if (st != LH_OK) return st;
-    for (size_t r = 0; r < top; r++) {
-        if (r + AHEAD < top) PREFETCH(simplex_of + orig[r + AHEAD]);
-        simplex_of[orig[r]] = r < count ? (lh_index)r : -1;
-    }
-    lh_index *nb = s->nbr;
-    for (size_t i = 0; i < count * nv; i++) {
-        if (i + AHEAD * nv < count * nv) PREFETCH(simplex_of + nb[i + AHEAD * nv]);
-        nb[i] = simplex_of[nb[i]];
-    }
+    remap job = {orig, simplex_of, s->nbr, top, count, nv};
+    lh__par_range(b->threads, top, invert_range, &job);
+    lh__par_range(b->threads, count * nv, remap_range, &job);
     lh__free(&t->alloc, simplex_of);
     t->count = count;
     t->simp = s->vert;

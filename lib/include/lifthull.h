@@ -236,6 +236,10 @@ typedef struct lh_options {
                                   sites done and the distinct sites in all (NULL:
                                   none, the default)                                 */
     void *progress_user;       /* handed back to progress (default NULL)            */
+    int threads;               /* lh_delaunay (not furthest_site): threads that insert
+                                  the sites, each a region of space at a time; 0: one
+                                  per online CPU. The output is the same for every
+                                  value, byte for byte (default 1)                   */
 } lh_options;
 
 void lh_options_default(lh_options *opt);

@@ -43,6 +43,8 @@ int lh__orient_unfiltered(lh_pred *ctx, int k, const double *const *pts, double 
 /* Counts n calls of lh_orient/lh_insphere that a caller settled with the inline
  * filters of lh_filter.gen.h (dims/), as filter exits. */
 void lh__pred_count_filtered(lh_pred *ctx, uint64_t n);
+/* Adds src's counters to dst's and resets src's (the contexts of parallel workers). */
+void lh__pred_move_counters(lh_pred *dst, lh_pred *src);
 
 /*
  * The insphere test within a k-flat of R^d (2 <= k < d): pts are k+2 points of R^d

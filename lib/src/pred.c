@@ -152,4 +152,18 @@ void lh__pred_count_filtered(lh_pred *ctx, uint64_t n)
     ctx->count.filter_exits += n;
 }
 
+void lh__pred_move_counters(lh_pred *dst, lh_pred *src)
+{
+    lh_pred_counters *a = &dst->count, *b = &src->count;
+    a->calls += b->calls;
+    a->filter_exits += b->filter_exits;
+    a->grid_exits += b->grid_exits;
+    a->residue_exits += b->residue_exits;
+    a->exact_exits += b->exact_exits;
+    a->zero_results += b->zero_results;
+    a->sos_fast += b->sos_fast;
+    a->sos_general += b->sos_general;
+    memset(b, 0, sizeof *b);
+}
+
 double lh__fp_contract_probe(double a, double b, double c) { return a * b + c; }

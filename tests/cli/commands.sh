@@ -37,8 +37,16 @@ PY
 for c in delaunay voronoi hull locate interpolate check points qdelaunay qvoronoi qconvex; do
   expect "$c --help" 0 '' '^usage: lifthull '"$c" -- "$lh" "$c" --help
 done
-expect "--threads accepted" 0 "one thread for now" '^4$' -- "$lh" delaunay --threads 2 sq.txt
-expect "--threads checked" 2 "--threads takes 1..4096, not 'x'" '' -- "$lh" hull --threads x sq.txt
+expect "--threads accepted" 0 '' '^4$' -- "$lh" delaunay --threads 2 sq.txt
+expect "--threads checked" 2 "--threads takes 0..4096, not 'x'" '' -- "$lh" hull --threads x sq.txt
+# enough sites for parallel phases: the same file from 1, 2 and 3 threads
+"$lh" points 60000 -d 2 --seed 5 > big.txt
+"$lh" delaunay -q big.txt -o one.txt
+for k in 2 3 0; do
+  expect "--threads $k: the one-thread output" 0 '' '' -- "$lh" delaunay -q --threads "$k" big.txt -o many.txt
+  if cmp -s one.txt many.txt && [ -s one.txt ]; then ok; else bad "--threads $k: output differs"; fi
+  rm -f many.txt
+done
 expect "unknown command" 2 "unknown command 'frobnicate'" '' -- "$lh" frobnicate
 expect "unknown option" 2 "lifthull delaunay: unknown option '-z'" '' -- "$lh" delaunay -z sq.txt
 expect "-o without a value" 2 "a value is needed after '-o'" '' -- "$lh" delaunay sq.txt -o

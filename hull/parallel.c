@@ -1,0 +1,349 @@
+/*
+ * parallel.c — lh__eng_build's insertions with several threads (lh_options.threads).
+ *
+ * Each BRIO round with enough sites is a phase: its sites, in Morton order, are
+ * cut into one run of consecutive sites per worker, so the runs are regions of
+ * space, and the workers insert their runs at once into the one cell store under
+ * cell locks (parallel.h; Batista, Devillers & Lévy 2010, §4). Each worker takes
+ * new cells from its own range above the store's top (and worker 0 from the free
+ * list too), so allocation needs no lock, and nothing is allocated while they run
+ * (the store is frozen: a worker out of room defers its sites). After the phase the
+ * ranges and free lists are merged back, and the sites that met another worker's
+ * cells are inserted sequentially. The smaller rounds run sequentially.
+ *
+ * The triangulation is the sequential one: it is unique for the perturbed sites,
+ * whoever inserts them in whatever order (parallel.h); vertex numbers are positions
+ * in the insertion order, which does not change.
+ */
+#include "parallel.h"
+
+#include "lh_exact.h"
+
+#include <pthread.h>
+#include <string.h>
+#include <unistd.h>
+
+/* Sites per worker below which a round stays sequential, and vertices before the
+ * first phase (runs far apart), in 2D; a site costs about 4x more per dimension
+ * (cells per vertex: 2, 6.7, 31, 160 in 2D..5D), so a phase pays for its threads at
+ * 4x fewer sites. */
+static size_t scaled(size_t n2, int d) { return d - 2 < 5 ? n2 >> (2 * (d - 2)) : n2 >> 10; }
+enum {
+    MIN_RUN = 4096,
+    MIN_BUILT = 8192,
+    LOG_CAP = 1 << 14,   /* cells a worker may hold at once */
+    SCRATCH = 1 << 12,   /* boundary facets of the largest cavity a worker takes */
+    MAX_WORKERS = LH__MAX_THREADS
+};
+
+typedef struct worker {
+    lh__eng e;        /* a copy of the engine: the shared store, its own scratch */
+    lh__par par;
+    lh__tds scratch;  /* its scratch arrays, kept between phases */
+    lh_pred *pred;    /* its predicate context (worker 0: the engine's) */
+    lh_index lo, hi;  /* its range of new cells in this phase */
+    lh_index live0;   /* its store's live count at the start */
+    lh_index hint;    /* where its last phase ended (-1: none) */
+    size_t first, count;
+    lh_status st;
+    pthread_t thread;
+} worker;
+
+typedef struct pctx {
+    lh__eng *e;
+    int nw;
+    worker *w;
+    _Atomic unsigned char *own; /* e->tds.cap entries, all 0 between phases */
+    lh_index own_cap;
+    lh_index *deferred;         /* e->norder entries: each worker's run's slice */
+    size_t mark_sites;          /* vertices and cells at the end of the round     */
+    lh_index mark_live;         /* before the last: the growth per site since     */
+} pctx;
+
+static void release(pctx *c)
+{
+    lh__eng *e = c->e;
+    for (int i = 0; c->w && i < c->nw; i++) {
+        worker *w = c->w + i;
+        lh__free(&e->alloc, w->scratch.cells);
+        lh__free(&e->alloc, w->scratch.bound);
+        lh__free(&e->alloc, w->scratch.fresh);
+        lh__free(&e->alloc, w->scratch.ridge);
+        lh__free(&e->alloc, w->scratch.sorted);
+        lh__free(&e->alloc, w->scratch.spos);
+        lh__free(&e->alloc, w->par.log);
+        if (i) lh_pred_free(w->pred);
+    }
+    lh__free(&e->alloc, c->w);
+    lh__free(&e->alloc, (void *)c->own);
+    lh__free(&e->alloc, c->deferred);
+}
+
+static lh_status setup(pctx *c, lh__eng *e, int nw)
+{
+    memset(c, 0, sizeof *c);
+    c->e = e;
+    c->w = lh__alloc(&e->alloc, (size_t)nw * sizeof *c->w);
+    c->deferred = lh__alloc(&e->alloc, (e->norder + 1) * sizeof *c->deferred);
+    if (!c->w || !c->deferred) return LH_ERR_NOMEM;
+    memset(c->w, 0, (size_t)nw * sizeof *c->w);
+    c->nw = nw;
+    for (int i = 0; i < nw; i++) {
+        worker *w = c->w + i;
+        w->hint = -1;
+        w->scratch.alloc = e->alloc;
+        w->scratch.nv = e->nv;
+        w->par.me = (unsigned char)(i + 1);
+        w->par.log_cap = LOG_CAP;
+        w->par.log = lh__alloc(&e->alloc, LOG_CAP * sizeof *w->par.log);
+        if (!w->par.log) return LH_ERR_NOMEM;
+        lh_status st = lh__tds_scratch(&w->scratch, e->par_scratch ? e->par_scratch : SCRATCH);
+        if (st == LH_OK && i) st = lh_pred_create(&e->alloc, &w->pred);
+        if (i == 0) w->pred = e->pred;
+        if (st != LH_OK) return st;
+    }
+    return LH_OK;
+}
+
+/* The owner bytes cover the store's capacity (all 0: no phase runs). */
+static lh_status cover_own(pctx *c)
+{
+    lh__eng *e = c->e;
+    if (c->own_cap >= e->tds.cap) return LH_OK;
+    lh__free(&e->alloc, (void *)c->own);
+    c->own = lh__alloc(&e->alloc, (size_t)e->tds.cap);
+    c->own_cap = c->own ? e->tds.cap : 0;
+    if (!c->own) return LH_ERR_NOMEM;
+    for (lh_index i = 0; i < e->tds.cap; i++) atomic_init(&c->own[i], 0);
+    return LH_OK;
+}
+
+static int live_cell(const lh__tds *t, lh_index c) { return c >= 0 && c < t->top && !lh__tds_dead(t, c); }
+
+/* A live cell that workers 0..upto-1 of this phase do not start from, trying `want`
+ * first, then the cells from the top down; -1 if none. */
+static lh_index free_start(const pctx *c, int upto, lh_index want)
+{
+    const lh__tds *t = &c->e->tds;
+    for (lh_index x = want, scan = t->top;; x = --scan) {
+        int taken = !live_cell(t, x);
+        for (int i = 0; i < upto && !taken; i++) taken = c->w[i].e.hint == x;
+        if (!taken) return x;
+        if (scan <= 0) return -1;
+    }
+}
+
+/* Worker i's engine for a phase: the shared store with its own range of new cells
+ * [lo, hi), scratch, predicates, random stream, visit rounds from `round`, and a
+ * start cell it holds. */
+static void prepare(pctx *c, int i, lh_index lo, lh_index hi, uint32_t round, size_t first, size_t count)
+{
+    lh__eng *e = c->e;
+    worker *w = c->w + i;
+    lh__tds *t = &w->e.tds;
+    w->e = *e;
+    w->e.pred = w->pred;
+    w->e.par = &w->par;
+    w->e.rng = (e->rng ^ (UINT64_C(0x9e3779b97f4a7c15) * (uint64_t)(i + 1))) | 1;
+    const lh__tds *s = &w->scratch;
+    t->cells = s->cells, t->bound = s->bound, t->fresh = s->fresh;
+    t->cells_cap = s->cells_cap, t->bound_cap = s->bound_cap, t->fresh_cap = s->fresh_cap;
+    t->ridge = s->ridge, t->ridge_cap = s->ridge_cap;
+    t->sorted = s->sorted, t->spos = s->spos, t->sorted_cap = s->sorted_cap;
+    t->frozen = 1;
+    t->top = lo, t->cap = hi, t->round = round;
+    /* top - live counts the free cells (lh__tds_reserve): worker 0 takes the list */
+    t->free_head = i ? -1 : e->tds.free_head;
+    t->live = i ? lo : lo - (e->tds.top - e->tds.live);
+    w->lo = lo, w->hi = hi, w->live0 = t->live;
+    w->first = first, w->count = count;
+    w->par.own = c->own;
+    w->par.stopped = 0;
+    w->par.deferred = c->deferred + (first - c->w[0].first);
+    w->par.ndeferred = 0;
+    w->e.hint = free_start(c, i, i ? c->w[i - 1].hint : e->hint);
+    w->par.nlog = 0;
+    if (w->e.hint >= 0) lh__par_keep(&w->par, w->e.hint);
+    else w->par.stopped = 1; /* no cell to start from: the sequential pass does it all */
+}
+
+static void *work(void *arg)
+{
+    worker *w = arg;
+    w->st = w->e.insert_par(&w->e, w->first, w->count, NULL);
+    return NULL;
+}
+
+/* Appends the free list from `head` to the store's. */
+static void splice_free(lh__tds *t, lh_index head)
+{
+    if (head < 0) return;
+    lh_index tail = head;
+    while (t->nbr[(size_t)tail * t->nv] >= 0) tail = t->nbr[(size_t)tail * t->nv];
+    t->nbr[(size_t)tail * t->nv] = t->free_head;
+    t->free_head = head;
+}
+
+/* The workers' store changes taken into e's: live counts, free lists, the unused
+ * ends of the ranges (freed), the last range's top, rounds, counters. */
+static lh_status merge(pctx *c)
+{
+    lh__eng *e = c->e;
+    lh__tds *t = &e->tds;
+    lh_status st = LH_OK;
+    t->free_head = -1;
+    for (int i = 0; i < c->nw; i++) {
+        worker *w = c->w + i;
+        lh__tds *wt = &w->e.tds;
+        t->live += wt->live - w->live0;
+        t->round = wt->round > t->round ? wt->round : t->round;
+        if (i + 1 < c->nw) {
+            for (lh_index x = wt->top; x < w->hi; x++) {
+                t->vert[(size_t)x * t->nv] = LH__DEAD;
+                t->nbr[(size_t)x * t->nv] = wt->free_head;
+                wt->free_head = x;
+            }
+        } else {
+            t->top = wt->top;
+        }
+        splice_free(t, wt->free_head);
+        if (i) lh__pred_move_counters(e->pred, w->pred);
+        w->hint = w->e.hint;
+        e->par_sites += w->count;
+        e->par_deferred += w->par.ndeferred;
+        if (w->st != LH_OK && st == LH_OK) st = w->st;
+    }
+    e->rng = c->w[0].e.rng;
+    e->hint = free_start(c, 0, c->w[0].e.hint); /* another worker may have freed it */
+    return st;
+}
+
+/* The sites first..first+count-1 by c->nw workers, then those they deferred. */
+static lh_status phase(pctx *c, size_t first, size_t count)
+{
+    lh__eng *e = c->e;
+    lh__tds *t = &e->tds;
+    const int nw = c->nw;
+    /* new cells a site makes, as in the last round (more than the average so far:
+       sites near the hull make fewer), with a margin; a worker out of room defers */
+    const double per_site = (double)(t->live - c->mark_live) / (double)(first - c->mark_sites);
+    const size_t run = count / (size_t)nw;
+    const size_t need = (size_t)(per_site * (double)run * 1.04) + 2 * (size_t)SCRATCH;
+    /* worker 0 also has the free cells: its range is smaller by as many */
+    const size_t freed = (size_t)(t->top - t->live), need0 = need > freed + SCRATCH ? need - freed : SCRATCH;
+    const uint32_t rounds = (uint32_t)(run + (size_t)nw + 1); /* each worker's, at most */
+    lh_status st = lh__tds_reserve_top(t, need0 + need * (size_t)(nw - 1));
+    if (st == LH_OK) st = cover_own(c);
+    if (st != LH_OK) return st;
+    if ((uint64_t)t->round + (uint64_t)nw * rounds + 2 >= LH__TDS_MAX_ROUND) {
+        lh__tds_reset_rounds(t);
+        for (int i = 0; i < nw; i++)
+            if (c->w[i].scratch.ridge) memset(c->w[i].scratch.ridge, 0, c->w[i].scratch.ridge_cap * sizeof(lh__ridge));
+    }
+    c->w[0].first = first;
+    for (int i = 0; i < nw; i++) {
+        size_t f = first + (size_t)i * run, n = i + 1 < nw ? run : first + count - f;
+        lh_index lo = t->top + (lh_index)(i ? need0 + (size_t)(i - 1) * need : 0);
+        lh_index hi = i + 1 < nw ? lo + (lh_index)(i ? need : need0) : t->cap;
+        prepare(c, i, lo, hi, t->round + (uint32_t)i * rounds, f, n);
+    }
+    int started[MAX_WORKERS] = {0};
+    for (int i = 1; i < nw; i++) started[i] = !pthread_create(&c->w[i].thread, NULL, work, c->w + i);
+    work(c->w);
+    for (int i = 1; i < nw; i++) {
+        if (started[i])
+            pthread_join(c->w[i].thread, NULL);
+        else
+            work(c->w + i); /* no thread: it runs now, still a worker */
+    }
+    st = merge(c);
+    const lh__insert_fn seq = e->insert ? e->insert : lh__eng_insert_generic;
+    for (int i = 0; i < nw && st == LH_OK; i++)
+        if (c->w[i].par.ndeferred) st = seq(e, 0, c->w[i].par.ndeferred, c->w[i].par.deferred);
+    return st;
+}
+
+typedef struct for_arg {
+    void (*fn)(void *ctx, int w, int nw);
+    void *ctx;
+    int w, nw;
+} for_arg;
+
+static void *for_body(void *arg)
+{
+    const for_arg *a = arg;
+    a->fn(a->ctx, a->w, a->nw);
+    return NULL;
+}
+
+void lh__par_for(int nw, void (*fn)(void *ctx, int w, int nw), void *ctx)
+{
+    nw = nw < 1 ? 1 : nw < MAX_WORKERS ? nw : MAX_WORKERS;
+    pthread_t th[MAX_WORKERS];
+    for_arg arg[MAX_WORKERS];
+    int started[MAX_WORKERS] = {0};
+    for (int w = 0; w < nw; w++) arg[w] = (for_arg){fn, ctx, w, nw};
+    for (int w = 1; w < nw; w++) started[w] = !pthread_create(th + w, NULL, for_body, arg + w);
+    fn(ctx, 0, nw);
+    for (int w = 1; w < nw; w++) {
+        if (started[w])
+            pthread_join(th[w], NULL);
+        else
+            fn(ctx, w, nw); /* no thread: its share runs here */
+    }
+}
+
+typedef struct range_arg {
+    void (*fn)(void *ctx, size_t lo, size_t hi);
+    void *ctx;
+    size_t n;
+} range_arg;
+
+static void range_body(void *arg, int w, int nw)
+{
+    const range_arg *a = arg;
+    a->fn(a->ctx, lh__share(a->n, w, nw), lh__share(a->n, w + 1, nw));
+}
+
+void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx)
+{
+    enum { MIN_SHARE = 1 << 14 }; /* items a thread must get to be worth starting */
+    if (nw > 1 && n / MIN_SHARE < (size_t)nw) nw = (int)(n / MIN_SHARE);
+    if (nw <= 1) {
+        fn(ctx, 0, n);
+        return;
+    }
+    range_arg a = {fn, ctx, n};
+    lh__par_for(nw, range_body, &a);
+}
+
+int lh__threads(int requested)
+{
+    if (requested > 0) return requested < MAX_WORKERS ? requested : MAX_WORKERS;
+    long online = sysconf(_SC_NPROCESSORS_ONLN);
+    return online < 1 ? 1 : online < MAX_WORKERS ? (int)online : MAX_WORKERS;
+}
+
+lh_status lh__eng_insert_parallel(lh__eng *e, size_t at)
+{
+    const lh__insert_fn seq = e->insert ? e->insert : lh__eng_insert_generic;
+    const int nw = e->threads;
+    pctx c;
+    lh_status st = setup(&c, e, nw);
+    for (int r = 0; r < LH__BRIO_ROUNDS && st == LH_OK; r++) {
+        size_t end = e->round_end[r] < e->norder ? e->round_end[r] : e->norder;
+        if (r == LH__BRIO_ROUNDS - 1) end = e->norder;
+        if (end <= at) continue;
+        const size_t sites = at;
+        const lh_index live = e->tds.live;
+        if (at >= scaled(MIN_BUILT, e->d) && end - at >= (size_t)nw * scaled(MIN_RUN, e->d))
+            st = phase(&c, at, end - at);
+        else
+            st = seq(e, at, end - at, NULL);
+        at = end;
+        c.mark_sites = sites, c.mark_live = live;
+        if (st == LH_OK && e->progress) e->progress(e->progress_user, at, e->norder);
+    }
+    release(&c);
+    return st;
+}

@@ -1,0 +1,146 @@
+/* test_parallel.c — lh_options.threads: the parallel insertion phases
+ * (hull/parallel.c) and the shared output sort give exactly the one-thread output,
+ * byte for byte, on every family in 2D..6D (fixed and generic engines); the
+ * workers really insert sites, and the sites they defer (cells another worker
+ * holds, cavities beyond their scratch) are inserted afterwards. */
+#include "engine.h"
+#include "lh_api_test.h"
+#include "lh_families.h"
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Sizes that give every dimension at least two parallel phases with 2 threads. */
+static const size_t SIZE[7] = {0, 0, 40000, 12000, 2400, 640, 300};
+
+static void same_as_one_thread(lh_test_state *lh_t_, int d, int fam, int generic)
+{
+    double *x = malloc(SIZE[d] * d * sizeof *x);
+    lh_fam_seed((uint64_t)(91 * d + fam));
+    size_t n = lh_fam_make(fam, d, SIZE[d], x);
+    lh_options o;
+    lh_options_default(&o);
+    o.generic_engine = generic;
+    lh_tri *one = NULL;
+    lh_status s1 = lh_delaunay(d, n, x, &o, &one);
+    const int threads[2] = {2, 3};
+    for (int i = 0; i < 2 && !LH_FAILED(); i++) {
+        o.threads = threads[i];
+        lh_tri *many = NULL;
+        LH_EXPECT_EQ_INT(lh_delaunay(d, n, x, &o, &many), s1);
+        if (s1 == LH_OK && many) LH_EXPECT_TRUE(lh_test_same_tri(one, many));
+        if (LH_FAILED()) LH_NOTE("d=%d %s%s threads=%d", d, lh_fam_name[fam], generic ? " generic" : "", threads[i]);
+        lh_tri_free(many);
+    }
+    if (s1 == LH_OK) LH_EXPECT_EQ_INT(lh_tri_check(one, NULL, 0), LH_OK);
+    lh_tri_free(one);
+    free(x);
+}
+
+LH_TEST(threads_give_the_one_thread_output)
+{
+    for (int d = 2; d <= 5 && !LH_FAILED(); d++)
+        for (int fam = 0; fam < F_COUNT && !LH_FAILED(); fam++)
+            if (fam != F_GRID_JITTER || d < 4) /* seconds there: test_dims has it */
+                same_as_one_thread(lh_t_, d, fam, 0);
+    const int fams[3] = {F_CUBE, F_SPHERE_EXACT, F_GRID};
+    for (int d = 2; d <= 6 && !LH_FAILED(); d++)
+        for (int f = 0; f < 3 && !LH_FAILED(); f++) same_as_one_thread(lh_t_, d, fams[f], 1);
+}
+
+/* The finite cells of a built engine, canonical and sorted (*count of them). */
+static lh_index *canonical_cells(lh__eng *e, size_t *count)
+{
+    const int nv = e->nv;
+    lh_index *raw = malloc(((size_t)e->tds.top * nv + 1) * sizeof *raw);
+    lh_index *cells = malloc(((size_t)e->tds.top * nv + 1) * sizeof *cells);
+    lh_index *order = malloc(((size_t)e->tds.top + 1) * sizeof *order);
+    size_t k = 0;
+    for (lh_index c = 0; c < e->tds.top; c++) {
+        if (lh__tds_dead(&e->tds, c) || !lh__eng_finite(e, c)) continue;
+        memcpy(raw + k * nv, e->tds.vert + (size_t)c * nv, (size_t)nv * sizeof *raw);
+        lh__canonical(raw + k * nv, nv);
+        k++;
+    }
+    if (!lh__sort_tuples(&e->alloc, raw, nv, k, e->n, cells, order)) k = 0;
+    free(raw);
+    free(order);
+    *count = k;
+    return cells;
+}
+
+/* The engine run directly (the generic worker loop) with `threads` and a worker
+ * cavity bound of `scratch` facets (0: the default), against one thread; returns
+ * the sites the workers deferred. */
+static size_t engine_run(lh_test_state *lh_t_, int d, int fam, int threads, size_t scratch)
+{
+    double *x = malloc(SIZE[d] * d * sizeof *x);
+    lh_index *dup = malloc(SIZE[d] * sizeof *dup);
+    lh_fam_seed((uint64_t)(7 * d + fam));
+    size_t n = lh_fam_make(fam, d, SIZE[d], x), count[2] = {0, 0}, deferred = 0;
+    lh_index *cells[2] = {NULL, NULL};
+    for (int run = 0; run < 2; run++) {
+        lh_options o;
+        lh_options_default(&o);
+        o.threads = run ? threads : 1;
+        lh__eng e;
+        if (lh__eng_init(&e, NULL, d, n, x, dup, &o) != LH_OK) {
+            LH_EXPECT_TRUE(0); /* no memory for the predicates */
+            lh__eng_release(&e);
+            continue;
+        }
+        e.conflict_sign = -1;
+        e.inside_conflicts = 1;
+        e.insert_par = lh__eng_insert_generic_par;
+        e.par_scratch = scratch;
+        int affdim;
+        LH_EXPECT_EQ_INT(lh__eng_build(&e, 1024, &affdim), LH_OK);
+        if (run) {
+            LH_EXPECT_TRUE(e.par_sites > n / 3); /* the last round at least */
+            deferred = e.par_deferred;
+        }
+        cells[run] = canonical_cells(&e, count + run);
+        lh__eng_release(&e);
+    }
+    LH_EXPECT_TRUE(count[0] > 0 && count[0] == count[1]);
+    if (count[0] == count[1]) LH_EXPECT_TRUE(!memcmp(cells[0], cells[1], count[0] * (d + 1) * sizeof(lh_index)));
+    if (LH_FAILED()) LH_NOTE("d=%d %s threads=%d scratch=%zu", d, lh_fam_name[fam], threads, scratch);
+    free(cells[0]);
+    free(cells[1]);
+    free(dup);
+    free(x);
+    return deferred;
+}
+
+LH_TEST(workers_insert_sites)
+{
+    for (int d = 2; d <= 4 && !LH_FAILED(); d++)
+        for (int threads = 2; threads <= 4 && !LH_FAILED(); threads += 2) {
+            engine_run(lh_t_, d, F_CUBE, threads, 0);
+            engine_run(lh_t_, d, F_GRID, threads, 0);
+            engine_run(lh_t_, d, F_CLUSTERS, threads, 0);
+        }
+}
+
+/* A cavity beyond a worker's scratch defers its site, whatever the timing: with a
+ * bound of 8 boundary facets most 3D sites are deferred, some 2D ones. */
+LH_TEST(deferred_sites_are_inserted_afterwards)
+{
+    for (int d = 2; d <= 3 && !LH_FAILED(); d++) {
+        size_t deferred = engine_run(lh_t_, d, F_CUBE, 2, 8);
+        LH_EXPECT_TRUE(deferred > SIZE[d] / 100);
+        LH_NOTE("d=%d: %zu sites deferred", d, deferred);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(threads_give_the_one_thread_output),
+        LH_CASE(workers_insert_sites),
+        LH_CASE(deferred_sites_are_inserted_afterwards),
+    };
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
