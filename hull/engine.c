@@ -147,10 +147,13 @@ lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim)
     *affdim = lh__eng_initial_simplex(e);
     if (*affdim < e->d) return LH_ERR_DEGENERATE;
     if ((st = copy_sites(e)) != LH_OK) return st;
+    const int par = e->threads > 1 && e->insert_par;
+    if (par && cells_hint < LH_INDEX_MAX / 2) /* the phases' blocks and margins: room, not memory, as */
+        cells_hint += cells_hint / 16;        /* pages are touched only when used */
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
     if (!e->hashed_ridges) lh__tds_vertex_bound(&e->tds, e->norder + 1);
     if ((st = start(e)) != LH_OK) return st;
-    if (e->threads > 1 && e->insert_par) {
+    if (par) {
         st = lh__eng_insert_parallel(e, (size_t)e->nv);
         if (st == LH_OK) restore_indices(e);
         return st;

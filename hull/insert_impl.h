@@ -546,8 +546,9 @@ static lh_status cavity_insert_2(lh__eng *e, lh_index start)
 
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list);
 #ifdef LH_T_PARALLEL
-/* A worker: inserts what it can, defers the rest (e->par), holds nothing at the
- * end. Fails only on an internal error. */
+/* A worker: inserts what it can, defers the rest (e->par). It still holds its hint
+ * at the end, for the next call (parallel.c releases it). Fails only on an internal
+ * error. */
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list)
 {
     lh__par *p = e->par;
@@ -558,17 +559,15 @@ lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list
         e->q = list ? list[i] : (lh_index)(first + i);
         lh_index c = p->stopped ? -2 : locate(e);
         st = c >= 0 ? CAVITY_INSERT(e, c) : c == -1 ? LH_OK : LH__RETRY; /* -1: not a vertex */
+        if (st == LH_ERR_NOMEM && lh__par_refill(p, t)) st = CAVITY_INSERT(e, c);
         if (st == LH_OK && c >= 0) {
             e->hint = t->fresh[0];
             lh__par_keep(p, e->hint);
         } else if (st != LH_OK) {
-            /* out of cells (not a cavity too large for the scratch): stop trying */
-            if (st == LH_ERR_NOMEM && (size_t)(t->cap - t->live) < 4 * t->nbound + 64) p->stopped = 1;
-            p->deferred[p->ndeferred++] = e->q;
+            lh__par_defer(p, e->q);
         }
         lh__par_release(p, e->hint);
     }
-    lh__par_release(p, -1);
     lh__pred_count_filtered(e->pred, e->filtered);
     e->filtered = 0;
     return st == LH__RETRY || st == LH_ERR_NOMEM ? LH_OK : st;

@@ -2,14 +2,16 @@
  * parallel.c — lh__eng_build's insertions with several threads (lh_options.threads).
  *
  * Each BRIO round with enough sites is a phase: its sites, in Morton order, are
- * cut into one run of consecutive sites per worker, so the runs are regions of
- * space, and the workers insert their runs at once into the one cell store under
- * cell locks (parallel.h; Batista, Devillers & Lévy 2010, §4). Each worker takes
- * new cells from its own range above the store's top (and worker 0 from the free
- * list too), so allocation needs no lock, and nothing is allocated while they run
- * (the store is frozen: a worker out of room defers its sites). After the phase the
- * ranges and free lists are merged back, and the sites that met another worker's
- * cells are inserted sequentially. The smaller rounds run sequentially.
+ * cut into chunks of consecutive sites (regions of space), about CHUNKS per worker,
+ * which the workers take in turn (so that they end together) and insert at once
+ * into the one cell store under cell locks (parallel.h; Batista, Devillers & Lévy
+ * 2010, §4). Two workers meet only where one's region ends and the other's began
+ * long before. New cells come from blocks above the store's top, taken by an atomic
+ * add (worker 0 also has the free list), and a worker's scratch is allocated
+ * before: nothing is allocated while they run (the store is frozen), and a worker
+ * out of blocks stops. After the phase the blocks' rests and the free lists are
+ * merged back, and the sites that met another worker's cells (or cavities beyond a
+ * worker's scratch) are inserted sequentially. The smaller rounds run sequentially.
  *
  * The triangulation is the sequential one: it is unique for the perturbed sites,
  * whoever inserts them in whatever order (parallel.h); vertex numbers are positions
@@ -31,20 +33,24 @@ static size_t scaled(size_t n2, int d) { return d - 2 < 5 ? n2 >> (2 * (d - 2)) 
 enum {
     MIN_RUN = 4096,
     MIN_BUILT = 8192,
+    CHUNKS = 8,          /* chunks of a phase per worker: taken in turn, they balance */
+    MIN_CHUNK = 256,     /* sites in a chunk at least (each starts with a walk) */
     LOG_CAP = 1 << 14,   /* cells a worker may hold at once */
     SCRATCH = 1 << 12,   /* boundary facets of the largest cavity a worker takes */
+    BLOCK = 4 * SCRATCH, /* new cells a worker takes at a time */
     MAX_WORKERS = LH__MAX_THREADS
 };
 
+struct pctx;
 typedef struct worker {
     lh__eng e;        /* a copy of the engine: the shared store, its own scratch */
     lh__par par;
     lh__tds scratch;  /* its scratch arrays, kept between phases */
     lh_pred *pred;    /* its predicate context (worker 0: the engine's) */
-    lh_index lo, hi;  /* its range of new cells in this phase */
     lh_index live0;   /* its store's live count at the start */
     lh_index hint;    /* where its last phase ended (-1: none) */
-    size_t first, count;
+    size_t sites;     /* sites of the chunks it took */
+    struct pctx *c;
     lh_status st;
     pthread_t thread;
 } worker;
@@ -55,7 +61,9 @@ typedef struct pctx {
     worker *w;
     _Atomic unsigned char *own; /* e->tds.cap entries, all 0 between phases */
     lh_index own_cap;
-    lh_index *deferred;         /* e->norder entries: each worker's run's slice */
+    lh__par_shared sh;          /* deferred: e->norder entries */
+    size_t first, count, nchunks; /* the phase's sites, cut into chunks */
+    _Atomic size_t next_chunk;
     size_t mark_sites;          /* vertices and cells at the end of the round     */
     lh_index mark_live;         /* before the last: the growth per site since     */
 } pctx;
@@ -76,7 +84,7 @@ static void release(pctx *c)
     }
     lh__free(&e->alloc, c->w);
     lh__free(&e->alloc, (void *)c->own);
-    lh__free(&e->alloc, c->deferred);
+    lh__free(&e->alloc, c->sh.deferred);
 }
 
 static lh_status setup(pctx *c, lh__eng *e, int nw)
@@ -84,16 +92,19 @@ static lh_status setup(pctx *c, lh__eng *e, int nw)
     memset(c, 0, sizeof *c);
     c->e = e;
     c->w = lh__alloc(&e->alloc, (size_t)nw * sizeof *c->w);
-    c->deferred = lh__alloc(&e->alloc, (e->norder + 1) * sizeof *c->deferred);
-    if (!c->w || !c->deferred) return LH_ERR_NOMEM;
+    c->sh.deferred = lh__alloc(&e->alloc, (e->norder + 1) * sizeof *c->sh.deferred);
+    if (!c->w || !c->sh.deferred) return LH_ERR_NOMEM;
     memset(c->w, 0, (size_t)nw * sizeof *c->w);
     c->nw = nw;
+    c->sh.block = BLOCK;
     for (int i = 0; i < nw; i++) {
         worker *w = c->w + i;
         w->hint = -1;
+        w->c = c;
         w->scratch.alloc = e->alloc;
         w->scratch.nv = e->nv;
         w->par.me = (unsigned char)(i + 1);
+        w->par.sh = &c->sh;
         w->par.log_cap = LOG_CAP;
         w->par.log = lh__alloc(&e->alloc, LOG_CAP * sizeof *w->par.log);
         if (!w->par.log) return LH_ERR_NOMEM;
@@ -133,10 +144,10 @@ static lh_index free_start(const pctx *c, int upto, lh_index want)
     }
 }
 
-/* Worker i's engine for a phase: the shared store with its own range of new cells
- * [lo, hi), scratch, predicates, random stream, visit rounds from `round`, and a
- * start cell it holds. */
-static void prepare(pctx *c, int i, lh_index lo, lh_index hi, uint32_t round, size_t first, size_t count)
+/* Worker i's engine for a phase: the shared store, no block of new cells yet
+ * (worker 0 has the free list), its scratch, predicates, random stream, visit rounds
+ * from `round`, and a start cell it holds. */
+static void prepare(pctx *c, int i, uint32_t round)
 {
     lh__eng *e = c->e;
     worker *w = c->w + i;
@@ -151,27 +162,66 @@ static void prepare(pctx *c, int i, lh_index lo, lh_index hi, uint32_t round, si
     t->ridge = s->ridge, t->ridge_cap = s->ridge_cap;
     t->sorted = s->sorted, t->spos = s->spos, t->sorted_cap = s->sorted_cap;
     t->frozen = 1;
-    t->top = lo, t->cap = hi, t->round = round;
-    /* top - live counts the free cells (lh__tds_reserve): worker 0 takes the list */
+    t->round = round;
+    t->cap = t->top; /* no block yet (lh__par_refill) */
+    /* top - live counts the free cells (lh__tds_reserve) */
     t->free_head = i ? -1 : e->tds.free_head;
-    t->live = i ? lo : lo - (e->tds.top - e->tds.live);
-    w->lo = lo, w->hi = hi, w->live0 = t->live;
-    w->first = first, w->count = count;
+    t->live = i ? t->top : t->top - (e->tds.top - e->tds.live);
+    w->live0 = t->live;
+    w->sites = 0;
     w->par.own = c->own;
     w->par.stopped = 0;
-    w->par.deferred = c->deferred + (first - c->w[0].first);
-    w->par.ndeferred = 0;
-    w->e.hint = free_start(c, i, i ? c->w[i - 1].hint : e->hint);
+    w->par.live_shift = 0;
+    w->e.hint = free_start(c, i, w->hint >= 0 ? w->hint : e->hint);
     w->par.nlog = 0;
     if (w->e.hint >= 0) lh__par_keep(&w->par, w->e.hint);
     else w->par.stopped = 1; /* no cell to start from: the sequential pass does it all */
 }
 
+/* A worker's phase: chunks, taken in turn until none is left or it is out of cells. */
 static void *work(void *arg)
 {
     worker *w = arg;
-    w->st = w->e.insert_par(&w->e, w->first, w->count, NULL);
+    pctx *c = w->c;
+    w->st = LH_OK;
+    while (w->st == LH_OK && !w->par.stopped) {
+        size_t k = atomic_fetch_add_explicit(&c->next_chunk, 1, memory_order_relaxed);
+        if (k >= c->nchunks) break;
+        size_t f = c->first + lh__share(c->count, (int)k, (int)c->nchunks);
+        size_t to = c->first + lh__share(c->count, (int)k + 1, (int)c->nchunks);
+        w->st = w->e.insert_par(&w->e, f, to - f, NULL);
+        w->sites += to - f;
+    }
+    lh__par_release(&w->par, -1);
     return NULL;
+}
+
+void lh__par_defer(lh__par *p, lh_index q)
+{
+    size_t i = atomic_fetch_add_explicit(&p->sh->ndeferred, 1, memory_order_relaxed);
+    p->sh->deferred[i] = q;
+}
+
+int lh__par_refill(lh__par *p, lh__tds *t)
+{
+    if ((size_t)(t->cap - t->live) >= t->nbound) return 0; /* the scratch failed */
+    lh__par_shared *sh = p->sh;
+    size_t b = atomic_fetch_add_explicit(&sh->cursor, sh->block, memory_order_relaxed);
+    if (b + sh->block > sh->end) {
+        p->stopped = 1;
+        return 0;
+    }
+    const lh_index freed = (t->top - t->live) + (t->cap - t->top);
+    for (lh_index x = t->top; x < t->cap; x++) { /* the old block's rest: free */
+        t->vert[(size_t)x * t->nv] = LH__DEAD;
+        t->nbr[(size_t)x * t->nv] = t->free_head;
+        t->free_head = x;
+    }
+    p->live_shift += ((lh_index)b - freed) - t->live; /* top - live: still the free cells */
+    t->live = (lh_index)b - freed;
+    t->top = (lh_index)b;
+    t->cap = (lh_index)(b + sh->block);
+    return 1;
 }
 
 /* Appends the free list from `head` to the store's. */
@@ -184,55 +234,52 @@ static void splice_free(lh__tds *t, lh_index head)
     t->free_head = head;
 }
 
-/* The workers' store changes taken into e's: live counts, free lists, the unused
- * ends of the ranges (freed), the last range's top, rounds, counters. */
-static lh_status merge(pctx *c)
+/* The workers' store changes taken into e's: live counts, free lists with the rest
+ * of each worker's last block, the blocks' top, rounds, counters. */
+static lh_status merge(pctx *c, lh_index start)
 {
     lh__eng *e = c->e;
     lh__tds *t = &e->tds;
     lh_status st = LH_OK;
+    const size_t given = atomic_load(&c->sh.cursor) - (size_t)start, whole = (c->sh.end - (size_t)start) / BLOCK * BLOCK;
+    t->top = start + (lh_index)(given < whole ? given : whole);
     t->free_head = -1;
     for (int i = 0; i < c->nw; i++) {
         worker *w = c->w + i;
         lh__tds *wt = &w->e.tds;
-        t->live += wt->live - w->live0;
+        t->live += wt->live - w->live0 - w->par.live_shift;
         t->round = wt->round > t->round ? wt->round : t->round;
-        if (i + 1 < c->nw) {
-            for (lh_index x = wt->top; x < w->hi; x++) {
-                t->vert[(size_t)x * t->nv] = LH__DEAD;
-                t->nbr[(size_t)x * t->nv] = wt->free_head;
-                wt->free_head = x;
-            }
-        } else {
-            t->top = wt->top;
+        for (lh_index x = wt->top; x < wt->cap; x++) {
+            t->vert[(size_t)x * t->nv] = LH__DEAD;
+            t->nbr[(size_t)x * t->nv] = wt->free_head;
+            wt->free_head = x;
         }
         splice_free(t, wt->free_head);
         if (i) lh__pred_move_counters(e->pred, w->pred);
         w->hint = w->e.hint;
-        e->par_sites += w->count;
-        e->par_deferred += w->par.ndeferred;
+        e->par_sites += w->sites;
         if (w->st != LH_OK && st == LH_OK) st = w->st;
     }
+    e->par_deferred += atomic_load(&c->sh.ndeferred);
     e->rng = c->w[0].e.rng;
     e->hint = free_start(c, 0, c->w[0].e.hint); /* another worker may have freed it */
     return st;
 }
 
-/* The sites first..first+count-1 by c->nw workers, then those they deferred. */
+/* The sites first..first+count-1 by c->nw workers, then those they deferred or did
+ * not reach. */
 static lh_status phase(pctx *c, size_t first, size_t count)
 {
     lh__eng *e = c->e;
     lh__tds *t = &e->tds;
     const int nw = c->nw;
     /* new cells a site makes, as in the last round (more than the average so far:
-       sites near the hull make fewer), with a margin; a worker out of room defers */
+       sites near the hull make fewer), with a margin; a worker out of blocks stops */
     const double per_site = (double)(t->live - c->mark_live) / (double)(first - c->mark_sites);
-    const size_t run = count / (size_t)nw;
-    const size_t need = (size_t)(per_site * (double)run * 1.04) + 2 * (size_t)SCRATCH;
-    /* worker 0 also has the free cells: its range is smaller by as many */
-    const size_t freed = (size_t)(t->top - t->live), need0 = need > freed + SCRATCH ? need - freed : SCRATCH;
-    const uint32_t rounds = (uint32_t)(run + (size_t)nw + 1); /* each worker's, at most */
-    lh_status st = lh__tds_reserve_top(t, need0 + need * (size_t)(nw - 1));
+    const size_t need = (size_t)(per_site * (double)count * 1.04) + 2 * (size_t)nw * BLOCK;
+    const uint32_t rounds = (uint32_t)(2 * count + 2); /* each worker's, at most (a refill
+                                                           retries an insertion) */
+    lh_status st = lh__tds_reserve_top(t, need);
     if (st == LH_OK) st = cover_own(c);
     if (st != LH_OK) return st;
     if ((uint64_t)t->round + (uint64_t)nw * rounds + 2 >= LH__TDS_MAX_ROUND) {
@@ -240,13 +287,15 @@ static lh_status phase(pctx *c, size_t first, size_t count)
         for (int i = 0; i < nw; i++)
             if (c->w[i].scratch.ridge) memset(c->w[i].scratch.ridge, 0, c->w[i].scratch.ridge_cap * sizeof(lh__ridge));
     }
-    c->w[0].first = first;
-    for (int i = 0; i < nw; i++) {
-        size_t f = first + (size_t)i * run, n = i + 1 < nw ? run : first + count - f;
-        lh_index lo = t->top + (lh_index)(i ? need0 + (size_t)(i - 1) * need : 0);
-        lh_index hi = i + 1 < nw ? lo + (lh_index)(i ? need : need0) : t->cap;
-        prepare(c, i, lo, hi, t->round + (uint32_t)i * rounds, f, n);
-    }
+    const lh_index start = t->top;
+    atomic_store(&c->sh.cursor, (size_t)start);
+    c->sh.end = (size_t)t->cap;
+    atomic_store(&c->sh.ndeferred, 0);
+    c->first = first, c->count = count;
+    size_t chunks = count / MIN_CHUNK < (size_t)nw * CHUNKS ? count / MIN_CHUNK : (size_t)nw * CHUNKS;
+    c->nchunks = chunks > (size_t)nw ? chunks : (size_t)nw;
+    atomic_store(&c->next_chunk, 0);
+    for (int i = 0; i < nw; i++) prepare(c, i, t->round + (uint32_t)i * rounds);
     int started[MAX_WORKERS] = {0};
     for (int i = 1; i < nw; i++) started[i] = !pthread_create(&c->w[i].thread, NULL, work, c->w + i);
     work(c->w);
@@ -256,10 +305,14 @@ static lh_status phase(pctx *c, size_t first, size_t count)
         else
             work(c->w + i); /* no thread: it runs now, still a worker */
     }
-    st = merge(c);
+    st = merge(c, start);
     const lh__insert_fn seq = e->insert ? e->insert : lh__eng_insert_generic;
-    for (int i = 0; i < nw && st == LH_OK; i++)
-        if (c->w[i].par.ndeferred) st = seq(e, 0, c->w[i].par.ndeferred, c->w[i].par.deferred);
+    const size_t nd = atomic_load(&c->sh.ndeferred), taken = atomic_load(&c->next_chunk);
+    if (st == LH_OK && nd) st = seq(e, 0, nd, c->sh.deferred);
+    if (st == LH_OK && taken < c->nchunks) { /* the chunks no worker took (out of cells) */
+        size_t from = first + lh__share(count, (int)taken, (int)c->nchunks);
+        st = seq(e, from, first + count - from, NULL);
+    }
     return st;
 }
 

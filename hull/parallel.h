@@ -31,15 +31,32 @@
 
 #include <stdatomic.h>
 
+/* What the workers of a phase share besides the cells: new cells in blocks from
+ * [cursor, end), and the list of deferred sites. */
+typedef struct lh__par_shared {
+    _Atomic size_t cursor;   /* the next block's first cell */
+    size_t end;              /* no block reaches past it (the store's capacity) */
+    size_t block;            /* cells in a block */
+    lh_index *deferred;      /* sites left for the sequential pass */
+    _Atomic size_t ndeferred;
+} lh__par_shared;
+
 typedef struct lh__par {
     _Atomic unsigned char *own; /* per cell: 0 free, else the worker holding it */
     unsigned char me;           /* this worker's mark, 1.. */
     int stopped;                /* out of cells: every further site deferred */
     lh_index *log;              /* the cells this worker holds */
     size_t nlog, log_cap;
-    lh_index *deferred;         /* sites left for the sequential pass */
-    size_t ndeferred;
+    lh__par_shared *sh;
+    lh_index live_shift;        /* the store's live count moved by refills, not cells */
 } lh__par;
+
+/* parallel.c: site q left for the sequential pass. */
+void lh__par_defer(lh__par *p, lh_index q);
+/* parallel.c: after an insertion failed for want of cells (not of scratch), a new
+ * block of cells for t, the rest of the old one on its free list; 0 when there was
+ * room, or no block is left (then the worker stops). */
+int lh__par_refill(lh__par *p, lh__tds *t);
 
 /* Takes cell c for this worker (holding it already counts); 0 when another worker
  * holds it, or when the log is full but for the slot kept for the next hint. */

@@ -5,6 +5,7 @@
 #                errors; the long oracle tests at LH_TEST_SCALE=0.2
 #   build-idx64/ gcc, Release, 64-bit indices (LH_INDEX_64); the suite at LH_TEST_SCALE=0.1
 #                but for the oracle cross-checks
+#   build-tsan/  gcc, ThreadSanitizer: the parallel insertion's tests (test_parallel)
 #   build-fuzz/  clang, libFuzzer + ASan + UBSan: every fuzz target for 30 s on a copy
 #                of its corpus (scripts/fuzz.sh), two at a time
 #   build/       gcc, Release, warnings as errors, benchmarks built and smoke-run;
@@ -34,6 +35,15 @@ CC=gcc CXX=g++ cmake -S . -B build-idx64 -DLH_INDEX_64=ON -DCMAKE_BUILD_TYPE=Rel
   -DLH_WERROR=ON -DLH_BUILD_TESTS=ON >/dev/null
 cmake --build build-idx64 -j "$jobs" >/dev/null
 LH_TEST_SCALE=0.1 ctest --test-dir build-idx64 -j "$jobs" -LE oracle --output-on-failure || fail idx64
+
+# The parallel phases (hull/parallel.c) under ThreadSanitizer: a data race between
+# workers fails the stage (TSan's exit status 66).
+echo "== thread sanitizer (gcc, TSan: the parallel insertion) =="
+CC=gcc CXX=g++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLH_BUILD_TESTS=ON \
+  -DCMAKE_C_FLAGS=-fsanitize=thread -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=thread >/dev/null
+cmake --build build-tsan -j "$jobs" --target test_parallel >/dev/null
+TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_parallel workers_insert_sites \
+  deferred_sites_are_inserted_afterwards every_allocation_failure_is_survived_with_threads || fail tsan
 
 echo "== fuzzing (clang, libFuzzer + ASan + UBSan, 30 s a target) =="
 bash scripts/fuzz.sh 30 || fail fuzz
@@ -83,7 +93,7 @@ rm -rf "$vgdir"
 if [ -n "$failed" ]; then
   echo "== stages before the release suite: FAILED:$failed (their output is above) ==" >&2
 else
-  echo "== stages before the release suite: asan, idx64, fuzz, valgrind passed =="
+  echo "== stages before the release suite: asan, idx64, tsan, fuzz, valgrind passed =="
 fi
 ctest --test-dir build -j "$jobs" --output-on-failure || status=1
 exit "$status"

@@ -135,12 +135,43 @@ LH_TEST(deferred_sites_are_inserted_afterwards)
     }
 }
 
+/* lh_delaunay with 2 threads and the k-th allocation failing (all on the calling
+ * thread: workers allocate nothing): LH_ERR_NOMEM, nothing leaked. */
+enum { ALLOC_N = 6000 }; /* 3D: one parallel phase */
+static lh_status threads_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
+{
+    const double *x = user;
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = a;
+    o.threads = 2;
+    lh_tri *t = (lh_tri *)x;
+    lh_status st = lh_delaunay(3, ALLOC_N, x, &o, &t);
+    if (st != LH_OK) {
+        LH_EXPECT_TRUE(t == NULL);
+        return st;
+    }
+    LH_EXPECT_GT_U64(lh_tri_count(t), ALLOC_N);
+    lh_tri_free(t);
+    return st;
+}
+
+LH_TEST(every_allocation_failure_is_survived_with_threads)
+{
+    double *x = malloc(ALLOC_N * 3 * sizeof *x);
+    lh_fam_seed(11);
+    for (int i = 0; i < ALLOC_N * 3; i++) x[i] = lh_fam_unif();
+    LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, threads_run, x), 10);
+    free(x);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(threads_give_the_one_thread_output),
         LH_CASE(workers_insert_sites),
         LH_CASE(deferred_sites_are_inserted_afterwards),
+        LH_CASE(every_allocation_failure_is_survived_with_threads),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }
