@@ -202,6 +202,16 @@ void lh__par_defer(lh__par *p, lh_index q)
     p->sh->deferred[i] = q;
 }
 
+/* The unused rest of t's block, top..cap-1, onto its free list (top stays). */
+static void free_rest(lh__tds *t)
+{
+    for (lh_index x = t->top; x < t->cap; x++) {
+        t->vert[(size_t)x * t->nv] = LH__DEAD;
+        t->nbr[(size_t)x * t->nv] = t->free_head;
+        t->free_head = x;
+    }
+}
+
 int lh__par_refill(lh__par *p, lh__tds *t)
 {
     if ((size_t)(t->cap - t->live) >= t->nbound) return 0; /* the scratch failed */
@@ -212,11 +222,7 @@ int lh__par_refill(lh__par *p, lh__tds *t)
         return 0;
     }
     const lh_index freed = (t->top - t->live) + (t->cap - t->top);
-    for (lh_index x = t->top; x < t->cap; x++) { /* the old block's rest: free */
-        t->vert[(size_t)x * t->nv] = LH__DEAD;
-        t->nbr[(size_t)x * t->nv] = t->free_head;
-        t->free_head = x;
-    }
+    free_rest(t);
     p->live_shift += ((lh_index)b - freed) - t->live; /* top - live: still the free cells */
     t->live = (lh_index)b - freed;
     t->top = (lh_index)b;
@@ -249,11 +255,7 @@ static lh_status merge(pctx *c, lh_index start)
         lh__tds *wt = &w->e.tds;
         t->live += wt->live - w->live0 - w->par.live_shift;
         t->round = wt->round > t->round ? wt->round : t->round;
-        for (lh_index x = wt->top; x < wt->cap; x++) {
-            t->vert[(size_t)x * t->nv] = LH__DEAD;
-            t->nbr[(size_t)x * t->nv] = wt->free_head;
-            wt->free_head = x;
-        }
+        free_rest(wt);
         splice_free(t, wt->free_head);
         if (i) lh__pred_move_counters(e->pred, w->pred);
         w->hint = w->e.hint;
@@ -381,12 +383,17 @@ lh_status lh__eng_insert_parallel(lh__eng *e, size_t at)
 {
     const lh__insert_fn seq = e->insert ? e->insert : lh__eng_insert_generic;
     const int nw = e->threads;
+    /* a phase's workers take disjoint ranges of 2 count + 2 visit rounds each */
+    const size_t most = LH__TDS_MAX_ROUND / (4 * (size_t)nw) - 2;
     pctx c;
     lh_status st = setup(&c, e, nw);
-    for (int r = 0; r < LH__BRIO_ROUNDS && st == LH_OK; r++) {
-        size_t end = e->round_end[r] < e->norder ? e->round_end[r] : e->norder;
-        if (r == LH__BRIO_ROUNDS - 1) end = e->norder;
-        if (end <= at) continue;
+    for (int r = 0; r < LH__BRIO_ROUNDS && st == LH_OK;) {
+        size_t end = r == LH__BRIO_ROUNDS - 1 || e->round_end[r] > e->norder ? e->norder : e->round_end[r];
+        if (end <= at) {
+            r++;
+            continue;
+        }
+        if (end - at > most) end = at + most; /* the rest of the round comes next */
         const size_t sites = at;
         const lh_index live = e->tds.live;
         if (at >= scaled(MIN_BUILT, e->d) && end - at >= (size_t)nw * scaled(MIN_RUN, e->d))
