@@ -20,7 +20,12 @@
 
 #include <string.h>
 
-enum { DIGIT_BITS = 8, SMALL = 16, MAX_LEVELS = 64 / DIGIT_BITS + 1 };
+enum {
+    DIGIT_BITS = 8,
+    SMALL = 16,       /* rows sorted by insertion */
+    GROUP_MAX = 4096, /* rows of one first vertex sorted through positions (more: heapsort) */
+    MAX_LEVELS = 64 / DIGIT_BITS + 1
+};
 
 /* The rows being sorted. Every function below takes the row length nv as an
  * argument, a constant where lh__tds_sort_cells calls them for 2D to 5D
@@ -31,6 +36,7 @@ typedef struct rows {
     int levels;                  /* digit passes: level i reads key bits lo[i]..hi[i]-1 */
     int lo[MAX_LEVELS], hi[MAX_LEVELS];
     size_t *scratch;             /* per level: bucket heads and ends */
+    lh_index *pos;               /* 2 GROUP_MAX: positions of a group being sorted */
     uint16_t *dig;               /* per row: its digit in the current pass */
 } rows;
 
@@ -108,6 +114,56 @@ static void heap_sort(const rows *r, size_t lo, size_t hi, int nv)
     }
 }
 
+static inline void move_row(const rows *r, size_t to, size_t from, int nv)
+{
+    copy_row(r->vert + to * nv, r->vert + from * nv, nv);
+    copy_row(r->nbr + to * nv, r->nbr + from * nv, nv);
+    r->orig[to] = r->orig[from];
+}
+
+/* Rows lo..hi-1 (one first vertex, at most GROUP_MAX) sorted by their other
+ * vertices: a bottom-up merge sort of their positions (a row is 2 nv + 1 entries, a
+ * position one; the group is in the first-level cache), then each row moved once,
+ * along the cycles of the permutation. Replaced heapsort for the groups of 30 (4D)
+ * to 160 (5D) rows that every vertex has: 12% of a 4D run was that heapsort. */
+static void group_sort(const rows *r, size_t lo, size_t hi, int nv)
+{
+    const size_t k = hi - lo;
+    lh_index *a = r->pos, *b = r->pos + GROUP_MAX;
+    for (size_t i = 0; i < k; i++) a[i] = (lh_index)(lo + i);
+    for (size_t w = 1; w < k; w *= 2) {
+        for (size_t s = 0; s < k; s += 2 * w) {
+            const size_t m = s + w < k ? s + w : k, e = s + 2 * w < k ? s + 2 * w : k;
+            size_t i = s, j = m, o = s;
+            while (i < m && j < e)
+                b[o++] = row_less(r->vert + (size_t)a[j] * nv, r->vert + (size_t)a[i] * nv, nv, r->n) ? a[j++] : a[i++];
+            while (i < m) b[o++] = a[i++];
+            while (j < e) b[o++] = a[j++];
+        }
+        lh_index *x = a;
+        a = b, b = x;
+    }
+    /* a[i]: the row that goes to lo + i; a done entry becomes -1 */
+    lh_index v[LH__TDS_MAX_NV], nb[LH__TDS_MAX_NV];
+    for (size_t i = 0; i < k; i++) {
+        if (a[i] < 0 || (size_t)a[i] == lo + i) continue;
+        copy_row(v, r->vert + (lo + i) * nv, nv);
+        copy_row(nb, r->nbr + (lo + i) * nv, nv);
+        lh_index o = r->orig[lo + i];
+        size_t cur = i;
+        for (;;) {
+            const size_t src = (size_t)a[cur] - lo;
+            a[cur] = -1;
+            if (src == i) break;
+            move_row(r, lo + cur, lo + src, nv);
+            cur = src;
+        }
+        copy_row(r->vert + (lo + cur) * nv, v, nv);
+        copy_row(r->nbr + (lo + cur) * nv, nb, nv);
+        r->orig[lo + cur] = o;
+    }
+}
+
 /* Moves the rows of a cycle that starts at row i, whose digit is not b, into their
  * buckets' next free places (head), the last into row i. The next place comes from
  * dig, not from the row in hand, so the rows' cache misses overlap. */
@@ -174,7 +230,10 @@ static inline void sort_rows(const rows *r, size_t lo, size_t hi, int first, int
             from[level] = lo;
             level++;
         } else if (key_of(r->vert + lo * nv, r->n) < r->n) { /* one first vertex */
-            heap_sort(r, lo, hi, nv);
+            if (hi - lo <= GROUP_MAX)
+                group_sort(r, lo, hi, nv);
+            else
+                heap_sort(r, lo, hi, nv);
         }
         while (level > first && next[level - 1] == nb[level - 1]) level--;
         if (level == first) return;
@@ -240,7 +299,7 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
     memset(job, 0, sizeof *job);
     job->t = t;
     const int nw = threads < 1 ? 1 : threads < LH__MAX_THREADS ? threads : LH__MAX_THREADS;
-    rows r = {t->vert, t->nbr, orig, n, 0, {0}, {0}, NULL, NULL};
+    rows r = {.vert = t->vert, .nbr = t->nbr, .orig = orig, .n = n};
     int bits = 1;
     while (bits < 64 && (n >> bits) != 0) bits++; /* keys are 0..n */
     r.levels = (bits + DIGIT_BITS - 1) / DIGIT_BITS;
@@ -252,9 +311,11 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
     }
     const size_t per = (size_t)r.levels * 2 * ((size_t)1 << DIGIT_BITS);
     r.scratch = lh__alloc(&t->alloc, (size_t)nw * per * sizeof *r.scratch);
+    r.pos = lh__alloc(&t->alloc, (size_t)nw * 2 * GROUP_MAX * sizeof *r.pos);
     r.dig = lh__alloc(&t->alloc, ((size_t)t->top + 1) * sizeof *r.dig);
-    if (!r.scratch || !r.dig) {
+    if (!r.scratch || !r.pos || !r.dig) {
         lh__free(&t->alloc, r.scratch);
+        lh__free(&t->alloc, r.pos);
         lh__free(&t->alloc, r.dig);
         lh__free(&t->alloc, job);
         return LH_ERR_NOMEM;
@@ -262,6 +323,7 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
     for (int w = 0; w < nw; w++) {
         job->r[w] = r;
         job->r[w].scratch = r.scratch + (size_t)w * per;
+        job->r[w].pos = r.pos + (size_t)w * 2 * GROUP_MAX;
     }
     for (lh_index c = 0; c < t->top; c++) orig[c] = c;
     if (nw == 1) {
@@ -282,6 +344,7 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
         lh__par_for(nw, bucket_share, job);
     }
     lh__free(&t->alloc, r.scratch);
+    lh__free(&t->alloc, r.pos);
     lh__free(&t->alloc, r.dig);
     lh__free(&t->alloc, job);
     return LH_OK;

@@ -166,21 +166,21 @@ LH_TEST(output_depends_only_on_the_site_set)
     }
 }
 
-LH_TEST(a_vertex_of_huge_degree)
+/* Site 0 at the centre of n - 1 sites on a circle: it is in every triangle and is
+ * every triangle's smallest index (the output sort's largest possible bucket:
+ * hull/cell_sort.c orders it through positions up to 4096 rows, by heapsort above).
+ * Another seed gives the same bytes. */
+static void centre_of_a_circle(lh_test_state *lh_t_, int n)
 {
-    /* Site 0 at the centre of 20000 sites on a circle: it is in every triangle and
-     * is every triangle's smallest index (the output sort's largest possible bucket:
-     * hull/cell_sort.c orders it by heapsort). Another seed gives the same bytes. */
-    enum { N = 20001 };
-    double *x = malloc(2 * N * sizeof *x);
+    double *x = malloc(2 * (size_t)n * sizeof *x);
     x[0] = x[1] = 0;
-    for (int i = 1; i < N; i++) {
-        x[2 * i] = cos(6.283185307179586 * i / (N - 1));
-        x[2 * i + 1] = sin(6.283185307179586 * i / (N - 1));
+    for (int i = 1; i < n; i++) {
+        x[2 * i] = cos(6.283185307179586 * i / (n - 1));
+        x[2 * i + 1] = sin(6.283185307179586 * i / (n - 1));
     }
     lh_tri *t;
-    LH_ASSERT_EQ_INT(lh_delaunay(2, N, x, NULL, &t), LH_OK);
-    LH_EXPECT_EQ_U64(lh_tri_count(t), N - 1);
+    LH_ASSERT_EQ_INT(lh_delaunay(2, n, x, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_U64(lh_tri_count(t), n - 1);
     for (size_t s = 0; s < lh_tri_count(t); s++) LH_EXPECT_EQ_INT(lh_tri_simplices(t)[3 * s], 0);
     LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
     expect_canonical_order(lh_t_, t);
@@ -188,11 +188,19 @@ LH_TEST(a_vertex_of_huge_degree)
     lh_options_default(&o);
     o.seed = 99;
     lh_tri *u;
-    LH_ASSERT_EQ_INT(lh_delaunay(2, N, x, &o, &u), LH_OK);
+    LH_ASSERT_EQ_INT(lh_delaunay(2, n, x, &o, &u), LH_OK);
     LH_EXPECT_TRUE(lh_test_same_tri(t, u));
+    if (LH_FAILED()) LH_NOTE("n=%d", n);
     lh_tri_free(t);
     lh_tri_free(u);
     free(x);
+}
+
+LH_TEST(a_vertex_of_huge_degree)
+{
+    centre_of_a_circle(lh_t_, 20001); /* heapsort */
+    centre_of_a_circle(lh_t_, 3001);  /* sorted positions */
+    centre_of_a_circle(lh_t_, 18);    /* just above insertion sort */
 }
 
 /* A 4x4x4 grid scaled by 2^40 + 1: its exact zeros (cospherical cube corners,
