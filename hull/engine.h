@@ -84,7 +84,8 @@ typedef struct lh__eng {
                              which test finite cells by conflict_sign only */
     lh__insert_fn insert_par; /* the same loop for a worker of a parallel phase
                                  (hull/parallel.c), or NULL: Delaunay only */
-    int threads;          /* workers of the parallel phases (1: none) */
+    int threads;          /* lh_options.threads, resolved: the parallel phases'
+                             workers and the shared loops' threads (1: one) */
     struct lh__par *par;  /* a worker's locks and deferred sites (NULL: sequential) */
     size_t round_end[LH__BRIO_ROUNDS]; /* end of each BRIO round in order[] */
     size_t par_sites, par_deferred; /* sites given to parallel workers, and those

@@ -61,18 +61,24 @@ void lh__tds_release(lh__tds *t)
     memset(t, 0, sizeof *t);
 }
 
-lh_status lh__tds_reserve(lh__tds *t, size_t extra)
+/* Capacity for `extra` cells above top, growing by half (less overshoot than
+ * doubling) or more. */
+static lh_status grow_above_top(lh__tds *t, size_t extra)
 {
-    size_t have = (size_t)(t->cap - t->top), freed = (size_t)(t->top - t->live);
-    if (have + freed >= extra) return LH_OK;
-    if (t->frozen) return LH_ERR_NOMEM;
-    size_t want = (size_t)t->cap + (size_t)t->cap / 2 + 1024; /* x1.5: less overshoot */
+    size_t want = (size_t)t->cap + (size_t)t->cap / 2 + 1024;
     if (want < (size_t)t->top + extra) want = (size_t)t->top + extra;
     size_t most = SIZE_MAX / ((size_t)t->nv * sizeof *t->vert); /* bytes must not overflow */
     if (most > LH_INDEX_MAX) most = LH_INDEX_MAX;
     if (want > most) want = most;
     if (want < (size_t)t->top + extra) return LH_ERR_TOO_LARGE;
     return set_capacity(t, (lh_index)want);
+}
+
+lh_status lh__tds_reserve(lh__tds *t, size_t extra)
+{
+    size_t have = (size_t)(t->cap - t->top), freed = (size_t)(t->top - t->live);
+    if (have + freed >= extra) return LH_OK;
+    return t->frozen ? LH_ERR_NOMEM : grow_above_top(t, extra);
 }
 
 lh_index *lh__tds_finish(lh__tds *t)
@@ -159,14 +165,7 @@ void lh__tds_next_round(lh__tds *t)
 
 lh_status lh__tds_reserve_top(lh__tds *t, size_t extra)
 {
-    if ((size_t)(t->cap - t->top) >= extra) return LH_OK;
-    size_t want = (size_t)t->cap + (size_t)t->cap / 2 + 1024; /* as lh__tds_reserve */
-    if (want < (size_t)t->top + extra) want = (size_t)t->top + extra;
-    size_t most = SIZE_MAX / ((size_t)t->nv * sizeof *t->vert);
-    if (most > LH_INDEX_MAX) most = LH_INDEX_MAX;
-    if (want > most) want = most;
-    if (want < (size_t)t->top + extra) return LH_ERR_TOO_LARGE;
-    return set_capacity(t, (lh_index)want);
+    return (size_t)(t->cap - t->top) >= extra ? LH_OK : grow_above_top(t, extra);
 }
 
 lh_status lh__tds_scratch(lh__tds *t, size_t facets)
