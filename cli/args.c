@@ -58,7 +58,7 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
             if (a->format == (lh_format)-1) return usage_error(cmd, "--format takes qhull, node or columns, not", f);
             break;
         }
-        case 't': { /* every command accepts it */
+        case 't': { /* every point command accepts it */
             char *end;
             long k = strtol(argv[++i], &end, 10);
             if (*end || k < 0 || k > 4096) return usage_error(cmd, "--threads takes 0..4096, not", argv[i]);

@@ -35,10 +35,11 @@ static void usage(FILE *out)
                  "       lifthull COMMAND --help\n"
                  "       lifthull --version | --help\n\ncommands:\n");
     for (int i = 0; i < n_commands; i++) fprintf(out, "  %-12s %s\n", commands[i].name, commands[i].summary);
-    fprintf(out, "\nevery command: --help (usage and examples); --format qhull|node|columns to\n"
-                 "read its input files so (default: by name and content); --threads N for the\n"
-                 "Delaunay triangulation (0: one per CPU; the output is the same). Manual:\n"
-                 "docs/lifthull.1\n"
+    fprintf(out, "\nevery command: --help (usage and examples). The point commands (delaunay,\n"
+                 "voronoi, hull, locate, interpolate, check): --format qhull|node|columns to\n"
+                 "read their input files so (default: by name and content), and --threads N\n"
+                 "for the Delaunay triangulation (0: one per CPU; the output is the same).\n"
+                 "Manual: docs/lifthull.1\n"
                  "\nexit codes: 0 success, 1 a computation or check failed, 2 usage error,\n"
                  "            3 bad input file\n");
 }

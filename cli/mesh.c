@@ -143,7 +143,7 @@ static int parse(mesh_args *a, int argc, char **argv)
         } else if (!strcmp(s, "--smooth")) {
             if (!number(s, v, 0, 1000, 1, &x)) return -1;
             a->opt.smooth = (int)x;
-        } else if (!strcmp(s, "--threads")) { /* every command takes it; meshing is sequential */
+        } else if (!strcmp(s, "--threads")) { /* as the point commands; meshing is sequential */
             if (!number(s, v, 0, 4096, 1, &x)) return -1;
             if (x != 1) fprintf(stderr, "lifthull mesh: --threads %s: meshing runs on one thread\n", v);
         } else {
