@@ -237,9 +237,10 @@ typedef struct lh_options {
                                   none, the default)                                 */
     void *progress_user;       /* handed back to progress (default NULL)            */
     int threads;               /* lh_delaunay (not furthest_site): threads that insert
-                                  the sites, each a region of space at a time; 0: one
-                                  per online CPU. The output is the same for every
-                                  value, byte for byte (default 1)                   */
+                                  the sites, each a region of space at a time; 0 or
+                                  less: one per online CPU; at most 64 are used. The
+                                  output is the same for every value, byte for byte
+                                  (default 1)                                        */
 } lh_options;
 
 void lh_options_default(lh_options *opt);
