@@ -298,7 +298,7 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
     if (!job) return LH_ERR_NOMEM;
     memset(job, 0, sizeof *job);
     job->t = t;
-    const int nw = threads < 1 ? 1 : threads < LH__MAX_THREADS ? threads : LH__MAX_THREADS;
+    const int nw = lh__par_width(threads, (size_t)t->top);
     rows r = {.vert = t->vert, .nbr = t->nbr, .orig = orig, .n = n};
     int bits = 1;
     while (bits < 64 && (n >> bits) != 0) bits++; /* keys are 0..n */
@@ -326,23 +326,13 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
         job->r[w].pos = r.pos + (size_t)w * 2 * GROUP_MAX;
     }
     for (lh_index c = 0; c < t->top; c++) orig[c] = c;
-    if (nw == 1) {
-        canonical_share(job, 0, 1);
-    } else {
-        lh__par_for(nw, canonical_share, job);
-    }
+    lh__par_for(nw, canonical_share, job);
     *count = 0;
     for (int w = 0; w < nw; w++) *count += job->counts[w];
-    if (nw == 1 || t->top <= SMALL || r.levels < 2) {
-#define SORT(m) sort_rows(&r, 0, (size_t)t->top, 0, m)
-        LH__WITH_CONSTANT_M(t->nv, SORT);
-#undef SORT
-    } else {
 #define PASS(m) job->nb = flag_pass(&r, 0, (size_t)t->top, 0, m, &job->ends)
-        LH__WITH_CONSTANT_M(t->nv, PASS);
+    LH__WITH_CONSTANT_M(t->nv, PASS); /* the first digit, then its buckets (sort_rows) */
 #undef PASS
-        lh__par_for(nw, bucket_share, job);
-    }
+    lh__par_for(nw, bucket_share, job);
     lh__free(&t->alloc, r.scratch);
     lh__free(&t->alloc, r.pos);
     lh__free(&t->alloc, r.dig);

@@ -140,6 +140,21 @@ static void restore_indices(lh__eng *e)
     e->site = e->site_copy = NULL;
 }
 
+/* Every site after the initial simplex, in order, with a progress report every
+ * 2^16 sites when asked (one thread). */
+static lh_status insert_all(lh__eng *e)
+{
+    lh__insert_fn insert = e->insert ? e->insert : lh__eng_insert_generic;
+    const size_t chunk = e->progress ? (size_t)1 << 16 : e->norder;
+    lh_status st = LH_OK;
+    for (size_t at = (size_t)e->nv; at < e->norder && st == LH_OK; at += chunk) {
+        size_t k = e->norder - at < chunk ? e->norder - at : chunk;
+        st = insert(e, at, k, NULL);
+        if (st == LH_OK && e->progress) e->progress(e->progress_user, at + k, e->norder);
+    }
+    return st;
+}
+
 lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim)
 {
     lh_status st = lh__eng_order(e);
@@ -153,20 +168,9 @@ lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim)
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
     if (!e->hashed_ridges) lh__tds_vertex_bound(&e->tds, e->norder + 1);
     if ((st = start(e)) != LH_OK) return st;
-    if (par) {
-        st = lh__eng_insert_parallel(e, (size_t)e->nv);
-        if (st == LH_OK) restore_indices(e);
-        return st;
-    }
-    lh__insert_fn insert = e->insert ? e->insert : lh__eng_insert_generic;
-    const size_t chunk = e->progress ? (size_t)1 << 16 : e->norder; /* progress reports */
-    for (size_t at = (size_t)e->nv; at < e->norder; at += chunk) {
-        size_t k = e->norder - at < chunk ? e->norder - at : chunk;
-        if ((st = insert(e, at, k, NULL)) != LH_OK) return st;
-        if (e->progress) e->progress(e->progress_user, at + k, e->norder);
-    }
-    restore_indices(e);
-    return LH_OK;
+    st = par ? lh__eng_insert_parallel(e, (size_t)e->nv) : insert_all(e);
+    if (st == LH_OK) restore_indices(e);
+    return st;
 }
 
 lh_status lh__eng_hull_facets(lh__eng *e, lh_index **out, size_t *count)

@@ -188,8 +188,11 @@ static inline size_t lh__share(size_t count, int w, int nw)
 {
     return count / (size_t)nw * (size_t)w + count % (size_t)nw * (size_t)w / (size_t)nw;
 }
-/* fn(ctx, lo, hi) over the shares of 0..n-1 among at most nw threads (one when n
- * is small), for loops whose iterations touch disjoint data. */
+/* The threads, at most nw (and LH__MAX_THREADS), worth starting for n items: each
+ * must get enough (one thread for small n). */
+int lh__par_width(int nw, size_t n);
+/* fn(ctx, lo, hi) over the shares of 0..n-1 among lh__par_width(nw, n) threads, for
+ * loops whose iterations touch disjoint data. */
 void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx);
 
 /* Inserts the vertices list[0..count-1] (distinct, none a vertex yet; coordinates

@@ -2,7 +2,8 @@
  * runtime value: every d, every mode. Its loops run over d + 1 entries at run time
  * and its predicates switch on d (insert_preds.h). In Delaunay mode (conflict_sign
  * set by lift/) the lifted conflict test is inline; in the other modes the
- * caller's finite_conflict decides. */
+ * caller's finite_conflict decides. insert_generic_par.c includes this file with
+ * LH_T_PARALLEL defined for the parallel phases' workers (parallel.c). */
 #include "insert_preds.h"
 
 static LH__ALWAYS_INLINE int finite_conflict_generic(lh__eng *e, const lh_index *v, lh_index q)
@@ -11,7 +12,11 @@ static LH__ALWAYS_INLINE int finite_conflict_generic(lh__eng *e, const lh_index 
     return e->finite_conflict && e->finite_conflict(e->user, v, q);
 }
 
+#ifdef LH_T_PARALLEL
+#define LH_T_NAME lh__eng_insert_generic_par
+#else
 #define LH_T_NAME lh__eng_insert_generic
+#endif
 #define LH_T_FINITE_CONFLICT(e, v, q) finite_conflict_generic(e, v, q)
 #define LH_T_ORIENT(e, pts) orient_inline(e, pts)
 #define LH_T_PREPARE(e) prepare_preds(e)

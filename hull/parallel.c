@@ -41,7 +41,6 @@ enum {
     MAX_WORKERS = LH__MAX_THREADS
 };
 
-struct pctx;
 typedef struct worker {
     lh__eng e;        /* a copy of the engine: the shared store, its own scratch */
     lh__par par;
@@ -50,9 +49,7 @@ typedef struct worker {
     lh_index live0;   /* its store's live count at the start */
     lh_index hint;    /* where its last phase ended (-1: none) */
     size_t sites;     /* sites of the chunks it took */
-    struct pctx *c;
     lh_status st;
-    pthread_t thread;
 } worker;
 
 typedef struct pctx {
@@ -100,7 +97,6 @@ static lh_status setup(pctx *c, lh__eng *e, int nw)
     for (int i = 0; i < nw; i++) {
         worker *w = c->w + i;
         w->hint = -1;
-        w->c = c;
         w->scratch.alloc = e->alloc;
         w->scratch.nv = e->nv;
         w->par.me = (unsigned char)(i + 1);
@@ -178,11 +174,12 @@ static void prepare(pctx *c, int i, uint32_t round)
     else w->par.stopped = 1; /* no cell to start from: the sequential pass does it all */
 }
 
-/* A worker's phase: chunks, taken in turn until none is left or it is out of cells. */
-static void *work(void *arg)
+/* Worker i's phase: chunks, taken in turn until none is left or it is out of cells. */
+static void work(void *ctx, int i, int nw)
 {
-    worker *w = arg;
-    pctx *c = w->c;
+    pctx *c = ctx;
+    worker *w = c->w + i;
+    (void)nw;
     w->st = LH_OK;
     while (w->st == LH_OK && !w->par.stopped) {
         size_t k = atomic_fetch_add_explicit(&c->next_chunk, 1, memory_order_relaxed);
@@ -193,7 +190,6 @@ static void *work(void *arg)
         w->sites += to - f;
     }
     lh__par_release(&w->par, -1);
-    return NULL;
 }
 
 void lh__par_defer(lh__par *p, lh_index q)
@@ -298,15 +294,7 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     c->nchunks = chunks > (size_t)nw ? chunks : (size_t)nw;
     atomic_store(&c->next_chunk, 0);
     for (int i = 0; i < nw; i++) prepare(c, i, t->round + (uint32_t)i * rounds);
-    int started[MAX_WORKERS] = {0};
-    for (int i = 1; i < nw; i++) started[i] = !pthread_create(&c->w[i].thread, NULL, work, c->w + i);
-    work(c->w);
-    for (int i = 1; i < nw; i++) {
-        if (started[i])
-            pthread_join(c->w[i].thread, NULL);
-        else
-            work(c->w + i); /* no thread: it runs now, still a worker */
-    }
+    lh__par_for(nw, work, c); /* a worker whose thread does not start runs after */
     st = merge(c, start);
     const lh__insert_fn seq = e->insert ? e->insert : lh__eng_insert_generic;
     const size_t nd = atomic_load(&c->sh.ndeferred), taken = atomic_load(&c->next_chunk);
@@ -337,7 +325,7 @@ void lh__par_for(int nw, void (*fn)(void *ctx, int w, int nw), void *ctx)
     pthread_t th[MAX_WORKERS];
     for_arg arg[MAX_WORKERS];
     int started[MAX_WORKERS] = {0};
-    for (int w = 0; w < nw; w++) arg[w] = (for_arg){fn, ctx, w, nw};
+    for (int w = 0; w < nw; w++) arg[w] = (for_arg){fn, ctx, w, nw}; /* nw = 1: no thread */
     for (int w = 1; w < nw; w++) started[w] = !pthread_create(th + w, NULL, for_body, arg + w);
     fn(ctx, 0, nw);
     for (int w = 1; w < nw; w++) {
@@ -360,16 +348,17 @@ static void range_body(void *arg, int w, int nw)
     a->fn(a->ctx, lh__share(a->n, w, nw), lh__share(a->n, w + 1, nw));
 }
 
-void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx)
+int lh__par_width(int nw, size_t n)
 {
     enum { MIN_SHARE = 1 << 14 }; /* items a thread must get to be worth starting */
     if (nw > 1 && n / MIN_SHARE < (size_t)nw) nw = (int)(n / MIN_SHARE);
-    if (nw <= 1) {
-        fn(ctx, 0, n);
-        return;
-    }
+    return nw < 1 ? 1 : nw < MAX_WORKERS ? nw : MAX_WORKERS;
+}
+
+void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx)
+{
     range_arg a = {fn, ctx, n};
-    lh__par_for(nw, range_body, &a);
+    lh__par_for(lh__par_width(nw, n), range_body, &a);
 }
 
 int lh__threads(int requested)

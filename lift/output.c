@@ -19,7 +19,7 @@ enum { AHEAD = 16 }; /* iterations between a prefetch and the use */
 typedef struct remap {
     const lh_index *orig;
     lh_index *simplex_of, *nb;
-    size_t top, count, nv;
+    size_t count, nv;
 } remap;
 
 static void invert_range(void *ctx, size_t lo, size_t hi)
@@ -55,7 +55,7 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *orig)
     if (st == LH_OK && !(simplex_of = lh__alloc(&t->alloc, (top + 1) * sizeof *simplex_of)))
         st = LH_ERR_NOMEM;
     if (st != LH_OK) return st;
-    remap job = {orig, simplex_of, s->nbr, top, count, nv};
+    remap job = {orig, simplex_of, s->nbr, count, nv};
     lh__par_range(b->threads, top, invert_range, &job);
     lh__par_range(b->threads, count * nv, remap_range, &job);
     lh__free(&t->alloc, simplex_of);

@@ -3,8 +3,8 @@
  * byte for byte, on every family in 2D..6D (fixed and generic engines); the
  * workers really insert sites, and the sites they defer (cells another worker
  * holds, cavities beyond their scratch) are inserted afterwards. */
-#include "engine.h"
 #include "lh_api_test.h"
+#include "lh_eng_test.h"
 #include "lh_families.h"
 #include "lh_test.h"
 #include "lifthull.h"
@@ -50,27 +50,6 @@ LH_TEST(threads_give_the_one_thread_output)
         for (int f = 0; f < 3 && !LH_FAILED(); f++) same_as_one_thread(lh_t_, d, fams[f], 1);
 }
 
-/* The finite cells of a built engine, canonical and sorted (*count of them). */
-static lh_index *canonical_cells(lh__eng *e, size_t *count)
-{
-    const int nv = e->nv;
-    lh_index *raw = malloc(((size_t)e->tds.top * nv + 1) * sizeof *raw);
-    lh_index *cells = malloc(((size_t)e->tds.top * nv + 1) * sizeof *cells);
-    lh_index *order = malloc(((size_t)e->tds.top + 1) * sizeof *order);
-    size_t k = 0;
-    for (lh_index c = 0; c < e->tds.top; c++) {
-        if (lh__tds_dead(&e->tds, c) || !lh__eng_finite(e, c)) continue;
-        memcpy(raw + k * nv, e->tds.vert + (size_t)c * nv, (size_t)nv * sizeof *raw);
-        lh__canonical(raw + k * nv, nv);
-        k++;
-    }
-    if (!lh__sort_tuples(&e->alloc, raw, nv, k, e->n, cells, order)) k = 0;
-    free(raw);
-    free(order);
-    *count = k;
-    return cells;
-}
-
 /* The engine run directly (the generic worker loop) with `threads` and a worker
  * cavity bound of `scratch` facets (0: the default), against one thread; returns
  * the sites the workers deferred. */
@@ -101,7 +80,7 @@ static size_t engine_run(lh_test_state *lh_t_, int d, int fam, int threads, size
             LH_EXPECT_TRUE(e.par_sites > n / 3); /* the last round at least */
             deferred = e.par_deferred;
         }
-        cells[run] = canonical_cells(&e, count + run);
+        cells[run] = lh_test_engine_cells(&e, count + run);
         lh__eng_release(&e);
     }
     LH_EXPECT_TRUE(count[0] > 0 && count[0] == count[1]);

@@ -3,7 +3,7 @@
  * place of twins in 3D beyond 2^32 sites), and turning in 2D in place of the tour:
  * forced here at small n, Delaunay and furthest-site, they must give exactly
  * lh_delaunay's simplices. */
-#include "engine.h"
+#include "lh_eng_test.h"
 #include "lh_families.h"
 #include "lh_test.h"
 
@@ -39,17 +39,9 @@ static void same_as_lh_delaunay(lh_test_state *lh_t_, int d, int fam, size_t siz
     int affdim;
     LH_EXPECT_EQ_INT(lh__eng_build(&e, 1024, &affdim), LH_OK);
     const int nv = d + 1;
-    lh_index *raw = malloc((size_t)e.tds.top * nv * sizeof *raw);
-    lh_index *cells = malloc((size_t)e.tds.top * nv * sizeof *cells);
-    lh_index *order = malloc((size_t)e.tds.top * sizeof *order);
-    size_t count = 0;
-    for (lh_index c = 0; c < e.tds.top; c++) {
-        if (lh__tds_dead(&e.tds, c) || !lh__eng_finite(&e, c)) continue;
-        memcpy(raw + count * nv, e.tds.vert + (size_t)c * nv, (size_t)nv * sizeof *raw);
-        lh__canonical(raw + count * nv, nv);
-        count++;
-    }
-    LH_EXPECT_TRUE(lh__sort_tuples(&e.alloc, raw, nv, count, n, cells, order));
+    size_t count;
+    lh_index *cells = lh_test_engine_cells(&e, &count);
+    LH_EXPECT_TRUE(count > 0);
     lh_options o;
     lh_options_default(&o);
     o.furthest_site = furthest;
@@ -61,9 +53,7 @@ static void same_as_lh_delaunay(lh_test_state *lh_t_, int d, int fam, size_t siz
     if (LH_FAILED()) LH_NOTE("d=%d %s%s", d, lh_fam_name[fam], furthest ? " furthest-site" : "");
     lh_tri_free(t);
     lh__eng_release(&e);
-    free(raw);
     free(cells);
-    free(order);
     free(dup);
     free(x);
 }
