@@ -82,32 +82,74 @@ static void morton_keys(const lh__eng *t, uint64_t *key)
     lh__par_range(t->threads, t->n, morton_range, &m);
 }
 
-/* LSD radix sort of (key, idx) pairs on the low `bits` bits, in as few passes of
- * at most 12 bits as there can be (a count table of 4096 stays in L1/L2); the
- * passes go back and forth between the arrays and the scratch k2, i2. */
-static void radix_sort(uint64_t *key, lh_index *idx, uint64_t *k2, lh_index *i2, size_t n, int bits)
+/* A stable counting-sort pass: the n items of (ka, ia) to (kb, ib) by a digit
+ * below 2^MAX_DIGIT, either bits shift.. of the key (the radix sort's passes) or a
+ * byte per item (dig: the BRIO rounds, keys unused). Threads share it: each counts
+ * its share of the items, then moves it after the same digits of the shares before
+ * it, so the result is the sequential one. */
+enum { MAX_DIGIT = 12 };
+typedef struct pass {
+    const uint64_t *ka;
+    uint64_t *kb;
+    const lh_index *ia;
+    lh_index *ib;
+    const uint8_t *dig; /* per item its digit, or NULL: the key's bits */
+    int shift;
+    uint64_t mask;
+    size_t n, *count;   /* per thread 2^MAX_DIGIT counts, then places */
+} pass;
+
+static inline size_t digit_of(const pass *p, size_t i)
 {
-    enum { MAX_DIGIT = 12 };
-    size_t count[1 << MAX_DIGIT];
+    return p->dig ? p->dig[i] : (size_t)((p->ka[i] >> p->shift) & p->mask);
+}
+
+static void count_share(void *ctx, int w, int nw)
+{
+    const pass *p = ctx;
+    size_t *count = p->count + ((size_t)w << MAX_DIGIT);
+    memset(count, 0, ((size_t)p->mask + 1) * sizeof *count);
+    for (size_t i = lh__share(p->n, w, nw), hi = lh__share(p->n, w + 1, nw); i < hi; i++) count[digit_of(p, i)]++;
+}
+
+static void move_share(void *ctx, int w, int nw)
+{
+    const pass *p = ctx;
+    size_t *place = p->count + ((size_t)w << MAX_DIGIT);
+    for (size_t i = lh__share(p->n, w, nw), hi = lh__share(p->n, w + 1, nw); i < hi; i++) {
+        const size_t o = place[digit_of(p, i)]++;
+        if (p->kb) p->kb[o] = p->ka[i];
+        p->ib[o] = p->ia[i];
+    }
+}
+
+static void counting_pass(pass *p, int nw)
+{
+    lh__par_for(nw, count_share, p);
+    size_t sum = 0; /* digit by digit, thread by thread: a thread's first place */
+    for (size_t b = 0; b <= p->mask; b++)
+        for (int w = 0; w < nw; w++) {
+            size_t *c = p->count + ((size_t)w << MAX_DIGIT) + b, k = *c;
+            *c = sum;
+            sum += k;
+        }
+    lh__par_for(nw, move_share, p);
+}
+
+/* LSD radix sort of (key, idx) pairs on the low `bits` bits, in as few passes of
+ * at most MAX_DIGIT bits as there can be (a count table of 4096 stays in L1/L2);
+ * the passes go back and forth between the arrays and the scratch k2, i2. count:
+ * nw << MAX_DIGIT entries. */
+static void radix_sort(uint64_t *key, lh_index *idx, uint64_t *k2, lh_index *i2, size_t n, int bits,
+                       size_t *count, int nw)
+{
     const int passes = (bits + MAX_DIGIT - 1) / MAX_DIGIT;
     const int digit = passes ? (bits + passes - 1) / passes : 0;
-    const uint64_t mask = (UINT64_C(1) << digit) - 1;
     uint64_t *ka = key, *kb = k2;
     lh_index *ia = idx, *ib = i2;
     for (int shift = 0; shift < bits; shift += digit) {
-        memset(count, 0, sizeof count);
-        for (size_t i = 0; i < n; i++) count[(ka[i] >> shift) & mask]++;
-        size_t sum = 0;
-        for (size_t b = 0; b <= mask; b++) {
-            size_t c = count[b];
-            count[b] = sum;
-            sum += c;
-        }
-        for (size_t i = 0; i < n; i++) {
-            size_t o = count[(ka[i] >> shift) & mask]++;
-            kb[o] = ka[i];
-            ib[o] = ia[i];
-        }
+        pass p = {ka, kb, ia, ib, NULL, shift, (UINT64_C(1) << digit) - 1, n, count};
+        counting_pass(&p, nw);
         uint64_t *kt = ka;
         ka = kb, kb = kt;
         lh_index *it = ia;
@@ -122,19 +164,34 @@ static void radix_sort(uint64_t *key, lh_index *idx, uint64_t *k2, lh_index *i2,
 /* Equal sites share a Morton key, and the radix sort keeps a run of equal keys in
  * increasing index order. A short run is searched pair by pair for equal sites, a
  * long one sorted exactly (lexicographically, ties by index) so that equal sites are
- * adjacent; either way the smallest index of equal sites is the vertex. Compacts the
- * distinct sites into idx (Morton order) and returns their number. */
-static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_index *tmp)
+ * adjacent; either way the smallest index of equal sites is the vertex. Threads
+ * share the runs (runs_share): each compacts the distinct sites of its runs at the
+ * start of its share of idx, and the shares are then put end to end (merge_runs),
+ * which returns the number of distinct sites, in Morton order in idx. */
+typedef struct runs {
+    lh__eng *t;
+    const uint64_t *key;
+    lh_index *idx, *tmp;
+    size_t from[LH__MAX_THREADS + 1]; /* share w: runs starting in from[w]..from[w+1]-1 */
+    size_t nrep[LH__MAX_THREADS], ndup[LH__MAX_THREADS];
+} runs;
+
+static void runs_share(void *ctx, int w, int nw)
 {
     enum { FEW = 8 }; /* the keys' resolution makes most runs one or two sites */
+    runs *u = ctx;
+    lh__eng *t = u->t;
+    const uint64_t *key = u->key;
+    lh_index *idx = u->idx;
     lh__lex c = {t->xyz, t->d};
-    size_t nrep = 0;
-    t->ndup = 0;
-    for (size_t i = 0; i < t->n;) {
+    const size_t lo = u->from[w], hi = u->from[w + 1];
+    size_t nrep = lo, ndup = 0;
+    (void)nw;
+    for (size_t i = lo; i < hi;) {
         size_t j = i + 1;
-        while (j < t->n && key[j] == key[i]) j++;
+        while (j < hi && key[j] == key[i]) j++;
         const int sorted = j - i > FEW;
-        if (sorted) lh__sort_idx(idx + i, tmp, j - i, lh__lex_cmp, &c);
+        if (sorted) lh__sort_idx(idx + i, u->tmp + i, j - i, lh__lex_cmp, &c);
         const size_t first = nrep; /* this run's distinct sites: idx[first..nrep) */
         for (size_t k = i; k < j; k++) {
             lh_index s = idx[k], rep = s;
@@ -145,57 +202,97 @@ static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_inde
                 }
             t->dup[s] = rep;
             if (rep != s)
-                t->ndup++;
+                ndup++;
             else
                 idx[nrep++] = s;
         }
         i = j;
     }
+    u->nrep[w] = nrep - lo;
+    u->ndup[w] = ndup;
+}
+
+static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_index *tmp, int nw)
+{
+    runs u = {.t = t, .key = key, .idx = idx, .tmp = tmp};
+    const size_t n = t->n;
+    for (int w = 0; w <= nw; w++) { /* share boundaries moved to the next run's start */
+        size_t x = lh__share(n, w, nw);
+        while (x > 0 && x < n && key[x] == key[x - 1]) x++;
+        u.from[w] = w && x < u.from[w - 1] ? u.from[w - 1] : x;
+    }
+    lh__par_for(nw, runs_share, &u);
+    size_t nrep = u.nrep[0];
+    t->ndup = u.ndup[0];
+    for (int w = 1; w < nw; w++) {
+        memmove(idx + nrep, idx + u.from[w], u.nrep[w] * sizeof *idx);
+        nrep += u.nrep[w];
+        t->ndup += u.ndup[w];
+    }
     return nrep;
 }
 
-/* BRIO rounds: a site joins round r with probability 2^-(r+1) (r capped); rounds
- * go from the rarest to the commonest, each keeping the Morton order. */
-static void brio_rounds(lh__eng *b, lh_index *tmp, uint8_t *round)
+/* BRIO rounds: a site joins round r with probability 2^-(r+1) (r capped), drawn
+ * from a hash of the seed and its position (so that threads can share the draw);
+ * rounds go from the rarest to the commonest, each keeping the Morton order. */
+typedef struct brio {
+    uint8_t *round;
+    uint64_t seed;
+} brio;
+
+static void draw_rounds(void *ctx, size_t lo, size_t hi)
 {
-    enum { ROUNDS = LH__BRIO_ROUNDS };
-    size_t n = b->norder, start[ROUNDS + 1] = {0};
-    for (size_t i = 0; i < n; i++) {
-        uint64_t x = lh__rng_next(&b->rng);
+    const brio *b = ctx;
+    for (size_t i = lo; i < hi; i++) {
+        uint64_t x = b->seed + (uint64_t)i * UINT64_C(0x9e3779b97f4a7c15); /* splitmix64 */
+        x = (x ^ (x >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
+        x = (x ^ (x >> 27)) * UINT64_C(0x94d049bb133111eb);
+        x ^= x >> 31;
         int r = 0;
-        while (r < ROUNDS - 1 && (x & 1)) {
+        while (r < LH__BRIO_ROUNDS - 1 && (x & 1)) {
             r++;
             x >>= 1;
         }
-        round[i] = (uint8_t)(ROUNDS - 1 - r);
-        start[round[i] + 1]++;
+        b->round[i] = (uint8_t)(LH__BRIO_ROUNDS - 1 - r);
     }
-    for (int r = 0; r < ROUNDS; r++) start[r + 1] += start[r];
-    for (size_t i = 0; i < n; i++) tmp[start[round[i]]++] = b->order[i];
-    for (int r = 0; r < ROUNDS; r++) b->round_end[r] = start[r]; /* now the ends */
-    memcpy(b->order, tmp, n * sizeof *tmp);
+}
+
+static void brio_rounds(lh__eng *e, lh_index *tmp, uint8_t *round, size_t *count, int nw)
+{
+    const size_t n = e->norder;
+    brio b = {round, lh__rng_next(&e->rng)};
+    lh__par_range(e->threads, n, draw_rounds, &b);
+    pass p = {NULL, NULL, e->order, tmp, round, 0, (1u << 5) - 1, n, count};
+    counting_pass(&p, nw);
+    size_t end[LH__BRIO_ROUNDS] = {0};
+    for (size_t i = 0; i < n; i++) end[round[i]]++;
+    for (int r = 0; r < LH__BRIO_ROUNDS; r++) e->round_end[r] = end[r] + (r ? e->round_end[r - 1] : 0);
+    memcpy(e->order, tmp, n * sizeof *tmp);
 }
 
 lh_status lh__eng_order(lh__eng *b)
 {
     lh__eng *t = b;
     size_t n = t->n;
+    const int nw = lh__par_width(t->threads, n);
     uint64_t *key = lh__alloc(&t->alloc, (n + 1) * sizeof *key), *k2 = lh__alloc(&t->alloc, (n + 1) * sizeof *k2);
     lh_index *idx = lh__alloc(&t->alloc, (n + 1) * sizeof *idx), *i2 = lh__alloc(&t->alloc, (n + 1) * sizeof *i2);
-    lh_status st = key && k2 && idx && i2 ? LH_OK : LH_ERR_NOMEM;
+    size_t *count = lh__alloc(&t->alloc, ((size_t)nw << MAX_DIGIT) * sizeof *count);
+    lh_status st = key && k2 && idx && i2 && count ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK && n) {
         morton_keys(t, key);
         for (size_t i = 0; i < n; i++) idx[i] = (lh_index)i;
-        radix_sort(key, idx, k2, i2, n, morton_bits(t->d, n) * t->d);
+        radix_sort(key, idx, k2, i2, n, morton_bits(t->d, n) * t->d, count, nw);
         b->order = idx;
-        b->norder = merge_runs(t, key, idx, i2);
-        brio_rounds(b, i2, (uint8_t *)k2);
+        b->norder = merge_runs(t, key, idx, i2, nw);
+        brio_rounds(b, i2, (uint8_t *)k2, count, lh__par_width(t->threads, b->norder));
         idx = NULL; /* now b->order */
     }
     lh__free(&t->alloc, key);
     lh__free(&t->alloc, k2);
     lh__free(&t->alloc, idx);
     lh__free(&t->alloc, i2);
+    lh__free(&t->alloc, count);
     return st;
 }
 

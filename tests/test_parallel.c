@@ -144,6 +144,41 @@ LH_TEST(every_allocation_failure_is_survived_with_threads)
     free(x);
 }
 
+/* Duplicates merged by threads (order.c shares the runs of equal Morton keys): 500
+ * distinct sites, each 1 to 200 times over in a random order, so that runs are
+ * long (sorted exactly) and cross the threads' shares. Same output as one thread,
+ * and every copy points at the smallest index of its site. */
+LH_TEST(duplicates_are_merged_alike_by_threads)
+{
+    enum { DISTINCT = 500, N = 50000 };
+    double *x = malloc(N * 2 * sizeof *x), base[DISTINCT][2];
+    int *site = malloc(N * sizeof *site);
+    size_t first[DISTINCT], distinct = 0;
+    lh_fam_seed(5);
+    for (int k = 0; k < DISTINCT; k++) base[k][0] = lh_fam_unif(), base[k][1] = lh_fam_unif(), first[k] = N;
+    for (size_t i = 0; i < N; i++) {
+        int k = site[i] = (int)(lh_fam_unif() * lh_fam_unif() * DISTINCT); /* skewed: some very often */
+        x[2 * i] = base[k][0], x[2 * i + 1] = base[k][1];
+        if (first[k] == N) first[k] = i, distinct++;
+    }
+    lh_options o;
+    lh_options_default(&o);
+    lh_tri *one = NULL, *two = NULL;
+    LH_EXPECT_EQ_INT(lh_delaunay(2, N, x, &o, &one), LH_OK);
+    o.threads = 2;
+    LH_EXPECT_EQ_INT(lh_delaunay(2, N, x, &o, &two), LH_OK);
+    if (one && two) {
+        LH_EXPECT_TRUE(lh_test_same_tri(one, two));
+        LH_EXPECT_EQ_INT((long)lh_tri_duplicate_count(two), (long)(N - distinct));
+        const lh_index *of = lh_tri_duplicate_of(two);
+        for (size_t i = 0; i < N && !LH_FAILED(); i++) LH_EXPECT_EQ_INT((long)of[i], (long)first[site[i]]);
+    }
+    lh_tri_free(one);
+    lh_tri_free(two);
+    free(site);
+    free(x);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
@@ -151,6 +186,7 @@ int main(int argc, char **argv)
         LH_CASE(workers_insert_sites),
         LH_CASE(deferred_sites_are_inserted_afterwards),
         LH_CASE(every_allocation_failure_is_survived_with_threads),
+        LH_CASE(duplicates_are_merged_alike_by_threads),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }
