@@ -262,7 +262,8 @@ static void brio_rounds(lh__eng *e, lh_index *tmp, uint8_t *round, size_t *count
     const size_t n = e->norder;
     brio b = {round, lh__rng_next(&e->rng)};
     lh__par_range(e->threads, n, draw_rounds, &b);
-    pass p = {NULL, NULL, e->order, tmp, round, 0, (1u << 5) - 1, n, count};
+    _Static_assert(LH__BRIO_ROUNDS <= 32, "a round is a digit below 32");
+    pass p = {NULL, NULL, e->order, tmp, round, 0, 31, n, count};
     counting_pass(&p, nw);
     size_t end[LH__BRIO_ROUNDS] = {0};
     for (size_t i = 0; i < n; i++) end[round[i]]++;
