@@ -136,6 +136,10 @@ static void counting_pass(pass *p, int nw)
     lh__par_for(nw, move_share, p);
 }
 
+/* After counting_pass: where the items of digit b end (the last share's places have
+ * moved past its own, which come last in b). */
+static inline size_t digit_end(const pass *p, int nw, size_t b) { return p->count[((size_t)(nw - 1) << MAX_DIGIT) + b]; }
+
 /* LSD radix sort of (key, idx) pairs on the low `bits` bits, in as few passes of
  * at most MAX_DIGIT bits as there can be (a count table of 4096 stays in L1/L2);
  * the passes go back and forth between the arrays and the scratch k2, i2. count:
@@ -265,9 +269,7 @@ static void brio_rounds(lh__eng *e, lh_index *tmp, uint8_t *round, size_t *count
     _Static_assert(LH__BRIO_ROUNDS <= 32, "a round is a digit below 32");
     pass p = {NULL, NULL, e->order, tmp, round, 0, 31, n, count};
     counting_pass(&p, nw);
-    size_t end[LH__BRIO_ROUNDS] = {0};
-    for (size_t i = 0; i < n; i++) end[round[i]]++;
-    for (int r = 0; r < LH__BRIO_ROUNDS; r++) e->round_end[r] = end[r] + (r ? e->round_end[r - 1] : 0);
+    for (int r = 0; r < LH__BRIO_ROUNDS; r++) e->round_end[r] = digit_end(&p, nw, (size_t)r);
     memcpy(e->order, tmp, n * sizeof *tmp);
 }
 
