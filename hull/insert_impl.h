@@ -92,7 +92,7 @@ static inline int push(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_
 
 /* Whether cell c (held) conflicts with e->q (engine.h: the rule for infinite
  * cells); -1 when a cell it needs is another worker's. */
-static inline int conflict(lh__eng *e, lh_index c)
+static LH__ALWAYS_INLINE int conflict(lh__eng *e, lh_index c)
 {
     const lh__tds *t = &e->tds;
     const lh_index *v = t->vert + (size_t)c * NV;

@@ -2,11 +2,13 @@
  * parallel.c — lh__eng_build's insertions with several threads (lh_options.threads).
  *
  * Each BRIO round with enough sites is a phase: its sites, in Morton order, are
- * cut into chunks of consecutive sites (regions of space), about CHUNKS per worker,
- * which the workers take in turn (so that they end together) and insert at once
- * into the one cell store under cell locks (parallel.h; Batista, Devillers & Lévy
- * 2010, §4). Two workers meet only where one's region ends and the other's began
- * long before. New cells come from blocks above the store's top, taken by an atomic
+ * cut into chunks of consecutive sites (regions of space), CHUNKS per worker, and
+ * the chunks into one run per worker, which the workers insert at once into the one
+ * cell store under cell locks (parallel.h; Batista, Devillers & Lévy 2010, §4). A
+ * worker goes through its run from the front; one that has finished its own takes
+ * chunks from the back of the run with the most left (work stealing), so that they
+ * end together. Two workers so meet only where one's run ends and the other's began
+ * long before, and where a thief's chunk meets its victim's. New cells come from blocks above the store's top, taken by an atomic
  * add (worker 0 also has the free list), and a worker's scratch is allocated
  * before: nothing is allocated while they run (the store is frozen), and a worker
  * out of blocks stops. After the phase the blocks' rests and the free lists are
@@ -48,6 +50,8 @@ typedef struct worker {
     lh_pred *pred;    /* its predicate context (worker 0: the engine's) */
     lh_index live0;   /* its store's live count at the start */
     lh_index hint;    /* where its last phase ended (-1: none) */
+    lh_index *again;  /* the sites of a chunk it deferred, tried again after it */
+    size_t again_cap;
     size_t sites;     /* sites of the chunks it took */
     lh_status st;
 } worker;
@@ -60,7 +64,7 @@ typedef struct pctx {
     lh_index own_cap;
     lh__par_shared sh;          /* deferred: e->norder entries */
     size_t first, count, nchunks; /* the phase's sites, cut into chunks */
-    _Atomic size_t next_chunk;
+    _Atomic uint64_t run[MAX_WORKERS]; /* worker i's chunks not yet taken: lo | hi << 32 */
     size_t mark_sites;          /* vertices and cells at the end of the round     */
     lh_index mark_live;         /* before the last: the growth per site since     */
 } pctx;
@@ -77,6 +81,7 @@ static void release(pctx *c)
         lh__free(&e->alloc, w->scratch.sorted);
         lh__free(&e->alloc, w->scratch.spos);
         lh__free(&e->alloc, w->par.log);
+        lh__free(&e->alloc, w->again);
         if (i) lh_pred_free(w->pred);
     }
     lh__free(&e->alloc, c->w);
@@ -122,6 +127,20 @@ static lh_status cover_own(pctx *c)
     c->own_cap = c->own ? e->tds.cap : 0;
     if (!c->own) return LH_ERR_NOMEM;
     for (lh_index i = 0; i < e->tds.cap; i++) atomic_init(&c->own[i], 0);
+    return LH_OK;
+}
+
+/* Each worker's list of sites to try again holds a chunk's sites, `sites` at most. */
+static lh_status cover_again(pctx *c, size_t sites)
+{
+    for (int i = 0; i < c->nw; i++) {
+        worker *w = c->w + i;
+        if (w->again_cap >= sites) continue;
+        lh__free(&c->e->alloc, w->again);
+        w->again = lh__alloc(&c->e->alloc, sites * sizeof *w->again);
+        w->again_cap = w->again ? sites : 0;
+        if (!w->again) return LH_ERR_NOMEM;
+    }
     return LH_OK;
 }
 
@@ -174,7 +193,41 @@ static void prepare(pctx *c, int i, uint32_t round)
     else w->par.stopped = 1; /* no cell to start from: the sequential pass does it all */
 }
 
-/* Worker i's phase: chunks, taken in turn until none is left or it is out of cells. */
+static uint32_t run_lo(uint64_t r) { return (uint32_t)r; }
+static uint32_t run_hi(uint64_t r) { return (uint32_t)(r >> 32); }
+
+/* Takes the first chunk of run j (front) or its last (!front); -1 if it is empty. */
+static long take_chunk(pctx *c, int j, int front)
+{
+    uint64_t r = atomic_load_explicit(&c->run[j], memory_order_relaxed);
+    for (;;) {
+        const uint32_t lo = run_lo(r), hi = run_hi(r);
+        if (lo >= hi) return -1;
+        const uint64_t to = front ? r + 1 : r - ((uint64_t)1 << 32);
+        if (atomic_compare_exchange_weak_explicit(&c->run[j], &r, to, memory_order_relaxed, memory_order_relaxed))
+            return front ? (long)lo : (long)hi - 1;
+    }
+}
+
+/* Worker i's next chunk: the front of its run, else the back of the run with the
+ * most chunks left (far from where its owner works); -1 when none is left. */
+static long next_chunk(pctx *c, int i)
+{
+    long k = take_chunk(c, i, 1);
+    while (k < 0) {
+        int most = -1;
+        uint32_t left = 0;
+        for (int j = 0; j < c->nw; j++) {
+            const uint64_t r = atomic_load_explicit(&c->run[j], memory_order_relaxed);
+            if (run_hi(r) > run_lo(r) && run_hi(r) - run_lo(r) > left) left = run_hi(r) - run_lo(r), most = j;
+        }
+        if (most < 0) return -1;
+        k = take_chunk(c, most, 0);
+    }
+    return k;
+}
+
+/* Worker i's phase: chunks until none is left or it is out of cells. */
 static void work(void *ctx, int i, int nw)
 {
     pctx *c = ctx;
@@ -182,11 +235,14 @@ static void work(void *ctx, int i, int nw)
     (void)nw;
     w->st = LH_OK;
     while (w->st == LH_OK && !w->par.stopped) {
-        size_t k = atomic_fetch_add_explicit(&c->next_chunk, 1, memory_order_relaxed);
-        if (k >= c->nchunks) break;
+        const long k = next_chunk(c, i);
+        if (k < 0) break;
         size_t f = c->first + lh__share(c->count, (int)k, (int)c->nchunks);
         size_t to = c->first + lh__share(c->count, (int)k + 1, (int)c->nchunks);
+        w->par.again = w->again, w->par.nagain = 0;
         w->st = w->e.insert_par(&w->e, f, to - f, NULL);
+        w->par.again = NULL; /* deferred again: for the sequential pass */
+        if (w->st == LH_OK && w->par.nagain) w->st = w->e.insert_par(&w->e, 0, w->par.nagain, w->again);
         w->sites += to - f;
     }
     lh__par_release(&w->par, -1);
@@ -194,6 +250,10 @@ static void work(void *ctx, int i, int nw)
 
 void lh__par_defer(lh__par *p, lh_index q)
 {
+    if (p->again) {
+        p->again[p->nagain++] = q;
+        return;
+    }
     size_t i = atomic_fetch_add_explicit(&p->sh->ndeferred, 1, memory_order_relaxed);
     p->sh->deferred[i] = q;
 }
@@ -292,16 +352,23 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     c->first = first, c->count = count;
     size_t chunks = count / MIN_CHUNK < (size_t)nw * CHUNKS ? count / MIN_CHUNK : (size_t)nw * CHUNKS;
     c->nchunks = chunks > (size_t)nw ? chunks : (size_t)nw;
-    atomic_store(&c->next_chunk, 0);
+    for (int i = 0; i < nw; i++) {
+        const uint64_t lo = lh__share(c->nchunks, i, nw), hi = lh__share(c->nchunks, i + 1, nw);
+        atomic_store(&c->run[i], lo | hi << 32);
+    }
+    st = cover_again(c, lh__share(count, 1, (int)c->nchunks) + 1);
+    if (st != LH_OK) return st;
     for (int i = 0; i < nw; i++) prepare(c, i, t->round + (uint32_t)i * rounds);
     lh__par_for(nw, work, c); /* a worker whose thread does not start runs after */
     st = merge(c, start);
     const lh__insert_fn seq = e->insert ? e->insert : lh__eng_insert_generic;
-    const size_t nd = atomic_load(&c->sh.ndeferred), taken = atomic_load(&c->next_chunk);
+    const size_t nd = atomic_load(&c->sh.ndeferred);
     if (st == LH_OK && nd) st = seq(e, 0, nd, c->sh.deferred);
-    if (st == LH_OK && taken < c->nchunks) { /* the chunks no worker took (out of cells) */
-        size_t from = first + lh__share(count, (int)taken, (int)c->nchunks);
-        st = seq(e, from, first + count - from, NULL);
+    for (int i = 0; i < nw && st == LH_OK; i++) { /* the chunks no worker took (out of cells) */
+        const uint64_t r = atomic_load(&c->run[i]);
+        if (run_lo(r) >= run_hi(r)) continue;
+        const size_t from = first + lh__share(count, (int)run_lo(r), (int)c->nchunks);
+        st = seq(e, from, first + lh__share(count, (int)run_hi(r), (int)c->nchunks) - from, NULL);
     }
     return st;
 }

@@ -49,9 +49,11 @@ typedef struct lh__par {
     size_t nlog, log_cap;
     lh__par_shared *sh;
     lh_index live_shift;        /* the store's live count moved by refills, not cells */
+    lh_index *again;            /* non-NULL: deferred sites kept here, to be tried */
+    size_t nagain;              /* again once the chunk is done */
 } lh__par;
 
-/* parallel.c: site q left for the sequential pass. */
+/* parallel.c: site q left for a second try (p->again) or the sequential pass. */
 void lh__par_defer(lh__par *p, lh_index q);
 /* parallel.c: after an insertion failed for want of cells (not of scratch), a new
  * block of cells for t, the rest of the old one on its free list; 0 when there was
