@@ -35,8 +35,8 @@ static size_t scaled(size_t n2, int d) { return d - 2 < 5 ? n2 >> (2 * (d - 2)) 
 enum {
     MIN_RUN = 4096,
     MIN_BUILT = 8192,
-    CHUNKS = 8,          /* chunks of a phase per worker: taken in turn, they balance */
-    MIN_CHUNK = 256,     /* sites in a chunk at least (each starts with a walk) */
+    CHUNKS = 64,         /* chunks of a phase per worker: the last ones balance the ends */
+    MIN_CHUNK = 256,     /* sites in a chunk at least, in 2D (a stolen one starts with a long walk) */
     LOG_CAP = 1 << 14,   /* cells a worker may hold at once */
     SCRATCH = 1 << 12,   /* boundary facets of the largest cavity a worker takes */
     BLOCK = 4 * SCRATCH, /* new cells a worker takes at a time */
@@ -50,7 +50,7 @@ typedef struct worker {
     lh_pred *pred;    /* its predicate context (worker 0: the engine's) */
     lh_index live0;   /* its store's live count at the start */
     lh_index hint;    /* where its last phase ended (-1: none) */
-    lh_index *again;  /* the sites of a chunk it deferred, tried again after it */
+    lh_index *again;  /* the sites it deferred, tried again once its chunks are done */
     size_t again_cap;
     size_t sites;     /* sites of the chunks it took */
     lh_status st;
@@ -130,7 +130,7 @@ static lh_status cover_own(pctx *c)
     return LH_OK;
 }
 
-/* Each worker's list of sites to try again holds a chunk's sites, `sites` at most. */
+/* Each worker's list of sites to try again holds `sites` (a phase's) at most. */
 static lh_status cover_again(pctx *c, size_t sites)
 {
     for (int i = 0; i < c->nw; i++) {
@@ -234,17 +234,17 @@ static void work(void *ctx, int i, int nw)
     worker *w = c->w + i;
     (void)nw;
     w->st = LH_OK;
+    w->par.again = w->again, w->par.nagain = 0;
     while (w->st == LH_OK && !w->par.stopped) {
         const long k = next_chunk(c, i);
         if (k < 0) break;
         size_t f = c->first + lh__share(c->count, (int)k, (int)c->nchunks);
         size_t to = c->first + lh__share(c->count, (int)k + 1, (int)c->nchunks);
-        w->par.again = w->again, w->par.nagain = 0;
         w->st = w->e.insert_par(&w->e, f, to - f, NULL);
-        w->par.again = NULL; /* deferred again: for the sequential pass */
-        if (w->st == LH_OK && w->par.nagain) w->st = w->e.insert_par(&w->e, 0, w->par.nagain, w->again);
         w->sites += to - f;
     }
+    w->par.again = NULL; /* deferred again: for the sequential pass */
+    if (w->st == LH_OK && w->par.nagain) w->st = w->e.insert_par(&w->e, 0, w->par.nagain, w->again);
     lh__par_release(&w->par, -1);
 }
 
@@ -335,8 +335,9 @@ static lh_status phase(pctx *c, size_t first, size_t count)
        sites near the hull make fewer), with a margin; a worker out of blocks stops */
     const double per_site = (double)(t->live - c->mark_live) / (double)(first - c->mark_sites);
     const size_t need = (size_t)(per_site * (double)count * 1.04) + 2 * (size_t)nw * BLOCK;
-    const uint32_t rounds = (uint32_t)(2 * count + 2); /* each worker's, at most (a refill
-                                                           retries an insertion) */
+    const uint32_t rounds = (uint32_t)(4 * count + 2); /* each worker's, at most: a site is
+                                                           tried twice (lh__par_defer), a try
+                                                           takes 2 rounds when it refills */
     lh_status st = lh__tds_reserve_top(t, need);
     if (st == LH_OK) st = cover_own(c);
     if (st != LH_OK) return st;
@@ -350,13 +351,14 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     c->sh.end = (size_t)t->cap;
     atomic_store(&c->sh.ndeferred, 0);
     c->first = first, c->count = count;
-    size_t chunks = count / MIN_CHUNK < (size_t)nw * CHUNKS ? count / MIN_CHUNK : (size_t)nw * CHUNKS;
+    const size_t most = count / (scaled(MIN_CHUNK, e->d) | 1);
+    size_t chunks = most < (size_t)nw * CHUNKS ? most : (size_t)nw * CHUNKS;
     c->nchunks = chunks > (size_t)nw ? chunks : (size_t)nw;
     for (int i = 0; i < nw; i++) {
         const uint64_t lo = lh__share(c->nchunks, i, nw), hi = lh__share(c->nchunks, i + 1, nw);
         atomic_store(&c->run[i], lo | hi << 32);
     }
-    st = cover_again(c, lh__share(count, 1, (int)c->nchunks) + 1);
+    st = cover_again(c, count);
     if (st != LH_OK) return st;
     for (int i = 0; i < nw; i++) prepare(c, i, t->round + (uint32_t)i * rounds);
     lh__par_for(nw, work, c); /* a worker whose thread does not start runs after */
@@ -439,8 +441,8 @@ lh_status lh__eng_insert_parallel(lh__eng *e, size_t at)
 {
     const lh__insert_fn seq = e->insert ? e->insert : lh__eng_insert_generic;
     const int nw = e->threads;
-    /* a phase's workers take disjoint ranges of 2 count + 2 visit rounds each */
-    const size_t most = LH__TDS_MAX_ROUND / (4 * (size_t)nw) - 2;
+    /* a phase's workers take disjoint ranges of 4 count + 2 visit rounds each */
+    const size_t most = LH__TDS_MAX_ROUND / (8 * (size_t)nw) - 2;
     pctx c;
     lh_status st = setup(&c, e, nw);
     for (int r = 0; r < LH__BRIO_ROUNDS && st == LH_OK;) {
