@@ -56,12 +56,17 @@
 #endif
 
 /* HOLD(e, c): whether this computation may read and write cell c; always in a
- * sequential build, once locked in a parallel worker. */
+ * sequential build, once taken in a parallel worker. MARK / SET_MARK: cell c's
+ * visit mark, which other workers read and take (parallel.h). */
 #ifdef LH_T_PARALLEL
 #include "parallel.h"
-#define HOLD(e, c) lh__par_lock((e)->par, c)
+#define HOLD(e, c) lh__par_lock((e)->par, &(e)->tds, c)
+#define MARK(t, c) atomic_load_explicit(lh__par_marks(t) + (c), memory_order_relaxed)
+#define SET_MARK(t, c, m) atomic_store_explicit(lh__par_marks(t) + (c), m, memory_order_relaxed)
 #else
 #define HOLD(e, c) 1
+#define MARK(t, c) ((t)->stamp[c])
+#define SET_MARK(t, c, m) ((t)->stamp[c] = (m))
 #endif
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -72,14 +77,9 @@
 #define LH_PREFETCH_W(p) ((void)(p))
 #endif
 
-/* What the conflict search reads of cell c first: its visit mark, its vertices,
- * and in a parallel worker its owner byte (written: it is taken by CAS). */
-#ifdef LH_T_PARALLEL
-#define PREFETCH_CELL(e, c) \
-    (LH_PREFETCH(t->stamp + (c)), LH_PREFETCH(t->vert + (size_t)(c) * NV), LH_PREFETCH_W((e)->par->own + (c)))
-#else
-#define PREFETCH_CELL(e, c) (LH_PREFETCH(t->stamp + (c)), LH_PREFETCH(t->vert + (size_t)(c) * NV))
-#endif
+/* What the conflict search reads of cell c first: its visit mark (written: it is
+ * set, and in a parallel worker taken by CAS) and its vertices. */
+#define PREFETCH_CELL(e, c) (LH_PREFETCH_W(t->stamp + (c)), LH_PREFETCH(t->vert + (size_t)(c) * NV))
 
 static inline int push(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_index x)
 {
@@ -173,7 +173,7 @@ static int grow_region(lh__eng *e, lh_index start, uint32_t in, uint32_t out)
     lh__tds *t = &e->tds;
     t->ncells = t->nbound = 0;
     size_t nb2 = 0;
-    t->stamp[start] = in;
+    SET_MARK(t, start, in);
     if (!push(t, &t->cells, &t->cells_cap, &t->ncells, start)) return 0;
     for (size_t i = 0; i < t->ncells; i++) {
         lh_index c = t->cells[i];
@@ -188,18 +188,18 @@ static int grow_region(lh__eng *e, lh_index start, uint32_t in, uint32_t out)
         for (int k = 0; k < NV; k++) {
             lh_index n = t->nbr[(size_t)c * NV + k];
             if (!HOLD(e, n)) return -1;
-            uint32_t st = t->stamp[n];
+            uint32_t st = MARK(t, n);
             if (st == in) continue;
             if (st != out) {
                 int x = conflict(e, n);
                 if (x < 0) return -1;
                 if (x) {
-                    t->stamp[n] = in;
+                    SET_MARK(t, n, in);
                     LH_PREFETCH(t->nbr + (size_t)n * NV); /* read when n is expanded */
                     if (!push(t, &t->cells, &t->cells_cap, &t->ncells, n)) return 0;
                     continue;
                 }
-                t->stamp[n] = out;
+                SET_MARK(t, n, out);
             }
             if (!push(t, &t->bound, &t->bound_cap, &nb2, c) || !push(t, &t->bound, &t->bound_cap, &nb2, k))
                 return 0;
@@ -428,7 +428,9 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
 {
     lh__tds *t = &e->tds;
     const lh_index q = e->q;
-    lh__tds_next_round(t);
+#ifndef LH_T_PARALLEL
+    lh__tds_next_round(t); /* a worker's attempt starts its rounds (lh__par_begin) */
+#endif
     uint32_t in = 4 * t->round, out = in + 1;
     int g = grow_region(e, start, in, out);
     if (g <= 0) return g ? LH__RETRY : LH_ERR_NOMEM;
@@ -561,7 +563,7 @@ static lh_status cavity_insert_2(lh__eng *e, lh_index start)
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list);
 #ifdef LH_T_PARALLEL
 /* A worker: inserts what it can, defers the rest (e->par). It still holds its hint
- * at the end, for the next call (parallel.c releases it). Fails only on an internal
+ * at the end, for the next call (parallel.c lets it go). Fails only on an internal
  * error. */
 lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list)
 {
@@ -571,16 +573,23 @@ lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list
     LH_T_PREPARE(e);
     for (size_t i = 0; i < count && (st == LH_OK || st == LH__RETRY || st == LH_ERR_NOMEM); i++) {
         e->q = list ? list[i] : (lh_index)(first + i);
-        lh_index c = p->stopped ? -2 : locate(e);
+        if (p->stopped) {
+            lh__par_defer(p, e->q);
+            continue;
+        }
+        lh__par_begin(p, t, e->hint);
+        lh_index c = locate(e);
         st = c >= 0 ? CAVITY_INSERT(e, c) : c == -1 ? LH_OK : LH__RETRY; /* -1: not a vertex */
-        if (st == LH_ERR_NOMEM && lh__par_refill(p, t)) st = CAVITY_INSERT(e, c);
+        if (st == LH_ERR_NOMEM && lh__par_refill(p, t)) {
+            t->round++; /* fresh marks; the cells taken so far stay held */
+            st = CAVITY_INSERT(e, c);
+        }
         if (st == LH_OK && c >= 0) {
             e->hint = t->fresh[0];
-            lh__par_keep(p, e->hint);
+            lh__par_keep(t, e->hint);
         } else if (st != LH_OK) {
             lh__par_defer(p, e->q);
         }
-        lh__par_release(p, e->hint);
     }
     lh__pred_count_filtered(e->pred, e->filtered);
     e->filtered = 0;
@@ -609,4 +618,6 @@ lh_status LH_T_NAME(lh__eng *e, size_t first, size_t count, const lh_index *list
 #undef CAVITY_INSERT
 #undef PREFETCH_CELL
 #undef HOLD
+#undef MARK
+#undef SET_MARK
 #undef NV

@@ -37,7 +37,6 @@ enum {
     MIN_BUILT = 8192,
     CHUNKS = 64,         /* chunks of a phase per worker: the last ones balance the ends */
     MIN_CHUNK = 256,     /* sites in a chunk at least, in 2D (a stolen one starts with a long walk) */
-    LOG_CAP = 1 << 14,   /* cells a worker may hold at once */
     SCRATCH = 1 << 12,   /* boundary facets of the largest cavity a worker takes */
     BLOCK = 4 * SCRATCH, /* new cells a worker takes at a time */
     MAX_WORKERS = LH__MAX_THREADS
@@ -60,8 +59,7 @@ typedef struct pctx {
     lh__eng *e;
     int nw;
     worker *w;
-    _Atomic unsigned char *own; /* e->tds.cap entries, all 0 between phases */
-    lh_index own_cap;
+    void *from_block;           /* the workers' published rounds (sh.from), unaligned */
     lh__par_shared sh;          /* deferred: e->norder entries */
     size_t first, count, nchunks; /* the phase's sites, cut into chunks */
     _Atomic uint64_t run[MAX_WORKERS]; /* worker i's chunks not yet taken: lo | hi << 32 */
@@ -80,12 +78,11 @@ static void release(pctx *c)
         lh__free(&e->alloc, w->scratch.ridge);
         lh__free(&e->alloc, w->scratch.sorted);
         lh__free(&e->alloc, w->scratch.spos);
-        lh__free(&e->alloc, w->par.log);
         lh__free(&e->alloc, w->again);
         if (i) lh_pred_free(w->pred);
     }
     lh__free(&e->alloc, c->w);
-    lh__free(&e->alloc, (void *)c->own);
+    lh__free(&e->alloc, c->from_block);
     lh__free(&e->alloc, c->sh.deferred);
 }
 
@@ -95,38 +92,27 @@ static lh_status setup(pctx *c, lh__eng *e, int nw)
     c->e = e;
     c->w = lh__alloc(&e->alloc, (size_t)nw * sizeof *c->w);
     c->sh.deferred = lh__alloc(&e->alloc, (e->norder + 1) * sizeof *c->sh.deferred);
-    if (!c->w || !c->sh.deferred) return LH_ERR_NOMEM;
+    c->from_block = lh__alloc(&e->alloc, (size_t)(nw + 1) * sizeof(lh__par_from));
+    if (!c->w || !c->sh.deferred || !c->from_block) return LH_ERR_NOMEM;
     memset(c->w, 0, (size_t)nw * sizeof *c->w);
     c->nw = nw;
     c->sh.block = BLOCK;
+    c->sh.nw = nw;
+    const uintptr_t line = sizeof(lh__par_from); /* 64: each worker's own cache line */
+    c->sh.from = (lh__par_from *)(((uintptr_t)c->from_block + line - 1) / line * line);
+    for (int i = 0; i < nw; i++) atomic_init(&c->sh.from[i].round, UINT32_MAX);
     for (int i = 0; i < nw; i++) {
         worker *w = c->w + i;
         w->hint = -1;
         w->scratch.alloc = e->alloc;
         w->scratch.nv = e->nv;
-        w->par.me = (unsigned char)(i + 1);
+        w->par.me = i;
         w->par.sh = &c->sh;
-        w->par.log_cap = LOG_CAP;
-        w->par.log = lh__alloc(&e->alloc, LOG_CAP * sizeof *w->par.log);
-        if (!w->par.log) return LH_ERR_NOMEM;
         lh_status st = lh__tds_scratch(&w->scratch, e->par_scratch ? e->par_scratch : SCRATCH);
         if (st == LH_OK && i) st = lh_pred_create(&e->alloc, &w->pred);
         if (i == 0) w->pred = e->pred;
         if (st != LH_OK) return st;
     }
-    return LH_OK;
-}
-
-/* The owner bytes cover the store's capacity (all 0: no phase runs). */
-static lh_status cover_own(pctx *c)
-{
-    lh__eng *e = c->e;
-    if (c->own_cap >= e->tds.cap) return LH_OK;
-    lh__free(&e->alloc, (void *)c->own);
-    c->own = lh__alloc(&e->alloc, (size_t)e->tds.cap);
-    c->own_cap = c->own ? e->tds.cap : 0;
-    if (!c->own) return LH_ERR_NOMEM;
-    for (lh_index i = 0; i < e->tds.cap; i++) atomic_init(&c->own[i], 0);
     return LH_OK;
 }
 
@@ -161,7 +147,7 @@ static lh_index free_start(const pctx *c, int upto, lh_index want)
 
 /* Worker i's engine for a phase: the shared store, no block of new cells yet
  * (worker 0 has the free list), its scratch, predicates, random stream, visit rounds
- * from `round`, and a start cell it holds. */
+ * after `round`, and a start cell it holds. */
 static void prepare(pctx *c, int i, uint32_t round)
 {
     lh__eng *e = c->e;
@@ -177,20 +163,20 @@ static void prepare(pctx *c, int i, uint32_t round)
     t->ridge = s->ridge, t->ridge_cap = s->ridge_cap;
     t->sorted = s->sorted, t->spos = s->spos, t->sorted_cap = s->sorted_cap;
     t->frozen = 1;
-    t->round = round;
     t->cap = t->top; /* no block yet (lh__par_refill) */
     /* top - live counts the free cells (lh__tds_reserve) */
     t->free_head = i ? -1 : e->tds.free_head;
     t->live = i ? t->top : t->top - (e->tds.top - e->tds.live);
     w->live0 = t->live;
     w->sites = 0;
-    w->par.own = c->own;
     w->par.stopped = 0;
     w->par.live_shift = 0;
     w->e.hint = free_start(c, i, w->hint >= 0 ? w->hint : e->hint);
-    w->par.nlog = 0;
-    if (w->e.hint >= 0) lh__par_keep(&w->par, w->e.hint);
+    t->round = round + 1; /* the hint held from the first round on (lh__par_begin) */
+    if (w->e.hint >= 0) lh__par_keep(t, w->e.hint);
     else w->par.stopped = 1; /* no cell to start from: the sequential pass does it all */
+    atomic_store(&c->sh.from[i].round, t->round);
+    t->round = round; /* lh__par_begin steps to round + 1 */
 }
 
 static uint32_t run_lo(uint64_t r) { return (uint32_t)r; }
@@ -245,7 +231,7 @@ static void work(void *ctx, int i, int nw)
     }
     w->par.again = NULL; /* deferred again: for the sequential pass */
     if (w->st == LH_OK && w->par.nagain) w->st = w->e.insert_par(&w->e, 0, w->par.nagain, w->again);
-    lh__par_release(&w->par, -1);
+    lh__par_release(&w->par);
 }
 
 void lh__par_defer(lh__par *p, lh_index q)
@@ -339,7 +325,6 @@ static lh_status phase(pctx *c, size_t first, size_t count)
                                                            tried twice (lh__par_defer), a try
                                                            takes 2 rounds when it refills */
     lh_status st = lh__tds_reserve_top(t, need);
-    if (st == LH_OK) st = cover_own(c);
     if (st != LH_OK) return st;
     if ((uint64_t)t->round + (uint64_t)nw * rounds + 2 >= LH__TDS_MAX_ROUND) {
         lh__tds_reset_rounds(t);
@@ -360,6 +345,7 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     }
     st = cover_again(c, count);
     if (st != LH_OK) return st;
+    c->sh.base = t->round + 1, c->sh.span = rounds;
     for (int i = 0; i < nw; i++) prepare(c, i, t->round + (uint32_t)i * rounds);
     lh__par_for(nw, work, c); /* a worker whose thread does not start runs after */
     st = merge(c, start);
