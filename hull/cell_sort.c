@@ -37,6 +37,8 @@ typedef struct rows {
     int lo[MAX_LEVELS], hi[MAX_LEVELS];
     size_t *scratch;             /* per level: bucket heads and ends */
     lh_index *pos;               /* 2 GROUP_MAX: positions of a group being sorted */
+    uint64_t *gkey;              /* GROUP_MAX: their packed keys (group_key) */
+    int kbits, kwidth;           /* vertices packed in a group key, kbits bits each */
     uint16_t *dig;               /* per row: its digit in the current pass */
 } rows;
 
@@ -121,28 +123,55 @@ static inline void move_row(const rows *r, size_t to, size_t from, int nv)
     r->orig[to] = r->orig[from];
 }
 
+/* A finite row's vertices 1..kwidth packed into one word, so that words compare
+ * as those vertices do lexicographically. */
+static inline uint64_t group_key(const rows *r, const lh_index *v)
+{
+    uint64_t key = (uint64_t)v[1];
+    for (int k = 2; k <= r->kwidth; k++) key = key << r->kbits | (uint64_t)v[k]; /* kbits <= 32 here */
+    return key;
+}
+
+/* Whether row x comes before row y of the same group whose keys are equal: the
+ * vertices after the packed ones. */
+static inline int tail_less(const rows *r, const lh_index *x, const lh_index *y, int nv)
+{
+    for (int k = r->kwidth + 1; k < nv; k++)
+        if (x[k] != y[k]) return x[k] < y[k];
+    return 0;
+}
+
 /* Rows lo..hi-1 (one first vertex, at most GROUP_MAX) sorted by their other
  * vertices: a bottom-up merge sort of their positions (a row is 2 nv + 1 entries, a
- * position one; the group is in the first-level cache), then each row moved once,
- * along the cycles of the permutation. Replaced heapsort for the groups of 30 (4D)
- * to 160 (5D) rows that every vertex has: 12% of a 4D run was that heapsort. */
+ * position one; the group is in the first-level cache) on keys that pack the next
+ * vertices (group_key: whole rows in 2D and 3D, the next 3 vertices in 4D and 5D
+ * below 2^21 sites), then each row moved once, along the cycles of the
+ * permutation. Replaced heapsort for the groups of 30 (4D) to 160 (5D) rows that
+ * every vertex has: 12% of a 4D run was that heapsort. */
 static void group_sort(const rows *r, size_t lo, size_t hi, int nv)
 {
     const size_t k = hi - lo;
     lh_index *a = r->pos, *b = r->pos + GROUP_MAX;
-    for (size_t i = 0; i < k; i++) a[i] = (lh_index)(lo + i);
+    const uint64_t *key = r->gkey;
+    for (size_t i = 0; i < k; i++) a[i] = (lh_index)i, r->gkey[i] = group_key(r, r->vert + (lo + i) * nv);
     for (size_t w = 1; w < k; w *= 2) {
         for (size_t s = 0; s < k; s += 2 * w) {
             const size_t m = s + w < k ? s + w : k, e = s + 2 * w < k ? s + 2 * w : k;
             size_t i = s, j = m, o = s;
-            while (i < m && j < e)
-                b[o++] = row_less(r->vert + (size_t)a[j] * nv, r->vert + (size_t)a[i] * nv, nv, r->n) ? a[j++] : a[i++];
+            while (i < m && j < e) {
+                const uint64_t kj = key[a[j]], ki = key[a[i]];
+                const int before = kj < ki || (kj == ki && tail_less(r, r->vert + (lo + (size_t)a[j]) * nv,
+                                                                     r->vert + (lo + (size_t)a[i]) * nv, nv));
+                b[o++] = before ? a[j] : a[i];
+                j += before, i += !before;
+            }
             while (i < m) b[o++] = a[i++];
             while (j < e) b[o++] = a[j++];
         }
         lh_index *x = a;
         a = b, b = x;
     }
+    for (size_t i = 0; i < k; i++) a[i] += (lh_index)lo;
     /* a[i]: the row that goes to lo + i; a done entry becomes -1 */
     lh_index v[LH__TDS_MAX_NV], nb[LH__TDS_MAX_NV];
     for (size_t i = 0; i < k; i++) {
@@ -312,10 +341,14 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
     const size_t per = (size_t)r.levels * 2 * ((size_t)1 << DIGIT_BITS);
     r.scratch = lh__alloc(&t->alloc, (size_t)nw * per * sizeof *r.scratch);
     r.pos = lh__alloc(&t->alloc, (size_t)nw * 2 * GROUP_MAX * sizeof *r.pos);
+    r.gkey = lh__alloc(&t->alloc, (size_t)nw * GROUP_MAX * sizeof *r.gkey);
     r.dig = lh__alloc(&t->alloc, ((size_t)t->top + 1) * sizeof *r.dig);
-    if (!r.scratch || !r.pos || !r.dig) {
+    r.kbits = bits;
+    r.kwidth = t->nv - 1 < 64 / bits ? t->nv - 1 : 64 / bits;
+    if (!r.scratch || !r.pos || !r.gkey || !r.dig) {
         lh__free(&t->alloc, r.scratch);
         lh__free(&t->alloc, r.pos);
+        lh__free(&t->alloc, r.gkey);
         lh__free(&t->alloc, r.dig);
         lh__free(&t->alloc, job);
         return LH_ERR_NOMEM;
@@ -324,6 +357,7 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
         job->r[w] = r;
         job->r[w].scratch = r.scratch + (size_t)w * per;
         job->r[w].pos = r.pos + (size_t)w * 2 * GROUP_MAX;
+        job->r[w].gkey = r.gkey + (size_t)w * GROUP_MAX;
     }
     for (lh_index c = 0; c < t->top; c++) orig[c] = c;
     lh__par_for(nw, canonical_share, job);
@@ -335,6 +369,7 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
     lh__par_for(nw, bucket_share, job);
     lh__free(&t->alloc, r.scratch);
     lh__free(&t->alloc, r.pos);
+    lh__free(&t->alloc, r.gkey);
     lh__free(&t->alloc, r.dig);
     lh__free(&t->alloc, job);
     return LH_OK;
