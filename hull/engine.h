@@ -86,12 +86,16 @@ typedef struct lh__eng {
                                  (hull/parallel.c), or NULL: Delaunay only */
     int threads;          /* lh_options.threads, resolved: the parallel phases'
                              workers and the shared loops' threads (1: one) */
-    struct lh__par *par;  /* a worker's locks and deferred sites (NULL: sequential) */
+    struct lh__par *par;  /* a worker's rounds and deferred sites (NULL: sequential) */
     size_t round_end[LH__BRIO_ROUNDS]; /* end of each BRIO round in order[] */
     size_t par_sites, par_deferred; /* sites given to parallel workers, and those
                                        they left to the sequential pass */
     size_t par_scratch;   /* tests: a worker's cavity bound in boundary facets (0:
                              parallel.c's), small to make workers defer sites */
+    size_t par_blocks;    /* tests: blocks of new cells a phase hands out (0: as many
+                             as the store holds), few to make workers stop */
+    size_t par_stopped;   /* workers stopped early (out of blocks, or no cell to
+                             start from), over all phases */
     int conflict_sign;    /* the lifted sign that means conflict: -1 for Delaunay
                              (inside), +1 furthest-site (outside); 0: finite_conflict
                              decides (NULL: no finite cell conflicts) */

@@ -302,6 +302,7 @@ static lh_status merge(pctx *c, lh_index start)
         if (i) lh__pred_move_counters(e->pred, w->pred);
         w->hint = w->e.hint;
         e->par_sites += w->sites;
+        e->par_stopped += (size_t)w->par.stopped;
         if (w->st != LH_OK && st == LH_OK) st = w->st;
     }
     e->par_deferred += atomic_load(&c->sh.ndeferred);
@@ -334,6 +335,7 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     const lh_index start = t->top;
     atomic_store(&c->sh.cursor, (size_t)start);
     c->sh.end = (size_t)t->cap;
+    if (e->par_blocks && c->sh.end - (size_t)start > e->par_blocks * BLOCK) c->sh.end = (size_t)start + e->par_blocks * BLOCK;
     atomic_store(&c->sh.ndeferred, 0);
     c->first = first, c->count = count;
     const size_t most = count / (scaled(MIN_CHUNK, e->d) | 1);

@@ -43,7 +43,8 @@ CC=gcc CXX=g++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLH_B
   -DCMAKE_C_FLAGS=-fsanitize=thread -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=thread >/dev/null
 cmake --build build-tsan -j "$jobs" --target test_parallel >/dev/null
 TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_parallel workers_insert_sites \
-  deferred_sites_are_inserted_afterwards every_allocation_failure_is_survived_with_threads || fail tsan
+  deferred_sites_are_inserted_afterwards sites_of_stopped_workers_are_inserted_afterwards \
+  every_allocation_failure_is_survived_with_threads || fail tsan
 
 echo "== fuzzing (clang, libFuzzer + ASan + UBSan, 30 s a target) =="
 bash scripts/fuzz.sh 30 || fail fuzz

@@ -50,10 +50,12 @@ LH_TEST(threads_give_the_one_thread_output)
         for (int f = 0; f < 3 && !LH_FAILED(); f++) same_as_one_thread(lh_t_, d, fams[f], 1);
 }
 
-/* The engine run directly (the generic worker loop) with `threads` and a worker
- * cavity bound of `scratch` facets (0: the default), against one thread; returns
- * the sites the workers deferred. */
-static size_t engine_run(lh_test_state *lh_t_, int d, int fam, int threads, size_t scratch)
+/* The engine run directly (the generic worker loop) with `threads`, a worker
+ * cavity bound of `scratch` facets and `blocks` blocks of new cells a phase (0: the
+ * defaults), against one thread; returns the sites the workers deferred, and in
+ * *stopped (if not NULL) the workers that stopped. */
+static size_t engine_run(lh_test_state *lh_t_, int d, int fam, int threads, size_t scratch, size_t blocks,
+                         size_t *stopped)
 {
     double *x = malloc(SIZE[d] * d * sizeof *x);
     lh_index *dup = malloc(SIZE[d] * sizeof *dup);
@@ -74,18 +76,20 @@ static size_t engine_run(lh_test_state *lh_t_, int d, int fam, int threads, size
         e.inside_conflicts = 1;
         e.insert_par = lh__eng_insert_generic_par;
         e.par_scratch = scratch;
+        e.par_blocks = blocks;
         int affdim;
         LH_EXPECT_EQ_INT(lh__eng_build(&e, 1024, &affdim), LH_OK);
         if (run) {
-            LH_EXPECT_TRUE(e.par_sites > n / 3); /* the last round at least */
+            LH_EXPECT_TRUE(blocks || e.par_sites > n / 3); /* the last round at least */
             deferred = e.par_deferred;
+            if (stopped) *stopped = e.par_stopped;
         }
         cells[run] = lh_test_engine_cells(&e, count + run);
         lh__eng_release(&e);
     }
     LH_EXPECT_TRUE(count[0] > 0 && count[0] == count[1]);
     if (count[0] == count[1]) LH_EXPECT_TRUE(!memcmp(cells[0], cells[1], count[0] * (d + 1) * sizeof(lh_index)));
-    if (LH_FAILED()) LH_NOTE("d=%d %s threads=%d scratch=%zu", d, lh_fam_name[fam], threads, scratch);
+    if (LH_FAILED()) LH_NOTE("d=%d %s threads=%d scratch=%zu blocks=%zu", d, lh_fam_name[fam], threads, scratch, blocks);
     free(cells[0]);
     free(cells[1]);
     free(dup);
@@ -97,9 +101,9 @@ LH_TEST(workers_insert_sites)
 {
     for (int d = 2; d <= 4 && !LH_FAILED(); d++)
         for (int threads = 2; threads <= 4 && !LH_FAILED(); threads += 2) {
-            engine_run(lh_t_, d, F_CUBE, threads, 0);
-            engine_run(lh_t_, d, F_GRID, threads, 0);
-            engine_run(lh_t_, d, F_CLUSTERS, threads, 0);
+            engine_run(lh_t_, d, F_CUBE, threads, 0, 0, NULL);
+            engine_run(lh_t_, d, F_GRID, threads, 0, 0, NULL);
+            engine_run(lh_t_, d, F_CLUSTERS, threads, 0, 0, NULL);
         }
 }
 
@@ -108,10 +112,24 @@ LH_TEST(workers_insert_sites)
 LH_TEST(deferred_sites_are_inserted_afterwards)
 {
     for (int d = 2; d <= 3 && !LH_FAILED(); d++) {
-        size_t deferred = engine_run(lh_t_, d, F_CUBE, 2, 8);
+        size_t deferred = engine_run(lh_t_, d, F_CUBE, 2, 8, 0, NULL);
         LH_EXPECT_TRUE(deferred > SIZE[d] / 100);
         LH_NOTE("d=%d: %zu sites deferred", d, deferred);
     }
+}
+
+/* Workers that run out of new cells stop; their sites and the chunks nobody took
+ * are inserted afterwards: with one block of cells a phase, workers stop in every
+ * phase, and the triangulation is still the one-thread one. */
+LH_TEST(sites_of_stopped_workers_are_inserted_afterwards)
+{
+    for (int d = 2; d <= 4 && !LH_FAILED(); d++)
+        for (int threads = 2; threads <= 3 && !LH_FAILED(); threads++) {
+            size_t stopped = 0;
+            engine_run(lh_t_, d, F_CUBE, threads, 0, 1, &stopped);
+            LH_EXPECT_TRUE(stopped > 0);
+            LH_NOTE("d=%d threads=%d: %zu workers stopped", d, threads, stopped);
+        }
 }
 
 /* lh_delaunay with 2 threads and the k-th allocation failing (all on the calling
@@ -185,6 +203,7 @@ int main(int argc, char **argv)
         LH_CASE(threads_give_the_one_thread_output),
         LH_CASE(workers_insert_sites),
         LH_CASE(deferred_sites_are_inserted_afterwards),
+        LH_CASE(sites_of_stopped_workers_are_inserted_afterwards),
         LH_CASE(every_allocation_failure_is_survived_with_threads),
         LH_CASE(duplicates_are_merged_alike_by_threads),
     };
