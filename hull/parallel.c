@@ -8,12 +8,14 @@
  * worker goes through its run from the front; one that has finished its own takes
  * chunks from the back of the run with the most left (work stealing), so that they
  * end together. Two workers so meet only where one's run ends and the other's began
- * long before, and where a thief's chunk meets its victim's. New cells come from blocks above the store's top, taken by an atomic
- * add (worker 0 also has the free list), and a worker's scratch is allocated
- * before: nothing is allocated while they run (the store is frozen), and a worker
- * out of blocks stops. After the phase the blocks' rests and the free lists are
- * merged back, and the sites that met another worker's cells (or cavities beyond a
- * worker's scratch) are inserted sequentially. The smaller rounds run sequentially.
+ * long before, and where a thief's chunk meets its victim's. New cells come from
+ * blocks above the store's top, taken by an atomic add (worker 0 also has the free
+ * list), and a worker's scratch is allocated before: nothing is allocated while
+ * they run (the store is frozen), and a worker out of blocks stops. A worker tries
+ * the sites it deferred once more when its chunks are done; after the phase the
+ * blocks' rests and the free lists are merged back, and the sites deferred twice
+ * (another worker's cells, or cavities beyond a worker's scratch) are inserted
+ * sequentially. The smaller rounds run sequentially.
  *
  * The triangulation is the sequential one: it is unique for the perturbed sites,
  * whoever inserts them in whatever order (parallel.h); vertex numbers are positions
@@ -182,6 +184,27 @@ static void prepare(pctx *c, int i, uint32_t round)
 static uint32_t run_lo(uint64_t r) { return (uint32_t)r; }
 static uint32_t run_hi(uint64_t r) { return (uint32_t)(r >> 32); }
 
+/* The phase's sites first..first+count-1 cut into chunks, CHUNKS per worker but
+ * at least MIN_CHUNK sites each (scaled) and one per worker, and the chunks into
+ * one run per worker. */
+static void cut_runs(pctx *c, size_t first, size_t count)
+{
+    const size_t least = scaled(MIN_CHUNK, c->e->d), fit = count / (least ? least : 1);
+    const size_t most = (size_t)c->nw * CHUNKS, chunks = fit < most ? fit : most;
+    c->first = first, c->count = count;
+    c->nchunks = chunks > (size_t)c->nw ? chunks : (size_t)c->nw;
+    for (int i = 0; i < c->nw; i++) {
+        const uint64_t lo = lh__share(c->nchunks, i, c->nw), hi = lh__share(c->nchunks, i + 1, c->nw);
+        atomic_store(&c->run[i], lo | hi << 32);
+    }
+}
+
+/* The first site of chunk k (k = nchunks: the end of the phase). */
+static size_t chunk_first(const pctx *c, uint32_t k)
+{
+    return c->first + lh__share(c->count, (int)k, (int)c->nchunks);
+}
+
 /* Takes the first chunk of run j (front) or its last (!front); -1 if it is empty. */
 static long take_chunk(pctx *c, int j, int front)
 {
@@ -224,8 +247,7 @@ static void work(void *ctx, int i, int nw)
     while (w->st == LH_OK && !w->par.stopped) {
         const long k = next_chunk(c, i);
         if (k < 0) break;
-        size_t f = c->first + lh__share(c->count, (int)k, (int)c->nchunks);
-        size_t to = c->first + lh__share(c->count, (int)k + 1, (int)c->nchunks);
+        const size_t f = chunk_first(c, (uint32_t)k), to = chunk_first(c, (uint32_t)k + 1);
         w->st = w->e.insert_par(&w->e, f, to - f, NULL);
         w->sites += to - f;
     }
@@ -335,16 +357,10 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     const lh_index start = t->top;
     atomic_store(&c->sh.cursor, (size_t)start);
     c->sh.end = (size_t)t->cap;
-    if (e->par_blocks && c->sh.end - (size_t)start > e->par_blocks * BLOCK) c->sh.end = (size_t)start + e->par_blocks * BLOCK;
+    if (e->par_blocks && c->sh.end - (size_t)start > e->par_blocks * BLOCK)
+        c->sh.end = (size_t)start + e->par_blocks * BLOCK;
     atomic_store(&c->sh.ndeferred, 0);
-    c->first = first, c->count = count;
-    const size_t most = count / (scaled(MIN_CHUNK, e->d) | 1);
-    size_t chunks = most < (size_t)nw * CHUNKS ? most : (size_t)nw * CHUNKS;
-    c->nchunks = chunks > (size_t)nw ? chunks : (size_t)nw;
-    for (int i = 0; i < nw; i++) {
-        const uint64_t lo = lh__share(c->nchunks, i, nw), hi = lh__share(c->nchunks, i + 1, nw);
-        atomic_store(&c->run[i], lo | hi << 32);
-    }
+    cut_runs(c, first, count);
     st = cover_again(c, count);
     if (st != LH_OK) return st;
     c->sh.base = t->round + 1, c->sh.span = rounds;
@@ -356,9 +372,8 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     if (st == LH_OK && nd) st = seq(e, 0, nd, c->sh.deferred);
     for (int i = 0; i < nw && st == LH_OK; i++) { /* the chunks no worker took (out of cells) */
         const uint64_t r = atomic_load(&c->run[i]);
-        if (run_lo(r) >= run_hi(r)) continue;
-        const size_t from = first + lh__share(count, (int)run_lo(r), (int)c->nchunks);
-        st = seq(e, from, first + lh__share(count, (int)run_hi(r), (int)c->nchunks) - from, NULL);
+        const size_t from = chunk_first(c, run_lo(r)), to = chunk_first(c, run_hi(r));
+        if (from < to) st = seq(e, from, to - from, NULL);
     }
     return st;
 }

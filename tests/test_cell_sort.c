@@ -110,8 +110,9 @@ static lh_index *sort_and_check(lh_test_state *lh_t_, int nv, size_t n, size_t g
     return out;
 }
 
-/* 4D rows below 2^20 sites (3 vertices in a key, the fourth decides ties) and 5D
- * rows below 5000 (4 in a key), 200 and 40 rows a group: the same on 2 threads. */
+/* 4D rows below 2^20 sites (3 vertices in a key, the fourth decides ties), 5D rows
+ * below 5000 (4 in a key) and 4D rows below 2000 (the whole row in the key), 200, 40
+ * and 30 rows a group: the same on 2 threads. */
 LH_TEST(groups_are_ordered_past_their_keys)
 {
     static const struct {
