@@ -104,6 +104,7 @@ static void copy_range(void *ctx, size_t lo, size_t hi)
     lh__eng *e = ctx;
     const size_t d = (size_t)e->d;
     for (size_t i = lo; i < hi; i++) {
+        if (i + LH__AHEAD < hi) LH__PREFETCH(lh__eng_input(e, (size_t)e->order[i + LH__AHEAD]));
         const double *p = lh__eng_input(e, (size_t)e->order[i]);
         for (size_t j = 0; j < d; j++) e->site_copy[i * d + j] = p[j];
     }

@@ -43,6 +43,14 @@
 #define LH__ALWAYS_INLINE inline
 #endif
 
+/* A hint to fetch *p for reading (nothing without GCC or Clang). */
+#if defined(__GNUC__) || defined(__clang__)
+#define LH__PREFETCH(p) __builtin_prefetch(p)
+#else
+#define LH__PREFETCH(p) ((void)(p))
+#endif
+enum { LH__AHEAD = 16 }; /* iterations of a gather loop between a prefetch and its use */
+
 /* Whether the finite cell with vertices v (positively oriented) conflicts with site q. */
 typedef int (*lh__finite_conflict_fn)(void *user, const lh_index *v, lh_index q);
 

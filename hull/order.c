@@ -52,19 +52,41 @@ typedef struct morton {
     int shift[LH__ENGINE_MAX_DIM]; /* a tiny span is first scaled up by 2^-shift */
 } morton;
 
+/* The low `bits` bits of x spread d places apart (bit b to bit b d): by masks
+ * for d = 2 (16 bits) and d = 3 (21 bits), each step halving the runs of
+ * consecutive bits, else bit by bit. */
+static inline uint64_t spread_bits(uint64_t x, int d, int bits)
+{
+    if (d == 2) {
+        x = (x | x << 8) & UINT64_C(0x00ff00ff);
+        x = (x | x << 4) & UINT64_C(0x0f0f0f0f);
+        x = (x | x << 2) & UINT64_C(0x33333333);
+        return (x | x << 1) & UINT64_C(0x55555555);
+    }
+    if (d == 3) {
+        x = (x | x << 32) & UINT64_C(0x001f00000000ffff);
+        x = (x | x << 16) & UINT64_C(0x001f0000ff0000ff);
+        x = (x | x << 8) & UINT64_C(0x100f00f00f00f00f);
+        x = (x | x << 4) & UINT64_C(0x10c30c30c30c30c3);
+        return (x | x << 2) & UINT64_C(0x1249249249249249);
+    }
+    uint64_t k = 0;
+    for (int b = 0; b < bits; b++) k |= (x >> b & 1) << (b * d);
+    return k;
+}
+
 static void morton_range(void *ctx, size_t lo, size_t hi)
 {
     const morton *m = ctx;
     const int d = m->t->d;
     for (size_t i = lo; i < hi; i++) {
         const double *p = m->t->xyz + i * d;
-        uint64_t cell[LH__ENGINE_MAX_DIM], k = 0;
-        for (int j = 0; j < d; j++) {
+        uint64_t k = 0;
+        for (int j = 0; j < d; j++) { /* coordinate j's bit b goes to bit b d + d - 1 - j */
             double x = (m->shift[j] ? ldexp(p[j] - m->lo[j], -m->shift[j]) : p[j] - m->lo[j]) * m->scale[j];
-            cell[j] = x > 0 ? (x < m->cells ? (uint64_t)x : (uint64_t)m->cells) : 0;
+            const uint64_t cell = x > 0 ? (x < m->cells ? (uint64_t)x : (uint64_t)m->cells) : 0;
+            k |= spread_bits(cell, d, m->bits) << (d - 1 - j);
         }
-        for (int bit = m->bits - 1; bit >= 0; bit--)
-            for (int j = 0; j < d; j++) k = (k << 1) | ((cell[j] >> bit) & 1);
         m->key[i] = k;
     }
 }
@@ -204,9 +226,8 @@ static void runs_share(void *ctx, int w, int nw)
                     rep = idx[r];
                     break;
                 }
-            t->dup[s] = rep;
-            if (rep != s)
-                ndup++;
+            if (rep != s) /* a distinct site's entry is itself already (identity_range) */
+                t->dup[s] = rep, ndup++;
             else
                 idx[nrep++] = s;
         }
@@ -216,10 +237,20 @@ static void runs_share(void *ctx, int w, int nw)
     u->ndup[w] = ndup;
 }
 
+static void identity_range(void *ctx, size_t lo, size_t hi)
+{
+    lh_index *dup = ctx;
+    for (size_t i = lo; i < hi; i++) dup[i] = (lh_index)i;
+}
+
 static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_index *tmp, int nw)
 {
     runs u = {.t = t, .key = key, .idx = idx, .tmp = tmp};
     const size_t n = t->n;
+    /* every site its own first: the runs then write only the duplicates (the
+       sites come in Morton order, so each write of every site's entry would be a
+       cache miss) */
+    lh__par_range(t->threads, n, identity_range, t->dup);
     for (int w = 0; w <= nw; w++) { /* share boundaries moved to the next run's start */
         size_t x = lh__share(n, w, nw);
         while (x > 0 && x < n && key[x] == key[x - 1]) x++;
@@ -244,6 +275,19 @@ typedef struct brio {
     uint64_t seed;
 } brio;
 
+/* The number of consecutive 1 bits at the bottom of x (one instruction, not a
+ * loop whose exit is a coin toss to mispredict). */
+static inline int trailing_ones(uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return ~x ? __builtin_ctzll(~x) : 64;
+#else
+    int r = 0;
+    while (r < 64 && (x >> r & 1)) r++;
+    return r;
+#endif
+}
+
 static void draw_rounds(void *ctx, size_t lo, size_t hi)
 {
     const brio *b = ctx;
@@ -252,12 +296,8 @@ static void draw_rounds(void *ctx, size_t lo, size_t hi)
         x = (x ^ (x >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
         x = (x ^ (x >> 27)) * UINT64_C(0x94d049bb133111eb);
         x ^= x >> 31;
-        int r = 0;
-        while (r < LH__BRIO_ROUNDS - 1 && (x & 1)) {
-            r++;
-            x >>= 1;
-        }
-        b->round[i] = (uint8_t)(LH__BRIO_ROUNDS - 1 - r);
+        const int r = trailing_ones(x); /* each with probability 1/2 */
+        b->round[i] = (uint8_t)(LH__BRIO_ROUNDS - 1 - (r < LH__BRIO_ROUNDS - 1 ? r : LH__BRIO_ROUNDS - 1));
     }
 }
 

@@ -9,13 +9,6 @@
 
 #include <string.h>
 
-#if defined(__GNUC__) || defined(__clang__)
-#define PREFETCH(p) __builtin_prefetch(p)
-#else
-#define PREFETCH(p) ((void)(p))
-#endif
-enum { AHEAD = 16 }; /* iterations between a prefetch and the use */
-
 typedef struct remap {
     const lh_index *orig;
     lh_index *simplex_of, *nb;
@@ -26,7 +19,7 @@ static void invert_range(void *ctx, size_t lo, size_t hi)
 {
     const remap *j = ctx;
     for (size_t r = lo; r < hi; r++) {
-        if (r + AHEAD < hi) PREFETCH(j->simplex_of + j->orig[r + AHEAD]);
+        if (r + LH__AHEAD < hi) LH__PREFETCH(j->simplex_of + j->orig[r + LH__AHEAD]);
         j->simplex_of[j->orig[r]] = r < j->count ? (lh_index)r : -1;
     }
 }
@@ -35,7 +28,7 @@ static void remap_range(void *ctx, size_t lo, size_t hi)
 {
     const remap *j = ctx;
     for (size_t i = lo; i < hi; i++) {
-        if (i + AHEAD * j->nv < hi) PREFETCH(j->simplex_of + j->nb[i + AHEAD * j->nv]);
+        if (i + LH__AHEAD * j->nv < hi) LH__PREFETCH(j->simplex_of + j->nb[i + LH__AHEAD * j->nv]);
         j->nb[i] = j->simplex_of[j->nb[i]];
     }
 }
@@ -44,7 +37,7 @@ static void remap_range(void *ctx, size_t lo, size_t hi)
  * (lh__tds_sort_cells), and its arrays pass to t: no copy of the cells coexists
  * with them. Each neighbour entry, a row's position before the sort, becomes its
  * simplex (-1 for an infinite cell) through simplex_of, the inverse of orig; the
- * random accesses are prefetched AHEAD iterations early. */
+ * random accesses are prefetched LH__AHEAD iterations early. */
 static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *orig)
 {
     lh__tds *s = &b->tds;
@@ -82,8 +75,8 @@ lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
         for (size_t i = 0; i < t->n; i++) t->vsimp[i] = -1;
         const int nv = b->nv;
         for (size_t c = t->count; c-- > 0;) {
-            if (c >= AHEAD)
-                for (int k = 0; k < nv; k++) PREFETCH(t->vsimp + t->simp[(c - AHEAD) * nv + k]);
+            if (c >= LH__AHEAD)
+                for (int k = 0; k < nv; k++) LH__PREFETCH(t->vsimp + t->simp[(c - LH__AHEAD) * nv + k]);
             for (int k = 0; k < nv; k++) t->vsimp[t->simp[c * nv + k]] = (lh_index)c;
         }
     }
