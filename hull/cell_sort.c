@@ -9,11 +9,13 @@
  * (American flag sort: McIlroy, Bostic & McIlroy, "Engineering radix sort",
  * Computing Systems 6(1), 1993), with digits of at most DIGIT_BITS bits: a pass
  * writes to as many places at once as it has buckets, and three passes of 7 bits
- * (keys of 10^6 sites) measured 2% faster in 2D and 3D than two of 10; rows
- * with the same first vertex are ordered by the rest of the tuple (insertion sort
- * for small groups, heapsort for the large groups of a degenerate input). With
- * several threads, the canonical forms are split among them, and after the first
- * pass so are its buckets; the result is the same.
+ * (keys of 10^6 sites) measured 2% faster in 2D and 3D than two of 10. A bucket
+ * small enough for the cache whose remaining key bits are few is finished out of
+ * place instead (gather_sort: a counting sort of positions, then one gather); rows
+ * with the same first vertex are ordered by the rest of the tuple (order_group;
+ * heapsort for the large groups of a degenerate input). With several threads, the
+ * canonical forms are split among them, and after the first pass so are its
+ * buckets; the result is the same.
  */
 #include "engine.h"
 #include "lh_alloc.h"
@@ -22,9 +24,13 @@
 
 enum {
     DIGIT_BITS = 8,
-    SMALL = 16,       /* rows sorted by insertion */
-    GROUP_MAX = 4096, /* rows of one first vertex sorted through positions (more: heapsort) */
-    MAX_LEVELS = 64 / DIGIT_BITS + 1
+    SMALL = 16,           /* rows sorted by insertion */
+    GROUP_MAX = 4096,     /* rows of one first vertex sorted through positions (more: heapsort) */
+    MAX_LEVELS = 64 / DIGIT_BITS + 1,
+    GATHER_BITS = 16,     /* gather_sort: the key bits left, at most */
+    GATHER_MAX = 1 << 16, /* and the rows, at most (more: sorted in place; 2x as many measured
+                             no faster in 3D: their gathers missed the cache) */
+    GROUP_SMALL = 32      /* rows of one first vertex ordered by insertion */
 };
 
 /* The rows being sorted. Every function below takes the row length nv as an
@@ -36,10 +42,13 @@ typedef struct rows {
     int levels;                  /* digit passes: level i reads key bits lo[i]..hi[i]-1 */
     int lo[MAX_LEVELS], hi[MAX_LEVELS];
     size_t *scratch;             /* per level: bucket heads and ends */
-    lh_index *pos;               /* 2 GROUP_MAX: positions of a group being sorted */
+    lh_index *pos;               /* 3 GROUP_MAX: positions of a group being sorted */
     uint64_t *gkey;              /* GROUP_MAX: their packed keys (group_key) */
     int kbits, kwidth;           /* vertices packed in a group key, kbits bits each */
     uint16_t *dig;               /* per row: its digit in the current pass */
+    uint32_t *gcount;            /* gather_sort: 2^GATHER_BITS + 1 counts */
+    size_t gmax;                 /* and room for gmax rows (at most GATHER_MAX): */
+    lh_index *gpos, *gvert, *gnbr, *gorig; /* their positions, copies */
 } rows;
 
 /* A row's sort key: its first vertex for a finite cell, n for the others (the
@@ -141,37 +150,66 @@ static inline int tail_less(const rows *r, const lh_index *x, const lh_index *y,
     return 0;
 }
 
-/* Rows lo..hi-1 (one first vertex, at most GROUP_MAX) sorted by their other
- * vertices: a bottom-up merge sort of their positions (a row is 2 nv + 1 entries, a
- * position one; the group is in the first-level cache) on keys that pack the next
- * vertices (group_key: whole rows in 2D and 3D, the next 3 vertices in 4D and 5D
- * below 2^21 sites), then each row moved once, along the cycles of the
- * permutation. Replaced heapsort for the groups of 30 (4D) to 160 (5D) rows that
- * every vertex has: 12% of a 4D run was that heapsort. */
-static void group_sort(const rows *r, size_t lo, size_t hi, int nv)
+/* Whether the row at position x (packed key kx) comes before the row at y (key ky),
+ * both of one group. */
+static inline int before(const rows *r, uint64_t kx, size_t x, uint64_t ky, size_t y, int nv)
 {
-    const size_t k = hi - lo;
+    return kx < ky || (kx == ky && tail_less(r, r->vert + x * nv, r->vert + y * nv, nv));
+}
+
+/* The positions at[0..m-1] of rows with one first vertex (m at most GROUP_MAX),
+ * reordered as their rows are to be: by their other vertices, on keys that pack
+ * the next ones (group_key: whole rows in 2D and 3D, the next 3 vertices in 4D and
+ * 5D below 2^21 sites), the rest compared only on equal keys. Up to GROUP_SMALL
+ * by insertion (16 measured slower in 3D), else a bottom-up merge sort of local
+ * indices (r->pos) with a branch-free merge step: it replaced heapsort for the
+ * groups of 30 (4D) to 160 (5D) rows that every vertex has, which took 12% of a
+ * 4D run. Stable either way. */
+static void order_group(const rows *r, lh_index *at, size_t m, int nv)
+{
+    uint64_t *key = r->gkey;
+    for (size_t i = 0; i < m; i++) key[i] = group_key(r, r->vert + (size_t)at[i] * nv);
+    if (m <= GROUP_SMALL) {
+        for (size_t i = 1; i < m; i++) {
+            const uint64_t ki = key[i];
+            const lh_index ai = at[i];
+            size_t j = i;
+            for (; j > 0 && before(r, ki, (size_t)ai, key[j - 1], (size_t)at[j - 1], nv); j--)
+                key[j] = key[j - 1], at[j] = at[j - 1];
+            key[j] = ki, at[j] = ai;
+        }
+        return;
+    }
     lh_index *a = r->pos, *b = r->pos + GROUP_MAX;
-    const uint64_t *key = r->gkey;
-    for (size_t i = 0; i < k; i++) a[i] = (lh_index)i, r->gkey[i] = group_key(r, r->vert + (lo + i) * nv);
-    for (size_t w = 1; w < k; w *= 2) {
-        for (size_t s = 0; s < k; s += 2 * w) {
-            const size_t m = s + w < k ? s + w : k, e = s + 2 * w < k ? s + 2 * w : k;
-            size_t i = s, j = m, o = s;
-            while (i < m && j < e) {
-                const uint64_t kj = key[a[j]], ki = key[a[i]];
-                const int before = kj < ki || (kj == ki && tail_less(r, r->vert + (lo + (size_t)a[j]) * nv,
-                                                                     r->vert + (lo + (size_t)a[i]) * nv, nv));
-                b[o++] = before ? a[j] : a[i];
-                j += before, i += !before;
+    for (size_t i = 0; i < m; i++) a[i] = (lh_index)i;
+    for (size_t w = 1; w < m; w *= 2) {
+        for (size_t s = 0; s < m; s += 2 * w) {
+            const size_t mid = s + w < m ? s + w : m, e = s + 2 * w < m ? s + 2 * w : m;
+            size_t i = s, j = mid, o = s;
+            while (i < mid && j < e) {
+                const int right = before(r, key[a[j]], (size_t)at[a[j]], key[a[i]], (size_t)at[a[i]], nv);
+                b[o++] = right ? a[j] : a[i];
+                j += right, i += !right;
             }
-            while (i < m) b[o++] = a[i++];
+            while (i < mid) b[o++] = a[i++];
             while (j < e) b[o++] = a[j++];
         }
         lh_index *x = a;
         a = b, b = x;
     }
-    for (size_t i = 0; i < k; i++) a[i] += (lh_index)lo;
+    for (size_t i = 0; i < m; i++) b[i] = at[a[i]];
+    memcpy(at, b, m * sizeof *at);
+}
+
+/* Rows lo..hi-1 (one first vertex, at most GROUP_MAX) sorted in place: their
+ * order (order_group), then each row moved once, along the cycles of the
+ * permutation. */
+static void group_sort(const rows *r, size_t lo, size_t hi, int nv)
+{
+    const size_t k = hi - lo;
+    lh_index *a = r->pos + 2 * GROUP_MAX;
+    for (size_t i = 0; i < k; i++) a[i] = (lh_index)(lo + i);
+    order_group(r, a, k, nv);
     /* a[i]: the row that goes to lo + i; a done entry becomes -1 */
     lh_index v[LH__TDS_MAX_NV], nb[LH__TDS_MAX_NV];
     for (size_t i = 0; i < k; i++) {
@@ -191,6 +229,44 @@ static void group_sort(const rows *r, size_t lo, size_t hi, int nv)
         copy_row(r->nbr + (lo + cur) * nv, nb, nv);
         r->orig[lo + cur] = o;
     }
+}
+
+/* Rows lo..hi-1, whose keys agree above bit r->hi[level], sorted out of place, if
+ * they fit the scratch (else 0, nothing moved): their positions by a counting
+ * sort on the key's remaining bits, each group of one first vertex ordered
+ * (order_group), then the rows copied out and gathered back in order. Each row
+ * moves twice, within a bucket that fits in the cache; the digit passes it
+ * replaces at the last two levels moved every row twice in place, and the
+ * groups' cycles once more. */
+static int gather_sort(const rows *r, size_t lo, size_t hi, int level, int nv)
+{
+    const size_t k = hi - lo, nb = (size_t)1 << r->hi[level], mask = nb - 1;
+    if (r->hi[level] > GATHER_BITS || k > r->gmax || k < nb / 8) return 0;
+    uint32_t *start = r->gcount;
+    memset(start, 0, (nb + 1) * sizeof *start);
+    for (size_t i = lo; i < hi; i++) {
+        r->dig[i] = (uint16_t)(key_of(r->vert + i * nv, r->n) & mask);
+        start[r->dig[i] + 1]++;
+    }
+    for (size_t b = 0; b < nb; b++) {
+        if (start[b + 1] > GROUP_MAX) return 0; /* a large group: heapsort (sort_rows) */
+        start[b + 1] += start[b];
+    }
+    lh_index *pos = r->gpos;
+    for (size_t i = lo; i < hi; i++) pos[start[r->dig[i]]++] = (lh_index)i;
+    for (size_t b = 0, s = 0; b < nb; s = start[b++]) /* start[b]: now where group b ends */
+        if (start[b] - s > 1 && key_of(r->vert + (size_t)pos[s] * nv, r->n) < r->n)
+            order_group(r, pos + s, start[b] - s, nv);
+    memcpy(r->gvert, r->vert + lo * nv, k * nv * sizeof *r->gvert);
+    memcpy(r->gnbr, r->nbr + lo * nv, k * nv * sizeof *r->gnbr);
+    memcpy(r->gorig, r->orig + lo, k * sizeof *r->gorig);
+    for (size_t i = 0; i < k; i++) {
+        const size_t from = (size_t)pos[i] - lo;
+        copy_row(r->vert + (lo + i) * nv, r->gvert + from * nv, nv);
+        copy_row(r->nbr + (lo + i) * nv, r->gnbr + from * nv, nv);
+        r->orig[lo + i] = r->gorig[from];
+    }
+    return 1;
 }
 
 /* Moves the rows of a cycle that starts at row i, whose digit is not b, into their
@@ -253,6 +329,8 @@ static inline void sort_rows(const rows *r, size_t lo, size_t hi, int first, int
     for (;;) {
         if (hi - lo <= SMALL) {
             if (hi - lo > 1) insertion_sort(r, lo, hi, nv);
+        } else if (level < r->levels && gather_sort(r, lo, hi, level, nv)) {
+            /* sorted on all the bits left */
         } else if (level < r->levels) { /* a pass, then its buckets */
             nb[level] = flag_pass(r, lo, hi, level, nv, &end[level]);
             next[level] = 0;
@@ -341,38 +419,50 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
         top = r.lo[i];
     }
     const size_t per = (size_t)r.levels * 2 * ((size_t)1 << DIGIT_BITS);
+    const size_t cper = ((size_t)1 << GATHER_BITS) + 1;
     r.scratch = lh__alloc(&t->alloc, (size_t)nw * per * sizeof *r.scratch);
-    r.pos = lh__alloc(&t->alloc, (size_t)nw * 2 * GROUP_MAX * sizeof *r.pos);
+    r.pos = lh__alloc(&t->alloc, (size_t)nw * 3 * GROUP_MAX * sizeof *r.pos);
     r.gkey = lh__alloc(&t->alloc, (size_t)nw * GROUP_MAX * sizeof *r.gkey);
     r.dig = lh__alloc(&t->alloc, ((size_t)t->top + 1) * sizeof *r.dig);
+    r.gcount = lh__alloc(&t->alloc, (size_t)nw * cper * sizeof *r.gcount);
     r.kbits = bits;
     r.kwidth = t->nv - 1 < 64 / bits ? t->nv - 1 : 64 / bits;
-    if (!r.scratch || !r.pos || !r.gkey || !r.dig) {
-        lh__free(&t->alloc, r.scratch);
-        lh__free(&t->alloc, r.pos);
-        lh__free(&t->alloc, r.gkey);
-        lh__free(&t->alloc, r.dig);
-        lh__free(&t->alloc, job);
-        return LH_ERR_NOMEM;
-    }
-    for (int w = 0; w < nw; w++) {
-        job->r[w] = r;
-        job->r[w].scratch = r.scratch + (size_t)w * per;
-        job->r[w].pos = r.pos + (size_t)w * 2 * GROUP_MAX;
-        job->r[w].gkey = r.gkey + (size_t)w * GROUP_MAX;
-    }
-    for (lh_index c = 0; c < t->top; c++) orig[c] = c;
-    lh__par_for(nw, canonical_share, job);
-    *count = 0;
-    for (int w = 0; w < nw; w++) *count += job->counts[w];
+    lh_status st = r.scratch && r.pos && r.gkey && r.dig && r.gcount ? LH_OK : LH_ERR_NOMEM;
+    if (st == LH_OK) {
+        for (lh_index c = 0; c < t->top; c++) orig[c] = c;
+        lh__par_for(nw, canonical_share, job);
+        *count = 0;
+        for (int w = 0; w < nw; w++) *count += job->counts[w];
 #define PASS(m) job->nb = flag_pass(&r, 0, (size_t)t->top, 0, m, &job->ends)
-    LH__WITH_CONSTANT_M(t->nv, PASS); /* the first digit, then its buckets (sort_rows) */
+        LH__WITH_CONSTANT_M(t->nv, PASS); /* the first digit, then its buckets (sort_rows) */
 #undef PASS
-    lh__par_for(nw, bucket_share, job);
+        /* gather_sort's rows: as many as the largest bucket (the first vertex is
+           the least, so the first buckets hold more: 3% of the rows in 3D) */
+        size_t gmax = 0;
+        for (size_t b = 0, from = 0; b < job->nb; from = job->ends[b++])
+            gmax = job->ends[b] - from > gmax ? job->ends[b] - from : gmax;
+        gmax = gmax < GATHER_MAX ? gmax : GATHER_MAX;
+        const size_t gper = gmax * (2 * (size_t)t->nv + 2);
+        if (!(r.gpos = lh__alloc(&t->alloc, ((size_t)nw * gper + 1) * sizeof *r.gpos))) st = LH_ERR_NOMEM;
+        for (int w = 0; w < nw && st == LH_OK; w++) {
+            rows *x = job->r + w;
+            *x = r;
+            x->scratch = r.scratch + (size_t)w * per;
+            x->pos = r.pos + (size_t)w * 3 * GROUP_MAX;
+            x->gkey = r.gkey + (size_t)w * GROUP_MAX;
+            x->gcount = r.gcount + (size_t)w * cper;
+            x->gmax = gmax;
+            x->gpos = r.gpos + (size_t)w * gper;
+            x->gvert = x->gpos + gmax, x->gnbr = x->gvert + gmax * t->nv, x->gorig = x->gnbr + gmax * t->nv;
+        }
+        if (st == LH_OK) lh__par_for(nw, bucket_share, job);
+    }
     lh__free(&t->alloc, r.scratch);
     lh__free(&t->alloc, r.pos);
     lh__free(&t->alloc, r.gkey);
     lh__free(&t->alloc, r.dig);
+    lh__free(&t->alloc, r.gcount);
+    lh__free(&t->alloc, r.gpos);
     lh__free(&t->alloc, job);
-    return LH_OK;
+    return st;
 }

@@ -112,14 +112,19 @@ static lh_index *sort_and_check(lh_test_state *lh_t_, int nv, size_t n, size_t g
 
 /* 4D rows below 2^20 sites (3 vertices in a key, the fourth decides ties), 5D rows
  * below 5000 (4 in a key) and 4D rows below 2000 (the whole row in the key), 200, 40
- * and 30 rows a group: the same on 2 threads. */
+ * and 30 rows a group, each bucket gathered (gather_sort); then 3D rows below 4000
+ * whose 80 000 rows in one bucket are too many to gather, so that it is sorted in
+ * place (digit pass, group_sort): the same on 2 threads. */
 LH_TEST(groups_are_ordered_past_their_keys)
 {
     static const struct {
         int nv;
         size_t n, groups, per;
         lh_index spread;
-    } cases[] = {{5, (size_t)1 << 20, 200, 200, 1000}, {6, 5000, 40, 40, 120}, {5, 2000, 10, 30, 150}};
+    } cases[] = {{5, (size_t)1 << 20, 200, 200, 1000},
+                 {6, 5000, 40, 40, 120},
+                 {5, 2000, 10, 30, 150},
+                 {4, 4000, 32, 2500, 1}};
     for (size_t c = 0; c < LH_COUNT(cases) && !LH_FAILED(); c++) {
         lh_index *one = sort_and_check(lh_t_, cases[c].nv, cases[c].n, cases[c].groups, cases[c].per,
                                        cases[c].spread, 1);
