@@ -43,11 +43,13 @@
 #define LH__ALWAYS_INLINE inline
 #endif
 
-/* A hint to fetch *p for reading (nothing without GCC or Clang). */
+/* Hints to fetch *p for reading, or for writing (nothing without GCC or Clang). */
 #if defined(__GNUC__) || defined(__clang__)
 #define LH__PREFETCH(p) __builtin_prefetch(p)
+#define LH__PREFETCH_W(p) __builtin_prefetch(p, 1)
 #else
 #define LH__PREFETCH(p) ((void)(p))
+#define LH__PREFETCH_W(p) ((void)(p))
 #endif
 enum { LH__AHEAD = 16 }; /* iterations of a gather loop between a prefetch and its use */
 
@@ -273,9 +275,9 @@ static inline void lh__canonical(lh_index *v, int m)
 {
     int rank[LH__ENGINE_MAX_DIM + 1];
     lh_index c[LH__ENGINE_MAX_DIM + 1];
-    lh__canonical_ranks(v, m, rank);
-    for (int j = 0; j < m; j++) c[rank[j]] = v[j];
-    for (int j = 0; j < m; j++) v[j] = c[j];
+    for (int j = 0; j < m; j++) c[j] = v[j];
+    lh__canonical_ranks(c, m, rank);
+    for (int j = 0; j < m; j++) v[rank[j]] = c[j]; /* scattered into v itself, as in cell_sort.c */
 }
 /* canon.c: sorts count tuples of m site indices (< n) lexicographically from v into
  * out; order[i] = index in v of out's tuple i. Returns 0 on no memory. */

@@ -69,17 +69,9 @@
 #define SET_MARK(t, c, m) ((t)->stamp[c] = (m))
 #endif
 
-#if defined(__GNUC__) || defined(__clang__)
-#define LH_PREFETCH(p) __builtin_prefetch(p)
-#define LH_PREFETCH_W(p) __builtin_prefetch(p, 1)
-#else
-#define LH_PREFETCH(p) ((void)(p))
-#define LH_PREFETCH_W(p) ((void)(p))
-#endif
-
 /* What the conflict search reads of cell c first: its visit mark (written: it is
  * set, and in a parallel worker taken by CAS) and its vertices. */
-#define PREFETCH_CELL(c) (LH_PREFETCH_W(t->stamp + (c)), LH_PREFETCH(t->vert + (size_t)(c) * NV))
+#define PREFETCH_CELL(c) (LH__PREFETCH_W(t->stamp + (c)), LH__PREFETCH(t->vert + (size_t)(c) * NV))
 
 static inline int push(lh__tds *t, lh_index **arr, size_t *cap, size_t *len, lh_index x)
 {
@@ -195,7 +187,7 @@ static int grow_region(lh__eng *e, lh_index start, uint32_t in, uint32_t out)
                 if (x < 0) return -1;
                 if (x) {
                     SET_MARK(t, n, in);
-                    LH_PREFETCH(t->nbr + (size_t)n * NV); /* read when n is expanded */
+                    LH__PREFETCH(t->nbr + (size_t)n * NV); /* read when n is expanded */
                     if (!push(t, &t->cells, &t->cells_cap, &t->ncells, n)) return 0;
                     continue;
                 }
@@ -437,7 +429,7 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
     lh_status st = lh__tds_room(t);
     if (st != LH_OK) return st;
     for (size_t b = 0; b < t->nbound; b++) /* the outside cells' neighbour rows */
-        LH_PREFETCH(t->nbr + (size_t)t->nbr[(size_t)t->bound[2 * b] * NV + t->bound[2 * b + 1]] * NV);
+        LH__PREFETCH(t->nbr + (size_t)t->nbr[(size_t)t->bound[2 * b] * NV + t->bound[2 * b + 1]] * NV);
     for (size_t b = 0; b < t->nbound; b++) {
         lh_index c = t->bound[2 * b], k = t->bound[2 * b + 1];
         lh_index N = lh__tds_new_cell(t); /* cannot fail after lh__tds_room */
@@ -515,7 +507,7 @@ static lh_status tour_cavity_2(lh__eng *e, lh_index start)
         }
         t->fresh[depth - 1] = (lh_index)(NEXT_3[k] << 2 | (left - 1));
         lh_index n = t->nbr[(size_t)c * 3 + k];
-        LH_PREFETCH(t->nbr + (size_t)n * 3);
+        LH__PREFETCH(t->nbr + (size_t)n * 3);
         int cf = HOLD(e, n) ? conflict(e, n) : -1;
         if (cf < 0) return LH__RETRY;
         if (cf) {

@@ -237,6 +237,7 @@ static void runs_share(void *ctx, int w, int nw)
     u->ndup[w] = ndup;
 }
 
+/* Entries lo..hi-1 of the index array ctx set to their own positions. */
 static void identity_range(void *ctx, size_t lo, size_t hi)
 {
     lh_index *dup = ctx;
@@ -324,7 +325,7 @@ lh_status lh__eng_order(lh__eng *b)
     lh_status st = key && k2 && idx && i2 && count ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK && n) {
         morton_keys(t, key);
-        for (size_t i = 0; i < n; i++) idx[i] = (lh_index)i;
+        lh__par_range(t->threads, n, identity_range, idx);
         radix_sort(key, idx, k2, i2, n, morton_bits(t->d, n) * t->d, count, nw);
         b->order = idx;
         b->norder = merge_runs(t, key, idx, i2, nw);
