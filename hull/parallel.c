@@ -80,6 +80,8 @@ static void release(pctx *c)
         lh__free(&e->alloc, w->scratch.ridge);
         lh__free(&e->alloc, w->scratch.sorted);
         lh__free(&e->alloc, w->scratch.spos);
+        lh__free(&e->alloc, w->scratch.vloc);
+        lh__free(&e->alloc, w->scratch.edge);
         lh__free(&e->alloc, w->again);
         if (i) lh_pred_free(w->pred);
     }
@@ -108,6 +110,7 @@ static lh_status setup(pctx *c, lh__eng *e, int nw)
         w->hint = -1;
         w->scratch.alloc = e->alloc;
         w->scratch.nv = e->nv;
+        w->scratch.vlimit = e->tds.vlimit;
         w->par.me = i;
         w->par.sh = &c->sh;
         lh_status st = lh__tds_scratch(&w->scratch, e->par_scratch ? e->par_scratch : SCRATCH);
@@ -164,6 +167,7 @@ static void prepare(pctx *c, int i, uint32_t round)
     t->cells_cap = s->cells_cap, t->bound_cap = s->bound_cap, t->fresh_cap = s->fresh_cap;
     t->ridge = s->ridge, t->ridge_cap = s->ridge_cap;
     t->sorted = s->sorted, t->spos = s->spos, t->sorted_cap = s->sorted_cap;
+    t->vloc = s->vloc, t->edge = s->edge;
     t->frozen = 1;
     t->cap = t->top; /* no block yet (lh__par_refill) */
     /* top - live counts the free cells (lh__tds_reserve) */

@@ -52,6 +52,8 @@ void lh__tds_release(lh__tds *t)
     lh__free(&t->alloc, t->ridge);
     lh__free(&t->alloc, t->sorted);
     lh__free(&t->alloc, t->spos);
+    lh__free(&t->alloc, t->vloc);
+    lh__free(&t->alloc, t->edge);
     lh__free(&t->alloc, t->vert);
     lh__free(&t->alloc, t->nbr);
     lh__free(&t->alloc, t->stamp);
@@ -91,9 +93,13 @@ lh_index *lh__tds_finish(lh__tds *t)
     lh__free(&t->alloc, t->ridge);
     lh__free(&t->alloc, t->sorted);
     lh__free(&t->alloc, t->spos);
+    lh__free(&t->alloc, t->vloc);
+    lh__free(&t->alloc, t->edge);
     t->cells = t->bound = t->fresh = t->sorted = NULL;
     t->ridge = NULL;
     t->spos = NULL;
+    t->vloc = NULL;
+    t->edge = NULL;
     t->cells_cap = t->bound_cap = t->fresh_cap = t->ridge_cap = t->sorted_cap = 0;
 #if LH_INDEX_BITS == 64
     lh__free(&t->alloc, s); /* a stamp is narrower than an index */
@@ -185,11 +191,32 @@ lh_status lh__tds_scratch(lh__tds *t, size_t facets)
     return ok ? LH_OK : LH_ERR_NOMEM;
 }
 
+/* The 3D boundary numbering and edge table (insert_impl.h, link_local), once the
+ * vertex bound is known: allocated zero, kept until the store is finished. */
+static int edge_room(lh__tds *t)
+{
+    if (t->nv != 4 || !t->vlimit || t->vloc) return 1;
+    if (t->frozen) return 0;
+    uint8_t *loc = lh__alloc(&t->alloc, t->vlimit);
+    uint32_t *edge = lh__alloc(&t->alloc, LH__EDGE_SLOTS * sizeof *edge);
+    if (!loc || !edge) {
+        lh__free(&t->alloc, loc);
+        lh__free(&t->alloc, edge);
+        return 0;
+    }
+    memset(loc, 0, t->vlimit);
+    memset(edge, 0, LH__EDGE_SLOTS * sizeof *edge);
+    t->vloc = loc;
+    t->edge = edge;
+    return 1;
+}
+
 /* Room for the ridges of nbound new cells (lh__ridge_slots) and their
  * sorted vertex lists. */
 static int ridge_room(lh__tds *t)
 {
     const size_t m = (size_t)t->nv - 1, nb = t->nbound;
+    if (!edge_room(t)) return 0;
     if (t->frozen && (t->sorted_cap < nb || t->ridge_cap < lh__ridge_slots(nb * m))) return 0;
     if (t->sorted_cap < nb) {
         size_t cap = 2 * nb;

@@ -53,6 +53,11 @@ static inline size_t lh__ridge_slots(size_t entries)
     return (size_t)v + 1;
 }
 #define LH__MAX_NEW_CELLS (INT32_C(1) << 27) /* b fits in bd */
+/* The numbers a 3D cavity's boundary vertices take (1..LH__EDGE_IDS; 0: none) and
+ * the slots of its edge table, one per ordered pair of numbers. */
+#define LH__EDGE_BITS 6
+#define LH__EDGE_IDS ((1 << LH__EDGE_BITS) - 1)
+#define LH__EDGE_SLOTS (1u << (2 * LH__EDGE_BITS))
 
 typedef struct lh__tds {
     lh_allocator alloc;
@@ -77,6 +82,12 @@ typedef struct lh__tds {
     lh_index *sorted;        /* per new cell: its old vertices, increasing */
     int8_t *spos;            /* and their positions in the cell */
     size_t sorted_cap;       /* new cells the two have room for */
+    size_t vlimit;           /* every vertex index + 1 is below it (0: unknown) */
+    uint8_t *vloc;           /* 3D, once vlimit is known: per vertex index + 1, its
+                                number on the cavity's boundary (insert_impl.h,
+                                link_local); all zero between insertions */
+    uint32_t *edge;          /* and the table of its directed boundary edges,
+                                LH__EDGE_SLOTS entries, all zero between them */
     size_t ncells, nbound; /* conflict cells; boundary facets (pairs cell, index) */
     int frozen;            /* nothing may be allocated (a worker of a parallel phase,
                               hull/parallel.c): growing the scratch or the cells
@@ -92,6 +103,7 @@ static inline void lh__tds_vertex_bound(lh__tds *t, size_t bound)
     int b = 1;
     while (b < LH__TDS_VBITS_MAX && ((size_t)1 << b) <= bound) b++;
     t->vbits = b;
+    t->vlimit = bound;
 }
 /* A new cell with unset contents, or -1 when memory runs out. */
 static inline lh_index lh__tds_new_cell(lh__tds *t)
