@@ -22,7 +22,7 @@
  * and gets the furthest-site Delaunay triangulation, the upper hull, whose vertices
  * are the convex hull's; lift/flat.c passes its own test in the k-flat.
  *
- * Steps: sites ordered (order.c: Morton radix sort, exact duplicates merged, BRIO
+ * Steps: sites ordered (order.c: Hilbert radix sort, exact duplicates merged, BRIO
  * rounds), an initial simplex of d+1 affinely independent sites (exact), then for
  * each site a walk to a conflicting cell and a cavity insertion (tds.c).
  */
@@ -118,13 +118,18 @@ typedef struct lh__eng {
     int inside_conflicts; /* 1: the cell containing q always conflicts (Delaunay);
                              0: a site inside the current hull is not inserted */
     double lo[LH__ENGINE_MAX_DIM];   /* per coordinate, the sites' minimum and     */
-    double span[LH__ENGINE_MAX_DIM]; /* fl(max - min): Morton keys (order.c), the
+    double span[LH__ENGINE_MAX_DIM]; /* fl(max - min): Hilbert keys (order.c), the
                                        static filters' bounds (insert_preds.h)   */
     double static_eb[2];  /* those bounds for orient, insphere (per insertion call) */
     void (*progress)(void *user, size_t done, size_t total); /* lh_options */
     void *progress_user;
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */
 } lh__eng;
+
+/* order.c: cell x[0..d-1] of a grid of 2^bits per side (d bits <= 64) turned in
+ * place into the transpose of its index along the Hilbert curve: bit b of x[j] is
+ * bit b d + d - 1 - j of the index. */
+void lh__hilbert_transpose(uint64_t *x, int d, int bits);
 
 /* The caller's site i. */
 static inline const double *lh__eng_input(const lh__eng *e, size_t i)

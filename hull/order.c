@@ -1,8 +1,8 @@
 /*
  * order.c — what happens to the sites before the first insertion (engine.h): a radix sort on
- * Morton keys, which also brings exact duplicates together to be merged; the
+ * Hilbert keys, which also brings exact duplicates together to be merged; the
  * insertion order (BRIO: Amenta, Choi & Rote, "Incremental constructions con BRIO",
- * SoCG 2003, Morton order in each round); and an initial simplex of d+1 affinely
+ * SoCG 2003, Hilbert order in each round); and an initial simplex of d+1 affinely
  * independent sites, found exactly.
  */
 #include "engine.h"
@@ -28,10 +28,10 @@ static int same_site(const lh__eng *e, lh_index a, lh_index b)
     return 1;
 }
 
-/* Bits per coordinate of the Morton keys: enough for about 8n cells over the
+/* Bits per coordinate of the Hilbert keys: enough for about 8n cells over the
  * bounding box (locality needs no more: a cell then holds at most a few sites, kept
  * in input order), at most 16 and 63/d. Equal keys only cost an exact comparison. */
-static int morton_bits(int d, size_t n)
+static int curve_bits(int d, size_t n)
 {
     int lg = 3;
     while (lg < 64 && (n >> (lg - 3)) > 1) lg++; /* about log2(8n) */
@@ -39,18 +39,21 @@ static int morton_bits(int d, size_t n)
     return bits < cap ? bits : cap;
 }
 
-/* Morton (Z-order) key of every site: each coordinate quantised to morton_bits(d, n)
- * bits over the bounding box, bits interleaved from the most significant down. A
- * span too wide for doubles quantises to 0 (keys tie; correctness does not depend
- * on them); a span so small that its reciprocal overflows is scaled by a power of
- * two first (exact). */
-typedef struct morton {
+/* The Hilbert key of every site: each coordinate quantised to curve_bits(d, n)
+ * bits over the bounding box, the cell's index along the Hilbert curve of that
+ * grid. Consecutive keys are adjacent cells, unlike Morton (Z-order) keys, whose
+ * jumps made the walk from one site to the next longer: in 3D 10^6 the predicates
+ * went from 59.3 to 57.3 million (the walk's orientations). A span too wide for
+ * doubles quantises to 0 (keys tie; correctness does not depend on them); a span
+ * so small that its reciprocal overflows is scaled by a power of two first
+ * (exact). */
+typedef struct curve {
     const lh__eng *t;
     uint64_t *key;
     int bits;
     double cells, lo[LH__ENGINE_MAX_DIM], scale[LH__ENGINE_MAX_DIM];
     int shift[LH__ENGINE_MAX_DIM]; /* a tiny span is first scaled up by 2^-shift */
-} morton;
+} curve;
 
 /* The low `bits` bits of x spread d places apart (bit b to bit b d): by masks
  * for d = 2 (16 bits) and d = 3 (21 bits), each step halving the runs of
@@ -75,25 +78,50 @@ static inline uint64_t spread_bits(uint64_t x, int d, int bits)
     return k;
 }
 
-static void morton_range(void *ctx, size_t lo, size_t hi)
+/* The cell x[0..d-1] (bits each) turned in place into the transpose of its index
+ * along the Hilbert curve: interleaving its bits, x[0]'s first at each level, gives
+ * the index (Skilling, "Programming the Hilbert curve", AIP Conf. Proc. 707, 2004:
+ * from the top level down, each coordinate's bit either inverts x[0]'s lower bits
+ * or exchanges them with its own; then a Gray code). Branch-free: the bits are
+ * random, so branches on them would be mispredicted half the time. */
+void lh__hilbert_transpose(uint64_t *x, int d, int bits)
 {
-    const morton *m = ctx;
+    for (uint64_t q = (uint64_t)1 << (bits - 1); q > 1; q >>= 1) {
+        const uint64_t low = q - 1;
+        for (int i = 0; i < d; i++) {
+            const uint64_t set = 0 - (uint64_t)((x[i] & q) != 0);
+            const uint64_t swap = (x[0] ^ x[i]) & low & ~set;
+            x[0] ^= (low & set) | swap;
+            x[i] ^= swap;
+        }
+    }
+    for (int i = 1; i < d; i++) x[i] ^= x[i - 1];
+    uint64_t flip = 0;
+    for (uint64_t q = (uint64_t)1 << (bits - 1); q > 1; q >>= 1) flip ^= (q - 1) & (0 - (uint64_t)((x[d - 1] & q) != 0));
+    for (int i = 0; i < d; i++) x[i] ^= flip;
+}
+
+static void key_range(void *ctx, size_t lo, size_t hi)
+{
+    const curve *m = ctx;
     const int d = m->t->d;
     for (size_t i = lo; i < hi; i++) {
         const double *p = m->t->xyz + i * d;
-        uint64_t k = 0;
-        for (int j = 0; j < d; j++) { /* coordinate j's bit b goes to bit b d + d - 1 - j */
+        uint64_t cell[LH__ENGINE_MAX_DIM], k = 0;
+        for (int j = 0; j < d; j++) {
             double x = (m->shift[j] ? ldexp(p[j] - m->lo[j], -m->shift[j]) : p[j] - m->lo[j]) * m->scale[j];
-            const uint64_t cell = x > 0 ? (x < m->cells ? (uint64_t)x : (uint64_t)m->cells) : 0;
-            k |= spread_bits(cell, d, m->bits) << (d - 1 - j);
+            cell[j] = x > 0 ? (x < m->cells ? (uint64_t)x : (uint64_t)m->cells) : 0;
         }
+        lh__hilbert_transpose(cell, d, m->bits);
+        for (int j = 0; j < d; j++) /* coordinate j's bit b goes to bit b d + d - 1 - j */
+            k |= spread_bits(cell[j], d, m->bits) << (d - 1 - j);
         m->key[i] = k;
     }
 }
 
-static void morton_keys(const lh__eng *t, uint64_t *key)
+static void curve_keys(const lh__eng *t, uint64_t *key)
 {
-    morton m = {t, key, morton_bits(t->d, t->n), 0, {0}, {0}, {0}};
+    curve m = {t, key, curve_bits(t->d, t->n), 0, {0}, {0}, {0}};
     m.cells = (double)((UINT64_C(1) << m.bits) - 1);
     for (int j = 0; j < t->d; j++) { /* the bounding box from lh__eng_init */
         m.lo[j] = t->lo[j];
@@ -101,7 +129,7 @@ static void morton_keys(const lh__eng *t, uint64_t *key)
         if (span > 0 && span < 0x1p-900) frexp(span, &m.shift[j]); /* 1/span would overflow */
         m.scale[j] = span > 0 && span < 1e308 ? m.cells / ldexp(span, -m.shift[j]) : 0;
     }
-    lh__par_range(t->threads, t->n, morton_range, &m);
+    lh__par_range(t->threads, t->n, key_range, &m);
 }
 
 /* A stable counting-sort pass: the n items of (ka, ia) to (kb, ib) by a digit
@@ -187,13 +215,13 @@ static void radix_sort(uint64_t *key, lh_index *idx, uint64_t *k2, lh_index *i2,
     }
 }
 
-/* Equal sites share a Morton key, and the radix sort keeps a run of equal keys in
+/* Equal sites share a Hilbert key, and the radix sort keeps a run of equal keys in
  * increasing index order. A short run is searched pair by pair for equal sites, a
  * long one sorted exactly (lexicographically, ties by index) so that equal sites are
  * adjacent; either way the smallest index of equal sites is the vertex. Threads
  * share the runs (runs_share): each compacts the distinct sites of its runs at the
  * start of its share of idx, and the shares are then put end to end (merge_runs),
- * which returns the number of distinct sites, in Morton order in idx. */
+ * which returns the number of distinct sites, in Hilbert order in idx. */
 typedef struct runs {
     lh__eng *t;
     const uint64_t *key;
@@ -249,7 +277,7 @@ static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_inde
     runs u = {.t = t, .key = key, .idx = idx, .tmp = tmp};
     const size_t n = t->n;
     /* every site its own first: the runs then write only the duplicates (the
-       sites come in Morton order, so each write of every site's entry would be a
+       sites come in Hilbert order, so each write of every site's entry would be a
        cache miss) */
     lh__par_range(t->threads, n, identity_range, t->dup);
     for (int w = 0; w <= nw; w++) { /* share boundaries moved to the next run's start */
@@ -270,7 +298,7 @@ static size_t merge_runs(lh__eng *t, const uint64_t *key, lh_index *idx, lh_inde
 
 /* BRIO rounds: a site joins round r with probability 2^-(r+1) (r capped), drawn
  * from a hash of the seed and its position (so that threads can share the draw);
- * rounds go from the rarest to the commonest, each keeping the Morton order. */
+ * rounds go from the rarest to the commonest, each keeping the Hilbert order. */
 typedef struct brio {
     uint8_t *round;
     uint64_t seed;
@@ -324,9 +352,9 @@ lh_status lh__eng_order(lh__eng *b)
     size_t *count = lh__alloc(&t->alloc, ((size_t)nw << MAX_DIGIT) * sizeof *count);
     lh_status st = key && k2 && idx && i2 && count ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK && n) {
-        morton_keys(t, key);
+        curve_keys(t, key);
         lh__par_range(t->threads, n, identity_range, idx);
-        radix_sort(key, idx, k2, i2, n, morton_bits(t->d, n) * t->d, count, nw);
+        radix_sort(key, idx, k2, i2, n, curve_bits(t->d, n) * t->d, count, nw);
         b->order = idx;
         b->norder = merge_runs(t, key, idx, i2, nw);
         brio_rounds(b, i2, (uint8_t *)k2, count, lh__par_width(t->threads, b->norder));

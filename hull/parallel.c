@@ -1,7 +1,7 @@
 /*
  * parallel.c — lh__eng_build's insertions with several threads (lh_options.threads).
  *
- * Each BRIO round with enough sites is a phase: its sites, in Morton order, are
+ * Each BRIO round with enough sites is a phase: its sites, in Hilbert order, are
  * cut into chunks of consecutive sites (regions of space), CHUNKS per worker, and
  * the chunks into one run per worker, which the workers insert at once into the one
  * cell store under cell locks (parallel.h; Batista, Devillers & Lévy 2010, §4). A

@@ -247,7 +247,7 @@ LH_TEST(duplicates_are_merged_and_reported)
     lh_tri_free(t);
 }
 
-/* Distinct sites 1e-9 apart share a Morton cell with the copies of each other:
+/* Distinct sites 1e-9 apart share a key cell with the copies of each other:
  * `copies` copies of each of three such sites, interleaved, beside the unit
  * square's corners. A run of at most 8 equal keys is searched pair by pair, a
  * longer one sorted (hull/order.c); both must map every copy to its first

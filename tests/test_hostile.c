@@ -225,7 +225,7 @@ LH_TEST(nonfinite_coordinates_everywhere)
 /* Row "10^6 identical points": LH_ERR_DEGENERATE (affine dimension 0) from lh_delaunay
  * with and without affine_hull and from lh_convex_hull, in well under a second each,
  * with at most 8d + 20 bytes per site allocated and three indices' width more: 8d + 32
- * (measured 8d + 29: a copy of the coordinates, two Morton keys and three indices);
+ * (measured 8d + 29: a copy of the coordinates, two Hilbert keys and three indices);
  * 8d + 44 with 64-bit indices (measured 8d + 41). */
 LH_TEST(a_million_identical_sites)
 {

@@ -162,7 +162,7 @@ LH_TEST(every_allocation_failure_is_survived_with_threads)
     free(x);
 }
 
-/* Duplicates merged by threads (order.c shares the runs of equal Morton keys): 500
+/* Duplicates merged by threads (order.c shares the runs of equal Hilbert keys): 500
  * distinct sites, each 1 to 200 times over in a random order, so that runs are
  * long (sorted exactly) and cross the threads' shares. Same output as one thread,
  * and every copy points at the smallest index of its site. */
