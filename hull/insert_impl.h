@@ -34,7 +34,7 @@
  * 2D and 3D, R is a vertex or an edge, oriented by each cell the opposite way in
  * the other: the two are twins in a table of oriented ridges (link_twins); in 3D
  * that table is indexed by the cavity boundary's own numbering of its vertices,
- * with q moved last in every new cell (link_local).
+ * with q moved last in every new cell (cone_local).
  * Otherwise a Delaunay insertion finds the other cell by turning around R through
  * the dead cells (link_by_turning); the other modes (placing, the furthest-site
  * hull) pair the two through a hash table keyed on R (link_new_cells). Each new
@@ -417,65 +417,84 @@ static inline int link_twins(lh__tds *t, const int nv)
     return 1;
 }
 
-/* Pairing the new cells as twins in 3D without hashing. Each new cell has q at
- * position 3 (QLAST): its boundary triangle (0, 1, 2) is directed by TWIN_EDGE[3],
- * 1 -> 2, 2 -> 0 and 0 -> 1, opposite positions 0, 1 and 2. The boundary's
- * vertices are numbered 1..LH__EDGE_IDS as they are met (t->vloc), and the
- * directed edge (a, b) is the slot a << LH__EDGE_BITS | b of t->edge, which holds
- * b + 1 for new cell fresh[b] until its twin (b, a) reads it. Both arrays are zero
- * between insertions: every number is cleared at the end, and every slot written
- * is cleared by its one reader (3 nbound reads, each clearing a nonzero slot, clear
+/* QLAST[k]: the positions in old cell c of new cell N's vertices when q, which
+ * takes c's position k, is moved last (cone_local): an even permutation, so N keeps
+ * c's orientation, that fixes position 0 (LH__INF's) unless k = 0. */
+static const int8_t QLAST[4][4] = {{2, 1, 3, 0}, {0, 2, 3, 1}, {0, 3, 1, 2}, {0, 1, 2, 3}};
+
+/* The cone and its links in 3D without hashing. Each new cell has q at position 3
+ * (QLAST), so its boundary triangle (0, 1, 2) is directed by TWIN_EDGE[3]: 1 -> 2,
+ * 2 -> 0 and 0 -> 1, opposite positions 0, 1 and 2. The boundary's vertices are
+ * numbered 1..LH__EDGE_IDS as they are met (t->vloc), and the directed edge (a, b)
+ * is the slot a << LH__EDGE_BITS | b of t->edge, which holds b + 1 for the new cell
+ * of boundary facet b until its twin (b, a) reads it. Both arrays are zero between
+ * insertions: every number is cleared at the end, and every slot written is
+ * cleared by its one reader (3 nbound reads, each clearing a nonzero slot, clear
  * 3 nbound distinct slots: all those written). A closed boundary of V vertices has
- * 2V - 4 triangles, so the numbers suffice for up to 122 new cells. A cell's three
- * numbers are kept in t->sorted's room. Returns 1; 0 when there are more vertices
- * (nothing linked: link_twins then); -1 when an edge has no twin. */
-static int link_local(lh__tds *t)
+ * 2V - 4 triangles, so the numbers suffice for up to 122 new cells.
+ * First every boundary facet is read and numbered, and what its new cell needs is
+ * kept in t->sorted's room (its three old vertices, the outside cell, the dead
+ * cell's position there and the numbers); then the dead cells are reused in place
+ * for the first new cells, as many as there are (no free list walked, nothing
+ * killed but the rest), and the twins are read. Returns 1; 0 when there are more
+ * vertices (nothing changed: the general cone then); -1 when an edge has no twin. */
+static int cone_local(lh__eng *e)
 {
+    lh__tds *t = &e->tds;
     uint8_t *loc = t->vloc;
     uint32_t *edge = t->edge;
-    lh_index *ids = t->sorted;
     lh_index seen[LH__EDGE_IDS + 3];
     int nid = 0, ok = 1;
-    for (size_t b = 0; b < t->nbound; b++) {
-        const lh_index *v = t->vert + (size_t)t->fresh[b] * 4;
+    const size_t nb = t->nbound, reuse = t->ncells < nb ? t->ncells : nb;
+    for (size_t b = 0; b < nb && ok; b++) {
+        const lh_index c = t->bound[2 * b], *cv = t->vert + (size_t)c * 4;
+        const int k = (int)t->bound[2 * b + 1];
+        lh_index *keep = t->sorted + 5 * b;
         unsigned id[3];
         for (int j = 0; j < 3; j++) {
-            uint8_t *x = loc + (v[j] + 1);
+            const lh_index v = cv[QLAST[k][j]];
+            uint8_t *x = loc + (v + 1);
             const uint8_t had = *x;
-            seen[nid] = v[j];
+            seen[nid] = keep[j] = v;
             nid += had == 0;
             id[j] = *x = had ? had : (uint8_t)nid;
         }
-        if (nid > LH__EDGE_IDS) {
-            ok = 0;
-            break;
-        }
+        ok = nid <= LH__EDGE_IDS;
+        if (!ok) break;
         edge[id[1] << LH__EDGE_BITS | id[2]] = (uint32_t)b + 1;
         edge[id[2] << LH__EDGE_BITS | id[0]] = (uint32_t)b + 1;
         edge[id[0] << LH__EDGE_BITS | id[1]] = (uint32_t)b + 1;
-        ids[b] = (lh_index)(id[0] | id[1] << 8 | id[2] << 16);
+        const lh_index out = t->nbr[(size_t)c * 4 + k];
+        keep[3] = out;
+        keep[4] = (lh_index)((unsigned)row_pos(t, t->nbr + (size_t)out * 4, c) | id[0] << 2 | id[1] << 10 | id[2] << 18);
     }
-    for (size_t b = 0; b < t->nbound && ok; b++) {
-        lh_index *n = t->nbr + (size_t)t->fresh[b] * 4;
-        const unsigned id0 = (unsigned)ids[b] & 255, id1 = (unsigned)ids[b] >> 8 & 255, id2 = (unsigned)ids[b] >> 16;
+    for (size_t b = 0; b < nb && ok; b++) {
+        const lh_index *keep = t->sorted + 5 * b;
+        const lh_index N = b < reuse ? t->cells[b] : lh__tds_new_cell(t); /* room: lh__tds_room */
+        lh_index *nv = t->vert + (size_t)N * 4, *nn = t->nbr + (size_t)N * 4;
+        nv[0] = keep[0], nv[1] = keep[1], nv[2] = keep[2], nv[3] = e->q;
+        nn[3] = keep[3];
+        t->nbr[(size_t)keep[3] * 4 + (keep[4] & 3)] = N;
+        t->fresh[b] = N;
+    }
+    for (size_t b = 0; b < nb && ok; b++) {
+        const unsigned w = (unsigned)t->sorted[5 * b + 4], id0 = w >> 2 & 255, id1 = w >> 10 & 255, id2 = w >> 18;
+        lh_index *nn = t->nbr + (size_t)t->fresh[b] * 4;
         uint32_t *slot[3] = {edge + (id2 << LH__EDGE_BITS | id1), edge + (id0 << LH__EDGE_BITS | id2),
                              edge + (id1 << LH__EDGE_BITS | id0)};
         for (int j = 0; j < 3; j++) {
             const uint32_t m = *slot[j];
             *slot[j] = 0;
             if (!m) ok = -1;
-            else n[j] = t->fresh[m - 1];
+            else nn[j] = t->fresh[m - 1];
         }
     }
     for (int s = 0; s < nid; s++) loc[seen[s] + 1] = 0; /* nid < LH__EDGE_IDS + 3 */
     if (ok <= 0) memset(edge, 0, LH__EDGE_SLOTS * sizeof *edge);
+    if (ok > 0)
+        for (size_t i = reuse; i < t->ncells; i++) lh__tds_kill(t, t->cells[i]);
     return ok;
 }
-
-/* QLAST[k]: the positions in old cell c of new cell N's vertices when q, which
- * takes c's position k, is moved last (link_local): an even permutation, so N keeps
- * c's orientation, that fixes position 0 (LH__INF's) unless k = 0. */
-static const int8_t QLAST[4][4] = {{2, 1, 3, 0}, {0, 2, 3, 1}, {0, 3, 1, 2}, {0, 1, 2, 3}};
 
 /* Inserts e->q from `start`, a cell in conflict with it. The new cells are
  * t->fresh[0..nbound-1]. On LH_ERR_NOMEM and LH__RETRY the store is unchanged
@@ -495,31 +514,22 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
     for (size_t b = 0; b < t->nbound; b++) /* the outside cells' neighbour rows */
         LH__PREFETCH(t->nbr + (size_t)t->nbr[(size_t)t->bound[2 * b] * NV + t->bound[2 * b + 1]] * NV);
     const int twins = (NV == 3 || (NV == 4 && 2 * t->vbits <= 64)) && !e->hashed_ridges;
-    const int local = NV == 4 && twins && t->vloc; /* q moved last (QLAST) */
+    const int local = NV == 4 && twins && t->vloc ? cone_local(e) : 0;
+    if (local) return local > 0 ? LH_OK : LH_ERR_INTERNAL;
     for (size_t b = 0; b < t->nbound; b++) {
         lh_index c = t->bound[2 * b], k = t->bound[2 * b + 1];
         lh_index N = lh__tds_new_cell(t); /* cannot fail after lh__tds_room */
         lh_index *nvert = t->vert + (size_t)N * NV, *nnbr = t->nbr + (size_t)N * NV;
         const lh_index *cv = t->vert + (size_t)c * NV;
+        for (int j = 0; j < NV; j++) nvert[j] = cv[j], nnbr[j] = -1;
+        nvert[k] = q;
         lh_index outside = t->nbr[(size_t)c * NV + k];
-        if (local) {
-            for (int j = 0; j < 3; j++) nvert[j] = cv[QLAST[k][j]], nnbr[j] = -1;
-            t->bound[2 * b + 1] = 3; /* q's position, for link_twins */
-            nvert[3] = q;
-            nnbr[3] = outside;
-        } else {
-            for (int j = 0; j < NV; j++) nvert[j] = cv[j], nnbr[j] = -1;
-            nvert[k] = q;
-            nnbr[k] = outside;
-        }
+        nnbr[k] = outside;
         lh_index *on = t->nbr + (size_t)outside * NV;
         on[row_pos(t, on, c)] = N;
         t->fresh[b] = N;
     }
-    const int linked = local ? link_local(t) : 0;
-    if (linked) {
-        if (linked < 0) return LH_ERR_INTERNAL;
-    } else if (twins) {
+    if (twins) {
         if (!(NV == 3 ? link_twins(t, 3) : link_twins(t, 4))) return LH_ERR_INTERNAL;
     } else if (e->inside_conflicts)
         link_by_turning(e);

@@ -191,7 +191,7 @@ lh_status lh__tds_scratch(lh__tds *t, size_t facets)
     return ok ? LH_OK : LH_ERR_NOMEM;
 }
 
-/* The 3D boundary numbering and edge table (insert_impl.h, link_local), once the
+/* The 3D boundary numbering and edge table (insert_impl.h, cone_local), once the
  * vertex bound is known: allocated zero, kept until the store is finished. */
 static int edge_room(lh__tds *t)
 {
@@ -220,7 +220,7 @@ static int ridge_room(lh__tds *t)
     if (t->frozen && (t->sorted_cap < nb || t->ridge_cap < lh__ridge_slots(nb * m))) return 0;
     if (t->sorted_cap < nb) {
         size_t cap = 2 * nb;
-        lh_index *s = grow(&t->alloc, t->sorted, 0, cap * m * sizeof *s);
+        lh_index *s = grow(&t->alloc, t->sorted, 0, cap * LH__SORTED_ROOM(m) * sizeof *s);
         if (!s) return 0;
         t->sorted = s;
         int8_t *p = grow(&t->alloc, t->spos, 0, cap * m * sizeof *p);

@@ -59,6 +59,8 @@ static inline size_t lh__ridge_slots(size_t entries)
 #define LH__EDGE_IDS ((1 << LH__EDGE_BITS) - 1)
 #define LH__EDGE_SLOTS (1u << (2 * LH__EDGE_BITS))
 
+#define LH__SORTED_ROOM(m) ((m) > 5 ? (m) : 5)
+
 typedef struct lh__tds {
     lh_allocator alloc;
     int nv;           /* vertices (and neighbours) per cell */
@@ -79,13 +81,15 @@ typedef struct lh__tds {
     size_t cells_cap, bound_cap, fresh_cap;
     lh__ridge *ridge;        /* open-addressing table of the new cells' ridges */
     size_t ridge_cap;        /* a power of two */
-    lh_index *sorted;        /* per new cell: its old vertices, increasing */
+    lh_index *sorted;        /* per new cell: its old vertices, increasing (or,
+                                in 3D, what cone_local keeps of it: room for
+                                LH__SORTED_ROOM(nv - 1) entries) */
     int8_t *spos;            /* and their positions in the cell */
     size_t sorted_cap;       /* new cells the two have room for */
     size_t vlimit;           /* every vertex index + 1 is below it (0: unknown) */
     uint8_t *vloc;           /* 3D, once vlimit is known: per vertex index + 1, its
                                 number on the cavity's boundary (insert_impl.h,
-                                link_local); all zero between insertions */
+                                cone_local); all zero between insertions */
     uint32_t *edge;          /* and the table of its directed boundary edges,
                                 LH__EDGE_SLOTS entries, all zero between them */
     size_t ncells, nbound; /* conflict cells; boundary facets (pairs cell, index) */

@@ -74,6 +74,26 @@ LH_TEST(insertion_gives_the_triangulation_of_all_sites)
         }
 }
 
+/* The centre of sites on a sphere, inserted last, conflicts with every finite cell:
+ * its cavity's boundary is the whole hull, far more than the 63 vertices that 3D
+ * linking numbers (insert_impl.h, cone_local), so it takes the hashed twins. */
+LH_TEST(a_cavity_with_more_boundary_vertices_than_numbers)
+{
+    enum { N = 300 };
+    double x[3 * (N + 1)];
+    lh_fam_seed(77);
+    for (size_t i = 0; i < N; i++) {
+        double r2 = 0;
+        for (int j = 0; j < 3; j++) {
+            x[3 * i + j] = (double)(lh_fam_rnd() % 2001) - 1000;
+            r2 += x[3 * i + j] * x[3 * i + j];
+        }
+        for (int j = 0; j < 3; j++) x[3 * i + j] = r2 > 0 ? x[3 * i + j] / sqrt(r2) : 1;
+    }
+    x[3 * N] = x[3 * N + 1] = x[3 * N + 2] = 0;
+    insert_matches_build(lh_t_, 3, N + 1, x, N, 1, 0, "sphere and its centre");
+}
+
 LH_TEST(one_site_at_a_time_and_furthest_site)
 {
     for (int d = 2; d <= 4 && !LH_FAILED(); d++) {
@@ -182,6 +202,7 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(insertion_gives_the_triangulation_of_all_sites),
+        LH_CASE(a_cavity_with_more_boundary_vertices_than_numbers),
         LH_CASE(one_site_at_a_time_and_furthest_site),
         LH_CASE(inserted_duplicates_are_merged_into_the_first),
         LH_CASE(bad_input_leaves_the_triangulation_unchanged),
