@@ -84,7 +84,7 @@ static inline uint64_t spread_bits(uint64_t x, int d, int bits)
  * from the top level down, each coordinate's bit either inverts x[0]'s lower bits
  * or exchanges them with its own; then a Gray code). Branch-free: the bits are
  * random, so branches on them would be mispredicted half the time. */
-void lh__hilbert_transpose(uint64_t *x, int d, int bits)
+static LH__ALWAYS_INLINE void transpose_d(uint64_t *x, const int d, int bits)
 {
     for (uint64_t q = (uint64_t)1 << (bits - 1); q > 1; q >>= 1) {
         const uint64_t low = q - 1;
@@ -99,6 +99,15 @@ void lh__hilbert_transpose(uint64_t *x, int d, int bits)
     uint64_t flip = 0;
     for (uint64_t q = (uint64_t)1 << (bits - 1); q > 1; q >>= 1) flip ^= (q - 1) & (0 - (uint64_t)((x[d - 1] & q) != 0));
     for (int i = 0; i < d; i++) x[i] ^= flip;
+}
+
+/* With d a constant in 2D and 3D, x stays in registers (a third of the site
+ * order's time otherwise, 3D 10^6). */
+void lh__hilbert_transpose(uint64_t *x, int d, int bits)
+{
+    if (d == 2) transpose_d(x, 2, bits);
+    else if (d == 3) transpose_d(x, 3, bits);
+    else transpose_d(x, d, bits);
 }
 
 static void key_range(void *ctx, size_t lo, size_t hi)
