@@ -174,11 +174,11 @@ lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim)
     return st;
 }
 
-lh_status lh__eng_hull_facets(lh__eng *e, lh_index **out, size_t *count)
+lh_status lh__eng_hull_facets(lh__eng *e, lh_index first, lh_index **out, size_t *count)
 {
     const int nv = e->nv, d = e->d;
     size_t h = 0;
-    for (lh_index c = 0; c < e->tds.top; c++)
+    for (lh_index c = first; c < e->tds.top; c++)
         if (!lh__tds_dead(&e->tds, c) && !lh__eng_finite(e, c)) h++;
     lh_index *raw = lh__alloc(&e->alloc, (h * d + 1) * sizeof *raw);
     lh_index *facets = lh__alloc(&e->alloc, (h * d + 1) * sizeof *facets);
@@ -186,7 +186,7 @@ lh_status lh__eng_hull_facets(lh__eng *e, lh_index **out, size_t *count)
     lh_status st = raw && facets && order ? LH_OK : LH_ERR_NOMEM;
     if (st == LH_OK) {
         size_t f = 0;
-        for (lh_index c = 0; c < e->tds.top; c++) {
+        for (lh_index c = first; c < e->tds.top; c++) {
             if (lh__tds_dead(&e->tds, c) || lh__eng_finite(e, c)) continue;
             const lh_index *v = e->tds.vert + (size_t)c * nv;
             lh_index *o = raw + f * d;

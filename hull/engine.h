@@ -238,8 +238,10 @@ static inline void lh__eng_make_infinite(lh_index *v, const lh_index *s, int nv,
 /* Whether cell c is finite. */
 int lh__eng_finite(const lh__eng *e, lh_index c);
 /* The convex hull facets: d site indices each, ordered so that orient_d(facet, p) > 0
- * for p outside, in canonical order (see lh__canonical), sorted. Allocates *out. */
-lh_status lh__eng_hull_facets(lh__eng *e, lh_index **out, size_t *count);
+ * for p outside, in canonical order (see lh__canonical), sorted. Allocates *out.
+ * They are read from the infinite cells at rows first..top-1 (0: all; after
+ * lh__tds_sort_cells, its count: they are all after the finite cells). */
+lh_status lh__eng_hull_facets(lh__eng *e, lh_index first, lh_index **out, size_t *count);
 
 /* Canonical order of an oriented tuple of m distinct entries: increasing, then the
  * last two exchanged if sorting was an odd permutation, so that the orientation is

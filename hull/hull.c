@@ -74,7 +74,7 @@ lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *o
     st = lh__eng_init(&e, &a, d, n, xyz, h->dup, opt);
     int affdim = -1;
     if (st == LH_OK) st = lh__eng_build(&e, (lh_index)(n < 1000000 ? 4 * n + 256 : 4000000), &affdim);
-    if (st == LH_OK) st = lh__eng_hull_facets(&e, &h->facets, &h->count);
+    if (st == LH_OK) st = lh__eng_hull_facets(&e, 0, &h->facets, &h->count);
     h->ndup = e.ndup;
     lh__eng_release(&e);
     if (st == LH_OK) st = collect_vertices(h);

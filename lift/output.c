@@ -44,6 +44,9 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *orig)
     const size_t nv = (size_t)b->nv, top = (size_t)s->top;
     size_t count = 0;
     lh_status st = lh__tds_sort_cells(s, t->n, orig, &count, b->threads);
+    /* the hull facets from the infinite cells, now after the finite ones: rows
+       count.. hold them whole (the sort moves rows; only finite ones change) */
+    if (st == LH_OK) st = lh__eng_hull_facets(b, (lh_index)count, &t->hull, &t->hull_count);
     lh_index *simplex_of = NULL;
     if (st == LH_OK && !(simplex_of = lh__alloc(&t->alloc, (top + 1) * sizeof *simplex_of)))
         st = LH_ERR_NOMEM;
@@ -61,11 +64,10 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *orig)
 
 lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
 {
-    /* The hull facets first: the sort moves the infinite cells. The stamps are then
-     * no longer needed: their words become the rows' positions before the sort. */
-    lh_status st = lh__eng_hull_facets(b, &t->hull, &t->hull_count);
-    lh_index *orig = st == LH_OK ? lh__tds_finish(&b->tds) : NULL;
-    if (st == LH_OK) st = orig ? extract_simplices(b, t, orig) : LH_ERR_NOMEM;
+    /* The stamps are no longer needed: their words become the rows' positions
+     * before the sort. */
+    lh_index *orig = lh__tds_finish(&b->tds);
+    lh_status st = orig ? extract_simplices(b, t, orig) : LH_ERR_NOMEM;
     if (st == LH_OK) {
         t->vsimp = lh__alloc(&t->alloc, (t->n + 1) * sizeof *t->vsimp);
         if (!t->vsimp) st = LH_ERR_NOMEM;
