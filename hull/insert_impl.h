@@ -446,7 +446,7 @@ static int cone_local(lh__eng *e)
     lh_index seen[LH__EDGE_IDS + 3];
     int nid = 0, ok = 1;
     const size_t nb = t->nbound, reuse = t->ncells < nb ? t->ncells : nb;
-    for (size_t b = 0; b < nb && ok; b++) {
+    for (size_t b = 0; b < nb; b++) {
         const lh_index c = t->bound[2 * b], *cv = t->vert + (size_t)c * 4;
         const int k = (int)t->bound[2 * b + 1];
         lh_index *keep = t->sorted + 5 * b;
