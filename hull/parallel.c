@@ -74,14 +74,7 @@ static void release(pctx *c)
     lh__eng *e = c->e;
     for (int i = 0; c->w && i < c->nw; i++) {
         worker *w = c->w + i;
-        lh__free(&e->alloc, w->scratch.cells);
-        lh__free(&e->alloc, w->scratch.bound);
-        lh__free(&e->alloc, w->scratch.fresh);
-        lh__free(&e->alloc, w->scratch.ridge);
-        lh__free(&e->alloc, w->scratch.sorted);
-        lh__free(&e->alloc, w->scratch.spos);
-        lh__free(&e->alloc, w->scratch.vloc);
-        lh__free(&e->alloc, w->scratch.edge);
+        lh__tds_free_scratch(&w->scratch);
         lh__free(&e->alloc, w->again);
         if (i) lh_pred_free(w->pred);
     }

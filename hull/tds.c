@@ -47,19 +47,30 @@ lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, lh_index c
     return set_capacity(t, cap_hint > 16 ? cap_hint : 16);
 }
 
-void lh__tds_release(lh__tds *t)
+void lh__tds_free_scratch(lh__tds *t)
 {
+    lh__free(&t->alloc, t->cells);
+    lh__free(&t->alloc, t->bound);
+    lh__free(&t->alloc, t->fresh);
     lh__free(&t->alloc, t->ridge);
     lh__free(&t->alloc, t->sorted);
     lh__free(&t->alloc, t->spos);
     lh__free(&t->alloc, t->vloc);
     lh__free(&t->alloc, t->edge);
+    t->cells = t->bound = t->fresh = t->sorted = NULL;
+    t->ridge = NULL;
+    t->spos = NULL;
+    t->vloc = NULL;
+    t->edge = NULL;
+    t->cells_cap = t->bound_cap = t->fresh_cap = t->ridge_cap = t->sorted_cap = 0;
+}
+
+void lh__tds_release(lh__tds *t)
+{
+    lh__tds_free_scratch(t);
     lh__free(&t->alloc, t->vert);
     lh__free(&t->alloc, t->nbr);
     lh__free(&t->alloc, t->stamp);
-    lh__free(&t->alloc, t->cells);
-    lh__free(&t->alloc, t->bound);
-    lh__free(&t->alloc, t->fresh);
     memset(t, 0, sizeof *t);
 }
 
@@ -87,20 +98,7 @@ lh_index *lh__tds_finish(lh__tds *t)
 {
     uint32_t *s = t->stamp;
     t->stamp = NULL;
-    lh__free(&t->alloc, t->cells);
-    lh__free(&t->alloc, t->bound);
-    lh__free(&t->alloc, t->fresh);
-    lh__free(&t->alloc, t->ridge);
-    lh__free(&t->alloc, t->sorted);
-    lh__free(&t->alloc, t->spos);
-    lh__free(&t->alloc, t->vloc);
-    lh__free(&t->alloc, t->edge);
-    t->cells = t->bound = t->fresh = t->sorted = NULL;
-    t->ridge = NULL;
-    t->spos = NULL;
-    t->vloc = NULL;
-    t->edge = NULL;
-    t->cells_cap = t->bound_cap = t->fresh_cap = t->ridge_cap = t->sorted_cap = 0;
+    lh__tds_free_scratch(t);
 #if LH_INDEX_BITS == 64
     lh__free(&t->alloc, s); /* a stamp is narrower than an index */
     return lh__alloc(&t->alloc, ((size_t)t->cap + 1) * sizeof(lh_index));
@@ -211,8 +209,8 @@ static int edge_room(lh__tds *t)
     return 1;
 }
 
-/* Room for the ridges of nbound new cells (lh__ridge_slots) and their
- * sorted vertex lists. */
+/* Room for the ridges of nbound new cells (lh__ridge_slots), their sorted vertex
+ * lists, and in 3D the boundary numbering (edge_room). */
 static int ridge_room(lh__tds *t)
 {
     const size_t m = (size_t)t->nv - 1, nb = t->nbound;

@@ -59,6 +59,8 @@ static inline size_t lh__ridge_slots(size_t entries)
 #define LH__EDGE_IDS ((1 << LH__EDGE_BITS) - 1)
 #define LH__EDGE_SLOTS (1u << (2 * LH__EDGE_BITS))
 
+/* Entries per new cell in lh__tds.sorted: its m old vertices, or the 5 that
+ * cone_local keeps (insert_impl.h). */
 #define LH__SORTED_ROOM(m) ((m) > 5 ? (m) : 5)
 
 typedef struct lh__tds {
@@ -100,6 +102,9 @@ typedef struct lh__tds {
 
 lh_status lh__tds_init(lh__tds *t, const lh_allocator *alloc, int nv, lh_index cap_hint);
 void lh__tds_release(lh__tds *t);
+/* Frees the scratch of the insertions (cells .. edge below), leaving them empty;
+ * also a parallel worker's own scratch store (hull/parallel.c). */
+void lh__tds_free_scratch(lh__tds *t);
 lh_status lh__tds_reserve(lh__tds *t, size_t extra);
 /* Declares every vertex index below `bound` (sharper ridge keys). */
 static inline void lh__tds_vertex_bound(lh__tds *t, size_t bound)
