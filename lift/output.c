@@ -62,28 +62,68 @@ static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *orig)
     return LH_OK;
 }
 
+/* An incident simplex per site, the least that holds it (-1: none): from the
+ * output itself, so right even for sites that stopped being vertices
+ * (furthest-site). Each of `ways` threads takes a range of simplices from its end
+ * to its start, writing its least in an array of its own (the first thread's is
+ * vsimp); a site's entry is then the first thread's that has one. */
+enum { INCIDENT_WAYS = 4 }; /* threads at most: (ways - 1) n more indices */
+typedef struct incident {
+    const lh_tri *t;
+    int nv, ways;
+    lh_index *least[INCIDENT_WAYS];
+} incident;
+
+static void incident_share(void *ctx, int w, int nw)
+{
+    const incident *j = ctx;
+    const lh_tri *t = j->t;
+    const int nv = j->nv;
+    lh_index *least = j->least[w];
+    for (size_t i = 0; i < t->n; i++) least[i] = -1;
+    const size_t lo = lh__share(t->count, w, nw);
+    for (size_t c = lh__share(t->count, w + 1, nw); c-- > lo;) {
+        if (c >= lo + LH__AHEAD)
+            for (int k = 0; k < nv; k++) LH__PREFETCH(least + t->simp[(c - LH__AHEAD) * nv + k]);
+        for (int k = 0; k < nv; k++) least[t->simp[c * nv + k]] = (lh_index)c;
+    }
+}
+
+static void first_incident(void *ctx, size_t lo, size_t hi)
+{
+    const incident *j = ctx;
+    for (size_t i = lo; i < hi; i++) {
+        lh_index c = j->least[0][i];
+        for (int w = 1; c < 0 && w < j->ways; w++) c = j->least[w][i];
+        j->least[0][i] = c;
+    }
+}
+
+static lh_status incident_simplices(lh_tri *t, int nv, int threads)
+{
+    const int width = lh__par_width(threads, t->count);
+    incident j = {t, nv, width < INCIDENT_WAYS ? width : INCIDENT_WAYS, {NULL}};
+    lh_status st = LH_OK;
+    for (int w = 0; w < j.ways && st == LH_OK; w++)
+        if (!(j.least[w] = lh__alloc(&t->alloc, (t->n + 1) * sizeof *j.least[w]))) st = LH_ERR_NOMEM;
+    if (st == LH_OK) {
+        lh__par_for(j.ways, incident_share, &j);
+        if (j.ways > 1) lh__par_range(threads, t->n, first_incident, &j);
+        t->vsimp = j.least[0];
+        j.least[0] = NULL;
+    }
+    for (int w = 0; w < j.ways; w++) lh__free(&t->alloc, j.least[w]);
+    return st;
+}
+
 lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
 {
     /* The stamps are no longer needed: their words become the rows' positions
      * before the sort. */
     lh_index *orig = lh__tds_finish(&b->tds);
     lh_status st = orig ? extract_simplices(b, t, orig) : LH_ERR_NOMEM;
-    if (st == LH_OK) {
-        t->vsimp = lh__alloc(&t->alloc, (t->n + 1) * sizeof *t->vsimp);
-        if (!t->vsimp) st = LH_ERR_NOMEM;
-    }
-    if (st == LH_OK) { /* from the output itself: right even for sites that stopped
-                        * being vertices (furthest-site) */
-        for (size_t i = 0; i < t->n; i++) t->vsimp[i] = -1;
-        const int nv = b->nv;
-        for (size_t c = t->count; c-- > 0;) {
-            if (c >= LH__AHEAD)
-                for (int k = 0; k < nv; k++) LH__PREFETCH(t->vsimp + t->simp[(c - LH__AHEAD) * nv + k]);
-            for (int k = 0; k < nv; k++) t->vsimp[t->simp[c * nv + k]] = (lh_index)c;
-        }
-    }
     lh__free(&b->tds.alloc, orig);
-    return st;
+    return st == LH_OK ? incident_simplices(t, b->nv, b->threads) : st;
 }
 
 int lh_tri_dim(const lh_tri *t) { return t ? t->d : 0; }
