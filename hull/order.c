@@ -101,19 +101,13 @@ static LH__ALWAYS_INLINE void transpose_d(uint64_t *x, const int d, int bits)
     for (int i = 0; i < d; i++) x[i] ^= flip;
 }
 
-/* With d a constant in 2D and 3D, x stays in registers (a third of the site
- * order's time otherwise, 3D 10^6). */
-void lh__hilbert_transpose(uint64_t *x, int d, int bits)
-{
-    if (d == 2) transpose_d(x, 2, bits);
-    else if (d == 3) transpose_d(x, 3, bits);
-    else transpose_d(x, d, bits);
-}
+void lh__hilbert_transpose(uint64_t *x, int d, int bits) { transpose_d(x, d, bits); }
 
-static void key_range(void *ctx, size_t lo, size_t hi)
+/* The keys of sites lo..hi-1; with d a constant in 2D and 3D (key_range), the
+ * cell stays in registers and the loops unroll (a third of the site order's time
+ * otherwise, 3D 10^6). */
+static LH__ALWAYS_INLINE void keys_d(const curve *m, size_t lo, size_t hi, const int d)
 {
-    const curve *m = ctx;
-    const int d = m->t->d;
     for (size_t i = lo; i < hi; i++) {
         const double *p = m->t->xyz + i * d;
         uint64_t cell[LH__ENGINE_MAX_DIM], k = 0;
@@ -121,11 +115,19 @@ static void key_range(void *ctx, size_t lo, size_t hi)
             double x = (m->shift[j] ? ldexp(p[j] - m->lo[j], -m->shift[j]) : p[j] - m->lo[j]) * m->scale[j];
             cell[j] = x > 0 ? (x < m->cells ? (uint64_t)x : (uint64_t)m->cells) : 0;
         }
-        lh__hilbert_transpose(cell, d, m->bits);
+        transpose_d(cell, d, m->bits);
         for (int j = 0; j < d; j++) /* coordinate j's bit b goes to bit b d + d - 1 - j */
             k |= spread_bits(cell[j], d, m->bits) << (d - 1 - j);
         m->key[i] = k;
     }
+}
+
+static void key_range(void *ctx, size_t lo, size_t hi)
+{
+    const curve *m = ctx;
+    if (m->t->d == 2) keys_d(m, lo, hi, 2);
+    else if (m->t->d == 3) keys_d(m, lo, hi, 3);
+    else keys_d(m, lo, hi, m->t->d);
 }
 
 static void curve_keys(const lh__eng *t, uint64_t *key)
