@@ -284,10 +284,31 @@ static int residues_zero(const lh__subsets *sub, int dim, int lifted, const coor
     return 1;
 }
 
+/* Whether every coordinate of the call's points is an integer: then every g_j >= 0,
+ * G >= 0, and the granularity rule holds whenever err < 1/2 (integer grids, without
+ * splitting the coordinates). Below 2^52, adding and taking away 2^52 rounds |x| to
+ * an integer (in round-to-nearest), which is |x| itself only if |x| is one; from
+ * 2^52 up every double is an integer. No branch, and no chain from one coordinate
+ * to the next. */
+static int integer_coords(int npts, int dim, const double *const *pts)
+{
+    int fractions = 0;
+    for (int i = 0; i < npts; i++)
+        for (int c = 0; c < dim; c++) {
+            const double a = fabs(pts[i][c]), r = (a + 0x1p52) - 0x1p52;
+            fractions += (a < 0x1p52) & (r != a);
+        }
+    return !fractions;
+}
+
 int lh__bound_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
                    double det, double err, int *sign)
 {
     if (!(err >= 0)) return 0;
+    if (err < 0.5 && integer_coords(dim + 1 + lifted, dim, pts)) {
+        *sign = det > err ? 1 : det < -err ? -1 : 0;
+        return LH__BY_GRANULARITY;
+    }
     coord x[LH__MAXN * (LH__MAXN - 2)];
     int scale = split_coords(dim + 1 + lifted, dim, pts, x);
     if (scale == INT_MAX) scale = 0; /* every coordinate 0 */
