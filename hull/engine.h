@@ -121,6 +121,9 @@ typedef struct lh__eng {
     double span[LH__ENGINE_MAX_DIM]; /* fl(max - min): Hilbert keys (order.c), the
                                        static filters' bounds (insert_preds.h)   */
     double static_eb[2];  /* those bounds for orient, insphere (per insertion call) */
+    int integer;          /* every coordinate of the sites an integer */
+    int static_exact[2];  /* the static filter of orient, insphere exact: its bound
+                             is 0 and a 0 from it an exact zero (insert_preds.h) */
     void (*progress)(void *user, size_t done, size_t total); /* lh_options */
     void *progress_user;
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */

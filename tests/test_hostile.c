@@ -5,6 +5,8 @@
  * sites; exactly cocircular sites; sites on hull facets; queries on boundaries; what
  * the reader makes of extreme numbers and of megabyte lines. Each test names its rows
  * of the catalogue. Reader diagnostics proper are in test_io_read.c. */
+#include "lh_api_test.h"
+#include "lh_families.h"
 #include "lh_test.h"
 #include "lifthull.h"
 
@@ -353,6 +355,34 @@ LH_TEST(sites_on_a_common_circumsphere)
     expect_count(lh_t_, 3, 125, grid3, 384, 64);
 }
 
+/* Row "lattice points on a sphere ... scaled": exactly cospherical lattice points in
+ * 2D-5D (every insphere among them a perturbed zero) scaled by odd integers, whose
+ * spans run from within the range where the engine's static filters are exact on
+ * integer sites (hull/insert_preds.h: 2D up to about 5000, 3D 650, 4D 160, 5D 59)
+ * to far past it, where products round: the triangulation of the unscaled points,
+ * and exactly valid. */
+LH_TEST(scaled_lattice_spheres_triangulate_alike)
+{
+    static const double scales[] = {3, 13, 29, 41, 71, 101, 10007, 1000003, 0x1p40 + 1};
+    for (int d = 2; d <= 5 && !LH_FAILED(); d++) {
+        double x[300 * 5], y[300 * 5];
+        lh_fam_seed((uint64_t)(31 * d));
+        const size_t n = lh_fam_make(F_SPHERE_EXACT, d, 300, x);
+        lh_tri *a = NULL;
+        LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &a), LH_OK);
+        for (size_t s = 0; s < LH_COUNT(scales) && !LH_FAILED(); s++) {
+            for (size_t i = 0; i < n * (size_t)d; i++) y[i] = x[i] * scales[s];
+            lh_tri *b = NULL;
+            LH_EXPECT_EQ_INT(lh_delaunay(d, n, y, NULL, &b), LH_OK);
+            LH_EXPECT_TRUE(b && lh_test_same_tri(a, b));
+            if (b) LH_EXPECT_EQ_INT(lh_tri_check(b, NULL, 0), LH_OK);
+            if (LH_FAILED()) LH_NOTE("d %d, %zu sites, scale %.17g", d, n, scales[s]);
+            lh_tri_free(b);
+        }
+        lh_tri_free(a);
+    }
+}
+
 /* Rows "site exactly on a hull facet": Delaunay makes it a vertex (every site is one);
  * the convex hull may (coplanar facets, never flat ones). A query exactly on the
  * hull's boundary is inside (distance 0), in the smallest simplex holding it. */
@@ -514,6 +544,7 @@ int main(int argc, char **argv)
         LH_CASE(all_duplicates_of_one_site),
         LH_CASE(collinear_and_coplanar_sites),
         LH_CASE(sites_on_a_common_circumsphere),
+        LH_CASE(scaled_lattice_spheres_triangulate_alike),
         LH_CASE(sites_and_queries_on_hull_facets),
         LH_CASE(reader_keeps_extreme_doubles),
         LH_CASE(reader_takes_megabyte_lines),

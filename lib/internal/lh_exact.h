@@ -39,6 +39,12 @@ int lh__insphere_sos_unfiltered(lh_pred *ctx, int d, const double *const *pts, d
                                 double err);
 int lh__orient_unfiltered(lh_pred *ctx, int k, const double *const *pts, double det,
                           double err);
+/* For a caller that knows the insphere determinant of pts is exactly 0 (an exact
+ * static filter, hull/insert_preds.h): its perturbed sign; counted as a call
+ * settled by granularity with a zero result. */
+int lh__insphere_sos_zero(lh_pred *ctx, int d, const double *const *pts);
+/* Counts such a call of lh_orient whose exact zero the caller found itself. */
+void lh__pred_count_zero(lh_pred *ctx);
 
 /* Counts n calls of lh_orient/lh_insphere that a caller settled with the inline
  * filters of lh_filter.gen.h (dims/), as filter exits. */

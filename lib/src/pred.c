@@ -125,6 +125,19 @@ int lh__insphere_sos_unfiltered(lh_pred *ctx, int d, const double *const *pts, d
     return s ? s : lh__sos_sign(ctx, pts, d, 1);
 }
 
+void lh__pred_count_zero(lh_pred *ctx)
+{
+    ctx->count.calls++;
+    ctx->count.grid_exits++;
+    ctx->count.zero_results++;
+}
+
+int lh__insphere_sos_zero(lh_pred *ctx, int d, const double *const *pts)
+{
+    lh__pred_count_zero(ctx);
+    return lh__sos_sign(ctx, pts, d, 1);
+}
+
 int lh__orient_unfiltered(lh_pred *ctx, int k, const double *const *pts, double det,
                           double err)
 {
