@@ -119,17 +119,22 @@ LH_TEST(deferred_sites_are_inserted_afterwards)
 }
 
 /* Workers that run out of new cells stop; their sites and the chunks nobody took
- * are inserted afterwards: with one block of cells a phase, workers stop in every
- * phase, and the triangulation is still the one-thread one. */
+ * are inserted afterwards: with one block of cells a phase, workers stop, and the
+ * triangulation is still the one-thread one. Whether a given run stops one depends
+ * on the threads' timing (under ASan, on 2 cores, a 2D run with 3 threads once
+ * stopped none), so the stops are counted over all six runs (3 or 4 a run
+ * otherwise). */
 LH_TEST(sites_of_stopped_workers_are_inserted_afterwards)
 {
+    size_t total = 0;
     for (int d = 2; d <= 4 && !LH_FAILED(); d++)
         for (int threads = 2; threads <= 3 && !LH_FAILED(); threads++) {
             size_t stopped = 0;
             engine_run(lh_t_, d, F_CUBE, threads, 0, 1, &stopped);
-            LH_EXPECT_TRUE(stopped > 0);
+            total += stopped;
             LH_NOTE("d=%d threads=%d: %zu workers stopped", d, threads, stopped);
         }
+    LH_EXPECT_GT_U64(total, 0);
 }
 
 /* lh_delaunay with 2 threads and the k-th allocation failing (all on the calling
