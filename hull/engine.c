@@ -7,7 +7,6 @@
 
 #include "lh_exact.h"
 
-#include <math.h>
 #include <string.h>
 
 lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
@@ -33,18 +32,16 @@ lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
     e->xyz = xyz;
     e->dup = dup;
     e->rng = (opt ? opt->seed : LH__DEFAULT_SEED) | 1;
-    /* the bounding box and whether every coordinate is an integer, in one pass:
-       below 2^52, adding and taking away 2^52 rounds |x| to an integer (round to
-       nearest), which is |x| only if |x| is one; from 2^52 up, every double is */
-    double hi[LH__ENGINE_MAX_DIM];
+    double hi[LH__ENGINE_MAX_DIM]; /* the bounding box and whether every coordinate is
+                                      an integer, one pass over the sites */
     size_t fractions = 0;
     for (int j = 0; j < d; j++) e->lo[j] = hi[j] = n ? xyz[j] : 0;
     for (size_t i = 0; i < n; i++)
         for (int j = 0; j < d; j++) {
-            const double x = xyz[i * (size_t)d + j], a = fabs(x);
+            const double x = xyz[i * (size_t)d + j];
             e->lo[j] = x < e->lo[j] ? x : e->lo[j];
             hi[j] = x > hi[j] ? x : hi[j];
-            fractions += (a < 0x1p52) & ((a + 0x1p52) - 0x1p52 != a);
+            fractions += lh__dbl_fraction(x);
         }
     e->integer = !fractions;
     for (int j = 0; j < d; j++) e->span[j] = hi[j] - e->lo[j]; /* rounding is monotone:

@@ -29,6 +29,14 @@ int lh__detsum_sign(const lh__detsum *s); /* -1, 0, +1 */
 void lh__detsum_free(lh__detsum *s);
 /* Exponent of the lowest set bit of x (finite, nonzero). */
 int lh__dbl_low_exp(double x);
+/* Whether x (finite) is not an integer: below 2^52, adding and taking away 2^52
+ * rounds |x| to an integer (round to nearest), which is |x| only if |x| is one; from
+ * 2^52 up every double is. No branch, so a loop over coordinates sums it. */
+static inline int lh__dbl_fraction(double x)
+{
+    const double a = x < 0 ? -x : x;
+    return (a < 0x1p52) & ((a + 0x1p52) - 0x1p52 != a);
+}
 
 /* lh_insphere_sos without argument checks, for the engine's inner loops (d within
  * range, ctx and pts valid; counted as a public call). */

@@ -286,18 +286,12 @@ static int residues_zero(const lh__subsets *sub, int dim, int lifted, const coor
 
 /* Whether every coordinate of the call's points is an integer: then every g_j >= 0,
  * G >= 0, and the granularity rule holds whenever err < 1/2 (integer grids, without
- * splitting the coordinates). Below 2^52, adding and taking away 2^52 rounds |x| to
- * an integer (in round-to-nearest), which is |x| itself only if |x| is one; from
- * 2^52 up every double is an integer. No branch, and no chain from one coordinate
- * to the next. */
+ * splitting the coordinates). */
 static int integer_coords(int npts, int dim, const double *const *pts)
 {
     int fractions = 0;
     for (int i = 0; i < npts; i++)
-        for (int c = 0; c < dim; c++) {
-            const double a = fabs(pts[i][c]), r = (a + 0x1p52) - 0x1p52;
-            fractions += (a < 0x1p52) & (r != a);
-        }
+        for (int c = 0; c < dim; c++) fractions += lh__dbl_fraction(pts[i][c]);
     return !fractions;
 }
 
