@@ -143,6 +143,58 @@ static lh_index free_start(const pctx *c, int upto, lh_index want)
     }
 }
 
+static uint32_t run_lo(uint64_t r) { return (uint32_t)r; }
+static uint32_t run_hi(uint64_t r) { return (uint32_t)(r >> 32); }
+
+/* The phase's sites first..first+count-1 cut into chunks, CHUNKS per worker but
+ * at least MIN_CHUNK sites each (scaled) and one per worker, and the chunks into
+ * one run per worker. */
+static void cut_runs(pctx *c, size_t first, size_t count)
+{
+    const size_t least = scaled(MIN_CHUNK, c->e->d), fit = count / (least ? least : 1);
+    const size_t most = (size_t)c->nw * CHUNKS, chunks = fit < most ? fit : most;
+    c->first = first, c->count = count;
+    c->nchunks = chunks > (size_t)c->nw ? chunks : (size_t)c->nw;
+    for (int i = 0; i < c->nw; i++) {
+        const uint64_t lo = lh__share(c->nchunks, i, c->nw), hi = lh__share(c->nchunks, i + 1, c->nw);
+        atomic_store(&c->run[i], lo | hi << 32);
+    }
+}
+
+/* The first site of chunk k (k = nchunks: the end of the phase). */
+static size_t chunk_first(const pctx *c, uint32_t k)
+{
+    return c->first + lh__share(c->count, (int)k, (int)c->nchunks);
+}
+
+/* A cell near vertex q, from live cell c: a visibility walk (Devillers, Pion &
+ * Teillaud 2002, as insert_impl.h's locate, without locks: no worker runs yet) that
+ * ends in the closed simplex holding q, at an infinite cell, or after `limit` steps.
+ * A worker starts from it, not from the last insertion's cells, where every worker
+ * would start at once: their first walks would cross, and a worker descheduled
+ * there would hold them, each one deferring every site it tries meanwhile. */
+static lh_index walk_toward(lh__eng *e, lh_index c, lh_index q)
+{
+    const lh__tds *t = &e->tds;
+    const int nv = t->nv;
+    const double *p[LH__ENGINE_MAX_DIM + 2];
+    lh_index prev = -1;
+    for (size_t step = 0, limit = 64 + 8 * (size_t)t->live; step < limit; step++) {
+        const lh_index *v = t->vert + (size_t)c * nv;
+        if (v[0] == LH__INF) return c;
+        int moved = 0;
+        for (int i = 0; i < nv && !moved; i++) {
+            const int k = (int)((step + (size_t)i) % (size_t)nv); /* the first facet rotates */
+            const lh_index n = t->nbr[(size_t)c * nv + k];
+            if (n == prev) continue;
+            for (int j = 0; j < nv; j++) p[j] = lh__eng_site(e, j == k ? q : v[j]);
+            if (lh_orient(e->pred, e->d, p) < 0) prev = c, c = n, moved = 1;
+        }
+        if (!moved) break;
+    }
+    return c;
+}
+
 /* Worker i's engine for a phase: the shared store, no block of new cells yet
  * (worker 0 has the free list), its scratch, predicates, random stream, visit rounds
  * after `round`, and a start cell it holds. */
@@ -170,36 +222,14 @@ static void prepare(pctx *c, int i, uint32_t round)
     w->sites = 0;
     w->par.stopped = 0;
     w->par.live_shift = 0;
-    w->e.hint = free_start(c, i, w->hint >= 0 ? w->hint : e->hint);
+    const lh_index from = live_cell(&e->tds, w->hint) ? w->hint : e->hint;
+    const size_t head = chunk_first(c, run_lo(atomic_load(&c->run[i]))); /* its first site */
+    w->e.hint = free_start(c, i, walk_toward(e, from, (lh_index)head));
     t->round = round + 1; /* the hint held from the first round on (lh__par_begin) */
     if (w->e.hint >= 0) lh__par_keep(t, w->e.hint);
     else w->par.stopped = 1; /* no cell to start from: the sequential pass does it all */
     atomic_store(&c->sh.from[i].round, t->round);
     t->round = round; /* lh__par_begin steps to round + 1 */
-}
-
-static uint32_t run_lo(uint64_t r) { return (uint32_t)r; }
-static uint32_t run_hi(uint64_t r) { return (uint32_t)(r >> 32); }
-
-/* The phase's sites first..first+count-1 cut into chunks, CHUNKS per worker but
- * at least MIN_CHUNK sites each (scaled) and one per worker, and the chunks into
- * one run per worker. */
-static void cut_runs(pctx *c, size_t first, size_t count)
-{
-    const size_t least = scaled(MIN_CHUNK, c->e->d), fit = count / (least ? least : 1);
-    const size_t most = (size_t)c->nw * CHUNKS, chunks = fit < most ? fit : most;
-    c->first = first, c->count = count;
-    c->nchunks = chunks > (size_t)c->nw ? chunks : (size_t)c->nw;
-    for (int i = 0; i < c->nw; i++) {
-        const uint64_t lo = lh__share(c->nchunks, i, c->nw), hi = lh__share(c->nchunks, i + 1, c->nw);
-        atomic_store(&c->run[i], lo | hi << 32);
-    }
-}
-
-/* The first site of chunk k (k = nchunks: the end of the phase). */
-static size_t chunk_first(const pctx *c, uint32_t k)
-{
-    return c->first + lh__share(c->count, (int)k, (int)c->nchunks);
 }
 
 /* Takes the first chunk of run j (front) or its last (!front); -1 if it is empty. */

@@ -129,10 +129,10 @@ LH_TEST(sites_of_stopped_workers_are_inserted_afterwards)
     size_t total = 0;
     for (int d = 2; d <= 4 && !LH_FAILED(); d++)
         for (int threads = 2; threads <= 3 && !LH_FAILED(); threads++) {
-            size_t stopped = 0;
-            engine_run(lh_t_, d, F_CUBE, threads, 0, 1, &stopped);
+            size_t stopped = 0, deferred = engine_run(lh_t_, d, F_CUBE, threads, 0, 1, &stopped);
             total += stopped;
-            LH_NOTE("d=%d threads=%d: %zu workers stopped", d, threads, stopped);
+            LH_NOTE("d=%d threads=%d: %zu workers stopped, %zu sites left to the sequential pass", d, threads,
+                    stopped, deferred);
         }
     LH_EXPECT_GT_U64(total, 0);
 }
