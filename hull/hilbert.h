@@ -9,10 +9,10 @@
  * code then works within a level, but for a flip of each level by the parity of the
  * last coordinate's bits above. So a level's d key bits depend only on its d cell
  * bits and a state (the signed permutation and that parity), which also gives the
- * next level's state: the state machine of the Hilbert curve (Bader, "Space-Filling
- * Curves", Springer 2013, §3.4). A step of the table `many` takes LH__HILBERT_BITS
- * / d levels at once (4 in 2D, 2 in 3D), from the Morton code (the cell's bits
- * interleaved as the key's are).
+ * next level's state: the Hilbert curve as a state machine (Griffiths, "Table-driven
+ * algorithms for generating space-filling curves", 1985). A step of the table
+ * `many` takes LH__HILBERT_BITS / d levels at once (4 in 2D, 2 in 3D), from the
+ * Morton code (the cell's bits interleaved as the key's are).
  */
 #ifndef LH_HILBERT_H
 #define LH_HILBERT_H
