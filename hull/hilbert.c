@@ -50,7 +50,7 @@ int lh__hilbert_init(lh__hilbert *h, int d)
     memset(index, -1, sizeof index);
     st[0] = (hstate){{0, 1, 2}, 0, 0};
     index[raw_code(st)] = 0;
-    h->d = d, h->nstates = 1;
+    h->nstates = 1;
     for (int s = 0; s < h->nstates; s++) /* every state one level reaches */
         for (unsigned in = 0; in < 1u << d; in++) {
             unsigned out;

@@ -20,12 +20,12 @@
 #include <stdint.h>
 
 enum {
-    LH__HILBERT_STATES = 96, /* 3! signed permutations x 2^3 signs x 2 parities, at most */
+    LH__HILBERT_STATES = 96, /* 3! permutations x 2^3 signs x 2 parities, at most */
     LH__HILBERT_BITS = 8     /* key bits a step of `many` takes, at most */
 };
 
 typedef struct lh__hilbert {
-    int d, nstates;       /* nstates: those reached from the first */
+    int nstates;          /* those reached from the first */
     /* entry [state << b | b cell bits] (b = d in `one`, a step's in `many`): the
        b key bits | the next state << 8 */
     uint16_t one[LH__HILBERT_STATES << 3];
@@ -37,8 +37,8 @@ int lh__hilbert_init(lh__hilbert *h, int d);
 
 /* The key of the cell whose Morton code is m (`bits` levels; coordinate j's bit b
  * at bit b d + d - 1 - j, as the key's): lh__hilbert_transpose's key, interleaved
- * the same way. d is h's, passed so that a caller's constant folds; the first
- * levels beyond a multiple of a step's go one at a time. */
+ * the same way. d is the tables' (lh__hilbert_init), passed so that a caller's
+ * constant folds; the first levels beyond a multiple of a step's go one at a time. */
 static inline uint64_t lh__hilbert_key(const lh__hilbert *h, uint64_t m, int bits, const int d)
 {
     const int levels = LH__HILBERT_BITS / d, step = levels * d;

@@ -167,18 +167,22 @@ static size_t chunk_first(const pctx *c, uint32_t k)
     return c->first + lh__share(c->count, (int)k, (int)c->nchunks);
 }
 
-/* A cell near vertex q, from live cell c: a visibility walk (Devillers, Pion &
- * Teillaud 2002, as insert_impl.h's locate, without locks: no worker runs yet) that
- * ends in the closed simplex holding q, at an infinite cell, or after `limit` steps.
- * A worker starts from it, not from the last insertion's cells, where every worker
- * would start at once: their first walks would cross, and a worker descheduled
- * there would hold them, each one deferring every site it tries meanwhile. */
+/* A cell near vertex q, from cell c (returned as it is if not live): a visibility
+ * walk (Devillers, Pion & Teillaud 2002) that ends in the closed simplex holding q,
+ * at an infinite cell, or after `limit` steps. A worker starts from it, not from
+ * the last insertion's cells, where every worker would start at once: their first
+ * walks would cross, and a worker descheduled there would hold them, each one
+ * deferring every site it tries meanwhile. Not insert_impl.h's locate, which is
+ * static to each compiled insertion loop and takes the workers' locks: this runs a
+ * few times a phase, on the calling thread before any worker, so plain exact
+ * orientations do. */
 static lh_index walk_toward(lh__eng *e, lh_index c, lh_index q)
 {
     const lh__tds *t = &e->tds;
     const int nv = t->nv;
     const double *p[LH__ENGINE_MAX_DIM + 2];
     lh_index prev = -1;
+    if (!live_cell(t, c)) return c; /* free_start finds another */
     for (size_t step = 0, limit = 64 + 8 * (size_t)t->live; step < limit; step++) {
         const lh_index *v = t->vert + (size_t)c * nv;
         if (v[0] == LH__INF) return c;
