@@ -111,6 +111,9 @@ typedef struct lh__eng {
                              decides (NULL: no finite cell conflicts) */
     uint64_t filtered;    /* predicate calls settled by inline filters, not yet
                              added to pred's counters */
+    size_t turned;        /* tests: sequential insertions in 4D and up whose new
+                             cells were linked by turning (a boundary of more than
+                             255 vertices: insert_impl.h) */
     int hashed_ridges;    /* tests: link new cells as large n does where packed keys
                              fit (insert_impl.h: hashed keys; turning, not twins
                              or the 2D tour, in 2D and 3D), to exercise those

@@ -189,32 +189,33 @@ lh_status lh__tds_scratch(lh__tds *t, size_t facets)
     return ok ? LH_OK : LH_ERR_NOMEM;
 }
 
-/* The 3D boundary numbering and edge table (insert_impl.h, cone_local), once the
- * vertex bound is known: allocated zero, kept until the store is finished. */
-static int edge_room(lh__tds *t)
+/* The numbering of a cavity's boundary vertices (insert_impl.h: cone_local in 3D,
+ * link_by_numbers from 3D on) and the 3D edge table, once the vertex bound is known:
+ * allocated zero, kept until the store is finished. */
+static int number_room(lh__tds *t)
 {
-    if (t->nv != 4 || !t->vlimit || t->vloc) return 1;
+    if (t->nv < 4 || !t->vlimit || t->vloc) return 1;
     if (t->frozen) return 0;
     uint8_t *loc = lh__alloc(&t->alloc, t->vlimit);
-    uint32_t *edge = lh__alloc(&t->alloc, LH__EDGE_SLOTS * sizeof *edge);
-    if (!loc || !edge) {
+    uint32_t *edge = t->nv == 4 ? lh__alloc(&t->alloc, LH__EDGE_SLOTS * sizeof *edge) : NULL;
+    if (!loc || (t->nv == 4 && !edge)) {
         lh__free(&t->alloc, loc);
         lh__free(&t->alloc, edge);
         return 0;
     }
     memset(loc, 0, t->vlimit);
-    memset(edge, 0, LH__EDGE_SLOTS * sizeof *edge);
+    if (edge) memset(edge, 0, LH__EDGE_SLOTS * sizeof *edge);
     t->vloc = loc;
     t->edge = edge;
     return 1;
 }
 
 /* Room for the ridges of nbound new cells (lh__ridge_slots), their sorted vertex
- * lists, and in 3D the boundary numbering (edge_room). */
+ * lists, and the boundary numbering (number_room). */
 static int ridge_room(lh__tds *t)
 {
     const size_t m = (size_t)t->nv - 1, nb = t->nbound;
-    if (!edge_room(t)) return 0;
+    if (!number_room(t)) return 0;
     if (t->frozen && (t->sorted_cap < nb || t->ridge_cap < lh__ridge_slots(nb * m))) return 0;
     if (t->sorted_cap < nb) {
         size_t cap = 2 * nb;

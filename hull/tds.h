@@ -59,9 +59,10 @@ static inline size_t lh__ridge_slots(size_t entries)
 #define LH__EDGE_IDS ((1 << LH__EDGE_BITS) - 1)
 #define LH__EDGE_SLOTS (1u << (2 * LH__EDGE_BITS))
 
-/* Entries per new cell in lh__tds.sorted: its m old vertices, or the 5 that
- * cone_local keeps (insert_impl.h). */
-#define LH__SORTED_ROOM(m) ((m) > 5 ? (m) : 5)
+/* Entries per new cell in lh__tds.sorted: its m old vertices, the 5 that
+ * cone_local keeps in 3D, or the m 64-bit ridge keys of
+ * link_by_numbers (insert_impl.h). */
+#define LH__SORTED_ROOM(m) ((m) > 2 ? 2 * (m) : 5)
 
 typedef struct lh__tds {
     lh_allocator alloc;
@@ -83,16 +84,17 @@ typedef struct lh__tds {
     size_t cells_cap, bound_cap, fresh_cap;
     lh__ridge *ridge;        /* open-addressing table of the new cells' ridges */
     size_t ridge_cap;        /* a power of two */
-    lh_index *sorted;        /* per new cell: its old vertices, increasing (or,
-                                in 3D, what cone_local keeps of it: room for
-                                LH__SORTED_ROOM(nv - 1) entries) */
+    lh_index *sorted;        /* per new cell: its old vertices, increasing (or
+                                what cone_local or link_by_numbers keeps of it:
+                                room for LH__SORTED_ROOM(nv - 1) entries) */
     int8_t *spos;            /* and their positions in the cell */
     size_t sorted_cap;       /* new cells the two have room for */
     size_t vlimit;           /* every vertex index + 1 is below it (0: unknown) */
-    uint8_t *vloc;           /* 3D, once vlimit is known: per vertex index + 1, its
-                                number on the cavity's boundary (insert_impl.h,
-                                cone_local); all zero between insertions */
-    uint32_t *edge;          /* and the table of its directed boundary edges,
+    uint8_t *vloc;           /* 3D and up, once vlimit is known: per vertex index
+                                + 1, its number on the cavity's boundary
+                                (insert_impl.h: cone_local, link_by_numbers); all
+                                zero between insertions */
+    uint32_t *edge;          /* 3D: the table of the boundary's directed edges,
                                 LH__EDGE_SLOTS entries, all zero between them */
     size_t ncells, nbound; /* conflict cells; boundary facets (pairs cell, index) */
     int frozen;            /* nothing may be allocated (a worker of a parallel phase,
