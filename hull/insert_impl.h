@@ -35,7 +35,8 @@
  * the other: the two are twins in a table of oriented ridges (link_twins); in 3D
  * that table is indexed by the cavity boundary's own numbering of its vertices,
  * with q moved last in every new cell (cone_local). In 4D and up, a Delaunay
- * insertion keys R on that numbering too, in a hash table (link_by_numbers); when
+ * insertion keys R on that numbering too, in a hash table (number_boundary,
+ * link_numbered), and the dead cells become new cells in place (make_cone); when
  * the boundary has more than 255 vertices, it finds the other cell by turning
  * around R through the dead cells (link_by_turning). The other modes (placing,
  * the furthest-site hull) pair the two through a hash table keyed on R's vertex
@@ -347,12 +348,13 @@ static void link_by_turning(lh__eng *e)
  * vertex, in position order), from the numbers of its old vertices on the cavity's
  * boundary: t->vloc holds a vertex's number (1..255, 0: none yet), seen[0..*nid-1]
  * the vertices numbered. A key is the ridge's numbers, increasing, 8 bits each (56
- * bits at most in 8D): equal keys, equal ridges. Returns 0 when the numbers run
+ * bits at most in 8D): equal keys, equal ridges. Read from the dead cell of
+ * boundary facet b, before the cone overwrites it. Returns 0 when the numbers run
  * out. */
 static inline int number_ridges(lh__tds *t, size_t b, uint64_t *keys, lh_index *seen, int *nid)
 {
     const int M = NV - 1, k = (int)t->bound[2 * b + 1];
-    const lh_index *v = t->vert + (size_t)t->fresh[b] * NV;
+    const lh_index *v = t->vert + (size_t)t->bound[2 * b] * NV; /* the dead cell's */
     unsigned id[LH__ENGINE_MAX_DIM], rank[LH__ENGINE_MAX_DIM];
     for (int i = 0; i < M; i++) {
         const lh_index x = v[i + (i >= k)]; /* the i-th old vertex, without a branch on k */
@@ -385,24 +387,35 @@ static inline int number_ridges(lh__tds *t, size_t b, uint64_t *keys, lh_index *
  * ridge's key is its numbers in order, exact, in one word, with no sort of the
  * cell's vertices (link_new_cells) and no walk through the dead cells
  * (link_by_turning: 1.3x and 1.4x the time in 4D and 5D, timed inside the same
- * runs). The keys are taken first, then entered in the ridge table (a prefix at
- * most 1/8 full) in order, each slot prefetched 16 keys ahead. The first of a
- * pair to arrive claims a slot; the second finds it, links both cells, and flags
- * it paired: both without a branch on which one arrives first (such a branch
- * guesses wrong half the time). Every ridge of the closed boundary is in exactly
- * two new cells; the count of pairs checks it. Returns 1; 0, with nothing linked,
- * when the boundary has more than 255 vertices (link_by_turning then); -1 when a
- * ridge is not in exactly two cells. Keys go in t->sorted (LH__SORTED_ROOM). */
-static int link_by_numbers(lh__tds *t)
+ * runs). number_boundary takes the keys, from the dead cells, before the cone;
+ * link_numbered enters them in the ridge table (a prefix at most 1/8 full) in
+ * order, each slot prefetched 16 keys ahead. The first of a pair to arrive claims
+ * a slot; the second finds it, links both cells, and flags it paired: both
+ * without a branch on which one arrives first (such a branch guesses wrong half
+ * the time). Every ridge of the closed boundary is in exactly two new cells; the
+ * count of pairs checks it. Keys go in t->sorted (LH__SORTED_ROOM). */
+
+/* The keys of every boundary facet's ridges. Returns 1; 0, with t->vloc cleared
+ * again, when the boundary has more than 255 vertices (link_by_turning then). */
+static int number_boundary(lh__tds *t)
+{
+    const int M = NV - 1;
+    uint64_t *keys = (uint64_t *)t->sorted;
+    lh_index seen[255 + LH__ENGINE_MAX_DIM];
+    int nid = 0, ok = 1;
+    for (size_t b = 0; b < t->nbound && ok; b++) ok = number_ridges(t, b, keys + b * M, seen, &nid);
+    for (int i = 0; i < nid; i++) t->vloc[seen[i] + 1] = 0;
+    return ok;
+}
+
+/* Links the new cells t->fresh[] by the keys of number_boundary. Returns 1; -1
+ * when a ridge is not in exactly two cells. */
+static int link_numbered(lh__tds *t)
 {
     const int M = NV - 1;
     const size_t nb = t->nbound, nk = nb * (size_t)M, ahead = 16;
-    uint64_t *keys = (uint64_t *)t->sorted;
-    lh_index seen[255 + LH__ENGINE_MAX_DIM], sink[2];
-    int nid = 0, ok = 1;
-    for (size_t b = 0; b < nb && ok; b++) ok = number_ridges(t, b, keys + b * M, seen, &nid);
-    for (int i = 0; i < nid; i++) t->vloc[seen[i] + 1] = 0;
-    if (!ok) return 0;
+    const uint64_t *keys = (const uint64_t *)t->sorted;
+    lh_index sink[2];
     const uint32_t round = t->round;
     const size_t mask = lh__ridge_slots(nk / 2) - 1; /* nk / 2 ridges */
     size_t paired = 0;
@@ -442,7 +455,7 @@ static int link_by_numbers(lh__tds *t)
  * its neighbours under the reversed keys. No branch depends on which cell of a
  * pair comes first, unlike turning (link_by_turning: half of a 3D run's
  * mispredicted branches, callgrind) or link_new_cells. In 4D and up, where a
- * ridge's vertices must first be put in a canonical order, link_by_numbers does
+ * ridge's vertices must first be put in a canonical order, number_ridges does
  * that on small numbers. The 3D key needs 2 vbits <= 64. Returns 0 if a key has
  * no twin. */
 static const int8_t TWIN_EDGE[4][4][2] = {
@@ -584,13 +597,42 @@ static int cone_local(lh__eng *e)
     return ok;
 }
 
+/* The cone: the new cell t->fresh[b] is boundary facet b's dead cell c with vertex
+ * k replaced by q, linked to the outside cell across k and to nothing else yet.
+ * grow_region lists the boundary facets cell by cell in the order of t->cells, so
+ * once facet b of cells[i] is reached, cells[0..i-1] have been read for the last
+ * time: with `reuse`, they are overwritten in place as the next new cells (no free
+ * list walked: its pops are a chain of dependent loads), and only the rest come
+ * from lh__tds_new_cell. Without it, the dead cells stay as they are (turning walks
+ * through them). Returns the number of dead cells reused, the first of t->cells;
+ * the caller kills the others. */
+static size_t make_cone(lh__eng *e, int reuse)
+{
+    lh__tds *t = &e->tds;
+    size_t done = 0, used = 0;
+    for (size_t b = 0; b < t->nbound; b++) {
+        const lh_index c = t->bound[2 * b], k = t->bound[2 * b + 1];
+        while (reuse && t->cells[done] != c) done++;
+        /* cannot fail after lh__tds_room */
+        const lh_index N = used < done ? t->cells[used++] : lh__tds_new_cell(t);
+        lh_index *nvert = t->vert + (size_t)N * NV, *nnbr = t->nbr + (size_t)N * NV;
+        const lh_index *cv = t->vert + (size_t)c * NV, outside = t->nbr[(size_t)c * NV + k];
+        for (int j = 0; j < NV; j++) nvert[j] = cv[j], nnbr[j] = -1;
+        nvert[k] = e->q;
+        nnbr[k] = outside;
+        lh_index *on = t->nbr + (size_t)outside * NV;
+        on[row_pos(t, on, c)] = N;
+        t->fresh[b] = N;
+    }
+    return used;
+}
+
 /* Inserts e->q from `start`, a cell in conflict with it. The new cells are
  * t->fresh[0..nbound-1]. On LH_ERR_NOMEM and LH__RETRY the store is unchanged
  * (but for visit marks). */
 static lh_status cavity_insert(lh__eng *e, lh_index start)
 {
     lh__tds *t = &e->tds;
-    const lh_index q = e->q;
 #ifndef LH_T_PARALLEL
     lh__tds_next_round(t); /* a worker's attempt starts its rounds (lh__par_begin) */
 #endif
@@ -604,33 +646,20 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
     const int twins = (NV == 3 || (NV == 4 && 2 * t->vbits <= 64)) && !e->hashed_ridges;
     const int local = NV == 4 && twins && t->vloc ? cone_local(e) : 0;
     if (local) return local > 0 ? LH_OK : LH_ERR_INTERNAL;
-    for (size_t b = 0; b < t->nbound; b++) {
-        lh_index c = t->bound[2 * b], k = t->bound[2 * b + 1];
-        lh_index N = lh__tds_new_cell(t); /* cannot fail after lh__tds_room */
-        lh_index *nvert = t->vert + (size_t)N * NV, *nnbr = t->nbr + (size_t)N * NV;
-        const lh_index *cv = t->vert + (size_t)c * NV;
-        for (int j = 0; j < NV; j++) nvert[j] = cv[j], nnbr[j] = -1;
-        nvert[k] = q;
-        lh_index outside = t->nbr[(size_t)c * NV + k];
-        nnbr[k] = outside;
-        lh_index *on = t->nbr + (size_t)outside * NV;
-        on[row_pos(t, on, c)] = N;
-        t->fresh[b] = N;
-    }
-    if (twins) {
+    const int numbered = !twins && e->inside_conflicts && t->vloc ? number_boundary(t) : 0;
+    const size_t reused = make_cone(e, numbered);
+    if (numbered) {
+        if (link_numbered(t) < 0) return LH_ERR_INTERNAL;
+    } else if (twins) {
         if (!(NV == 3 ? link_twins(t, 3) : link_twins(t, 4))) return LH_ERR_INTERNAL;
     } else if (e->inside_conflicts) {
-        const int numbered = t->vloc ? link_by_numbers(t) : 0;
-        if (numbered < 0) return LH_ERR_INTERNAL;
-        if (!numbered) {
-            link_by_turning(e);
+        link_by_turning(e);
 #ifndef LH_T_PARALLEL
-            e->turned++;
+        e->turned++;
 #endif
-        }
     } else
         link_new_cells(t);
-    for (size_t i = 0; i < t->ncells; i++) lh__tds_kill(t, t->cells[i]);
+    for (size_t i = reused; i < t->ncells; i++) lh__tds_kill(t, t->cells[i]);
     return LH_OK;
 }
 

@@ -190,7 +190,7 @@ lh_status lh__tds_scratch(lh__tds *t, size_t facets)
 }
 
 /* The numbering of a cavity's boundary vertices (insert_impl.h: cone_local in 3D,
- * link_by_numbers from 3D on) and the 3D edge table, once the vertex bound is known:
+ * number_ridges from 3D on) and the 3D edge table, once the vertex bound is known:
  * allocated zero, kept until the store is finished. */
 static int number_room(lh__tds *t)
 {

@@ -61,7 +61,7 @@ static inline size_t lh__ridge_slots(size_t entries)
 
 /* Entries per new cell in lh__tds.sorted: its m old vertices, the 5 that
  * cone_local keeps in 3D, or the m 64-bit ridge keys of
- * link_by_numbers (insert_impl.h). */
+ * number_boundary (insert_impl.h). */
 #define LH__SORTED_ROOM(m) ((m) > 2 ? 2 * (m) : 5)
 
 typedef struct lh__tds {
@@ -85,14 +85,14 @@ typedef struct lh__tds {
     lh__ridge *ridge;        /* open-addressing table of the new cells' ridges */
     size_t ridge_cap;        /* a power of two */
     lh_index *sorted;        /* per new cell: its old vertices, increasing (or
-                                what cone_local or link_by_numbers keeps of it:
+                                what cone_local or number_boundary keeps of it:
                                 room for LH__SORTED_ROOM(nv - 1) entries) */
     int8_t *spos;            /* and their positions in the cell */
     size_t sorted_cap;       /* new cells the two have room for */
     size_t vlimit;           /* every vertex index + 1 is below it (0: unknown) */
     uint8_t *vloc;           /* 3D and up, once vlimit is known: per vertex index
                                 + 1, its number on the cavity's boundary
-                                (insert_impl.h: cone_local, link_by_numbers); all
+                                (insert_impl.h: cone_local, number_ridges); all
                                 zero between insertions */
     uint32_t *edge;          /* 3D: the table of the boundary's directed edges,
                                 LH__EDGE_SLOTS entries, all zero between them */

@@ -88,7 +88,7 @@ LH_TEST(large_n_linking_gives_the_same_triangulation)
 /* Sites on the moment curve (t, t^2, t^3, t^4) have a Delaunay triangulation in
  * which every two sites are joined (it is neighbourly), so a site inserted after
  * 255 others has a cavity whose boundary has more than 255 vertices: the numbers
- * of link_by_numbers run out and turning links the cells. The engine (the generic
+ * of number_ridges run out and turning links the cells. The engine (the generic
  * loop) and lh_delaunay (the fixed-dimension one) must still give the
  * triangulation that turning alone gives. */
 LH_TEST(boundaries_beyond_255_vertices_are_linked_by_turning)
