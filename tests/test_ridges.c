@@ -33,7 +33,8 @@ static lh_index *engine_cells(int d, size_t n, const double *x, int furthest, in
     lh_index *dup = malloc(n * sizeof *dup), *cells = NULL;
     lh__eng e;
     *count = *turned = 0;
-    if (dup && lh__eng_init(&e, NULL, d, n, x, dup, NULL) == LH_OK) {
+    if (!dup) return NULL;
+    if (lh__eng_init(&e, NULL, d, n, x, dup, NULL) == LH_OK) {
         e.finite_conflict = furthest ? outside : inside;
         e.user = &e;
         e.inside_conflicts = !furthest;
