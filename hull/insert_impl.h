@@ -408,8 +408,8 @@ static int number_boundary(lh__tds *t)
     return ok;
 }
 
-/* Links the new cells t->fresh[] by the keys of number_boundary. Returns 1; -1
- * when a ridge is not in exactly two cells. */
+/* Links the new cells t->fresh[] by the keys of number_boundary. Returns 1; 0
+ * when a ridge is not in exactly two cells (as link_twins). */
 static int link_numbered(lh__tds *t)
 {
     const int M = NV - 1;
@@ -439,7 +439,7 @@ static int link_numbered(lh__tds *t)
             *(second ? t->nbr + (size_t)O * NV + (met.bd & 15) : sink + 1) = N;
         }
     }
-    return 2 * paired == nk ? 1 : -1;
+    return 2 * paired == nk;
 }
 
 /* Pairing the new cells as twins, in 2D and 3D. The new cell made from boundary
@@ -603,9 +603,10 @@ static int cone_local(lh__eng *e)
  * once facet b of cells[i] is reached, cells[0..i-1] have been read for the last
  * time: with `reuse`, they are overwritten in place as the next new cells (no free
  * list walked: its pops are a chain of dependent loads), and only the rest come
- * from lh__tds_new_cell. Without it, the dead cells stay as they are (turning walks
- * through them). Returns the number of dead cells reused, the first of t->cells;
- * the caller kills the others. */
+ * from lh__tds_new_cell. The last dead cell with a boundary facet is never reused
+ * (it is still being read when the last new cell is made). Without `reuse`, the
+ * dead cells stay as they are (turning walks through them). Returns the number of
+ * dead cells reused, the first of t->cells; the caller kills the others. */
 static size_t make_cone(lh__eng *e, int reuse)
 {
     lh__tds *t = &e->tds;
@@ -649,7 +650,7 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
     const int numbered = !twins && e->inside_conflicts && t->vloc ? number_boundary(t) : 0;
     const size_t reused = make_cone(e, numbered);
     if (numbered) {
-        if (link_numbered(t) < 0) return LH_ERR_INTERNAL;
+        if (!link_numbered(t)) return LH_ERR_INTERNAL;
     } else if (twins) {
         if (!(NV == 3 ? link_twins(t, 3) : link_twins(t, 4))) return LH_ERR_INTERNAL;
     } else if (e->inside_conflicts) {
