@@ -842,10 +842,23 @@ int cmd_suite(int argc, char **argv) {
                 double r = med_wall(ci, t) / t2;
                 bool pass = r >= want;
                 (pass ? bar_pass : bar_fail)++;
-                char b[96];
+                // The ratio within each round (both tools on that round's sites): its
+                // spread shows how much of a verdict this machine's noise can turn.
+                double lo = INFINITY, hi = -INFINITY;
+                const std::vector<Sample> &a = results[ci][t], &l = results[ci]["lifthull_t2"];
+                for (size_t k = 0; k < a.size() && k < l.size(); ++k)
+                    if (a[k].ok && l[k].ok) {
+                        lo = std::min(lo, a[k].wall / l[k].wall);
+                        hi = std::max(hi, a[k].wall / l[k].wall);
+                    }
+                char b[160];
                 std::snprintf(b, sizeof b, "%s%s >= %.1fx: %s", bars.empty() ? "" : "; ", name, want,
                               pass ? "PASS" : "**FAIL**");
                 bars += b;
+                if (lo <= hi) {
+                    std::snprintf(b, sizeof b, " (rounds %.2f..%.2fx)", lo, hi);
+                    bars += b;
+                }
             };
             if (c.d == 2) add("DT2", "cgal_2", 2.5);
             if (c.d == 3) add("DT3", "cgal_3", 2.5), add("TetGen", "tetgen", 4.0);
@@ -857,7 +870,10 @@ int cmd_suite(int argc, char **argv) {
                         cell("tetgen").c_str(), bars.empty() ? "—" : bars.c_str());
         }
         std::printf("\n(The lifthull 1 thread column's ratio is its time over lifthull_t2's: the "
-                    "speed-up of the second thread.)\n");
+                    "speed-up of the second thread. A bar's verdict reads the ratio of the medians; "
+                    "beside it, the lowest and highest of the ratios within one round (both tools on "
+                    "that round's sites): a bar inside that range is within this machine's "
+                    "noise.)\n");
     }
 
     std::printf("\n### Peak memory: median MiB of the process's maximum RSS (ratio tool / lifthull)\n\n");
