@@ -848,8 +848,8 @@ int cmd_suite(int argc, char **argv) {
                 const std::vector<Sample> &a = results[ci][t], &l = results[ci]["lifthull_t2"];
                 for (size_t k = 0; k < a.size() && k < l.size(); ++k)
                     if (a[k].ok && l[k].ok) {
-                        lo = std::min(lo, a[k].wall / l[k].wall);
-                        hi = std::max(hi, a[k].wall / l[k].wall);
+                        const double x = a[k].wall / l[k].wall;
+                        lo = std::min(lo, x), hi = std::max(hi, x);
                     }
                 char b[160];
                 std::snprintf(b, sizeof b, "%s%s >= %.1fx: %s", bars.empty() ? "" : "; ", name, want,
