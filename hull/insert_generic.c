@@ -12,12 +12,26 @@ static LH__ALWAYS_INLINE int finite_conflict_generic(lh__eng *e, const lh_index 
     return e->finite_conflict && e->finite_conflict(e->user, v, q);
 }
 
+static LH__ALWAYS_INLINE void finite_conflict2_generic(lh__eng *e, const lh_index *v, const lh_index *w,
+                                                       lh_index q, int *x)
+{
+    if (!e->conflict_sign) {
+        x[0] = finite_conflict_generic(e, v, q);
+        x[1] = finite_conflict_generic(e, w, q);
+        return;
+    }
+    lifted_sign2(e, v, w, q, x);
+    x[0] = x[0] == e->conflict_sign;
+    x[1] = x[1] == e->conflict_sign;
+}
+
 #ifdef LH_T_PARALLEL
 #define LH_T_NAME lh__eng_insert_generic_par
 #else
 #define LH_T_NAME lh__eng_insert_generic
 #endif
 #define LH_T_FINITE_CONFLICT(e, v, q) finite_conflict_generic(e, v, q)
+#define LH_T_FINITE_CONFLICT2(e, v, w, q, x) finite_conflict2_generic(e, v, w, q, x)
 #define LH_T_ORIENT(e, pts) orient_inline(e, pts)
 #define LH_T_PREPARE(e) prepare_preds(e)
 #include "insert_impl.h"

@@ -74,6 +74,21 @@ static LH__ALWAYS_INLINE int lifted_sign(lh__eng *e, const lh_index *v, lh_index
     return lh__insphere_sos_unfiltered(e->pred, d, p, det, err); /* exact, perturbed */
 }
 
+/* lifted_sign of finite cells v and w with one vertex q, into s[0] and s[1]: their
+ * static filters in one paired evaluation (lh__static2_d), the rest of the stages
+ * for a cell it leaves undecided. */
+static LH__ALWAYS_INLINE void lifted_sign2(lh__eng *e, const lh_index *v, const lh_index *w, lh_index q, int *s)
+{
+    const int d = LH_PD(e);
+    const double *p[LH__ENGINE_MAX_DIM + 2], *r[LH__ENGINE_MAX_DIM + 2];
+    for (int k = 0; k <= d; k++) p[k] = lh__eng_site(e, v[k]), r[k] = lh__eng_site(e, w[k]);
+    p[d + 1] = r[d + 1] = lh__eng_site(e, q);
+    lh__static2_d(d, p, r, e->static_eb[1], s);
+    e->filtered += (s[0] != 0) + (s[1] != 0);
+    if (!s[0]) s[0] = lifted_sign(e, v, q);
+    if (!s[1]) s[1] = lifted_sign(e, w, q);
+}
+
 /* lh_orient of the d + 1 points p: exact, 0 when they are affinely dependent. */
 static LH__ALWAYS_INLINE int orient_inline(lh__eng *e, const double *const *p)
 {

@@ -6,7 +6,9 @@
  * integer grids (exact zeros), grids moved by 1e-12, a large offset with a small
  * spread, mixed magnitudes, near-cospherical points. Also: a span outside the band
  * disables the filter, and a bound 10^6 times too small is caught (the test can
- * fail).
+ * fail). The paired insphere filter (lh__static2_d) gives each lane the sign the
+ * single one gives, under the real bound and under no bound at all (the rounded
+ * determinant's own sign, so every operation must match).
  */
 #include "lh_families.h"
 #include "lh_filter.gen.h"
@@ -99,6 +101,39 @@ LH_TEST(a_too_small_bound_is_caught)
     lh_pred_free(ctx);
 }
 
+LH_TEST(paired_filter_matches_single_lane_by_lane)
+{
+#ifdef __GNUC__
+    LH_EXPECT_TRUE(LH__HAVE_V2D); /* the vector path is the one tested */
+#endif
+    static const int fams[] = {F_CUBE, F_GRID, F_GRID_JITTER, F_OFFSET_1E9, F_MIXED, F_SPHERE_EXACT};
+    long compared = 0, mismatched = 0;
+    for (int d = 2; d <= 5; d++)
+        for (size_t f = 0; f < LH_COUNT(fams); f++) {
+            double *x = malloc(200 * d * sizeof *x), span[8];
+            lh_fam_seed((uint64_t)(300 * d + f));
+            size_t n = lh_fam_make(fams[f], d, 200, x);
+            spans(d, n, x, span);
+            const double bounds[2] = {lh__static_bound(1, d, span), 0};
+            for (int t = 0; t < 2000; t++) {
+                const double *p[8], *r[8];
+                for (int i = 0; i < d + 2; i++) {
+                    p[i] = x + (lh_fam_rnd() % n) * d;
+                    r[i] = x + (lh_fam_rnd() % n) * d;
+                }
+                for (int b = 0; b < 2; b++) {
+                    int two[2];
+                    lh__static2_d(d, p, r, bounds[b], two);
+                    mismatched += (two[0] != static_sign(1, d, p, bounds[b])) + (two[1] != static_sign(1, d, r, bounds[b]));
+                    compared += 2;
+                }
+            }
+            free(x);
+        }
+    LH_EXPECT_EQ_INT(mismatched, 0);
+    LH_EXPECT_GT_INT(compared, 90000);
+}
+
 LH_TEST(out_of_band_spans_disable_the_filter)
 {
     const double tiny[3] = {1e-200, 1, 1}, huge[3] = {1, 1e200, 1}, zero[3] = {0, 1, 1}, fine[3] = {1, 2, 3};
@@ -112,6 +147,7 @@ LH_TEST(out_of_band_spans_disable_the_filter)
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {LH_CASE(claims_are_exact_signs), LH_CASE(a_too_small_bound_is_caught),
+                                         LH_CASE(paired_filter_matches_single_lane_by_lane),
                                          LH_CASE(out_of_band_spans_disable_the_filter)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

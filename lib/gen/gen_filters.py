@@ -27,6 +27,7 @@ of the bound, covered by the extra factor (1 + 2^-40). A zero column means an ex
 zero when it is a coordinate column. Otherwise the exact stage decides. See docs/predicates.md.
 """
 import math
+import re
 import sys
 from fractions import Fraction
 
@@ -180,6 +181,34 @@ def emit_static(kind, dim, out):
     out.append("}")
 
 
+def emit_static_pair(dim, out):
+    """insphere's static filter on two point tuples at once, p in lane 0 and r in
+    lane 1 of GNU C vectors of two doubles: each lane performs emit_static's
+    operations in the same order (no contraction: -ffp-contract=off), so each sign
+    is the one lh__insphere_static_<d> gives, with the same bound. One vector
+    instruction does the work of two scalar ones, for the engine's conflict
+    tests of two neighbouring cells (hull/insert_impl.h)."""
+    m = dim + 1
+    scalar = []
+    emit_entries(m, dim, True, scalar)
+    det = laplace(m, scalar)
+    out.append("")
+    out.append("static inline void lh__insphere_static2_%d(const double *const *p, const double *const *r, double eb,"
+               % dim)
+    out.append("                                          int *sign)")
+    out.append("{")
+    for line in scalar:
+        pt = re.match(r"    const double \*p(\d+) = p\[(\d+)\];$", line)
+        if pt:
+            out.append("    const double *p%s = p[%s], *r%s = r[%s];" % (pt.group(1), pt.group(2), pt.group(1), pt.group(2)))
+            continue
+        line = line.replace("const double ", "const lh__v2d ")
+        out.append(re.sub(r"p(\d+)\[(\d+)\]", r"(lh__v2d){p\1[\2], r\1[\2]}", line))
+    for lane in (0, 1):
+        out.append("    sign[%d] = (%s[%d] > eb) - (%s[%d] < -eb);" % (lane, det, lane, det, lane))
+    out.append("}")
+
+
 def emit_dispatch(out, comment, name, params, stage, args, dims, fallback):
     """A filter chosen by a dimension given as a value: direct calls, so that each
     is inlined, and a switch that folds away when d is a constant. fallback(kind):
@@ -211,6 +240,24 @@ def emit_dispatchers(out):
                         " * or 0 when it cannot decide or d (outside 2..5) has none. */"],
                   "lh__static_d", ", double eb", "static", ", eb", range(2, 6), lambda kind: "0")
 
+    out.append("")
+    out.append("/* lh__insphere_static_<d> (lifted) on two tuples p and r: sign[0] and sign[1],")
+    out.append(" * each 0 when it cannot decide or d (outside 2..5) has none. Paired in one vector")
+    out.append(" * evaluation where the compiler has GNU C vectors, else one after the other. */")
+    out.append("static inline void lh__static2_d(int d, const double *const *p, const double *const *r, double eb,")
+    out.append("                                 int *sign)")
+    out.append("{")
+    out.append("#ifdef LH__HAVE_V2D")
+    out.append("    switch (d) {")
+    for d in range(2, 6):
+        out.append("    case %d: lh__insphere_static2_%d(p, r, eb, sign); return;" % (d, d))
+    out.append("    default: break;")
+    out.append("    }")
+    out.append("#endif")
+    out.append("    sign[0] = lh__static_d(1, d, p, eb);")
+    out.append("    sign[1] = lh__static_d(1, d, r, eb);")
+    out.append("}")
+
 
 def generate():
     out = [
@@ -235,6 +282,13 @@ def generate():
         emit_static("orient", k, out)
     for d in range(2, 6):
         emit_static("insphere", d, out)
+    out.append("")
+    out.append("#if defined(__GNUC__) /* gcc and clang: vectors of two doubles */")
+    out.append("#define LH__HAVE_V2D 1")
+    out.append("typedef double lh__v2d __attribute__((vector_size(16)));")
+    for d in range(2, 6):
+        emit_static_pair(d, out)
+    out.append("#endif")
     out.append("")
     out.append("/* The static bound for d = 2..5 from the column spans span[0..d-1] (fl(max - min)")
     out.append(" * of each coordinate over the sites): the constant times the spans (and the")

@@ -3248,6 +3248,245 @@ static inline int lh__insphere_static_5(const double *const *p, double eb)
     return (m6_3f > eb) - (m6_3f < -eb);
 }
 
+#if defined(__GNUC__) /* gcc and clang: vectors of two doubles */
+#define LH__HAVE_V2D 1
+typedef double lh__v2d __attribute__((vector_size(16)));
+
+static inline void lh__insphere_static2_2(const double *const *p, const double *const *r, double eb,
+                                          int *sign)
+{
+    const double *p0 = p[0], *r0 = r[0];
+    const double *p1 = p[1], *r1 = r[1];
+    const lh__v2d a0_0 = (lh__v2d){p1[0], r1[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a0_1 = (lh__v2d){p1[1], r1[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a0_2 = a0_0 * a0_0 + a0_1 * a0_1;
+    const double *p2 = p[2], *r2 = r[2];
+    const lh__v2d a1_0 = (lh__v2d){p2[0], r2[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a1_1 = (lh__v2d){p2[1], r2[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a1_2 = a1_0 * a1_0 + a1_1 * a1_1;
+    const double *p3 = p[3], *r3 = r[3];
+    const lh__v2d a2_0 = (lh__v2d){p3[0], r3[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a2_1 = (lh__v2d){p3[1], r3[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a2_2 = a2_0 * a2_0 + a2_1 * a2_1;
+    const lh__v2d m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const lh__v2d m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const lh__v2d m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const lh__v2d m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    sign[0] = (m3_7[0] > eb) - (m3_7[0] < -eb);
+    sign[1] = (m3_7[1] > eb) - (m3_7[1] < -eb);
+}
+
+static inline void lh__insphere_static2_3(const double *const *p, const double *const *r, double eb,
+                                          int *sign)
+{
+    const double *p0 = p[0], *r0 = r[0];
+    const double *p1 = p[1], *r1 = r[1];
+    const lh__v2d a0_0 = (lh__v2d){p1[0], r1[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a0_1 = (lh__v2d){p1[1], r1[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a0_2 = (lh__v2d){p1[2], r1[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a0_3 = a0_0 * a0_0 + a0_1 * a0_1 + a0_2 * a0_2;
+    const double *p2 = p[2], *r2 = r[2];
+    const lh__v2d a1_0 = (lh__v2d){p2[0], r2[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a1_1 = (lh__v2d){p2[1], r2[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a1_2 = (lh__v2d){p2[2], r2[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a1_3 = a1_0 * a1_0 + a1_1 * a1_1 + a1_2 * a1_2;
+    const double *p3 = p[3], *r3 = r[3];
+    const lh__v2d a2_0 = (lh__v2d){p3[0], r3[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a2_1 = (lh__v2d){p3[1], r3[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a2_2 = (lh__v2d){p3[2], r3[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a2_3 = a2_0 * a2_0 + a2_1 * a2_1 + a2_2 * a2_2;
+    const double *p4 = p[4], *r4 = r[4];
+    const lh__v2d a3_0 = (lh__v2d){p4[0], r4[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a3_1 = (lh__v2d){p4[1], r4[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a3_2 = (lh__v2d){p4[2], r4[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a3_3 = a3_0 * a3_0 + a3_1 * a3_1 + a3_2 * a3_2;
+    const lh__v2d m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const lh__v2d m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const lh__v2d m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const lh__v2d m2_9 = -a0_1 * a3_0 + a3_1 * a0_0;
+    const lh__v2d m2_a = -a1_1 * a3_0 + a3_1 * a1_0;
+    const lh__v2d m2_c = -a2_1 * a3_0 + a3_1 * a2_0;
+    const lh__v2d m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    const lh__v2d m3_b = a0_2 * m2_a - a1_2 * m2_9 + a3_2 * m2_3;
+    const lh__v2d m3_d = a0_2 * m2_c - a2_2 * m2_9 + a3_2 * m2_5;
+    const lh__v2d m3_e = a1_2 * m2_c - a2_2 * m2_a + a3_2 * m2_6;
+    const lh__v2d m4_f = -a0_3 * m3_e + a1_3 * m3_d - a2_3 * m3_b + a3_3 * m3_7;
+    sign[0] = (m4_f[0] > eb) - (m4_f[0] < -eb);
+    sign[1] = (m4_f[1] > eb) - (m4_f[1] < -eb);
+}
+
+static inline void lh__insphere_static2_4(const double *const *p, const double *const *r, double eb,
+                                          int *sign)
+{
+    const double *p0 = p[0], *r0 = r[0];
+    const double *p1 = p[1], *r1 = r[1];
+    const lh__v2d a0_0 = (lh__v2d){p1[0], r1[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a0_1 = (lh__v2d){p1[1], r1[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a0_2 = (lh__v2d){p1[2], r1[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a0_3 = (lh__v2d){p1[3], r1[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a0_4 = a0_0 * a0_0 + a0_1 * a0_1 + a0_2 * a0_2 + a0_3 * a0_3;
+    const double *p2 = p[2], *r2 = r[2];
+    const lh__v2d a1_0 = (lh__v2d){p2[0], r2[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a1_1 = (lh__v2d){p2[1], r2[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a1_2 = (lh__v2d){p2[2], r2[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a1_3 = (lh__v2d){p2[3], r2[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a1_4 = a1_0 * a1_0 + a1_1 * a1_1 + a1_2 * a1_2 + a1_3 * a1_3;
+    const double *p3 = p[3], *r3 = r[3];
+    const lh__v2d a2_0 = (lh__v2d){p3[0], r3[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a2_1 = (lh__v2d){p3[1], r3[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a2_2 = (lh__v2d){p3[2], r3[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a2_3 = (lh__v2d){p3[3], r3[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a2_4 = a2_0 * a2_0 + a2_1 * a2_1 + a2_2 * a2_2 + a2_3 * a2_3;
+    const double *p4 = p[4], *r4 = r[4];
+    const lh__v2d a3_0 = (lh__v2d){p4[0], r4[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a3_1 = (lh__v2d){p4[1], r4[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a3_2 = (lh__v2d){p4[2], r4[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a3_3 = (lh__v2d){p4[3], r4[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a3_4 = a3_0 * a3_0 + a3_1 * a3_1 + a3_2 * a3_2 + a3_3 * a3_3;
+    const double *p5 = p[5], *r5 = r[5];
+    const lh__v2d a4_0 = (lh__v2d){p5[0], r5[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a4_1 = (lh__v2d){p5[1], r5[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a4_2 = (lh__v2d){p5[2], r5[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a4_3 = (lh__v2d){p5[3], r5[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a4_4 = a4_0 * a4_0 + a4_1 * a4_1 + a4_2 * a4_2 + a4_3 * a4_3;
+    const lh__v2d m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const lh__v2d m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const lh__v2d m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const lh__v2d m2_9 = -a0_1 * a3_0 + a3_1 * a0_0;
+    const lh__v2d m2_a = -a1_1 * a3_0 + a3_1 * a1_0;
+    const lh__v2d m2_c = -a2_1 * a3_0 + a3_1 * a2_0;
+    const lh__v2d m2_11 = -a0_1 * a4_0 + a4_1 * a0_0;
+    const lh__v2d m2_12 = -a1_1 * a4_0 + a4_1 * a1_0;
+    const lh__v2d m2_14 = -a2_1 * a4_0 + a4_1 * a2_0;
+    const lh__v2d m2_18 = -a3_1 * a4_0 + a4_1 * a3_0;
+    const lh__v2d m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    const lh__v2d m3_b = a0_2 * m2_a - a1_2 * m2_9 + a3_2 * m2_3;
+    const lh__v2d m3_d = a0_2 * m2_c - a2_2 * m2_9 + a3_2 * m2_5;
+    const lh__v2d m3_e = a1_2 * m2_c - a2_2 * m2_a + a3_2 * m2_6;
+    const lh__v2d m3_13 = a0_2 * m2_12 - a1_2 * m2_11 + a4_2 * m2_3;
+    const lh__v2d m3_15 = a0_2 * m2_14 - a2_2 * m2_11 + a4_2 * m2_5;
+    const lh__v2d m3_16 = a1_2 * m2_14 - a2_2 * m2_12 + a4_2 * m2_6;
+    const lh__v2d m3_19 = a0_2 * m2_18 - a3_2 * m2_11 + a4_2 * m2_9;
+    const lh__v2d m3_1a = a1_2 * m2_18 - a3_2 * m2_12 + a4_2 * m2_a;
+    const lh__v2d m3_1c = a2_2 * m2_18 - a3_2 * m2_14 + a4_2 * m2_c;
+    const lh__v2d m4_f = -a0_3 * m3_e + a1_3 * m3_d - a2_3 * m3_b + a3_3 * m3_7;
+    const lh__v2d m4_17 = -a0_3 * m3_16 + a1_3 * m3_15 - a2_3 * m3_13 + a4_3 * m3_7;
+    const lh__v2d m4_1b = -a0_3 * m3_1a + a1_3 * m3_19 - a3_3 * m3_13 + a4_3 * m3_b;
+    const lh__v2d m4_1d = -a0_3 * m3_1c + a2_3 * m3_19 - a3_3 * m3_15 + a4_3 * m3_d;
+    const lh__v2d m4_1e = -a1_3 * m3_1c + a2_3 * m3_1a - a3_3 * m3_16 + a4_3 * m3_e;
+    const lh__v2d m5_1f = a0_4 * m4_1e - a1_4 * m4_1d + a2_4 * m4_1b - a3_4 * m4_17 + a4_4 * m4_f;
+    sign[0] = (m5_1f[0] > eb) - (m5_1f[0] < -eb);
+    sign[1] = (m5_1f[1] > eb) - (m5_1f[1] < -eb);
+}
+
+static inline void lh__insphere_static2_5(const double *const *p, const double *const *r, double eb,
+                                          int *sign)
+{
+    const double *p0 = p[0], *r0 = r[0];
+    const double *p1 = p[1], *r1 = r[1];
+    const lh__v2d a0_0 = (lh__v2d){p1[0], r1[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a0_1 = (lh__v2d){p1[1], r1[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a0_2 = (lh__v2d){p1[2], r1[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a0_3 = (lh__v2d){p1[3], r1[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a0_4 = (lh__v2d){p1[4], r1[4]} - (lh__v2d){p0[4], r0[4]};
+    const lh__v2d a0_5 = a0_0 * a0_0 + a0_1 * a0_1 + a0_2 * a0_2 + a0_3 * a0_3 + a0_4 * a0_4;
+    const double *p2 = p[2], *r2 = r[2];
+    const lh__v2d a1_0 = (lh__v2d){p2[0], r2[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a1_1 = (lh__v2d){p2[1], r2[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a1_2 = (lh__v2d){p2[2], r2[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a1_3 = (lh__v2d){p2[3], r2[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a1_4 = (lh__v2d){p2[4], r2[4]} - (lh__v2d){p0[4], r0[4]};
+    const lh__v2d a1_5 = a1_0 * a1_0 + a1_1 * a1_1 + a1_2 * a1_2 + a1_3 * a1_3 + a1_4 * a1_4;
+    const double *p3 = p[3], *r3 = r[3];
+    const lh__v2d a2_0 = (lh__v2d){p3[0], r3[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a2_1 = (lh__v2d){p3[1], r3[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a2_2 = (lh__v2d){p3[2], r3[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a2_3 = (lh__v2d){p3[3], r3[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a2_4 = (lh__v2d){p3[4], r3[4]} - (lh__v2d){p0[4], r0[4]};
+    const lh__v2d a2_5 = a2_0 * a2_0 + a2_1 * a2_1 + a2_2 * a2_2 + a2_3 * a2_3 + a2_4 * a2_4;
+    const double *p4 = p[4], *r4 = r[4];
+    const lh__v2d a3_0 = (lh__v2d){p4[0], r4[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a3_1 = (lh__v2d){p4[1], r4[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a3_2 = (lh__v2d){p4[2], r4[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a3_3 = (lh__v2d){p4[3], r4[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a3_4 = (lh__v2d){p4[4], r4[4]} - (lh__v2d){p0[4], r0[4]};
+    const lh__v2d a3_5 = a3_0 * a3_0 + a3_1 * a3_1 + a3_2 * a3_2 + a3_3 * a3_3 + a3_4 * a3_4;
+    const double *p5 = p[5], *r5 = r[5];
+    const lh__v2d a4_0 = (lh__v2d){p5[0], r5[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a4_1 = (lh__v2d){p5[1], r5[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a4_2 = (lh__v2d){p5[2], r5[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a4_3 = (lh__v2d){p5[3], r5[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a4_4 = (lh__v2d){p5[4], r5[4]} - (lh__v2d){p0[4], r0[4]};
+    const lh__v2d a4_5 = a4_0 * a4_0 + a4_1 * a4_1 + a4_2 * a4_2 + a4_3 * a4_3 + a4_4 * a4_4;
+    const double *p6 = p[6], *r6 = r[6];
+    const lh__v2d a5_0 = (lh__v2d){p6[0], r6[0]} - (lh__v2d){p0[0], r0[0]};
+    const lh__v2d a5_1 = (lh__v2d){p6[1], r6[1]} - (lh__v2d){p0[1], r0[1]};
+    const lh__v2d a5_2 = (lh__v2d){p6[2], r6[2]} - (lh__v2d){p0[2], r0[2]};
+    const lh__v2d a5_3 = (lh__v2d){p6[3], r6[3]} - (lh__v2d){p0[3], r0[3]};
+    const lh__v2d a5_4 = (lh__v2d){p6[4], r6[4]} - (lh__v2d){p0[4], r0[4]};
+    const lh__v2d a5_5 = a5_0 * a5_0 + a5_1 * a5_1 + a5_2 * a5_2 + a5_3 * a5_3 + a5_4 * a5_4;
+    const lh__v2d m2_3 = -a0_1 * a1_0 + a1_1 * a0_0;
+    const lh__v2d m2_5 = -a0_1 * a2_0 + a2_1 * a0_0;
+    const lh__v2d m2_6 = -a1_1 * a2_0 + a2_1 * a1_0;
+    const lh__v2d m2_9 = -a0_1 * a3_0 + a3_1 * a0_0;
+    const lh__v2d m2_a = -a1_1 * a3_0 + a3_1 * a1_0;
+    const lh__v2d m2_c = -a2_1 * a3_0 + a3_1 * a2_0;
+    const lh__v2d m2_11 = -a0_1 * a4_0 + a4_1 * a0_0;
+    const lh__v2d m2_12 = -a1_1 * a4_0 + a4_1 * a1_0;
+    const lh__v2d m2_14 = -a2_1 * a4_0 + a4_1 * a2_0;
+    const lh__v2d m2_18 = -a3_1 * a4_0 + a4_1 * a3_0;
+    const lh__v2d m2_21 = -a0_1 * a5_0 + a5_1 * a0_0;
+    const lh__v2d m2_22 = -a1_1 * a5_0 + a5_1 * a1_0;
+    const lh__v2d m2_24 = -a2_1 * a5_0 + a5_1 * a2_0;
+    const lh__v2d m2_28 = -a3_1 * a5_0 + a5_1 * a3_0;
+    const lh__v2d m2_30 = -a4_1 * a5_0 + a5_1 * a4_0;
+    const lh__v2d m3_7 = a0_2 * m2_6 - a1_2 * m2_5 + a2_2 * m2_3;
+    const lh__v2d m3_b = a0_2 * m2_a - a1_2 * m2_9 + a3_2 * m2_3;
+    const lh__v2d m3_d = a0_2 * m2_c - a2_2 * m2_9 + a3_2 * m2_5;
+    const lh__v2d m3_e = a1_2 * m2_c - a2_2 * m2_a + a3_2 * m2_6;
+    const lh__v2d m3_13 = a0_2 * m2_12 - a1_2 * m2_11 + a4_2 * m2_3;
+    const lh__v2d m3_15 = a0_2 * m2_14 - a2_2 * m2_11 + a4_2 * m2_5;
+    const lh__v2d m3_16 = a1_2 * m2_14 - a2_2 * m2_12 + a4_2 * m2_6;
+    const lh__v2d m3_19 = a0_2 * m2_18 - a3_2 * m2_11 + a4_2 * m2_9;
+    const lh__v2d m3_1a = a1_2 * m2_18 - a3_2 * m2_12 + a4_2 * m2_a;
+    const lh__v2d m3_1c = a2_2 * m2_18 - a3_2 * m2_14 + a4_2 * m2_c;
+    const lh__v2d m3_23 = a0_2 * m2_22 - a1_2 * m2_21 + a5_2 * m2_3;
+    const lh__v2d m3_25 = a0_2 * m2_24 - a2_2 * m2_21 + a5_2 * m2_5;
+    const lh__v2d m3_26 = a1_2 * m2_24 - a2_2 * m2_22 + a5_2 * m2_6;
+    const lh__v2d m3_29 = a0_2 * m2_28 - a3_2 * m2_21 + a5_2 * m2_9;
+    const lh__v2d m3_2a = a1_2 * m2_28 - a3_2 * m2_22 + a5_2 * m2_a;
+    const lh__v2d m3_2c = a2_2 * m2_28 - a3_2 * m2_24 + a5_2 * m2_c;
+    const lh__v2d m3_31 = a0_2 * m2_30 - a4_2 * m2_21 + a5_2 * m2_11;
+    const lh__v2d m3_32 = a1_2 * m2_30 - a4_2 * m2_22 + a5_2 * m2_12;
+    const lh__v2d m3_34 = a2_2 * m2_30 - a4_2 * m2_24 + a5_2 * m2_14;
+    const lh__v2d m3_38 = a3_2 * m2_30 - a4_2 * m2_28 + a5_2 * m2_18;
+    const lh__v2d m4_f = -a0_3 * m3_e + a1_3 * m3_d - a2_3 * m3_b + a3_3 * m3_7;
+    const lh__v2d m4_17 = -a0_3 * m3_16 + a1_3 * m3_15 - a2_3 * m3_13 + a4_3 * m3_7;
+    const lh__v2d m4_1b = -a0_3 * m3_1a + a1_3 * m3_19 - a3_3 * m3_13 + a4_3 * m3_b;
+    const lh__v2d m4_1d = -a0_3 * m3_1c + a2_3 * m3_19 - a3_3 * m3_15 + a4_3 * m3_d;
+    const lh__v2d m4_1e = -a1_3 * m3_1c + a2_3 * m3_1a - a3_3 * m3_16 + a4_3 * m3_e;
+    const lh__v2d m4_27 = -a0_3 * m3_26 + a1_3 * m3_25 - a2_3 * m3_23 + a5_3 * m3_7;
+    const lh__v2d m4_2b = -a0_3 * m3_2a + a1_3 * m3_29 - a3_3 * m3_23 + a5_3 * m3_b;
+    const lh__v2d m4_2d = -a0_3 * m3_2c + a2_3 * m3_29 - a3_3 * m3_25 + a5_3 * m3_d;
+    const lh__v2d m4_2e = -a1_3 * m3_2c + a2_3 * m3_2a - a3_3 * m3_26 + a5_3 * m3_e;
+    const lh__v2d m4_33 = -a0_3 * m3_32 + a1_3 * m3_31 - a4_3 * m3_23 + a5_3 * m3_13;
+    const lh__v2d m4_35 = -a0_3 * m3_34 + a2_3 * m3_31 - a4_3 * m3_25 + a5_3 * m3_15;
+    const lh__v2d m4_36 = -a1_3 * m3_34 + a2_3 * m3_32 - a4_3 * m3_26 + a5_3 * m3_16;
+    const lh__v2d m4_39 = -a0_3 * m3_38 + a3_3 * m3_31 - a4_3 * m3_29 + a5_3 * m3_19;
+    const lh__v2d m4_3a = -a1_3 * m3_38 + a3_3 * m3_32 - a4_3 * m3_2a + a5_3 * m3_1a;
+    const lh__v2d m4_3c = -a2_3 * m3_38 + a3_3 * m3_34 - a4_3 * m3_2c + a5_3 * m3_1c;
+    const lh__v2d m5_1f = a0_4 * m4_1e - a1_4 * m4_1d + a2_4 * m4_1b - a3_4 * m4_17 + a4_4 * m4_f;
+    const lh__v2d m5_2f = a0_4 * m4_2e - a1_4 * m4_2d + a2_4 * m4_2b - a3_4 * m4_27 + a5_4 * m4_f;
+    const lh__v2d m5_37 = a0_4 * m4_36 - a1_4 * m4_35 + a2_4 * m4_33 - a4_4 * m4_27 + a5_4 * m4_17;
+    const lh__v2d m5_3b = a0_4 * m4_3a - a1_4 * m4_39 + a3_4 * m4_33 - a4_4 * m4_2b + a5_4 * m4_1b;
+    const lh__v2d m5_3d = a0_4 * m4_3c - a2_4 * m4_39 + a3_4 * m4_35 - a4_4 * m4_2d + a5_4 * m4_1d;
+    const lh__v2d m5_3e = a1_4 * m4_3c - a2_4 * m4_3a + a3_4 * m4_36 - a4_4 * m4_2e + a5_4 * m4_1e;
+    const lh__v2d m6_3f = -a0_5 * m5_3e + a1_5 * m5_3d - a2_5 * m5_3b + a3_5 * m5_37 - a4_5 * m5_2f + a5_5 * m5_1f;
+    sign[0] = (m6_3f[0] > eb) - (m6_3f[0] < -eb);
+    sign[1] = (m6_3f[1] > eb) - (m6_3f[1] < -eb);
+}
+#endif
+
 /* The static bound for d = 2..5 from the column spans span[0..d-1] (fl(max - min)
  * of each coordinate over the sites): the constant times the spans (and the
  * lifted span, summed as the entries are), multiplied in the dynamic filter's
@@ -3321,6 +3560,25 @@ static inline int lh__static_d(int lifted, int d, const double *const *p, double
     case 5: return lh__orient_static_5(p, eb);
     default: return 0;
     }
+}
+
+/* lh__insphere_static_<d> (lifted) on two tuples p and r: sign[0] and sign[1],
+ * each 0 when it cannot decide or d (outside 2..5) has none. Paired in one vector
+ * evaluation where the compiler has GNU C vectors, else one after the other. */
+static inline void lh__static2_d(int d, const double *const *p, const double *const *r, double eb,
+                                 int *sign)
+{
+#ifdef LH__HAVE_V2D
+    switch (d) {
+    case 2: lh__insphere_static2_2(p, r, eb, sign); return;
+    case 3: lh__insphere_static2_3(p, r, eb, sign); return;
+    case 4: lh__insphere_static2_4(p, r, eb, sign); return;
+    case 5: lh__insphere_static2_5(p, r, eb, sign); return;
+    default: break;
+    }
+#endif
+    sign[0] = lh__static_d(1, d, p, eb);
+    sign[1] = lh__static_d(1, d, r, eb);
 }
 
 #endif
