@@ -9,12 +9,7 @@
 #include "insert_preds.h"
 
 #define LH_T_FINITE_CONFLICT(e, v, q) (lifted_sign(e, v, q) == (e)->conflict_sign)
-#define LH_T_FINITE_CONFLICT2(e, v, w, q, x)                 \
-    do {                                                     \
-        lifted_sign2(e, v, w, q, x);                         \
-        (x)[0] = (x)[0] == (e)->conflict_sign;               \
-        (x)[1] = (x)[1] == (e)->conflict_sign;               \
-    } while (0)
+#define LH_T_FINITE_CONFLICT2(e, v, w, q, x) lifted_conflict2(e, v, w, q, x)
 #define LH_T_ORIENT(e, pts) orient_inline(e, pts)
 #define LH_T_PREPARE(e) prepare_preds(e)
 #include "insert_impl.h"

@@ -20,9 +20,7 @@ static LH__ALWAYS_INLINE void finite_conflict2_generic(lh__eng *e, const lh_inde
         x[1] = finite_conflict_generic(e, w, q);
         return;
     }
-    lifted_sign2(e, v, w, q, x);
-    x[0] = x[0] == e->conflict_sign;
-    x[1] = x[1] == e->conflict_sign;
+    lifted_conflict2(e, v, w, q, x);
 }
 
 #ifdef LH_T_PARALLEL

@@ -50,19 +50,21 @@ static void prepare_preds(lh__eng *e)
     }
 }
 
-/* insphere_sos of finite cell v (positively oriented) and vertex q. */
-static LH__ALWAYS_INLINE int lifted_sign(lh__eng *e, const lh_index *v, lh_index q)
+/* The points of finite cell v and vertex q, in the order of insphere_d. */
+static LH__ALWAYS_INLINE void lifted_points(const lh__eng *e, const lh_index *v, lh_index q, const double **p)
 {
     const int d = LH_PD(e);
-    const double *p[LH__ENGINE_MAX_DIM + 2];
     for (int k = 0; k <= d; k++) p[k] = lh__eng_site(e, v[k]);
     p[d + 1] = lh__eng_site(e, q);
-    int s = lh__static_d(1, d, p, e->static_eb[1]);
-    if (s) {
-        e->filtered++;
-        return s;
-    }
+}
+
+/* insphere_sos of the points p once the static filter has not decided: the exact
+ * zero of integer sites, or the dynamic filter, then the exact perturbed stages. */
+static inline int lifted_undecided(lh__eng *e, const double *const *p)
+{
+    const int d = LH_PD(e);
     if (e->static_exact[1]) return lh__insphere_sos_zero(e->pred, d, p);
+    int s;
     double det = 0, err = -1; /* err stays -1 outside the filter's band */
     if (lh__filter_d(1, d, p, &s, &det, &err)) {
         if (s) {
@@ -74,19 +76,32 @@ static LH__ALWAYS_INLINE int lifted_sign(lh__eng *e, const lh_index *v, lh_index
     return lh__insphere_sos_unfiltered(e->pred, d, p, det, err); /* exact, perturbed */
 }
 
-/* lifted_sign of finite cells v and w with one vertex q, into s[0] and s[1]: their
- * static filters in one paired evaluation (lh__static2_d), the rest of the stages
- * for a cell it leaves undecided. */
-static LH__ALWAYS_INLINE void lifted_sign2(lh__eng *e, const lh_index *v, const lh_index *w, lh_index q, int *s)
+/* insphere_sos of finite cell v (positively oriented) and vertex q. */
+static LH__ALWAYS_INLINE int lifted_sign(lh__eng *e, const lh_index *v, lh_index q)
 {
-    const int d = LH_PD(e);
-    const double *p[LH__ENGINE_MAX_DIM + 2], *r[LH__ENGINE_MAX_DIM + 2];
-    for (int k = 0; k <= d; k++) p[k] = lh__eng_site(e, v[k]), r[k] = lh__eng_site(e, w[k]);
-    p[d + 1] = r[d + 1] = lh__eng_site(e, q);
-    lh__static2_d(d, p, r, e->static_eb[1], s);
-    e->filtered += (s[0] != 0) + (s[1] != 0);
-    if (!s[0]) s[0] = lifted_sign(e, v, q);
-    if (!s[1]) s[1] = lifted_sign(e, w, q);
+    const double *p[LH__ENGINE_MAX_DIM + 2];
+    lifted_points(e, v, q, p);
+    int s = lh__static_d(1, LH_PD(e), p, e->static_eb[1]);
+    if (s) {
+        e->filtered++;
+        return s;
+    }
+    return lifted_undecided(e, p);
+}
+
+/* Whether finite cells v and w each conflict with q (lifted_sign equal to
+ * e->conflict_sign), into x[0] and x[1]: their static filters in one paired
+ * evaluation (lh__static2_d), the later stages for a cell it leaves undecided. */
+static LH__ALWAYS_INLINE void lifted_conflict2(lh__eng *e, const lh_index *v, const lh_index *w, lh_index q, int *x)
+{
+    const double *p[2][LH__ENGINE_MAX_DIM + 2];
+    lifted_points(e, v, q, p[0]);
+    lifted_points(e, w, q, p[1]);
+    lh__static2_d(LH_PD(e), p[0], p[1], e->static_eb[1], x);
+    for (int i = 0; i < 2; i++) {
+        e->filtered += x[i] != 0;
+        x[i] = (x[i] ? x[i] : lifted_undecided(e, p[i])) == e->conflict_sign;
+    }
 }
 
 /* lh_orient of the d + 1 points p: exact, 0 when they are affinely dependent. */
