@@ -122,6 +122,34 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri
     return LH_OK;
 }
 
+/* Point markers by Triangle's rule (its "boundary markers" page): a vertex's own
+ * nonzero marker; else the marker of an input segment with a nonzero one that it
+ * lies on (an endpoint or a point put on it; of several, the first in input order, as
+ * Triangle inserts them); else 1 on the domain's boundary; else 0. Steiner points have
+ * no own marker. Subsegment markers (r->smark) are already the segments' rule. */
+static lh_status point_markers(lh_trimesh *r, const lh__m2 *m)
+{
+    lh_index *from = lh__alloc(&r->al, (r->np ? r->np : 1) * sizeof *from); /* deciding segment */
+    if (!from) return LH_ERR_NOMEM;
+    for (size_t p = 0; p < r->np; p++) {
+        from[p] = -1;
+        if (p >= m->n_input) r->pmark[p] = 0;
+    }
+    for (size_t s = 0; s < r->ns; s++) {
+        const lh_index par = r->spar[s], given = par >= 0 && m->seg_marker ? m->seg_marker[par] : 0;
+        for (int j = 0; given && j < 2; j++) {
+            const lh_index p = r->seg[2 * s + j];
+            if ((r->pmark[p] && from[p] < 0) || (from[p] >= 0 && from[p] < par)) continue; /* own, or earlier */
+            r->pmark[p] = given, from[p] = par;
+        }
+    }
+    for (size_t s = 0; s < r->ns; s++) /* a nonzero subsegment marker without a segment's: the boundary */
+        for (int j = 0; r->smark[s] && j < 2; j++)
+            if (!r->pmark[r->seg[2 * s + j]]) r->pmark[r->seg[2 * s + j]] = 1;
+    lh__free(&r->al, from);
+    return LH_OK;
+}
+
 /* Step 5: the handle's arrays from the mesh's live triangles. The point arrays and,
  * when no triangle slot is free, the triangle arrays are taken over as they are (the
  * mesh's own allocations, same hooks); otherwise the triangles are renumbered. */
@@ -176,11 +204,7 @@ static lh_status harvest(lh_trimesh *r, lh__m2 *m)
         }
         if (!dense && r->tattr) r->tattr[u] = m->tattr[t];
     }
-    /* point markers: the vertex's own, else its first subsegment's */
-    for (size_t s = 0; s < r->ns; s++)
-        for (int j = 0; j < 2; j++)
-            if (!r->pmark[r->seg[2 * s + j]]) r->pmark[r->seg[2 * s + j]] = r->smark[s];
-    st = LH_OK;
+    st = point_markers(r, m);
 done:
     lh__free(&r->al, map);
     lh__free(&r->al, smap);
