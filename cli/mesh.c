@@ -267,7 +267,7 @@ static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trim
     memcpy(base, a->output, stem);
     base[stem] = 0;
     /* Triangle's three files, numbered from 1, with markers; .poly for a graph */
-    lh_cli_tri_files w = {1, 1, in->kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force};
+    lh_cli_tri_files w = {1, 1, in->kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force, 0, 0};
     const int rc = lh_cli_trimesh_write(m, in, base, &w, "mesh");
     free(base);
     return rc;

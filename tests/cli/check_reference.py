@@ -10,10 +10,12 @@ subsegment of REF.poly has that subsegment's marker (a point inside a subsegment
 its marker, the same rule); else 0 (.node input: a vertex on REF's boundary edges 1).
 Every subsegment of OUT.poly lies along a subsegment of REF.poly (its midpoint on it,
 its ends on its line) with the same marker, and they cover the same length; the holes and regions of the .poly are REF's.
+--o2: OUT's quadratic elements are Triangle's (6 nodes, as quadratic() says).
 Vertex attributes of the vertices both have are equal. Refined (no --same): vertex
 counts within 0.8..1.25 times Triangle's. --same (no refinement, so
 the same vertices): the same vertices with the same markers, the same segments as
-sets with their markers, and the same triangles unless the vertices are cocircular.
+sets with their markers, and the same triangles (counterclockwise; -o2: with the
+midpoint nodes in the same places) unless the vertices are cocircular.
 Prints "ok" or the differences (at most 10), exits 1 on any.
 """
 import math
@@ -45,8 +47,8 @@ def read_node(path):
 
 def read_ele(path, first):
     t = tokens(path)
-    n = int(t[0][0])
-    return t[0][:3], [tuple(int(v) - first for v in l[1:4]) for l in t[1:1 + n]]
+    n, k = int(t[0][0]), int(t[0][1])
+    return t[0][:3], [tuple(int(v) - first for v in l[1:1 + k]) for l in t[1:1 + n]]
 
 
 def read_poly_out(path, first):
@@ -94,7 +96,7 @@ def main():
     oh, ofirst, opts, oattr, omark = read_node(out + '.node')
     if (rh[1:] if same is False else rh) != (oh[1:] if same is False else oh):
         c.bad('.node header %s, Triangle %s' % (' '.join(oh), ' '.join(rh)))
-    if not same and not 0.8 * len(rpts) <= len(opts) <= 1.25 * len(rpts):
+    if not same and '--o2' not in sys.argv and not 0.8 * len(rpts) <= len(opts) <= 1.25 * len(rpts):
         c.bad('%d vertices, Triangle %d (not within 0.8..1.25 times)' % (len(opts), len(rpts)))
     rat = {p: i for i, p in enumerate(rpts)}
     rsegs = None
@@ -109,7 +111,7 @@ def main():
         # a .node input: the boundary is the convex hull, the edges on one triangle only
         _, rtris = read_ele(ref + '.ele', rfirst)
         count = {}
-        for (a, b, d) in rtris:
+        for (a, b, d) in (t[:3] for t in rtris):
             for u, v in ((a, b), (b, d), (d, a)):
                 k = (min(u, v), max(u, v))
                 count[k] = count.get(k, 0) + 1
@@ -158,9 +160,10 @@ def main():
         oeh, otris = read_ele(out + '.ele', ofirst)
         if reh != oeh:
             c.bad('.ele header %s, Triangle %s' % (' '.join(oeh), ' '.join(reh)))
-        tri_set = lambda tris, pts: sorted(sorted(pts[v] for v in t) for t in tris)
         if not c.diffs and tri_set(otris, opts) != tri_set(rtris, rpts) and not cocircular(rtris, rpts):
             c.bad('other triangles than Triangle')
+    if '--o2' in sys.argv:
+        quadratic(c, out, ofirst, opts)
     for d in c.diffs[:10]:
         print(d)
     if len(c.diffs) > 10:
@@ -170,6 +173,38 @@ def main():
     return 1 if c.diffs else 0
 
 
+def quadratic(c, out, first, pts):
+    """-o2 (Triangle's quadratic elements): six nodes, the corners counterclockwise,
+    then the midpoints of the edges opposite corners 1, 2, 3, one node per edge shared
+    by its triangles, numbered after every corner."""
+    head, tris = read_ele(out + '.ele', first)
+    if head[1] != '6':
+        c.bad('-o2: %s nodes per triangle' % head[1])
+        return
+    node = {}
+    for t in tris:
+        for k in range(3):
+            a, b = pts[t[(k + 1) % 3]], pts[t[(k + 2) % 3]]
+            if pts[t[3 + k]] != ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2):
+                c.bad('-o2: node %d is not the midpoint of its edge' % (t[3 + k] + first))
+            node.setdefault((min(t[(k + 1) % 3], t[(k + 2) % 3]), max(t[(k + 1) % 3], t[(k + 2) % 3])), set()).add(t[3 + k])
+    mids = [n for ns in node.values() for n in ns]
+    corners = {v for t in tris for v in t[:3]}
+    if len(mids) != len(node) or len(set(mids)) != len(mids) or min(mids) <= max(corners) or len(pts) != max(corners) + 1 + len(node):
+        c.bad('-o2: not one node per edge, numbered after the corners')
+
+
+def tri_set(tris, pts):
+    """The triangles by their points, counterclockwise from the least corner (-o2:
+    the midpoint nodes after the corners, turned alike)."""
+    keys = []
+    for t in tris:
+        c, m = [pts[v] for v in t[:3]], [pts[v] for v in t[3:]]
+        r = c.index(min(c))
+        keys.append(tuple(c[r:] + c[:r] + (m[r:] + m[:r] if m else [])))
+    return sorted(keys)
+
+
 def cocircular(tris, pts):
     """Whether two triangles sharing an edge have their four vertices on one circle
     (then the Delaunay triangulation is not unique). Exact, with rationals."""
@@ -177,7 +212,7 @@ def cocircular(tris, pts):
     edges = {}
     for t in tris:
         for k in range(3):
-            u, v = t[(k + 1) % 3], t[(k + 2) % 3]
+            u, v = t[(k + 1) % 3], t[(k + 2) % 3]  # the corners; -o2 nodes after them
             edges.setdefault((min(u, v), max(u, v)), []).append(t[k])
     for (u, v), apex in edges.items():
         if len(apex) != 2:

@@ -80,6 +80,37 @@ reference la.1 "" "la.poly" -pqa la
 reference spiral.q.1 "" "spiral.node" -q spiral
 reference spiral.r.1 "" "spiral.node" -q32.5 spiral
 
+# -v: the Voronoi diagram against Triangle's (check_voronoi.py: Voronoi vertices to
+# 1e-8, as multisets, then the finite edges and the rays with their directions)
+for r in "diamond_02_00009 diamond_02_00009.node" "dots dots"; do
+  set -- $r
+  rm -rf w; mkdir w; cd w; cp "$data/$1.node" .
+  expect "-v $2" 0 '' '' -- "$lh" triangle -Qv "$2"
+  check "-v $2 Voronoi" check_voronoi.py "$ref/$1.1" "$PWD/$1.1"
+  cd ..
+done
+
+# Outputs of Triangle 1.6 (tests/oracles/triangle) for what drufat ships no reference
+# of (triangle16/): -o2 quadratic elements, and -c on a point set writes the hull's
+# edges to a .poly. Refined -o2 output: its structure, and markers against la.1.
+t16="$data/triangle16"
+rm -rf w; mkdir w; cd w; cp "$data/A.poly" .
+expect "-po2 A.poly" 0 '' '' -- "$lh" triangle -Qpo2 A.poly
+check "-po2 A.poly as Triangle" check_reference.py --same --o2 "$t16/A.1" "$PWD/A.1"
+cd ..
+rm -rf w; mkdir w; cd w; cp "$data/la.poly" .
+expect "-pqao2 la.poly" 0 '' '' -- "$lh" triangle -Qpqao2 la.poly
+check "-pqao2 la.poly" check_reference.py --o2 "$ref/la.1" "$PWD/la.1"
+cd ..
+rm -rf w; mkdir w; cd w; cp "$data/dots.node" .
+expect "-c dots.node" 0 '' '' -- "$lh" triangle -Qc dots.node
+exists dots.1.poly
+check "-c dots.node as Triangle" check_reference.py --same "$t16/dots.1" "$PWD/dots.1"
+rm dots.1.*
+expect "dots.node: no .poly without -c" 0 '' '' -- "$lh" triangle -Q dots.node
+absent dots.1.poly
+cd ..
+
 # Markers of Steiner points (Triangle 1.6 on this square split by an interior
 # segment, no marker columns): 1 on the boundary, 0 on the interior segment x = 1
 mkdir -p nm; cd nm
