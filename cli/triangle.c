@@ -12,7 +12,7 @@
 #include <string.h>
 
 typedef struct sw {
-    int p, r, q, a_regions, A, c, D, Y, O, I, Q, V, S, noP;
+    int p, r, q, a_regions, A, c, D, Y, O, I, Q, V, S, noP, s;
     double angle, area;
     size_t steiner;
     lh_cli_tri_files files;
@@ -36,6 +36,7 @@ static const char *const usage_text =
     "  -c      keep the convex hull (do not carve from the outside); with a .node\n"
     "          (or -r) input, write FILE.1.poly: the hull's (the mesh's boundary) edges\n"
     "  -D      conforming Delaunay: segments split until every triangle is Delaunay\n"
+    "  -s      segments split at midpoints until each is a chain of Delaunay edges\n"
     "  -Y      no Steiner points on the boundary; -YY: on no segment\n"
     "  -S[N]   at most N Steiner points\n"
     "  -j      leave points that are in no triangle out of the output\n"
@@ -49,7 +50,7 @@ static const char *const usage_text =
     "  -I      no iteration number in the output names (FILE.node ...)\n"
     "  -O      ignore the holes of the .poly\n"
     "  -Q      quiet; -V verbose: the quality report (angles, areas, histogram)\n"
-    "  -i -F -l -s -C -X   Triangle's choices of algorithm or arithmetic: accepted,\n"
+    "  -i -F -l -C -X   Triangle's choices of algorithm or arithmetic: accepted,\n"
     "          nothing changes (lifthull is always exact)\n"
     "not supported: -u\n"
     "\n"
@@ -107,7 +108,8 @@ static int parse_switches(const char *s, sw *o)
             }
             o->files.order2 = 1, j++;
             break;
-        case 'i': case 'F': case 'l': case 's': case 'C': case 'X': break;
+        case 's': o->s = 1; break;
+        case 'i': case 'F': case 'l': case 'C': case 'X': break;
         case 'u': case 'k': case 'L': case 'w': case 'W':
             fprintf(stderr, "lifthull triangle: -%c is not supported (see lifthull triangle --help)\n", s[j]);
             return 0;
@@ -191,6 +193,7 @@ static int run(const sw *o, const char *file)
     opt.region_areas = o->a_regions;
     opt.region_attributes = o->A;
     opt.boundary_steiner = o->Y == 0 ? 1 : o->Y == 1 ? 0 : -1;
+    opt.split_segments = o->s;
     if (o->S) opt.max_steiner = o->steiner;
     char msg[512];
     const double t0 = lh_cli_seconds();

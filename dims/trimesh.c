@@ -281,6 +281,10 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
             "rule needs closed rings", (long long)g->first_index + (long long)open);
         return LH_ERR_DEGENERATE;
     }
+    size_t split = 0, unsplit = 0; /* -s: before the carving, as Triangle splits while inserting */
+    if (o->split_segments && !m->cover &&
+        (st = lh__m2_split_segments(m, c, o->max_steiner, &split, &unsplit)) != LH_OK)
+        return st;
     st = lh__m2_domain(m, c, g, keep_hull, &r->stats.holes_ignored, &r->stats.regions_ignored);
     if (st == LH_ERR_DEGENERATE) {
         say(msg, size, NULL, 0, g->even_odd ? "no triangle is inside the polygon rings"
@@ -290,11 +294,12 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     }
     if (st != LH_OK) return st;
     lh__refine_opts ro = {o->min_angle, o->max_area, o->region_areas, o->conforming,
-                          o->boundary_steiner, o->max_steiner, g->segments, dup,
+                          o->boundary_steiner, o->max_steiner - split, g->segments, dup,
                           m->cover ? g->cover_area : NULL, &r->stats};
     if ((o->min_angle > 0 || o->max_area > 0 || o->region_areas || o->conforming) &&
         (st = lh__m2_refine(m, c, &ro)) != LH_OK)
         return st;
+    r->stats.segments_unsplit += unsplit;
     if (o->smooth > 0 && (st = lh__m2_smooth(m, c, o->smooth, o->max_area, &r->stats.smoothing_moves)) != LH_OK)
         return st;
     if ((st = lh__m2_drop_removed(m)) != LH_OK) return st;

@@ -10,6 +10,7 @@ subsegment of REF.poly has that subsegment's marker (a point inside a subsegment
 its marker, the same rule); else 0 (.node input: a vertex on REF's boundary edges 1).
 Every subsegment of OUT.poly lies along a subsegment of REF.poly (its midpoint on it,
 its ends on its line) with the same marker, and they cover the same length; the holes and regions of the .poly are REF's.
+--delaunay: every edge of OUT between two triangles is locally Delaunay.
 --o2: OUT's quadratic elements are Triangle's (6 nodes, as quadratic() says).
 Vertex attributes of the vertices both have are equal. Refined (no --same): vertex
 counts within 0.8..1.25 times Triangle's. --same (no refinement, so
@@ -164,6 +165,8 @@ def main():
             c.bad('other triangles than Triangle')
     if '--o2' in sys.argv:
         quadratic(c, out, ofirst, opts)
+    if '--delaunay' in sys.argv and cocircular(read_ele(out + '.ele', ofirst)[1], opts, strict=True):
+        c.bad('an edge of OUT is not locally Delaunay')
     for d in c.diffs[:10]:
         print(d)
     if len(c.diffs) > 10:
@@ -205,9 +208,11 @@ def tri_set(tris, pts):
     return sorted(keys)
 
 
-def cocircular(tris, pts):
+def cocircular(tris, pts, strict=False):
     """Whether two triangles sharing an edge have their four vertices on one circle
-    (then the Delaunay triangulation is not unique). Exact, with rationals."""
+    (then the Delaunay triangulation is not unique); strict: whether an apex is
+    strictly inside the other triangle's circle (the edge not locally Delaunay).
+    Exact, with rationals."""
     from fractions import Fraction as F
     edges = {}
     for t in tris:
@@ -222,7 +227,8 @@ def cocircular(tris, pts):
         det = (rows[0][0] * (rows[1][1] * rows[2][2] - rows[1][2] * rows[2][1])
                - rows[0][1] * (rows[1][0] * rows[2][2] - rows[1][2] * rows[2][0])
                + rows[0][2] * (rows[1][0] * rows[2][1] - rows[1][1] * rows[2][0]))
-        if det == 0:
+        turn = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        if (det * turn > 0 if strict else det == 0):  # d strictly inside circle abc
             return True
     return False
 

@@ -142,7 +142,7 @@ expect "unknown switch" 2 "lifthull triangle: unknown switch 'x' in '-pxq'" '' -
 expect "-o3 refused" 2 "lifthull triangle: -o must be -o2 \(quadratic elements\), not '-po3'" '' -- "$lh" triangle -po3 A.poly
 expect "-u refused" 2 "lifthull triangle: -u is not supported" '' -- "$lh" triangle -pu A.poly
 expect "two files" 2 "one input file, not 'A\.poly' and 'B\.poly'" '' -- "$lh" triangle -p A.poly B.poly
-expect "accepted, no effect" 0 '' '' -- "$lh" triangle -pQiFlsCX A.poly
+expect "accepted, no effect" 0 '' '' -- "$lh" triangle -pQiFlCX A.poly
 expect "-D conforming" 0 '' '' -- "$lh" triangle -pDQ A.poly
 cd ..
 

@@ -111,6 +111,20 @@ expect "dots.node: no .poly without -c" 0 '' '' -- "$lh" triangle -Q dots.node
 absent dots.1.poly
 cd ..
 
+# -s: segments split at midpoints until each is a chain of Delaunay edges. A.poly as
+# Triangle 1.6 (31 vertices, triangle for triangle); la.poly: every edge locally
+# Delaunay (Triangle's own -s output is not: it splits while inserting, earlier
+# segments constraining later ones), 194 vertices against Triangle's 182, regions kept.
+rm -rf w; mkdir w; cd w; cp "$data/A.poly" "$data/la.poly" .
+expect "-ps A.poly" 0 '' '^A\.1: 31 points, 31 triangles \(2 Steiner points\)' -- "$lh" triangle -ps A.poly
+check "-ps A.poly as Triangle" check_reference.py --same --delaunay "$t16/s/A.1" "$PWD/A.1"
+expect "-psA la.poly" 0 '' '' -- "$lh" triangle -QpsA la.poly
+check "-psA la.poly" check_reference.py --delaunay "$t16/s/la.1" "$PWD/la.1"
+check "-psA la.poly regions" check_regions.py la.poly la.1
+expect "-pA la.poly (no -s)" 0 '' '' -- "$lh" triangle -QpA la.poly
+if "$py" "$tools/check_reference.py" --delaunay "$t16/s/la.1" "$PWD/la.1" > chk.txt; then bad "-pA la.poly is Delaunay: the -s test proves nothing"; else ok; fi
+cd ..
+
 # Markers of Steiner points (Triangle 1.6 on this square split by an interior
 # segment, no marker columns): 1 on the boundary, 0 on the interior segment x = 1
 mkdir -p nm; cd nm
