@@ -23,15 +23,7 @@ import math
 import os
 import sys
 
-
-def tokens(path):
-    out = []
-    with open(path) as f:
-        for line in f:
-            fields = line.split('#', 1)[0].split()
-            if fields:
-                out.append(fields)
-    return out
+from trifiles import tokens
 
 
 def read_node(path):

@@ -19,16 +19,7 @@ and exits 1 when M or A > 0.
 import sys
 from fractions import Fraction
 
-
-def tokens(path):
-    """The file's lines as lists of fields, comments and blank lines dropped."""
-    out = []
-    with open(path) as f:
-        for line in f:
-            fields = line.split('#', 1)[0].split()
-            if fields:
-                out.append(fields)
-    return out
+from trifiles import tokens
 
 
 def read_poly(path):

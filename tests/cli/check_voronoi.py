@@ -10,15 +10,7 @@ normalised) must agree. Prints "ok" or the differences, exits 1 on any.
 import math
 import sys
 
-
-def tokens(path):
-    out = []
-    with open(path) as f:
-        for line in f:
-            fields = line.split('#', 1)[0].split()
-            if fields:
-                out.append(fields)
-    return out
+from trifiles import tokens
 
 
 def read(base):
