@@ -152,7 +152,6 @@ static void set_region(lh__m2 *m, const lh__m2_cavity *c, size_t i, size_t t)
     m->tarea[t] = c->dead_count ? c->reg[2 * i + 1] : 0;
 }
 
-
 lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
 {
     const uint32_t e = lh__m2_new_epoch(m);

@@ -757,6 +757,12 @@ typedef struct lh_trimesh_options {
                                   crossing (the lines' intersection, rounded once) and
                                   are split there; 0: crossing segments are an error
                                   naming both (default 0)                            */
+    int smooth;                /* passes of smoothing after refinement: each Steiner
+                                  point on no segment moves to its neighbours' centroid
+                                  when that raises the smallest angle around it, keeps
+                                  every triangle positive and within its area bound;
+                                  then flips make the mesh constrained Delaunay again.
+                                  The smallest angle never decreases (default 0)      */
     int split_segments;        /* -s: before the domain is carved, every subsegment
                                   that is not locally Delaunay is split at its
                                   midpoint until all are: segments become chains of
@@ -764,12 +770,6 @@ typedef struct lh_trimesh_options {
                                   of the graph), counted in steiner_points and within
                                   max_steiner; ignored when refining a given mesh
                                   (cover) (default 0)                              */
-    int smooth;                /* passes of smoothing after refinement: each Steiner
-                                  point on no segment moves to its neighbours' centroid
-                                  when that raises the smallest angle around it, keeps
-                                  every triangle positive and within its area bound;
-                                  then flips make the mesh constrained Delaunay again.
-                                  The smallest angle never decreases (default 0)      */
 } lh_trimesh_options;
 
 #define LH_TRIMESH_MAX_ANGLE 40.0 /* degrees: beyond it refinement need not end */
