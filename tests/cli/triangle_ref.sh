@@ -111,6 +111,10 @@ rm dots.1.*
 expect "dots.node: no .poly without -c" 0 '' '' -- "$lh" triangle -Q dots.node
 absent dots.1.poly
 cd ..
+rm -rf w; mkdir w; cd w; cp "$data"/bbox.1.* .
+expect "-rc bbox.1" 0 '' '' -- "$lh" triangle -Qrc bbox.1
+check "-rc bbox.1: the mesh's boundary as Triangle" check_reference.py --same "$t16/bbox.2" "$PWD/bbox.2"
+cd ..
 
 # -s: segments split at midpoints until each is a chain of Delaunay edges. A.poly as
 # Triangle 1.6 (31 vertices, triangle for triangle); la.poly: every edge locally
