@@ -242,6 +242,25 @@ LH_TEST(chews_rule_removes_points_crowding_a_segment)
 
 /* -D: subsegments split until every edge, those on segments too, is locally Delaunay
  * (checked with no subsegments given, so that every interior edge is tested). */
+/* Meshes g with o, asserts that every edge is Delaunay (the check with no subsegment),
+ * nothing left unsplit and the segments kept; returns the mesh. */
+static lh_trimesh *mesh_all_delaunay(lh_test_state *lh_t_, const lh_pslg *g, const lh_trimesh_options *o,
+                                     const char *what)
+{
+    lh_trimesh *m = mesh_checked(lh_t_, g, o, what);
+    char msg[256] = "";
+    if (!m) return NULL;
+    LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
+                                      lh_trimesh_triangles(m), 0, NULL, 1, NULL, msg, sizeof msg),
+                     LH_OK);
+    if (msg[0]) LH_NOTE("%s: %s", what, msg);
+    lh_trimesh_stats st;
+    lh_trimesh_get_stats(m, &st);
+    LH_EXPECT_EQ_U64(st.segments_unsplit, 0);
+    expect_segments_kept(lh_t_, g, m);
+    return m;
+}
+
 LH_TEST(conforming_delaunay_has_every_edge_delaunay)
 {
     for (size_t i = 0; i < sizeof triangle_files / sizeof triangle_files[0]; i++) {
@@ -250,19 +269,9 @@ LH_TEST(conforming_delaunay_has_every_edge_delaunay)
         lh_trimesh_options o;
         lh_trimesh_options_default(&o);
         o.conforming = 1;
-        lh_trimesh *m = mesh_checked(lh_t_, &g, &o, triangle_files[i]), *cdt = mesh_checked(lh_t_, &g, NULL, "cdt");
+        lh_trimesh *m = mesh_all_delaunay(lh_t_, &g, &o, triangle_files[i]);
+        lh_trimesh *cdt = mesh_checked(lh_t_, &g, NULL, "cdt");
         char msg[256] = "";
-        if (m) {
-            LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
-                                              lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0, NULL, 1,
-                                              NULL, msg, sizeof msg),
-                             LH_OK);
-            lh_trimesh_stats st;
-            lh_trimesh_get_stats(m, &st);
-            LH_EXPECT_EQ_U64(st.segments_unsplit, 0);
-            expect_segments_kept(lh_t_, &g, m);
-        }
-        if (msg[0]) LH_NOTE("%s: %s", triangle_files[i], msg);
         /* the plain CDT of these files is not conforming: the test can fail */
         if (cdt && i == 1) /* la.poly */
             LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(cdt), lh_trimesh_points(cdt),
@@ -458,17 +467,8 @@ LH_TEST(split_segments_makes_every_edge_delaunay)
         lh_trimesh_options o;
         lh_trimesh_options_default(&o);
         o.split_segments = 1;
-        lh_trimesh *m = mesh_checked(lh_t_, &g, &o, triangle_files[i]);
-        char msg[256] = "";
-        if (m) {
-            LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
-                                              lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0, NULL, 1,
-                                              NULL, msg, sizeof msg),
-                             LH_OK);
-            expect_segments_kept(lh_t_, &g, m);
-            if (i == 0) LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), 31); /* A.poly: Triangle's -ps */
-        }
-        if (msg[0]) LH_NOTE("%s: %s", triangle_files[i], msg);
+        lh_trimesh *m = mesh_all_delaunay(lh_t_, &g, &o, triangle_files[i]);
+        if (m && i == 0) LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), 31); /* A.poly: Triangle's -ps */
         lh_trimesh_free(m);
         lh_pslg_free(&g);
     }
