@@ -696,6 +696,9 @@ typedef struct lh_pslg {
                                   regions' with lh_trimesh_options.region_areas (-ra); or
                                   NULL                                                   */
     int first_index;           /* readers: the file's first number, 0 or 1; else 0        */
+    int item_first_shift;      /* readers: segments, holes and regions are numbered from
+                                  first_index + item_first_shift (nonzero for a .poly with
+                                  n = 0 numbered otherwise than its .node); else 0        */
     /* readers only (NULL otherwise): the line of the file where each item was read,
        so that a diagnostic can name it (1-based lines) */
     size_t *vertex_line, *segment_line, *hole_line, *region_line;
@@ -789,12 +792,14 @@ void lh_trimesh_options_default(lh_trimesh_options *opt);
  * a flood from the outside or a hole that removes every triangle (an unclosed
  * boundary: LH_ERR_DEGENERATE), with even_odd a vertex ending an odd number of
  * segments (rings not closed, the parity undefined: LH_ERR_DEGENERATE, naming it),
- * a segment endpoint out of range or an option out of range
+ * a hole seed lying exactly on a segment or at its endpoint (the side to carve is
+ * undefined: LH_ERR_DEGENERATE, naming both), a segment endpoint out of range or an option out of range
  * (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), LH_ERR_NOMEM.
  * msg (msg_size bytes, may be NULL) receives a one-line reason; when the PSLG came
  * from a reader it starts with the line of the item at fault and a colon ("17:
  * segment 3 crosses segment 5 (line 19)"), so "FILE:" + msg names the place. Items are
- * numbered as in the file (from g->first_index).
+ * numbered as in the file (vertices from g->first_index, segments, holes and regions
+ * from g->first_index + g->item_first_shift).
  */
 typedef struct lh_trimesh lh_trimesh;
 lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
