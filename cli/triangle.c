@@ -236,7 +236,7 @@ int lh_cli_triangle(int argc, char **argv)
         return LH_EXIT_USAGE;
     }
     if (o.q && !(o.angle >= 0 && o.angle <= LH_TRIMESH_MAX_ANGLE)) {
-        fprintf(stderr, "lifthull triangle: -q%g: the angle bound must be 0..%g degrees\n", o.angle,
+        fprintf(stderr, "lifthull triangle: -q%.17g: the angle bound must be 0..%g degrees\n", o.angle,
                 LH_TRIMESH_MAX_ANGLE);
         return LH_EXIT_USAGE;
     }
