@@ -3,7 +3,6 @@
 #include "args.h"
 #include "cli.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -30,11 +29,8 @@ static const char help[] =
 
 static int read_cells(const char *file, size_t n, lh_cells *c)
 {
-    FILE *f = fopen(file, "r");
-    if (!f) {
-        fprintf(stderr, "%s: %s\n", file, strerror(errno));
-        return 0;
-    }
+    FILE *f = lh_cli_open_input(file);
+    if (!f) return 0;
     char msg[512];
     lh_status st = lh_cells_read(f, file, n, NULL, c, msg, sizeof msg);
     fclose(f);

@@ -88,6 +88,31 @@ exact n0_crossing 3 "n0.poly:5: segment 3 crosses segment 1 (line 3)" -- "$lh" t
 printf '0 2 0 0\n3 0\n1 0 1\n2 1 2\n3 1 9\n0\n' > "$tmp/n0.poly"
 exact n0_endpoint 3 "n0.poly:5: segment 3: endpoint 9 is not a vertex (0..3)" -- "$lh" triangle -pQ n0.poly
 
+# a directory given as the input: said so, for every reader
+mkdir "$tmp/dir.poly" "$tmp/dir.txt"
+exact dir_points 3 "dir.txt: is a directory, not an input file" -- "$lh" delaunay dir.txt
+exact dir_qhull 3 "dir.txt: is a directory, not an input file" -- "$lh" qconvex TI dir.txt
+exact dir_poly 3 "dir.poly: is a directory, not an input file" -- "$lh" mesh dir.poly
+exact dir_check 3 "dir.txt: is a directory, not an input file" -- "$lh" check n0.node dir.txt
+# -r: the .ele's attributes are numbers as a .node's are (finite); the .area file read
+# whole: every line however long, its own line numbers, every token whole
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n' > "$tmp/q.node"
+printf '1 3 1\n1 1 2 3 nan\n' > "$tmp/q.ele"
+exact ele_nan 3 "q.ele:2:9: attribute 1 of cell 1 is 'nan': NaN and infinities are not accepted" -- "$lh" triangle -rQ q
+printf '1 3 1\n1 1 2 3 1e400\n' > "$tmp/q.ele"
+exact ele_overflow 3 "q.ele:2:9: attribute 1 of cell 1 is '1e400', which overflows a double" -- "$lh" triangle -rQ q
+printf '2 3 0\n1 1 2 3\n2 1 3 4\n' > "$tmp/q.ele"
+area() { printf '%b' "$2" > "$tmp/q.area"; exact "$1" 3 "$3" -- "$lh" triangle -raQ q; }
+area area_empty "" "q.area:1:1: expected the number of triangles (2, as in the .ele), found the end of the file"
+area area_comments "# areas\n\n" "q.area:3:1: expected the number of triangles (2, as in the .ele), found the end of the file"
+area area_2x "2\n1 2x\n2 1\n" "q.area:2:3: expected the area bound of triangle 1 (a number), found '2x'"
+area area_nul "2\n1 0.1\0junk\n2 1\n" "q.area:2:6: expected the end of the line after triangle 1's area bound, found a NUL byte"
+area area_nan "2\n1 nan\n2 1\n" "q.area:2:3: the area bound of triangle 1 is 'nan': NaN and infinities are not accepted (0 or below: no bound)"
+area area_line_numbers "\n# c\n2\n\n1 1\n2 1 7\n" "q.area:6:5: expected the end of the line after triangle 2's area bound, found '7'"
+area area_long_line "$(printf '%600s' '')2\n1 1\n$(printf '%600s' '')2 x\n" "q.area:3:603: expected the area bound of triangle 2 (a number), found 'x'"
+area area_short "2\n1 1\n" "q.area:3:1: expected triangle number 2, found the end of the file"
+area area_long "2\n1 1\n2 1\n3 1\n" "q.area:4:1: expected the end of the file after 2 triangles, found '3'"
+
 # numbers of options: empty, signed, blank-padded or trailing text is refused; a value
 # just past a bound prints with every digit
 exact threads_empty 2 "lifthull delaunay: --threads takes a whole number from 0 to 4096, not '' (lifthull delaunay --help)" -- "$lh" delaunay --threads "" n0.node
