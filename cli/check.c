@@ -23,7 +23,8 @@ static const char help[] =
     "\n"
     "examples:\n"
     "  rbox 1000 D3 > p.txt; qdelaunay Qt i < p.txt > s.txt; lifthull check p.txt s.txt\n"
-    "  triangle mesh.node; lifthull check mesh.1.node mesh.1.ele\n"
+    "  lifthull triangle -Q examples/dots.node    # examples/dots.1.node, dots.1.ele\n"
+    "  lifthull check examples/dots.1.node examples/dots.1.ele\n"
     "\n"
     "exit codes: 0 valid, 1 not a Delaunay triangulation, 2 usage, 3 bad input file.\n";
 
