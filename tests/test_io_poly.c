@@ -307,23 +307,32 @@ LH_TEST(poly_n0_take_points)
 }
 #endif
 
+/* The .node text (len bytes) read and attached to g (lh_pslg_take_points). */
+static lh_status attach_node_text(lh_pslg *g, const char *text, size_t len)
+{
+    char msg[256];
+    lh_points p;
+    FILE *f = lh_test_file(text, len);
+    if (!f) return LH_ERR_IO;
+    lh_status st = lh_points_read(f, "n.node", LH_FORMAT_NODE, NULL, &p, msg, sizeof msg);
+    fclose(f);
+    if (st == LH_OK) st = lh_pslg_take_points(g, &p);
+    lh_points_free(&p);
+    return st;
+}
+
 /* A .poly numbered from 0 whose .node is numbered from 1: the endpoints are the
  * .node's numbers (Triangle), renumbered by lh_pslg_take_points. */
 LH_TEST(poly_n0_renumbered)
 {
     lh_pslg g;
-    lh_points p;
     char msg[256];
     LH_ASSERT_EQ_INT(read_text(lh_poly_read, "r.poly", TEXT("0 2 0 0\n2 0\n0 0 1\n1 1 2\n0\n"), NULL, &g, msg, sizeof msg),
                      LH_OK);
     LH_EXPECT_EQ_INT(g.first_index, 0);
     static const int read[] = {0, 1, 1, 2};
     for (int i = 0; i < 4; i++) LH_EXPECT_EQ_INT(g.segments[i], read[i]);
-    FILE *f = lh_test_file(TEXT("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n"));
-    LH_ASSERT_TRUE(f != NULL);
-    LH_ASSERT_EQ_INT(lh_points_read(f, "r.node", LH_FORMAT_NODE, NULL, &p, msg, sizeof msg), LH_OK);
-    fclose(f);
-    LH_ASSERT_EQ_INT(lh_pslg_take_points(&g, &p), LH_OK);
+    LH_ASSERT_EQ_INT(attach_node_text(&g, TEXT("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n")), LH_OK);
     LH_EXPECT_EQ_INT(g.first_index, 1);
     static const int seg[] = {-1, 0, 0, 1}; /* "0 0 1": 0 is no vertex of a 1-based .node */
     for (int i = 0; i < 4; i++) LH_EXPECT_EQ_INT(g.segments[i], seg[i]);
@@ -341,16 +350,11 @@ LH_TEST(poly_n0_renumbered)
 LH_TEST(poly_n0_keeps_its_item_numbers)
 {
     lh_pslg g;
-    lh_points p;
     char msg[256];
     LH_ASSERT_EQ_INT(read_text(lh_poly_read, "s.poly", TEXT("0 2 0 0\n3 0\n1 0 1\n2 1 2\n3 1 9\n0\n"), NULL, &g,
                                msg, sizeof msg), LH_OK);
     LH_EXPECT_EQ_INT(g.segments[0], -1); /* 0 less the .poly's base, until the .node comes */
-    FILE *f = lh_test_file(TEXT("4 2 0 0\n0 0 0\n1 2 0\n2 2 2\n3 0 2\n"));
-    LH_ASSERT_TRUE(f != NULL);
-    LH_ASSERT_EQ_INT(lh_points_read(f, "s.node", LH_FORMAT_NODE, NULL, &p, msg, sizeof msg), LH_OK);
-    fclose(f);
-    LH_ASSERT_EQ_INT(lh_pslg_take_points(&g, &p), LH_OK);
+    LH_ASSERT_EQ_INT(attach_node_text(&g, TEXT("4 2 0 0\n0 0 0\n1 2 0\n2 2 2\n3 0 2\n")), LH_OK);
     LH_EXPECT_EQ_INT(g.first_index, 0);
     LH_EXPECT_EQ_INT(g.item_first_shift, 1);
     static const int seg[] = {0, 1, 1, 2, 1, 9};

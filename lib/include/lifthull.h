@@ -595,8 +595,9 @@ typedef struct lh_cells {
  * lifthull delaunay print: the count, then one cell a line, 0-based indices), or a
  * Triangle/TetGen .ele file (header "count points_per_cell [attributes]", then
  * "number v_0..v_k [attributes]" numbered consecutively from 0 or 1, the point
- * indices from the same base). The header line tells them apart (one field: 'i').
- * With n_points > 0 every index must name one of n_points points. Diagnostics and
+ * indices from the same base; attributes are finite numbers, skipped: NaN or
+ * infinity is LH_ERR_NONFINITE as in .node files). The header line tells them apart
+ * (one field: 'i'). With n_points > 0 every index must name one of n_points points. Diagnostics and
  * statuses as lh_points_read ("NAME:LINE:COL: expected ..., found ...").
  */
 lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
@@ -856,7 +857,9 @@ const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
  * counterclockwise with positive area; edges shared by at most two triangles; every subsegment an
  * edge; every edge on the boundary a subsegment (unless boundary_free); every edge
  * not a subsegment locally Delaunay (incircle, exact). Returns LH_OK, or
- * LH_ERR_INTERNAL with a reason in msg, LH_ERR_INVALID_ARGUMENT, LH_ERR_NOMEM.
+ * LH_ERR_INTERNAL with a reason in msg; LH_ERR_INVALID_ARGUMENT (a NULL array with a
+ * count, a subsegment endpoint out of range, an allocator lacking alloc or free) or
+ * LH_ERR_TOO_LARGE, the argument named in msg; LH_ERR_NOMEM.
  */
 lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
                            size_t seg_count, const lh_index *segs, int boundary_free,
