@@ -20,8 +20,12 @@ int lh_cli_triangle(int argc, char **argv);
 int lh_cli_mesh(int argc, char **argv);
 
 /* Shared by the commands that read points (common.c). */
+#include <stdio.h>
+
 #include "lifthull.h"
 double lh_cli_seconds(void);
+/* Opens path for reading; NULL after printing "PATH: problem" (a directory too). */
+FILE *lh_cli_open_input(const char *path);
 /* Reads FILE (or standard input for NULL or "-") in format fmt (LH_FORMAT_AUTO: by
  * name and content); 0 after printing the error. */
 int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **name);

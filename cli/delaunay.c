@@ -36,9 +36,9 @@ static const char help[] =
     "\n"
     "examples:\n"
     "  rbox 1000 D3 | lifthull delaunay\n"
-    "  lifthull points 10000 -d 2 | lifthull delaunay -o mesh.vtu\n"
-    "  lifthull points 1000000 -d 3 | lifthull delaunay --threads 0 -o mesh.vtu\n"
-    "  lifthull delaunay -s examples/points.txt\n"
+    "  lifthull points 10000 -d 2 | lifthull delaunay -o mesh2d.vtu\n"
+    "  lifthull points 100000 -d 3 | lifthull delaunay --threads 0 -o mesh3d.vtu -f\n"
+    "  lifthull delaunay -s examples/ukraine.txt\n"
     "\n"
     "exit codes: 0 done, 1 the computation failed (e.g. all points on a plane: the\n"
     "message names the affine dimension), 2 usage, 3 bad input file.\n";

@@ -500,7 +500,7 @@ static const char usage_text[] =
     "  lifthull points 10000 -d 2 | lifthull delaunay -s\n"
     "  lifthull points 500 -d 2 --integer 10 | lifthull delaunay -s\n"
     "  lifthull points 2000 -d 4 --exact-sphere | lifthull delaunay -s\n"
-    "  lifthull points --grid 5 -d 3 -o grid.txt\n"
+    "  lifthull points --grid 5 -d 3 -o grid.txt -f\n"
     "  lifthull points 100000 -d 5 --clusters 20 --seed 3 -o clusters.txt -f\n";
 
 /* The most points --exact-sphere gives in 2D (M < 2^62). */

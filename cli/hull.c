@@ -20,7 +20,7 @@ static const char help[] =
     "\n"
     "examples:\n"
     "  rbox 1000 D4 | lifthull hull -s\n"
-    "  lifthull points 500 -d 3 --sphere | lifthull hull -o hull.off\n"
+    "  lifthull points 500 -d 3 --sphere | lifthull hull -o hull.off -f\n"
     "\n"
     "exit codes: 0 done, 1 the computation failed, 2 usage, 3 bad input file.\n";
 

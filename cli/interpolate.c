@@ -27,7 +27,7 @@ static const char help[] =
     "example:\n"
     "  printf 'x,y,v\\n0,0,1\\n1,0,2\\n0,1,3\\n1,1,4\\n' > s.csv\n"
     "  printf '2 1\\n0.5 0.5\\n' > q.txt\n"
-    "  lifthull interpolate --values 1 s.csv q.txt          # prints 2.5\n"
+    "  lifthull interpolate --values 1 s.csv q.txt  # prints 2.5\n"
     "\n"
     "exit codes: 0 done, 1 the computation failed, 2 usage, 3 bad input file.\n";
 

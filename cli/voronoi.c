@@ -25,7 +25,7 @@ static const char help[] =
     "\n"
     "examples:\n"
     "  rbox 100 D2 | lifthull voronoi\n"
-    "  lifthull voronoi examples/points.txt -o voronoi.svg\n"
+    "  lifthull voronoi examples/ukraine.txt -o voronoi.svg -f\n"
     "\n"
     "exit codes: 0 done, 1 the computation failed, 2 usage, 3 bad input file.\n";
 
