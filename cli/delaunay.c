@@ -68,6 +68,10 @@ int lh_cli_delaunay(int argc, char **argv)
     lh_cli_args a;
     int r = lh_cli_args_parse(&a, "delaunay", "suaqfoc", 0, 1, argc, argv, help);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    /* every output target is checked before the input is read */
+    if (!(a.summary ? lh_cli_out_check("delaunay", a.output, a.force, a.file[0])
+                    : lh_cli_mesh_out_check("delaunay", &a, a.file[0])))
+        return LH_EXIT_FAIL;
     lh_points pts;
     const char *name;
     if (!lh_cli_load(a.file[0], a.format, &pts, &name)) return LH_EXIT_INPUT;

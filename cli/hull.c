@@ -48,6 +48,7 @@ int lh_cli_hull(int argc, char **argv)
     lh_cli_args a;
     int r = lh_cli_args_parse(&a, "hull", "sqfo", 0, 1, argc, argv, help);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check("hull", a.output, a.force, a.file[0])) return LH_EXIT_FAIL;
     lh_points pts;
     const char *name;
     if (!lh_cli_load(a.file[0], a.format, &pts, &name)) return LH_EXIT_INPUT;

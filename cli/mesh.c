@@ -256,9 +256,12 @@ static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh
     return lh_cli_out_close(&out, "mesh", ok);
 }
 
-static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind, size_t stem)
+/* For -o BASE.node or BASE.ele: Triangle's files BASE.node and BASE.ele, numbered from
+ * 1, with markers, and BASE.poly for a graph (in_kind), written (m) or, with m NULL,
+ * only checked before the input is read. */
+static int triangle_files(const mesh_args *a, const lh_cli_pslg *in, int in_kind, const lh_trimesh *m,
+                          size_t stem)
 {
-    if (kind != OUT_NODE && kind != OUT_ELE) return write_one(a, in, m, kind);
     char *base = malloc(stem + 1);
     if (!base) {
         fprintf(stderr, "lifthull mesh: out of memory\n");
@@ -266,11 +269,17 @@ static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trim
     }
     memcpy(base, a->output, stem);
     base[stem] = 0;
-    /* Triangle's three files, numbered from 1, with markers; .poly for a graph */
-    lh_cli_tri_files w = {1, 1, in->kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force};
-    const int rc = lh_cli_trimesh_write(m, in, base, &w, "mesh");
+    lh_cli_tri_files w = {1, 1, in_kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force};
+    const int rc = m ? lh_cli_trimesh_write(m, in, base, &w, "mesh")
+                     : lh_cli_trimesh_check(base, &w, a->file, "mesh") ? LH_EXIT_OK : LH_EXIT_FAIL;
     free(base);
     return rc;
+}
+
+static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind, size_t stem)
+{
+    if (kind != OUT_NODE && kind != OUT_ELE) return write_one(a, in, m, kind);
+    return triangle_files(a, in, in->kind, m, stem);
 }
 
 int lh_cli_mesh(int argc, char **argv)
@@ -291,6 +300,11 @@ int lh_cli_mesh(int argc, char **argv)
         usage_error("-o: the name must end in .vtu, .msh, .off, .node, .ele or .svg:", a.output);
         return LH_EXIT_USAGE;
     }
+    /* every output file is checked before the input is read */
+    if (a.output && (ok_kind == OUT_NODE || ok_kind == OUT_ELE
+                         ? triangle_files(&a, NULL, in_kind[ik], NULL, out_stem) != LH_EXIT_OK
+                         : !lh_cli_out_check("mesh", a.output, a.force, a.file)))
+        return LH_EXIT_FAIL;
     char *base = malloc(stem + 1);
     if (!base) {
         fprintf(stderr, "lifthull mesh: out of memory\n");

@@ -42,23 +42,59 @@ static int one_file(const char *cmd, const lh_cli_args *a, const char *input, co
     return lh_cli_out_close(&out, cmd, st == LH_OK);
 }
 
-/* BASE.node, BASE.ele, BASE.neigh. */
+/* The three Triangle/TetGen files of a .node or .ele output name: BASE.node, BASE.ele,
+ * BASE.neigh (malloc'ed, into path[3]); 0 when out of memory. */
+static const char *const tri_ext[3] = {".node", ".ele", ".neigh"};
+
+static int tri_paths(const char *output, char *path[3])
+{
+    const size_t base = (size_t)(extension(output) - output);
+    for (int i = 0; i < 3; i++) path[i] = NULL;
+    for (int i = 0; i < 3; i++) {
+        if (!(path[i] = malloc(base + 8))) return 0;
+        memcpy(path[i], output, base);
+        strcpy(path[i] + base, tri_ext[i]);
+    }
+    return 1;
+}
+
+static int is_tri_path(const char *path)
+{
+    const char *e = extension(path);
+    return !strcmp(e, ".node") || !strcmp(e, ".ele");
+}
+
+int lh_cli_mesh_out_check(const char *cmd, const lh_cli_args *a, const char *input)
+{
+    if (!a->output || !is_tri_path(a->output)) return lh_cli_out_check(cmd, a->output, a->force, input);
+    char *path[3];
+    int ok = tri_paths(a->output, path);
+    if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    for (int i = 0; i < 3 && ok; i++) ok = lh_cli_out_check(cmd, path[i], a->force, input);
+    for (int i = 0; i < 3; i++) free(path[i]);
+    return ok;
+}
+
+/* BASE.node, BASE.ele, BASE.neigh: one output set, all three or none. */
 static int triangle_files(const char *cmd, const lh_cli_args *a, const char *input, const lh_mesh_view *m)
 {
-    const char *e = extension(a->output);
-    size_t base = (size_t)(e - a->output);
-    char *path = malloc(base + 8);
-    if (!path) return LH_EXIT_FAIL;
-    static const char *const exts[3] = {".node", ".ele", ".neigh"};
     static const writer ws[3] = {lh_write_node, lh_write_ele, lh_write_neigh};
-    int status = LH_EXIT_OK;
-    for (int i = 0; i < 3 && status == LH_EXIT_OK; i++) {
-        memcpy(path, a->output, base);
-        strcpy(path + base, exts[i]);
-        status = one_file(cmd, a, input, path, ws[i], m);
+    char *path[3];
+    FILE *f[3] = {0};
+    int ok = tri_paths(a->output, path);
+    if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    lh_cli_outset set;
+    lh_cli_outset_init(&set, cmd, a->force, input);
+    for (int i = 0; i < 3 && ok; i++) ok = (f[i] = lh_cli_outset_add(&set, path[i])) != NULL;
+    for (int i = 0; i < 3 && ok; i++) {
+        lh_status st = ws[i](f[i], m, 1);
+        if (st != LH_OK && st != LH_ERR_IO)
+            fprintf(stderr, "lifthull %s: %s: %s\n", cmd, path[i], lh_status_message(st));
+        ok = st == LH_OK;
     }
-    free(path);
-    return status;
+    const int rc = lh_cli_outset_close(&set, ok);
+    for (int i = 0; i < 3; i++) free(path[i]);
+    return rc;
 }
 
 static int svg(const char *cmd, const lh_cli_args *a, const char *input, lh_tri *t, const double *xyz,
@@ -83,6 +119,6 @@ int lh_cli_write_mesh(const char *cmd, const lh_cli_args *a, const char *input, 
                       lh_tri_simplices(t), lh_tri_neighbors(t), NULL, NULL};
     const char *e = extension(a->output);
     if (!strcmp(e, ".svg")) return svg(cmd, a, input, t, xyz, voronoi);
-    if (!strcmp(e, ".node") || !strcmp(e, ".ele")) return triangle_files(cmd, a, input, &m);
+    if (is_tri_path(a->output)) return triangle_files(cmd, a, input, &m);
     return one_file(cmd, a, input, a->output, !strcmp(e, ".vtu") ? vtu : !strcmp(e, ".msh") ? msh : off, &m);
 }

@@ -11,9 +11,14 @@ int lh_cli_is_mesh_path(const char *path);
 /* Writes t (sites xyz) to a->output, whole or not at all: .vtu (VTK XML), .msh (Gmsh
  * 4.1), .off, .svg (2D: sites and Delaunay edges; with `voronoi` the Voronoi diagram
  * too; a->circles adds circumcircles), .node/.ele (Triangle/TetGen: BASE.node,
- * BASE.ele and BASE.neigh, numbered from 1 as Triangle does). Returns an exit code
+ * BASE.ele and BASE.neigh, numbered from 1 as Triangle does: all three or none). Returns an exit code
  * (message printed on failure). */
 int lh_cli_write_mesh(const char *cmd, const lh_cli_args *a, const char *input, lh_tri *t,
                       const double *xyz, int voronoi);
+
+/* Checks every file lh_cli_write_mesh would write for a->output (for .node/.ele all
+ * three; also the other names), before the input is read. Returns 1, or 0 after
+ * printing the problem. */
+int lh_cli_mesh_out_check(const char *cmd, const lh_cli_args *a, const char *input);
 
 #endif
