@@ -10,7 +10,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: lifthull delaunay [-s] [-u] [-a] [-q] [-o FILE [-f]] [POINTS]\n"
+    "usage: lifthull delaunay [-s] [-u] [-a] [-q] [-o FILE [-f]] [--ascii] [POINTS]\n"
     "\n"
     "The Delaunay triangulation of the points in POINTS (or standard input): Qhull's\n"
     "point format (rbox output as it is), Triangle/TetGen .node, or columns (blank- or\n"
@@ -19,7 +19,7 @@ static const char help[] =
     "\n"
     "Output: Qhull's 'i' format (the count, then one simplex a line as 0-based site\n"
     "indices, positively oriented), or with -o FILE the format its name asks for:\n"
-    "  .vtu  VTK (ParaView)    .msh  Gmsh 4.1    .off  OFF (2D)\n"
+    "  .vtu  VTK (ParaView; binary, --ascii as text)   .msh  Gmsh 4.1   .off  OFF (2D)\n"
     "  .node / .ele  Triangle/TetGen BASE.node, BASE.ele, BASE.neigh (numbered from 1)\n"
     "  .svg  a picture (2D; --circles adds the circumcircles)\n"
     "  other names: the 'i' format.\n"
@@ -66,7 +66,7 @@ static void simplices(FILE *f, lh_tri *t)
 int lh_cli_delaunay(int argc, char **argv)
 {
     lh_cli_args a;
-    int r = lh_cli_args_parse(&a, "delaunay", "suaqfoc", 0, 1, argc, argv, help);
+    int r = lh_cli_args_parse(&a, "delaunay", "suaqfocA", 0, 1, argc, argv, help);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     /* every output target is checked before the input is read */
     if (!(a.summary ? lh_cli_out_check("delaunay", a.output, a.force, a.file[0])

@@ -25,7 +25,8 @@ int lh_cli_is_mesh_path(const char *path)
 
 typedef lh_status (*writer)(FILE *f, const lh_mesh_view *m, int first_index);
 
-static lh_status vtu(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_vtu(f, m); }
+static lh_status vtu(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_vtu_opts(f, m, NULL); }
+static lh_status vtu_ascii(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_vtu(f, m); }
 static lh_status msh(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_msh(f, m); }
 static lh_status off(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_off(f, m); }
 
@@ -120,5 +121,5 @@ int lh_cli_write_mesh(const char *cmd, const lh_cli_args *a, const char *input, 
     const char *e = extension(a->output);
     if (!strcmp(e, ".svg")) return svg(cmd, a, input, t, xyz, voronoi);
     if (is_tri_path(a->output)) return triangle_files(cmd, a, input, &m);
-    return one_file(cmd, a, input, a->output, !strcmp(e, ".vtu") ? vtu : !strcmp(e, ".msh") ? msh : off, &m);
+    return one_file(cmd, a, input, a->output, !strcmp(e, ".vtu") ? (a->ascii ? vtu_ascii : vtu) : !strcmp(e, ".msh") ? msh : off, &m);
 }

@@ -50,7 +50,7 @@ xml "A.vtu is XML" A.vtu
 grep -q "<Piece NumberOfPoints=\"$pts\" NumberOfCells=\"$tris\">" A.vtu && ok || bad "A.vtu: counts"
 grep -q 'Name="marker"' A.vtu && ok || bad "A.vtu: no marker point data"
 grep -q 'Name="region"' A.vtu && bad "A.vtu: region without --attributes" || ok
-expect "-o vtu --attributes" 0 '' '' -- "$lh" mesh la.poly --attributes -o la.vtu -q
+expect "-o vtu --attributes" 0 '' '' -- "$lh" mesh la.poly --attributes -o la.vtu -q --ascii
 xml "la.vtu is XML" la.vtu
 same "la.vtu region values" "$(awk '/Name="region"/ { on = 1; next } /<\/DataArray>/ { on = 0 } on { print $1 + 0 }' la.vtu | sort -u -g | tr '\n' ' ')" "0 0.05 0.2 0.4 0.8 3 "
 same "la.vtu one value a cell" "$(awk '/Name="region"/ { on = 1; next } /<\/DataArray>/ { on = 0 } on' la.vtu | wc -l | tr -d ' ')" "$(sed -nE 's/.*NumberOfCells="([0-9]+)".*/\1/p' la.vtu)"

@@ -94,5 +94,57 @@ for sig in TERM INT; do
   content "SIG$sig: big.msh untouched" big.msh OLD; notemp "SIG$sig"
 done
 
+# ---- .vtu: binary by default (base64 inline), --ascii as text; the same mesh --------
+"$lh" points 300 -d 3 -o c3.txt
+expect "delaunay -o vtu" 0 '' '' -- "$lh" delaunay c3.txt -o b.vtu
+expect "delaunay -o vtu --ascii" 0 '' '' -- "$lh" delaunay c3.txt -o a.vtu --ascii
+grep -q 'format="binary"' b.vtu && ! grep -q 'format="ascii"' b.vtu && ok || bad "b.vtu is not binary"
+grep -q 'header_type="UInt64"' b.vtu && ok || bad "b.vtu: no header_type"
+grep -q 'format="binary"' a.vtu && bad "a.vtu is not ASCII" || ok
+expect "mesh --attributes -o vtu" 0 '' '' -- "$lh" mesh "$data/la.poly" --attributes -o la.vtu -q
+expect "mesh --attributes -o vtu --ascii" 0 '' '' -- "$lh" mesh "$data/la.poly" --attributes -o la-a.vtu -q --ascii
+py=; for p in ${LH_PYTHON:-} python3 /usr/bin/python3; do
+  command -v "$p" > /dev/null && "$p" -c "import meshio" 2> /dev/null && { py=$p; break; }; done
+if [ -n "$py" ]; then
+  # meshio reads both, and they hold exactly the same points, cells and fields
+  "$py" - <<'PY' && ok || bad "binary and ASCII .vtu differ (meshio)"
+import meshio, numpy as np
+for b, a, fields in (("b.vtu", "a.vtu", ["neighbors"]), ("la.vtu", "la-a.vtu", ["neighbors", "region"])):
+    mb, ma = meshio.read(b), meshio.read(a)
+    assert mb.points.shape[0] > 0 and np.array_equal(mb.points, ma.points), b
+    assert len(mb.cells) == 1 and np.array_equal(mb.cells[0].data, ma.cells[0].data), b
+    for f in fields:
+        assert np.array_equal(mb.cell_data[f][0], ma.cell_data[f][0]), (b, f)
+mb = meshio.read("la.vtu")
+assert sorted(set(mb.cell_data["region"][0].tolist())) == [0, 0.05, 0.2, 0.4, 0.8, 3], "regions"
+assert np.array_equal(mb.point_data["marker"], meshio.read("la-a.vtu").point_data["marker"]), "markers"
+PY
+else
+  echo "meshio not found: the binary .vtu read-back skipped (Debian: python3-meshio)"
+fi
+# VTK's own reader (ParaView's), where Python has it (Debian: python3-vtk9)
+py=; for p in ${LH_PYTHON:-} python3 /usr/bin/python3; do
+  command -v "$p" > /dev/null && "$p" -c "import vtk" 2> /dev/null && { py=$p; break; }; done
+if [ -n "$py" ]; then
+  "$py" - <<'PY' && ok || bad "binary and ASCII .vtu differ (VTK)"
+import vtk, numpy as np
+from vtk.util.numpy_support import vtk_to_numpy as arr
+def read(p):
+    r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(p); r.Update(); return r.GetOutput()
+for b, a in (("b.vtu", "a.vtu"), ("la.vtu", "la-a.vtu")):
+    gb, ga = read(b), read(a)
+    assert gb.GetNumberOfCells() == ga.GetNumberOfCells() > 0, b
+    assert np.array_equal(arr(gb.GetPoints().GetData()), arr(ga.GetPoints().GetData())), b
+    assert np.array_equal(arr(gb.GetCells().GetConnectivityArray()), arr(ga.GetCells().GetConnectivityArray())), b
+    assert np.array_equal(arr(gb.GetCellTypesArray()), arr(ga.GetCellTypesArray())), b
+    for data in ("GetCellData", "GetPointData"):
+        db, da = getattr(gb, data)(), getattr(ga, data)()
+        assert db.GetNumberOfArrays() == da.GetNumberOfArrays() and (data == "GetPointData" or db.GetNumberOfArrays()), (b, data)
+        for i in range(da.GetNumberOfArrays()):
+            name = da.GetArrayName(i)
+            assert np.array_equal(arr(db.GetArray(name)), arr(da.GetArray(name))), (b, name)
+PY
+fi
+
 notemp "the end"
 finish
