@@ -1,6 +1,7 @@
 /* common.c — what the commands that read points share: options, loading, failure
  * messages, timing, flushing the output (cli.h). */
 #include "cli.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -16,6 +17,12 @@ double lh_cli_seconds(void)
 
 int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **name)
 {
+    return lh_cli_load_progress(file, fmt, pts, name, NULL);
+}
+
+int lh_cli_load_progress(const char *file, lh_format fmt, lh_points *pts, const char **name,
+                         struct lh_cli_progress *prog)
+{
     FILE *f = stdin;
     *name = "<stdin>";
     if (file && strcmp(file, "-")) {
@@ -27,7 +34,9 @@ int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **na
         }
     }
     char msg[512];
+    lh_cli_progress_file(prog, "reading", *name, f);
     lh_status st = lh_points_read(f, *name, fmt, NULL, pts, msg, sizeof msg);
+    lh_cli_progress_file_done(prog);
     if (f != stdin) fclose(f);
     if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
     return st == LH_OK;

@@ -1,5 +1,6 @@
 /* delaunay.c — `lifthull delaunay`: the Delaunay triangulation of a point file, as
  * Qhull's `i` format, a summary, or a mesh file (VTK, Gmsh, OFF, SVG, Triangle). */
+#define _POSIX_C_SOURCE 200809L /* isatty, fileno */
 #include "args.h"
 #include "cli.h"
 #include "mesh_out.h"
@@ -8,6 +9,7 @@
 
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 static const char help[] =
     "usage: lifthull delaunay [-s] [-u] [-a] [-q] [-o FILE [-f]] [--ascii] [POINTS]\n"
@@ -29,7 +31,8 @@ static const char help[] =
     "  -u         the furthest-site triangulation (Qhull's Qu)\n"
     "  -a         points spanning only a k-flat (1 <= k < d) are triangulated within\n"
     "             it (k+1 indices a simplex) instead of failing\n"
-    "  -q         no progress line (shown on a terminal after 2 s)\n"
+    "  -q         no progress line (shown on a terminal after 2 s of reading,\n"
+    "             inserting or writing)\n"
     "  -o FILE    write FILE, whole or not at all; an existing FILE needs -f\n"
     "  --threads N  insert with N threads (0: one per CPU; default 1); the output\n"
     "             is the same, byte for byte\n"
@@ -72,15 +75,16 @@ int lh_cli_delaunay(int argc, char **argv)
     if (!(a.summary ? lh_cli_out_check("delaunay", a.output, a.force, a.file[0])
                     : lh_cli_mesh_out_check("delaunay", &a, a.file[0])))
         return LH_EXIT_FAIL;
+    lh_cli_progress prog;
+    lh_cli_progress_init(&prog, "delaunay", a.quiet);
     lh_points pts;
     const char *name;
-    if (!lh_cli_load(a.file[0], a.format, &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load_progress(a.file[0], a.format, &pts, &name, &prog)) return LH_EXIT_INPUT;
     lh_options opt;
     lh_options_default(&opt);
     opt.furthest_site = a.furthest;
     opt.affine_hull = a.affine;
     opt.threads = a.threads;
-    lh_cli_progress prog;
     lh_cli_progress_attach(&prog, "delaunay", a.quiet, &opt);
     lh_tri *t;
     lh_status st = lh_delaunay(pts.d, pts.n, pts.xyz, &opt, &t);
@@ -93,13 +97,17 @@ int lh_cli_delaunay(int argc, char **argv)
     }
     int status;
     if (!a.summary && lh_cli_is_mesh_path(a.output)) {
-        status = lh_cli_write_mesh("delaunay", &a, a.file[0], t, pts.xyz, 0);
+        status = lh_cli_write_mesh("delaunay", &a, a.file[0], t, pts.xyz, 0, &prog);
     } else {
         lh_cli_out out;
         status = LH_EXIT_FAIL;
         if (lh_cli_out_open(&out, "delaunay", a.output, a.force, a.file[0])) {
+            /* a terminal shows the output itself */
+            if (!isatty(fileno(out.f)))
+                lh_cli_progress_file(&prog, "writing", a.output ? a.output : "<stdout>", out.f);
             if (a.summary) summary(out.f, &pts, t, seconds);
             else simplices(out.f, t);
+            lh_cli_progress_file_done(&prog);
             status = lh_cli_out_close(&out, "delaunay", 1);
         }
     }

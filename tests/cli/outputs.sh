@@ -146,5 +146,24 @@ for b, a in (("b.vtu", "a.vtu"), ("la.vtu", "la-a.vtu")):
 PY
 fi
 
+# ---- progress: reading and writing show a line too (on a terminal, after 2 s) -------
+# A FIFO fed slowly makes reading take 3 s; one drained slowly, writing (the output
+# is larger than a pipe's buffer). `script` gives the command a terminal.
+if command -v script > /dev/null; then
+  "$lh" points 3000 -d 3 -o p3k.txt
+  slow_read() { mkfifo slow.txt; ( printf '3\n4\n0 0 0\n'; sleep 3; printf '1 0 0\n0 1 0\n0 0 1\n' ) > slow.txt & }
+  slow_drain() { mkfifo out.fifo; ( exec 3< out.fifo; sleep 3; cat <&3 > /dev/null ) & }
+  slow_read; script -qefc "'$lh' delaunay slow.txt -o s.vtu -f" /dev/null > tty.txt; wait; rm -f slow.txt
+  grep -q 'lifthull delaunay: reading slow.txt, [23] s' tty.txt && ok || bad "no reading progress: $(cat -v tty.txt)"
+  slow_drain; script -qefc "'$lh' delaunay p3k.txt -o out.fifo -f" /dev/null > tty.txt; wait; rm -f out.fifo
+  grep -q 'lifthull delaunay: writing out.fifo, [23] s' tty.txt && ok || bad "no writing progress: $(cat -v tty.txt)"
+  slow_drain; script -qefc "'$lh' delaunay -q p3k.txt -o out.fifo -f" /dev/null > tty.txt; wait; rm -f out.fifo
+  grep -q 'writing' tty.txt && bad "-q: progress shown: $(cat -v tty.txt)" || ok
+  slow_read; "$lh" delaunay slow.txt -o s.vtu -f 2> err.txt; wait; rm -f slow.txt
+  [ -s err.txt ] && bad "not a terminal: progress shown: $(cat -v err.txt)" || ok
+else
+  echo "script not found: the progress lines not checked (Debian: util-linux)"
+fi
+
 notemp "the end"
 finish
