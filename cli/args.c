@@ -27,6 +27,7 @@ static int whole(const char *s, long lo, long hi, int *out)
 static char letter(const char *s)
 {
     if (!strcmp(s, "--circles")) return 'c';
+    if (!strcmp(s, "--ascii")) return 'A';
     if (!strcmp(s, "--values")) return 'v';
     if (!strcmp(s, "--threads")) return 't';
     if (!strcmp(s, "--format")) return 'F';
@@ -61,6 +62,7 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
         case 'q': a->quiet = 1; break;
         case 'f': a->force = 1; break;
         case 'c': a->circles = 1; break;
+        case 'A': a->ascii = 1; break;
         case 'o': a->output = argv[++i]; break;
         case 'm': a->method = argv[++i]; break;
         case 'F': {

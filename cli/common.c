@@ -2,6 +2,7 @@
  * messages, timing, flushing the output (cli.h). */
 #define _POSIX_C_SOURCE 200809L /* fileno */
 #include "cli.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -34,6 +35,12 @@ FILE *lh_cli_open_input(const char *path)
 
 int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **name)
 {
+    return lh_cli_load_progress(file, fmt, pts, name, NULL);
+}
+
+int lh_cli_load_progress(const char *file, lh_format fmt, lh_points *pts, const char **name,
+                         struct lh_cli_progress *prog)
+{
     FILE *f = stdin;
     *name = "<stdin>";
     if (file && strcmp(file, "-")) {
@@ -41,7 +48,9 @@ int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **na
         if (!(f = lh_cli_open_input(file))) return 0;
     }
     char msg[512];
+    lh_cli_progress_file(prog, "reading", *name, f);
     lh_status st = lh_points_read(f, *name, fmt, NULL, pts, msg, sizeof msg);
+    lh_cli_progress_file_done(prog);
     if (f != stdin) fclose(f);
     if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
     return st == LH_OK;

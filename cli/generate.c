@@ -687,6 +687,7 @@ int lh_cli_generate(int argc, char **argv)
     gen_opts o;
     int r = parse_args(argc, argv, &o);
     if (r != 0) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check("points", o.out, o.force, NULL)) return LH_EXIT_FAIL;
     sphere_plan plan = {.d = o.d};
     if (o.kind == GEN_EXACT_SPHERE) {
         r = o.d == 2 ? plan_circle(&plan, o.n) : plan_sphere(&plan, o.n);

@@ -118,6 +118,9 @@ int lh_cli_interpolate(int argc, char **argv)
         fprintf(stderr, "lifthull interpolate: unknown method '%s' (linear, natural or nearest)\n", a.method);
         return LH_EXIT_USAGE;
     }
+    if (!lh_cli_out_check("interpolate", a.output, a.force, a.file[1]) ||
+        !lh_cli_out_check("interpolate", a.output, a.force, a.file[0]))
+        return LH_EXIT_FAIL;
     lh_points s, q;
     const char *names[2];
     if (!lh_cli_load_pair(a.file[0], a.file[1], a.format, &s, &q, names)) return LH_EXIT_INPUT;

@@ -46,11 +46,15 @@ typedef struct lh_cli_tri_files {
 } lh_cli_tri_files;
 
 /* Writes the files BASE.node etc. whole or not at all (each to a temporary file,
- * all renamed at the end; none left behind on failure); in supplies the holes and
+ * renamed together at the end when all were written; none left behind on failure:
+ * outfile.h); in supplies the holes and
  * regions for .poly. Never replaces an input file (in->path, in->node_path).
  * Returns 0 (LH_EXIT_OK) or LH_EXIT_FAIL after printing the problem. */
 int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
                          const lh_cli_tri_files *w, const char *cmd);
+/* Checks every file lh_cli_trimesh_write would write (lh_cli_out_check), before the
+ * input is read. Returns 1, or 0 after printing the problem. */
+int lh_cli_trimesh_check(const char *base, const lh_cli_tri_files *w, const char *input, const char *cmd);
 
 /* The quality report: counts, angle and area ranges, an angle histogram. */
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle);

@@ -163,6 +163,8 @@ static int run(const sw *o, const char *file)
         strcpy(path, file);
     else
         sprintf(path, "%s%s", base, kind == LH_CLI_POLY ? ".poly" : ".node");
+    /* every output file is checked before the input is read */
+    if (!lh_cli_trimesh_check(outb, &o->files, path, "triangle")) goto done;
     if (!lh_cli_pslg_load(&in, path, base, kind) ||
         (o->r && !lh_cli_pslg_load_mesh(&in, base, o->a_regions))) {
         if (in.path) lh_cli_pslg_free(&in);

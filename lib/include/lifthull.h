@@ -639,6 +639,7 @@ typedef struct lh_mesh_view {
  *                line, 5 triangle, 10 tetra). values: point data; neighbors: cell data
  *                "neighbors" with k+1 components. Indices as Int32 (Int64 past
  *                INT32_MAX points or cells, which only 64-bit indices allow).
+ *                lh_write_vtu_opts below writes the same content in binary.
  * lh_write_msh   Gmsh MSH 4.1 ASCII: $MeshFormat "4.1 0 8", $Entities (one entity of
  *                dimension k holding everything, bounding box of the points), $Nodes
  *                and $Elements (element types 1 segment, 2 triangle, 4 tetrahedron),
@@ -660,6 +661,26 @@ lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
+
+/*
+ * The .vtu writer's choices; a zeroed struct (or NULL) gives the defaults: binary,
+ * no cell field.
+ *
+ * Binary: every DataArray format="binary", its values inline in base64 as VTK writes
+ * them uncompressed (VTKFile version="1.0", header_type="UInt64": the array's length
+ * in bytes as a UInt64, encoded on its own, then the values, encoded on their own, in
+ * this machine's byte order, which byte_order names). Under half the ASCII size of a
+ * 3D triangulation, written without formatting numbers, still well-formed XML;
+ * ParaView/VTK and meshio read it. Offsets are Int32 up to INT32_MAX, else Int64.
+ */
+typedef struct lh_vtu_options {
+    int ascii;                    /* 1: every array as text (lh_write_vtu's file)          */
+    const double *cell_values;    /* m->count per-cell scalars as cell data, or NULL; NaN
+                                     or infinity: LH_ERR_NONFINITE                        */
+    const char *cell_values_name; /* its name (as values_name), NULL for "cell_value"      */
+} lh_vtu_options;
+/* lh_write_vtu with choices; checks and statuses as the writers above. */
+lh_status lh_write_vtu_opts(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
 
 /* ---- 2D meshing: constrained Delaunay triangulation and quality refinement -------- */
 
