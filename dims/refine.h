@@ -53,6 +53,10 @@ lh_status lh__cover_areas(lh__m2 *m, lh__cover *cv, const double *area);
  * followed by Lawson's flips (smooth.c); *moved counts the moves. */
 lh_status lh__m2_smooth(lh__m2 *m, lh__m2_cavity *c, int passes, double max_area, size_t *moved);
 
+/* The subsegment on which point p lies (closed: an endpoint too), or -1 (cdt_domain.c).
+ * A hole seed there would carve whichever side point location happens to find. */
+lh_index lh__m2_subseg_at(lh__m2 *m, const double *p);
+
 /* Triangle's -s (cdt_split.c): subsegments split at their midpoints until each is
  * locally Delaunay, at most max_steiner points (*added); *unsplit counts those left
  * not locally Delaunay (below the length floor, refused, or the budget spent). */
