@@ -22,8 +22,9 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
     lh_cli_out out;
     int ok = lh_cli_out_open(&out, o.name, o.output, 1, o.input);
     for (int i = 0; ok && i < o.nout; i++) {
-        /* the summary goes to standard error when other outputs are asked (Qhull) */
-        FILE *f = !strcmp(o.out[i], "s") && o.nout > 1 ? stderr : out.f;
+        /* an 's' asked for goes to standard error, the default one to the output
+         * (Qhull 2020.2) */
+        FILE *f = !strcmp(o.out[i], "s") && !o.summary_default ? stderr : out.f;
         ok = lh_cli_qprint(f, &o, &mo, o.out[i]);
         if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", o.name);
     }

@@ -21,6 +21,8 @@ typedef struct lh_cli_qopts {
     char out[LH_QOUT_MAX][4]; /* output options in the order given ("i", "Fn") */
     int nout;
     int furthest;             /* Qu                                            */
+    int areas;                /* FA or FS: totals in the summary 's'           */
+    int summary_default;      /* no output asked: 's' on standard output       */
     int verify;               /* Tv: the exact check of the result             */
     const char *input;        /* TI file, NULL: standard input                 */
     const char *output;       /* TO file, NULL: standard output                */
@@ -66,9 +68,8 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
                         const double *xyz, const char *name);
 void lh_cli_qmodel_free(lh_cli_qmodel *mo);
 
-/* Prints output option `opt` (one of those lh_cli_qparse accepts for o->prog);
- * `to_stderr_summary`: 's' goes to standard error when other outputs are asked, as
- * Qhull does. Returns 0 when out of memory (message printed). */
+/* Prints output option `opt` (one of those lh_cli_qparse accepts for o->prog).
+ * Returns 0 when out of memory. */
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
 
 #endif

@@ -7,9 +7,9 @@
 
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
 static const char *const outputs[3] = {
-    "i o p s Fn FN Fv Fx",
-    "o p s i Fi Fo Fv Fn FN",
-    "i o p s n Fn FN Fv Fi Fo FC Ft Fx",
+    "i o p s Fn FN Fv Fx FS Fa Fs",
+    "o p s i Fi Fo Fv Fn FN Fs",
+    "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs",
 };
 
 /* Qhull options that change nothing here, with why. */
@@ -53,16 +53,18 @@ static void help(const lh_cli_qopts *o)
            "Qhull's %s, exact: the same options and output formats, every facet a\n"
            "simplex (Qt is always on). Points in Qhull's format (rbox output as it is).\n\n"
            "outputs, printed in the order given:  %s\n"
-           "  (none: the summary 's')\n"
+           "  (none: the summary 's' on standard output; 's' asked for: on standard error)\n"
            "other options:\n"
            "  Qu        furthest-site (upper hull)%s\n"
+           "%s"
            "  Tv        check the result exactly and report on standard error\n"
            "  TI FILE   read the points from FILE      TO FILE  write the output to FILE\n"
            "  Qt QJ Qbb Qz Qc Qx Pp and Qhull's tuning options are accepted; they\n"
            "  change nothing under exact arithmetic (a note says why).\n\n"
            "e.g.  rbox 1000 D3 | lifthull %s %s\n",
            o->name, o->name, o->name, outputs[o->prog],
-           o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "", o->name,
+           o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "",
+           o->prog == LH_QPROG_VORONOI ? "" : "  FA        total area (and volume) in the summary 's'\n", o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
 }
 
@@ -70,6 +72,7 @@ static void help(const lh_cli_qopts *o)
  * consumed (*used = 1) by TI and TO. */
 static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
 {
+    if (!strcmp(w, "FS") && o->prog != LH_QPROG_VORONOI) o->areas = 1; /* also an output */
     if (is_output(o->prog, w)) {
         if (o->nout == LH_QOUT_MAX) {
             fprintf(stderr, "lifthull %s: more than %d output options\n", o->name, LH_QOUT_MAX);
@@ -79,6 +82,7 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
         return 1;
     }
     if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
+    if (!strcmp(w, "FA") && o->prog != LH_QPROG_VORONOI) return o->areas = 1;
     if (!strcmp(w, "Tv")) return o->verify = 1;
     if (!strcmp(w, "TI") || !strcmp(w, "TO")) {
         if (!next) {
@@ -138,6 +142,9 @@ int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv)
         if (!word(o, words[i], i + 1 < nw ? words[i + 1] : NULL, &took)) return -1;
         i += took;
     }
-    if (o->nout == 0) strcpy(o->out[o->nout++], "s");
+    if (o->nout == 0) {
+        strcpy(o->out[o->nout++], "s");
+        o->summary_default = 1;
+    }
     return 0;
 }

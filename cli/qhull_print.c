@@ -1,6 +1,7 @@
 /*
  * qhull_print.c — Qhull's text formats for facets: i, Fv, Fn, FN, o, p, s, Fx, and
- * qconvex's planes (n, Fi, Fo) and centrums (FC). Byte habits as Qhull 2020.2:
+ * qconvex's planes (n, Fi, Fo) and centrums (FC); the measures (FA, FS, Fa, Fs) are
+ * in qhull_measure.c. Byte habits as Qhull 2020.2:
  * coordinates as "%6.16g " (trailing blank), index lists of 'i' and 'o' with a
  * trailing blank, those of Fn, FN, Fv without; the lifted coordinate of qdelaunay's
  * 'o' and 'p' scaled to [0, max |coordinate|] as Qhull's Qbb does.
@@ -54,6 +55,13 @@ static int is_vertex(const lh_cli_qmodel *mo, size_t i)
     for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
         if (mo->inc[k] >= 0) return 1;
     return 0;
+}
+
+size_t lh_cli_qvertex_count(const lh_cli_qmodel *mo)
+{
+    size_t v = 0;
+    for (size_t i = 0; i < mo->n; i++) v += is_vertex(mo, i);
+    return v;
 }
 
 static void print_i(FILE *f, const lh_cli_qmodel *mo)
@@ -167,16 +175,13 @@ static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     }
 }
 
-static void print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
+static int print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
+    size_t v = lh_cli_qvertex_count(mo);
     if (o->prog == LH_QPROG_CONVEX) {
-        size_t v = 0;
-        for (size_t i = 0; i < mo->n; i++) v += is_vertex(mo, i);
         fprintf(f, "\nConvex hull of %zu points in %d-d:\n\n  Number of vertices: %zu\n"
                    "  Number of facets: %zu\n", mo->n, mo->d, v, mo->m);
     } else if (o->prog == LH_QPROG_VORONOI) {
-        size_t v = 0;
-        for (size_t i = 0; i < mo->n; i++) v += is_vertex(mo, i);
         fprintf(f, "\nVoronoi diagram by the convex hull of %zu points in %d-d:\n\n"
                    "  Number of Voronoi regions%s: %zu\n  Number of Voronoi vertices: %zu\n",
                 mo->n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v, mo->m);
@@ -189,9 +194,17 @@ static void print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     if (mo->ndup) fprintf(f, "  Number of duplicate sites merged: %zu\n", mo->ndup);
     fprintf(f, "\nStatistics for: %s\n\n  Number of points processed: %zu\n"
                "  Exact arithmetic: every facet a simplex, no merging, no precision error\n"
-               "  CPU seconds to compute %s: %.3g\n\n",
+               "  CPU seconds to compute %s: %.3g\n",
             o->command, mo->n - mo->ndup, o->prog == LH_QPROG_CONVEX ? "the hull" : "the triangulation",
             mo->seconds);
+    if (o->areas) { /* FA, FS: Qhull's lines, its "%2.8g" */
+        double area, volume;
+        if (!lh_cli_qtotals(mo, &area, &volume)) return 0;
+        fprintf(f, "  Total facet area:   %2.8g\n", area);
+        if (o->prog == LH_QPROG_CONVEX) fprintf(f, "  Total volume:       %2.8g\n", volume);
+    }
+    fputc('\n', f);
+    return 1;
 }
 
 /* The outward hyperplane n.x + off = 0 of hull facet t, |n| = 1, from the exact
@@ -235,7 +248,7 @@ static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
     if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "FN") &&
-        strcmp(opt, "i"))
+        strcmp(opt, "i") && strcmp(opt, "Fs"))
         return lh_cli_qprint_voronoi(f, o, mo, opt);
     if (!strcmp(opt, "i")) print_i(f, mo);
     else if (!strcmp(opt, "Fv")) print_fv(f, mo);
@@ -244,7 +257,9 @@ int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const
     else if (!strcmp(opt, "p")) print_p(f, o, mo);
     else if (!strcmp(opt, "o") || !strcmp(opt, "Ft")) print_o(f, o, mo);
     else if (!strcmp(opt, "Fx")) print_fx(f, o, mo);
-    else if (!strcmp(opt, "s")) print_s(f, o, mo);
+    else if (!strcmp(opt, "s")) return print_s(f, o, mo);
+    else if (!strcmp(opt, "FS") || !strcmp(opt, "Fa") || !strcmp(opt, "Fs"))
+        return lh_cli_qprint_measure(f, o, mo, opt);
     else if (!strcmp(opt, "n") || !strcmp(opt, "Fi") || !strcmp(opt, "Fo")) print_planes(f, mo);
     else if (!strcmp(opt, "FC")) print_centrums(f, mo);
     return 1;

@@ -1,0 +1,229 @@
+#!/usr/bin/env python3
+"""Qhull's output options in `lifthull qdelaunay | qvoronoi | qconvex` against Qhull 2020.2's
+programs (qhull-bin), added by issue 30 item 15:
+
+  qhull_formats.py LIFTHULL [--only REGEX] [-v]
+
+On rbox sets in general position the outputs must agree up to facet order (facets matched by
+their vertex sets, numbers within 1e-12 relative); on degenerate sets lifthull is exact and
+its values are checked against exact rational arithmetic (Qhull's are printed beside, not
+asserted). Exit 0 when every check passed, 1 otherwise, 77 when Qhull's programs are missing.
+"""
+
+import argparse
+import re
+import shutil
+import subprocess
+import sys
+from fractions import Fraction
+from math import factorial
+
+FAILS = []
+PASSES = [0]
+VERBOSE = [False]
+
+
+def check(name, cond, detail=""):
+    if cond:
+        PASSES[0] += 1
+        if VERBOSE[0]:
+            print("PASS", name)
+    else:
+        FAILS.append(name)
+        print("FAIL", name, detail)
+
+
+def run(cmd, text):
+    p = subprocess.run(cmd, input=text, capture_output=True, text=True)
+    return p.returncode, p.stdout, p.stderr
+
+
+def rbox(spec):
+    return subprocess.run(["rbox"] + spec.split(), capture_output=True, text=True, check=True).stdout
+
+
+def points(text):
+    toks = text.split("\n")
+    d = int(toks[0].split()[0])
+    n = int(toks[1].split()[0])
+    return d, [tuple(float(x) for x in l.split()) for l in toks[2:2 + n]]
+
+
+def close(a, b, rel=1e-12):
+    return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)
+
+
+def facets_i(out):
+    lines = out.strip().split("\n")
+    return [frozenset(int(x) for x in l.split()) for l in lines[1:1 + int(lines[0])]]
+
+
+def reals(out):
+    """The numbers of a count-then-one-per-line output (Fa)."""
+    lines = out.strip().split("\n")
+    return [float(l) for l in lines[1:1 + int(lines[0])]]
+
+
+def det(m):
+    """Exact determinant (Fractions), Gaussian elimination."""
+    m = [row[:] for row in m]
+    n, s = len(m), Fraction(1)
+    for c in range(n):
+        p = next((r for r in range(c, n) if m[r][c] != 0), None)
+        if p is None:
+            return Fraction(0)
+        if p != c:
+            m[c], m[p] = m[p], m[c]
+            s = -s
+        for r in range(c + 1, n):
+            f = m[r][c] / m[c][c]
+            for k in range(c, n):
+                m[r][k] -= f * m[c][k]
+        s *= m[c][c]
+    return s
+
+
+def exact_volume(pts, facets, d):
+    """|sum over facets of det(facet - o)| / d!, o the first facet's first vertex."""
+    o = [Fraction(x) for x in pts[min(facets[0])]]
+    total = Fraction(0)
+    for f in facets:
+        vs = sorted(f)
+        m = [[Fraction(pts[v][j]) - o[j] for j in range(d)] for v in vs]
+        total += abs(det(m))  # cone over a facet: each |det|, as o is a hull vertex
+    return total / factorial(d)
+
+
+# ---- general position: agreement with Qhull ------------------------------------------
+def general(lh, spec, prog, qopts):
+    text = rbox(spec)
+    name = "%s %s" % (spec, prog)
+    # FS: totals
+    _, a, _ = run([lh, prog, "FS"], text)
+    _, b, _ = run([prog] + qopts + ["FS"], text)
+    la, qa = a.split("\n"), b.split("\n")
+    check(name + " FS header", la[0] == qa[0] == "0", a + b)
+    lv, qv = [float(x) for x in la[1].split()[1:]], [float(x) for x in qa[1].split()[1:]]
+    check(name + " FS values", len(lv) == len(qv) == 2 and all(close(x, y) for x, y in zip(lv, qv)),
+          "%s vs %s" % (lv, qv))
+    # Fa: per facet, matched by vertex sets
+    _, li, _ = run([lh, prog, "i"], text)
+    _, lfa, _ = run([lh, prog, "Fa"], text)
+    _, qi, _ = run([prog] + qopts + ["i"], text)
+    _, qfa, _ = run([prog] + qopts + ["Fa"], text)
+    lm = dict(zip(facets_i(li), reals(lfa)))
+    qm = dict(zip(facets_i(qi), reals(qfa)))
+    check(name + " Fa facets", set(lm) == set(qm), "%d vs %d facets" % (len(lm), len(qm)))
+    bad = [k for k in lm if k in qm and not close(lm[k], qm[k], 1e-10)]
+    check(name + " Fa values", not bad, "%d differ, e.g. %s" % (len(bad), bad[:1]))
+    # Fs: the first eight integers equal (the ninth, vertices Qhull deleted while it
+    # built the hull, is 0 here); the reals: lifthull exact 0, Qhull's roundoff
+    _, a, _ = run([lh, prog, "Fs"], text)
+    _, b, _ = run([prog] + qopts + ["Fs"], text)
+    la, qa = a.split("\n"), b.split("\n")
+    check(name + " Fs integers", la[0].split()[:9] == qa[0].split()[:9] and la[0].split()[9:] == ["0", "0"],
+          "%r vs %r" % (la[0], qa[0]))
+    check(name + " Fs reals", la[1] == "2      0      0"
+          and all(abs(float(x)) < 1e-12 for x in qa[1].split()[1:]), "%r vs %r" % (la[1], qa[1]))
+    # FA: the summary's total lines, Qhull's "%2.8g" strings
+    _, a, _ = run([lh, prog, "FA"], text)
+    _, b, _ = run([prog] + qopts + ["FA"], text)
+    pick = lambda s: [l for l in s.split("\n") if l.startswith("  Total ")]
+    check(name + " FA summary", pick(a) == pick(b) and pick(a), "%s vs %s" % (pick(a), pick(b)))
+
+
+def voronoi_fs(lh, spec):
+    text = rbox(spec)
+    _, a, _ = run([lh, "qvoronoi", "Fs"], text)
+    _, b, _ = run(["qvoronoi", "Fs"], text)
+    check(spec + " qvoronoi Fs integers", a.split("\n")[0] == b.split("\n")[0], a + b)
+
+
+# ---- the summary's stream -------------------------------------------------------------
+def summary_streams(lh):
+    text = rbox("20 D2 t3")
+    for prog in ("qconvex", "qdelaunay", "qvoronoi"):
+        for opts in (["s"], ["s", "i"], [], ["i", "s"]):
+            lr = run([lh, prog] + opts, text)
+            qr = run([prog] + opts, text)
+            where = lambda r: ("Number of" in r[1], "Number of" in r[2])
+            check("%s %s: summary stream" % (prog, " ".join(opts) or "(none)"),
+                  where(lr) == where(qr), "lifthull %s, qhull %s" % (where(lr), where(qr)))
+
+
+# ---- degenerate: exact where Qhull is not ---------------------------------------------
+def degenerate(lh):
+    # the cube's corners, points on its faces and inside, translated by 2^30: exactly area 6,
+    # volume 1 (Qhull: merged facets, roundoff in its planes)
+    pts = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+    pts += [(0.5, 0.5, 0), (0.25, 0, 0.75), (1, 0.5, 0.5), (0.5, 0.5, 0.5)]
+    off = 2.0 ** 30
+    text = "3\n%d\n" % len(pts) + "".join("%r %r %r\n" % (x + off, y + off, z + off) for x, y, z in pts)
+    _, a, _ = run([lh, "qconvex", "FS"], text)
+    check("cube + 2^30 qconvex FS exact", a == "0\n2      6      1 \n", repr(a))
+    _, b, _ = run(["qconvex", "FS"], text)
+    print("note: cube + 2^30: lifthull %r, qconvex %r" % (a.split("\n")[1], b.split("\n")[1]))
+    _, a, _ = run([lh, "qdelaunay", "FS"], text)
+    check("cube + 2^30 qdelaunay FS exact", a == "0\n2      1      0 \n", repr(a))
+    # thin tetrahedra far from the origin (rbox's lens points pushed by 1e6): the volume
+    # against the exact volume of lifthull's own hull facets, and the Delaunay total
+    for spec in ("30 D3 W1e-9 t5 O1e6", "40 D3 s Z1e-9 t2 O3e5", "25 D4 t8 O1e4", "30 D3 y t5 O1e7"):
+        text = rbox(spec)
+        d, p = points(text)
+        _, fi, _ = run([lh, "qconvex", "i"], text)
+        exact = exact_volume(p, facets_i(fi), d)
+        _, a, _ = run([lh, "qconvex", "FS"], text)
+        got = float(a.split("\n")[1].split()[2])
+        err = abs(Fraction(got) - exact) / exact
+        check(spec + " qconvex FS volume exact (<= 2^-51)", err <= Fraction(1, 2 ** 51), "rel err %g" % err)
+        _, a, _ = run([lh, "qdelaunay", "FS"], text)
+        got = float(a.split("\n")[1].split()[1])
+        err2 = abs(Fraction(got) - exact) / exact
+        check(spec + " qdelaunay FS total = hull volume", err2 <= Fraction(1, 2 ** 51), "rel err %g" % err2)
+        r, b, _ = run(["qconvex", "FS"], text)
+        if r == 0:
+            q = float(b.split("\n")[1].split()[2])
+            print("note: %s: volume rel. error lifthull %.2g, qconvex %.2g"
+                  % (spec, float(err), float(abs(Fraction(q) - exact) / exact)))
+
+
+def refusals(lh):
+    r, _, e = run([lh, "qvoronoi", "FA"], "2 3\n0 0\n1 0\n0 1\n")
+    check("qvoronoi FA refused", r == 2 and "option 'FA' is not supported" in e, e)
+    r, _, e = run([lh, "qvoronoi", "Fa"], "2 3\n0 0\n1 0\n0 1\n")
+    check("qvoronoi Fa refused", r == 2 and "option 'Fa' is not supported" in e, e)
+
+
+def guard(name, fn, *args):
+    """Runs one group of checks; an output too malformed to parse is one failure."""
+    try:
+        fn(*args)
+    except (ValueError, IndexError, ZeroDivisionError) as e:
+        check(name + " (output parses)", False, repr(e))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("lifthull")
+    ap.add_argument("-v", action="store_true")
+    a = ap.parse_args()
+    VERBOSE[0] = a.v
+    if not all(shutil.which(p) for p in ("rbox", "qconvex", "qdelaunay", "qvoronoi")):
+        print("SKIP: Qhull's programs (qhull-bin) not found")
+        return 77
+    lh = a.lifthull
+    for spec in ("50 D2 t1", "200 D3 t2", "60 D4 t3", "300 s D3 t4", "40 D5 t9"):
+        guard(spec, general, lh, spec, "qconvex", [])
+    for spec in ("50 D2 t5", "200 D3 t6", "60 D4 t7"):
+        guard(spec, general, lh, spec, "qdelaunay", ["Qt"])
+    for spec in ("50 D2 t5", "100 D3 t6"):
+        guard(spec, voronoi_fs, lh, spec)
+    guard("summary", summary_streams, lh)
+    guard("degenerate", degenerate, lh)
+    guard("refusals", refusals, lh)
+    print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
+    return 1 if FAILS else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
