@@ -8,7 +8,7 @@
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
 static const char *const outputs[3] = {
     "i o p s Fn FN Fv Fx FS Fa Fs",
-    "o p s i Fi Fo Fv Fn FN Fs",
+    "o p s i Fi Fo Fv Fn FN Fs Fx",
     "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs",
 };
 

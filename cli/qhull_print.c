@@ -158,7 +158,10 @@ static void print_o(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     }
 }
 
-/* Extreme points: the sites on the convex hull, increasing. */
+/* Extreme points, increasing (Qhull lists them in its facets' order): qconvex, the
+ * hull's vertices; qdelaunay and qvoronoi, the sites on the hull's boundary (on an
+ * upper or vertical facet, as Qhull's); with Qu, the furthest-site triangulation's
+ * vertices (the corners: a site inside a hull facet lifts below the upper hull). */
 static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     size_t count = 0;
@@ -167,7 +170,7 @@ static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
         for (size_t i = 0; i < mo->n; i++) {
             int on = 0;
             for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !on; k++)
-                on = o->prog == LH_QPROG_CONVEX || mo->inc[k] < 0;
+                on = o->prog == LH_QPROG_CONVEX || (mo->inc[k] < 0) != o->furthest;
             if (!on) continue;
             if (pass) fprintf(f, "%zu\n", i);
             else count++;
@@ -248,7 +251,7 @@ static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
     if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "FN") &&
-        strcmp(opt, "i") && strcmp(opt, "Fs"))
+        strcmp(opt, "i") && strcmp(opt, "Fs") && strcmp(opt, "Fx"))
         return lh_cli_qprint_voronoi(f, o, mo, opt);
     if (!strcmp(opt, "i")) print_i(f, mo);
     else if (!strcmp(opt, "Fv")) print_fv(f, mo);

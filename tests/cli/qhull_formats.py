@@ -187,6 +187,21 @@ def degenerate(lh):
                   % (spec, float(err), float(abs(Fraction(q) - exact) / exact)))
 
 
+# ---- Fx: extreme points as a set (Qhull lists them in its facets' order) ----------------
+def extreme(lh):
+    sq = "2 6\n0 0\n2 0\n2 2\n0 2\n1 0\n1 1.1\n"  # site 4 on an edge, not a corner
+    for text, name in ((rbox("40 D2 t11"), "40 D2"), (rbox("80 D3 t12"), "80 D3"),
+                       (rbox("30 D4 t13"), "30 D4"), (sq, "square + edge site")):
+        for prog in ("qdelaunay", "qvoronoi"):
+            for qu in ([], ["Qu"]):
+                _, a, _ = run([lh, prog, "Fx"] + qu, text)
+                _, b, _ = run([prog, "Fx"] + qu, text)
+                la, qa = a.split(), b.split()
+                check("%s %s Fx %s" % (name, prog, " ".join(qu)),
+                      la and la[0] == qa[0] and set(la[1:]) == set(qa[1:])
+                      and la[1:] == sorted(la[1:], key=int), "%s vs %s" % (la, qa))
+
+
 def refusals(lh):
     r, _, e = run([lh, "qvoronoi", "FA"], "2 3\n0 0\n1 0\n0 1\n")
     check("qvoronoi FA refused", r == 2 and "option 'FA' is not supported" in e, e)
@@ -220,6 +235,7 @@ def main():
         guard(spec, voronoi_fs, lh, spec)
     guard("summary", summary_streams, lh)
     guard("degenerate", degenerate, lh)
+    guard("Fx", extreme, lh)
     guard("refusals", refusals, lh)
     print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
     return 1 if FAILS else 0
