@@ -19,6 +19,12 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
         lh_points_free(&pts);
         return LH_EXIT_FAIL;
     }
+    r = lh_cli_qselect(&mo, &o);
+    if (r <= 0) {
+        lh_cli_qmodel_free(&mo);
+        lh_points_free(&pts);
+        return r < 0 ? LH_EXIT_USAGE : LH_EXIT_FAIL;
+    }
     lh_cli_out out;
     int ok = lh_cli_out_open(&out, o.name, o.output, 1, o.input);
     for (int i = 0; ok && i < o.nout; i++) {

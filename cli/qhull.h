@@ -24,6 +24,13 @@ typedef struct lh_cli_qopts {
     int areas;                /* FA or FS: totals in the summary 's'           */
     int summary_default;      /* no output asked: 's' on standard output       */
     int verify;               /* Tv: the exact check of the result             */
+    struct lh_cli_qpd {       /* Pdk:n (ge: normal[k] >= n), PDk:n (<= n)      */
+        int k, ge;
+        double at;
+    } pd[LH_QOUT_MAX];
+    int npd;
+    size_t largest;           /* PAn: the n largest facets are the good ones   */
+    int good, good_nbrs;      /* Pg: print good facets; PG: their neighbours   */
     const char *input;        /* TI file, NULL: standard input                 */
     const char *output;       /* TO file, NULL: standard output                */
     char command[256];        /* "lifthull qdelaunay OPTIONS", for summaries    */
@@ -67,6 +74,13 @@ typedef struct lh_cli_qmodel {
 int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t n,
                         const double *xyz, const char *name);
 void lh_cli_qmodel_free(lh_cli_qmodel *mo);
+/* (Re)builds mo->inc_off and mo->inc from the facets (qhull_model.c). */
+lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo);
+/* Qhull's print filters (Pdk, PDk, PAn, Pg, PG; qhull_select.c): the facets they
+ * drop join the other facets (negative ids), as Qhull's unprinted ones. Returns 1;
+ * 0 when out of memory, -1 for a coordinate outside the facets' normals (both after
+ * printing the problem). */
+int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
 
 /* Prints output option `opt` (one of those lh_cli_qparse accepts for o->prog).
  * Returns 0 when out of memory. */

@@ -9,28 +9,24 @@
 
 #include <stdlib.h>
 
-/* Each printed facet's measure (m doubles), or the totals; 0 when out of memory. */
-static int measures(const lh_cli_qmodel *mo, double *each, double *area, double *volume)
+/* The totals over every facet of the hull (or lower facet), whatever the print
+ * filters select, as Qhull's; 0 when out of memory. */
+int lh_cli_qtotals(const lh_cli_qmodel *mo, double *area, double *volume)
 {
     lh_status st;
     if (mo->hull) {
-        st = lh_hull_measures(mo->hull, mo->xyz, mo->n, each, area, volume);
+        st = lh_hull_measures(mo->hull, mo->xyz, mo->n, NULL, area, volume);
     } else {
-        st = lh_tri_measures(mo->tri, each, area);
-        if (volume) *volume = 0;
+        st = lh_tri_measures(mo->tri, NULL, area);
+        *volume = 0;
     }
     return st == LH_OK;
-}
-
-int lh_cli_qtotals(const lh_cli_qmodel *mo, double *area, double *volume)
-{
-    return measures(mo, NULL, area, volume);
 }
 
 static int print_FS(FILE *f, const lh_cli_qmodel *mo)
 {
     double area, volume;
-    if (!measures(mo, NULL, &area, &volume)) return 0;
+    if (!lh_cli_qtotals(mo, &area, &volume)) return 0;
     fprintf(f, "0\n2 ");
     lh_cli_qcoords(f, (const double[]){area, volume}, 2);
     fputc('\n', f);
@@ -40,7 +36,8 @@ static int print_FS(FILE *f, const lh_cli_qmodel *mo)
 static int print_Fa(FILE *f, const lh_cli_qmodel *mo)
 {
     double *each = malloc((mo->m ? mo->m : 1) * sizeof *each);
-    if (!each || !measures(mo, each, NULL, NULL)) {
+    if (!each || lh_simplex_measures(mo->d, mo->nv - 1, mo->xyz, mo->n, mo->m, mo->vert, each,
+                                     NULL) != LH_OK) {
         free(each);
         return 0;
     }

@@ -3,6 +3,7 @@
 #include "qhull.h"
 
 #include <ctype.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
@@ -58,14 +59,61 @@ static void help(const lh_cli_qopts *o)
            "  Qu        furthest-site (upper hull)%s\n"
            "%s"
            "  Tv        check the result exactly and report on standard error\n"
+           "%s"
            "  TI FILE   read the points from FILE      TO FILE  write the output to FILE\n"
            "  Qt QJ Qbb Qz Qc Qx Pp and Qhull's tuning options are accepted; they\n"
            "  change nothing under exact arithmetic (a note says why).\n\n"
            "e.g.  rbox 1000 D3 | lifthull %s %s\n",
            o->name, o->name, o->name, outputs[o->prog],
            o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "",
-           o->prog == LH_QPROG_VORONOI ? "" : "  FA        total area (and volume) in the summary 's'\n", o->name,
+           o->prog == LH_QPROG_VORONOI ? "" : "  FA        total area (and volume) in the summary 's'\n",
+           o->prog == LH_QPROG_VORONOI ? "" :
+           "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
+           "  PAn       print the n largest facets (Pg); PG: their other neighbours\n",
+           o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
+}
+
+/* Qhull's print filters: Pdk[:n]... (several run together), PDk[:n], PAn, Pg, PG.
+ * Returns 1 when w is one (recorded), 0 when it is not one, -1 after a usage error. */
+static int print_filter(lh_cli_qopts *o, const char *w)
+{
+    if (w[0] != 'P' || !strchr("dDAgG", w[1]) || !w[1]) return 0;
+    if (o->prog == LH_QPROG_VORONOI) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex and "
+                "qdelaunay)\n", o->name, w);
+        return -1;
+    }
+    if (w[1] == 'g' || w[1] == 'G') {
+        if (w[2]) return 0;
+        *(w[1] == 'g' ? &o->good : &o->good_nbrs) = 1;
+        return 1;
+    }
+    char *end;
+    if (w[1] == 'A') {
+        long v = isdigit((unsigned char)w[2]) ? strtol(w + 2, &end, 10) : 0;
+        if (v <= 0 || *end) goto bad;
+        o->largest = (size_t)v;
+        return 1;
+    }
+    for (const char *s = w + 1; *s;) {
+        if ((*s != 'd' && *s != 'D') || !isdigit((unsigned char)s[1]) || o->npd == LH_QOUT_MAX) goto bad;
+        struct lh_cli_qpd *f = &o->pd[o->npd++];
+        f->ge = *s == 'd';
+        f->k = (int)strtol(s + 1, &end, 10);
+        f->at = 0;
+        s = end;
+        if (*s == ':') {
+            f->at = strtod(s + 1, &end);
+            if (end == s + 1 || f->at != f->at) goto bad;
+            s = end;
+        }
+    }
+    return 1;
+bad:
+    fprintf(stderr, "lifthull %s: option '%s': expected Pdk[:n] or PDk[:n] (k a coordinate, n a "
+            "number; several may follow each other), PAn (n > 0), Pg or PG\n", o->name, w);
+    return -1;
 }
 
 /* One option word; 0 after printing a usage error. `next` is the following word,
@@ -84,6 +132,13 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
     if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
     if (!strcmp(w, "FA") && o->prog != LH_QPROG_VORONOI) return o->areas = 1;
     if (!strcmp(w, "Tv")) return o->verify = 1;
+    int pf = print_filter(o, w);
+    if (pf) return pf > 0;
+    if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
+                "QGn, QVn)\n", o->name, w);
+        return 0;
+    }
     if (!strcmp(w, "TI") || !strcmp(w, "TO")) {
         if (!next) {
             fprintf(stderr, "lifthull %s: option '%s' needs a file name\n", o->name, w);

@@ -20,11 +20,9 @@ void lh_cli_qcoords(FILE *f, const double *x, int d)
 }
 
 /* The lifted coordinate |p|^2 scaled to [0, max |coordinate|] (Qhull's Qbb). */
-typedef struct lift_scale {
-    double low, factor;
-} lift_scale;
+typedef lh_cli_qlift lift_scale;
 
-static lift_scale lift_scale_of(const lh_cli_qmodel *mo)
+lh_cli_qlift lh_cli_qlift_scale(const lh_cli_qmodel *mo)
 {
     double low = INFINITY, high = -INFINITY, big = 0;
     for (size_t i = 0; i < mo->n; i++) {
@@ -41,13 +39,18 @@ static lift_scale lift_scale_of(const lh_cli_qmodel *mo)
     return s;
 }
 
-static void lifted_point(FILE *f, const lh_cli_qmodel *mo, lift_scale s, size_t i)
+double lh_cli_qlifted(const lh_cli_qmodel *mo, lh_cli_qlift s, size_t i)
 {
     const double *x = mo->xyz + i * mo->d;
     double z = 0;
     for (int j = 0; j < mo->d; j++) z += x[j] * x[j];
-    lh_cli_qcoords(f, x, mo->d);
-    fprintf(f, "%6.16g \n", (z - s.low) * s.factor);
+    return (z - s.low) * s.factor;
+}
+
+static void lifted_point(FILE *f, const lh_cli_qmodel *mo, lift_scale s, size_t i)
+{
+    lh_cli_qcoords(f, mo->xyz + i * mo->d, mo->d);
+    fprintf(f, "%6.16g \n", lh_cli_qlifted(mo, s, i));
 }
 
 static int is_vertex(const lh_cli_qmodel *mo, size_t i)
@@ -126,7 +129,7 @@ static void print_p(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     for (size_t i = 0; i < mo->n; i++) count += is_vertex(mo, i);
     int lifted = o->prog != LH_QPROG_CONVEX;
     fprintf(f, "%d\n%zu\n", mo->d + lifted, count);
-    lift_scale s = lift_scale_of(mo);
+    lift_scale s = lh_cli_qlift_scale(mo);
     for (size_t i = 0; i < mo->n; i++) {
         if (!is_vertex(mo, i)) continue;
         if (lifted) {
@@ -142,7 +145,7 @@ static void print_o(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     int lifted = o->prog != LH_QPROG_CONVEX;
     fprintf(f, "%d\n%zu %zu %zu\n", mo->d + lifted, mo->n, mo->m, mo->m * mo->nv / 2);
-    lift_scale s = lift_scale_of(mo);
+    lift_scale s = lh_cli_qlift_scale(mo);
     for (size_t i = 0; i < mo->n; i++) {
         if (lifted) {
             lifted_point(f, mo, s, i);
@@ -213,10 +216,10 @@ static int print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 /* The outward hyperplane n.x + off = 0 of hull facet t, |n| = 1, from the exact
  * cofactors (lh_hyperplane). The model lists a hull facet with its last two vertices
  * exchanged (Qhull's parity), so outward is the opposite of that order's orientation. */
-static void facet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off)
+void lh_cli_qfacet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off)
 {
     const int d = mo->d;
-    const double *p[LH_DELAUNAY_MAX_DIM];
+    const double *p[LH_DELAUNAY_MAX_DIM] = {0};
     for (int k = 0; k < d; k++) p[k] = mo->xyz + (size_t)mo->vert[t * d + k] * d;
     lh_hyperplane(mo->pred, d, p, n, off);
     for (int j = 0; j < d; j++) n[j] = -n[j];
@@ -229,7 +232,7 @@ static void print_planes(FILE *f, const lh_cli_qmodel *mo)
     fprintf(f, "%d\n%zu\n", d + 1, mo->m);
     for (size_t t = 0; t < mo->m; t++) {
         double n[LH_DELAUNAY_MAX_DIM], off;
-        facet_plane(mo, t, n, &off);
+        lh_cli_qfacet_plane(mo, t, n, &off);
         lh_cli_qcoords(f, n, d);
         fprintf(f, "%6.16g \n", off);
     }

@@ -9,6 +9,15 @@ void lh_cli_qcoords(FILE *f, const double *x, int d);
 /* qvoronoi's o, p, Fv, Fi, Fo. Returns 0 when out of memory (message printed). */
 int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
 
+/* qdelaunay's lifted coordinate, |p|^2 scaled to [0, max |coordinate|] as Qhull's
+ * Qbb does: (|p|^2 - low) * factor. */
+typedef struct lh_cli_qlift {
+    double low, factor;
+} lh_cli_qlift;
+lh_cli_qlift lh_cli_qlift_scale(const lh_cli_qmodel *mo);
+double lh_cli_qlifted(const lh_cli_qmodel *mo, lh_cli_qlift s, size_t i);
+/* qconvex's facet t: its outward unit normal n and offset (n.x + off = 0). */
+void lh_cli_qfacet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off);
 /* The sites that are vertices of a printed facet. */
 size_t lh_cli_qvertex_count(const lh_cli_qmodel *mo);
 /* The printed facets' total area and (qconvex) enclosed volume, as FA reports them;

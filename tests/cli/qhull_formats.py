@@ -202,6 +202,73 @@ def extreme(lh):
                       and la[1:] == sorted(la[1:], key=int), "%s vs %s" % (la, qa))
 
 
+# ---- print filters: the printed facets as vertex sets, Fn's structure -------------------
+def neighbours(i_out, fn_out):
+    """facet -> (its printed neighbours as vertex sets, how many unprinted: negative ids)."""
+    fs = facets_i(i_out)
+    rows = fn_out.strip().split("\n")[1:]
+    out = {}
+    for f, row in zip(fs, rows):
+        ids = [int(x) for x in row.split()[1:]]
+        out[f] = (frozenset(fs[j] for j in ids if j >= 0), sum(1 for j in ids if j < 0))
+    return out
+
+
+def filters(lh):
+    for spec, prog, qopts, opts in (
+            ("40 D2 t21", "qconvex", [], ["Pd0", "PD0:0.5", "Pd0d1", "PD1:-0.2d0:0.3", "PA3", "PA3 PG",
+                                          "Pg", "PG", "PA4 Pg"]),
+            ("80 D3 t22", "qconvex", [], ["Pd2", "PD0:-0.3", "Pd0:0.1D1:0.4", "PA5", "PA5 PG"]),
+            ("50 D4 t23", "qconvex", [], ["Pd3:0.2", "PA7 PG"]),
+            ("40 D2 t24", "qdelaunay", ["Qt"], ["Pd0", "PD2:-0.9", "PA5", "PA5 PG", "Pd1:0.1"]),
+            ("60 D3 t25", "qdelaunay", ["Qt"], ["Pd2", "PD3:-0.95", "PA6 PG"])):
+        text = rbox(spec)
+        for opt in opts:
+            o = opt.split()
+            name = "%s %s %s" % (spec, prog, opt)
+            _, li, _ = run([lh, prog] + o + ["i"], text)
+            _, qi, _ = run([prog] + qopts + o + ["i"], text)
+            qset = set(facets_i(qi))
+            if prog == "qdelaunay" and "PG" in o:
+                # Qhull's PG also prints the upper-Delaunay facets beside the good ones;
+                # lifthull prints Delaunay simplices only (docs/lifthull.1)
+                _, full, _ = run([prog] + qopts + ["i"], text)
+                upper = qset - set(facets_i(full))
+                qset -= upper
+                if upper:
+                    check(name + " i (lower facets)", set(facets_i(li)) == qset)
+                    continue
+            check(name + " i", set(facets_i(li)) == qset and len(facets_i(li)) == int(li.split()[0]),
+                  "%d vs %d facets" % (len(facets_i(li)), len(qset)))
+            _, lfn, _ = run([lh, prog] + o + ["Fn"], text)
+            _, qfn, _ = run([prog] + qopts + o + ["Fn"], text)
+            check(name + " Fn", neighbours(li, lfn) == neighbours(qi, qfn))
+            _, lfa, _ = run([lh, prog] + o + ["Fa"], text)
+            _, qfa, _ = run([prog] + qopts + o + ["Fa"], text)
+            lm, qm = dict(zip(facets_i(li), reals(lfa))), dict(zip(facets_i(qi), reals(qfa)))
+            check(name + " Fa", set(lm) == set(qm) and all(close(lm[k], qm[k], 1e-10) for k in lm))
+    # degenerate: the unit cube shifted by 2^30 (site i has x = i & 1): the face x = 1 is
+    # exactly the facets with normal[0] >= 1, two triangles (Qhull: one merged square)
+    off = 2.0 ** 30
+    text = "3 8\n" + "".join("%r %r %r\n" % ((i & 1) + off, (i >> 1 & 1) + off, (i >> 2 & 1) + off)
+                             for i in range(8))
+    _, li, _ = run([lh, "qconvex", "Pd0:1", "i"], text)
+    check("cube + 2^30 Pd0:1", sorted(map(sorted, facets_i(li))) == [[1, 3, 5], [3, 5, 7]]
+          or sorted(map(sorted, facets_i(li))) == [[1, 3, 7], [1, 5, 7]], li)
+    _, qi, _ = run(["qconvex", "Pd0:1", "i"], text)
+    print("note: cube + 2^30 Pd0:1: lifthull %s facets, qconvex %s" % (li.split()[0], qi.split()[0]))
+    r, _, e = run([lh, "qvoronoi", "Pd0", "o"], rbox("10 D2 t1"))
+    check("qvoronoi Pd0 refused", r == 2 and "option 'Pd0' is not supported" in e, e)
+    for bad in ("Pd", "PD0:x", "PA0", "PAx", "Pdd1"):
+        r, _, e = run([lh, "qconvex", bad, "i"], rbox("10 D2 t1"))
+        check("qconvex %s refused" % bad, r == 2 and "option '%s': expected" % bad in e, e)
+    r, _, e = run([lh, "qconvex", "Pd3", "i"], rbox("10 D2 t1"))
+    check("qconvex Pd3 in 2-d refused", r == 2 and "coordinates 0..1" in e, e)
+    for q in ("QG0", "QV3", "QG-1"):
+        r, _, e = run([lh, "qdelaunay", q, "i"], rbox("10 D2 t1"))
+        check(q + " refused", r == 2 and "option '%s' is not supported" % q in e, e)
+
+
 def refusals(lh):
     r, _, e = run([lh, "qvoronoi", "FA"], "2 3\n0 0\n1 0\n0 1\n")
     check("qvoronoi FA refused", r == 2 and "option 'FA' is not supported" in e, e)
@@ -236,6 +303,7 @@ def main():
     guard("summary", summary_streams, lh)
     guard("degenerate", degenerate, lh)
     guard("Fx", extreme, lh)
+    guard("filters", filters, lh)
     guard("refusals", refusals, lh)
     print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
     return 1 if FAILS else 0
