@@ -14,6 +14,11 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
     lh_points pts;
     const char *name;
     if (!lh_cli_load(o.input, LH_FORMAT_AUTO, &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_qcheck_outputs(&o, pts.d)) {
+        lh_points_free(&pts);
+        return LH_EXIT_USAGE;
+    }
+    if (o.show_options) fprintf(stderr, "Options selected for %s\n", o.command);
     lh_cli_qmodel mo;
     if (!lh_cli_qmodel_build(&mo, &o, pts.d, pts.n, pts.xyz, name)) {
         lh_points_free(&pts);

@@ -22,6 +22,8 @@ typedef struct lh_cli_qopts {
     int nout;
     int furthest;             /* Qu                                            */
     int areas;                /* FA or FS: totals in the summary 's'           */
+    int cdd;                  /* FD: cdd's format for n, Fi, Fo, p             */
+    int show_options;         /* FO: the options on standard error             */
     int summary_default;      /* no output asked: 's' on standard output       */
     int verify;               /* Tv: the exact check of the result             */
     struct lh_cli_qpd {       /* Pdk:n (ge: normal[k] >= n), PDk:n (<= n)      */
@@ -81,6 +83,10 @@ lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo);
  * 0 when out of memory, -1 for a coordinate outside the facets' normals (both after
  * printing the problem). */
 int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
+
+/* Whether the outputs asked for suit d-dimensional input (m, FM: 2-d and 3-d
+ * hulls, 2-d Delaunay); 0 after printing the problem (qhull_extra.c). */
+int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d);
 
 /* Prints output option `opt` (one of those lh_cli_qparse accepts for o->prog).
  * Returns 0 when out of memory. */

@@ -8,9 +8,9 @@
 
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
 static const char *const outputs[3] = {
-    "i o p s Fn FN Fv Fx FS Fa Fs",
+    "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM",
     "o p s i Fi Fo Fv Fn FN Fs Fx",
-    "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs",
+    "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM",
 };
 
 /* Qhull options that change nothing here, with why. */
@@ -59,6 +59,7 @@ static void help(const lh_cli_qopts *o)
            "  Qu        furthest-site (upper hull)%s\n"
            "%s"
            "  Tv        check the result exactly and report on standard error\n"
+           "  FO        the options on standard error%s\n"
            "%s"
            "  TI FILE   read the points from FILE      TO FILE  write the output to FILE\n"
            "  Qt QJ Qbb Qz Qc Qx Pp and Qhull's tuning options are accepted; they\n"
@@ -67,6 +68,7 @@ static void help(const lh_cli_qopts *o)
            o->name, o->name, o->name, outputs[o->prog],
            o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "",
            o->prog == LH_QPROG_VORONOI ? "" : "  FA        total area (and volume) in the summary 's'\n",
+           o->prog == LH_QPROG_VORONOI ? "" : "; FD: cdd's format for n, Fi, Fo, p",
            o->prog == LH_QPROG_VORONOI ? "" :
            "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
            "  PAn       print the n largest facets (Pg); PG: their other neighbours\n",
@@ -132,6 +134,8 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
     if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
     if (!strcmp(w, "FA") && o->prog != LH_QPROG_VORONOI) return o->areas = 1;
     if (!strcmp(w, "Tv")) return o->verify = 1;
+    if (!strcmp(w, "FO")) return o->show_options = 1;
+    if (!strcmp(w, "FD") && o->prog != LH_QPROG_VORONOI) return o->cdd = 1;
     int pf = print_filter(o, w);
     if (pf) return pf > 0;
     if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) {

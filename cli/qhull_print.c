@@ -53,7 +53,7 @@ static void lifted_point(FILE *f, const lh_cli_qmodel *mo, lift_scale s, size_t 
     fprintf(f, "%6.16g \n", lh_cli_qlifted(mo, s, i));
 }
 
-static int is_vertex(const lh_cli_qmodel *mo, size_t i)
+int lh_cli_qis_vertex(const lh_cli_qmodel *mo, size_t i)
 {
     for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
         if (mo->inc[k] >= 0) return 1;
@@ -63,7 +63,7 @@ static int is_vertex(const lh_cli_qmodel *mo, size_t i)
 size_t lh_cli_qvertex_count(const lh_cli_qmodel *mo)
 {
     size_t v = 0;
-    for (size_t i = 0; i < mo->n; i++) v += is_vertex(mo, i);
+    for (size_t i = 0; i < mo->n; i++) v += lh_cli_qis_vertex(mo, i);
     return v;
 }
 
@@ -126,12 +126,16 @@ static void print_fN(FILE *f, const lh_cli_qmodel *mo)
 static void print_p(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     size_t count = 0;
-    for (size_t i = 0; i < mo->n; i++) count += is_vertex(mo, i);
+    for (size_t i = 0; i < mo->n; i++) count += lh_cli_qis_vertex(mo, i);
     int lifted = o->prog != LH_QPROG_CONVEX;
-    fprintf(f, "%d\n%zu\n", mo->d + lifted, count);
+    if (o->cdd) /* FD: cdd's format, a 1 before each point */
+        fprintf(f, "%s\nbegin\n%zu %d real\n", o->command, count, mo->d + lifted + 1);
+    else
+        fprintf(f, "%d\n%zu\n", mo->d + lifted, count);
     lift_scale s = lh_cli_qlift_scale(mo);
     for (size_t i = 0; i < mo->n; i++) {
-        if (!is_vertex(mo, i)) continue;
+        if (!lh_cli_qis_vertex(mo, i)) continue;
+        if (o->cdd) fputs("1 ", f);
         if (lifted) {
             lifted_point(f, mo, s, i);
         } else {
@@ -139,6 +143,7 @@ static void print_p(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
             fputc('\n', f);
         }
     }
+    if (o->cdd) fputs("end\n", f);
 }
 
 static void print_o(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
@@ -226,16 +231,25 @@ void lh_cli_qfacet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *o
     *off = -*off;
 }
 
-static void print_planes(FILE *f, const lh_cli_qmodel *mo)
+/* n.x + off <= 0 inside; FD prints cdd's rows b - A x >= 0: -off, then -n. */
+static void print_planes(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     const int d = mo->d;
-    fprintf(f, "%d\n%zu\n", d + 1, mo->m);
+    if (o->cdd) fprintf(f, "%s\nbegin\n    %zu %d real\n", o->command, mo->m, d + 1);
+    else fprintf(f, "%d\n%zu\n", d + 1, mo->m);
     for (size_t t = 0; t < mo->m; t++) {
         double n[LH_DELAUNAY_MAX_DIM], off;
         lh_cli_qfacet_plane(mo, t, n, &off);
-        lh_cli_qcoords(f, n, d);
-        fprintf(f, "%6.16g \n", off);
+        if (o->cdd) {
+            fprintf(f, "%6.16g ", -off);
+            for (int j = 0; j < d; j++) fprintf(f, "%6.16g ", -n[j]);
+        } else {
+            lh_cli_qcoords(f, n, d);
+            fprintf(f, "%6.16g ", off);
+        }
+        fputc('\n', f);
     }
+    if (o->cdd) fputs("end\n", f);
 }
 
 static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
@@ -266,7 +280,8 @@ int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const
     else if (!strcmp(opt, "s")) return print_s(f, o, mo);
     else if (!strcmp(opt, "FS") || !strcmp(opt, "Fa") || !strcmp(opt, "Fs"))
         return lh_cli_qprint_measure(f, o, mo, opt);
-    else if (!strcmp(opt, "n") || !strcmp(opt, "Fi") || !strcmp(opt, "Fo")) print_planes(f, mo);
+    else if (!strcmp(opt, "n") || !strcmp(opt, "Fi") || !strcmp(opt, "Fo")) print_planes(f, o, mo);
     else if (!strcmp(opt, "FC")) print_centrums(f, mo);
+    else return lh_cli_qprint_extra(f, o, mo, opt);
     return 1;
 }

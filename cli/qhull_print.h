@@ -18,12 +18,16 @@ lh_cli_qlift lh_cli_qlift_scale(const lh_cli_qmodel *mo);
 double lh_cli_qlifted(const lh_cli_qmodel *mo, lh_cli_qlift s, size_t i);
 /* qconvex's facet t: its outward unit normal n and offset (n.x + off = 0). */
 void lh_cli_qfacet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off);
-/* The sites that are vertices of a printed facet. */
+/* Whether site i is a vertex of a printed facet; how many are. */
+int lh_cli_qis_vertex(const lh_cli_qmodel *mo, size_t i);
 size_t lh_cli_qvertex_count(const lh_cli_qmodel *mo);
 /* The printed facets' total area and (qconvex) enclosed volume, as FA reports them;
  * 0 when out of memory. */
 int lh_cli_qtotals(const lh_cli_qmodel *mo, double *area, double *volume);
 /* FS, Fa, Fs (qhull_measure.c). Returns 0 when out of memory. */
 int lh_cli_qprint_measure(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
+
+/* FI, Fm, FQ, Fc, FP, m, FM (qhull_extra.c). Returns 0 when out of memory. */
+int lh_cli_qprint_extra(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
 
 #endif

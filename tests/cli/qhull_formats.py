@@ -269,6 +269,124 @@ def filters(lh):
         check(q + " refused", r == 2 and "option '%s' is not supported" % q in e, e)
 
 
+# ---- FI Fm FQ FO FD Fc FP m FM ----------------------------------------------------------
+def cdd_rows(out):
+    lines = out.split("\n")
+    b, e = lines.index("begin"), lines.index("end")
+    head = lines[b + 1].split()
+    rows = [tuple(float(x) for x in l.split()) for l in lines[b + 2:e]]
+    return (int(head[0]), int(head[1]), head[2]), rows
+
+
+def same_rows(a, b, tol=1e-12):
+    """Rows of numbers equal as multisets within tol (greedy match after sorting)."""
+    if len(a) != len(b):
+        return False
+    left = sorted(b)
+    for r in sorted(a):
+        j = next((j for j, q in enumerate(left) if all(abs(x - y) <= tol for x, y in zip(r, q))), None)
+        if j is None:
+            return False
+        left.pop(j)
+    return True
+
+
+def polygons(out):
+    """m / FM output as polygons: tuples of points (rounded text -> floats)."""
+    body = out.replace("-0.00000000", "0.00000000")
+    polys = []
+    for chunk in re.split(r"Line|Polygon|\]\],?\s*\n?,?\[\[", body):
+        nums = [float(x) for x in re.findall(r"-?\d+\.\d+", chunk)]
+        if nums:
+            polys.append(nums)
+    return polys
+
+
+def canon_cycle(pts):
+    """A polygon up to rotation of its vertex cycle (orientation kept)."""
+    rots = [tuple(pts[i:] + pts[:i]) for i in range(len(pts))]
+    return min(rots)
+
+
+def pictures(lh, text, prog, opt, dim):
+    _, a, _ = run([lh, prog, opt], text)
+    _, b, _ = run([prog, opt], text)
+    def shape(out):
+        res = []
+        for nums in polygons(out):
+            pts = [tuple(nums[i:i + dim]) for i in range(0, len(nums), dim)]
+            res.append(canon_cycle(pts) if len(pts) > 2 else tuple(sorted(pts)))
+        return sorted(res)
+    return shape(a), shape(b), a, b
+
+
+def extras(lh):
+    for spec, prog, qopts in (("30 D2 t31", "qconvex", []), ("60 D3 t32", "qconvex", []),
+                              ("40 D4 t33", "qconvex", []), ("30 D2 t34", "qdelaunay", ["Qt"])):
+        text = rbox(spec)
+        name = "%s %s" % (spec, prog)
+        _, a, _ = run([lh, prog, "FI"], text)
+        _, b, _ = run([prog] + qopts + ["FI"], text)
+        ids = a.split()[1:]
+        check(name + " FI", a.split()[0] == b.split()[0] and len(set(ids)) == len(ids) == int(a.split()[0]))
+        _, a, _ = run([lh, prog, "Fm"], text)
+        _, b, _ = run([prog] + qopts + ["Fm"], text)
+        check(name + " Fm", a == b, a[:60] + " / " + b[:60])
+        _, a, _ = run([lh, prog, "FQ", "i"], text)
+        check(name + " FQ", a.split("\n")[0] == "lifthull %s FQ i" % prog, a[:60])
+        r, a, e = run([lh, prog, "FO", "i"], text)
+        check(name + " FO", "Options selected for lifthull %s FO i" % prog in e and a.split()[0] == b.split()[0], e)
+        _, a, _ = run([lh, prog, "FD", "p"], text)
+        _, b, _ = run([prog] + qopts + ["FD", "p"], text)
+        (ha, ra), (hb, rb) = cdd_rows(a), cdd_rows(b)
+        check(name + " FD p", ha == hb and same_rows(ra, rb, 1e-9), "%s %s" % (ha, hb))
+        if prog == "qconvex":
+            for o in ("n", "Fo", "Fi"):
+                _, a, _ = run([lh, prog, "FD", o], text)
+                _, b, _ = run([prog, "FD", o], text)
+                (ha, ra), (hb, rb) = cdd_rows(a), cdd_rows(b)
+                check(name + " FD " + o, ha == hb and same_rows(ra, rb, 1e-9), "%s %s" % (ha, hb))
+        d = int(spec.split()[1][1:])
+        if (prog == "qconvex" and d <= 3) or (prog == "qdelaunay" and d == 2):
+            for o in ("m", "FM"):
+                la, qa, ta, tb = pictures(lh, text, prog, o, d + (prog == "qdelaunay"))
+                check(name + " " + o, la == qa and len(la) > 0, "%d vs %d polygons" % (len(la), len(qa)))
+                check(name + " " + o + " frame", ta.split("\n")[0] == tb.split("\n")[0]
+                      and ta.rstrip().split("\n")[-1][-4:] == tb.rstrip().split("\n")[-1][-4:], ta[-30:] + tb[-30:])
+        else:
+            r, _, e = run([lh, prog, "m"], text)
+            check(name + " m refused", r == 2 and "Mathematica and Maple output are for" in e, e)
+    # coplanar points: the cube with sites on its faces (Qhull: merged square facets)
+    cube = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+    extra = [(0.1, 0.2, 0), (0.7, 1, 0.4), (1, 0.3, 0.9), (0.5, 0.5, 0.5)]
+    text = "3 %d\n" % (len(cube) + len(extra)) + "".join("%r %r %r\n" % p for p in cube + extra)
+    def fc_points(out):
+        return sorted(int(x) for l in out.strip().split("\n")[1:] for x in l.split()[1:])
+    # a site inside a face may be one of lifthull's hull vertices (lh_convex_hull): then
+    # it is no coplanar point
+    _, fx, _ = run([lh, "qconvex", "Fx"], text)
+    verts = set(int(x) for x in fx.split()[1:])
+    _, a, _ = run([lh, "qconvex", "Fc"], text)
+    _, b, _ = run(["qconvex", "Fc"], text)
+    check("cube Fc points", fc_points(a) == [p for p in fc_points(b) if p not in verts]
+          and fc_points(b) == [8, 9, 10], a + b)
+    def fp_rows(out):
+        return sorted((int(l.split()[1]), int(l.split()[0]), round(float(l.split()[3]), 12))
+                      for l in out.strip().split("\n")[1:])
+    _, a, _ = run([lh, "qconvex", "FP"], text)
+    _, b, _ = run(["qconvex", "FP"], text)
+    check("cube FP", fp_rows(a) == [r for r in fp_rows(b) if r[0] not in verts], a + b)
+    # qdelaunay: a duplicate site is the coplanar point of the site it repeats
+    text = rbox("20 D2 t35")
+    lines = text.split("\n")
+    text = "2 21\n" + "\n".join(lines[2:22]) + "\n" + lines[5] + "\n"
+    _, a, _ = run([lh, "qdelaunay", "Fc"], text)
+    check("qdelaunay duplicate Fc", fc_points(a) == [20], a)
+    _, a, _ = run([lh, "qdelaunay", "FP"], text)
+    _, b, _ = run(["qdelaunay", "FP"], text)
+    check("qdelaunay duplicate FP", fp_rows(a) == fp_rows(b) == [(20, 3, 0.0)], a + b)
+
+
 def refusals(lh):
     r, _, e = run([lh, "qvoronoi", "FA"], "2 3\n0 0\n1 0\n0 1\n")
     check("qvoronoi FA refused", r == 2 and "option 'FA' is not supported" in e, e)
@@ -304,6 +422,7 @@ def main():
     guard("degenerate", degenerate, lh)
     guard("Fx", extreme, lh)
     guard("filters", filters, lh)
+    guard("extras", extras, lh)
     guard("refusals", refusals, lh)
     print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
     return 1 if FAILS else 0
