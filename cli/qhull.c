@@ -39,6 +39,7 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
         ok = lh_cli_qprint(f, &o, &mo, o.out[i]);
         if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", o.name);
     }
+    if (ok && o.stats) lh_cli_qstats(stderr, &o, &mo);
     int status = out.f ? lh_cli_out_close(&out, o.name, ok) : LH_EXIT_FAIL;
     lh_cli_qmodel_free(&mo);
     lh_points_free(&pts);

@@ -24,6 +24,7 @@ typedef struct lh_cli_qopts {
     int areas;                /* FA or FS: totals in the summary 's'           */
     int cdd;                  /* FD: cdd's format for n, Fi, Fo, p             */
     int show_options;         /* FO: the options on standard error             */
+    int stats;                /* Ts: statistics on standard error              */
     int summary_default;      /* no output asked: 's' on standard output       */
     int verify;               /* Tv: the exact check of the result             */
     struct lh_cli_qpd {       /* Pdk:n (ge: normal[k] >= n), PDk:n (<= n)      */
@@ -87,6 +88,9 @@ int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
 /* Whether the outputs asked for suit d-dimensional input (m, FM: 2-d and 3-d
  * hulls, 2-d Delaunay); 0 after printing the problem (qhull_extra.c). */
 int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d);
+
+/* Ts: the computation's statistics (qhull_stats.c). */
+void lh_cli_qstats(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo);
 
 /* Prints output option `opt` (one of those lh_cli_qparse accepts for o->prog).
  * Returns 0 when out of memory. */

@@ -58,7 +58,8 @@ static void help(const lh_cli_qopts *o)
            "other options:\n"
            "  Qu        furthest-site (upper hull)%s\n"
            "%s"
-           "  Tv        check the result exactly and report on standard error\n"
+           "  Tv, Tc    check the result exactly and report on standard error\n"
+           "  Ts        statistics on standard error (sizes, time, predicate stages)\n"
            "  FO        the options on standard error%s\n"
            "%s"
            "  TI FILE   read the points from FILE      TO FILE  write the output to FILE\n"
@@ -135,6 +136,12 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
     if (!strcmp(w, "FA") && o->prog != LH_QPROG_VORONOI) return o->areas = 1;
     if (!strcmp(w, "Tv")) return o->verify = 1;
     if (!strcmp(w, "FO")) return o->show_options = 1;
+    if (!strcmp(w, "Ts")) return o->stats = 1;
+    if (!strcmp(w, "Tc")) {
+        fprintf(stderr, "lifthull %s: option 'Tc': every step is exact; the result is checked "
+                "once, exactly, as with 'Tv'\n", o->name);
+        return o->verify = 1;
+    }
     if (!strcmp(w, "FD") && o->prog != LH_QPROG_VORONOI) return o->cdd = 1;
     int pf = print_filter(o, w);
     if (pf) return pf > 0;

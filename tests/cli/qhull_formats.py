@@ -387,6 +387,20 @@ def extras(lh):
     check("qdelaunay duplicate FP", fp_rows(a) == fp_rows(b) == [(20, 3, 0.0)], a + b)
 
 
+def trace(lh):
+    text = rbox("200 D3 t41")
+    for prog in ("qdelaunay", "qconvex", "qvoronoi"):
+        _, plain, _ = run([lh, prog, "i" if prog != "qvoronoi" else "o"], text)
+        r, a, e = run([lh, prog, "Ts", "i" if prog != "qvoronoi" else "o"], text)
+        check(prog + " Ts", r == 0 and a == plain and "lifthull statistics: lifthull %s Ts" % prog in e
+              and re.search(r"^ +200 input sites in 3-d$", e, re.M), e[:200])
+    r, a, e = run([lh, "qdelaunay", "Tc", "i"], text)
+    check("qdelaunay Tc", r == 0 and "the exact check passed" in e and "option 'Tc'" in e, e)
+    r, _, e = run([lh, "qdelaunay", "Ts", "i"], text)
+    calls = re.search(r"^ +(\d+) predicate calls$", e, re.M)
+    check("qdelaunay Ts counts predicate calls", calls and int(calls.group(1)) > 200, e[-400:])
+
+
 def refusals(lh):
     r, _, e = run([lh, "qvoronoi", "FA"], "2 3\n0 0\n1 0\n0 1\n")
     check("qvoronoi FA refused", r == 2 and "option 'FA' is not supported" in e, e)
@@ -423,6 +437,7 @@ def main():
     guard("Fx", extreme, lh)
     guard("filters", filters, lh)
     guard("extras", extras, lh)
+    guard("trace", trace, lh)
     guard("refusals", refusals, lh)
     print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
     return 1 if FAILS else 0
