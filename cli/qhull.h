@@ -85,7 +85,7 @@ lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo);
  * printing the problem). */
 int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
 
-/* Whether the outputs asked for suit d-dimensional input (m, FM: 2-d and 3-d
+/* Whether the outputs asked for suit d-dimensional input (m, FM, G: 2-d and 3-d
  * hulls, 2-d Delaunay); 0 after printing the problem (qhull_extra.c). */
 int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d);
 

@@ -138,6 +138,7 @@ int lh_cli_qprint_extra(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo,
     if (!strcmp(opt, "FI") || !strcmp(opt, "Fm")) print_ids(f, mo, opt[1] == 'm');
     else if (!strcmp(opt, "FQ")) fprintf(f, "%s\n", o->command);
     else if (!strcmp(opt, "Fc") || !strcmp(opt, "FP")) return print_coplanar(f, o, mo, opt[1] == 'P');
+    else if (!strcmp(opt, "G")) return lh_cli_qprint_geomview(f, o, mo);
     else print_picture(f, o, mo, opt[1] == 'M');
     return 1;
 }
@@ -146,11 +147,11 @@ int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d)
 {
     for (int i = 0; i < o->nout; i++) {
         const char *w = o->out[i];
-        if ((strcmp(w, "m") && strcmp(w, "FM")) ||
+        if ((strcmp(w, "m") && strcmp(w, "FM") && strcmp(w, "G")) ||
             (o->prog == LH_QPROG_CONVEX ? d == 2 || d == 3 : d == 2))
             continue;
-        fprintf(stderr, "lifthull %s: option '%s': Mathematica and Maple output are for 2-d and "
-                "3-d convex hulls and 2-d Delaunay triangulations (here %d-d)\n", o->name, w, d);
+        fprintf(stderr, "lifthull %s: option '%s': Mathematica, Maple and Geomview output are for "
+                "2-d and 3-d convex hulls and 2-d Delaunay triangulations (here %d-d)\n", o->name, w, d);
         return 0;
     }
     return 1;

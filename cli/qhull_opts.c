@@ -8,9 +8,9 @@
 
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
 static const char *const outputs[3] = {
-    "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM",
+    "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM G",
     "o p s i Fi Fo Fv Fn FN Fs Fx",
-    "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM",
+    "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM G",
 };
 
 /* Qhull options that change nothing here, with why. */

@@ -15,30 +15,29 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Facet t's unit normal: qconvex's outward one; qdelaunay's lifted one, pointing
- * down for a lower facet (up with Qu). 0 when the lifted dimension is too high. */
-static int facet_normal(const lh_cli_qmodel *mo, const lh_cli_qopts *o, lh_cli_qlift s,
-                        size_t t, double *n)
+void lh_cli_qlifted_normal(const lh_cli_qmodel *mo, lh_cli_qlift s, const lh_index *v, int up,
+                           double *n)
 {
-    double off;
-    if (o->prog == LH_QPROG_CONVEX) {
-        lh_cli_qfacet_plane(mo, t, n, &off);
-        return 1;
-    }
     const int d = mo->d;
-    double x[LH_DELAUNAY_MAX_DIM + 1][LH_DELAUNAY_MAX_DIM + 1];
+    double x[LH_DELAUNAY_MAX_DIM + 1][LH_DELAUNAY_MAX_DIM + 1], off;
     const double *p[LH_DELAUNAY_MAX_DIM + 1] = {0};
     for (int k = 0; k <= d; k++) {
-        size_t i = (size_t)mo->vert[t * mo->nv + k];
+        size_t i = (size_t)v[k];
         memcpy(x[k], mo->xyz + i * d, d * sizeof(double));
         x[k][d] = lh_cli_qlifted(mo, s, i);
         p[k] = x[k];
     }
-    lh_pred *pred = mo->pred;
-    lh_hyperplane(pred, d + 1, p, n, &off);
-    if ((n[d] > 0) != o->furthest)
+    lh_hyperplane(mo->pred, d + 1, p, n, &off);
+    if ((n[d] > 0) != up)
         for (int j = 0; j <= d; j++) n[j] = -n[j];
-    return 1;
+}
+
+void lh_cli_qfacet_normal(const lh_cli_qmodel *mo, const lh_cli_qopts *o, lh_cli_qlift s,
+                          size_t t, double *n)
+{
+    double off;
+    if (o->prog == LH_QPROG_CONVEX) lh_cli_qfacet_plane(mo, t, n, &off);
+    else lh_cli_qlifted_normal(mo, s, mo->vert + t * mo->nv, o->furthest, n);
 }
 
 /* keep[t] &= every Pdk / PDk condition. */
@@ -59,7 +58,7 @@ static int normal_filters(const lh_cli_qmodel *mo, const lh_cli_qopts *o, char *
     lh_cli_qlift s = o->prog == LH_QPROG_CONVEX ? (lh_cli_qlift){0, 1} : lh_cli_qlift_scale(mo);
     for (size_t t = 0; t < mo->m && o->npd; t++) {
         double n[LH_DELAUNAY_MAX_DIM + 1];
-        facet_normal(mo, o, s, t, n);
+        lh_cli_qfacet_normal(mo, o, s, t, n);
         for (int i = 0; i < o->npd; i++) {
             double c = n[o->pd[i].k];
             if (o->pd[i].ge ? !(c >= o->pd[i].at) : !(c <= o->pd[i].at)) keep[t] = 0;

@@ -355,7 +355,7 @@ def extras(lh):
                       and ta.rstrip().split("\n")[-1][-4:] == tb.rstrip().split("\n")[-1][-4:], ta[-30:] + tb[-30:])
         else:
             r, _, e = run([lh, prog, "m"], text)
-            check(name + " m refused", r == 2 and "Mathematica and Maple output are for" in e, e)
+            check(name + " m refused", r == 2 and "Mathematica, Maple and Geomview output are for" in e, e)
     # coplanar points: the cube with sites on its faces (Qhull: merged square facets)
     cube = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
     extra = [(0.1, 0.2, 0), (0.7, 1, 0.4), (1, 0.3, 0.9), (0.5, 0.5, 0.5)]
@@ -385,6 +385,52 @@ def extras(lh):
     _, a, _ = run([lh, "qdelaunay", "FP"], text)
     _, b, _ = run(["qdelaunay", "FP"], text)
     check("qdelaunay duplicate FP", fp_rows(a) == fp_rows(b) == [(20, 3, 0.0)], a + b)
+
+
+def geom_facets(out):
+    """G output: per facet (its vertex cycle, its colour), numbers as floats."""
+    res = []
+    for block in re.split(r"\{ OFF 3 1 1 # f\d+\n|VECT 1 2 1 2 1 # f\d+\n", out)[1:]:
+        lines = [l for l in block.split("\n") if l.strip() and l.strip() != "}"]
+        if lines[-1].startswith("3 0 1 2"):
+            pts = [tuple(float(x) for x in l.split()) for l in lines[:-1]]
+            col = tuple(float(x) for x in lines[-1].split()[4:7])
+        else:
+            pts = [tuple(float(x) for x in l.split()) for l in lines[:-1]]
+            col = tuple(float(x) for x in lines[-1].split()[:3])
+        res.append((pts, col))
+    return res
+
+
+def same_geom(a, b, tol=2e-3):
+    def near(p, q):
+        return all(abs(x - y) <= tol for x, y in zip(p, q))
+    def cyc_eq(p, q):
+        return len(p) == len(q) and any(all(near(p[(i + k) % len(p)], q[k]) for k in range(len(q)))
+                                        for i in range(len(p)))
+    left = list(b)
+    for pts, col in a:
+        j = next((j for j, (q, c) in enumerate(left)
+                  if (cyc_eq(pts, q) or (len(pts) == 2 and cyc_eq(pts[::-1], q))) and near(col, c)), None)
+        if j is None:
+            return False
+        left.pop(j)
+    return not left
+
+
+def geomview(lh):
+    for spec, prog in (("30 D2 t51", "qconvex"), ("60 D3 t52", "qconvex"), ("40 D2 t53", "qdelaunay")):
+        text = rbox(spec)
+        _, a, _ = run([lh, prog, "G"], text)
+        _, b, _ = run([prog] + (["Qt"] if prog == "qdelaunay" else []) + ["G"], text)
+        check("%s %s G" % (spec, prog), same_geom(geom_facets(a), geom_facets(b)) and len(geom_facets(a)) > 0,
+              "%d vs %d facets" % (len(geom_facets(a)), len(geom_facets(b))))
+        check("%s %s G frame" % (spec, prog), a.split(" LIST")[0] == b.split(" LIST")[0] and a.endswith("}\n}\n" if "D3" in spec or prog == "qdelaunay" else "1.0\n}\n"),
+              a[:60] + " / " + b[:60])
+    r, _, e = run([lh, "qconvex", "G"], rbox("10 D4 t1"))
+    check("qconvex G in 4-d refused", r == 2 and "Geomview output are for" in e, e)
+    r, _, e = run([lh, "qconvex", "Gv"], rbox("10 D3 t1"))
+    check("qconvex Gv refused", r == 2 and "option 'Gv' is not supported" in e, e)
 
 
 def trace(lh):
@@ -438,6 +484,7 @@ def main():
     guard("filters", filters, lh)
     guard("extras", extras, lh)
     guard("trace", trace, lh)
+    guard("geomview", geomview, lh)
     guard("refusals", refusals, lh)
     print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
     return 1 if FAILS else 0
