@@ -11,13 +11,13 @@
 
 #include <stdio.h>
 
-typedef enum { LH_QPROG_DELAUNAY, LH_QPROG_VORONOI, LH_QPROG_CONVEX } lh_cli_qprog;
+typedef enum { LH_QPROG_DELAUNAY, LH_QPROG_VORONOI, LH_QPROG_CONVEX, LH_QPROG_HALF } lh_cli_qprog;
 
 enum { LH_QOUT_MAX = 32 };
 
 typedef struct lh_cli_qopts {
     lh_cli_qprog prog;
-    const char *name;         /* "qdelaunay", "qvoronoi", "qconvex"            */
+    const char *name;         /* "qdelaunay", "qvoronoi", "qconvex", "qhalf"   */
     char out[LH_QOUT_MAX][4]; /* output options in the order given ("i", "Fn") */
     int nout;
     int furthest;             /* Qu                                            */
@@ -25,6 +25,8 @@ typedef struct lh_cli_qopts {
     int cdd;                  /* FD: cdd's format for n, Fi, Fo, p             */
     int show_options;         /* FO: the options on standard error             */
     int stats;                /* Ts: statistics on standard error              */
+    double interior[LH_DELAUNAY_MAX_DIM]; /* qhalf's Hn,n,...                  */
+    int ninterior;
     int summary_default;      /* no output asked: 's' on standard output       */
     int verify;               /* Tv: the exact check of the result             */
     struct lh_cli_qpd {       /* Pdk:n (ge: normal[k] >= n), PDk:n (<= n)      */

@@ -3,14 +3,16 @@
 #include "qhull.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
-static const char *const outputs[3] = {
+static const char *const outputs[4] = {
     "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM G",
     "o p s i Fi Fo Fv Fn FN Fs Fx",
     "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM G",
+    "s i Fp Fx Fv",
 };
 
 /* Qhull options that change nothing here, with why. */
@@ -47,8 +49,32 @@ static int is_output(lh_cli_qprog prog, const char *w)
     return 0;
 }
 
+static void help_half(void)
+{
+    printf("usage: lifthull qhalf [OPTIONS] < HALFSPACES\n"
+           "       lifthull qhalf [OPTIONS] TI FILE [TO FILE]\n\n"
+           "Qhull's qhalf: the intersection of halfspaces a.x + b <= 0, given as Qhull's\n"
+           "input (d+1, count, then a_1 .. a_d b per line; qconvex n writes them), about\n"
+           "an interior point: option Hn,n,... (missing coordinates 0) or the input's\n"
+           "first lines 'd 1' and the point. The dual points a / -(a.c + b) are rounded\n"
+           "once; their convex hull is exact.\n\n"
+           "outputs, printed in the order given:  %s\n"
+           "  s   summary (none asked: on standard output; asked: on standard error)\n"
+           "  i   the halfspaces through each intersection point (Fv: with counts)\n"
+           "  Fp  the intersection points      Fx  the non-redundant halfspaces\n"
+           "other options:\n"
+           "  Hn,n,...  the interior point      FO  the options on standard error\n"
+           "  TI FILE   read from FILE          TO FILE  write the output to FILE\n\n"
+           "e.g.  rbox c D3 | qconvex n | lifthull qhalf H0 Fp\n",
+           outputs[LH_QPROG_HALF]);
+}
+
 static void help(const lh_cli_qopts *o)
 {
+    if (o->prog == LH_QPROG_HALF) {
+        help_half();
+        return;
+    }
     printf("usage: lifthull %s [OPTIONS] < POINTS\n"
            "       lifthull %s [OPTIONS] TI FILE [TO FILE]\n\n"
            "Qhull's %s, exact: the same options and output formats, every facet a\n"
@@ -82,7 +108,7 @@ static void help(const lh_cli_qopts *o)
 static int print_filter(lh_cli_qopts *o, const char *w)
 {
     if (w[0] != 'P' || !strchr("dDAgG", w[1]) || !w[1]) return 0;
-    if (o->prog == LH_QPROG_VORONOI) {
+    if (o->prog != LH_QPROG_CONVEX && o->prog != LH_QPROG_DELAUNAY) {
         fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex and "
                 "qdelaunay)\n", o->name, w);
         return -1;
@@ -119,6 +145,28 @@ bad:
     return -1;
 }
 
+/* qhalf's Hn,n,...: the interior point (missing coordinates 0; "H" alone: the
+ * origin). */
+static int interior(lh_cli_qopts *o, const char *w)
+{
+    o->ninterior = 1;
+    o->interior[0] = 0;
+    if (!w[1]) return 1;
+    o->ninterior = 0;
+    for (const char *s = w + 1;;) {
+        char *end;
+        double v = strtod(s, &end);
+        if (end == s || !isfinite(v) || (*end && *end != ',') || o->ninterior == LH_DELAUNAY_MAX_DIM) {
+            fprintf(stderr, "lifthull %s: option '%s': expected Hn,n,... (at most %d coordinates "
+                    "of the interior point)\n", o->name, w, LH_DELAUNAY_MAX_DIM);
+            return 0;
+        }
+        o->interior[o->ninterior++] = v;
+        if (!*end) return 1;
+        s = end + 1;
+    }
+}
+
 /* One option word; 0 after printing a usage error. `next` is the following word,
  * consumed (*used = 1) by TI and TO. */
 static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
@@ -132,24 +180,6 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
         strcpy(o->out[o->nout++], w);
         return 1;
     }
-    if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
-    if (!strcmp(w, "FA") && o->prog != LH_QPROG_VORONOI) return o->areas = 1;
-    if (!strcmp(w, "Tv")) return o->verify = 1;
-    if (!strcmp(w, "FO")) return o->show_options = 1;
-    if (!strcmp(w, "Ts")) return o->stats = 1;
-    if (!strcmp(w, "Tc")) {
-        fprintf(stderr, "lifthull %s: option 'Tc': every step is exact; the result is checked "
-                "once, exactly, as with 'Tv'\n", o->name);
-        return o->verify = 1;
-    }
-    if (!strcmp(w, "FD") && o->prog != LH_QPROG_VORONOI) return o->cdd = 1;
-    int pf = print_filter(o, w);
-    if (pf) return pf > 0;
-    if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) {
-        fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
-                "QGn, QVn)\n", o->name, w);
-        return 0;
-    }
     if (!strcmp(w, "TI") || !strcmp(w, "TO")) {
         if (!next) {
             fprintf(stderr, "lifthull %s: option '%s' needs a file name\n", o->name, w);
@@ -157,6 +187,28 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
         }
         *(w[1] == 'I' ? &o->input : &o->output) = next;
         return *used = 1;
+    }
+    const int facets = o->prog == LH_QPROG_CONVEX || o->prog == LH_QPROG_DELAUNAY;
+    const int half = o->prog == LH_QPROG_HALF;
+    if (!strcmp(w, "FO")) return o->show_options = 1;
+    if (half && w[0] == 'H') return interior(o, w);
+    if (half) goto unknown;
+    if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
+    if (!strcmp(w, "FA") && facets) return o->areas = 1;
+    if (!strcmp(w, "Tv")) return o->verify = 1;
+    if (!strcmp(w, "Ts")) return o->stats = 1;
+    if (!strcmp(w, "Tc")) {
+        fprintf(stderr, "lifthull %s: option 'Tc': every step is exact; the result is checked "
+                "once, exactly, as with 'Tv'\n", o->name);
+        return o->verify = 1;
+    }
+    if (!strcmp(w, "FD") && facets) return o->cdd = 1;
+    int pf = print_filter(o, w);
+    if (pf) return pf > 0;
+    if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
+                "QGn, QVn)\n", o->name, w);
+        return 0;
     }
     for (size_t i = 0; i < sizeof noops / sizeof noops[0]; i++) {
         const noop *p = &noops[i];
@@ -168,14 +220,16 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
         if (p->why) fprintf(stderr, "lifthull %s: option '%s' ignored: %s\n", o->name, w, p->why);
         return 1;
     }
-    fprintf(stderr, "lifthull %s: option '%s' is not supported (outputs: %s; also Qu, Tv, TI, TO; "
-            "lifthull %s --help)\n", o->name, w, outputs[o->prog], o->name);
+unknown:
+    fprintf(stderr, "lifthull %s: option '%s' is not supported (outputs: %s; %s, TI, TO; "
+            "lifthull %s --help)\n", o->name, w, outputs[o->prog],
+            o->prog == LH_QPROG_HALF ? "also H" : "also Qu, Tv", o->name);
     return 0;
 }
 
 int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv)
 {
-    static const char *const names[3] = {"qdelaunay", "qvoronoi", "qconvex"};
+    static const char *const names[4] = {"qdelaunay", "qvoronoi", "qconvex", "qhalf"};
     memset(o, 0, sizeof *o);
     o->prog = prog;
     o->name = names[prog];
