@@ -139,6 +139,7 @@ int lh_cli_qprint_extra(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo,
     else if (!strcmp(opt, "FQ")) fprintf(f, "%s\n", o->command);
     else if (!strcmp(opt, "Fc") || !strcmp(opt, "FP")) return print_coplanar(f, o, mo, opt[1] == 'P');
     else if (!strcmp(opt, "G")) return lh_cli_qprint_geomview(f, o, mo);
+    else if (!strcmp(opt, "f") || !strcmp(opt, "FF")) lh_cli_qprint_fields(f, o, mo);
     else print_picture(f, o, mo, opt[1] == 'M');
     return 1;
 }

@@ -9,9 +9,9 @@
 
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
 static const char *const outputs[4] = {
-    "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM G",
+    "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
     "o p s i Fi Fo Fv Fn FN Fs Fx",
-    "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM G",
+    "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
     "s i Fp Fx Fv",
 };
 

@@ -38,6 +38,8 @@ int lh_cli_qprint_measure(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *m
 /* FI, Fm, FQ, Fc, FP, m, FM (qhull_extra.c); G (qhull_geom.c). Return 0 when out
  * of memory. */
 int lh_cli_qprint_geomview(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo);
+/* f and FF (qhull_fields.c). */
+void lh_cli_qprint_fields(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo);
 int lh_cli_qprint_extra(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
 
 #endif

@@ -491,6 +491,52 @@ def halfspace(lh):
         check("qhalf %s refused (%s)" % (" ".join(h), msg), r != 0 and msg in e, e)
 
 
+def fields(out):
+    """f output: vertices {p: coords}, facets {vertex set: (normal, offset, neighbour ids)}
+    and facet id -> vertex set."""
+    verts, facets, ids, cur = {}, {}, {}, None
+    for l in out.split("\n"):
+        m = re.match(r"- p(\d+)\(v\d+\):(.*)", l)
+        if m:
+            verts[int(m.group(1))] = tuple(float(x) for x in m.group(2).split())
+        elif re.match(r"- f\d+$", l):
+            cur = {"id": l[2:]}
+        elif cur is not None and "- normal:" in l:
+            cur["normal"] = tuple(float(x) for x in l.split(":")[1].split())
+        elif cur is not None and "- offset:" in l:
+            cur["offset"] = float(l.split(":")[1])
+        elif cur is not None and "- vertices:" in l:
+            cur["vertices"] = frozenset(int(x) for x in re.findall(r"p(\d+)\(", l))
+        elif cur is not None and "- neighboring facets:" in l:
+            cur["nbrs"] = l.split(":")[1].split()
+            facets[cur["vertices"]] = cur
+            ids[cur["id"]] = cur["vertices"]
+    return verts, facets, ids
+
+
+def nbr_sets(ids, facet):
+    """A facet's neighbours as sorted vertex tuples; () for an unprinted (upper) one."""
+    return sorted(tuple(sorted(ids.get(x, ()))) for x in facet["nbrs"])
+
+
+def all_fields(lh):
+    for spec, prog, qopts in (("20 D2 t71", "qconvex", []), ("30 D3 t72", "qconvex", []),
+                              ("20 D4 t73", "qconvex", []), ("25 D2 t74", "qdelaunay", ["Qt"])):
+        text = rbox(spec)
+        for opt in ("f", "FF"):
+            _, a, _ = run([lh, prog, opt], text)
+            _, b, _ = run([prog] + qopts + [opt], text)
+            (va, fa, ia), (vb, fb, ib) = fields(a), fields(b)
+            name = "%s %s %s" % (spec, prog, opt)
+            check(name + " vertices", va == vb, "%s / %s" % (sorted(va)[:4], sorted(vb)[:4]))
+            check(name + " facets", set(fa) == set(fb), "%d vs %d" % (len(fa), len(fb)))
+            bad = [k for k in fa if k in fb and not (
+                all(abs(x - y) <= 2e-4 for x, y in zip(fa[k]["normal"], fb[k]["normal"]))
+                and abs(fa[k]["offset"] - fb[k]["offset"]) <= 1e-7 * max(1, abs(fb[k]["offset"]))
+                and nbr_sets(ia, fa[k]) == nbr_sets(ib, fb[k]))]
+            check(name + " normals, offsets, neighbours", not bad, str(bad[:1]))
+
+
 def trace(lh):
     text = rbox("200 D3 t41")
     for prog in ("qdelaunay", "qconvex", "qvoronoi"):
@@ -544,6 +590,7 @@ def main():
     guard("trace", trace, lh)
     guard("geomview", geomview, lh)
     guard("qhalf", halfspace, lh)
+    guard("f", all_fields, lh)
     guard("refusals", refusals, lh)
     print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
     return 1 if FAILS else 0
