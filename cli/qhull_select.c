@@ -126,7 +126,7 @@ static int regroup(lh_cli_qmodel *mo, const char *keep)
         free(id), free(vert), free(nbr), free(other);
         return 0;
     }
-    memcpy(other, mo->other, mo->m_other * nv * sizeof *other);
+    if (mo->m_other) memcpy(other, mo->other, mo->m_other * nv * sizeof *other);
     for (size_t t = 0, a = 0, b = mo->m_other; t < mo->m; t++) {
         lh_index *to = keep[t] ? vert + a * nv : other + b * nv;
         memcpy(to, mo->vert + t * nv, nv * sizeof *to);
