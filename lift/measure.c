@@ -50,7 +50,7 @@ static double simplex_measure(lh_pred *ctx, int d, int k, const double *const *p
         double x = v[i] != 0 ? ldexp(v[i], e[i] - emax) : 0;
         sum += x * x;
     }
-    return ldexp(sqrt(sum), emax) / factorial(k);
+    return ldexp(sqrt(sum) / factorial(k), emax); /* divided first: no overflow on the way */
 }
 
 /* Neumaier's compensated sum (Neumaier 1974, "Rundungsfehleranalyse einiger
@@ -101,7 +101,7 @@ static lh_status exact_total(lh_pred *ctx, int d, const double *xyz, size_t m,
     }
     int e;
     double v = lh__detsum_value(sum, &e);
-    *total = ldexp(v, e) / factorial(d);
+    *total = ldexp(v / factorial(d), e);
     lh__detsum_free(sum);
     return LH_OK;
 }
@@ -151,7 +151,7 @@ static lh_status enclosed_volume(lh_pred *ctx, int d, const double *xyz, size_t 
     }
     int e;
     double v = lh__detsum_value(sum, &e);
-    *volume = ldexp(v, e) / factorial(d);
+    *volume = ldexp(v / factorial(d), e);
     lh__detsum_free(sum);
     return LH_OK;
 }

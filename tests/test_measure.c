@@ -67,6 +67,12 @@ LH_TEST(thin_huge_and_flat)
     LH_EXPECT_EQ_DBL(perimeter, 8e300);
     LH_EXPECT_TRUE(isinf(area));
     lh_hull_free(h);
+    /* a triangle of area just below DBL_MAX whose doubled area is above it: the
+     * division by 2! comes before the scaling, so no overflow on the way */
+    const double big[6] = {0, 0, 0x1p513, 0, 0, 0x1.fffffffffffffp511};
+    LH_EXPECT_EQ_INT(lh_simplex_measures(2, 2, big, 3, 1, tri, &a, &total), LH_OK);
+    LH_EXPECT_EQ_DBL(a, 0x1.fffffffffffffp1023); /* DBL_MAX */
+    LH_EXPECT_EQ_DBL(total, 0x1.fffffffffffffp1023);
     /* a right triangle tilted in R^3: area sqrt(2) / 2 (Cauchy-Binet over 3 minors) */
     const double tilt[9] = {0, 0, 0, 1, 0, 0, 0, 1, 1};
     LH_EXPECT_EQ_INT(lh_simplex_measures(3, 2, tilt, 3, 1, tri, &a, NULL), LH_OK);
