@@ -9,8 +9,8 @@
  *
  * Precision: each dual coordinate is rounded once; their hull, and which hull facets
  * lie on one hyperplane (merged into one intersection point, as Qhull merges them),
- * are exact for those rounded points; each intersection point is computed from the
- * facet's exact hyperplane rounded once (lh_hyperplane): a few ulps of the dual.
+ * are exact for those rounded points; each intersection point is computed from its
+ * halfspaces' own coefficients (tight_point): a few ulps from the exact point.
  * The interior point comes from option Hn,n,... or the input's first point; lifthull
  * does not compute one.
  */
@@ -213,6 +213,25 @@ static int merge_coplanar(const halfspaces *hs, result *r, lh_pred *pred, lh_ind
     return 1;
 }
 
+/* The point where the d halfspaces v are tight, from their own coefficients:
+ * (t x, t) spans the null space of the rows (a_i, b_i), i.e. is the normal of the
+ * hyperplane of R^(d+1) through them and the origin (lh_hyperplane: exact cofactors,
+ * each rounded once), so x is within a few ulps of the exact intersection, and
+ * exact when its coordinates are simple ratios of the coefficients. 0 when
+ * d + 1 > LH_ORIENT_MAX_DIM (then the dual facet's plane gives x). */
+static int tight_point(const halfspaces *hs, lh_pred *pred, const lh_index *v, double *x)
+{
+    const int d = hs->d, D = d + 1;
+    if (D > LH_ORIENT_MAX_DIM) return 0;
+    const double origin[LH_DELAUNAY_MAX_DIM + 1] = {0};
+    const double *p[LH_DELAUNAY_MAX_DIM + 1] = {origin};
+    for (int i = 0; i < d; i++) p[i + 1] = hs->h + (size_t)v[i] * D;
+    double n[LH_DELAUNAY_MAX_DIM + 1], off;
+    if (!lh_hyperplane(pred, D, p, n, &off) || n[d] == 0) return 0;
+    for (int j = 0; j < d; j++) x[j] = n[j] / n[d];
+    return 1;
+}
+
 /* Groups (the facets' classes, in the order of their first facet), their points and
  * their halfspaces (increasing). */
 static int collect(const halfspaces *hs, result *r, lh_pred *pred, lh_index *up)
@@ -244,10 +263,12 @@ static int collect(const halfspaces *hs, result *r, lh_pred *pred, lh_index *up)
         size_t f = (size_t)first[start[g]];
         const double *p[LH_DELAUNAY_MAX_DIM];
         for (int j = 0; j < d; j++) p[j] = r->dual + (size_t)v[f * d + j] * d;
-        double n[LH_DELAUNAY_MAX_DIM], o;
-        lh_hyperplane(pred, d, p, n, &o);
-        double sign = o > 0 ? -1 : 1; /* outward: n.0 + o < 0, the interior point inside */
-        for (int j = 0; j < d; j++) r->point[g * d + j] = hs->c[j] + (sign * n[j]) / -(sign * o);
+        if (!tight_point(hs, pred, v + f * d, r->point + g * d)) {
+            double n[LH_DELAUNAY_MAX_DIM], o;
+            lh_hyperplane(pred, d, p, n, &o);
+            double sign = o > 0 ? -1 : 1; /* outward: n.0 + o < 0, the interior point inside */
+            for (int j = 0; j < d; j++) r->point[g * d + j] = hs->c[j] + (sign * n[j]) / -(sign * o);
+        }
         size_t c = (size_t)r->off[g], from = c;
         for (lh_index e = start[g]; e < start[g + 1]; e++)
             for (int j = 0; j < d; j++) {

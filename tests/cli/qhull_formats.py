@@ -480,6 +480,15 @@ def halfspace(lh):
     tight = all(abs(sum(c * x for c, x in zip(hs[k][:-1], p)) + hs[k][-1]) < 1e-12
                 for l, p in zip(lines[1:m + 1], pts) for k in map(int, l.split()))
     check("qhalf i and Fp: each point on its halfspaces", tight and len(pts) == m)
+    # exact where the vertices are simple ratios of the coefficients: the square cut by
+    # x + y <= 1.5 has vertices (1, 0.5) and (0.5, 1) exactly (qhalf: 0.5000000000000001)
+    sq = "3\n5\n1 0 -1\n-1 0 -1\n0 1 -1\n0 -1 -1\n1 1 -1.5\n"
+    want = sorted([(1.0, -1.0), (-1.0, 1.0), (0.5, 1.0), (-1.0, -1.0), (1.0, 0.5)])
+    for h in (["H0"], ["H0.1,0.2"], ["H-0.3,0.7"]):
+        _, a, _ = run([lh, "qhalf"] + h + ["Fp"], sq)
+        check("qhalf square cut %s Fp exact" % h[0], sorted(points_of(a)) == want, a)
+        _, b, _ = run(["qhalf"] + h + ["Fp"], sq)
+        print("note: square cut %s: qhalf %s" % (h[0], sorted(points_of(b))))
     for h, text, msg in ((["Fp"], n, "an interior point is needed"),
                          (["H5", "Fp"], n, "not strictly inside halfspace"),
                          (["H0", "Fp"], "3\n2\n1 0 -1\n-1 0 -1\n", "unbounded"),
