@@ -11,8 +11,8 @@
  * lie on one hyperplane (merged into one intersection point, as Qhull merges them),
  * are exact for those rounded points; each intersection point is computed from its
  * halfspaces' own coefficients (tight_point): a few ulps from the exact point.
- * The interior point comes from option Hn,n,... or the input's first point; lifthull
- * does not compute one.
+ * The interior point comes from option Hn,n,..., the input's first point, or is the
+ * origin when that is strictly inside every halfspace (Qhull requires one).
  */
 #include "cli.h"
 #include "outfile.h"
@@ -386,6 +386,16 @@ static void print_half(FILE *f, const lh_cli_qopts *o, const halfspaces *hs, con
     }
 }
 
+/* Without H or a point in the input, the origin serves when it is strictly inside
+ * every halfspace (every b < 0), as for the planes of a hull around it. */
+static int origin_inside(halfspaces *hs)
+{
+    for (size_t i = 0; i < hs->n; i++)
+        if (!(hs->h[i * (hs->d + 1) + hs->d] < 0)) return 0;
+    memset(hs->c, 0, sizeof hs->c);
+    return 1;
+}
+
 int lh_cli_qhalf(int argc, char **argv)
 {
     lh_cli_qopts o;
@@ -405,10 +415,10 @@ int lh_cli_qhalf(int argc, char **argv)
             return LH_EXIT_USAGE;
         }
         for (int j = 0; j < hs.d; j++) hs.c[j] = j < o.ninterior ? o.interior[j] : 0;
-    } else if (!hs.has_c) {
-        fprintf(stderr, "lifthull qhalf: an interior point is needed: prepend one to the input "
-                "(a line 'd 1', then its d coordinates) or give option Hn,n,... (lifthull does "
-                "not compute one)\n");
+    } else if (!hs.has_c && !origin_inside(&hs)) {
+        fprintf(stderr, "lifthull qhalf: an interior point is needed (the origin is not strictly "
+                "inside every halfspace): prepend one to the input (a line 'd 1', then its d "
+                "coordinates) or give option Hn,n,...\n");
         free(hs.h);
         return LH_EXIT_USAGE;
     }

@@ -489,7 +489,10 @@ def halfspace(lh):
         check("qhalf square cut %s Fp exact" % h[0], sorted(points_of(a)) == want, a)
         _, b, _ = run(["qhalf"] + h + ["Fp"], sq)
         print("note: square cut %s: qhalf %s" % (h[0], sorted(points_of(b))))
-    for h, text, msg in ((["Fp"], n, "an interior point is needed"),
+    _, a, _ = run([lh, "qhalf", "Fp"], sq)
+    check("qhalf square cut, the origin by default", sorted(points_of(a)) == want, a)
+    shifted = "3\n3\n1 0 -1\n-1 0 2\n0 1 -1\n"  # x >= 2: the origin is outside
+    for h, text, msg in ((["Fp"], shifted, "an interior point is needed (the origin is not"),
                          (["H5", "Fp"], n, "not strictly inside halfspace"),
                          (["H0", "Fp"], "3\n2\n1 0 -1\n-1 0 -1\n", "unbounded"),
                          (["H0", "Fp"], "3\n3\n1 0 -1\n-1 0 -1\n0 1 -1\n", "unbounded"),
