@@ -64,7 +64,8 @@ static void help_half(void)
            "  Fp  the intersection points      Fx  the non-redundant halfspaces\n"
            "other options:\n"
            "  Hn,n,...  the interior point      FO  the options on standard error\n"
-           "  TI FILE   read from FILE          TO FILE  write the output to FILE\n\n"
+           "  TI FILE   read from FILE          TO FILE  write the output to FILE\n"
+           "  Qt QJ Qbb Qx and Qhull's tuning options are accepted (a note says why).\n\n"
            "e.g.  rbox c D3 | qconvex n | lifthull qhalf H0 Fp\n",
            outputs[LH_QPROG_HALF]);
 }
@@ -192,7 +193,7 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
     const int half = o->prog == LH_QPROG_HALF;
     if (!strcmp(w, "FO")) return o->show_options = 1;
     if (half && w[0] == 'H') return interior(o, w);
-    if (half) goto unknown;
+    if (half && (w[0] == 'T' || !strcmp(w, "Qu"))) goto unknown; /* no check or statistics */
     if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
     if (!strcmp(w, "FA") && facets) return o->areas = 1;
     if (!strcmp(w, "Tv")) return o->verify = 1;

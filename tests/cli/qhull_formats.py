@@ -489,6 +489,8 @@ def halfspace(lh):
         check("qhalf square cut %s Fp exact" % h[0], sorted(points_of(a)) == want, a)
         _, b, _ = run(["qhalf"] + h + ["Fp"], sq)
         print("note: square cut %s: qhalf %s" % (h[0], sorted(points_of(b))))
+    r, a, e = run([lh, "qhalf", "H0", "Qt", "QJ", "Fp"], sq)
+    check("qhalf Qt QJ accepted", r == 0 and sorted(points_of(a)) == want and "'QJ' ignored" in e, e)
     _, a, _ = run([lh, "qhalf", "Fp"], sq)
     check("qhalf square cut, the origin by default", sorted(points_of(a)) == want, a)
     shifted = "3\n3\n1 0 -1\n-1 0 2\n0 1 -1\n"  # x >= 2: the origin is outside
@@ -498,7 +500,8 @@ def halfspace(lh):
                          (["H0", "Fp"], "3\n3\n1 0 -1\n-1 0 -1\n0 1 -1\n", "unbounded"),
                          (["H0,x"], n, "expected Hn,n"),
                          (["H0", "Fp"], "4\n2\n1 0 0 x\n", "expected a coefficient"),
-                         (["H0", "o"], n, "option 'o' is not supported")):
+                         (["H0", "o"], n, "option 'o' is not supported"),
+                         (["H0", "Tv"], n, "option 'Tv' is not supported")):
         r, _, e = run([lh, "qhalf"] + h, text)
         check("qhalf %s refused (%s)" % (" ".join(h), msg), r != 0 and msg in e, e)
 
