@@ -62,24 +62,29 @@ static int number(scan *t, double *v, const char *what)
     return 1;
 }
 
+/* A count or a dimension as a long: -1 when it is not a whole number in 0..2^31. */
+static long whole(double v)
+{
+    return v >= 0 && v <= 2147483648.0 && v == floor(v) ? (long)v : -1;
+}
+
 /* A header line: an integer, then either a second integer on the same line or a
- * comment (then the count is the next number). */
+ * comment (then the count is the next number, on a later line). */
 static int header(scan *t, long *dim, long *count)
 {
     double v;
     if (!number(t, &v, "a dimension")) return 0;
-    *dim = (long)v;
+    *dim = whole(v);
     skip_blank(t, 0);
     char *end;
-    long c = strtol(t->s, &end, 10);
-    if (end != t->s && (!*end || isspace((unsigned char)*end))) {
+    double c = *t->s && *t->s != '\n' ? strtod(t->s, &end) : 0;
+    if (*t->s && *t->s != '\n' && end != t->s && (!*end || isspace((unsigned char)*end))) {
         t->s = end;
     } else {
         while (*t->s && *t->s != '\n') t->s++; /* a comment, as rbox writes */
-        if (!number(t, &v, "the number of halfspaces")) return 0;
-        c = (long)v;
+        if (!number(t, &c, "the number of halfspaces")) return 0;
     }
-    *count = c;
+    *count = whole(c);
     return 1;
 }
 

@@ -501,7 +501,10 @@ def halfspace(lh):
                          (["H0,x"], n, "expected Hn,n"),
                          (["H0", "Fp"], "4\n2\n1 0 0 x\n", "expected a coefficient"),
                          (["H0", "o"], n, "option 'o' is not supported"),
-                         (["H0", "Tv"], n, "option 'Tv' is not supported")):
+                         (["H0", "Tv"], n, "option 'Tv' is not supported"),
+                         (["H0"], "1e300 5\n", "<stdin>:1: expected halfspaces of 3..9 coefficients"),
+                         (["Fp"], "2 1\n0 0\n3 2\n1 0 -1\n-1 0 -1\n7\n", "<stdin>:6: more than the 2"),
+                         (["Fp"], "2 1\n0 0\n4 2\n", "<stdin>:3: the interior point has 2 coordinates")):
         r, _, e = run([lh, "qhalf"] + h, text)
         check("qhalf %s refused (%s)" % (" ".join(h), msg), r != 0 and msg in e, e)
 
