@@ -88,7 +88,8 @@ lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo);
 int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
 
 /* Whether the outputs asked for suit d-dimensional input (m, FM, G: 2-d and 3-d
- * hulls, 2-d Delaunay); 0 after printing the problem (qhull_extra.c). */
+ * hulls, 2-d Delaunay; qdelaunay's f and FF: up to 7-d); 0 after printing the
+ * problem (qhull_extra.c). */
 int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d);
 
 /* Ts: the computation's statistics (qhull_stats.c). */

@@ -148,6 +148,12 @@ int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d)
 {
     for (int i = 0; i < o->nout; i++) {
         const char *w = o->out[i];
+        if ((!strcmp(w, "f") || !strcmp(w, "FF")) && o->prog != LH_QPROG_CONVEX &&
+            d + 1 > LH_ORIENT_MAX_DIM) {
+            fprintf(stderr, "lifthull %s: option '%s': the lifted facets' normals are for at most "
+                    "%d-d input\n", o->name, w, LH_ORIENT_MAX_DIM - 1);
+            return 0;
+        }
         if ((strcmp(w, "m") && strcmp(w, "FM") && strcmp(w, "G")) ||
             (o->prog == LH_QPROG_CONVEX ? d == 2 || d == 3 : d == 2))
             continue;

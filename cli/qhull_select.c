@@ -27,7 +27,8 @@ void lh_cli_qlifted_normal(const lh_cli_qmodel *mo, lh_cli_qlift s, const lh_ind
         x[k][d] = lh_cli_qlifted(mo, s, i);
         p[k] = x[k];
     }
-    lh_hyperplane(mo->pred, d + 1, p, n, &off);
+    if (!lh_hyperplane(mo->pred, d + 1, p, n, &off)) /* d + 1 > LH_ORIENT_MAX_DIM */
+        for (int j = 0; j <= d; j++) n[j] = 0;
     if ((n[d] > 0) != up)
         for (int j = 0; j <= d; j++) n[j] = -n[j];
 }

@@ -555,6 +555,11 @@ def all_fields(lh):
             check(name + " normals, offsets, neighbours", not bad, str(bad[:1]))
 
 
+def fields_refused(lh):
+    r, a, e = run([lh, "qdelaunay", "f"], rbox("12 D8 t1"))
+    check("qdelaunay f in 8-d refused", r == 2 and a == "" and "at most 7-d input" in e, e)
+
+
 def trace(lh):
     text = rbox("200 D3 t41")
     for prog in ("qdelaunay", "qconvex", "qvoronoi"):
@@ -609,6 +614,7 @@ def main():
     guard("geomview", geomview, lh)
     guard("qhalf", halfspace, lh)
     guard("f", all_fields, lh)
+    guard("f in 8-d", fields_refused, lh)
     guard("refusals", refusals, lh)
     print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
     return 1 if FAILS else 0
