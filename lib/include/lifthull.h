@@ -483,6 +483,34 @@ const lh_index *lh_hull_vertices(const lh_hull *h);  /* increasing site indices 
 const lh_index *lh_hull_duplicate_of(const lh_hull *h);
 void lh_hull_free(lh_hull *h);
 
+/*
+ * Lengths, areas and volumes (Qhull's FA, Fa, FS).
+ *
+ * lh_simplex_measures: the k-dimensional measure (k = 1: length, 2: area, 3: volume,
+ * ...) of m simplices in R^d (1 <= k <= d <= 8), each given by k+1 indices into the
+ * n sites xyz (n*d doubles). each (m doubles) and total may be NULL. Each measure is
+ * sqrt(det G) / k!, G the Gram matrix of the edges from the first vertex, summed as
+ * the squares of exact k x k minors each rounded once (Cauchy-Binet): k = d, one
+ * exact determinant, relative error below 2^-51 however thin the simplex; k < d,
+ * below (C(d,k) + 3) * 2^-53. total: for k = d the exact sum of the exact volumes,
+ * rounded (relative error below 2^-51); for k < d the measures' compensated sum
+ * (Neumaier), within a few ulps of their sum. A result beyond DBL_MAX is +inf;
+ * below the subnormals 0. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT
+ * (an index outside 0..n-1, k or d out of range).
+ */
+lh_status lh_simplex_measures(int d, int k, const double *xyz, size_t n, size_t m,
+                              const lh_index *simplices, double *each, double *total);
+/* The simplices of t (k = lh_tri_simplex_dim): each (lh_tri_count doubles) and
+ * their total, as lh_simplex_measures; for k = d the total is the exact volume of
+ * the convex hull rounded once. */
+lh_status lh_tri_measures(const lh_tri *t, double *each, double *total);
+/* The hull h of the n sites xyz it was computed from: each facet's (d-1)-measure
+ * (lh_hull_facet_count doubles), their total (the surface area; d = 2: the
+ * perimeter), and the enclosed volume (d = 2: the area), exact and rounded once.
+ * Any pointer but h and xyz may be NULL. */
+lh_status lh_hull_measures(const lh_hull *h, const double *xyz, size_t n, double *each,
+                           double *area, double *volume);
+
 /* ---- file formats ------------------------------------------------------------------ */
 
 /*
