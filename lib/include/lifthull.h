@@ -816,6 +816,13 @@ typedef struct lh_trimesh_options {
                                   every triangle positive and within its area bound;
                                   then flips make the mesh constrained Delaunay again.
                                   The smallest angle never decreases (default 0)      */
+    int split_segments;        /* -s: before the domain is carved, every subsegment
+                                  that is not locally Delaunay is split at its
+                                  midpoint until all are: segments become chains of
+                                  Delaunay edges (a conforming Delaunay triangulation
+                                  of the graph), counted in steiner_points and within
+                                  max_steiner; ignored when refining a given mesh
+                                  (cover) (default 0)                              */
 } lh_trimesh_options;
 
 #define LH_TRIMESH_MAX_ANGLE 40.0 /* degrees: beyond it refinement need not end */
@@ -857,7 +864,10 @@ lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
 void lh_trimesh_free(lh_trimesh *m);
 
 /* Points: the PSLG's vertices first, with their indices (merged duplicates too), then
- * the Steiner points. Markers: a vertex's own, a Steiner point's segment's. */
+ * the Steiner points. Markers, Triangle's rule: a vertex's own nonzero marker; else
+ * the nonzero marker of an input segment it lies on (an endpoint, or a Steiner point
+ * put on it; of several, the first segment in input order); else 1 on the domain's
+ * boundary (holes' too); else 0. */
 size_t lh_trimesh_point_count(const lh_trimesh *m);
 const double *lh_trimesh_points(const lh_trimesh *m);         /* 2 per point          */
 const lh_index *lh_trimesh_point_markers(const lh_trimesh *m);/* 1 per point          */
