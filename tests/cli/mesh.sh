@@ -26,6 +26,27 @@ expect "report" 0 '' '^Mesh: 29 points \(29 input, 0 Steiner: 0 on segments\), 2
 grep -q '^Angle histogram' out.txt && ok || bad "report: no histogram"
 expect "--min-angle 30" 0 '' '^Triangles below the bounds: 0$' -- "$lh" mesh A.poly --min-angle 30
 ge "$(field out.txt 'Angles: smallest')" 30 && ok || bad "--min-angle 30: $(grep Angles out.txt)"
+# scale-free: A.poly times 2^k (exact in awk's doubles, printed to round-trip) reports
+# what A.poly does, but for its areas and edges
+scaled() {
+    awk -v f="$1" 'function p(x) { return sprintf("%.17g", x * f) }
+        /^[ \t]*(#|$)/ { print; next }
+        part == 0 { n = $1; part = 1; print; next }
+        part == 1 { print $1, p($2), p($3), $4; if (--n == 0) part = 2; next }
+        part == 2 { n = $1; part = n ? 3 : 4; print; next }
+        part == 3 { print; if (--n == 0) part = 4; next }
+        part == 4 { n = $1; part = 5; print; next }
+        { print $1, p($2), p($3) }' A.poly
+}
+"$lh" mesh A.poly --min-angle 30 | grep -v '^Areas' > unscaled.txt
+for k in -600 -260 177 600; do
+    scaled "$(awk -v k=$k 'BEGIN { printf "%.17g", 2 ^ k }')" > "A$k.poly"
+    "$lh" mesh "A$k.poly" --min-angle 30 > "scaled$k.txt" && grep -v '^Areas' "scaled$k.txt" | cmp -s - unscaled.txt &&
+        grep -q '^Triangles below the bounds: 0$' "scaled$k.txt" && ok ||
+        bad "A.poly times 2^$k: $(diff <(grep -v '^Areas' "scaled$k.txt") unscaled.txt | head -5)"
+done
+grep -q '^Areas: smallest 8.54895e-366, largest 3.4183e-364; edges: shortest 3.58617e-183' scaled-600.txt && ok ||
+    bad "A.poly times 2^-600: $(grep Areas scaled-600.txt)"
 expect "--quality" 0 '' '^Angles' -- "$lh" mesh --quality A.poly
 ge "$(field out.txt 'Angles: smallest')" 20 && ok || bad "--quality: $(grep Angles out.txt)"
 ! ge "$(field out.txt 'Angles: smallest')" 30 && ok || bad "--quality is 20 degrees, got $(grep Angles out.txt)"
