@@ -63,6 +63,13 @@ void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s)
             s->segments_unsplit);
 }
 
+void lh_cli_trimesh_budget(FILE *out, const lh_trimesh_stats *s, double min_angle)
+{
+    fprintf(out, "Refinement stopped at its budget of %zu Steiner points: the angle bound %.4g degrees is above "
+                 "%.4g, where Delaunay refinement need not end; %zu triangles are below the bounds\n",
+            s->steiner_budget, min_angle, LH_TRIMESH_PROVABLE_ANGLE, s->bad_triangles);
+}
+
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
 {
     lh_trimesh_stats s;
@@ -105,6 +112,7 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
                      "%zu overlapping segments shared, %zu holes and %zu regions outside the domain ignored\n",
                 s.duplicates_merged, s.segments_dropped, s.segments_overlapping, s.holes_ignored, s.regions_ignored);
     if (s.segments_unsplit) lh_cli_trimesh_unsplit(out, &s);
+    if (s.steiner_budget_reached) lh_cli_trimesh_budget(out, &s, min_angle);
     if (s.steiner_removed) fprintf(out, "Steiner points removed again (Chew's rule): %zu\n", s.steiner_removed);
     if (s.smoothing_moves) fprintf(out, "Smoothing: %zu moves\n", s.smoothing_moves);
     if (s.crossings_split) fprintf(out, "Crossing segments split: %zu\n", s.crossings_split);

@@ -58,6 +58,7 @@ typedef struct rf {
     lh_index *segq;         /* 2 per entry: subsegment, forced */
     size_t segq_count, segq_cap;
     size_t steiner;
+    size_t budget;          /* above the provable angle: at most this many (0: none) */
     unsigned char *stuck;   /* per subsegment: a split was refused or is too short */
     size_t stuck_count, stuck_cap;
     lh_index *gone;         /* free vertices to remove before a split (Chew's rule) */
@@ -537,6 +538,10 @@ static lh_status run(rf *r)
             r->o->out->steiner_limit_reached = 1;
             return LH_OK;
         }
+        if (r->budget && r->steiner >= r->budget) {
+            r->o->out->steiner_budget_reached = 1;
+            return LH_OK;
+        }
         if (r->segq_count) {
             const lh_index s = r->segq[2 * (r->segq_count - 1)];
             const int forced = (int)r->segq[2 * (r->segq_count - 1) + 1];
@@ -572,6 +577,31 @@ static lh_status start(rf *r)
     return LH_OK;
 }
 
+/* The Steiner budget above the provable angle bound, where refinement may add points
+ * without end (la.poly at 36 degrees: millions). A quality mesh grades from each
+ * feature geometrically, so its size grows with the logarithm of the feature sizes'
+ * ratios: each triangle t of the mesh before refinement allows 64 (1 + log2 of its
+ * longest edge squared over its area) points, plus 4 per multiple of its area bound
+ * that its area is, plus 1024 — 16 to 100 times what la, A, face, double_hex and
+ * fish-and-rectangle.poly take at 34 degrees. */
+static size_t budget(const rf *r)
+{
+    const lh__m2 *m = r->m;
+    double sum = 1024;
+    for (size_t t = 0; t < m->nt; t++) {
+        if (m->v[3 * t] < 0) continue;
+        lh__g_tri g;
+        measure(m, (lh_index)t, &g);
+        const double lmax = fmax(g.len[0], fmax(g.len[1], g.len[2]));
+        sum += 64 * (1 + log2(lmax * lmax / g.area2));
+        double bound = r->o->max_area;
+        if (r->o->region_areas && m->tarea && m->tarea[t] > 0 && (bound <= 0 || m->tarea[t] < bound))
+            bound = m->tarea[t];
+        if (bound > 0) sum += 4 * ldexp(g.area2 / 2 / bound, 2 * g.e);
+    }
+    return sum < 0x1p62 ? (size_t)sum : SIZE_MAX;
+}
+
 lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
 {
     rf r;
@@ -604,6 +634,7 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
     const double diam = lh__g_len(d[0], d[1]);
     const int by_diam = lh__g_cmp(diam, e, mag, 0) > 0;
     r.minlen_m = by_diam ? diam : mag, r.minlen_e = (by_diam ? e : 0) - 40;
+    if (o->min_angle > LH_TRIMESH_PROVABLE_ANGLE) r.budget = o->out->steiner_budget = budget(&r);
     lh_status st = start(&r);
     if (st == LH_OK) st = run(&r);
     o->out->steiner_points = r.steiner;

@@ -111,6 +111,37 @@ LH_TEST(quality_decisions_are_scale_free)
     lh_pslg_free(&g);
 }
 
+/* Above the provable 20.7 degrees: A.poly at 38 degrees (which ran without end) stops
+ * at its Steiner budget, valid, the triangles left below the bound counted; at 34
+ * degrees it meets the bound within the budget. */
+LH_TEST(refinement_above_the_provable_angle_ends)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load(lh_poly_read, "triangle/A.poly", &g), LH_OK);
+    static const double angles[] = {20, 34, 38};
+    for (size_t a = 0; a < LH_COUNT(angles); a++) {
+        lh_trimesh_options o;
+        lh_trimesh_options_default(&o);
+        o.min_angle = angles[a];
+        lh_trimesh *m = NULL;
+        char msg[256];
+        LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_OK);
+        lh_trimesh_stats st;
+        lh_trimesh_get_stats(m, &st);
+        LH_EXPECT_EQ_INT(check(m), LH_OK);
+        LH_EXPECT_EQ_INT(st.steiner_budget_reached, a == 2);
+        LH_EXPECT_EQ_INT(st.steiner_budget > 0, a > 0);
+        if (a < 2) LH_EXPECT_EQ_U64(st.bad_triangles, 0);
+        if (a == 2) {
+            LH_EXPECT_GT_U64(st.bad_triangles, 0);
+            LH_EXPECT_LE_U64(st.steiner_points, st.steiner_budget);
+            LH_EXPECT_LE_U64(st.steiner_budget, 100000);
+        }
+        lh_trimesh_free(m);
+    }
+    lh_pslg_free(&g);
+}
+
 /* (0,0), (1,0), (1,1e-300): its 10^-300 radian angle is below any bound (the squared
  * lengths underflowed, and the triangle was counted good with angles 0 and 0). */
 LH_TEST(a_wedge_of_1e_300_is_counted_bad)
@@ -258,6 +289,7 @@ int main(int argc, char **argv)
     static const lh_test_case cases[] = {
         LH_CASE(quality_decisions_are_scale_free),
         LH_CASE(a_wedge_of_1e_300_is_counted_bad),
+        LH_CASE(refinement_above_the_provable_angle_ends),
         LH_CASE(an_area_bound_applies_at_the_ends_of_the_range),
         LH_CASE(a_pinched_domain_is_refined_beside_the_pinch),
     };

@@ -57,6 +57,23 @@ ge 0.001 "$(field out.txt 'Areas: smallest [0-9.e+-]+, largest')" && ok || bad "
 expect "--no-segment-steiner" 0 '' ' 0 on segments\), ' -- "$lh" mesh A.poly --quality --no-segment-steiner
 expect "--no-boundary-steiner" 0 '' ' 0 on segments\), ' -- "$lh" mesh A.poly --quality --no-boundary-steiner
 expect "--max-steiner" 0 '' '^Mesh: 34 points \(29 input, 5 Steiner' -- "$lh" mesh A.poly --min-angle 30 --max-steiner 5
+# above the provable 20.7 degrees refinement need not end (Triangle's -q35.5 .. -q38 on
+# these files ran without end, taking GBs): it stops at a Steiner budget from the input
+# and says so; at 34 degrees these files meet the bound with no budget reached
+cp "$data"/double_hex.poly .
+printf '3 2 0 0\n1 0 0\n2 1 0\n3 1 1e-10\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' > wedge.poly
+for run in "la.poly 35.5" "la.poly 36" "double_hex.poly 35.5" "double_hex.poly 36" "A.poly 38" "face.poly 38" \
+           "wedge.poly 32 --conforming"; do
+    set -- $run
+    (ulimit -v 2000000; timeout 60 "$lh" mesh "$1" --min-angle "$2" ${3:-}) > budget.txt 2>&1
+    rc=$?
+    [ $rc -eq 0 ] && grep -Eq "^Refinement stopped at its budget of [0-9]+ Steiner points: the angle bound $2 degrees is above 20.7, where Delaunay refinement need not end; [1-9][0-9]* triangles are below the bounds$" budget.txt &&
+        grep -Eq '^Triangles below the bounds: [1-9]' budget.txt && ok || bad "budget $run: exit $rc, $(head -c 300 budget.txt)"
+done
+for f in A.poly face.poly double_hex.poly la.poly; do
+    (ulimit -v 2000000; timeout 60 "$lh" mesh "$f" --min-angle 34) > budget.txt 2>&1 && ! grep -q 'budget' budget.txt &&
+        { [ "$f" = la.poly ] || grep -q '^Triangles below the bounds: 0$' budget.txt; } && ok || bad "34 degrees on $f: $(head -c 300 budget.txt)"
+done
 grep -q 'the Steiner point limit was reached' out.txt && ok || bad "--max-steiner: no limit note"
 expect "--ignore-holes" 0 '' '^Mesh: 29 points .*, 30 triangles' -- "$lh" mesh A.poly --ignore-holes
 expect "--conforming" 0 '' '^Mesh' -- "$lh" mesh A.poly --conforming
