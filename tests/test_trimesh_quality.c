@@ -18,39 +18,30 @@
 #include <string.h>
 
 
-typedef lh_status (*reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, char *, size_t);
-
-static lh_status load(reader rd, const char *path, lh_pslg *g)
+static lh_status load(lh_test_pslg_reader rd, const char *path, lh_pslg *g)
 {
-    char full[512], msg[256];
-    snprintf(full, sizeof full, "%s/%s", LH_TEST_DATA_DIR, path);
-    FILE *f = fopen(full, "rb");
-    if (!f) return LH_ERR_IO;
-    lh_status st = rd(f, path, NULL, g, msg, sizeof msg);
-    fclose(f);
-    return st;
-}
-
-static lh_status pslg_text(const char *text, lh_pslg *g)
-{
-    FILE *f = lh_test_file(text, strlen(text));
-    if (!f) return LH_ERR_IO;
-    char msg[256];
-    lh_status st = lh_poly_read(f, "t.poly", NULL, g, msg, sizeof msg);
-    fclose(f);
-    return st;
+    return lh_test_pslg_file(rd, LH_TEST_DATA_DIR, path, g);
 }
 
 static lh_status load_rings(const char *path, lh_pslg *g) { return load(lh_rings_read, path, g); }
 
-static lh_status check(const lh_trimesh *m)
+/* Meshes g with o, expecting success and an exactly valid mesh: the mesh and *st. */
+static lh_trimesh *mesh_valid(lh_test_state *lh_t_, const lh_pslg *g, const lh_trimesh_options *o,
+                              lh_trimesh_stats *st)
 {
+    lh_trimesh *m = NULL;
     char msg[256] = "";
-    lh_status st = lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
-                                    lh_trimesh_triangles(m), lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0,
-                                    NULL, msg, sizeof msg);
-    if (st != LH_OK) fprintf(stderr, "check: %s\n", msg);
-    return st;
+    const lh_status s = lh_triangulate_pslg(g, o, &m, msg, sizeof msg);
+    LH_EXPECT_EQ_INT(s, LH_OK);
+    if (s != LH_OK) {
+        LH_NOTE("%s", msg);
+        return NULL;
+    }
+    lh_trimesh_get_stats(m, st);
+    const lh_status c = lh_test_check_trimesh(m, msg, sizeof msg);
+    if (c != LH_OK) LH_NOTE("check: %s", msg);
+    LH_EXPECT_EQ_INT(c, LH_OK);
+    return m;
 }
 
 /* Whether m's points are 2^k times ref's (exactly) and its triangles the same. */
@@ -93,13 +84,11 @@ LH_TEST(quality_decisions_are_scale_free)
             for (size_t v = 0; v < 2 * g.n; v++) g.xy[v] = ldexp(xy0[v], k);
             g.holes[0] = ldexp(h0[0], k), g.holes[1] = ldexp(h0[1], k);
             o.max_area = ldexp(area0, 2 * k);
-            lh_trimesh *m = NULL;
-            LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_OK);
             lh_trimesh_stats st;
-            lh_trimesh_get_stats(m, &st);
+            lh_trimesh *m = mesh_valid(lh_t_, &g, &o, &st);
+            if (!m) return;
             if (!same_up_to_scale(m, ref, k)) LH_NOTE("angle %g, 2^%d: not the unit mesh scaled", angles[a], k);
             LH_EXPECT_TRUE(same_up_to_scale(m, ref, k));
-            LH_EXPECT_EQ_INT(check(m), LH_OK);
             LH_EXPECT_EQ_U64(st.bad_triangles, 0);
             LH_EXPECT_LE_DBL(angles[a], st.min_angle);
             LH_EXPECT_TRUE(st.max_angle < 180);
@@ -123,12 +112,9 @@ LH_TEST(refinement_above_the_provable_angle_ends)
         lh_trimesh_options o;
         lh_trimesh_options_default(&o);
         o.min_angle = angles[a];
-        lh_trimesh *m = NULL;
-        char msg[256];
-        LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_OK);
         lh_trimesh_stats st;
-        lh_trimesh_get_stats(m, &st);
-        LH_EXPECT_EQ_INT(check(m), LH_OK);
+        lh_trimesh *m = mesh_valid(lh_t_, &g, &o, &st);
+        if (!m) return;
         LH_EXPECT_EQ_INT(st.steiner_budget_reached, a == 2);
         LH_EXPECT_EQ_INT(st.steiner_budget > 0, a > 0);
         if (a < 2) LH_EXPECT_EQ_U64(st.bad_triangles, 0);
@@ -147,17 +133,14 @@ LH_TEST(refinement_above_the_provable_angle_ends)
 LH_TEST(a_wedge_of_1e_300_is_counted_bad)
 {
     lh_pslg g;
-    LH_ASSERT_EQ_INT(pslg_text("3 2 0 0\n1 0 0\n2 1 0\n3 1 1e-300\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n", &g),
+    LH_ASSERT_EQ_INT(lh_test_pslg_text("3 2 0 0\n1 0 0\n2 1 0\n3 1 1e-300\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n", &g),
                      LH_OK);
     lh_trimesh_options o;
     lh_trimesh_options_default(&o);
     o.min_angle = 30;
-    lh_trimesh *m = NULL;
-    char msg[256];
-    LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_OK);
     lh_trimesh_stats st;
-    lh_trimesh_get_stats(m, &st);
-    LH_EXPECT_EQ_INT(check(m), LH_OK);
+    lh_trimesh *m = mesh_valid(lh_t_, &g, &o, &st);
+    if (!m) return;
     LH_EXPECT_GT_U64(st.bad_triangles, 0);
     LH_EXPECT_TRUE(st.min_angle > 0 && st.min_angle < 1e-290);
     LH_EXPECT_LE_DBL(89.0, st.max_angle);
@@ -177,17 +160,14 @@ LH_TEST(an_area_bound_applies_at_the_ends_of_the_range)
         "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n"};
     for (int i = 0; i < 2; i++) {
         lh_pslg g;
-        LH_ASSERT_EQ_INT(pslg_text(text[i], &g), LH_OK);
+        LH_ASSERT_EQ_INT(lh_test_pslg_text(text[i], &g), LH_OK);
         lh_trimesh_options o;
         lh_trimesh_options_default(&o);
         o.max_area = i ? DBL_MAX : 0x1p1021;
         o.max_steiner = 200;
-        lh_trimesh *m = NULL;
-        char msg[256];
-        LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_OK);
         lh_trimesh_stats st;
-        lh_trimesh_get_stats(m, &st);
-        LH_EXPECT_EQ_INT(check(m), LH_OK);
+        lh_trimesh *m = mesh_valid(lh_t_, &g, &o, &st);
+        if (!m) return;
         LH_EXPECT_GT_U64(st.steiner_points, 0);
         if (!i) { /* met: every triangle's area at most 2^1021, computed at 2^-511 */
             LH_EXPECT_EQ_INT(st.steiner_limit_reached, 0);
@@ -251,16 +231,9 @@ LH_TEST(a_pinched_domain_is_refined_beside_the_pinch)
             lh_trimesh_options o;
             lh_trimesh_options_default(&o);
             o.min_angle = bounds[b];
-            lh_trimesh *m = NULL;
-            char msg[256] = "";
-            LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_OK);
-            LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
-                                              lh_trimesh_triangle_count(m), lh_trimesh_triangles(m),
-                                              lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0, NULL, msg,
-                                              sizeof msg),
-                             LH_OK);
             lh_trimesh_stats st;
-            lh_trimesh_get_stats(m, &st);
+            lh_trimesh *m = mesh_valid(lh_t_, &g, &o, &st);
+            if (!m) return;
             const lh_index *bad = lh_trimesh_bad_triangles(m), *tri = lh_trimesh_triangles(m);
             const double *xy = lh_trimesh_points(m);
             size_t at_pinch = 0;
