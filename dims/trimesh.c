@@ -200,7 +200,7 @@ static void measure(const lh_trimesh *r, lh_trimesh_stats *s)
         const lh_index *v = r->tri + 3 * t;
         lh__g_tri g;
         lh__g_measure(r->xy + 2 * (size_t)v[0], r->xy + 2 * (size_t)v[1], r->xy + 2 * (size_t)v[2], &g);
-        for (int k = 0; k < 3; k++) { /* the corner opposite edge k: edges -d[k+2], d[k+1] */
+        for (int k = 0; k < 3; k++) { /* corner k: its edges d[k+2] and -d[k+1] */
             const double a = atan2(g.area2, -lh__g_dot(g.d[(k + 1) % 3], g.d[(k + 2) % 3]));
             amin = a < amin ? a : amin;
             amax = a > amax ? a : amax;
