@@ -1,7 +1,35 @@
 /* m2_geom.c — scale-free floating-point geometry (m2_geom.h). */
+#include <limits.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "m2_geom.h"
+
+/* 2^k for -1074 <= k <= 1023, from its bits (ldexp's result, without the call). */
+static double pow2(int k)
+{
+    const uint64_t b = k >= -1022 ? (uint64_t)(k + 1023) << 52 : (uint64_t)1 << (k + 1074);
+    double x;
+    memcpy(&x, &b, sizeof x);
+    return x;
+}
+
+/* The exponent of x > 0 finite (ilogb's), from its bits when x is normal. */
+static int exponent(double x)
+{
+    uint64_t b;
+    memcpy(&b, &x, sizeof b);
+    const int f = (int)(b >> 52 & 0x7ff);
+    return f ? f - 1023 : ilogb(x);
+}
+
+/* x * 2^-e for the exponent e of the largest |value| (so the result is at most 2):
+ * one rounding, as ldexp(x, -e). */
+static double scale_down(double x, int e)
+{
+    return -e <= 1023 ? x * pow2(-e) : x * 0x1p1000 * pow2(-e - 1000);
+}
 
 int lh__g_vecs(const double *o, const double *const *p, int n, double (*vecs)[2])
 {
@@ -17,9 +45,9 @@ int lh__g_vecs(const double *o, const double *const *p, int n, double (*vecs)[2]
     double big = 0;
     for (int i = 0; i < n; i++) big = fmax(big, fmax(fabs(vecs[i][0]), fabs(vecs[i][1])));
     if (big == 0) return 0;
-    const int e = ilogb(big);
+    const int e = exponent(big);
     for (int i = 0; i < n; i++)
-        for (int j = 0; j < 2; j++) vecs[i][j] = ldexp(vecs[i][j], -e);
+        for (int j = 0; j < 2; j++) vecs[i][j] = scale_down(vecs[i][j], e);
     return e + half;
 }
 
@@ -36,11 +64,21 @@ int lh__g_cmp(double a, long ea, double b, long eb)
 {
     if (a == 0 || b == 0) return (a > 0) - (b > 0);
     if (isinf(a) || isinf(b)) return (isinf(a) != 0) - (isinf(b) != 0);
-    int xa, xb;
-    const double fa = frexp(a, &xa), fb = frexp(b, &xb);
-    const long ta = (long)xa + ea, tb = (long)xb + eb;
+    const long ta = (long)exponent(a) + ea, tb = (long)exponent(b) + eb;
     if (ta != tb) return ta < tb ? -1 : 1;
+    const double fa = scale_down(a, exponent(a)), fb = scale_down(b, exponent(b)); /* in [1, 2) */
     return (fa > fb) - (fa < fb);
+}
+
+double lh__g_norm(double a, long ea, long *e)
+{
+    if (a == 0) {
+        *e = LONG_MIN;
+        return 0;
+    }
+    const int x = exponent(a);
+    *e = ea + x;
+    return scale_down(a, x);
 }
 
 double lh__g_cross(const double *u, const double *v)
@@ -75,11 +113,11 @@ void lh__g_measure(const double *a, const double *b, const double *c, lh__g_tri 
             for (int j = 0; j < 2; j++) t->d[k][j] = to[k][j] / 2 - from[k][j] / 2;
     double big = 0;
     for (int k = 0; k < 3; k++) big = fmax(big, fmax(fabs(t->d[k][0]), fabs(t->d[k][1])));
-    const int e = big > 0 ? ilogb(big) : 0;
+    const int e = big > 0 ? exponent(big) : 0;
     t->e = e + half;
     t->k = 0;
     for (int k = 0; k < 3; k++) {
-        t->d[k][0] = ldexp(t->d[k][0], -e), t->d[k][1] = ldexp(t->d[k][1], -e);
+        t->d[k][0] = scale_down(t->d[k][0], e), t->d[k][1] = scale_down(t->d[k][1], e);
         t->len[k] = lh__g_len(t->d[k][0], t->d[k][1]);
         if (t->len[k] < t->len[t->k]) t->k = k;
     }

@@ -32,6 +32,9 @@ int lh__g_vecs(const double *o, const double *const *p, int n, double (*vecs)[2]
 int lh__g_vec(const double *o, const double *p, double v[2]);
 /* Sign of a * 2^ea - b * 2^eb for a, b >= 0 finite (+inf compares above every finite). */
 int lh__g_cmp(double a, long ea, double b, long eb);
+/* a * 2^ea as m * 2^*e with m in [1, 2) (a > 0 finite; a = 0: m = 0, *e = LONG_MIN):
+ * such pairs order as (e, m) lexicographically. */
+double lh__g_norm(double a, long ea, long *e);
 /* u x v, accurate (Kahan's algorithm with fma). */
 double lh__g_cross(const double *u, const double *v);
 double lh__g_dot(const double *u, const double *v);

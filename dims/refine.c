@@ -36,7 +36,8 @@
 #define PI 3.14159265358979323846
 
 /* A bad triangle as queued: the angle-bad ones first, the one with the shortest
- * shortest edge (km * 2^ke) first among them; then those only too large. */
+ * shortest edge (km * 2^ke, km in [1, 2): lh__g_norm) first among them; then those
+ * only too large. */
 typedef struct item {
     int area_only;
     long ke;
@@ -119,7 +120,7 @@ static int below_minlen(const rf *r, const double *a, const double *b)
 static int higher(const item *x, const item *y)
 {
     if (x->area_only != y->area_only) return y->area_only;
-    return !x->area_only && lh__g_cmp(x->km, x->ke, y->km, y->ke) < 0;
+    return !x->area_only && (x->ke != y->ke ? x->ke < y->ke : x->km < y->km);
 }
 
 static void heap_up(item *h, size_t i)
@@ -156,7 +157,9 @@ static lh_status queue_triangle(rf *r, lh_index t)
        only too large): small features fix their neighbourhoods' sizes before larger
        triangles are split, which measured 10-30% fewer triangles than the worst
        angle first (Shewchuk 1996 §3 compares worst-first with first-in first-out) */
-    r->heap[r->heap_count] = (item){q < 0, g.e, g.len[g.k], t, v[0], v[1], v[2]};
+    long ke;
+    const double km = lh__g_norm(g.len[g.k], g.e, &ke);
+    r->heap[r->heap_count] = (item){q < 0, ke, km, t, v[0], v[1], v[2]};
     heap_up(r->heap, r->heap_count++);
     return LH_OK;
 }
