@@ -99,8 +99,8 @@ double lh__g_dot(const double *u, const double *v)
 
 void lh__g_measure(const double *a, const double *b, const double *c, lh__g_tri *t)
 {
-    /* d[k] from corner k+1 to corner k+2, all with one exponent: differences from a
-       first (b - a, c - a), then c - b rounded once from the coordinates too */
+    /* d[k] from corner k+1 to corner k+2, each rounded once from the coordinates,
+       all three scaled by one power of two */
     const double *from[3] = {b, c, a}, *to[3] = {c, a, b};
     int half = 0;
     for (int k = 0; k < 3 && !half; k++)

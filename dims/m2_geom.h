@@ -3,8 +3,9 @@
  * refinement (refine.c, smooth.c, m2_insert.c, trimesh.c): the bad-triangle test,
  * encroachment, the Steiner point placement and the statistics.
  *
- * Every measure is computed on difference vectors scaled by a power of two (ldexp,
- * exact) so that their largest component lies in [1, 2): squares and products then
+ * Every measure is computed on difference vectors scaled by a power of two (exact
+ * but for values that become subnormal) so that their largest component lies in
+ * [1, 2): squares and products then
  * neither overflow nor underflow for any pair of finite doubles, and a measure that is
  * a ratio (a sine, a cosine, a weight) is the same double for the input scaled by any
  * 2^k. A length or area is that scaled value with its exponent, compared through
@@ -15,7 +16,7 @@
  * of P when every coordinate of both stays normal or zero.
  *
  * Error bounds (u = 2^-53): the scaled differences have relative error u; a length
- * (hypot) 2u; the cross product (Kahan's algorithm with fma) 2u relative plus an
+ * 2u; the cross product (Kahan's algorithm with fma) 2u relative plus an
  * absolute 2^-1074 from underflow; a sine or cosine about 6u relative plus 2^-1070
  * absolute. A triangle whose angle's sine lies below 2^-1000 thus compares as an angle
  * 0; every other comparison is exact up to those relative errors.
