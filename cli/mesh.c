@@ -305,6 +305,7 @@ int lh_cli_mesh(int argc, char **argv)
                 printf("%zu triangles are below the bounds (small input angles%s; --report lists them)\n",
                        s.bad_triangles, s.steiner_limit_reached ? " or the Steiner limit" : "");
             if (s.segments_unsplit) lh_cli_trimesh_unsplit(stdout, &s);
+            if (s.steiner_budget_reached) lh_cli_trimesh_budget(stdout, &s, a.opt.min_angle);
         }
         if (rc == LH_EXIT_OK) rc = lh_cli_finish_output("mesh");
     }

@@ -81,6 +81,8 @@ void lh_cli_write_vedge(FILE *f, const lh_trimesh *m, const lh_cli_edges *e, int
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle);
 /* The line that says refinement left subsegments unsplit (stats.segments_unsplit). */
 void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s);
+/* The line saying refinement stopped at its Steiner budget (s->steiner_budget_reached). */
+void lh_cli_trimesh_budget(FILE *out, const lh_trimesh_stats *s, double min_angle);
 
 /* An SVG picture of m (mesh_svg.c): triangles shaded by their smallest angle, red
  * below min_angle (0: no bound), the subsegments thick, the bad triangles outlined

@@ -218,6 +218,7 @@ static int run(const sw *o, const char *file)
                 printf("%zu triangles are below the bounds (input angles below %.4g degrees%s; -V lists them)\n",
                        s.bad_triangles, opt.min_angle, s.steiner_limit_reached ? ", or the Steiner limit" : "");
             if (s.segments_unsplit) lh_cli_trimesh_unsplit(stdout, &s);
+            if (s.steiner_budget_reached) lh_cli_trimesh_budget(stdout, &s, opt.min_angle);
         }
     }
     lh_trimesh_free(m);

@@ -4,13 +4,70 @@
 
 #include <math.h>
 
-static double len(const double *a, const double *b) { return hypot(b[0] - a[0], b[1] - a[1]); }
+/* A length or area m * 2^e (m >= 0), kept beyond the range of doubles: the report is
+ * computed per triangle on its difference vectors scaled by a power of two (largest
+ * component in [1, 2)), so it reads the same for the mesh scaled by any 2^k. */
+typedef struct xval {
+    double m;
+    long e;
+} xval;
+
+static int xless(xval a, xval b)
+{
+    if (a.m == 0 || b.m == 0) return a.m < b.m;
+    int ea, eb;
+    const double fa = frexp(a.m, &ea), fb = frexp(b.m, &eb);
+    return ea + a.e != eb + b.e ? ea + a.e < eb + b.e : fa < fb;
+}
+
+/* As %.6g, with a decimal exponent computed from e when the value is no normal double. */
+static void xprint(FILE *out, xval v)
+{
+    int ex;
+    frexp(v.m, &ex);
+    if (v.m == 0 || (ex + v.e > -1021 && ex + v.e < 1024)) {
+        fprintf(out, "%.6g", ldexp(v.m, (int)v.e));
+        return;
+    }
+    const double l = log10(v.m) + (double)v.e * 0.30102999566398119521;
+    double x = floor(l), mant = pow(10, l - x);
+    if (mant >= 9.999995) mant /= 10, x += 1;
+    fprintf(out, "%.6ge%+.0f", mant, x);
+}
+
+/* Triangle p's edge vectors (opposite corners 0, 1, 2) scaled by 2^-*e. */
+static void scaled_edges(const double *const *p, double d[3][2], long *e)
+{
+    int half = 0;
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 2; j++) {
+            d[k][j] = p[(k + 2) % 3][j] - p[(k + 1) % 3][j];
+            half |= isinf(d[k][j]) != 0;
+        }
+    double big = 0;
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 2; j++) {
+            if (half) d[k][j] = p[(k + 2) % 3][j] / 2 - p[(k + 1) % 3][j] / 2;
+            big = fmax(big, fabs(d[k][j]));
+        }
+    const int x = big > 0 ? ilogb(big) : 0;
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 2; j++) d[k][j] = ldexp(d[k][j], -x);
+    *e = x + half;
+}
 
 void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s)
 {
     fprintf(out, "%zu subsegments could not be split (shorter than 2^-40 of the domain's size, or their "
                  "split point refused): edges beside them may not be Delaunay, nor triangles meet the bounds\n",
             s->segments_unsplit);
+}
+
+void lh_cli_trimesh_budget(FILE *out, const lh_trimesh_stats *s, double min_angle)
+{
+    fprintf(out, "Refinement stopped at its budget of %zu Steiner points: the angle bound %.4g degrees is above "
+                 "%.4g, where Delaunay refinement need not end; %zu triangles are below the bounds\n",
+            s->steiner_budget, min_angle, LH_TRIMESH_PROVABLE_ANGLE, s->bad_triangles);
 }
 
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
@@ -21,15 +78,23 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
     const lh_index *t = lh_trimesh_triangles(m);
     const double *xy = lh_trimesh_points(m);
     size_t hist[18] = {0};
-    double rmin = INFINITY, rmax = 0, emin = INFINITY, emax = 0;
+    double rmin = INFINITY, rmax = 0;
+    xval emin = {INFINITY, 0}, emax = {0, 0}, amin = {nt ? INFINITY : 0, 0}, amax = {0, 0};
     for (size_t i = 0; i < nt; i++) {
         const double *p[3];
         for (int k = 0; k < 3; k++) p[k] = xy + 2 * (size_t)t[3 * i + k];
-        const double a = len(p[1], p[2]), b = len(p[2], p[0]), c = len(p[0], p[1]);
-        const double area = fabs((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])) / 2;
+        double d[3][2];
+        long ex;
+        scaled_edges(p, d, &ex);
+        const double a = hypot(d[0][0], d[0][1]), b = hypot(d[1][0], d[1][1]), c = hypot(d[2][0], d[2][1]);
+        const double area = fabs(d[1][0] * d[2][1] - d[1][1] * d[2][0]) / 2;
         const double r = a * b * c / (4 * area), sh = fmin(a, fmin(b, c));
         rmin = fmin(rmin, r / sh), rmax = fmax(rmax, r / sh);
-        emin = fmin(emin, sh), emax = fmax(emax, fmax(a, fmax(b, c)));
+        const xval xs = {sh, ex}, xl = {fmax(a, fmax(b, c)), ex}, xa = {area, 2 * ex};
+        if (i == 0 || xless(xs, emin)) emin = xs;
+        if (xless(emax, xl)) emax = xl;
+        if (i == 0 || xless(xa, amin)) amin = xa;
+        if (xless(amax, xa)) amax = xa;
         const double e[3] = {a, b, c};
         for (int k = 0; k < 3; k++) { /* law of cosines, clamped */
             const double x = e[k], y = e[(k + 1) % 3], z = e[(k + 2) % 3];
@@ -47,12 +112,15 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
                      "%zu overlapping segments shared, %zu holes and %zu regions outside the domain ignored\n",
                 s.duplicates_merged, s.segments_dropped, s.segments_overlapping, s.holes_ignored, s.regions_ignored);
     if (s.segments_unsplit) lh_cli_trimesh_unsplit(out, &s);
+    if (s.steiner_budget_reached) lh_cli_trimesh_budget(out, &s, min_angle);
     if (s.steiner_removed) fprintf(out, "Steiner points removed again (Chew's rule): %zu\n", s.steiner_removed);
     if (s.smoothing_moves) fprintf(out, "Smoothing: %zu moves\n", s.smoothing_moves);
     if (s.crossings_split) fprintf(out, "Crossing segments split: %zu\n", s.crossings_split);
     fprintf(out, "Angles: smallest %.4g, largest %.4g degrees\n", s.min_angle, s.max_angle);
-    fprintf(out, "Areas: smallest %.6g, largest %.6g; edges: shortest %.6g, longest %.6g\n", s.min_area,
-            s.max_area, emin, emax);
+    const xval xv[4] = {amin, amax, nt ? emin : (xval){0, 0}, emax};
+    const char *const xn[4] = {"Areas: smallest ", ", largest ", "; edges: shortest ", ", longest "};
+    for (int k = 0; k < 4; k++) fputs(xn[k], out), xprint(out, xv[k]);
+    fputc('\n', out);
     fprintf(out, "Radius-edge ratio: %.4g to %.4g\n", nt ? rmin : 0, rmax);
     fprintf(out, "Angle histogram (corners per 10 degrees):\n");
     for (int b = 0; b < 9; b++)

@@ -26,11 +26,35 @@ lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos)
     return -1;
 }
 
+/* The first triangle of the fan around a with an edge on subsegment s. */
+static lh_index subseg_in_fan(const lh__m2 *m, lh_index a, lh_index s, int *pos)
+{
+    lh__m2_fan f;
+    for (lh_index t = lh__m2_fan_first(m, &f, a); t >= 0; t = lh__m2_fan_next(m, &f))
+        for (int k = 0; k < 3; k++)
+            if (m->sg[3 * (size_t)t + k] == s) {
+                *pos = k;
+                return t;
+            }
+    return -1;
+}
+
+/* The fan from vt[a] is one of the components of a's neighbourhood: where a hole
+ * touches the outer ring, or a ring touches itself, the domain is pinched at a and
+ * the subsegment may lie in another component (its edge either way round), or in
+ * none of both ends' fans when both are such pinch vertices: then every triangle is
+ * searched. Both triangles beside a subsegment name it (m2.h). */
 lh_index lh__m2_find_subseg(const lh__m2 *m, lh_index s, int *pos)
 {
     const lh_index a = m->sv[2 * (size_t)s], b = m->sv[2 * (size_t)s + 1];
-    const lh_index t = lh__m2_find_edge(m, a, b, pos);
-    return t >= 0 ? t : lh__m2_find_edge(m, b, a, pos);
+    lh_index t = lh__m2_find_edge(m, a, b, pos);
+    if (t < 0) t = lh__m2_find_edge(m, b, a, pos);
+    if (t < 0) t = subseg_in_fan(m, a, s, pos);
+    if (t < 0) t = subseg_in_fan(m, b, s, pos);
+    for (size_t u = 0; t < 0 && u < m->nt; u++)
+        for (int k = 0; k < 3 && t < 0; k++)
+            if (m->v[3 * u] >= 0 && m->sg[3 * u + k] == s) t = (lh_index)u, *pos = k;
+    return t;
 }
 
 /* Marks edge t:pos (and its twin) as subsegment s. */

@@ -10,18 +10,21 @@
 #include <math.h>
 
 #include "m2.h"
+#include "m2_geom.h"
 
 /* p encroaches subsegment s: it sees s under more than 90 degrees (inside the
  * diametral circle, Ruppert 1995), or, with m->lens set for an angle bound t, more
  * than 180 - 2t degrees (inside the diametral lens, Shewchuk 2002 §4.4): the apex
- * angle's cosine is below -cos 2t, i.e. dot < 0 and dot^2 >= cos^2 2t |pa|^2 |pb|^2. */
+ * angle's cosine is below -cos 2t, i.e. dot < 0 and dot^2 >= cos^2 2t |pa|^2 |pb|^2,
+ * on the two vectors each scaled by a power of two (m2_geom.h). */
 int lh__m2_encroaches(const lh__m2 *m, lh_index s, const double *p)
 {
-    const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *b = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
-    const double ax = a[0] - p[0], ay = a[1] - p[1], bx = b[0] - p[0], by = b[1] - p[1];
-    const double dot = ax * bx + ay * by;
+    double u[2], v[2]; /* p->a and p->b, each scaled alone: the angle is scale-free */
+    lh__g_vec(p, lh__m2_pt(m, m->sv[2 * (size_t)s]), u);
+    lh__g_vec(p, lh__m2_pt(m, m->sv[2 * (size_t)s + 1]), v);
+    const double dot = lh__g_dot(u, v);
     if (!(dot < 0)) return 0;
-    return m->lens <= 0 || dot * dot >= m->lens * (ax * ax + ay * ay) * (bx * bx + by * by);
+    return m->lens <= 0 || dot * dot >= m->lens * (u[0] * u[0] + u[1] * u[1]) * (v[0] * v[0] + v[1] * v[1]);
 }
 
 static lh_status grow_cavity(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index split,

@@ -21,88 +21,113 @@
  * rounding), nor one whose split point was refused: both are counted
  * (stats.segments_unsplit), and the Steiner budget (-S) stops everything.
  * Decisions that change the mesh are exact (m2_insert.c); the quality measures,
- * split points and centres are floating-point constructions.
+ * split points and centres are floating-point constructions, each on difference
+ * vectors scaled by a power of two (m2_geom.h): no square or product over- or
+ * underflows for any finite coordinates, and the mesh of 2^k P is 2^k times the mesh
+ * of P while the coordinates of both stay normal.
  */
 #include <math.h>
 #include <string.h>
 
 #include "m2.h"
+#include "m2_geom.h"
 #include "refine.h"
 
 #define PI 3.14159265358979323846
 
-typedef struct item { double key; lh_index t, a, b, c; } item; /* a bad triangle, as queued */
+/* A bad triangle as queued: the angle-bad ones first, the one with the shortest
+ * shortest edge (km * 2^ke, km in [1, 2): lh__g_norm) first among them; then those
+ * only too large. */
+typedef struct item {
+    int area_only;
+    long ke;
+    double km;
+    lh_index t, a, b, c;
+} item;
 
 typedef struct rf {
     lh__m2 *m;
     lh__m2_cavity *c;
     lh__m2_ins ins;
     const lh__refine_opts *o;
-    double ratio2;          /* bad when (R / shortest edge)^2 exceeds this (0: none) */
+    double sin_bound;       /* bad when the smallest angle's sine is below this (0: none) */
     double off_h;           /* off-centre distance from the shortest edge, per unit length */
-    double minlen2;
+    double minlen_m;        /* the resolution floor, minlen_m * 2^minlen_e             */
+    long minlen_e;
     item *heap;
     size_t heap_count, heap_cap;
     lh_index *segq;         /* 2 per entry: subsegment, forced */
     size_t segq_count, segq_cap;
     size_t steiner;
+    size_t budget;          /* above the provable angle: at most this many (0: none) */
     unsigned char *stuck;   /* per subsegment: a split was refused or is too short */
     size_t stuck_count, stuck_cap;
     lh_index *gone;         /* free vertices to remove before a split (Chew's rule) */
     size_t gone_count, gone_cap;
 } rf;
 
-static double dist2(const double *a, const double *b)
-{
-    const double dx = a[0] - b[0], dy = a[1] - b[1];
-    return dx * dx + dy * dy;
-}
-
-/* Triangle t's squared edge lengths (l2[k] opposite vertex k); returns twice its area. */
-static double measure(const lh__m2 *m, lh_index t, double l2[3])
+/* Triangle t measured scale-free (m2_geom.h). */
+static void measure(const lh__m2 *m, lh_index t, lh__g_tri *g)
 {
     const lh_index *v = m->v + 3 * (size_t)t;
-    const double *a = lh__m2_pt(m, v[0]), *b = lh__m2_pt(m, v[1]), *c = lh__m2_pt(m, v[2]);
-    l2[0] = dist2(b, c), l2[1] = dist2(c, a), l2[2] = dist2(a, b);
-    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    lh__g_measure(lh__m2_pt(m, v[0]), lh__m2_pt(m, v[1]), lh__m2_pt(m, v[2]), g);
 }
 
-/* The badness of triangle t: > 0 for an angle below the bound (the squared ratio),
- * -1 for an area above its bound only, 0 for a good triangle. */
-static double badness(const rf *r, lh_index t)
+/* The badness of triangle t: 1 for an angle below the bound (radius-edge ratio
+ * above 1 / (2 sin bound), i.e. the smallest angle's sine below sin bound), -1 for an
+ * area above its bound only, 0 for a good triangle. Scale-free: m2_geom.h. */
+static int badness(const rf *r, lh_index t, lh__g_tri *g)
 {
     const lh__m2 *m = r->m;
-    double l2[3];
-    const double area2 = measure(m, t, l2), la = l2[0], lb = l2[1], lc = l2[2];
-    if (r->ratio2 > 0) {
-        const double lmin = la < lb ? (la < lc ? la : lc) : (lb < lc ? lb : lc);
-        /* R^2 = la lb lc / (4 area2^2) with squared lengths and twice the area, so
-           q = 4 (R / shortest)^2 */
-        const double q = la * lb * lc / (area2 * area2 * lmin);
-        if (q > r->ratio2) return q;
-    }
+    measure(m, t, g);
+    if (r->sin_bound > 0 && g->sin_min < r->sin_bound) return 1;
     double bound = r->o->max_area;
     if (r->o->region_areas && m->tarea && m->tarea[t] > 0 && (bound <= 0 || m->tarea[t] < bound))
         bound = m->tarea[t];
-    return bound > 0 && area2 / 2 > bound ? -1 : 0;
+    return lh__g_area_above(g, bound) ? -1 : 0;
 }
 
-/* Whether segment x-y passes strictly within the circle (o, r2): its nearest point
- * to o is closer than the radius. */
-static int edge_meets_disc(const double *x, const double *y, const double *o, double r2)
+/* Whether point x lies strictly within the circle around o of radius rm * 2^re. */
+static int in_disc(const double *x, const double *o, double rm, long re)
 {
-    const double dx = y[0] - x[0], dy = y[1] - x[1], l2 = dx * dx + dy * dy;
-    double f = l2 > 0 ? ((o[0] - x[0]) * dx + (o[1] - x[1]) * dy) / l2 : 0;
+    double v[2];
+    const int e = lh__g_vec(o, x, v);
+    return lh__g_cmp(lh__g_len(v[0], v[1]), e, rm, re) < 0;
+}
+
+/* Whether segment x-y passes strictly within that circle: its nearest point to o is
+ * closer than the radius (x, y taken relative to o in one scaled frame). */
+static int edge_meets_disc(const double *x, const double *y, const double *o, double rm, long re)
+{
+    const double *q[2] = {x, y};
+    double v[2][2];
+    const int e = lh__g_vecs(o, q, 2, v);
+    const double dx = v[1][0] - v[0][0], dy = v[1][1] - v[0][1], l2 = dx * dx + dy * dy;
+    double f = l2 > 0 ? -(v[0][0] * dx + v[0][1] * dy) / l2 : 0;
     f = f < 0 ? 0 : f > 1 ? 1 : f;
-    const double q[2] = {x[0] + f * dx, x[1] + f * dy};
-    return dist2(q, o) < r2;
+    return lh__g_cmp(lh__g_len(v[0][0] + f * dx, v[0][1] + f * dy), e, rm, re) < 0;
+}
+
+/* Whether a-b is shorter than the resolution floor. */
+static int below_minlen(const rf *r, const double *a, const double *b)
+{
+    double d[2];
+    const int e = lh__g_vec(a, b, d);
+    return lh__g_cmp(lh__g_len(d[0], d[1]), e, r->minlen_m, r->minlen_e) < 0;
+}
+
+/* Whether x goes before y in the queue. */
+static int higher(const item *x, const item *y)
+{
+    if (x->area_only != y->area_only) return y->area_only;
+    return !x->area_only && (x->ke != y->ke ? x->ke < y->ke : x->km < y->km);
 }
 
 static void heap_up(item *h, size_t i)
 {
     while (i) {
         const size_t p = (i - 1) / 2;
-        if (h[p].key >= h[i].key) break;
+        if (!higher(&h[i], &h[p])) break;
         const item x = h[p];
         h[p] = h[i], h[i] = x, i = p;
     }
@@ -112,8 +137,8 @@ static void heap_down(item *h, size_t n, size_t i)
 {
     for (;;) {
         size_t l = 2 * i + 1, b = i;
-        if (l < n && h[l].key > h[b].key) b = l;
-        if (l + 1 < n && h[l + 1].key > h[b].key) b = l + 1;
+        if (l < n && higher(&h[l], &h[b])) b = l;
+        if (l + 1 < n && higher(&h[l + 1], &h[b])) b = l + 1;
         if (b == i) return;
         const item x = h[b];
         h[b] = h[i], h[i] = x, i = b;
@@ -122,7 +147,8 @@ static void heap_down(item *h, size_t n, size_t i)
 
 static lh_status queue_triangle(rf *r, lh_index t)
 {
-    const double q = badness(r, t);
+    lh__g_tri g;
+    const int q = badness(r, t, &g);
     if (q == 0) return LH_OK;
     if (!lh__m2_grow(r->m, (void **)&r->heap, r->heap_count, &r->heap_cap, r->heap_count + 1, sizeof(item)))
         return LH_ERR_NOMEM;
@@ -131,9 +157,9 @@ static lh_status queue_triangle(rf *r, lh_index t)
        only too large): small features fix their neighbourhoods' sizes before larger
        triangles are split, which measured 10-30% fewer triangles than the worst
        angle first (Shewchuk 1996 §3 compares worst-first with first-in first-out) */
-    const double *a = lh__m2_pt(r->m, v[0]), *b = lh__m2_pt(r->m, v[1]), *c = lh__m2_pt(r->m, v[2]);
-    const double key = q > 0 ? -fmin(dist2(b, c), fmin(dist2(c, a), dist2(a, b))) : -HUGE_VAL;
-    r->heap[r->heap_count] = (item){key, t, v[0], v[1], v[2]};
+    long ke;
+    const double km = lh__g_norm(g.len[g.k], g.e, &ke);
+    r->heap[r->heap_count] = (item){q < 0, ke, km, t, v[0], v[1], v[2]};
     heap_up(r->heap, r->heap_count++);
     return LH_OK;
 }
@@ -186,10 +212,11 @@ static int encroaches_resolvably(const rf *r, lh_index s, const double *p)
 {
     const lh__m2 *m = r->m;
     if (!lh__m2_encroaches(m, s, p)) return 0;
-    const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *b = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
-    const double cr = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-    const double l2 = dist2(a, b);
-    return cr * cr >= 0x1p-80 * l2 * l2; /* distance = |cr| / |ab| */
+    const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *q[2] = {lh__m2_pt(m, m->sv[2 * (size_t)s + 1]), p};
+    double v[2][2];
+    lh__g_vecs(a, q, 2, v);
+    const double cr = lh__g_cross(v[0], v[1]), l2 = v[0][0] * v[0][0] + v[0][1] * v[0][1];
+    return fabs(cr) >= ldexp(l2, -40); /* distance = |cr| / |ab| */
 }
 
 /* Whether triangle t is a sliver below the resolution floor: its smallest altitude
@@ -198,9 +225,10 @@ static int encroaches_resolvably(const rf *r, lh_index s, const double *p)
  * encroaches_resolvably); it is left, and reported. */
 static int below_floor(const rf *r, lh_index t)
 {
-    double l2[3];
-    const double area2 = measure(r->m, t, l2), lmax = fmax(l2[0], fmax(l2[1], l2[2]));
-    return area2 * area2 < 0x1p-80 * lmax * lmax;
+    lh__g_tri g;
+    measure(r->m, t, &g);
+    const double lmax = fmax(g.len[0], fmax(g.len[1], g.len[2]));
+    return g.area2 < ldexp(lmax * lmax, -40);
 }
 
 /* Subsegment s encroached by the apex of a triangle beside it (and splittable):
@@ -253,10 +281,7 @@ static int corner_below(const lh__m2 *m, lh_index o, lh_index x, lh_index parent
             const lh_index y = m->v[3 * (size_t)t + (i + j) % 3];
             const lh_index e = m->sg[3 * (size_t)t + (i + 3 - j) % 3];
             if (y == x || e < 0 || (parent >= 0 && m->sp[e] == parent)) continue;
-            const double *py = lh__m2_pt(m, y);
-            const double ux = px[0] - po[0], uy = px[1] - po[1], vx = py[0] - po[0], vy = py[1] - po[1];
-            const double dot = ux * vx + uy * vy;
-            if (dot > 0 && dot * dot > cmin * cmin * (ux * ux + uy * uy) * (vx * vx + vy * vy)) return 1;
+            if (lh__g_cos(po, px, lh__m2_pt(m, y)) > cmin) return 1;
         }
     }
     return 0;
@@ -274,13 +299,14 @@ static void split_point(const rf *r, lh_index s, double *p)
     const int ib = (size_t)b < m->n_input && corner_below(m, b, a, m->sp[s], 0);
     const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
     double f = 0.5;
-    if (ia != ib) {
-        const double len = sqrt(dist2(pa, pb));
+    if (ia != ib) { /* on the scaled length: the power of two scales with it */
+        double v[2];
+        lh__g_vec(pa, pb, v);
+        const double len = lh__g_len(v[0], v[1]);
         const double d = ldexp(1.0, (int)floor(log2(len / 2) + 0.5)); /* nearest power of 2 */
         f = ia ? d / len : 1 - d / len;
     }
-    p[0] = pa[0] + f * (pb[0] - pa[0]);
-    p[1] = pa[1] + f * (pb[1] - pa[1]);
+    lh__g_along(pa, pb, f, p);
 }
 
 static void set_point_data(rf *r, lh_index pi, lh_index s, const double *w, const lh_index *from)
@@ -298,9 +324,10 @@ static void set_point_data(rf *r, lh_index pi, lh_index s, const double *w, cons
     }
 }
 
-/* The free vertices strictly inside the circle (o, r2) around subsegment s, in
- * r->gone: a flood from s's sides across unconstrained edges that pass within it. */
-static lh_status free_vertices_in_circle(rf *r, lh_index s, const double *o, double r2)
+/* The free vertices strictly inside the circle around o of radius rm * 2^re, about
+ * subsegment s, in r->gone: a flood from s's sides across unconstrained edges that
+ * pass within it. */
+static lh_status free_vertices_in_circle(rf *r, lh_index s, const double *o, double rm, long re)
 {
     lh__m2 *m = r->m;
     lh__m2_cavity *c = r->c;
@@ -320,7 +347,7 @@ static lh_status free_vertices_in_circle(rf *r, lh_index s, const double *o, dou
         const size_t u = (size_t)c->stack[i];
         for (int k = 0; k < 3; k++) {
             const lh_index x = m->v[3 * u + k], n = m->nb[3 * u + k];
-            if ((size_t)x >= m->n_input && m->pseg[x] == -1 && dist2(lh__m2_pt(m, x), o) < r2) {
+            if ((size_t)x >= m->n_input && m->pseg[x] == -1 && in_disc(lh__m2_pt(m, x), o, rm, re)) {
                 size_t g = 0;
                 while (g < r->gone_count && r->gone[g] != x) g++;
                 if (g == r->gone_count &&
@@ -329,7 +356,7 @@ static lh_status free_vertices_in_circle(rf *r, lh_index s, const double *o, dou
                 if (g == r->gone_count) r->gone[r->gone_count++] = x;
             }
             if (n < 0 || m->mark[n] == e || m->sg[3 * u + k] >= 0 ||
-                !edge_meets_disc(lh__m2_pt(m, m->v[3 * u + (k + 1) % 3]), lh__m2_pt(m, m->v[3 * u + (k + 2) % 3]), o, r2))
+                !edge_meets_disc(lh__m2_pt(m, m->v[3 * u + (k + 1) % 3]), lh__m2_pt(m, m->v[3 * u + (k + 2) % 3]), o, rm, re))
                 continue;
             m->mark[n] = e;
             if ((st = lh__m2_stack_push(m, c, n)) != LH_OK) return st;
@@ -347,8 +374,10 @@ static lh_status remove_free_in_circle(rf *r, lh_index s)
 {
     lh__m2 *m = r->m;
     const double *a = lh__m2_pt(m, m->sv[2 * (size_t)s]), *b = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
-    const double o[2] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2};
-    lh_status st = free_vertices_in_circle(r, s, o, dist2(a, b) / 4);
+    double o[2], d[2];
+    lh__g_along(a, b, 0.5, o);
+    const int e = lh__g_vec(a, b, d);
+    lh_status st = free_vertices_in_circle(r, s, o, lh__g_len(d[0], d[1]) / 2, e);
     for (size_t g = 0; g < r->gone_count && st == LH_OK; g++) {
         int removed;
         st = lh__m2_remove_vertex(m, r->c, r->gone[g], &removed);
@@ -365,7 +394,7 @@ static lh_status split_segment(rf *r, lh_index s, int forced, int *done)
     const lh_index a = m->sv[2 * (size_t)s], b = m->sv[2 * (size_t)s + 1];
     *done = 0;
     if ((size_t)s < r->stuck_count && r->stuck[s]) return LH_OK;
-    if (dist2(lh__m2_pt(m, a), lh__m2_pt(m, b)) < r->minlen2) return set_stuck(r, s);
+    if (below_minlen(r, lh__m2_pt(m, a), lh__m2_pt(m, b))) return set_stuck(r, s);
     lh_status st;
     if (forced && (st = remove_free_in_circle(r, s)) != LH_OK) return st;
     double p[2];
@@ -374,7 +403,10 @@ static lh_status split_segment(rf *r, lh_index s, int forced, int *done)
     r->ins.origin = NULL;
     if ((st = lh__m2_insert_point(m, r->c, p, -1, s, &r->ins)) != LH_OK) return st;
     if (r->ins.result != LH__M2_INSERTED) return set_stuck(r, s);
-    const double la = sqrt(dist2(p, lh__m2_pt(m, a))), lb = sqrt(dist2(p, lh__m2_pt(m, b)));
+    const double *q[2] = {lh__m2_pt(m, a), lh__m2_pt(m, b)};
+    double d[2][2];
+    lh__g_vecs(p, q, 2, d);
+    const double la = lh__g_len(d[0][0], d[0][1]), lb = lh__g_len(d[1][0], d[1][1]);
     const double w[3] = {lb / (la + lb), la / (la + lb), 0};
     const lh_index from[3] = {a, b, -1};
     set_point_data(r, r->ins.vertex, s, w, from);
@@ -396,49 +428,48 @@ static int on_small_angle_shell(const rf *r, lh_index u, lh_index v)
         for (int j = 0; j < 2; j++)
             if (r->o->dup[A[i]] == r->o->dup[B[j]]) apex = r->o->dup[A[i]], ea = r->o->dup[A[1 - i]], eb = r->o->dup[B[1 - j]];
     if (apex < 0) return 0;
-    const double *o = lh__m2_pt(m, apex), *pa = lh__m2_pt(m, ea), *pb = lh__m2_pt(m, eb);
-    const double ax = pa[0] - o[0], ay = pa[1] - o[1], bx = pb[0] - o[0], by = pb[1] - o[1];
-    const double cosang = (ax * bx + ay * by) / sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
-    if (cosang <= 0.5) return 0; /* 60 degrees or more */
-    const double du = dist2(lh__m2_pt(m, u), o), dv = dist2(lh__m2_pt(m, v), o);
+    const double *o = lh__m2_pt(m, apex);
+    if (lh__g_cos(o, lh__m2_pt(m, ea), lh__m2_pt(m, eb)) <= 0.5) return 0; /* 60 degrees or more */
+    const double *q[2] = {lh__m2_pt(m, u), lh__m2_pt(m, v)};
+    double d[2][2];
+    lh__g_vecs(o, q, 2, d);
+    const double du = d[0][0] * d[0][0] + d[0][1] * d[0][1], dv = d[1][0] * d[1][0] + d[1][1] * d[1][1];
     return fabs(du - dv) <= 2e-3 * (du > dv ? du : dv); /* distances within 0.1% */
 }
 
-/* The point to insert for bad triangle t: its off-centre or circumcentre. */
+/* The point to insert for bad triangle t: its off-centre or circumcentre. With b-c
+ * the shortest edge and a the corner opposite (the smallest angle, alpha), the
+ * circumcentre lies on the bisector of b-c, |bc| cot(alpha) / 2 from its midpoint
+ * towards a; the off-centre (Üngör 2004) no further than off_h |bc|. Computed in the
+ * triangle's scaled frame (m2_geom.h), so no circumcentre ever overflows: a sliver's
+ * is put 2^60 |bc| away at most. */
 static void centre(const rf *r, lh_index t, int by_angle, double *p, lh_index *su, lh_index *sv)
 {
     const lh__m2 *m = r->m;
     const lh_index *v = m->v + 3 * (size_t)t;
-    int k = 0; /* the shortest edge is opposite vertex k */
-    double best = INFINITY;
-    for (int j = 0; j < 3; j++) {
-        const double l = dist2(lh__m2_pt(m, v[(j + 1) % 3]), lh__m2_pt(m, v[(j + 2) % 3]));
-        if (l < best) best = l, k = j;
-    }
-    *su = v[(k + 1) % 3], *sv = v[(k + 2) % 3];
-    /* circumcentre relative to the apex opposite the shortest edge's first point */
-    const double *a = lh__m2_pt(m, v[k]), *b = lh__m2_pt(m, v[(k + 1) % 3]), *c = lh__m2_pt(m, v[(k + 2) % 3]);
-    const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
-    const double d = 2 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-    double ux = (cy * b2 - by * c2) / d, uy = (bx * c2 - cx * b2) / d;
-    if (by_angle && r->off_h > 0) {
-        /* off-centre: on the bisector of b-c, at off_h * |bc| from its midpoint */
-        const double mx = (bx + cx) / 2, my = (by + cy) / 2, dx = ux - mx, dy = uy - my;
-        const double dist = sqrt(dx * dx + dy * dy), h = r->off_h * sqrt(best);
-        if (dist > h) ux = mx + dx * (h / dist), uy = my + dy * (h / dist);
-    }
-    p[0] = a[0] + ux;
-    p[1] = a[1] + uy;
+    lh__g_tri g;
+    measure(m, t, &g);
+    const int k = g.k, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    *su = v[k1], *sv = v[k2];
+    const double *u = g.d[k2], w[2] = {-g.d[k1][0], -g.d[k1][1]}, *bc = g.d[k]; /* a->b, a->c, b->c */
+    double h = lh__g_dot(u, w) / g.area2 / 2;
+    if (by_angle && r->off_h > 0 && h > r->off_h) h = r->off_h;
+    if (!(h <= 0x1p60)) h = 0x1p60;
+    const double *a = lh__m2_pt(m, v[k]);
+    p[0] = a[0] + ldexp((u[0] + w[0]) / 2 - bc[1] * h, g.e);
+    p[1] = a[1] + ldexp((u[1] + w[1]) / 2 + bc[0] * h, g.e);
 }
 
 /* Barycentric weights of p in triangle t, for attribute interpolation. */
 static void weights(const lh__m2 *m, lh_index ia, lh_index ib, lh_index ic, const double *p,
                     double *w)
 {
-    const double *a = lh__m2_pt(m, ia), *b = lh__m2_pt(m, ib), *c = lh__m2_pt(m, ic);
-    const double den = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    w[1] = ((p[0] - a[0]) * (c[1] - a[1]) - (p[1] - a[1]) * (c[0] - a[0])) / den;
-    w[2] = ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])) / den;
+    const double *q[3] = {lh__m2_pt(m, ib), lh__m2_pt(m, ic), p};
+    double d[3][2]; /* b - a, c - a, p - a, scaled together: the ratios are scale-free */
+    lh__g_vecs(lh__m2_pt(m, ia), q, 3, d);
+    const double den = lh__g_cross(d[0], d[1]);
+    w[1] = lh__g_cross(d[2], d[1]) / den;
+    w[2] = lh__g_cross(d[0], d[2]) / den;
     w[0] = 1 - w[1] - w[2];
 }
 
@@ -448,17 +479,18 @@ static lh_status split_triangle(rf *r, const item *it)
     lh__m2 *m = r->m;
     lh_index su, sv;
     double p[2], w[3];
-    if (badness(r, it->t) > 0) {
+    lh__g_tri gt;
+    if (badness(r, it->t, &gt) > 0) {
         centre(r, it->t, 1, p, &su, &sv);
-        if (on_small_angle_shell(r, su, sv) || dist2(lh__m2_pt(m, su), lh__m2_pt(m, sv)) < r->minlen2)
-            return LH_OK;
+        if (on_small_angle_shell(r, su, sv) || below_minlen(r, lh__m2_pt(m, su), lh__m2_pt(m, sv))) return LH_OK;
     } else {
         centre(r, it->t, 0, p, &su, &sv);
     }
     /* walk from the triangle's centroid (inside it unless rounding says otherwise) */
-    double g[2];
-    const double *ta = lh__m2_pt(m, it->a), *tb = lh__m2_pt(m, it->b), *tc = lh__m2_pt(m, it->c);
-    g[0] = (ta[0] + tb[0] + tc[0]) / 3, g[1] = (ta[1] + tb[1] + tc[1]) / 3;
+    double g[2], d[2][2];
+    const double *ta = lh__m2_pt(m, it->a), *tbc[2] = {lh__m2_pt(m, it->b), lh__m2_pt(m, it->c)};
+    const int e = lh__g_vecs(ta, tbc, 2, d);
+    g[0] = ta[0] + ldexp((d[0][0] + d[1][0]) / 3, e), g[1] = ta[1] + ldexp((d[0][1] + d[1][1]) / 3, e);
     const int inside = lh__m2_orient_pt(m, it->a, it->b, g) > 0 && lh__m2_orient_pt(m, it->b, it->c, g) > 0 &&
                        lh__m2_orient_pt(m, it->c, it->a, g) > 0;
     r->ins.origin = inside ? g : NULL;
@@ -509,6 +541,10 @@ static lh_status run(rf *r)
             r->o->out->steiner_limit_reached = 1;
             return LH_OK;
         }
+        if (r->budget && r->steiner >= r->budget) {
+            r->o->out->steiner_budget_reached = 1;
+            return LH_OK;
+        }
         if (r->segq_count) {
             const lh_index s = r->segq[2 * (r->segq_count - 1)];
             const int forced = (int)r->segq[2 * (r->segq_count - 1) + 1];
@@ -544,14 +580,38 @@ static lh_status start(rf *r)
     return LH_OK;
 }
 
+/* The Steiner budget above the provable angle bound, where refinement may add points
+ * without end (la.poly at 36 degrees: millions). A quality mesh grades from each
+ * feature geometrically, so its size grows with the logarithm of the feature sizes'
+ * ratios: each triangle t of the mesh before refinement allows 64 (1 + log2 of its
+ * longest edge squared over its area) points, plus 4 per multiple of its area bound
+ * that its area is, plus 1024 — 16 to 100 times what la, A, face, double_hex and
+ * fish-and-rectangle.poly take at 34 degrees. */
+static size_t budget(const rf *r)
+{
+    const lh__m2 *m = r->m;
+    double sum = 1024;
+    for (size_t t = 0; t < m->nt; t++) {
+        if (m->v[3 * t] < 0) continue;
+        lh__g_tri g;
+        measure(m, (lh_index)t, &g);
+        const double lmax = fmax(g.len[0], fmax(g.len[1], g.len[2]));
+        sum += 64 * (1 + log2(lmax * lmax / g.area2));
+        double bound = r->o->max_area;
+        if (r->o->region_areas && m->tarea && m->tarea[t] > 0 && (bound <= 0 || m->tarea[t] < bound))
+            bound = m->tarea[t];
+        if (bound > 0) sum += 4 * ldexp(g.area2 / 2 / bound, 2 * g.e);
+    }
+    return sum < 0x1p62 ? (size_t)sum : SIZE_MAX;
+}
+
 lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
 {
     rf r;
     memset(&r, 0, sizeof r);
     r.m = m, r.c = c, r.o = o;
     if (o->min_angle > 0) {
-        const double s = sin(o->min_angle * PI / 180);
-        r.ratio2 = 1 / (s * s); /* 4 (R / shortest)^2 > 1 / sin^2 */
+        r.sin_bound = sin(o->min_angle * PI / 180);
         const double cs = cos(o->min_angle * PI / 180);
         r.off_h = 0.475 * sqrt((1 + cs) / (1 - cs));
     }
@@ -572,7 +632,12 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
        went down onto the grid of doubles, where rounded points keep no shell's shape,
        without end (fuzz/README.md, finding 8) */
     const double mag = fmax(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
-    r.minlen2 = ldexp(fmax(dist2(lo, hi), mag * mag), -80);
+    double d[2];
+    const int e = lh__g_vec(lo, hi, d);
+    const double diam = lh__g_len(d[0], d[1]);
+    const int by_diam = lh__g_cmp(diam, e, mag, 0) > 0;
+    r.minlen_m = by_diam ? diam : mag, r.minlen_e = (by_diam ? e : 0) - 40;
+    if (o->min_angle > LH_TRIMESH_PROVABLE_ANGLE) r.budget = o->out->steiner_budget = budget(&r);
     lh_status st = start(&r);
     if (st == LH_OK) st = run(&r);
     o->out->steiner_points = r.steiner;
@@ -592,13 +657,11 @@ lh_status lh__m2_bad_triangles(lh__m2 *m, const lh__refine_opts *o, lh_index *ba
     rf r;
     memset(&r, 0, sizeof r);
     r.m = m, r.o = o;
-    if (o->min_angle > 0) {
-        const double s = sin(o->min_angle * PI / 180);
-        r.ratio2 = 1 / (s * s);
-    }
+    if (o->min_angle > 0) r.sin_bound = sin(o->min_angle * PI / 180);
     size_t n = 0;
     for (size_t t = 0; t < m->nt; t++) {
-        if (m->v[3 * t] < 0 || badness(&r, (lh_index)t) == 0) continue;
+        lh__g_tri g;
+        if (m->v[3 * t] < 0 || badness(&r, (lh_index)t, &g) == 0) continue;
         if (bad) bad[n] = (lh_index)t;
         n++;
     }

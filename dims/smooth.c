@@ -13,6 +13,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "m2_geom.h"
 #include "refine.h"
 
 /* The cosine of the smallest angle of triangle a, b, c (the largest cosine). */
@@ -21,9 +22,7 @@ static double worst_cos(const double *a, const double *b, const double *c)
     const double *p[3] = {a, b, c};
     double worst = -1;
     for (int k = 0; k < 3; k++) {
-        const double *o = p[k], *u = p[(k + 1) % 3], *v = p[(k + 2) % 3];
-        const double ux = u[0] - o[0], uy = u[1] - o[1], vx = v[0] - o[0], vy = v[1] - o[1];
-        const double cs = (ux * vx + uy * vy) / sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
+        const double cs = lh__g_cos(p[k], p[(k + 1) % 3], p[(k + 2) % 3]); /* scale-free */
         worst = cs > worst ? cs : worst;
     }
     return worst;
@@ -58,8 +57,9 @@ static double star_worst(const lh__m2 *m, const lh_index *ring, const lh_index *
         if (lh__m2_orient_pt(m, ring[i], ring[(i + 1) % n], c) <= 0) return 2;
         double bound = max_area;
         if (m->tarea && m->tarea[tri[i]] > 0 && (bound <= 0 || m->tarea[tri[i]] < bound)) bound = m->tarea[tri[i]];
-        const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-        if (bound > 0 && area2 / 2 > bound) return 2;
+        lh__g_tri g;
+        lh__g_measure(a, b, c, &g);
+        if (lh__g_area_above(&g, bound)) return 2;
         const double w = worst_cos(c, a, b);
         worst = w > worst ? w : worst;
     }

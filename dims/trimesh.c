@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "m2.h"
+#include "m2_geom.h"
 #include "refine.h"
 
 struct lh_trimesh {
@@ -216,40 +217,30 @@ done:
     return st;
 }
 
+/* The statistics, scale-free (m2_geom.h): each angle atan2(2 area, dot) in the
+ * triangle's scaled frame; an area beyond the range of doubles is 0 or infinity. */
 static void measure(const lh_trimesh *r, lh_trimesh_stats *s)
 {
     s->triangles = r->nt;
-    double cmin = 1, cmax = -1; /* cosine of the largest angle, of the smallest */
+    double amin = INFINITY, amax = 0; /* radians */
     s->min_area = r->nt ? INFINITY : 0;
     s->max_area = 0;
     for (size_t t = 0; t < r->nt; t++) {
-        const double *p[3];
-        double l2[3];
-        for (int k = 0; k < 3; k++) p[k] = r->xy + 2 * (size_t)r->tri[3 * t + k];
-        for (int k = 0; k < 3; k++) {
-            const double dx = p[(k + 2) % 3][0] - p[(k + 1) % 3][0], dy = p[(k + 2) % 3][1] - p[(k + 1) % 3][1];
-            l2[k] = dx * dx + dy * dy; /* the edge opposite corner k */
+        const lh_index *v = r->tri + 3 * t;
+        lh__g_tri g;
+        lh__g_measure(r->xy + 2 * (size_t)v[0], r->xy + 2 * (size_t)v[1], r->xy + 2 * (size_t)v[2], &g);
+        for (int k = 0; k < 3; k++) { /* corner k: its edges d[k+2] and -d[k+1] */
+            const double a = atan2(g.area2, -lh__g_dot(g.d[(k + 1) % 3], g.d[(k + 2) % 3]));
+            amin = a < amin ? a : amin;
+            amax = a > amax ? a : amax;
         }
-        int lo = 0, hi = 0;
-        for (int k = 1; k < 3; k++) {
-            if (l2[k] < l2[lo]) lo = k;
-            if (l2[k] > l2[hi]) hi = k;
-        }
-        if (lo == hi) hi = (lo + 1) % 3; /* equilateral */
-        for (int j = 0; j < 2; j++) {
-            const int k = j ? hi : lo;
-            const double b = l2[(k + 1) % 3], c = l2[(k + 2) % 3];
-            double cs = (b + c - l2[k]) / (2 * sqrt(b * c));
-            cs = cs > 1 ? 1 : cs < -1 ? -1 : cs;
-            if (j) cmin = cs < cmin ? cs : cmin; else cmax = cs > cmax ? cs : cmax;
-        }
-        const double area = ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])) / 2;
+        const double area = ldexp(g.area2 / 2, 2 * g.e);
         s->min_area = area < s->min_area ? area : s->min_area;
         s->max_area = area > s->max_area ? area : s->max_area;
     }
     const double deg = 180 / 3.14159265358979323846;
-    s->min_angle = r->nt ? acos(cmax) * deg : 0;
-    s->max_angle = r->nt ? acos(cmin) * deg : 0;
+    s->min_angle = r->nt ? amin * deg : 0;
+    s->max_angle = r->nt ? amax * deg : 0;
 }
 
 /* The even-odd rule needs closed rings. The parity of the segments a path crosses

@@ -13,35 +13,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef lh_status (*reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, char *, size_t);
+typedef lh_test_pslg_reader reader;
 
-static lh_status load(reader rd, const char *path, lh_pslg *g)
-{
-    char full[512], msg[256];
-    snprintf(full, sizeof full, "%s/%s", LH_TEST_DATA_DIR, path);
-    FILE *f = fopen(full, "rb");
-    if (!f) return LH_ERR_IO;
-    lh_status st = rd(f, path, NULL, g, msg, sizeof msg);
-    fclose(f);
-    return st;
-}
-
-static lh_status load_text(const char *text, lh_pslg *g)
-{
-    FILE *f = lh_test_file(text, strlen(text));
-    if (!f) return LH_ERR_IO;
-    char msg[256];
-    lh_status st = lh_poly_read(f, "t.poly", NULL, g, msg, sizeof msg);
-    fclose(f);
-    return st;
-}
-
-static lh_status check(const lh_trimesh *m, char *msg, size_t size)
-{
-    return lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
-                            lh_trimesh_triangle_count(m), lh_trimesh_triangles(m),
-                            lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0, NULL, msg, size);
-}
+static lh_status load(reader rd, const char *path, lh_pslg *g) { return lh_test_pslg_file(rd, LH_TEST_DATA_DIR, path, g); }
+static lh_status load_text(const char *text, lh_pslg *g) { return lh_test_pslg_text(text, g); }
+static lh_status check(const lh_trimesh *m, char *msg, size_t size) { return lh_test_check_trimesh(m, msg, size); }
 
 /* Meshes g with o (NULL: defaults), asserts the exact check, returns the mesh. */
 static lh_trimesh *mesh_checked(lh_test_state *lh_t_, const lh_pslg *g, const lh_trimesh_options *o,

@@ -825,7 +825,11 @@ typedef struct lh_trimesh_options {
                                   (cover) (default 0)                              */
 } lh_trimesh_options;
 
-#define LH_TRIMESH_MAX_ANGLE 40.0 /* degrees: beyond it refinement need not end */
+#define LH_TRIMESH_MAX_ANGLE 40.0 /* degrees: the largest angle bound accepted */
+/* Degrees: up to this angle bound Delaunay refinement provably ends (Ruppert 1995;
+ * Shewchuk 2002); above it a Steiner budget from the input stops it
+ * (lh_trimesh_stats.steiner_budget). */
+#define LH_TRIMESH_PROVABLE_ANGLE 20.7
 
 void lh_trimesh_options_default(lh_trimesh_options *opt);
 
@@ -905,6 +909,11 @@ typedef struct lh_trimesh_stats {
                                         domain's size) or their split point refused.
                                         Edges beside them may stay not Delaunay
                                         (conforming) and triangles bad               */
+    size_t steiner_budget;           /* above LH_TRIMESH_PROVABLE_ANGLE, where Delaunay
+                                        refinement need not end: the Steiner points it
+                                        may add, from the input's size (docs/meshing.md);
+                                        else 0 (no budget)                           */
+    int steiner_budget_reached;      /* refinement stopped there: bad_triangles are left */
 } lh_trimesh_stats;
 void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out);
 /* The triangles still bad at the end (lh_trimesh_stats.bad_triangles of them). */

@@ -26,6 +26,27 @@ expect "report" 0 '' '^Mesh: 29 points \(29 input, 0 Steiner: 0 on segments\), 2
 grep -q '^Angle histogram' out.txt && ok || bad "report: no histogram"
 expect "--min-angle 30" 0 '' '^Triangles below the bounds: 0$' -- "$lh" mesh A.poly --min-angle 30
 ge "$(field out.txt 'Angles: smallest')" 30 && ok || bad "--min-angle 30: $(grep Angles out.txt)"
+# scale-free: A.poly times 2^k (exact in awk's doubles, printed to round-trip) reports
+# what A.poly does, but for its areas and edges
+scaled() {
+    awk -v f="$1" 'function p(x) { return sprintf("%.17g", x * f) }
+        /^[ \t]*(#|$)/ { print; next }
+        part == 0 { n = $1; part = 1; print; next }
+        part == 1 { print $1, p($2), p($3), $4; if (--n == 0) part = 2; next }
+        part == 2 { n = $1; part = n ? 3 : 4; print; next }
+        part == 3 { print; if (--n == 0) part = 4; next }
+        part == 4 { n = $1; part = 5; print; next }
+        { print $1, p($2), p($3) }' A.poly
+}
+"$lh" mesh A.poly --min-angle 30 | grep -v '^Areas' > unscaled.txt
+for k in -600 -260 177 600; do
+    scaled "$(awk -v k=$k 'BEGIN { printf "%.17g", 2 ^ k }')" > "A$k.poly"
+    "$lh" mesh "A$k.poly" --min-angle 30 > "scaled$k.txt" && grep -v '^Areas' "scaled$k.txt" | cmp -s - unscaled.txt &&
+        grep -q '^Triangles below the bounds: 0$' "scaled$k.txt" && ok ||
+        bad "A.poly times 2^$k: $(diff <(grep -v '^Areas' "scaled$k.txt") unscaled.txt | head -5)"
+done
+grep -q '^Areas: smallest 8.54895e-366, largest 3.4183e-364; edges: shortest 3.58617e-183' scaled-600.txt && ok ||
+    bad "A.poly times 2^-600: $(grep Areas scaled-600.txt)"
 expect "--quality" 0 '' '^Angles' -- "$lh" mesh --quality A.poly
 ge "$(field out.txt 'Angles: smallest')" 20 && ok || bad "--quality: $(grep Angles out.txt)"
 ! ge "$(field out.txt 'Angles: smallest')" 30 && ok || bad "--quality is 20 degrees, got $(grep Angles out.txt)"
@@ -36,6 +57,25 @@ ge 0.001 "$(field out.txt 'Areas: smallest [0-9.e+-]+, largest')" && ok || bad "
 expect "--no-segment-steiner" 0 '' ' 0 on segments\), ' -- "$lh" mesh A.poly --quality --no-segment-steiner
 expect "--no-boundary-steiner" 0 '' ' 0 on segments\), ' -- "$lh" mesh A.poly --quality --no-boundary-steiner
 expect "--max-steiner" 0 '' '^Mesh: 34 points \(29 input, 5 Steiner' -- "$lh" mesh A.poly --min-angle 30 --max-steiner 5
+# above the provable 20.7 degrees refinement need not end (Triangle's -q35.5 .. -q38 on
+# these files ran without end, taking GBs): it stops at a Steiner budget from the input
+# and says so; at 34 degrees these files meet the bound with no budget reached
+cp "$data"/double_hex.poly .
+# a memory limit for the runs (a sanitizer's shadow memory cannot live under one: none then)
+vlimit=2000000; (ulimit -v $vlimit; "$lh" mesh A.poly > /dev/null 2>&1) || vlimit=unlimited
+printf '3 2 0 0\n1 0 0\n2 1 0\n3 1 1e-10\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' > wedge.poly
+for run in "la.poly 35.5" "la.poly 36" "double_hex.poly 35.5" "double_hex.poly 36" "A.poly 38" "face.poly 38" \
+           "wedge.poly 32 --conforming"; do
+    set -- $run
+    (ulimit -v $vlimit; timeout 60 "$lh" mesh "$1" --min-angle "$2" ${3:-}) > budget.txt 2>&1
+    rc=$?
+    [ $rc -eq 0 ] && grep -Eq "^Refinement stopped at its budget of [0-9]+ Steiner points: the angle bound $2 degrees is above 20.7, where Delaunay refinement need not end; [1-9][0-9]* triangles are below the bounds$" budget.txt &&
+        grep -Eq '^Triangles below the bounds: [1-9]' budget.txt && ok || bad "budget $run: exit $rc, $(head -c 300 budget.txt)"
+done
+for f in A.poly face.poly double_hex.poly la.poly; do
+    (ulimit -v $vlimit; timeout 60 "$lh" mesh "$f" --min-angle 34) > budget.txt 2>&1 && ! grep -q 'budget' budget.txt &&
+        { [ "$f" = la.poly ] || grep -q '^Triangles below the bounds: 0$' budget.txt; } && ok || bad "34 degrees on $f: $(head -c 300 budget.txt)"
+done
 grep -q 'the Steiner point limit was reached' out.txt && ok || bad "--max-steiner: no limit note"
 expect "--ignore-holes" 0 '' '^Mesh: 29 points .*, 30 triangles' -- "$lh" mesh A.poly --ignore-holes
 expect "--conforming" 0 '' '^Mesh' -- "$lh" mesh A.poly --conforming

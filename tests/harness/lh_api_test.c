@@ -1,7 +1,36 @@
 /* lh_api_test.c — see lh_api_test.h. */
 #include "lh_api_test.h"
 
+#include <stdio.h>
 #include <string.h>
+
+lh_status lh_test_pslg_file(lh_test_pslg_reader rd, const char *dir, const char *path, lh_pslg *g)
+{
+    char full[512], msg[256];
+    snprintf(full, sizeof full, "%s/%s", dir, path);
+    FILE *f = fopen(full, "rb");
+    if (!f) return LH_ERR_IO;
+    lh_status st = rd(f, path, NULL, g, msg, sizeof msg);
+    fclose(f);
+    return st;
+}
+
+lh_status lh_test_pslg_text(const char *text, lh_pslg *g)
+{
+    FILE *f = lh_test_file(text, strlen(text));
+    if (!f) return LH_ERR_IO;
+    char msg[256];
+    lh_status st = lh_poly_read(f, "t.poly", NULL, g, msg, sizeof msg);
+    fclose(f);
+    return st;
+}
+
+lh_status lh_test_check_trimesh(const lh_trimesh *m, char *msg, size_t size)
+{
+    return lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
+                            lh_trimesh_triangles(m), lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0, NULL,
+                            msg, size);
+}
 
 int lh_test_same_tri(const lh_tri *a, const lh_tri *b)
 {

@@ -21,4 +21,13 @@ typedef lh_status (*lh_test_alloc_run)(lh_test_state *lh_t_, const lh_allocator 
  * number of runs. */
 long lh_test_every_failure(lh_test_state *lh_t_, lh_test_alloc_run run, const void *user);
 
+/* A PSLG reader (lh_poly_read, lh_rings_read, ...). */
+typedef lh_status (*lh_test_pslg_reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, char *, size_t);
+/* Reads dir/path with rd: the reader's status (LH_ERR_IO when it cannot be opened). */
+lh_status lh_test_pslg_file(lh_test_pslg_reader rd, const char *dir, const char *path, lh_pslg *g);
+/* Reads text as a .poly file. */
+lh_status lh_test_pslg_text(const char *text, lh_pslg *g);
+/* lh_check_trimesh of a mesh with its subsegments, boundary edges checked. */
+lh_status lh_test_check_trimesh(const lh_trimesh *m, char *msg, size_t size);
+
 #endif
