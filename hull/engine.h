@@ -249,6 +249,13 @@ int lh__eng_finite(const lh__eng *e, lh_index c);
  * lh__tds_sort_cells, its count: they are all after the finite cells). */
 lh_status lh__eng_hull_facets(lh__eng *e, lh_index first, lh_index **out, size_t *count);
 
+/* faces.c: after lh__eng_build, ext[i] (n entries) = whether the caller's site i is
+ * a corner (an extreme point) of the hull, exactly: a vertex of the engine's hull
+ * that lies on a flat face without being its corner is not. *flat = whether two
+ * adjacent hull facets are coplanar (if not, every facet is a face of the hull,
+ * every vertex a corner and the triangulation of the boundary unique). */
+lh_status lh__eng_hull_corners(lh__eng *e, uint8_t *ext, int *flat);
+
 /* Canonical order of an oriented tuple of m distinct entries: increasing, then the
  * last two exchanged if sorting was an odd permutation, so that the orientation is
  * kept. rank[j] is entry j's position in that order: its rank among the entries,
