@@ -255,6 +255,12 @@ lh_status lh__eng_hull_facets(lh__eng *e, lh_index first, lh_index **out, size_t
  * adjacent hull facets are coplanar (if not, every facet is a face of the hull,
  * every vertex a corner and the triangulation of the boundary unique). */
 lh_status lh__eng_hull_corners(lh__eng *e, uint8_t *ext, int *flat);
+/* faces.c: calls fn(user, a, b), a < b, for every edge {a, b} of the hull of n
+ * sites of R^d (d >= 1) that span R^d and are in convex position (each a corner:
+ * cospherical sites are), some edges more than once; pred for small polygons. */
+typedef void (*lh__edge_fn)(void *user, lh_index a, lh_index b);
+lh_status lh__hull_edges(const lh_allocator *a, lh_pred *pred, int d, size_t n, const double *xyz,
+                         lh__edge_fn fn, void *user);
 
 /* Canonical order of an oriented tuple of m distinct entries: increasing, then the
  * last two exchanged if sorting was an odd permutation, so that the orientation is

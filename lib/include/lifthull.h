@@ -354,6 +354,17 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
  */
 lh_status lh_tri_complex(lh_tri *t, size_t *count, const lh_index **offsets,
                          const lh_index **vertices);
+/* cell[s] (lh_tri_count entries): the cell of lh_tri_complex that simplex s belongs
+ * to; kept by the handle as lh_tri_complex's lists. The Voronoi diagram's vertices are
+ * the cells' circumcentres (each cell's simplices share theirs); two sites share a
+ * Voronoi ridge of full dimension d-1 exactly when they share an edge of the complex.
+ * Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
+lh_status lh_tri_complex_cells(lh_tri *t, const lh_index **cell);
+/* The edges of the Delaunay complex (the 1-faces of its cells): *count pairs i < j in
+ * *edges (2 each), sorted; exactly the pairs of sites whose Voronoi regions share a
+ * face of dimension d-1 (a diagonal of a grid square is no edge). Kept by the handle
+ * as lh_tri_complex's lists. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
+lh_status lh_tri_complex_edges(lh_tri *t, size_t *count, const lh_index **edges);
 
 /* Where a query point lies in a triangulation. */
 typedef struct lh_location {
