@@ -249,6 +249,16 @@ int lh__eng_finite(const lh__eng *e, lh_index c);
  * lh__tds_sort_cells, its count: they are all after the finite cells). */
 lh_status lh__eng_hull_facets(lh__eng *e, lh_index first, lh_index **out, size_t *count);
 
+/* Union-find: the root of x's set, halving the path on the way. */
+static inline lh_index lh__uf_find(lh_index *parent, lh_index x)
+{
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
 /* faces.c: after lh__eng_build, ext[i] (n entries) = whether the caller's site i is
  * a corner (an extreme point) of the hull, exactly: a vertex of the engine's hull
  * that lies on a flat face without being its corner is not. *flat = whether two

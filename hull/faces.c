@@ -17,15 +17,6 @@
 
 #include <string.h>
 
-static lh_index find(lh_index *parent, lh_index x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
 /* The vertex of cell b that cell a lacks (they share a side). */
 static lh_index opposite(const lh__tds *t, lh_index a, lh_index b)
 {
@@ -52,7 +43,7 @@ static int join_coplanar(lh__eng *e, lh_index *parent)
             for (int j = 1; j < nv; j++) p[j - 1] = lh__eng_input(e, (size_t)v[j]);
             p[d] = lh__eng_input(e, (size_t)opposite(&e->tds, c, nb));
             if (lh_orient(e->pred, d, p) == 0) {
-                parent[find(parent, c)] = find(parent, nb);
+                parent[lh__uf_find(parent, c)] = lh__uf_find(parent, nb);
                 any = 1;
             }
         }
@@ -157,11 +148,11 @@ static lh_status faces(lh__eng *e, lh_index *parent, visit_fn visit, void *ctx)
         memset(seen, 0, (e->n + 1) * sizeof *seen);
         for (size_t c = 0; c < top; c++)
             if (!lh__tds_dead(&e->tds, (lh_index)c) && !lh__eng_finite(e, (lh_index)c))
-                off[find(parent, (lh_index)c) + 1]++;
+                off[lh__uf_find(parent, (lh_index)c) + 1]++;
         for (size_t r = 0; r < top; r++) off[r + 1] += off[r];
         for (size_t c = 0; c < top; c++)
             if (!lh__tds_dead(&e->tds, (lh_index)c) && !lh__eng_finite(e, (lh_index)c))
-                by[off[find(parent, (lh_index)c)]++] = (lh_index)c;
+                by[off[lh__uf_find(parent, (lh_index)c)]++] = (lh_index)c;
         for (size_t r = top; r > 0; r--) off[r] = off[r - 1]; /* back to the starts */
         off[0] = 0;
         for (size_t r = 0; st == LH_OK && r < top; r++)

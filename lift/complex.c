@@ -12,15 +12,6 @@
 
 #include <string.h>
 
-static lh_index find(lh_index *parent, lh_index x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
 /* The vertex of simplex n that simplex s lacks (they share a facet). */
 static lh_index opposite(const lh_tri *t, size_t s, lh_index n)
 {
@@ -48,12 +39,13 @@ static size_t group_simplices(lh_tri *t, lh_index *cell)
             if (n < (lh_index)s) continue; /* each facet once; -1 across the hull */
             for (int j = 0; j < nv; j++) p[j] = t->xyz + (size_t)t->simp[s * nv + j] * t->d;
             p[nv] = t->xyz + (size_t)opposite(t, s, n) * t->d;
-            if (lh__frame_insphere(t->pred, &t->frame, p) == 0) parent[find(parent, n)] = find(parent, (lh_index)s);
+            if (lh__frame_insphere(t->pred, &t->frame, p) == 0)
+                parent[lh__uf_find(parent, n)] = lh__uf_find(parent, (lh_index)s);
         }
     size_t nc = 0;
     for (size_t s = 0; s < t->count; s++) cell[s] = -1;
     for (size_t s = 0; s < t->count; s++) {
-        lh_index r = find(parent, (lh_index)s);
+        lh_index r = lh__uf_find(parent, (lh_index)s);
         if (cell[r] < 0) cell[r] = (lh_index)nc++;
         cell[s] = cell[r];
     }

@@ -5,12 +5,17 @@ ridge the same Voronoi vertices as points (coordinates from `p`, rounded to 1e-9
 simplices of one Delaunay cell share one vertex, listed once), each Fi/Fo ridge the same
 hyperplane to 1e-12, and no printed value nan or inf. Qhull's bounded ridges that are not of
 dimension d-1 (their vertices span less: in 4D and up Qhull prints pairs that share a smaller
-face, e.g. across a square of a 4D grid) are left out of Qhull's side first. Prints one line per file and format; exit 1 on any difference."""
+face, e.g. across a square of a 4D grid) are left out of Qhull's side first. Prints one line per
+file and format; exit 1 on any difference."""
 
 import math
+import os
 import subprocess
 import sys
 from fractions import Fraction
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "oracles"))
+from compare_locate import affine_rank  # noqa: E402  (exact, Fractions)
 
 
 def run(cmd, path):
@@ -24,22 +29,6 @@ def vertices(prog, path):
     return [None] + [lines[2 + k].split() for k in range(m)]  # vertex 0: infinity
 
 
-def rank(rows):
-    """The rank of a list of Fraction vectors (Gauss-Jordan, exact)."""
-    m, r = [row[:] for row in rows], 0
-    for c in range(len(m[0]) if m else 0):
-        p = next((i for i in range(r, len(m)) if m[i][c] != 0), None)
-        if p is None:
-            continue
-        m[r], m[p] = m[p], m[r]
-        for i in range(len(m)):
-            if i != r and m[i][c] != 0:
-                f = m[i][c] / m[r][c]
-                m[i] = [a - f * b for a, b in zip(m[i], m[r])]
-        r += 1
-    return r
-
-
 def fv(prog, path, d, full_only):
     pts = vertices(prog, path)
     out = {}
@@ -48,7 +37,7 @@ def fv(prog, path, d, full_only):
         if not w:
             continue
         fin = [[Fraction(x) for x in pts[v]] for v in w[3:] if v]
-        if full_only and len(fin) == len(w) - 3 and rank([[a - b for a, b in zip(p, fin[0])] for p in fin[1:]]) < d - 1:
+        if full_only and len(fin) == len(w) - 3 and affine_rank(fin) < d - 1:
             continue
         key = lambda v: (math.inf,) if v == 0 else tuple(round(float(x), 9) + 0.0 for x in pts[v])
         out[(w[1], w[2])] = sorted(set(key(v) for v in w[3:]))
