@@ -5,8 +5,8 @@
 #   qconvex   Fx: the same vertices (the corners), whatever the input order (as given,
 #             reversed, rotated); i: as many facets as qconvex Qt (2D and 3D; a flat face
 #             is triangulated from its corners alone);
-#   qvoronoi  Fv, Fi, Fo on grids and cospherical sets in 2D, 3D and 4D: the same ridges,
-#             as Voronoi vertices and hyperplanes (qvoronoi_compare.py; no ridge between
+#   qvoronoi  Fv, Fi, Fo, o on grids and cospherical sets in 2D, 3D and 4D: the same ridges,
+#             regions, as Voronoi vertices and hyperplanes (qvoronoi_compare.py; no ridge between
 #             sites that meet at one Voronoi vertex only, nor, in 4D, the bounded ones
 #             Qhull prints across a smaller face);
 # and, without Qhull (which refuses them), qvoronoi Fi/Fo at extreme scales: every value

@@ -5,8 +5,9 @@ ridge the same Voronoi vertices as points (coordinates from `p`, rounded to 1e-9
 simplices of one Delaunay cell share one vertex, listed once), each Fi/Fo ridge the same
 hyperplane to 1e-12, and no printed value nan or inf. Qhull's bounded ridges that are not of
 dimension d-1 (their vertices span less: in 4D and up Qhull prints pairs that share a smaller
-face, e.g. across a square of a 4D grid) are left out of Qhull's side first. Prints one line per
-file and format; exit 1 on any difference."""
+face, e.g. across a square of a 4D grid) are left out of Qhull's side first. The regions of `o`:
+per site the same Voronoi vertices as points, as many of them (each cell's once). Prints one
+line per file and format; exit 1 on any difference."""
 
 import math
 import os
@@ -44,6 +45,17 @@ def fv(prog, path, d, full_only):
     return out
 
 
+def regions(prog, path):
+    out = run(prog + ["o"], path).split("\n")
+    nv, nr = (int(x) for x in out[1].split()[:2])
+    pts = [tuple(round(float(x), 9) + 0.0 for x in out[2 + k].split()) for k in range(nv)]
+    res = []
+    for k in range(nr):
+        w = [int(x) for x in out[2 + nv + k].split()]
+        res.append((w[0], sorted(set((math.inf,) if v == 0 else pts[v] for v in w[1:]))))
+    return res
+
+
 def planes(prog, path, opt):
     out = {}
     for line in run(prog + [opt], path).split("\n")[1:]:
@@ -71,6 +83,9 @@ def main():
                     print("  %s: lifthull %s, qvoronoi %s" % (k, a.get(k), b.get(k)))
                     break
         ridges = set(b)
+        ok = regions(lh, path) == regions(qv, path)
+        print("%s o: regions %s" % (path, "same" if ok else "DIFFER"))
+        bad += not ok
         for opt in ("Fi", "Fo"):
             a, b = planes(lh, path, opt), planes(qv, path, opt)
             b = {k: v for k, v in b.items() if k in ridges}
