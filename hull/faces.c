@@ -12,6 +12,11 @@
  *      coordinate axis the face's plane is not parallel to (dropping a coordinate:
  *      exact, and one to one on that plane, so corners map to corners), and their
  *      corners found in R^(d-1) by the same method, down to R^1 (the two ends).
+ * The same faces give the edges of a hull of sites in convex position
+ * (lh__hull_edges, for the cells of the Delaunay complex): every edge lies in a
+ * facet, and the edges of a face are edges of the hull; a simplex face's are its
+ * pairs of vertices, a polygon's are found by orientations, a larger face's in
+ * R^(d-1) again.
  */
 #include "engine.h"
 
