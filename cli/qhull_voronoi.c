@@ -4,10 +4,20 @@
  * prints it as -10.101 in every coordinate); the ridge of sites i < j is dual to
  * the Delaunay edge ij, its vertices the simplices around that edge, and it is
  * unbounded (bounded) exactly when the edge lies (does not lie) on the convex hull.
+ * Cospherical sites make several simplices with one circumcentre: they form one
+ * cell of the Delaunay complex (lh_tri_complex_cells), one Voronoi vertex. As Qhull
+ * with Qt, every simplex keeps its number in 'p' and 'o', but a ridge or a region
+ * lists each cell once, by its smallest simplex. The ridges are the edges of the
+ * Delaunay complex (lh_tri_complex_edges: sites whose regions share a face of
+ * dimension d-1; not two sites meeting at one Voronoi vertex only, as across the
+ * diagonal of a grid square, nor in 4D and up along a smaller face, which Qhull
+ * prints) that have d distinct cells around them (the one at infinity counted once),
+ * Qhull's rule.
  * Qhull's 'o' lists each region's vertices in cyclic order in 2D; so does this.
  */
 #include "qhull_print.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,10 +43,36 @@ static int contains(const lh_cli_qmodel *mo, lh_index s, lh_index v)
     return 0;
 }
 
-static int cmp_index(const void *a, const void *b)
+/* rep[s]: the smallest simplex of simplex s's cell of the Delaunay complex (the
+ * Voronoi vertex that stands for the cell); NULL when out of memory. */
+static lh_index *cell_reps(const lh_cli_qmodel *mo)
 {
-    lh_index x = *(const lh_index *)a, y = *(const lh_index *)b;
-    return (x > y) - (x < y);
+    size_t nc;
+    const lh_index *off, *vert, *cell;
+    if (lh_tri_complex(mo->tri, &nc, &off, &vert) != LH_OK || lh_tri_complex_cells(mo->tri, &cell) != LH_OK)
+        return NULL;
+    lh_index *first = malloc((nc ? nc : 1) * sizeof *first);
+    lh_index *rep = malloc((mo->m ? mo->m : 1) * sizeof *rep);
+    if (!first || !rep) {
+        free(first);
+        free(rep);
+        return NULL;
+    }
+    for (size_t c = 0; c < nc; c++) first[c] = -1;
+    for (size_t s = 0; s < mo->m; s++) {
+        if (first[cell[s]] < 0) first[cell[s]] = (lh_index)s;
+        rep[s] = first[cell[s]];
+    }
+    free(first);
+    return rep;
+}
+
+/* Appends r to list[0..*count-1] unless it is there. */
+static void add_once(lh_index *list, size_t *count, lh_index r)
+{
+    for (size_t k = 0; k < *count; k++)
+        if (list[k] == r) return;
+    list[(*count)++] = r;
 }
 
 typedef struct ridge_pass {
@@ -44,7 +80,58 @@ typedef struct ridge_pass {
     int which;       /* 'v': Fv, 'i': bounded (Fi), 'o': unbounded (Fo) */
     const double *x; /* sites */
     size_t count;
+    const lh_index *rep; /* cell_reps */
+    lh_index *around;    /* room for the cells around an edge */
 } ridge_pass;
+
+/* The bisector of sites a and b: n.x + off 2^e = 0, |n| = 1, n from a towards b.
+ * Computed on the sites scaled by 2^-e, e the exponent of their largest coordinate
+ * (exact, but for bits below 2^-1074 of the tiny coordinates beside a huge one), so
+ * nothing overflows; the difference is scaled to a largest entry in [0.5, 1) before
+ * its length is taken, so nothing underflows: finite and accurate from the
+ * subnormals to DBL_MAX. */
+static void bisector(const double *a, const double *b, int d, double *n, double *off, int *e)
+{
+    double big = 0, as[LH_DELAUNAY_MAX_DIM], bs[LH_DELAUNAY_MAX_DIM], most = 0, len = 0;
+    for (int c = 0; c < d; c++) big = fmax(big, fmax(fabs(a[c]), fabs(b[c])));
+    frexp(big, e);
+    for (int c = 0; c < d; c++) {
+        as[c] = ldexp(a[c], -*e);
+        bs[c] = ldexp(b[c], -*e);
+        n[c] = bs[c] - as[c]; /* |as|, |bs| < 1: no overflow */
+        most = fmax(most, fabs(n[c]));
+    }
+    int g;
+    frexp(most, &g); /* most > 0: the sites are distinct */
+    for (int c = 0; c < d; c++) {
+        n[c] = ldexp(n[c], -g);
+        len += n[c] * n[c];
+    }
+    len = sqrt(len); /* in [0.5, sqrt(d)] */
+    *off = 0;
+    for (int c = 0; c < d; c++) {
+        n[c] /= len;
+        *off -= n[c] * (0.5 * as[c] + 0.5 * bs[c]);
+    }
+}
+
+/* Prints m 2^e as Qhull prints a double ("%6.16g"); beyond the doubles' range
+ * (offsets of sites near DBL_MAX) in long double, or from logarithms where long
+ * double is no wider (about 13 correct digits then). */
+static void print_scaled(FILE *f, double m, int e)
+{
+    double x = ldexp(m, e);
+    if (isfinite(x) || m == 0) {
+        fprintf(f, "%6.16g", x);
+        return;
+    }
+#if LDBL_MAX_EXP > DBL_MAX_EXP
+    fprintf(f, "%6.16Lg", ldexpl((long double)m, e));
+#else
+    double lg = log10(fabs(m)) + e * log10(2.0), k = floor(lg);
+    fprintf(f, "%s%.15fe+%.0f", m < 0 ? "-" : "", pow(10.0, lg - k), k);
+#endif
+}
 
 /* A ridge needs d vertices, the one at infinity counted once, to be printed: Qhull
  * leaves out the unbounded ridges with fewer (qh_eachvoronoi, "count >= hull_dim - 1"). */
@@ -52,81 +139,68 @@ static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, lh_index i, lh_
 {
     if ((rp->which == 'i' && unbounded) || (rp->which == 'o' && !unbounded)) return;
     const int d = mo->d;
-    int around = 0; /* the simplices around edge ij */
+    size_t around = 0; /* the cells around edge ij */
     for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
-        around += mo->inc[k] >= 0 && contains(mo, mo->inc[k], j);
-    if (around + unbounded < d) return;
+        if (mo->inc[k] >= 0 && contains(mo, mo->inc[k], j)) add_once(rp->around, &around, rp->rep[mo->inc[k]]);
+    if (around + (size_t)unbounded < (size_t)d) return;
     rp->count++;
     if (!rp->f) return;
     if (rp->which == 'v') {
-        fprintf(rp->f, "%d %" LH_INDEX_PRI " %" LH_INDEX_PRI "%s", around + unbounded + 2, i, j,
+        fprintf(rp->f, "%zu %" LH_INDEX_PRI " %" LH_INDEX_PRI "%s", around + (size_t)unbounded + 2, i, j,
                 unbounded ? " 0" : "");
-        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
-            if (mo->inc[k] >= 0 && contains(mo, mo->inc[k], j))
-                fprintf(rp->f, " %" LH_INDEX_PRI, mo->inc[k] + 1);
+        for (size_t k = 0; k < around; k++) fprintf(rp->f, " %" LH_INDEX_PRI, rp->around[k] + 1);
         fputc('\n', rp->f);
         return;
     }
-    /* the bisector, normal from i towards j */
-    const double *a = rp->x + (size_t)i * d, *b = rp->x + (size_t)j * d;
-    double n[LH_DELAUNAY_MAX_DIM], len = 0, off = 0;
-    for (int c = 0; c < d; c++) {
-        n[c] = b[c] - a[c];
-        len += n[c] * n[c];
-    }
-    len = sqrt(len);
-    for (int c = 0; c < d; c++) {
-        n[c] /= len;
-        off -= n[c] * 0.5 * (a[c] + b[c]);
-    }
+    double n[LH_DELAUNAY_MAX_DIM], off;
+    int e;
+    bisector(rp->x + (size_t)i * d, rp->x + (size_t)j * d, d, n, &off, &e);
     fprintf(rp->f, "%d %" LH_INDEX_PRI " %" LH_INDEX_PRI " ", d + 3, i, j);
     lh_cli_qcoords(rp->f, n, d);
-    fprintf(rp->f, "%6.16g \n", off);
+    print_scaled(rp->f, off, e);
+    fputs(" \n", rp->f);
 }
 
-/* Every Delaunay edge ij, i < j, in increasing order. */
+/* Every edge ij of the Delaunay complex, i < j, in increasing order (an edge of the
+ * complex is one of every triangulation of its cells: the simplices around it are
+ * found through the incidences). */
 static int ridges(ridge_pass *rp, const lh_cli_qmodel *mo)
 {
-    lh_index *mark = calloc(mo->n ? mo->n : 1, sizeof *mark);
-    lh_index *nb = malloc((mo->n ? mo->n : 1) * sizeof *nb);
-    if (!mark || !nb) {
-        free(mark);
-        free(nb);
-        return 0;
+    size_t count;
+    const lh_index *e;
+    if (lh_tri_complex_edges(mo->tri, &count, &e) != LH_OK) return 0;
+    for (size_t r = 0; r < count; r++) {
+        lh_index i = e[2 * r], j = e[2 * r + 1];
+        int unbounded = 0;
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !unbounded; k++)
+            unbounded = mo->inc[k] >= 0 && contains(mo, mo->inc[k], j) && open_side_with(mo, mo->inc[k], e + 2 * r, 2);
+        print_ridge(rp, mo, i, j, unbounded);
     }
-    for (size_t i = 0; i < mo->n; i++) {
-        size_t cnt = 0;
-        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
-            for (int v = 0; mo->inc[k] >= 0 && v < mo->nv; v++) {
-                lh_index j = mo->vert[(size_t)mo->inc[k] * mo->nv + v];
-                if (j > (lh_index)i && mark[j] != (lh_index)i + 1) {
-                    mark[j] = (lh_index)i + 1;
-                    nb[cnt++] = j;
-                }
-            }
-        qsort(nb, cnt, sizeof *nb, cmp_index);
-        for (size_t c = 0; c < cnt; c++) {
-            lh_index pair[2] = {(lh_index)i, nb[c]};
-            int unbounded = 0;
-            for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !unbounded; k++)
-                unbounded = mo->inc[k] >= 0 && contains(mo, mo->inc[k], nb[c]) &&
-                            open_side_with(mo, mo->inc[k], pair, 2);
-            print_ridge(rp, mo, (lh_index)i, nb[c], unbounded);
-        }
-    }
-    free(mark);
-    free(nb);
     return 1;
+}
+
+/* The most facets around one site. */
+static size_t max_incidence(const lh_cli_qmodel *mo)
+{
+    size_t most = 1;
+    for (size_t i = 0; i < mo->n; i++)
+        if ((size_t)(mo->inc_off[i + 1] - mo->inc_off[i]) > most) most = (size_t)(mo->inc_off[i + 1] - mo->inc_off[i]);
+    return most;
 }
 
 static int print_ridges(FILE *f, const lh_cli_qmodel *mo, int which)
 {
-    ridge_pass rp = {NULL, which, mo->xyz, 0};
-    if (!ridges(&rp, mo)) return 0;
-    fprintf(f, "%zu\n", rp.count);
-    rp.f = f;
-    rp.count = 0;
-    return ridges(&rp, mo);
+    ridge_pass rp = {NULL, which, mo->xyz, 0, cell_reps(mo), malloc(max_incidence(mo) * sizeof(lh_index))};
+    int ok = rp.rep && rp.around && ridges(&rp, mo);
+    if (ok) {
+        fprintf(f, "%zu\n", rp.count);
+        rp.f = f;
+        rp.count = 0;
+        ok = ridges(&rp, mo);
+    }
+    free((void *)rp.rep);
+    free(rp.around);
+    return ok;
 }
 
 /* The simplices around site i in the plane, in cyclic order: from one with an open
@@ -151,10 +225,23 @@ static size_t cyclic_2d(const lh_cli_qmodel *mo, lh_index i, lh_index *out)
     return count;
 }
 
+/* list[0..count-1] (simplices) as their cells, each once, in order of first
+ * appearance; returns the new count. */
+static size_t cells_once(const lh_index *rep, lh_index *list, size_t count)
+{
+    size_t w = 0;
+    for (size_t c = 0; c < count; c++) add_once(list, &w, rep[list[c]]);
+    return w;
+}
+
 static int print_regions(FILE *f, const lh_cli_qmodel *mo)
 {
-    lh_index *list = malloc((mo->m ? mo->m : 1) * sizeof *list);
-    if (!list) return 0;
+    lh_index *list = malloc((mo->m ? mo->m : 1) * sizeof *list), *rep = cell_reps(mo);
+    if (!list || !rep) {
+        free(list);
+        free(rep);
+        return 0;
+    }
     for (size_t i = 0; i < mo->n; i++) {
         size_t count = 0;
         int unbounded = 0;
@@ -165,11 +252,13 @@ static int print_regions(FILE *f, const lh_cli_qmodel *mo)
             unbounded |= open_side_with(mo, mo->inc[k], &site, 1);
         }
         if (count && mo->d == 2) count = cyclic_2d(mo, (lh_index)i, list);
+        count = cells_once(rep, list, count); /* a cell's simplices are consecutive in 2D */
         fprintf(f, "%zu", count + (count && unbounded));
         for (size_t c = 0; c < count; c++) fprintf(f, " %" LH_INDEX_PRI, list[c] + 1);
         fputs(count && unbounded ? " 0\n" : "\n", f);
     }
     free(list);
+    free(rep);
     return 1;
 }
 

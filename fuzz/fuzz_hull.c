@@ -11,11 +11,11 @@
  *   - orient_d(facet, p) <= 0 for every site p (no site strictly outside), and < 0 for
  *     some site (no facet flat: its vertices affinely independent);
  *   - every ridge (d-1 vertices of a facet) lies in exactly two facets;
- *   - lh_hull_vertices is exactly the increasing list of sites used by the facets;
- *   - a second run with another lh_options.seed passes the same checks; it must give
- *     the same output only when built with -DLH_FUZZ_HULL_SEED_STRICT=1, because it
- *     does not (fuzz/findings/hull_seed.md: a site on the hull's boundary is a vertex
- *     or not depending on the BRIO order, which the seed draws);
+ *   - lh_hull_vertices is exactly the increasing list of sites used by the facets,
+ *     and each is a corner: outside the hull of the other sites (or needed for them
+ *     to span R^d) — so, with the above, the vertices are exactly the corners;
+ *   - a second run with another lh_options.seed gives the same output
+ *     (fuzz/findings/hull_seed.md);
  *   - when no d+1 distinct sites lie on a hyperplane, the facets are exactly
  *     lh_delaunay's hull facets (lh_tri_hull_facets).
  * Anything else aborts. Build as fuzz_delaunay.c (fuzz/README.md).
@@ -27,10 +27,6 @@
 #include <string.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-
-#ifndef LH_FUZZ_HULL_SEED_STRICT
-#define LH_FUZZ_HULL_SEED_STRICT 0
-#endif
 
 #define MAXD 6
 #define MAXN 48
@@ -88,6 +84,28 @@ static int same_hull(const lh_hull *a, const lh_hull *b, int d, size_t n)
            !memcmp(lh_hull_facets(a), lh_hull_facets(b), m * (size_t)d * sizeof(lh_index)) &&
            !memcmp(lh_hull_vertices(a), lh_hull_vertices(b), v * sizeof(lh_index)) &&
            !memcmp(lh_hull_duplicate_of(a), lh_hull_duplicate_of(b), n * sizeof(lh_index));
+}
+
+/* Whether site v is a corner: outside the hull of the sites other than v and its
+ * duplicates, or needed for them to span R^d. */
+static int is_corner(lh_pred *p, int d, size_t n, const double *x, size_t v)
+{
+    double y[MAXN * MAXD];
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++)
+        if (!same_site(d, x + i * d, x + v * d)) memcpy(y + m++ * d, x + i * d, (size_t)d * sizeof *y);
+    lh_hull *h = NULL;
+    if (lh_convex_hull(d, m, y, NULL, &h) != LH_OK) return 1;
+    int corner = 0;
+    const lh_index *f = lh_hull_facets(h);
+    for (size_t i = 0; i < lh_hull_facet_count(h) && !corner; i++) {
+        const double *pts[MAXD + 1];
+        for (int k = 0; k < d; k++) pts[k] = y + (size_t)f[i * d + k] * d;
+        pts[d] = x + v * d;
+        corner = lh_orient(p, d, pts) > 0;
+    }
+    lh_hull_free(h);
+    return corner;
 }
 
 static void check_hull(lh_pred *p, int d, size_t n, const double *x, const lh_hull *h)
@@ -154,6 +172,8 @@ static void check_hull(lh_pred *p, int d, size_t n, const double *x, const lh_hu
     for (size_t i = 0; i < n; i++)
         if (used[i] && (k >= nv || vert[k++] != (lh_index)i)) abort();
     if (k != nv) abort(); /* a listed vertex no facet uses */
+    for (size_t i = 0; i < nv; i++)
+        if (!is_corner(p, d, n, x, (size_t)vert[i])) abort(); /* a vertex not a corner */
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -187,7 +207,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     o.seed = 0x9e3779b97f4a7c15u * (uint64_t)(flags + 1);
     if (lh_convex_hull(d, n, x, &o, &h2) != LH_OK) abort();
     check_hull(p, d, n, x, h2);
-    if (LH_FUZZ_HULL_SEED_STRICT && !same_hull(h, h2, d, n)) abort();
+    if (!same_hull(h, h2, d, n)) abort(); /* the hull does not depend on the seed */
     lh_hull_free(h2);
     lh_index rep[MAXN];
     int m = 0;

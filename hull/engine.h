@@ -249,6 +249,29 @@ int lh__eng_finite(const lh__eng *e, lh_index c);
  * lh__tds_sort_cells, its count: they are all after the finite cells). */
 lh_status lh__eng_hull_facets(lh__eng *e, lh_index first, lh_index **out, size_t *count);
 
+/* Union-find: the root of x's set, halving the path on the way. */
+static inline lh_index lh__uf_find(lh_index *parent, lh_index x)
+{
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+/* faces.c: after lh__eng_build, ext[i] (n entries) = whether the caller's site i is
+ * a corner (an extreme point) of the hull, exactly: a vertex of the engine's hull
+ * that lies on a flat face without being its corner is not. *flat = whether two
+ * adjacent hull facets are coplanar (if not, every facet is a face of the hull,
+ * every vertex a corner and the triangulation of the boundary unique). */
+lh_status lh__eng_hull_corners(lh__eng *e, uint8_t *ext, int *flat);
+/* faces.c: calls fn(user, a, b), a < b, for every edge {a, b} of the hull of n
+ * sites of R^d (d >= 1) that span R^d and are in convex position (each a corner:
+ * cospherical sites are), some edges more than once; pred for small polygons. */
+typedef void (*lh__edge_fn)(void *user, lh_index a, lh_index b);
+lh_status lh__hull_edges(const lh_allocator *a, lh_pred *pred, int d, size_t n, const double *xyz,
+                         lh__edge_fn fn, void *user);
+
 /* Canonical order of an oriented tuple of m distinct entries: increasing, then the
  * last two exchanged if sorting was an odd permutation, so that the orientation is
  * kept. rank[j] is entry j's position in that order: its rank among the entries,

@@ -53,6 +53,8 @@ void lh_tri_free(lh_tri *t)
     lh_pred_free(t->pred);
     lh__free(&a, t->cell_off);
     lh__free(&a, t->cell_vert);
+    lh__free(&a, t->simp_cell);
+    lh__free(&a, t->edges);
     lh__free(&a, t->centers);
     lh__free(&a, t);
 }

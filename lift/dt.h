@@ -60,6 +60,9 @@ struct lh_tri {
     lh__insert_pick pick; /* the fixed-dimension insertion loops (dims/), or NULL */
     size_t ncells;    /* the Delaunay complex, built on demand (complex.c) */
     lh_index *cell_off, *cell_vert;
+    lh_index *simp_cell; /* count: the cell of each simplex */
+    size_t nedges;       /* the complex's edges, built on demand (complex.c) */
+    lh_index *edges;     /* 2 per edge */
     double *centers;  /* d per simplex, the circumcentres, built on demand (voronoi.c) */
 };
 

@@ -176,7 +176,10 @@ static void take_arrays(lh_tri *t, lh_tri *from)
     lh__free(&t->alloc, t->vsimp);
     lh__free(&t->alloc, t->cell_off);
     lh__free(&t->alloc, t->cell_vert);
-    t->cell_off = t->cell_vert = NULL;
+    lh__free(&t->alloc, t->simp_cell);
+    lh__free(&t->alloc, t->edges);
+    t->cell_off = t->cell_vert = t->simp_cell = t->edges = NULL;
+    t->nedges = 0;
     t->ncells = 0;
     lh__free(&t->alloc, t->centers);
     t->centers = NULL;

@@ -1,7 +1,9 @@
 /*
  * test_alloc.c — every allocation failing in turn, for the public entry points not
  * covered next to their own tests: lh_affine_dim, lh_check_delaunay, lh_tri_check,
- * lh_tri_complex, and lh_tri_locate at a point shared by more than 64 simplices. Each
+ * lh_tri_complex, lh_tri_complex_cells, lh_tri_complex_edges, lh_convex_hull of a grid
+ * (flat faces: the corners and the rebuilt hull), and lh_tri_locate at a point shared
+ * by more than 64 simplices. Each
  * failing run must return LH_ERR_NOMEM and leave nothing allocated
  * (lh_test_every_failure). The others: lh_pred_create (test_pred_basic),
  * lh_delaunay and lh_convex_hull (test_delaunay), lh_tri_insert (test_insert), the
@@ -70,6 +72,34 @@ static lh_status q_complex(lh_test_state *lh_t_, lh_tri *t)
     return st;
 }
 
+static lh_status q_complex_edges(lh_test_state *lh_t_, lh_tri *t)
+{
+    size_t count;
+    const lh_index *e, *cell;
+    lh_status st = lh_tri_complex_cells(t, &cell);
+    if (st == LH_OK) st = lh_tri_complex_edges(t, &count, &e);
+    if (st == LH_OK) LH_EXPECT_EQ_U64(count, 300); /* the grid's unit segments */
+    return st;
+}
+
+/* lh_convex_hull of the 5^3 grid: its 8 corners, 12 triangles. */
+static lh_status hull_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
+{
+    (void)user;
+    double x[N * 3];
+    grid(x);
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = a;
+    lh_hull *h;
+    lh_status st = lh_convex_hull(3, N, x, &o, &h);
+    if (st != LH_OK) return st;
+    LH_EXPECT_EQ_U64(lh_hull_vertex_count(h), 8);
+    LH_EXPECT_EQ_U64(lh_hull_facet_count(h), 12);
+    lh_hull_free(h);
+    return st;
+}
+
 /* lh_tri_locate's scratch: a vertex of the 5^4 grid lies in 120 simplices (over the
  * 64 it keeps on the stack). */
 static lh_status locate_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
@@ -110,12 +140,13 @@ static lh_status query_run(lh_test_state *lh_t_, const lh_allocator *a, const vo
 
 LH_TEST(every_allocation_failure_is_survived)
 {
-    static const query_fn queries[] = {q_check, q_complex};
+    static const query_fn queries[] = {q_check, q_complex, q_complex_edges};
     LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, affine_run, NULL), 1);
     LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, check_run, NULL), 1);
     for (size_t i = 0; i < LH_COUNT(queries); i++)
         LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, query_run, &queries[i]), 1);
     LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, locate_run, NULL), 1);
+    LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, hull_run, NULL), 1);
 }
 
 int main(int argc, char **argv)

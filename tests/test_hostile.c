@@ -93,9 +93,17 @@ static void expect_scale_invariant(lh_test_state *lh_t_, int d, size_t n, const 
         if (lh_tri_count(a) == lh_tri_count(b))
             LH_EXPECT_TRUE(!memcmp(lh_tri_simplices(a), lh_tri_simplices(b),
                                    lh_tri_count(a) * (size_t)(d + 1) * sizeof(lh_index)));
-        /* The hull: exactly convex at the new scale (no site strictly outside a facet).
-         * Which boundary sites are vertices may differ from the unit scale (it does at
-         * 2^-1050 and below in 2D): lh_convex_hull leaves that open. */
+        /* The hull: exactly convex at the new scale (no site strictly outside a facet),
+         * its vertices the same corners as at the unit scale (before issue 30, which
+         * boundary sites were vertices changed at 2^-1050 and below in 2D). */
+        LH_EXPECT_EQ_U64(lh_hull_vertex_count(hb), lh_hull_vertex_count(ha));
+        if (lh_hull_vertex_count(ha) == lh_hull_vertex_count(hb))
+            LH_EXPECT_TRUE(!memcmp(lh_hull_vertices(ha), lh_hull_vertices(hb),
+                                   lh_hull_vertex_count(ha) * sizeof(lh_index)));
+        LH_EXPECT_EQ_U64(lh_hull_facet_count(hb), lh_hull_facet_count(ha));
+        if (lh_hull_facet_count(ha) == lh_hull_facet_count(hb))
+            LH_EXPECT_TRUE(!memcmp(lh_hull_facets(ha), lh_hull_facets(hb),
+                                   lh_hull_facet_count(ha) * (size_t)d * sizeof(lh_index)));
         lh_pred *pred;
         LH_ASSERT_EQ_INT(lh_pred_create(NULL, &pred), LH_OK);
         for (size_t f = 0; f < lh_hull_facet_count(hb); f++)

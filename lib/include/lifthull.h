@@ -354,6 +354,17 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
  */
 lh_status lh_tri_complex(lh_tri *t, size_t *count, const lh_index **offsets,
                          const lh_index **vertices);
+/* cell[s] (lh_tri_count entries): the cell of lh_tri_complex that simplex s belongs
+ * to; kept by the handle as lh_tri_complex's lists. The Voronoi diagram's vertices are
+ * the cells' circumcentres (each cell's simplices share theirs); two sites share a
+ * Voronoi ridge of full dimension d-1 exactly when they share an edge of the complex.
+ * Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
+lh_status lh_tri_complex_cells(lh_tri *t, const lh_index **cell);
+/* The edges of the Delaunay complex (the 1-faces of its cells): *count pairs i < j in
+ * *edges (2 each), sorted; exactly the pairs of sites whose Voronoi regions share a
+ * face of dimension d-1 (a diagonal of a grid square is no edge). Kept by the handle
+ * as lh_tri_complex's lists. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
+lh_status lh_tri_complex_edges(lh_tri *t, size_t *count, const lh_index **edges);
 
 /* Where a query point lies in a triangulation. */
 typedef struct lh_location {
@@ -459,16 +470,18 @@ lh_status lh_tri_interpolate(lh_tri *t, lh_interp_method method, size_t m,
 
 /*
  * lh_convex_hull: the convex hull of n sites in R^d (d = 2..8; qconvex's job), by the
- * same incremental engine, exactly. The hull is simplicial: each facet lists d site
- * indices in canonical order (as lh_delaunay's simplices), oriented so that
- * orient_d(facet, p) > 0 for every point p strictly outside; facets are sorted.
- * Sites strictly inside are never vertices; a site on the hull's boundary that is not
- * a corner may or may not be one (its facets are then coplanar with their
- * neighbours, never flat): which ones are, and so how a flat face of the hull is cut
- * into facets, follows the insertion order, which opt->seed and the input's order
- * set (seen by fuzzing: fuzz/findings/hull_seed.md). The hull as a point set, its
- * corners and every facet's plane are exact either way; for a triangulation of the
- * boundary that depends on the sites alone, take lh_delaunay's hull facets.
+ * same incremental engine, exactly. The vertices are exactly the hull's corners (its
+ * extreme points): a site inside the hull, or on its boundary without being a corner
+ * (inside an edge, a flat face, ...), is never one. The hull is simplicial: each facet
+ * lists d corners in canonical order (as lh_delaunay's simplices), oriented so that
+ * orient_d(facet, p) > 0 for every point p strictly outside; facets are sorted; a flat
+ * face of the hull (several corners on one hyperplane) is cut into facets by the
+ * placing triangulation of its corners in lexicographic order of their coordinates,
+ * so the output depends on the set of sites alone — not on their order (up to the
+ * renumbering), nor on opt->seed, nor on a scaling by a power of two. Qhull's
+ * `qconvex Qt` lists the same vertices where its arithmetic is exact (it may drop a
+ * corner on a nearly flat face within its precision), the same number of facets in
+ * 2D and 3D; in 4D and up Qt can add flat facets, which lh_convex_hull never makes.
  * Duplicates merge as in lh_delaunay. Statuses as lh_delaunay's (LH_ERR_DEGENERATE
  * when the sites span less than R^d).
  */
@@ -479,7 +492,7 @@ int lh_hull_dim(const lh_hull *h);
 size_t lh_hull_facet_count(const lh_hull *h);
 const lh_index *lh_hull_facets(const lh_hull *h);    /* d per facet              */
 size_t lh_hull_vertex_count(const lh_hull *h);
-const lh_index *lh_hull_vertices(const lh_hull *h);  /* increasing site indices  */
+const lh_index *lh_hull_vertices(const lh_hull *h);  /* the corners, increasing  */
 const lh_index *lh_hull_duplicate_of(const lh_hull *h);
 void lh_hull_free(lh_hull *h);
 
