@@ -290,7 +290,8 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     }
     r->stats.steiner_points = m->np - m->n_input;
     r->stats.crossings_split = m->crossings;
-    for (size_t p = m->n_input; p < m->np; p++) r->stats.steiner_on_segments += m->pseg[p] >= 0;
+    /* on input segments and on the boundary edges of a mesh being refined (pseg <= -2) */
+    for (size_t p = m->n_input; p < m->np; p++) r->stats.steiner_on_segments += m->pseg[p] != -1;
     if ((st = harvest(r, m)) != LH_OK) return st;
     if (!o->region_attributes) {
         lh__free(&r->al, r->tattr);

@@ -778,6 +778,91 @@ LH_TEST(an_existing_mesh_is_refined_with_its_area_bounds)
     lh_points_free(&pts);
 }
 
+/* Twice the total area of m's triangles. */
+static double area2_sum(const lh_trimesh *m)
+{
+    const double *xy = lh_trimesh_points(m);
+    const lh_index *t = lh_trimesh_triangles(m);
+    double sum = 0;
+    for (size_t i = 0; i < lh_trimesh_triangle_count(m); i++) {
+        const double *a = xy + 2 * (size_t)t[3 * i], *b = xy + 2 * (size_t)t[3 * i + 1], *c = xy + 2 * (size_t)t[3 * i + 2];
+        sum += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+    return sum;
+}
+
+/* Refines the mesh `old` (its points and triangles as the cover) under o: the result
+ * is exactly valid, covers the same union, meets the area bound, and names its bad
+ * triangles in range and in order. Returns the Steiner points put on the old
+ * boundary. */
+static size_t refine_cover(lh_test_state *lh_t_, const lh_trimesh *old, const lh_trimesh_options *o,
+                           const char *what)
+{
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = lh_trimesh_point_count(old), g.xy = (double *)lh_trimesh_points(old); /* read only */
+    g.cover_count = lh_trimesh_triangle_count(old), g.cover = (lh_index *)lh_trimesh_triangles(old);
+    lh_trimesh *m = mesh_checked(lh_t_, &g, o, what);
+    if (!m) return 0;
+    lh_trimesh_stats st;
+    lh_trimesh_get_stats(m, &st);
+    const double before = area2_sum(old), after = area2_sum(m);
+    if (fabs(after - before) > 1e-12 * before) LH_NOTE("%s: area %.17g, was %.17g", what, after / 2, before / 2);
+    LH_EXPECT_TRUE(fabs(after - before) <= 1e-12 * before);
+    if (o->max_area > 0) LH_EXPECT_GT_U64(st.steiner_points, 0);
+    if (o->max_area > 0) LH_EXPECT_LE_DBL(st.max_area, o->max_area);
+    const lh_index *bad = lh_trimesh_bad_triangles(m);
+    for (size_t i = 0; i < st.bad_triangles; i++) {
+        LH_EXPECT_TRUE(bad[i] >= 0 && (size_t)bad[i] < lh_trimesh_triangle_count(m));
+        if (i) LH_EXPECT_LT_INT(bad[i - 1], bad[i]);
+    }
+    const size_t on_boundary = st.steiner_on_segments;
+    lh_trimesh_free(m);
+    return on_boundary;
+}
+
+/* Triangle's -r with -a or -q (`-pc box.poly` then `-rpa0.2 box.1`; `-rq30 face.1`):
+ * Steiner points on the old mesh's boundary edges (subsegment parents -2, -3, ...)
+ * were taken for removed points (pseg -2), dropped, and their triangles left naming
+ * point -1: reads before the point array, a double free. Every such refinement is
+ * exactly valid; the unit square split along a diagonal, and meshes of Triangle's
+ * files, each refined by area, angle and both. */
+LH_TEST(refining_a_mesh_splits_its_boundary_edges)
+{
+    const char *const files[] = {"triangle/box.poly", "triangle/face.poly", "triangle/A.poly"};
+    for (size_t i = 0; i < sizeof files / sizeof files[0] + 1; i++) {
+        lh_trimesh *old = NULL;
+        if (i == 0) { /* the unit square, two triangles */
+            static double xy[] = {0, 0, 1, 0, 1, 1, 0, 1};
+            static lh_index cover[] = {0, 1, 3, 1, 2, 3};
+            lh_pslg sq;
+            memset(&sq, 0, sizeof sq);
+            sq.n = 4, sq.xy = xy, sq.cover_count = 2, sq.cover = cover;
+            old = mesh_checked(lh_t_, &sq, NULL, "the unit square as a cover");
+        } else {
+            lh_pslg g;
+            LH_ASSERT_EQ_INT(load(lh_poly_read, files[i - 1], &g), LH_OK);
+            lh_trimesh_options c;
+            lh_trimesh_options_default(&c);
+            c.convex_hull = 1; /* -pc */
+            old = mesh_checked(lh_t_, &g, &c, files[i - 1]);
+            lh_pslg_free(&g);
+        }
+        if (!old) continue;
+        const double area = area2_sum(old) / 2;
+        lh_trimesh_options o;
+        lh_trimesh_options_default(&o);
+        o.max_area = area / 50;
+        size_t on_boundary = refine_cover(lh_t_, old, &o, "-ra");
+        o.max_area = 0, o.min_angle = 30;
+        refine_cover(lh_t_, old, &o, "-rq30");
+        o.max_area = area / 200;
+        on_boundary += refine_cover(lh_t_, old, &o, "-rq30a");
+        LH_EXPECT_GT_U64(on_boundary, 0);
+        lh_trimesh_free(old);
+    }
+}
+
 LH_TEST(degenerate_input_is_resolved_and_reported)
 {
     /* vertex 5 duplicates 1, segment 5 has zero length after merging, segment 6
@@ -940,6 +1025,7 @@ int main(int argc, char **argv)
         LH_CASE(conforming_below_the_floor_is_reported),
         LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
+        LH_CASE(refining_a_mesh_splits_its_boundary_edges),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
         LH_CASE(the_check_rejects_what_is_not_a_cdt), LH_CASE(every_allocation_failure_is_survived),

@@ -136,6 +136,35 @@ expect "-r missing .ele" 3 '^nothere\.ele: No such file' '' -- "$lh" triangle -r
 absent bad.1.node short.1.node
 cd ..
 
+# -r with -a or -q on a mesh lifthull wrote: Steiner points on the old boundary were
+# dropped as if removed, leaving triangles on point -1 (a double free). The union is
+# kept, every corner is a point of the .node, and every triangle meets -a.
+# mesh_sum FILE: "points triangles lowest highest total-area largest-area" of FILE.node/.ele
+mesh_sum() {
+  awk 'FNR == 1 { f++; if (f == 1) np = $1; else nt = $1; next }
+       f == 1 && NF { x[$1] = $2; y[$1] = $3 }
+       f == 2 && NF { for (i = 2; i <= 4; i++) { if (lo == "" || $i < lo) lo = $i; if ($i > hi) hi = $i }
+                      a = ((x[$3] - x[$2]) * (y[$4] - y[$2]) - (y[$3] - y[$2]) * (x[$4] - x[$2])) / 2
+                      s += a; if (a > mx) mx = a }
+       END { printf "%d %d %d %d %.9g %.9g\n", np, nt, lo, hi, s, mx }' "$1.node" "$1.ele"
+}
+fresh box.poly face.poly
+expect "-pcQ box.poly" 0 '' '' -- "$lh" triangle -pcQ box.poly
+expect "-rpa0.2 box.1" 0 '' '^box\.2: ' -- "$lh" triangle -rpa0.2 box.1
+read -r np nt lo hi total big <<< "$(mesh_sum box.2)"
+same "-rpa0.2: corners are points 1..$np" "$lo $((hi <= np))" "1 1"
+same "-rpa0.2: the union of box.1 kept" "$total" "$(mesh_sum box.1 | cut -d' ' -f5)"
+same "-rpa0.2: every triangle at most 0.2" "$(awk -v b="$big" 'BEGIN { print (b <= 0.2) }')" "1"
+expect "-pQ face.poly" 0 '' '' -- "$lh" triangle -pQ face.poly
+for sw in -rq30 -rpq30 -ra0.01; do
+  rm -f face.2.*
+  expect "$sw face.1" 0 '' '^face\.2: ' -- "$lh" triangle "$sw" face.1
+  read -r np nt lo hi total big <<< "$(mesh_sum face.2)"
+  same "$sw face.1: corners are points 1..$np" "$lo $((hi <= np))" "1 1"
+  same "$sw face.1: the union of face.1 kept" "$total" "$(mesh_sum face.1 | cut -d' ' -f5)"
+done
+cd ..
+
 # usage errors: exit 2, the switch named
 fresh A.poly
 expect "unknown switch" 2 "lifthull triangle: unknown switch 'x' in '-pxq'" '' -- "$lh" triangle -pxq A.poly
