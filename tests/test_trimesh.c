@@ -436,6 +436,46 @@ LH_TEST(bad_input_gets_its_error_and_line)
     LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
 }
 
+/* Misuse of the API gets a status and a message, never a crash: a cover count
+ * without its array (a segfault before), lh_trimesh_options_default(NULL) (a
+ * segfault before), a NaN area bound (it was reported as the angle), segments with
+ * no vertices, an allocator without hooks. */
+LH_TEST(api_misuse_is_refused_with_a_message)
+{
+    double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = 4, g.xy = xy, g.cover_count = 2;
+    lh_trimesh *m = NULL;
+    char msg[128];
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "an array of the PSLG is missing");
+    LH_EXPECT_TRUE(m == NULL);
+    g.cover_count = 0;
+    lh_trimesh_options_default(NULL);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.max_area = NAN;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "maximum area is NaN (0 or less: no bound)");
+    o.max_area = 0;
+    lh_allocator none = {NULL, NULL, NULL};
+    o.alloc = &none;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "the allocator lacks its alloc or free hook");
+    lh_index seg[2] = {0, 1};
+    g.n = 0, g.segment_count = 1, g.segments = seg;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "segment 0: endpoint 0 is not a vertex (there are none)");
+    LH_EXPECT_TRUE(m == NULL);
+    /* counts no array can have: refused before any size is computed from them */
+    g.n = 4, g.segment_count = 0, g.cover_count = SIZE_MAX, g.cover = seg;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    g.cover_count = 0, g.attr_count = INT32_MAX, g.attr = xy, g.n = SIZE_MAX / 8;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_TRUE(m == NULL);
+}
+
 /* split_crossings: an X becomes four segments meeting at a new vertex; earcut's
  * self-crossing water polygons (proper crossings counted by the oracle harness: 2, 19,
  * 65, 133) are meshed with one vertex per crossing. */
@@ -1025,7 +1065,7 @@ int main(int argc, char **argv)
         LH_CASE(conforming_below_the_floor_is_reported),
         LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
-        LH_CASE(refining_a_mesh_splits_its_boundary_edges),
+        LH_CASE(refining_a_mesh_splits_its_boundary_edges), LH_CASE(api_misuse_is_refused_with_a_message),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
         LH_CASE(the_check_rejects_what_is_not_a_cdt), LH_CASE(every_allocation_failure_is_survived),
