@@ -37,6 +37,17 @@ fresh A.poly
 expect "-pq30V" 0 '' '^Angles: smallest (3[0-9]|[4-9][0-9])' -- "$lh" triangle -pq30V A.poly
 matches out.txt '^Triangles below the bounds: 0$' && ok || bad "-V: bad triangles line: $(cat out.txt)"
 expect "-q41 refused" 2 "the angle bound must be 0\.\.40 degrees" '' -- "$lh" triangle -pq41 A.poly
+# -S beyond any size_t (1e30, 1e400) is no limit: the same mesh as without -S (it
+# became a budget of 0, UB in the conversion); -S alone is 0, as Triangle; a sign is
+# refused
+expect "-pq30Q" 0 '' '' -- "$lh" triangle -pq30Q A.poly
+mv A.1.ele unbounded.ele
+expect "-pq30S1e30" 0 '' '^A\.1: 78 points, 89 triangles \(49 Steiner points\)' -- "$lh" triangle -pq30S1e30 A.poly
+same "-S1e30 = no -S" "$(cmp -s A.1.ele unbounded.ele && echo same)" "same"
+expect "-pq30S1e400" 0 '' '^A\.1: 78 points, 89 triangles \(49 Steiner points\)' -- "$lh" triangle -pq30S1e400 A.poly
+expect "-pq30S10" 0 '' '^A\.1: 39 points, 39 triangles \(10 Steiner points\)' -- "$lh" triangle -pq30S10 A.poly
+expect "-pq30S" 0 '' '^A\.1: 29 points, 29 triangles \(0 Steiner points\)' -- "$lh" triangle -pq30S A.poly
+expect "-S-1 refused" 2 "^lifthull triangle: -S takes a count of Steiner points \(0 or more\), not '-1'$" '' -- "$lh" triangle -pq30S-1 A.poly
 cd ..
 
 # -z: everything from 0; -e, -n: the .edge and .neigh files
