@@ -51,6 +51,12 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
 
 /* The quality report: counts, angle and area ranges, an angle histogram. */
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle);
+/* Triangle p[0..2]'s angles in degrees (ang[k] at p[k]), radius-edge ratio (circumradius
+ * over shortest edge; infinity when flat) and edge lengths (len[k] opposite p[k];
+ * infinity beyond DBL_MAX), scale-free: the edge vectors are computed at half scale
+ * when a difference overflows, then scaled by the power of two of their largest
+ * component, so points near +-DBL_MAX, near 1e-300 or both give no NaN. */
+void lh_cli_triangle_shape(const double *const p[3], double ang[3], double *ratio, double len[3]);
 /* The line that says refinement left subsegments unsplit (stats.segments_unsplit). */
 void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s);
 

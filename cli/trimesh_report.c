@@ -4,7 +4,45 @@
 
 #include <math.h>
 
-static double len(const double *a, const double *b) { return hypot(b[0] - a[0], b[1] - a[1]); }
+#define DEG (180 / 3.14159265358979323846)
+
+/* e[k] = p[k+2] - p[k+1] (the edge opposite corner k) with every coordinate first
+ * multiplied by 2^-shift (exact but where subnormals lose their last bits). */
+static void edge_vectors(const double *const p[3], int shift, double e[3][2])
+{
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 2; j++) e[k][j] = ldexp(p[(k + 2) % 3][j], -shift) - ldexp(p[(k + 1) % 3][j], -shift);
+}
+
+void lh_cli_triangle_shape(const double *const p[3], double ang[3], double *ratio, double len[3])
+{
+    double e[3][2], big = 0;
+    int shift = 0; /* a difference of coordinates near +-DBL_MAX overflows: halve them first */
+    edge_vectors(p, 0, e);
+    for (int k = 0; k < 6 && !shift; k++) shift = !isfinite(e[k / 2][k % 2]);
+    if (shift) edge_vectors(p, 1, e);
+    for (int k = 0; k < 6; k++) big = fmax(big, fabs(e[k / 2][k % 2]));
+    if (!(big > 0)) { /* three equal points */
+        for (int k = 0; k < 3; k++) ang[k] = len[k] = 0;
+        *ratio = INFINITY;
+        return;
+    }
+    int ex; /* the edges scaled by a power of two to a largest component in [1/2, 1) */
+    frexp(big, &ex);
+    double l[3];
+    for (int k = 0; k < 3; k++) {
+        e[k][0] = ldexp(e[k][0], -ex), e[k][1] = ldexp(e[k][1], -ex);
+        l[k] = hypot(e[k][0], e[k][1]);
+        len[k] = ldexp(l[k], ex + shift); /* infinity for an edge longer than DBL_MAX */
+    }
+    for (int k = 0; k < 3; k++) { /* between p[k+1] - p[k] = e[k+2] and p[k+2] - p[k] = -e[k+1] */
+        const double *u = e[(k + 2) % 3], *v = e[(k + 1) % 3];
+        ang[k] = atan2(fabs(u[0] * v[1] - u[1] * v[0]), -(u[0] * v[0] + u[1] * v[1])) * DEG;
+    }
+    /* R = l0 l1 l2 / (4 area) = l0 l1 l2 / (2 |e0 x e1|), over the shortest edge */
+    const double a2 = fabs(e[0][0] * e[1][1] - e[0][1] * e[1][0]), lmin = fmin(l[0], fmin(l[1], l[2]));
+    *ratio = a2 > 0 && lmin > 0 ? l[0] * l[1] * l[2] / (2 * a2 * lmin) : INFINITY;
+}
 
 void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s)
 {
@@ -25,18 +63,13 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
     for (size_t i = 0; i < nt; i++) {
         const double *p[3];
         for (int k = 0; k < 3; k++) p[k] = xy + 2 * (size_t)t[3 * i + k];
-        const double a = len(p[1], p[2]), b = len(p[2], p[0]), c = len(p[0], p[1]);
-        const double area = fabs((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])) / 2;
-        const double r = a * b * c / (4 * area), sh = fmin(a, fmin(b, c));
-        rmin = fmin(rmin, r / sh), rmax = fmax(rmax, r / sh);
-        emin = fmin(emin, sh), emax = fmax(emax, fmax(a, fmax(b, c)));
-        const double e[3] = {a, b, c};
-        for (int k = 0; k < 3; k++) { /* law of cosines, clamped */
-            const double x = e[k], y = e[(k + 1) % 3], z = e[(k + 2) % 3];
-            double cs = (y * y + z * z - x * x) / (2 * y * z);
-            cs = cs > 1 ? 1 : cs < -1 ? -1 : cs;
-            int bin = (int)(acos(cs) * 180 / 3.14159265358979323846 / 10);
-            hist[bin > 17 ? 17 : bin < 0 ? 0 : bin]++;
+        double ang[3], ratio, e[3];
+        lh_cli_triangle_shape(p, ang, &ratio, e);
+        rmin = fmin(rmin, ratio), rmax = fmax(rmax, ratio);
+        emin = fmin(emin, fmin(e[0], fmin(e[1], e[2]))), emax = fmax(emax, fmax(e[0], fmax(e[1], e[2])));
+        for (int k = 0; k < 3; k++) { /* an angle of [0, 180] degrees: a bin of 0..17 */
+            const int bin = (int)(ang[k] / 10);
+            hist[bin > 17 ? 17 : bin]++;
         }
     }
     fprintf(out, "Mesh: %zu points (%zu input, %zu Steiner: %zu on segments), %zu triangles, %zu subsegments\n",

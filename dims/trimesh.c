@@ -215,40 +215,55 @@ done:
     return st;
 }
 
+/* Triangle p[0..2]'s angles (radians, ang[k] at p[k]) and area, scale-free: the edge
+ * vectors are taken at half scale when a difference of coordinates overflows (near
+ * +-DBL_MAX), then multiplied by the power of two that brings their largest component
+ * into [1/2, 1), so no product overflows or vanishes: the angles are right from
+ * subnormal to DBL_MAX coordinates, and the area is infinity or 0 only where it is
+ * beyond the range of doubles. */
+static void shape(const double *const p[3], double ang[3], double *area)
+{
+    double e[3][2], big = 0; /* e[k] = p[k+2] - p[k+1], the edge opposite corner k */
+    int shift = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        int finite = 1;
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 2; j++) {
+                e[k][j] = ldexp(p[(k + 2) % 3][j], -shift) - ldexp(p[(k + 1) % 3][j], -shift);
+                finite &= isfinite(e[k][j]) != 0;
+            }
+        if (finite) break;
+        shift = 1;
+    }
+    for (int k = 0; k < 3; k++) big = fmax(big, fmax(fabs(e[k][0]), fabs(e[k][1])));
+    int ex = 0;
+    if (big > 0) frexp(big, &ex);
+    for (int k = 0; k < 3; k++) e[k][0] = ldexp(e[k][0], -ex), e[k][1] = ldexp(e[k][1], -ex);
+    for (int k = 0; k < 3; k++) { /* between p[k+1] - p[k] = e[k+2] and p[k+2] - p[k] = -e[k+1] */
+        const double *u = e[(k + 2) % 3], *v = e[(k + 1) % 3];
+        ang[k] = atan2(fabs(u[0] * v[1] - u[1] * v[0]), -(u[0] * v[0] + u[1] * v[1]));
+    }
+    *area = ldexp((e[1][0] * e[2][1] - e[1][1] * e[2][0]) / 2, 2 * (ex + shift));
+}
+
 static void measure(const lh_trimesh *r, lh_trimesh_stats *s)
 {
     s->triangles = r->nt;
-    double cmin = 1, cmax = -1; /* cosine of the largest angle, of the smallest */
+    double amin = INFINITY, amax = 0;
     s->min_area = r->nt ? INFINITY : 0;
     s->max_area = 0;
     for (size_t t = 0; t < r->nt; t++) {
         const double *p[3];
-        double l2[3];
         for (int k = 0; k < 3; k++) p[k] = r->xy + 2 * (size_t)r->tri[3 * t + k];
-        for (int k = 0; k < 3; k++) {
-            const double dx = p[(k + 2) % 3][0] - p[(k + 1) % 3][0], dy = p[(k + 2) % 3][1] - p[(k + 1) % 3][1];
-            l2[k] = dx * dx + dy * dy; /* the edge opposite corner k */
-        }
-        int lo = 0, hi = 0;
-        for (int k = 1; k < 3; k++) {
-            if (l2[k] < l2[lo]) lo = k;
-            if (l2[k] > l2[hi]) hi = k;
-        }
-        if (lo == hi) hi = (lo + 1) % 3; /* equilateral */
-        for (int j = 0; j < 2; j++) {
-            const int k = j ? hi : lo;
-            const double b = l2[(k + 1) % 3], c = l2[(k + 2) % 3];
-            double cs = (b + c - l2[k]) / (2 * sqrt(b * c));
-            cs = cs > 1 ? 1 : cs < -1 ? -1 : cs;
-            if (j) cmin = cs < cmin ? cs : cmin; else cmax = cs > cmax ? cs : cmax;
-        }
-        const double area = ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])) / 2;
+        double ang[3], area;
+        shape(p, ang, &area);
+        for (int k = 0; k < 3; k++) amin = fmin(amin, ang[k]), amax = fmax(amax, ang[k]);
         s->min_area = area < s->min_area ? area : s->min_area;
         s->max_area = area > s->max_area ? area : s->max_area;
     }
     const double deg = 180 / 3.14159265358979323846;
-    s->min_angle = r->nt ? acos(cmax) * deg : 0;
-    s->max_angle = r->nt ? acos(cmin) * deg : 0;
+    s->min_angle = r->nt ? amin * deg : 0;
+    s->max_angle = r->nt ? amax * deg : 0;
 }
 
 /* The even-odd rule needs closed rings. The parity of the segments a path crosses
