@@ -49,8 +49,10 @@ typedef struct lh_cli_tri_files {
 int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
                          const lh_cli_tri_files *w, const char *cmd);
 
-/* The quality report: counts, angle and area ranges, an angle histogram. */
-void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle);
+/* The quality report: counts, angle and area ranges, an angle histogram, the
+ * triangles below the bounds numbered from first (as the files written: 1, or 0 with
+ * Triangle's -z, VTU and OFF). */
+void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle, int first);
 /* Triangle p[0..2]'s angles in degrees (ang[k] at p[k]), radius-edge ratio (circumradius
  * over shortest edge; infinity when flat) and edge lengths (len[k] opposite p[k];
  * infinity beyond DBL_MAX), scale-free: the edge vectors are computed at half scale

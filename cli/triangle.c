@@ -209,7 +209,7 @@ static int run(const sw *o, const char *file)
         rc = st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL ? LH_EXIT_FAIL : LH_EXIT_INPUT;
     } else {
         rc = lh_cli_trimesh_write(m, &in, outb, &o->files, "triangle");
-        if (rc == LH_EXIT_OK && o->V) lh_cli_trimesh_report(stdout, m, opt.min_angle);
+        if (rc == LH_EXIT_OK && o->V) lh_cli_trimesh_report(stdout, m, opt.min_angle, o->files.base);
         if (rc == LH_EXIT_OK && !o->Q && !o->V) {
             lh_trimesh_stats s;
             lh_trimesh_get_stats(m, &s);

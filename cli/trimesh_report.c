@@ -51,7 +51,7 @@ void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s)
             s->segments_unsplit);
 }
 
-void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
+void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle, int first)
 {
     lh_trimesh_stats s;
     lh_trimesh_get_stats(m, &s);
@@ -95,7 +95,9 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
         fprintf(out, "Triangles below the bounds: %zu%s", s.bad_triangles,
                 s.steiner_limit_reached ? " (the Steiner point limit was reached)" : "");
         const lh_index *bad = lh_trimesh_bad_triangles(m);
-        for (size_t i = 0; i < s.bad_triangles && i < 10; i++) fprintf(out, "%s%lld", i ? " " : ": ", (long long)bad[i]);
+        if (s.bad_triangles) fprintf(out, ", numbered from %d as the files", first);
+        for (size_t i = 0; i < s.bad_triangles && i < 10; i++)
+            fprintf(out, "%s%lld", i ? " " : ": ", (long long)bad[i] + first);
         fprintf(out, "%s\n", s.bad_triangles > 10 ? " ..." : "");
     }
 }

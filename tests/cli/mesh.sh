@@ -74,6 +74,21 @@ grep -q '<svg xmlns="http://www.w3.org/2000/svg" viewBox=' A.svg && grep -q 'id=
 expect "-o svg, bad triangles" 0 '' 'triangles are below the bounds' -- "$lh" mesh la.poly --min-angle 30 -o la.svg
 xml "la.svg is XML" la.svg
 grep -A1 '<g id="bad"' la.svg | grep -q '<path d="M' && ok || bad "la.svg: the bad triangles are not outlined"
+# --report numbers the triangles below the bounds as the files written: from 1 as the
+# .ele (each listed number is a triangle of m30.ele with an angle below 30 degrees),
+# from 0 as VTU cells (it numbered from 0 always)
+expect "--report lists .ele numbers" 0 '' 'numbered from 1 as the files: ' -- "$lh" mesh la.poly --min-angle 30 -o m30.node --report
+first="$(sed -nE 's/^Triangles below the bounds: [0-9]+, numbered from 1 as the files: ([0-9]+).*/\1/p' out.txt)"
+small() { # small NODE ELE NUMBER: the smallest angle (degrees) of triangle NUMBER
+  awk -v k="$3" 'FNR == 1 { f++; next } f == 1 && NF { x[$1] = $2; y[$1] = $3 }
+    f == 2 && $1 == k { m = 180; for (i = 2; i <= 4; i++) { a = $i; b = $(i % 3 + 2); c = $((i + 1) % 3 + 2)
+      ux = x[b] - x[a]; uy = y[b] - y[a]; vx = x[c] - x[a]; vy = y[c] - y[a]
+      t = atan2(ux * vy - uy * vx, ux * vx + uy * vy) * 57.29577951308232; if (t < 0) t = -t; if (t < m) m = t }
+      print m }' "$1" "$2"
+}
+ge 30 "$(small m30.node m30.ele "$first")" && ok || bad "--report: triangle $first of m30.ele is not below 30 degrees"
+expect "--report lists VTU numbers" 0 '' "numbered from 0 as the files: $((first - 1)) " -- "$lh" mesh la.poly --min-angle 30 -o m30.vtu --report
+
 # quality report and SVG of meshes near +-DBL_MAX, or mixing 1e300 and 1e-300: the
 # angles were NaN (converted to int: undefined), the SVG's viewBox "... -nan"; now the
 # angles are right and the DBL_MAX square draws as the square of +-(1 - 2^-53)

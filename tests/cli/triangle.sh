@@ -36,6 +36,11 @@ cd ..
 fresh A.poly
 expect "-pq30V" 0 '' '^Angles: smallest (3[0-9]|[4-9][0-9])' -- "$lh" triangle -pq30V A.poly
 matches out.txt '^Triangles below the bounds: 0$' && ok || bad "-V: bad triangles line: $(cat out.txt)"
+# -V numbers the triangles below the bounds as the .ele: from 1, from 0 with -z
+cp "$data/la.poly" .
+expect "-pq30V la.poly" 0 '' '^Triangles below the bounds: [0-9]+, numbered from 1 as the files: ' -- "$lh" triangle -pq30V la.poly
+one="$(sed -nE 's/.*numbered from 1 as the files: ([0-9]+).*/\1/p' out.txt)"
+expect "-pzq30V la.poly" 0 '' "^Triangles below the bounds: [0-9]+, numbered from 0 as the files: $((one - 1)) " -- "$lh" triangle -pzq30V la.poly
 expect "-q41 refused" 2 "the angle bound must be 0\.\.40 degrees" '' -- "$lh" triangle -pq41 A.poly
 # -S beyond any size_t (1e30, 1e400) is no limit: the same mesh as without -S (it
 # became a budget of 0, UB in the conversion); -S alone is 0, as Triangle; a sign is
