@@ -509,6 +509,20 @@ static void check_refined(const input *in, const lh_pslg *g, const lh_trimesh_op
     }
 }
 
+/* A run failing allocation number 1 + fail_pick % calls (calls: the first run's) must
+ * return LH_ERR_NOMEM and nothing, or succeed with m's arrays, leaking nothing. */
+static void check_failure(const input *in, const lh_trimesh *m, long calls)
+{
+    if (calls <= 0) return;
+    counter c3 = {0, 0, 1 + (long)(in->fail_pick % (unsigned long)calls), 0};
+    lh_trimesh *m3 = NULL;
+    char msg[256];
+    const lh_status s3 = run(in, &c3, &m3, msg, sizeof msg);
+    if (!c3.failed || (s3 == LH_OK ? !same(m, m3) : s3 != LH_ERR_NOMEM || m3)) abort();
+    lh_trimesh_free(m3);
+    if (c3.live) abort();
+}
+
 /* The cover stage (Triangle's -r), when bit 0 of in->cover is set: the mesh `old`
  * refined with its triangles as lh_pslg.cover, its points (and attributes) as the
  * vertices; bit 1: its subsegments as segments too (-rp); bits 2-3: the old
@@ -552,14 +566,7 @@ static void refine_cover(const input *in, const lh_trimesh *old)
     check_refined(&r, g, &r.o, old, m1);
     if (run(&r, &c2, &m2, msg, sizeof msg) != LH_OK || !same(m1, m2)) abort();
     lh_trimesh_free(m2);
-    if (r.fail_mode && c1.calls > 0) {
-        counter c3 = {0, 0, 1 + (long)(r.fail_pick % (unsigned long)c1.calls), 0};
-        lh_trimesh *m3 = NULL;
-        const lh_status s3 = run(&r, &c3, &m3, msg, sizeof msg);
-        if (!c3.failed || (s3 == LH_OK ? !same(m1, m3) : s3 != LH_ERR_NOMEM || m3)) abort();
-        lh_trimesh_free(m3);
-        if (c3.live) abort();
-    }
+    if (r.fail_mode) check_failure(&r, m1, c1.calls);
     lh_trimesh_free(m1);
     free(area);
     if (c1.live || c2.live) abort();
@@ -645,14 +652,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         lh_trimesh_free(m2);
     }
     if (in.cover & 1) refine_cover(&in, m1);
-    if (in.fail_mode && c1.calls > 0) {
-        counter c3 = {0, 0, 1 + (long)(in.fail_pick % (unsigned long)c1.calls), 0};
-        lh_trimesh *m3 = NULL;
-        const lh_status s3 = run(&in, &c3, &m3, msg, sizeof msg);
-        if (!c3.failed || (s3 == LH_OK ? !same(m1, m3) : s3 != LH_ERR_NOMEM || m3)) abort();
-        lh_trimesh_free(m3);
-        if (c3.live) abort();
-    }
+    if (in.fail_mode) check_failure(&in, m1, c1.calls);
     lh_trimesh_free(m1);
     if (c1.live || c2.live) abort();
     return 0;
