@@ -11,10 +11,23 @@ static int usage_error(const char *cmd, const char *what, const char *arg)
     return -1;
 }
 
+/* A whole number in lo..hi written as decimal digits only (no sign, blank or
+ * exponent; not empty) into *out; 0 when s is anything else. */
+static int whole(const char *s, long lo, long hi, int *out)
+{
+    long k = 0;
+    if (!*s || strspn(s, "0123456789") != strlen(s) || strlen(s) > 9) return 0;
+    for (; *s; s++) k = 10 * k + (*s - '0');
+    if (k < lo || k > hi) return 0;
+    *out = (int)k;
+    return 1;
+}
+
 /* The option letter of argument s, or 0 when it is not an option. */
 static char letter(const char *s)
 {
     if (!strcmp(s, "--circles")) return 'c';
+    if (!strcmp(s, "--ascii")) return 'A';
     if (!strcmp(s, "--values")) return 'v';
     if (!strcmp(s, "--threads")) return 't';
     if (!strcmp(s, "--format")) return 'F';
@@ -49,6 +62,7 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
         case 'q': a->quiet = 1; break;
         case 'f': a->force = 1; break;
         case 'c': a->circles = 1; break;
+        case 'A': a->ascii = 1; break;
         case 'o': a->output = argv[++i]; break;
         case 'm': a->method = argv[++i]; break;
         case 'F': {
@@ -58,19 +72,13 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
             if (a->format == (lh_format)-1) return usage_error(cmd, "--format takes qhull, node or columns, not", f);
             break;
         }
-        case 't': { /* every point command accepts it */
-            char *end;
-            long k = strtol(argv[++i], &end, 10);
-            if (*end || k < 0 || k > 4096) return usage_error(cmd, "--threads takes 0..4096, not", argv[i]);
-            a->threads = (int)k;
+        case 't': /* every point command accepts it */
+            if (!whole(argv[++i], 0, 4096, &a->threads))
+                return usage_error(cmd, "--threads takes a whole number from 0 to 4096, not", argv[i]);
             break;
-        }
-        default: {
-            char *end;
-            long k = strtol(argv[++i], &end, 10);
-            if (*end || k < 1 || k > 6) return usage_error(cmd, "--values takes 1..6, not", argv[i]);
-            a->values = (int)k;
-        }
+        default:
+            if (!whole(argv[++i], 1, 6, &a->values))
+                return usage_error(cmd, "--values takes a whole number from 1 to 6, not", argv[i]);
         }
     }
     if (a->nfile < min_files) {

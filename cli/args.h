@@ -13,6 +13,7 @@ typedef struct lh_cli_args {
     int quiet;          /* -q: no progress line                 */
     int force;          /* -f: -o may replace a file             */
     int circles;        /* --circles (SVG)                      */
+    int ascii;          /* --ascii: a .vtu as text, not binary   */
     const char *output; /* -o FILE                              */
     const char *method; /* -m NAME                              */
     int values;         /* --values K                           */
@@ -23,7 +24,7 @@ typedef struct lh_cli_args {
 } lh_cli_args;
 
 /* Parses argv for command `cmd` accepting the options named in `accepted` (letters
- * s u a q f o m, and 'c' for --circles, 'v' for --values; every point command takes
+ * s u a q f o m, and 'c' for --circles, 'A' for --ascii, 'v' for --values; every point command takes
  * --threads N, the threads of its Delaunay triangulation (0: one per CPU), and --format
  * F to read the input files as Qhull points, .node or columns) and up to max_files
  * operands (at least min_files). `help` is printed on --help or -h. Returns 0; 1 after

@@ -3,7 +3,6 @@
 #include "args.h"
 #include "cli.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -24,17 +23,15 @@ static const char help[] =
     "\n"
     "examples:\n"
     "  rbox 1000 D3 > p.txt; qdelaunay Qt i < p.txt > s.txt; lifthull check p.txt s.txt\n"
-    "  triangle mesh.node; lifthull check mesh.1.node mesh.1.ele\n"
+    "  lifthull triangle -Q examples/dots.node    # examples/dots.1.node, dots.1.ele\n"
+    "  lifthull check examples/dots.1.node examples/dots.1.ele\n"
     "\n"
     "exit codes: 0 valid, 1 not a Delaunay triangulation, 2 usage, 3 bad input file.\n";
 
 static int read_cells(const char *file, size_t n, lh_cells *c)
 {
-    FILE *f = fopen(file, "r");
-    if (!f) {
-        fprintf(stderr, "%s: %s\n", file, strerror(errno));
-        return 0;
-    }
+    FILE *f = lh_cli_open_input(file);
+    if (!f) return 0;
     char msg[512];
     lh_status st = lh_cells_read(f, file, n, NULL, c, msg, sizeof msg);
     fclose(f);

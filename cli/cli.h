@@ -20,11 +20,19 @@ int lh_cli_triangle(int argc, char **argv);
 int lh_cli_mesh(int argc, char **argv);
 
 /* Shared by the commands that read points (common.c). */
+#include <stdio.h>
+
 #include "lifthull.h"
 double lh_cli_seconds(void);
+/* Opens path for reading; NULL after printing "PATH: problem" (a directory too). */
+FILE *lh_cli_open_input(const char *path);
 /* Reads FILE (or standard input for NULL or "-") in format fmt (LH_FORMAT_AUTO: by
  * name and content); 0 after printing the error. */
 int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **name);
+/* lh_cli_load with a progress line while reading (progress.h; prog may be NULL). */
+struct lh_cli_progress;
+int lh_cli_load_progress(const char *file, lh_format fmt, lh_points *pts, const char **name,
+                         struct lh_cli_progress *prog);
 /* Both files (sites, then queries); 0 after printing the problem. */
 int lh_cli_load_pair(const char *f1, const char *f2, lh_format fmt, lh_points *a, lh_points *b,
                      const char **names);

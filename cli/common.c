@@ -1,10 +1,13 @@
 /* common.c — what the commands that read points share: options, loading, failure
  * messages, timing, flushing the output (cli.h). */
+#define _POSIX_C_SOURCE 200809L /* fileno */
 #include "cli.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 double lh_cli_seconds(void)
@@ -14,20 +17,40 @@ double lh_cli_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+FILE *lh_cli_open_input(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        fprintf(stderr, "%s: %s\n", path, strerror(errno));
+        return NULL;
+    }
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) { /* fopen opens one; reading it fails */
+        fprintf(stderr, "%s: is a directory, not an input file\n", path);
+        fclose(f);
+        return NULL;
+    }
+    return f;
+}
+
 int lh_cli_load(const char *file, lh_format fmt, lh_points *pts, const char **name)
+{
+    return lh_cli_load_progress(file, fmt, pts, name, NULL);
+}
+
+int lh_cli_load_progress(const char *file, lh_format fmt, lh_points *pts, const char **name,
+                         struct lh_cli_progress *prog)
 {
     FILE *f = stdin;
     *name = "<stdin>";
     if (file && strcmp(file, "-")) {
-        f = fopen(file, "r");
         *name = file;
-        if (!f) {
-            fprintf(stderr, "%s: %s\n", file, strerror(errno));
-            return 0;
-        }
+        if (!(f = lh_cli_open_input(file))) return 0;
     }
     char msg[512];
+    lh_cli_progress_file(prog, "reading", *name, f);
     lh_status st = lh_points_read(f, *name, fmt, NULL, pts, msg, sizeof msg);
+    lh_cli_progress_file_done(prog);
     if (f != stdin) fclose(f);
     if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
     return st == LH_OK;

@@ -500,7 +500,7 @@ static const char usage_text[] =
     "  lifthull points 10000 -d 2 | lifthull delaunay -s\n"
     "  lifthull points 500 -d 2 --integer 10 | lifthull delaunay -s\n"
     "  lifthull points 2000 -d 4 --exact-sphere | lifthull delaunay -s\n"
-    "  lifthull points --grid 5 -d 3 -o grid.txt\n"
+    "  lifthull points --grid 5 -d 3 -o grid.txt -f\n"
     "  lifthull points 100000 -d 5 --clusters 20 --seed 3 -o clusters.txt -f\n";
 
 /* The most points --exact-sphere gives in 2D (M < 2^62). */
@@ -687,6 +687,7 @@ int lh_cli_generate(int argc, char **argv)
     gen_opts o;
     int r = parse_args(argc, argv, &o);
     if (r != 0) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check("points", o.out, o.force, NULL)) return LH_EXIT_FAIL;
     sphere_plan plan = {.d = o.d};
     if (o.kind == GEN_EXACT_SPHERE) {
         r = o.d == 2 ? plan_circle(&plan, o.n) : plan_sphere(&plan, o.n);

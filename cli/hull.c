@@ -4,6 +4,7 @@
 #include "args.h"
 #include "cli.h"
 #include "outfile.h"
+#include "progress.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -16,11 +17,12 @@ static const char help[] =
     "orient_d(facet, p) > 0 for points p outside; coplanar facets are split, never\n"
     "merged. Output: the count, then one facet a line (0-based site indices; qconvex i\n"
     "lists the same facets with the last two exchanged: use lifthull qconvex for its\n"
-    "exact formats); -s a summary; -o FILE.off an OFF surface (3D).\n"
+    "exact formats); -s a summary; -o FILE.off an OFF surface (3D). A progress line\n"
+    "shows on a terminal after 2 s of reading, building or writing (-q: none).\n"
     "\n"
     "examples:\n"
     "  rbox 1000 D4 | lifthull hull -s\n"
-    "  lifthull points 500 -d 3 --sphere | lifthull hull -o hull.off\n"
+    "  lifthull points 500 -d 3 --sphere | lifthull hull -o hull.off -f\n"
     "\n"
     "exit codes: 0 done, 1 the computation failed, 2 usage, 3 bad input file.\n";
 
@@ -48,13 +50,20 @@ int lh_cli_hull(int argc, char **argv)
     lh_cli_args a;
     int r = lh_cli_args_parse(&a, "hull", "sqfo", 0, 1, argc, argv, help);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check("hull", a.output, a.force, a.file[0])) return LH_EXIT_FAIL;
+    lh_cli_progress prog;
+    lh_cli_progress_init(&prog, "hull", a.quiet);
     lh_points pts;
     const char *name;
-    if (!lh_cli_load(a.file[0], a.format, &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load_progress(a.file[0], a.format, &pts, &name, &prog)) return LH_EXIT_INPUT;
+    lh_options opt;
+    lh_options_default(&opt);
+    lh_cli_progress_attach(&prog, "hull", a.quiet, &opt);
     double t0 = lh_cli_seconds();
     lh_hull *h;
-    lh_status st = lh_convex_hull(pts.d, pts.n, pts.xyz, NULL, &h);
+    lh_status st = lh_convex_hull(pts.d, pts.n, pts.xyz, &opt, &h);
     double t1 = lh_cli_seconds();
+    lh_cli_progress_done(&prog);
     if (st != LH_OK) {
         lh_cli_report_failure(name, pts.d, pts.n, pts.xyz, st);
         lh_points_free(&pts);
@@ -65,6 +74,7 @@ int lh_cli_hull(int argc, char **argv)
     const char *dot = a.output ? strrchr(a.output, '.') : NULL;
     if (lh_cli_out_open(&out, "hull", a.output, a.force, a.file[0])) {
         int ok = 1;
+        if (a.output) lh_cli_progress_file(&prog, "writing", a.output, out.f);
         if (a.summary)
             fprintf(out.f, "sites %zu\ndimension %d\nhull facets %zu\nhull vertices %zu\nseconds %.3f\n", pts.n,
                     pts.d, lh_hull_facet_count(h), lh_hull_vertex_count(h), t1 - t0);
@@ -72,6 +82,7 @@ int lh_cli_hull(int argc, char **argv)
             ok = off(out.f, h, &pts);
         else
             facets(out.f, h);
+        lh_cli_progress_file_done(&prog);
         status = lh_cli_out_close(&out, "hull", ok);
     }
     lh_hull_free(h);

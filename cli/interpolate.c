@@ -27,7 +27,7 @@ static const char help[] =
     "example:\n"
     "  printf 'x,y,v\\n0,0,1\\n1,0,2\\n0,1,3\\n1,1,4\\n' > s.csv\n"
     "  printf '2 1\\n0.5 0.5\\n' > q.txt\n"
-    "  lifthull interpolate --values 1 s.csv q.txt          # prints 2.5\n"
+    "  lifthull interpolate --values 1 s.csv q.txt  # prints 2.5\n"
     "\n"
     "exit codes: 0 done, 1 the computation failed, 2 usage, 3 bad input file.\n";
 
@@ -118,6 +118,9 @@ int lh_cli_interpolate(int argc, char **argv)
         fprintf(stderr, "lifthull interpolate: unknown method '%s' (linear, natural or nearest)\n", a.method);
         return LH_EXIT_USAGE;
     }
+    if (!lh_cli_out_check("interpolate", a.output, a.force, a.file[1]) ||
+        !lh_cli_out_check("interpolate", a.output, a.force, a.file[0]))
+        return LH_EXIT_FAIL;
     lh_points s, q;
     const char *names[2];
     if (!lh_cli_load_pair(a.file[0], a.file[1], a.format, &s, &q, names)) return LH_EXIT_INPUT;

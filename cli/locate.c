@@ -66,6 +66,9 @@ int lh_cli_locate(int argc, char **argv)
     lh_cli_args a;
     int r = lh_cli_args_parse(&a, "locate", "qfo", 2, 2, argc, argv, help);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check("locate", a.output, a.force, a.file[1]) ||
+        !lh_cli_out_check("locate", a.output, a.force, a.file[0]))
+        return LH_EXIT_FAIL;
     lh_points s, q;
     const char *names[2];
     if (!lh_cli_load_pair(a.file[0], a.file[1], a.format, &s, &q, names)) return LH_EXIT_INPUT;

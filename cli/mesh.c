@@ -2,7 +2,6 @@
  * computation of `lifthull triangle` (lh_triangulate_pslg: constrained Delaunay
  * triangulation of a .poly, .node or JSON rings, optionally refined), written in the
  * format -o's extension names, or the quality report on standard output. */
-#define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include "cli.h"
 #include "outfile.h"
 #include "pslg_io.h"
@@ -26,7 +25,7 @@ static const char help[] =
     "histogram, the triangles left below the bounds) on standard output; with -o OUT\n"
     "the format its extension names, written whole or not at all, never an input:\n"
     "  .vtu   VTK (ParaView): triangles, neighbours, point data 'marker' (boundary\n"
-    "         markers), cell data 'region' with --attributes\n"
+    "         markers), cell data 'region' with --attributes; binary (--ascii: text)\n"
     "  .msh   Gmsh 4.1 (markers as node data)    .off  OFF\n"
     "  .node  Triangle's files OUT.node, OUT.ele, and OUT.poly for a .poly or .json\n"
     "         input (.ele names the same three)\n"
@@ -55,12 +54,13 @@ static const char help[] =
     "  -o OUT                 write OUT; an existing file needs -f\n"
     "  -f                     -o may replace existing files\n"
     "  -q                     no summary line after writing -o\n"
+    "  --ascii                a .vtu as text (default: binary, base64 inline)\n"
     "\n"
     "examples:\n"
-    "  lifthull mesh A.poly --min-angle 30                quality report\n"
-    "  lifthull mesh A.poly --min-angle 30 --max-area 0.01 -o A.vtu\n"
-    "  lifthull mesh face.poly --quality -o face.svg\n"
-    "  lifthull mesh lake.json --min-angle 25 -o lake.node   lake.node/.ele/.poly\n"
+    "  lifthull mesh examples/A.poly --min-angle 30       # the quality report\n"
+    "  lifthull mesh examples/A.poly --min-angle 30 --max-area 0.01 -o A.vtu -f\n"
+    "  lifthull mesh examples/A.poly --quality -o A.svg -f\n"
+    "  lifthull mesh examples/lake.json --min-angle 25 -o lake.node -f  # and .ele .poly\n"
     "\n"
     "exit codes: 0 done (triangles below the bounds are reported, not an error), 1 out\n"
     "of memory or an output file could not be written, 2 usage, 3 bad input file\n"
@@ -69,7 +69,7 @@ static const char help[] =
 typedef struct mesh_args {
     lh_trimesh_options opt;
     const char *file, *output;
-    int force, quiet, report, ignore_holes, quality, angle_given;
+    int force, quiet, report, ignore_holes, quality, angle_given, ascii;
 } mesh_args;
 
 static int usage_error(const char *what, const char *arg)
@@ -123,6 +123,7 @@ static int parse(mesh_args *a, int argc, char **argv)
         else if (!strcmp(s, "-f")) a->force = 1;
         else if (!strcmp(s, "-q")) a->quiet = 1;
         else if (!strcmp(s, "--report")) a->report = 1;
+        else if (!strcmp(s, "--ascii")) a->ascii = 1;
         else if (!strcmp(s, "--quality")) a->quality = 1;
         else if (!strcmp(s, "--region-areas")) a->opt.region_areas = 1;
         else if (!strcmp(s, "--attributes")) a->opt.region_attributes = 1;
@@ -175,43 +176,6 @@ static int ext_index(const char *name, const char *const *exts, int n, size_t *s
 enum { OUT_VTU, OUT_MSH, OUT_OFF, OUT_NODE, OUT_ELE, OUT_SVG, OUT_COUNT };
 static const char *const out_ext[OUT_COUNT] = {".vtu", ".msh", ".off", ".node", ".ele", ".svg"};
 
-/* The region attribute as VTK cell data, spliced into lh_write_vtu's document (the
- * library's view carries point data only): before the line that closes its
- * CellData (the neighbours are always there), else a CellData of its own before
- * the Piece ends. Returns 1, or 0 on a write error. */
-static int vtu_with_regions(FILE *out, const lh_mesh_view *v, const double *region, lh_status *st)
-{
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *mem = open_memstream(&buf, &len);
-    if (!mem) {
-        *st = LH_ERR_NOMEM;
-        return 0;
-    }
-    *st = lh_write_vtu(mem, v);
-    if (fclose(mem) != 0 && *st == LH_OK) *st = LH_ERR_NOMEM;
-    int ok = *st == LH_OK;
-    if (ok) {
-        const char *close = strstr(buf, "</CellData>"), *piece = strstr(buf, "</Piece>");
-        const char *at = close ? close : piece;
-        if (!at) {
-            *st = LH_ERR_INTERNAL;
-            ok = 0;
-        } else {
-            while (at > buf && at[-1] != '\n') at--; /* the line's start */
-            fwrite(buf, 1, (size_t)(at - buf), out);
-            if (!close) fputs("      <CellData>\n", out);
-            fputs("        <DataArray type=\"Float64\" Name=\"region\" format=\"ascii\">\n", out);
-            for (size_t i = 0; i < v->count; i++) fprintf(out, "          %.17g\n", region[i]);
-            fputs("        </DataArray>\n", out);
-            if (!close) fputs("      </CellData>\n", out);
-            fputs(at, out);
-        }
-    }
-    free(buf);
-    return ok;
-}
-
 /* One file (.vtu .msh .off .svg) through the whole-or-nothing mechanism. */
 static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind)
 {
@@ -237,10 +201,11 @@ static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh
     lh_status st = LH_OK;
     int ok;
     switch (kind) {
-    case OUT_VTU:
-        ok = lh_trimesh_triangle_attrs(m) ? vtu_with_regions(out.f, &v, lh_trimesh_triangle_attrs(m), &st)
-                                          : (st = lh_write_vtu(out.f, &v)) == LH_OK;
+    case OUT_VTU: {
+        const lh_vtu_options vo = {a->ascii, lh_trimesh_triangle_attrs(m), "region"};
+        ok = (st = lh_write_vtu_opts(out.f, &v, &vo)) == LH_OK;
         break;
+    }
     case OUT_MSH: ok = (st = lh_write_msh(out.f, &v)) == LH_OK; break;
     case OUT_OFF: ok = (st = lh_write_off(out.f, &v)) == LH_OK; break;
     default: {
@@ -256,9 +221,12 @@ static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh
     return lh_cli_out_close(&out, "mesh", ok);
 }
 
-static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind, size_t stem)
+/* For -o BASE.node or BASE.ele: Triangle's files BASE.node and BASE.ele, numbered from
+ * 1, with markers, and BASE.poly for a graph (in_kind), written (m) or, with m NULL,
+ * only checked before the input is read. */
+static int triangle_files(const mesh_args *a, const lh_cli_pslg *in, int in_kind, const lh_trimesh *m,
+                          size_t stem)
 {
-    if (kind != OUT_NODE && kind != OUT_ELE) return write_one(a, in, m, kind);
     char *base = malloc(stem + 1);
     if (!base) {
         fprintf(stderr, "lifthull mesh: out of memory\n");
@@ -266,11 +234,17 @@ static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trim
     }
     memcpy(base, a->output, stem);
     base[stem] = 0;
-    /* Triangle's three files, numbered from 1, with markers; .poly for a graph */
-    lh_cli_tri_files w = {1, 1, in->kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force};
-    const int rc = lh_cli_trimesh_write(m, in, base, &w, "mesh");
+    lh_cli_tri_files w = {1, 1, in_kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force};
+    const int rc = m ? lh_cli_trimesh_write(m, in, base, &w, "mesh")
+                     : lh_cli_trimesh_check(base, &w, a->file, "mesh") ? LH_EXIT_OK : LH_EXIT_FAIL;
     free(base);
     return rc;
+}
+
+static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind, size_t stem)
+{
+    if (kind != OUT_NODE && kind != OUT_ELE) return write_one(a, in, m, kind);
+    return triangle_files(a, in, in->kind, m, stem);
 }
 
 int lh_cli_mesh(int argc, char **argv)
@@ -291,6 +265,11 @@ int lh_cli_mesh(int argc, char **argv)
         usage_error("-o: the name must end in .vtu, .msh, .off, .node, .ele or .svg:", a.output);
         return LH_EXIT_USAGE;
     }
+    /* every output file is checked before the input is read */
+    if (a.output && (ok_kind == OUT_NODE || ok_kind == OUT_ELE
+                         ? triangle_files(&a, NULL, in_kind[ik], NULL, out_stem) != LH_EXIT_OK
+                         : !lh_cli_out_check("mesh", a.output, a.force, a.file)))
+        return LH_EXIT_FAIL;
     char *base = malloc(stem + 1);
     if (!base) {
         fprintf(stderr, "lifthull mesh: out of memory\n");

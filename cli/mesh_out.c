@@ -25,44 +25,90 @@ int lh_cli_is_mesh_path(const char *path)
 
 typedef lh_status (*writer)(FILE *f, const lh_mesh_view *m, int first_index);
 
-static lh_status vtu(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_vtu(f, m); }
+static lh_status vtu(FILE *f, const lh_mesh_view *m, int first)
+{
+    (void)first;
+    return lh_write_vtu_opts(f, m, NULL);
+}
+static lh_status vtu_ascii(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_vtu(f, m); }
 static lh_status msh(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_msh(f, m); }
 static lh_status off(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_off(f, m); }
 
 /* One file through the whole-or-nothing mechanism. */
 static int one_file(const char *cmd, const lh_cli_args *a, const char *input, const char *path,
-                    writer w, const lh_mesh_view *m)
+                    writer w, const lh_mesh_view *m, lh_cli_progress *prog)
 {
     lh_cli_out out;
     if (!lh_cli_out_open(&out, cmd, path, a->force, input)) return LH_EXIT_FAIL;
+    lh_cli_progress_file(prog, "writing", path, out.f);
     lh_status st = w(out.f, m, 1);
+    lh_cli_progress_file_done(prog);
     if (st != LH_OK && st != LH_ERR_IO)
         fprintf(stderr, "lifthull %s: %s: %s\n", cmd, path,
                 st == LH_ERR_DIMENSION ? "the format cannot hold this dimension" : lh_status_message(st));
     return lh_cli_out_close(&out, cmd, st == LH_OK);
 }
 
-/* BASE.node, BASE.ele, BASE.neigh. */
-static int triangle_files(const char *cmd, const lh_cli_args *a, const char *input, const lh_mesh_view *m)
+/* The three Triangle/TetGen files of a .node or .ele output name: BASE.node, BASE.ele,
+ * BASE.neigh (malloc'ed, into path[3]); 0 when out of memory. */
+static const char *const tri_ext[3] = {".node", ".ele", ".neigh"};
+
+static int tri_paths(const char *output, char *path[3])
 {
-    const char *e = extension(a->output);
-    size_t base = (size_t)(e - a->output);
-    char *path = malloc(base + 8);
-    if (!path) return LH_EXIT_FAIL;
-    static const char *const exts[3] = {".node", ".ele", ".neigh"};
-    static const writer ws[3] = {lh_write_node, lh_write_ele, lh_write_neigh};
-    int status = LH_EXIT_OK;
-    for (int i = 0; i < 3 && status == LH_EXIT_OK; i++) {
-        memcpy(path, a->output, base);
-        strcpy(path + base, exts[i]);
-        status = one_file(cmd, a, input, path, ws[i], m);
+    const size_t base = (size_t)(extension(output) - output);
+    for (int i = 0; i < 3; i++) path[i] = NULL;
+    for (int i = 0; i < 3; i++) {
+        if (!(path[i] = malloc(base + 8))) return 0;
+        memcpy(path[i], output, base);
+        strcpy(path[i] + base, tri_ext[i]);
     }
-    free(path);
-    return status;
+    return 1;
+}
+
+static int is_tri_path(const char *path)
+{
+    const char *e = extension(path);
+    return !strcmp(e, ".node") || !strcmp(e, ".ele");
+}
+
+int lh_cli_mesh_out_check(const char *cmd, const lh_cli_args *a, const char *input)
+{
+    if (!a->output || !is_tri_path(a->output)) return lh_cli_out_check(cmd, a->output, a->force, input);
+    char *path[3];
+    int ok = tri_paths(a->output, path);
+    if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    for (int i = 0; i < 3 && ok; i++) ok = lh_cli_out_check(cmd, path[i], a->force, input);
+    for (int i = 0; i < 3; i++) free(path[i]);
+    return ok;
+}
+
+/* BASE.node, BASE.ele, BASE.neigh: one output set, all three or none. */
+static int triangle_files(const char *cmd, const lh_cli_args *a, const char *input, const lh_mesh_view *m,
+                          lh_cli_progress *prog)
+{
+    static const writer ws[3] = {lh_write_node, lh_write_ele, lh_write_neigh};
+    char *path[3];
+    FILE *f[3] = {0};
+    int ok = tri_paths(a->output, path);
+    if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    lh_cli_outset set;
+    lh_cli_outset_init(&set, cmd, a->force, input);
+    for (int i = 0; i < 3 && ok; i++) ok = (f[i] = lh_cli_outset_add(&set, path[i])) != NULL;
+    for (int i = 0; i < 3 && ok; i++) {
+        lh_cli_progress_file(prog, "writing", path[i], f[i]);
+        lh_status st = ws[i](f[i], m, 1);
+        lh_cli_progress_file_done(prog);
+        if (st != LH_OK && st != LH_ERR_IO)
+            fprintf(stderr, "lifthull %s: %s: %s\n", cmd, path[i], lh_status_message(st));
+        ok = st == LH_OK;
+    }
+    const int rc = lh_cli_outset_close(&set, ok);
+    for (int i = 0; i < 3; i++) free(path[i]);
+    return rc;
 }
 
 static int svg(const char *cmd, const lh_cli_args *a, const char *input, lh_tri *t, const double *xyz,
-               int voronoi)
+               int voronoi, lh_cli_progress *prog)
 {
     if (lh_tri_dim(t) != 2 || lh_tri_simplex_dim(t) != 2) {
         fprintf(stderr, "lifthull %s: %s: SVG pictures are of 2D triangulations\n", cmd, a->output);
@@ -73,16 +119,20 @@ static int svg(const char *cmd, const lh_cli_args *a, const char *input, lh_tri 
                     voronoi ? "lifthull voronoi" : "lifthull delaunay"};
     lh_cli_out out;
     if (!lh_cli_out_open(&out, cmd, a->output, a->force, input)) return LH_EXIT_FAIL;
-    return lh_cli_out_close(&out, cmd, lh_cli_svg_write(out.f, &s) == 0);
+    lh_cli_progress_file(prog, "writing", a->output, out.f);
+    const int ok = lh_cli_svg_write(out.f, &s) == 0;
+    lh_cli_progress_file_done(prog);
+    return lh_cli_out_close(&out, cmd, ok);
 }
 
 int lh_cli_write_mesh(const char *cmd, const lh_cli_args *a, const char *input, lh_tri *t,
-                      const double *xyz, int voronoi)
+                      const double *xyz, int voronoi, lh_cli_progress *prog)
 {
     lh_mesh_view m = {lh_tri_dim(t), lh_tri_site_count(t), xyz, lh_tri_simplex_dim(t), lh_tri_count(t),
                       lh_tri_simplices(t), lh_tri_neighbors(t), NULL, NULL};
     const char *e = extension(a->output);
-    if (!strcmp(e, ".svg")) return svg(cmd, a, input, t, xyz, voronoi);
-    if (!strcmp(e, ".node") || !strcmp(e, ".ele")) return triangle_files(cmd, a, input, &m);
-    return one_file(cmd, a, input, a->output, !strcmp(e, ".vtu") ? vtu : !strcmp(e, ".msh") ? msh : off, &m);
+    if (!strcmp(e, ".svg")) return svg(cmd, a, input, t, xyz, voronoi, prog);
+    if (is_tri_path(a->output)) return triangle_files(cmd, a, input, &m, prog);
+    const writer w = !strcmp(e, ".vtu") ? (a->ascii ? vtu_ascii : vtu) : !strcmp(e, ".msh") ? msh : off;
+    return one_file(cmd, a, input, a->output, w, &m, prog);
 }

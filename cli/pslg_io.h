@@ -28,6 +28,9 @@ void lh_cli_pslg_free(lh_cli_pslg *in);
  * with area, BASE.area its cover_area. Returns 1, or 0 after printing the problem
  * (FILE:LINE:COL: ...). */
 int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area);
+/* Triangle's .area (area_read.c): count area bounds, one per triangle of the .ele,
+ * from f into area. Returns 1, or 0 after printing the problem (FILE:LINE:COL: ...). */
+int lh_cli_area_read(FILE *f, const char *path, size_t count, double *area);
 /* Prints lh_triangulate_pslg's failure as "FILE:LINE: ..." or "FILE: ...". */
 void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg);
 
@@ -43,11 +46,15 @@ typedef struct lh_cli_tri_files {
 } lh_cli_tri_files;
 
 /* Writes the files BASE.node etc. whole or not at all (each to a temporary file,
- * all renamed at the end; none left behind on failure); in supplies the holes and
+ * renamed together at the end when all were written; none left behind on failure:
+ * outfile.h); in supplies the holes and
  * regions for .poly. Never replaces an input file (in->path, in->node_path).
  * Returns 0 (LH_EXIT_OK) or LH_EXIT_FAIL after printing the problem. */
 int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
                          const lh_cli_tri_files *w, const char *cmd);
+/* Checks every file lh_cli_trimesh_write would write (lh_cli_out_check), before the
+ * input is read. Returns 1, or 0 after printing the problem. */
+int lh_cli_trimesh_check(const char *base, const lh_cli_tri_files *w, const char *input, const char *cmd);
 
 /* The quality report: counts, angle and area ranges, an angle histogram, the
  * triangles below the bounds numbered from first (as the files written: 1, or 0 with

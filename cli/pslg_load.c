@@ -2,17 +2,10 @@
  * Triangle's .poly (with its .node when the .poly lists no vertices), a .node point
  * set, or JSON polygon rings. */
 #include "pslg_io.h"
+#include "cli.h"
 
-#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-
-static FILE *open_in(const char *path)
-{
-    FILE *f = fopen(path, "r");
-    if (!f) fprintf(stderr, "%s: %s\n", path, strerror(errno));
-    return f;
-}
 
 /* A .poly whose vertices are in BASE.node: read that and hand its points over. */
 static int attach_node(lh_cli_pslg *in, const char *base)
@@ -24,7 +17,7 @@ static int attach_node(lh_cli_pslg *in, const char *base)
     memcpy(node + len, ".node", 6);
     lh_points pts;
     memset(&pts, 0, sizeof pts);
-    FILE *f = open_in(node);
+    FILE *f = lh_cli_open_input(node);
     char msg[512];
     lh_status st = f ? lh_points_read(f, node, LH_FORMAT_NODE, NULL, &pts, msg, sizeof msg) : LH_ERR_IO;
     if (f) fclose(f);
@@ -67,7 +60,7 @@ int lh_cli_pslg_load(lh_cli_pslg *in, const char *path, const char *base, int ki
     memset(in, 0, sizeof *in);
     in->path = path;
     in->kind = kind;
-    FILE *f = open_in(path);
+    FILE *f = lh_cli_open_input(path);
     if (!f) return 0;
     char msg[512];
     lh_status st = LH_OK;
@@ -103,49 +96,14 @@ void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg)
         fprintf(stderr, "%s: %s\n", in->path, msg[0] ? msg : lh_status_message(st));
 }
 
-/* BASE.area: "count" then "number area" lines numbered from 0 or 1, one per triangle of
- * the .ele (Triangle's format; -1 or any value <= 0: no bound). */
 static int load_area(lh_cli_pslg *in, const char *path)
 {
-    FILE *f = open_in(path);
+    FILE *f = lh_cli_open_input(path);
     if (!f) return 0;
     in->area = malloc((in->ele.count ? in->ele.count : 1) * sizeof *in->area);
-    char line[512];
-    size_t lineno = 0, count = 0, got = 0;
-    long long first = -1;
     int ok = in->area != NULL;
-    while (ok && fgets(line, sizeof line, f)) {
-        lineno++;
-        char *h = strchr(line, '#');
-        if (h) *h = 0;
-        char *p = line, *end;
-        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') p++;
-        if (!*p) continue;
-        if (!count) { /* the header */
-            const long long c = strtoll(p, &end, 10);
-            if (end == p || c != (long long)in->ele.count) {
-                fprintf(stderr, "%s:%zu: expected the triangle count of the .ele (%zu), found '%.40s'\n", path, lineno,
-                        in->ele.count, p);
-                ok = 0;
-            }
-            count = (size_t)c;
-            continue;
-        }
-        const long long num = strtoll(p, &end, 10);
-        const double a = end != p ? strtod(end, &p) : 0;
-        if (first < 0) first = num;
-        if (end == p || got >= count || num != first + (long long)got || (first != 0 && first != 1) || a != a) {
-            fprintf(stderr, "%s:%zu: expected triangle %lld's number and area, found '%.40s'\n", path, lineno,
-                    (first < 0 ? 1 : first) + (long long)got, line);
-            ok = 0;
-            break;
-        }
-        in->area[got++] = a;
-    }
-    if (ok && got != in->ele.count) {
-        fprintf(stderr, "%s:%zu: expected %zu areas, found %zu\n", path, lineno, in->ele.count, got);
-        ok = 0;
-    }
+    if (!ok) fprintf(stderr, "%s: out of memory\n", path);
+    else ok = lh_cli_area_read(f, path, in->ele.count, in->area);
     fclose(f);
     return ok;
 }
@@ -157,7 +115,7 @@ int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area)
     if (!path) return 0;
     memcpy(path, base, len);
     memcpy(path + len, ".ele", 5);
-    FILE *f = open_in(path);
+    FILE *f = lh_cli_open_input(path);
     char msg[512];
     lh_status st = f ? lh_cells_read(f, path, in->g.n, NULL, &in->ele, msg, sizeof msg) : LH_ERR_IO;
     if (f) fclose(f);

@@ -11,6 +11,7 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
     lh_cli_qopts o;
     int r = lh_cli_qparse(&o, prog, argc, argv);
     if (r != 0) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check(o.name, o.output, 1, o.input)) return LH_EXIT_FAIL;
     lh_points pts;
     const char *name;
     if (!lh_cli_load(o.input, LH_FORMAT_AUTO, &pts, &name)) return LH_EXIT_INPUT;

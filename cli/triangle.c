@@ -50,9 +50,10 @@ static const char *const usage_text =
     "not supported: -o2, -v, -u\n"
     "\n"
     "examples:\n"
-    "  lifthull triangle -pq30 A.poly       quality mesh of the letter A\n"
-    "  lifthull triangle -pq30a0.01 A.poly  ... with small triangles\n"
-    "  lifthull triangle dots.node          Delaunay triangulation of points\n"
+    "  lifthull triangle -pq30 examples/A.poly       # the letter A: examples/A.1.*\n"
+    "  lifthull triangle -pq30a0.01 examples/A.poly  # ... with small triangles\n"
+    "  lifthull triangle examples/dots.node          # Delaunay triangulation of points\n"
+    "\n"
     "exit codes: 0 success, 1 failure, 2 usage error, 3 bad input\n";
 
 /* A number right after a switch letter: digits, '.', and an exponent. */
@@ -182,6 +183,8 @@ static int run(const sw *o, const char *file)
         strcpy(path, file);
     else
         sprintf(path, "%s%s", base, kind == LH_CLI_POLY ? ".poly" : ".node");
+    /* every output file is checked before the input is read */
+    if (!lh_cli_trimesh_check(outb, &o->files, path, "triangle")) goto done;
     if (!lh_cli_pslg_load(&in, path, base, kind) ||
         (o->r && !lh_cli_pslg_load_mesh(&in, base, o->a_regions))) {
         if (in.path) lh_cli_pslg_free(&in);
@@ -256,7 +259,7 @@ int lh_cli_triangle(int argc, char **argv)
         return LH_EXIT_USAGE;
     }
     if (o.q && !(o.angle >= 0 && o.angle <= LH_TRIMESH_MAX_ANGLE)) {
-        fprintf(stderr, "lifthull triangle: -q%g: the angle bound must be 0..%g degrees\n", o.angle,
+        fprintf(stderr, "lifthull triangle: -q%.17g: the angle bound must be 0..%g degrees\n", o.angle,
                 LH_TRIMESH_MAX_ANGLE);
         return LH_EXIT_USAGE;
     }

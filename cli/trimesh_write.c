@@ -159,46 +159,78 @@ static int number_points(ctx *c)
     return 1;
 }
 
+/* BASE.node etc. for the files w asks for (malloc'ed, NULL where not wanted); 0 when
+ * out of memory. */
+static const char *const tri_ext[] = {".node", ".ele", ".poly", ".edge", ".neigh", ".off"};
+enum { nfiles = 6 };
+
+static int tri_paths(const char *base, const lh_cli_tri_files *w, char *path[nfiles])
+{
+    const int want[nfiles] = {w->node, w->ele, w->poly, w->edge, w->neigh, w->off};
+    const size_t len = strlen(base);
+    for (int i = 0; i < nfiles; i++) path[i] = NULL;
+    for (int i = 0; i < nfiles; i++) {
+        if (!want[i]) continue;
+        path[i] = malloc(len + 8);
+        if (!path[i]) return 0;
+        memcpy(path[i], base, len);
+        strcpy(path[i] + len, tri_ext[i]);
+    }
+    return 1;
+}
+
+int lh_cli_trimesh_check(const char *base, const lh_cli_tri_files *w, const char *input, const char *cmd)
+{
+    char *path[nfiles];
+    int ok = tri_paths(base, w, path);
+    if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    for (int i = 0; i < nfiles && ok; i++)
+        if (path[i]) ok = lh_cli_out_check(cmd, path[i], !w->no_replace, input);
+    for (int i = 0; i < nfiles; i++) free(path[i]);
+    return ok;
+}
+
+static int write_file(int i, FILE *f, const ctx *c, const lh_pslg *g)
+{
+    switch (i) {
+    case 0: write_node(f, c); break;
+    case 1: write_ele(f, c); break;
+    case 2: write_poly(f, c, g); break;
+    case 3: return write_edge(f, c);
+    case 4: write_neigh(f, c); break;
+    default: write_off(f, c); break;
+    }
+    return 1;
+}
+
 int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
                          const lh_cli_tri_files *w, const char *cmd)
 {
-    static const char *const ext[] = {".node", ".ele", ".poly", ".edge", ".neigh", ".off"};
-    const int want[] = {w->node, w->ele, w->poly, w->edge, w->neigh, w->off};
-    enum { nfiles = 6 };
-    lh_cli_out out[nfiles];
-    char *path[nfiles] = {0};
-    memset(out, 0, sizeof out);
+    char *path[nfiles];
+    FILE *f[nfiles] = {0};
     ctx c = {m, w, NULL, 0};
-    int ok = number_points(&c), rc = LH_EXIT_OK;
+    int ok = tri_paths(base, w, path);
+    ok = ok && number_points(&c);
     if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    /* every target checked and its temporary opened before anything is written */
+    lh_cli_outset set;
+    lh_cli_outset_init(&set, cmd, !w->no_replace, in->path);
     for (int i = 0; i < nfiles && ok; i++) {
-        if (!want[i]) continue;
-        const size_t len = strlen(base);
-        path[i] = malloc(len + 8);
-        if (!path[i]) { ok = 0; break; }
-        memcpy(path[i], base, len);
-        strcpy(path[i] + len, ext[i]);
+        if (!path[i]) continue;
         /* Triangle replaces its outputs; the inputs themselves never */
         if (lh_cli_same_file(path[i], in->node_path)) {
             fprintf(stderr, "lifthull %s: '%s' is an input file; it is not overwritten\n", cmd, path[i]);
             ok = 0;
-            break;
-        }
-        if (!lh_cli_out_open(&out[i], cmd, path[i], !w->no_replace, in->path)) { ok = 0; break; }
-        FILE *f = out[i].f;
-        switch (i) {
-        case 0: write_node(f, &c); break;
-        case 1: write_ele(f, &c); break;
-        case 2: write_poly(f, &c, &in->g); break;
-        case 3: ok = write_edge(f, &c); break;
-        case 4: write_neigh(f, &c); break;
-        default: write_off(f, &c); break;
+        } else {
+            ok = (f[i] = lh_cli_outset_add(&set, path[i])) != NULL;
         }
     }
-    /* all or none: close the temporaries, renaming only when everything went well */
-    for (int i = 0; i < nfiles; i++)
-        if (out[i].f && lh_cli_out_close(&out[i], cmd, ok) != LH_EXIT_OK) ok = 0, rc = LH_EXIT_FAIL;
+    for (int i = 0; i < nfiles && ok; i++)
+        if (f[i] && !(ok = write_file(i, f[i], &c, &in->g)))
+            fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    /* all or none: renamed only when every file was written */
+    const int rc = lh_cli_outset_close(&set, ok);
     for (int i = 0; i < nfiles; i++) free(path[i]);
     free(c.num);
-    return ok ? rc : LH_EXIT_FAIL;
+    return rc;
 }

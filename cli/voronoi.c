@@ -25,7 +25,7 @@ static const char help[] =
     "\n"
     "examples:\n"
     "  rbox 100 D2 | lifthull voronoi\n"
-    "  lifthull voronoi examples/points.txt -o voronoi.svg\n"
+    "  lifthull voronoi examples/ukraine.txt -o voronoi.svg -f\n"
     "\n"
     "exit codes: 0 done, 1 the computation failed, 2 usage, 3 bad input file.\n";
 
@@ -43,7 +43,7 @@ static int svg(const lh_cli_args *a, const lh_points *pts, const char *name)
         lh_cli_report_failure(name, pts->d, pts->n, pts->xyz, st);
         return LH_EXIT_FAIL;
     }
-    int status = lh_cli_write_mesh("voronoi", a, a->file[0], t, pts->xyz, 1);
+    int status = lh_cli_write_mesh("voronoi", a, a->file[0], t, pts->xyz, 1, &prog);
     lh_tri_free(t);
     return status;
 }
@@ -72,9 +72,12 @@ int lh_cli_voronoi(int argc, char **argv)
     lh_cli_args a;
     int r = lh_cli_args_parse(&a, "voronoi", "qfoc", 0, 1, argc, argv, help);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check("voronoi", a.output, a.force, a.file[0])) return LH_EXIT_FAIL;
+    lh_cli_progress prog;
+    lh_cli_progress_init(&prog, "voronoi", a.quiet);
     lh_points pts;
     const char *name;
-    if (!lh_cli_load(a.file[0], a.format, &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_load_progress(a.file[0], a.format, &pts, &name, &prog)) return LH_EXIT_INPUT;
     const char *dot = a.output ? strrchr(a.output, '.') : NULL;
     int status = dot && !strcmp(dot, ".svg") ? svg(&a, &pts, name) : text(&a, &pts, name);
     lh_points_free(&pts);

@@ -47,6 +47,27 @@ static lh_index find(lh__m2 *m, const double *p)
     return lh__m2_locate(m, -1, p, 0, &blocked);
 }
 
+lh_index lh__m2_subseg_at(lh__m2 *m, const double *p)
+{
+    const lh_index t = find(m, p);
+    if (t < 0) return -1;
+    const lh_index *v = m->v + 3 * (size_t)t;
+    for (int k = 0; k < 3; k++) {
+        const double *q = lh__m2_pt(m, v[k]);
+        if (q[0] != p[0] || q[1] != p[1]) continue;
+        for (size_t u = 0; u < m->nt; u++) /* p is vertex v[k]: any subsegment ending there */
+            for (int j = 0; m->v[3 * u] >= 0 && j < 3; j++)
+                if (m->sg[3 * u + j] >= 0 && m->v[3 * u + j] != v[k] &&
+                    (m->v[3 * u] == v[k] || m->v[3 * u + 1] == v[k] || m->v[3 * u + 2] == v[k]))
+                    return m->sg[3 * u + j];
+        return -1;
+    }
+    for (int k = 0; k < 3; k++) /* p in the closed triangle t: on edge k when collinear */
+        if (m->sg[3 * (size_t)t + k] >= 0 && lh__m2_orient_pt(m, v[(k + 1) % 3], v[(k + 2) % 3], p) == 0)
+            return m->sg[3 * (size_t)t + k];
+    return -1;
+}
+
 /* Marks with epoch e what Triangle's rule removes; *ignored counts useless seeds. */
 static lh_status infect(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, int convex_hull,
                         uint32_t e, size_t *ignored)

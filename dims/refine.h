@@ -53,6 +53,9 @@ lh_status lh__cover_areas(lh__m2 *m, lh__cover *cv, const double *area);
  * followed by Lawson's flips (smooth.c); *moved counts the moves. */
 lh_status lh__m2_smooth(lh__m2 *m, lh__m2_cavity *c, int passes, double max_area, size_t *moved);
 
+/* The subsegment on which point p lies (closed: an endpoint too), or -1 (cdt_domain.c).
+ * A hole seed there would carve whichever side point location happens to find. */
+lh_index lh__m2_subseg_at(lh__m2 *m, const double *p);
 /* The domain (cdt_domain.c): Triangle's flood, the even-odd rule, or m->cover. */
 lh_status lh__m2_domain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, int convex_hull,
                         size_t *holes_ignored, size_t *regions_ignored);

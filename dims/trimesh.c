@@ -63,7 +63,7 @@ static lh_status check_counts(const lh_pslg *g, char *msg, size_t size)
 
 static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char *msg, size_t size)
 {
-    const long long base = g->first_index;
+    const long long base = g->first_index, ibase = base + g->item_first_shift;
     const lh_status counted = check_counts(g, msg, size);
     if (counted != LH_OK) return counted;
     if ((g->n && !g->xy) || (g->segment_count && !g->segments) || (g->hole_count && !g->holes) ||
@@ -76,12 +76,13 @@ static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char
         say(msg, size, NULL, 0, "smoothing passes %d below 0", o->smooth);
         return LH_ERR_INVALID_ARGUMENT;
     }
+    /* %.17g: every double's digits, so a value just past a bound never prints as the bound */
     if (!(o->min_angle >= 0 && o->min_angle <= LH_TRIMESH_MAX_ANGLE)) {
-        say(msg, size, NULL, 0, "minimum angle %g outside 0..%g degrees", o->min_angle, LH_TRIMESH_MAX_ANGLE);
+        say(msg, size, NULL, 0, "min_angle %.17g outside 0..%g degrees", o->min_angle, LH_TRIMESH_MAX_ANGLE);
         return LH_ERR_INVALID_ARGUMENT;
     }
     if (isnan(o->max_area)) {
-        say(msg, size, NULL, 0, "maximum area is NaN (0 or less: no bound)");
+        say(msg, size, NULL, 0, "max_area is NaN (0 or below: no area bound)");
         return LH_ERR_INVALID_ARGUMENT;
     }
     size_t bad;
@@ -95,19 +96,19 @@ static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char
             if (v < 0 || (size_t)v >= g->n) {
                 if (g->n)
                     say(msg, size, g->segment_line, s, "segment %lld: endpoint %lld is not a vertex (%lld..%lld)",
-                        base + (long long)s, base + (long long)v, base, base + (long long)g->n - 1);
+                        ibase + (long long)s, base + (long long)v, base, base + (long long)g->n - 1);
                 else
                     say(msg, size, g->segment_line, s, "segment %lld: endpoint %lld is not a vertex (there are none)",
-                        base + (long long)s, base + (long long)v);
+                        ibase + (long long)s, base + (long long)v);
                 return LH_ERR_INVALID_ARGUMENT;
             }
         }
     if (lh_coords_validate(2, g->hole_count, g->holes, &bad) == LH_ERR_NONFINITE) {
-        say(msg, size, g->hole_line, bad / 2, "hole %lld: coordinate is NaN or infinite", base + (long long)(bad / 2));
+        say(msg, size, g->hole_line, bad / 2, "hole %lld: coordinate is NaN or infinite", ibase + (long long)(bad / 2));
         return LH_ERR_NONFINITE;
     }
     if (lh_coords_validate(4, g->region_count, g->regions, &bad) == LH_ERR_NONFINITE) {
-        say(msg, size, g->region_line, bad / 4, "region %lld: NaN or infinity", base + (long long)(bad / 4));
+        say(msg, size, g->region_line, bad / 4, "region %lld: NaN or infinity", ibase + (long long)(bad / 4));
         return LH_ERR_NONFINITE;
     }
     return LH_OK;
@@ -120,7 +121,7 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri
     const lh_index *dup = lh_tri_duplicate_of(dt);
     lh_status st = lh__m2_from_delaunay(m, dt);
     if (st != LH_OK) return st;
-    const long long base = g->first_index;
+    const long long base = (long long)g->first_index + g->item_first_shift; /* the segments' */
     lh__m2_problem pb0 = {0, {-1, -1}, -1};
     if (m->cover && (st = lh__cover_segments(m, c, m->cover, &pb0)) != LH_OK) {
         if (st == LH_ERR_DEGENERATE) say(msg, size, NULL, 0, "the mesh to refine has crossing edges");
@@ -287,6 +288,25 @@ static lh_status open_ring_vertex(const lh_pslg *g, const lh_index *dup, const l
     return LH_OK;
 }
 
+/* A hole seed on a segment is refused: which side its flood carves would depend on
+ * point location (Triangle carves from the triangle its search finds), so the
+ * result would not be a function of the input (docs/meshing.md). */
+static lh_status holes_off_segments(lh__m2 *m, const lh_pslg *g, char *msg, size_t size)
+{
+    const long long base = (long long)g->first_index + g->item_first_shift;
+    for (size_t h = 0; h < g->hole_count && !g->even_odd; h++) {
+        const lh_index s = lh__m2_subseg_at(m, g->holes + 2 * h);
+        if (s < 0) continue;
+        if (m->sp[s] >= 0)
+            say(msg, size, g->hole_line, h, "hole %lld lies on segment %lld", base + (long long)h,
+                base + (long long)m->sp[s]);
+        else
+            say(msg, size, g->hole_line, h, "hole %lld lies on the boundary of the mesh to refine", base + (long long)h);
+        return LH_ERR_DEGENERATE;
+    }
+    return LH_OK;
+}
+
 /* Steps 3-5 on a constrained triangulation. */
 static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g,
                         const lh_trimesh_options *o, const lh_index *dup, char *msg, size_t size)
@@ -300,6 +320,7 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
             "rule needs closed rings", (long long)g->first_index + (long long)open);
         return LH_ERR_DEGENERATE;
     }
+    if ((st = holes_off_segments(m, g, msg, size)) != LH_OK) return st;
     st = lh__m2_domain(m, c, g, keep_hull, &r->stats.holes_ignored, &r->stats.regions_ignored);
     if (st == LH_ERR_DEGENERATE) {
         say(msg, size, NULL, 0, g->even_odd ? "no triangle is inside the polygon rings"

@@ -3,6 +3,7 @@
  * Delaunay triangulation of a 2D domain. Edges are sorted records (low vertex, high
  * vertex, triangle, position); each decision is an exact orient_2 or incircle.
  */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,6 +35,16 @@ static lh_status fail(char *msg, size_t size, const char *what, size_t i)
 {
     if (msg && size) snprintf(msg, size, what, i);
     return LH_ERR_INTERNAL;
+}
+
+/* Fills msg (printf-style) and returns st. */
+static lh_status say(char *msg, size_t size, lh_status st, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    if (msg && size) vsnprintf(msg, size, fmt, ap);
+    va_end(ap);
+    return st;
 }
 
 static lh_status check(lh_pred *pr, size_t n, const double *xy, size_t nt, const lh_index *tri,
@@ -87,11 +98,17 @@ lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const l
 {
     if (msg && msg_size) msg[0] = 0;
     lh_allocator al;
-    if (!lh__allocator_init(&al, alloc) || (n && !xy) || (tri_count && !tris) || (seg_count && !segs))
-        return LH_ERR_INVALID_ARGUMENT;
+    if (!lh__allocator_init(&al, alloc))
+        return say(msg, msg_size, LH_ERR_INVALID_ARGUMENT, "the allocator lacks alloc or free");
+    if ((n && !xy) || (tri_count && !tris) || (seg_count && !segs))
+        return say(msg, msg_size, LH_ERR_INVALID_ARGUMENT, "%s is NULL with a count above 0",
+                   n && !xy ? "xy" : tri_count && !tris ? "tris" : "segs");
     for (size_t s = 0; s < 2 * seg_count; s++)
-        if (segs[s] < 0 || (size_t)segs[s] >= n) return LH_ERR_INVALID_ARGUMENT;
-    if (tri_count > SIZE_MAX / (3 * sizeof(edge))) return LH_ERR_TOO_LARGE;
+        if (segs[s] < 0 || (size_t)segs[s] >= n)
+            return say(msg, msg_size, LH_ERR_INVALID_ARGUMENT, "subsegment %zu: endpoint %lld is not a point (0..%zu)",
+                       s / 2, (long long)segs[s], n ? n - 1 : 0);
+    if (tri_count > SIZE_MAX / (3 * sizeof(edge)))
+        return say(msg, msg_size, LH_ERR_TOO_LARGE, "%zu triangles: more than the address space holds", tri_count);
     lh_pred *pr = NULL;
     edge *e = lh__alloc(&al, (tri_count ? 3 * tri_count : 1) * sizeof *e);
     lh_status st = e ? lh_pred_create(&al, &pr) : LH_ERR_NOMEM;

@@ -55,6 +55,11 @@ LH_TEST(bad_lists_say_where_and_what)
         {"1 3 0\n2 0 1 2\n", 4, LH_ERR_PARSE, "c:2:1: expected the first cell's number (0 or 1), found '2'"},
         {"2 3 0\n0 0 1 2\n2 0 1 3\n", 4, LH_ERR_PARSE, "c:3:1: expected cell number 1, found '2'"},
         {"1 12 0\n", 4, LH_ERR_PARSE, "c:1:3: expected the number of points per cell (an integer from 2 to 9), found '12'"},
+        {"1 3 1\n1 1 2 3 nan\n", 4, LH_ERR_NONFINITE,
+         "c:2:9: attribute 1 of cell 1 is 'nan': NaN and infinities are not accepted"},
+        {"2 3 1\n1 1 2 3 0.5\n2 2 3 4 1e400\n", 4, LH_ERR_NONFINITE,
+         "c:3:9: attribute 1 of cell 2 is '1e400', which overflows a double"},
+        {"1 3 1\n1 1 2 3 x\n", 4, LH_ERR_PARSE, "c:2:9: expected attribute 1 of cell 1 (a number), found 'x'"},
         {"1\n0 1\0 2\n", 4, LH_ERR_PARSE, "c:2:4: expected a point index or the end of the line, found a NUL byte"},
     };
     for (size_t i = 0; i < LH_COUNT(cases); i++) {

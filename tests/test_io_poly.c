@@ -307,23 +307,32 @@ LH_TEST(poly_n0_take_points)
 }
 #endif
 
+/* The .node text (len bytes) read and attached to g (lh_pslg_take_points). */
+static lh_status attach_node_text(lh_pslg *g, const char *text, size_t len)
+{
+    char msg[256];
+    lh_points p;
+    FILE *f = lh_test_file(text, len);
+    if (!f) return LH_ERR_IO;
+    lh_status st = lh_points_read(f, "n.node", LH_FORMAT_NODE, NULL, &p, msg, sizeof msg);
+    fclose(f);
+    if (st == LH_OK) st = lh_pslg_take_points(g, &p);
+    lh_points_free(&p);
+    return st;
+}
+
 /* A .poly numbered from 0 whose .node is numbered from 1: the endpoints are the
  * .node's numbers (Triangle), renumbered by lh_pslg_take_points. */
 LH_TEST(poly_n0_renumbered)
 {
     lh_pslg g;
-    lh_points p;
     char msg[256];
     LH_ASSERT_EQ_INT(read_text(lh_poly_read, "r.poly", TEXT("0 2 0 0\n2 0\n0 0 1\n1 1 2\n0\n"), NULL, &g, msg, sizeof msg),
                      LH_OK);
     LH_EXPECT_EQ_INT(g.first_index, 0);
     static const int read[] = {0, 1, 1, 2};
     for (int i = 0; i < 4; i++) LH_EXPECT_EQ_INT(g.segments[i], read[i]);
-    FILE *f = lh_test_file(TEXT("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n"));
-    LH_ASSERT_TRUE(f != NULL);
-    LH_ASSERT_EQ_INT(lh_points_read(f, "r.node", LH_FORMAT_NODE, NULL, &p, msg, sizeof msg), LH_OK);
-    fclose(f);
-    LH_ASSERT_EQ_INT(lh_pslg_take_points(&g, &p), LH_OK);
+    LH_ASSERT_EQ_INT(attach_node_text(&g, TEXT("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n")), LH_OK);
     LH_EXPECT_EQ_INT(g.first_index, 1);
     static const int seg[] = {-1, 0, 0, 1}; /* "0 0 1": 0 is no vertex of a 1-based .node */
     for (int i = 0; i < 4; i++) LH_EXPECT_EQ_INT(g.segments[i], seg[i]);
@@ -332,6 +341,31 @@ LH_TEST(poly_n0_renumbered)
     LH_ASSERT_EQ_INT(read_text(lh_poly_read, "h.poly", TEXT("0\n0\n1\n0 5 5\n"), NULL, &g, msg, sizeof msg), LH_OK);
     LH_EXPECT_EQ_INT(g.first_index, 0);
     LH_EXPECT_EQ_U64(g.hole_count, 1);
+    lh_pslg_free(&g);
+}
+
+/* A .poly numbered from 1 whose .node is numbered from 0: endpoint 0 is the .node's
+ * vertex 0 (Triangle reads it so), and diagnostics name segments, holes and regions as
+ * the .poly numbers them, vertices as the .node does. */
+LH_TEST(poly_n0_keeps_its_item_numbers)
+{
+    lh_pslg g;
+    char msg[256];
+    LH_ASSERT_EQ_INT(read_text(lh_poly_read, "s.poly", TEXT("0 2 0 0\n3 0\n1 0 1\n2 1 2\n3 1 9\n0\n"), NULL, &g,
+                               msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(g.segments[0], -1); /* 0 less the .poly's base, until the .node comes */
+    LH_ASSERT_EQ_INT(attach_node_text(&g, TEXT("4 2 0 0\n0 0 0\n1 2 0\n2 2 2\n3 0 2\n")), LH_OK);
+    LH_EXPECT_EQ_INT(g.first_index, 0);
+    LH_EXPECT_EQ_INT(g.item_first_shift, 1);
+    static const int seg[] = {0, 1, 1, 2, 1, 9};
+    for (int i = 0; i < 6; i++) LH_EXPECT_EQ_INT(g.segments[i], seg[i]);
+    lh_trimesh *m = NULL;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "5: segment 3: endpoint 9 is not a vertex (0..3)");
+    g.segments[1] = 2, g.segments[5] = 3; /* segments 0-2 and 1-3: the diagonals cross */
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_DEGENERATE);
+    LH_EXPECT_STREQ(msg, "5: segment 3 crosses segment 1 (line 3)");
+    lh_trimesh_free(m);
     lh_pslg_free(&g);
 }
 
@@ -518,10 +552,10 @@ LH_TEST(poly_segment_errors)
          "e1.poly:6:4: expected an endpoint of segment 1 (a vertex number from 1 to 3), found the end of the line"},
         {"ef.poly", TEXT(V3 "1 0\n1 1 2.0\n"), LH_ERR_PARSE,
          "ef.poly:6:5: expected an endpoint of segment 1 (a vertex number from 1 to 3), found '2.0'"},
-        {"n0.poly", TEXT("0 2\n1 0\n1 0 1\n"), LH_ERR_PARSE,
-         "n0.poly:3:3: expected an endpoint of segment 1 (a vertex number from 1), found '0'"},
+        {"n0.poly", TEXT("0 2\n1 0\n1 -1 1\n"), LH_ERR_PARSE,
+         "n0.poly:3:3: expected an endpoint of segment 1 (a vertex number of the .node, from 0), found '-1'"},
         {"n0big.poly", TEXT("0 2\n1 0\n0 0 99999999999999999999\n"), LH_ERR_PARSE, /* past either width */
-         "n0big.poly:3:5: expected an endpoint of segment 0 (a vertex number from 0), found '99999999999999999999'"},
+         "n0big.poly:3:5: expected an endpoint of segment 0 (a vertex number of the .node, from 0), found '99999999999999999999'"},
         {"s0.poly", TEXT(V3 "2 0\n0 1 2\n1 2 3\n"), LH_ERR_PARSE,
          "s0.poly:6:1: expected segment number 1 (this file numbers from 1), found '0'"},
         {"sn.poly", TEXT(V3 "2 0\n1 1 2\n3 2 3\n"), LH_ERR_PARSE,
@@ -956,7 +990,7 @@ int main(int argc, char **argv)
         LH_CASE(poly_every_file), LH_CASE(poly_double_hex3_and_its_node), LH_CASE(poly_n0_take_points),
         LH_CASE(rings_every_fixture), LH_CASE(every_allocation_failure_files),
 #endif
-        LH_CASE(poly_n0_renumbered), LH_CASE(poly_take_points_arguments), LH_CASE(poly_text_forms),
+        LH_CASE(poly_n0_renumbered), LH_CASE(poly_n0_keeps_its_item_numbers), LH_CASE(poly_take_points_arguments), LH_CASE(poly_text_forms),
         LH_CASE(poly_header_errors), LH_CASE(poly_vertex_errors), LH_CASE(poly_segment_errors),
         LH_CASE(poly_hole_region_errors), LH_CASE(rings_text_forms), LH_CASE(rings_errors), LH_CASE(long_tokens),
         LH_CASE(declared_counts_are_not_trusted), LH_CASE(every_allocation_failure), LH_CASE(read_error_and_arguments),

@@ -146,6 +146,75 @@ LH_TEST(segments_and_tetrahedra)
     free(text);
 }
 
+static lh_status vtu_cells_c(FILE *f, const lh_mesh_view *m)
+{
+    static const double cv[] = {0.5, -2};
+    const lh_vtu_options o = {0, cv, "c"};
+    return lh_write_vtu_opts(f, m, &o);
+}
+
+/* The binary .vtu of two segments with a cell field, byte for byte (on a little-endian
+ * machine; base64 decoded: 72 bytes of points 0 0 0 1 0 0 3 0 0, Int32 connectivity
+ * 0 1 1 2, offsets 2 4, types 3 3, Float64 0.5 -2, each after its UInt64 length). */
+LH_TEST(vtu_binary)
+{
+    static const double line[] = {0, 1, 3};
+    static const lh_index segs[] = {0, 1, 1, 2};
+    lh_mesh_view l = {1, 3, line, 1, 2, segs, NULL, NULL, NULL};
+    const uint16_t one = 1;
+    unsigned char low;
+    memcpy(&low, &one, 1);
+    char *text;
+    LH_EXPECT_EQ_INT(capture(vtu_cells_c, NULL, 0, &l, &text), LH_OK);
+    if (low != 1) {
+        LH_EXPECT_TRUE(text && strstr(text, "byte_order=\"BigEndian\" header_type=\"UInt64\""));
+        free(text);
+        return;
+    }
+    LH_EXPECT_STREQ(text ? text : "(none)",
+        "<?xml version=\"1.0\"?>\n"
+        "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+        "  <UnstructuredGrid>\n"
+        "    <Piece NumberOfPoints=\"3\" NumberOfCells=\"2\">\n"
+        "      <Points>\n"
+        "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"binary\">\n"
+        "          SAAAAAAAAAA=AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA8D8AAAAAAAAAAAAAAAAAAAAAAAAAAAAACEAAAAAAAAAAAAAAAAAAAAAA\n"
+        "        </DataArray>\n"
+        "      </Points>\n"
+        "      <Cells>\n"
+        "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"binary\">\n"
+        "          EAAAAAAAAAA=AAAAAAEAAAABAAAAAgAAAA==\n"
+        "        </DataArray>\n"
+        "        <DataArray type=\"Int32\" Name=\"offsets\" format=\"binary\">\n"
+        "          CAAAAAAAAAA=AgAAAAQAAAA=\n"
+        "        </DataArray>\n"
+        "        <DataArray type=\"UInt8\" Name=\"types\" format=\"binary\">\n"
+        "          AgAAAAAAAAA=AwM=\n"
+        "        </DataArray>\n"
+        "      </Cells>\n"
+        "      <CellData>\n"
+        "        <DataArray type=\"Float64\" Name=\"c\" format=\"binary\">\n"
+        "          EAAAAAAAAAA=AAAAAAAA4D8AAAAAAAAAwA==\n"
+        "        </DataArray>\n"
+        "      </CellData>\n"
+        "    </Piece>\n"
+        "  </UnstructuredGrid>\n"
+        "</VTKFile>\n");
+    free(text);
+    /* the cell field is checked as the point field is */
+    static const double bad[] = {0, NAN};
+    lh_vtu_options o = {0, bad, NULL};
+    LH_EXPECT_EQ_INT(lh_write_vtu_opts(stdout, &l, &o), LH_ERR_NONFINITE);
+    o.cell_values = line, o.cell_values_name = "a<b";
+    LH_EXPECT_EQ_INT(lh_write_vtu_opts(stdout, &l, &o), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_write_vtu_opts(NULL, &l, NULL), LH_ERR_INVALID_ARGUMENT);
+    FILE *f = fopen("/dev/full", "w");
+    if (f) {
+        LH_EXPECT_EQ_INT(lh_write_vtu_opts(f, &l, NULL), LH_ERR_IO);
+        fclose(f);
+    }
+}
+
 /* Every bad view: the status, and nothing written. */
 LH_TEST(argument_errors)
 {
@@ -269,7 +338,7 @@ int main(int argc, char **argv)
     static const lh_test_case cases[] = {
         LH_CASE(vtu_text),       LH_CASE(msh_text),        LH_CASE(triangle_text),
         LH_CASE(off_text),       LH_CASE(segments_and_tetrahedra), LH_CASE(argument_errors),
-        LH_CASE(write_errors),   LH_CASE(node_round_trip_is_bit_exact),
+        LH_CASE(write_errors),   LH_CASE(node_round_trip_is_bit_exact), LH_CASE(vtu_binary),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

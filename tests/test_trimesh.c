@@ -434,12 +434,25 @@ LH_TEST(bad_input_gets_its_error_and_line)
     o.min_angle = 41;
     xy[5] = 1;
     LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "min_angle 41 outside 0..40 degrees");
+    /* just past the bound: the message shows the value, not the bound again */
+    o.min_angle = 40.0000001;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "min_angle 40.000000100000001 outside 0..40 degrees");
+    o.min_angle = NAN;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "min_angle nan outside 0..40 degrees");
+    /* a NaN area bound is named as such (it is no angle) */
+    o.min_angle = 0;
+    o.max_area = NAN;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "max_area is NaN (0 or below: no area bound)");
 }
 
 /* Misuse of the API gets a status and a message, never a crash: a cover count
  * without its array (a segfault before), lh_trimesh_options_default(NULL) (a
- * segfault before), a NaN area bound (it was reported as the angle), segments with
- * no vertices, an allocator without hooks. */
+ * segfault before), a NaN area bound, segments with no vertices, an allocator without
+ * hooks, counts no array can have. */
 LH_TEST(api_misuse_is_refused_with_a_message)
 {
     double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
@@ -457,7 +470,7 @@ LH_TEST(api_misuse_is_refused_with_a_message)
     lh_trimesh_options_default(&o);
     o.max_area = NAN;
     LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
-    LH_EXPECT_STREQ(msg, "maximum area is NaN (0 or less: no bound)");
+    LH_EXPECT_STREQ(msg, "max_area is NaN (0 or below: no area bound)");
     o.max_area = 0;
     lh_allocator none = {NULL, NULL, NULL};
     o.alloc = &none;
@@ -992,6 +1005,36 @@ LH_TEST(output_is_deterministic_and_independent_of_segment_order)
     lh_pslg_free(&g);
 }
 
+/* A hole seed exactly on a segment (the inner square's bottom edge, inside and at an
+ * endpoint) is refused, naming both: which side it would carve is undefined. A seed
+ * beside it carves the inner square. */
+LH_TEST(a_hole_seed_on_a_segment_is_refused)
+{
+    static const char *const seeds[] = {"2 1", "1 1", "3 3"};
+    static const char *const want[] = {"20: hole 1 lies on segment 5", "20: hole 1 lies on segment 5",
+                                       "20: hole 1 lies on segment 6"};
+    for (int i = 0; i < 4; i++) {
+        char text[256];
+        snprintf(text, sizeof text,
+                 "8 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1\n6 3 1\n7 3 3\n8 1 3\n8 0\n1 1 2\n2 2 3\n"
+                 "3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n1\n1 %s\n", i < 3 ? seeds[i] : "2 1.5");
+        lh_pslg g;
+        LH_ASSERT_EQ_INT(load_text(text, &g), LH_OK);
+        lh_trimesh *m = NULL;
+        char msg[128];
+        const lh_status st = lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg);
+        if (i < 3) {
+            LH_EXPECT_EQ_INT(st, LH_ERR_DEGENERATE);
+            LH_EXPECT_STREQ(msg, want[i]);
+        } else {
+            LH_EXPECT_EQ_INT(st, LH_OK);
+            if (m) LH_EXPECT_EQ_U64(lh_trimesh_triangle_count(m), 8); /* the annulus */
+        }
+        lh_trimesh_free(m);
+        lh_pslg_free(&g);
+    }
+}
+
 LH_TEST(the_check_rejects_what_is_not_a_cdt)
 {
     /* the unit square split by the diagonal 0-2, and a fifth point near the centre */
@@ -1005,6 +1048,17 @@ LH_TEST(the_check_rejects_what_is_not_a_cdt)
     LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 0, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
     LH_EXPECT_STREQ(msg, "a boundary edge of triangle 1 is not a subsegment");
     LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 1, NULL, msg, sizeof msg), LH_OK);
+    /* misuse: a message says which argument */
+    const lh_index far_seg[] = {0, 1, 1, 7};
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 2, far_seg, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "subsegment 1: endpoint 7 is not a point (0..3)");
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, NULL, 2, good, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "xy is NULL with a count above 0");
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, NULL, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "tris is NULL with a count above 0");
+    const lh_allocator half = {NULL, NULL, NULL};
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 0, NULL, 1, &half, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "the allocator lacks alloc or free");
     /* a kite whose diagonal is not Delaunay: (0,0) (2,-1) (4,0) (2,1) split 1-3 is
        Delaunay, split 0-2 is not */
     const double kite[] = {0, 0, 2, -0.5, 4, 0, 2, 0.5};
@@ -1068,7 +1122,8 @@ int main(int argc, char **argv)
         LH_CASE(refining_a_mesh_splits_its_boundary_edges), LH_CASE(api_misuse_is_refused_with_a_message),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
-        LH_CASE(the_check_rejects_what_is_not_a_cdt), LH_CASE(every_allocation_failure_is_survived),
+        LH_CASE(a_hole_seed_on_a_segment_is_refused), LH_CASE(the_check_rejects_what_is_not_a_cdt),
+        LH_CASE(every_allocation_failure_is_survived),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -597,8 +597,9 @@ typedef struct lh_cells {
  * lifthull delaunay print: the count, then one cell a line, 0-based indices), or a
  * Triangle/TetGen .ele file (header "count points_per_cell [attributes]", then
  * "number v_0..v_k [attributes]" numbered consecutively from 0 or 1, the point
- * indices from the same base). The header line tells them apart (one field: 'i').
- * With n_points > 0 every index must name one of n_points points. Diagnostics and
+ * indices from the same base; attributes are finite numbers, skipped: NaN or
+ * infinity is LH_ERR_NONFINITE as in .node files). The header line tells them apart
+ * (one field: 'i'). With n_points > 0 every index must name one of n_points points. Diagnostics and
  * statuses as lh_points_read ("NAME:LINE:COL: expected ..., found ...").
  */
 lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
@@ -640,6 +641,7 @@ typedef struct lh_mesh_view {
  *                line, 5 triangle, 10 tetra). values: point data; neighbors: cell data
  *                "neighbors" with k+1 components. Indices as Int32 (Int64 past
  *                INT32_MAX points or cells, which only 64-bit indices allow).
+ *                lh_write_vtu_opts below writes the same content in binary.
  * lh_write_msh   Gmsh MSH 4.1 ASCII: $MeshFormat "4.1 0 8", $Entities (one entity of
  *                dimension k holding everything, bounding box of the points), $Nodes
  *                and $Elements (element types 1 segment, 2 triangle, 4 tetrahedron),
@@ -661,6 +663,26 @@ lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index);
 lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
+
+/*
+ * The .vtu writer's choices; a zeroed struct (or NULL) gives the defaults: binary,
+ * no cell field.
+ *
+ * Binary: every DataArray format="binary", its values inline in base64 as VTK writes
+ * them uncompressed (VTKFile version="1.0", header_type="UInt64": the array's length
+ * in bytes as a UInt64, encoded on its own, then the values, encoded on their own, in
+ * this machine's byte order, which byte_order names). Under half the ASCII size of a
+ * 3D triangulation, written without formatting numbers, still well-formed XML;
+ * ParaView/VTK and meshio read it. Offsets are Int32 up to INT32_MAX, else Int64.
+ */
+typedef struct lh_vtu_options {
+    int ascii;                    /* 1: every array as text (lh_write_vtu's file)          */
+    const double *cell_values;    /* m->count per-cell scalars as cell data, or NULL; NaN
+                                     or infinity: LH_ERR_NONFINITE                        */
+    const char *cell_values_name; /* its name (as values_name), NULL for "cell_value"      */
+} lh_vtu_options;
+/* lh_write_vtu with choices; checks and statuses as the writers above. */
+lh_status lh_write_vtu_opts(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
 
 /* ---- 2D meshing: constrained Delaunay triangulation and quality refinement -------- */
 
@@ -698,6 +720,9 @@ typedef struct lh_pslg {
                                   regions' with lh_trimesh_options.region_areas (-ra); or
                                   NULL                                                   */
     int first_index;           /* readers: the file's first number, 0 or 1; else 0        */
+    int item_first_shift;      /* readers: segments, holes and regions are numbered from
+                                  first_index + item_first_shift (nonzero for a .poly with
+                                  n = 0 numbered otherwise than its .node); else 0        */
     /* readers only (NULL otherwise): the line of the file where each item was read,
        so that a diagnostic can name it (1-based lines) */
     size_t *vertex_line, *segment_line, *hole_line, *region_line;
@@ -791,15 +816,18 @@ void lh_trimesh_options_default(lh_trimesh_options *opt);
  * a flood from the outside or a hole that removes every triangle (an unclosed
  * boundary: LH_ERR_DEGENERATE), with even_odd a vertex ending an odd number of
  * segments (rings not closed, the parity undefined: LH_ERR_DEGENERATE, naming it),
- * a segment endpoint out of range, an option out of range (min_angle outside
- * 0..LH_TRIMESH_MAX_ANGLE, max_area NaN, smooth < 0), a count with a NULL array or an
- * allocator without hooks (LH_ERR_INVALID_ARGUMENT), NaN or infinity
- * (LH_ERR_NONFINITE), counts no lh_index can number (n, segment_count or cover_count
- * from LH_INDEX_MAX / 4 up: LH_ERR_TOO_LARGE), LH_ERR_NOMEM.
+ * a hole seed lying exactly on a segment or at its endpoint (the side to carve is
+ * undefined: LH_ERR_DEGENERATE, naming both), a segment endpoint out of range, an
+ * option out of range (min_angle outside 0..LH_TRIMESH_MAX_ANGLE, max_area NaN,
+ * smooth < 0), a count with a NULL array or an allocator without hooks
+ * (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), counts no lh_index
+ * can number (n, segment_count or cover_count from LH_INDEX_MAX / 4 up:
+ * LH_ERR_TOO_LARGE), LH_ERR_NOMEM.
  * msg (msg_size bytes, may be NULL) receives a one-line reason; when the PSLG came
  * from a reader it starts with the line of the item at fault and a colon ("17:
  * segment 3 crosses segment 5 (line 19)"), so "FILE:" + msg names the place. Items are
- * numbered as in the file (from g->first_index).
+ * numbered as in the file (vertices from g->first_index, segments, holes and regions
+ * from g->first_index + g->item_first_shift).
  */
 typedef struct lh_trimesh lh_trimesh;
 lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
@@ -856,7 +884,9 @@ const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
  * counterclockwise with positive area; edges shared by at most two triangles; every subsegment an
  * edge; every edge on the boundary a subsegment (unless boundary_free); every edge
  * not a subsegment locally Delaunay (incircle, exact). Returns LH_OK, or
- * LH_ERR_INTERNAL with a reason in msg, LH_ERR_INVALID_ARGUMENT, LH_ERR_NOMEM.
+ * LH_ERR_INTERNAL with a reason in msg; LH_ERR_INVALID_ARGUMENT (a NULL array with a
+ * count, a subsegment endpoint out of range, an allocator lacking alloc or free) or
+ * LH_ERR_TOO_LARGE, the argument named in msg; LH_ERR_NOMEM.
  */
 lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
                            size_t seg_count, const lh_index *segs, int boundary_free,

@@ -70,18 +70,18 @@ static lh_status index_of(cells_ctx *x, const lh__token *t, size_t i, lh_index *
     return lh__expected(x->s, LH_ERR_PARSE, t, what, NULL);
 }
 
-/* The rest of a line: .ele attributes (any numbers), then its end. */
+/* The rest of a line: .ele attributes (finite numbers, as in .node files), then its
+ * end. */
 static lh_status line_end(cells_ctx *x, size_t i)
 {
     lh__token t;
     double a;
     for (int j = 0; j < x->attrs; j++) {
         lh__scan_next(x->s, 0, &t);
-        if (!lh__word_double(&t, &a)) {
-            char what[80];
-            snprintf(what, sizeof what, "attribute %d of cell %zu (a number)", j + 1, i + 1);
-            return lh__expected(x->s, LH_ERR_PARSE, &t, what, NULL);
-        }
+        char what[80];
+        snprintf(what, sizeof what, "attribute %d of cell %zu", j + 1, i + 1);
+        lh_status st = lh__number(x->s, &t, what, "accepted", NULL, &a);
+        if (st != LH_OK) return st;
     }
     lh__scan_next(x->s, 0, &t);
     if (t.kind == LH__TOK_EOL || t.kind == LH__TOK_EOF) return LH_OK;

@@ -139,6 +139,8 @@ lh_status lh__out_status(lh__out *o);
  * dmin..dmax, k in kmin..kmax (LH_ERR_DIMENSION). */
 lh_status lh__view_check(FILE *f, const lh_mesh_view *m, int dmin, int dmax, int kmin,
                          int kmax);
+/* Whether s may name a field: printable ASCII, no blank, none of " & < > '. */
+int lh__field_name_ok(const char *s);
 /* Writes point i padded with zeros to 3 coordinates ("%.17g %.17g %.17g"). */
 void lh__out_point3(lh__out *o, const lh_mesh_view *m, size_t i);
 

@@ -28,7 +28,7 @@ void lh__out_point3(lh__out *o, const lh_mesh_view *m, size_t i)
 }
 
 /* A field name that needs no quoting in XML attributes nor in Gmsh's string tags. */
-static int good_name(const char *s)
+int lh__field_name_ok(const char *s)
 {
     if (!*s) return 0;
     for (; *s; s++)
@@ -58,6 +58,6 @@ lh_status lh__view_check(FILE *f, const lh_mesh_view *m, int dmin, int dmax, int
     if (m->d < dmin || m->d > dmax || m->k < kmin || m->k > kmax) return LH_ERR_DIMENSION;
     if (m->n > LH_INDEX_MAX || m->count > LH_INDEX_MAX) return LH_ERR_TOO_LARGE;
     if ((m->n && !m->xyz) || (m->count && !m->cells)) return LH_ERR_INVALID_ARGUMENT;
-    if (m->values_name && !good_name(m->values_name)) return LH_ERR_INVALID_ARGUMENT;
+    if (m->values_name && !lh__field_name_ok(m->values_name)) return LH_ERR_INVALID_ARGUMENT;
     return check_arrays(m);
 }

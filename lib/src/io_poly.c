@@ -108,6 +108,7 @@ lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p)
     lh_index shift = (lh_index)(g->first_index - p->first_index);
     for (size_t i = 0; shift && i < 2 * g->segment_count; i++) g->segments[i] += shift;
     g->first_index = p->first_index;
+    g->item_first_shift = (int)shift; /* the .poly's items keep their own numbers */
     g->n = p->n;
     g->xy = p->xyz;
     g->attr_count = p->attr_count;
@@ -283,20 +284,22 @@ static lh_status read_vertex(poly_ctx *x, size_t i, double *attr)
     return LH_OK;
 }
 
-/* An endpoint of segment `number`: a vertex number from the base (and, when the
- * vertices are here, at most the last one's), stored 0-based. */
+/* An endpoint of segment `number`: a vertex number from the base to the last one's,
+ * stored 0-based. With n = 0 the .node's base is not known yet: any number from 0,
+ * stored less the file's base (-1 for 0 in a 1-based file, until
+ * lh_pslg_take_points renumbers it). */
 static lh_status endpoint(poly_ctx *x, long long number, lh_index *e)
 {
     lh__token t;
     long long k, lo = x->g->first_index, hi = lo + (long long)x->g->n - 1;
     lh__scan_next(x->s, 0, &t);
-    if (lh__word_integer(&t, &k) && k >= lo && (x->g->n ? k <= hi : k - lo < LH_INDEX_MAX)) {
+    if (lh__word_integer(&t, &k) && (x->g->n ? k >= lo && k <= hi : k >= 0 && k - lo < LH_INDEX_MAX)) {
         *e = (lh_index)(k - lo);
         return LH_OK;
     }
     char what[120];
     if (x->g->n) snprintf(what, sizeof what, "an endpoint of segment %lld (a vertex number from %lld to %lld)", number, lo, hi);
-    else snprintf(what, sizeof what, "an endpoint of segment %lld (a vertex number from %lld)", number, lo);
+    else snprintf(what, sizeof what, "an endpoint of segment %lld (a vertex number of the .node, from 0)", number);
     return lh__expected(x->s, LH_ERR_PARSE, &t, what, NULL);
 }
 

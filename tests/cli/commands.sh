@@ -38,7 +38,7 @@ for c in delaunay voronoi hull locate interpolate check points qdelaunay qvorono
   expect "$c --help" 0 '' '^usage: lifthull '"$c" -- "$lh" "$c" --help
 done
 expect "--threads accepted" 0 '' '^4$' -- "$lh" delaunay --threads 2 sq.txt
-expect "--threads checked" 2 "--threads takes 0..4096, not 'x'" '' -- "$lh" hull --threads x sq.txt
+expect "--threads checked" 2 "--threads takes a whole number from 0 to 4096, not 'x'" '' -- "$lh" hull --threads x sq.txt
 # enough sites for parallel phases: the same file from 1, 2 and 3 threads
 "$lh" points 60000 -d 2 --seed 5 > big.txt
 "$lh" delaunay -q big.txt -o one.txt

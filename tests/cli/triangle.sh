@@ -144,7 +144,7 @@ same "-r keeps the 12 triangles' union, no Steiner point" "$(head -1 bbox.2.ele 
 expect "-ra" 0 '' '' -- "$lh" triangle -raQ bbox.1.ele
 same "-ra splits the bounded triangle" "$(awk 'NR == 1 {print ($1 > 40)}' bbox.2.ele)" "1"
 printf '12\n1 -1\n2 -1\n' > short.area; cp bbox.1.node short.node; cp bbox.1.ele short.ele
-expect "-ra short .area" 3 '^short\.area:[0-9]+: expected 12 areas, found 2$' '' -- "$lh" triangle -ra short
+expect "-ra short .area" 3 '^short\.area:4:1: expected triangle number 3, found the end of the file$' '' -- "$lh" triangle -ra short
 printf '3  3  0\n1 1 2 3\n2 1 2 99\n3 4 5 6\n' > bad.ele; cp bbox.1.node bad.node
 expect "-r bad .ele" 3 '^bad\.ele:3:' '' -- "$lh" triangle -r bad
 cp bbox.1.node nothere.node

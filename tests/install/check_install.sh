@@ -12,6 +12,9 @@ trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
 test -f "$tmp/prefix/include/lifthull.h"
 "$tmp/prefix/bin/lifthull" --version
+# the installed tool from another directory: selfcheck needs no data file beside it
+(cd "$tmp" && "$tmp/prefix/bin/lifthull" selfcheck | tail -n 1 | grep -q '^selfcheck: 33 cases, 0 wrong') ||
+  { echo "install: the installed lifthull selfcheck failed outside the source tree" >&2; exit 1; }
 
 CC="$cc" cmake -S "$here" -B "$tmp/cmake-consumer" -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
 cmake --build "$tmp/cmake-consumer" >/dev/null

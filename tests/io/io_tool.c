@@ -41,6 +41,18 @@ static int print_points(const lh_points *p)
 
 typedef lh_status (*writer)(FILE *f, const lh_mesh_view *m);
 
+/* The binary .vtu, with a cell field "quarter" (cell i: i / 4). */
+static lh_status vtu_binary(FILE *f, const lh_mesh_view *m)
+{
+    double *q = malloc((m->count ? m->count : 1) * sizeof *q);
+    if (!q) return LH_ERR_NOMEM;
+    for (size_t i = 0; i < m->count; i++) q[i] = 0.25 * (double)i;
+    const lh_vtu_options o = {0, q, "quarter"};
+    lh_status st = lh_write_vtu_opts(f, m, &o);
+    free(q);
+    return st;
+}
+
 static int write_one(const char *prefix, const char *ext, const lh_mesh_view *m, writer w,
                      lh_status (*wi)(FILE *, const lh_mesh_view *, int))
 {
@@ -71,6 +83,7 @@ static int mesh(const lh_points *p, const char *prefix)
     lh_mesh_view m = {p->d, p->n, p->xyz, lh_tri_simplex_dim(t), lh_tri_count(t),
                       lh_tri_simplices(t), lh_tri_neighbors(t), values, "half_index"};
     int bad = write_one(prefix, "vtu", &m, lh_write_vtu, NULL) +
+              write_one(prefix, "bin.vtu", &m, vtu_binary, NULL) +
               write_one(prefix, "msh", &m, lh_write_msh, NULL) +
               write_one(prefix, "node", &m, NULL, lh_write_node) +
               write_one(prefix, "ele", &m, NULL, lh_write_ele) +

@@ -2,7 +2,7 @@
 
 Random points (2D and 3D, magnitudes 1e-3..1e3, written with repr so that each value is
 exact) go through `io_tool mesh` (lh_points_read, lh_delaunay, every writer); meshio then
-reads the .vtu, the .msh (Gmsh 4.1), the .off (2D) and the TetGen .node/.ele pair (3D),
+reads the .vtu (ASCII, and binary: base64 inline with a cell field), the .msh (Gmsh 4.1), the .off (2D) and the TetGen .node/.ele pair (3D),
 and each must hold exactly these points (padded with z = 0 in 2D), the cells of the .ele
 file (parsed here by hand), the point field and, in the .vtu, the neighbours of the
 .neigh file. Exit status 77 (skip) when meshio cannot be imported.
@@ -64,6 +64,13 @@ def check(tool, work, d, n):
     m = meshio.read(prefix + ".vtu")
     same(m, "vtu")
     assert np.array_equal(m.cell_data["neighbors"][0], nbrs), "vtu: neighbours"
+    b = meshio.read(prefix + ".bin.vtu")
+    same(b, "binary vtu")
+    assert np.array_equal(b.cell_data["neighbors"][0], nbrs), "binary vtu: neighbours"
+    assert np.array_equal(b.cell_data["quarter"][0], 0.25 * np.arange(len(cells))), "binary vtu: cell field"
+    with open(prefix + ".bin.vtu", "rb") as f:
+        head = f.read(300)
+    assert b'format="binary"' in head and b'header_type="UInt64"' in head, head
     same(meshio.read(prefix + ".msh"), "msh")
     if d == 2:
         same(meshio.read(prefix + ".off"), "off", data=False)
@@ -71,7 +78,7 @@ def check(tool, work, d, n):
         m = meshio.read(prefix + ".node", file_format="tetgen")
         same(m, "tetgen", data=False)
         assert np.array_equal(m.point_data["tetgen:attr1"], half), "tetgen: attribute"
-    print(f"ok {d}D: {n} points, {len(cells)} {kind}s, vtu msh{' off' if d == 2 else ' tetgen'}")
+    print(f"ok {d}D: {n} points, {len(cells)} {kind}s, vtu (ASCII, binary) msh{' off' if d == 2 else ' tetgen'}")
 
 
 def main():
