@@ -172,7 +172,7 @@ same "-rpa0.2: corners are points 1..$np" "$lo $((hi <= np))" "1 1"
 same "-rpa0.2: the union of box.1 kept" "$total" "$(mesh_sum box.1 | cut -d' ' -f5)"
 same "-rpa0.2: every triangle at most 0.2" "$(awk -v b="$big" 'BEGIN { print (b <= 0.2) }')" "1"
 expect "-pQ face.poly" 0 '' '' -- "$lh" triangle -pQ face.poly
-for sw in -rq30 -rpq30 -ra0.01; do
+for sw in -rq30 -rpq30 -ra20; do
   rm -f face.2.*
   expect "$sw face.1" 0 '' '^face\.2: ' -- "$lh" triangle "$sw" face.1
   read -r np nt lo hi total big <<< "$(mesh_sum face.2)"
