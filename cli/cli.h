@@ -16,6 +16,7 @@ int lh_cli_check(int argc, char **argv);
 int lh_cli_qdelaunay(int argc, char **argv);
 int lh_cli_qvoronoi(int argc, char **argv);
 int lh_cli_qconvex(int argc, char **argv);
+int lh_cli_qhalf(int argc, char **argv);
 int lh_cli_triangle(int argc, char **argv);
 int lh_cli_mesh(int argc, char **argv);
 

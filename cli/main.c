@@ -23,6 +23,7 @@ static const command commands[] = {
     {"qdelaunay", lh_cli_qdelaunay, "Qhull's qdelaunay, exact: same options and formats (i Fn FN o p s ...)"},
     {"qvoronoi", lh_cli_qvoronoi, "Qhull's qvoronoi, exact: same options and formats (o p Fv Fi Fo ...)"},
     {"qconvex", lh_cli_qconvex, "Qhull's qconvex, exact: same options and formats (i o n Fn FN ...)"},
+    {"qhalf", lh_cli_qhalf, "Qhull's qhalf: halfspace intersection by the exact hull of the dual points"},
     {"triangle", lh_cli_triangle, "Triangle's 2D meshing, exact: same switches and files (-pq30a0.1 A.poly)"},
     {"mesh", lh_cli_mesh, "2D quality meshing of a .poly, .node or polygon rings (VTK, Gmsh, Triangle, SVG)"},
     {"selfcheck", lh_cli_selfcheck, "check the exact predicates on near-degenerate cases"},

@@ -234,7 +234,7 @@ static int triangle_files(const mesh_args *a, const lh_cli_pslg *in, int in_kind
     }
     memcpy(base, a->output, stem);
     base[stem] = 0;
-    lh_cli_tri_files w = {1, 1, in_kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force};
+    lh_cli_tri_files w = {1, 1, in_kind != LH_CLI_NODE, 0, 0, 0, 1, 1, 0, !a->force, 0, 0};
     const int rc = m ? lh_cli_trimesh_write(m, in, base, &w, "mesh")
                      : lh_cli_trimesh_check(base, &w, a->file, "mesh") ? LH_EXIT_OK : LH_EXIT_FAIL;
     free(base);

@@ -43,6 +43,8 @@ typedef struct lh_cli_tri_files {
     int jettison;         /* leave out points in no triangle, renumbering (j)   */
     int no_replace;       /* refuse to replace existing files (mesh without -f;
                              Triangle replaces its outputs)                    */
+    int voronoi;          /* BASE.v.node, BASE.v.edge: the Voronoi diagram (v)  */
+    int order2;           /* quadratic elements: midpoint nodes (o2)            */
 } lh_cli_tri_files;
 
 /* Writes the files BASE.node etc. whole or not at all (each to a temporary file,
@@ -55,6 +57,25 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
 /* Checks every file lh_cli_trimesh_write would write (lh_cli_out_check), before the
  * input is read. Returns 1, or 0 after printing the problem. */
 int lh_cli_trimesh_check(const char *base, const lh_cli_tri_files *w, const char *input, const char *cmd);
+
+/* The mesh's edges as Triangle's .edge file numbers them (trimesh_edges.c): triangle
+ * by triangle, the edges opposite corners 0, 1, 2, each at the first triangle holding
+ * it. id: 3 per triangle, the number of its edge opposite each corner; end: 2 per edge
+ * (counterclockwise in tri[0]); mark: its subsegment's marker, else 0; tri: 2 per edge,
+ * the triangle holding it first and the one across (-1 on the boundary). */
+typedef struct lh_cli_edges {
+    size_t n;
+    lh_index *id, *end, *mark, *tri;
+} lh_cli_edges;
+/* Returns 1, or 0 out of memory (e freed). */
+int lh_cli_edges_build(lh_cli_edges *e, const lh_trimesh *m);
+void lh_cli_edges_free(lh_cli_edges *e);
+/* Triangle's -v files: FILE.v.node, one Voronoi vertex per triangle (its circumcentre,
+ * the vertex attributes interpolated linearly, no markers); FILE.v.edge, one Voronoi
+ * edge per mesh edge in the .edge order: the two triangles' vertices, or on the
+ * boundary "t -1 dx dy", a ray from t's circumcentre outward across the edge. */
+void lh_cli_write_vnode(FILE *f, const lh_trimesh *m, int base);
+void lh_cli_write_vedge(FILE *f, const lh_trimesh *m, const lh_cli_edges *e, int base);
 
 /* The quality report: counts, angle and area ranges, an angle histogram, the
  * triangles below the bounds numbered from first (as the files written: 1, or 0 with

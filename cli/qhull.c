@@ -15,19 +15,32 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
     lh_points pts;
     const char *name;
     if (!lh_cli_load(o.input, LH_FORMAT_AUTO, &pts, &name)) return LH_EXIT_INPUT;
+    if (!lh_cli_qcheck_outputs(&o, pts.d)) {
+        lh_points_free(&pts);
+        return LH_EXIT_USAGE;
+    }
+    if (o.show_options) fprintf(stderr, "Options selected for %s\n", o.command);
     lh_cli_qmodel mo;
     if (!lh_cli_qmodel_build(&mo, &o, pts.d, pts.n, pts.xyz, name)) {
         lh_points_free(&pts);
         return LH_EXIT_FAIL;
     }
+    r = lh_cli_qselect(&mo, &o);
+    if (r <= 0) {
+        lh_cli_qmodel_free(&mo);
+        lh_points_free(&pts);
+        return r < 0 ? LH_EXIT_USAGE : LH_EXIT_FAIL;
+    }
     lh_cli_out out;
     int ok = lh_cli_out_open(&out, o.name, o.output, 1, o.input);
     for (int i = 0; ok && i < o.nout; i++) {
-        /* the summary goes to standard error when other outputs are asked (Qhull) */
-        FILE *f = !strcmp(o.out[i], "s") && o.nout > 1 ? stderr : out.f;
+        /* an 's' asked for goes to standard error, the default one to the output
+         * (Qhull 2020.2) */
+        FILE *f = !strcmp(o.out[i], "s") && !o.summary_default ? stderr : out.f;
         ok = lh_cli_qprint(f, &o, &mo, o.out[i]);
         if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", o.name);
     }
+    if (ok && o.stats) lh_cli_qstats(stderr, &o, &mo);
     int status = out.f ? lh_cli_out_close(&out, o.name, ok) : LH_EXIT_FAIL;
     lh_cli_qmodel_free(&mo);
     lh_points_free(&pts);

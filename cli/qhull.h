@@ -11,17 +11,31 @@
 
 #include <stdio.h>
 
-typedef enum { LH_QPROG_DELAUNAY, LH_QPROG_VORONOI, LH_QPROG_CONVEX } lh_cli_qprog;
+typedef enum { LH_QPROG_DELAUNAY, LH_QPROG_VORONOI, LH_QPROG_CONVEX, LH_QPROG_HALF } lh_cli_qprog;
 
 enum { LH_QOUT_MAX = 32 };
 
 typedef struct lh_cli_qopts {
     lh_cli_qprog prog;
-    const char *name;         /* "qdelaunay", "qvoronoi", "qconvex"            */
+    const char *name;         /* "qdelaunay", "qvoronoi", "qconvex", "qhalf"   */
     char out[LH_QOUT_MAX][4]; /* output options in the order given ("i", "Fn") */
     int nout;
     int furthest;             /* Qu                                            */
+    int areas;                /* FA or FS: totals in the summary 's'           */
+    int cdd;                  /* FD: cdd's format for n, Fi, Fo, p             */
+    int show_options;         /* FO: the options on standard error             */
+    int stats;                /* Ts: statistics on standard error              */
+    double interior[LH_DELAUNAY_MAX_DIM]; /* qhalf's Hn,n,...                  */
+    int ninterior;
+    int summary_default;      /* no output asked: 's' on standard output       */
     int verify;               /* Tv: the exact check of the result             */
+    struct lh_cli_qpd {       /* Pdk:n (ge: normal[k] >= n), PDk:n (<= n)      */
+        int k, ge;
+        double at;
+    } pd[LH_QOUT_MAX];
+    int npd;
+    size_t largest;           /* PAn: the n largest facets are the good ones   */
+    int good, good_nbrs;      /* Pg: print good facets; PG: their neighbours   */
     const char *input;        /* TI file, NULL: standard input                 */
     const char *output;       /* TO file, NULL: standard output                */
     char command[256];        /* "lifthull qdelaunay OPTIONS", for summaries    */
@@ -65,10 +79,24 @@ typedef struct lh_cli_qmodel {
 int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t n,
                         const double *xyz, const char *name);
 void lh_cli_qmodel_free(lh_cli_qmodel *mo);
+/* (Re)builds mo->inc_off and mo->inc from the facets (qhull_model.c). */
+lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo);
+/* Qhull's print filters (Pdk, PDk, PAn, Pg, PG; qhull_select.c): the facets they
+ * drop join the other facets (negative ids), as Qhull's unprinted ones. Returns 1;
+ * 0 when out of memory, -1 for a coordinate outside the facets' normals (both after
+ * printing the problem). */
+int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
 
-/* Prints output option `opt` (one of those lh_cli_qparse accepts for o->prog);
- * `to_stderr_summary`: 's' goes to standard error when other outputs are asked, as
- * Qhull does. Returns 0 when out of memory (message printed). */
+/* Whether the outputs asked for suit d-dimensional input (m, FM, G: 2-d and 3-d
+ * hulls, 2-d Delaunay; qdelaunay's f and FF: up to 7-d); 0 after printing the
+ * problem (qhull_extra.c). */
+int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d);
+
+/* Ts: the computation's statistics (qhull_stats.c). */
+void lh_cli_qstats(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo);
+
+/* Prints output option `opt` (one of those lh_cli_qparse accepts for o->prog).
+ * Returns 0 when out of memory. */
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
 
 #endif

@@ -147,7 +147,7 @@ static lh_status convex(lh_cli_qmodel *mo)
 }
 
 /* Site -> facets (main, then other as -(j+1)), by counting. */
-static lh_status incidence(lh_cli_qmodel *mo)
+lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo)
 {
     mo->inc_off = calloc(mo->n + 1, sizeof *mo->inc_off);
     size_t total = (mo->m + mo->m_other) * mo->nv;
@@ -176,7 +176,7 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
     mo->xyz = xyz;
     lh_status st = lh_pred_create(NULL, &mo->pred);
     if (st == LH_OK) st = o->prog == LH_QPROG_CONVEX ? convex(mo) : delaunay(mo, o);
-    if (st == LH_OK) st = incidence(mo);
+    if (st == LH_OK) st = lh_cli_qmodel_incidence(mo);
     if (st == LH_OK && o->verify) {
         char msg[256];
         lh_status c = mo->tri ? lh_tri_check(mo->tri, msg, sizeof msg) : LH_OK;

@@ -3,13 +3,16 @@
 #include "qhull.h"
 
 #include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
-static const char *const outputs[3] = {
-    "i o p s Fn FN Fv Fx",
-    "o p s i Fi Fo Fv Fn FN",
-    "i o p s n Fn FN Fv Fi Fo FC Ft Fx",
+static const char *const outputs[4] = {
+    "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
+    "o p s i Fi Fo Fv Fn FN Fs Fx",
+    "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
+    "s i Fp Fx Fv",
 };
 
 /* Qhull options that change nothing here, with why. */
@@ -46,30 +49,130 @@ static int is_output(lh_cli_qprog prog, const char *w)
     return 0;
 }
 
+static void help_half(void)
+{
+    printf("usage: lifthull qhalf [OPTIONS] < HALFSPACES\n"
+           "       lifthull qhalf [OPTIONS] TI FILE [TO FILE]\n\n"
+           "Qhull's qhalf: the intersection of halfspaces a.x + b <= 0, given as Qhull's\n"
+           "input (d+1, count, then a_1 .. a_d b per line; qconvex n writes them), about\n"
+           "an interior point: option Hn,n,... (missing coordinates 0), the input's first\n"
+           "lines 'd 1' and the point, or else the origin if every b < 0. The dual points\n"
+           "a / -(a.c + b) are rounded once; their convex hull is exact.\n\n"
+           "outputs, printed in the order given:  %s\n"
+           "  s   summary (none asked: on standard output; asked: on standard error)\n"
+           "  i   the halfspaces through each intersection point (Fv: with counts)\n"
+           "  Fp  the intersection points      Fx  the non-redundant halfspaces\n"
+           "other options:\n"
+           "  Hn,n,...  the interior point      FO  the options on standard error\n"
+           "  TI FILE   read from FILE          TO FILE  write the output to FILE\n"
+           "  Qt QJ Qbb Qx and Qhull's tuning options are accepted (a note says why).\n\n"
+           "e.g.  rbox c D3 | qconvex n | lifthull qhalf H0 Fp\n",
+           outputs[LH_QPROG_HALF]);
+}
+
 static void help(const lh_cli_qopts *o)
 {
+    if (o->prog == LH_QPROG_HALF) {
+        help_half();
+        return;
+    }
     printf("usage: lifthull %s [OPTIONS] < POINTS\n"
            "       lifthull %s [OPTIONS] TI FILE [TO FILE]\n\n"
            "Qhull's %s, exact: the same options and output formats, every facet a\n"
            "simplex (Qt is always on). Points in Qhull's format (rbox output as it is).\n\n"
            "outputs, printed in the order given:  %s\n"
-           "  (none: the summary 's')\n"
+           "  (none: the summary 's' on standard output; 's' asked for: on standard error)\n"
            "other options:\n"
            "  Qu        furthest-site (upper hull)%s\n"
-           "  Tv        check the result exactly and report on standard error\n"
+           "%s"
+           "  Tv, Tc    check the result exactly and report on standard error\n"
+           "  Ts        statistics on standard error (sizes, time, predicate stages)\n"
+           "  FO        the options on standard error%s\n"
+           "%s"
            "  TI FILE   read the points from FILE      TO FILE  write the output to FILE\n"
            "  Qt QJ Qbb Qz Qc Qx Pp and Qhull's tuning options are accepted; they\n"
            "  change nothing under exact arithmetic (a note says why).\n\n"
            "e.g.  rbox 1000 D3 | lifthull %s %s\n",
            o->name, o->name, o->name, outputs[o->prog],
-           o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "", o->name,
+           o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "",
+           o->prog == LH_QPROG_VORONOI ? "" : "  FA        total area (and volume) in the summary 's'\n",
+           o->prog == LH_QPROG_VORONOI ? "" : "; FD: cdd's format for n, Fi, Fo, p",
+           o->prog == LH_QPROG_VORONOI ? "" :
+           "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
+           "  PAn       print the n largest facets (Pg); PG: their other neighbours\n",
+           o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
+}
+
+/* Qhull's print filters: Pdk[:n]... (several run together), PDk[:n], PAn, Pg, PG.
+ * Returns 1 when w is one (recorded), 0 when it is not one, -1 after a usage error. */
+static int print_filter(lh_cli_qopts *o, const char *w)
+{
+    if (w[0] != 'P' || !strchr("dDAgG", w[1]) || !w[1]) return 0;
+    if (o->prog != LH_QPROG_CONVEX && o->prog != LH_QPROG_DELAUNAY) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex and "
+                "qdelaunay)\n", o->name, w);
+        return -1;
+    }
+    if (w[1] == 'g' || w[1] == 'G') {
+        if (w[2]) return 0;
+        *(w[1] == 'g' ? &o->good : &o->good_nbrs) = 1;
+        return 1;
+    }
+    char *end;
+    if (w[1] == 'A') {
+        long v = isdigit((unsigned char)w[2]) ? strtol(w + 2, &end, 10) : 0;
+        if (v <= 0 || *end) goto bad;
+        o->largest = (size_t)v;
+        return 1;
+    }
+    for (const char *s = w + 1; *s;) {
+        if ((*s != 'd' && *s != 'D') || !isdigit((unsigned char)s[1]) || o->npd == LH_QOUT_MAX) goto bad;
+        struct lh_cli_qpd *f = &o->pd[o->npd++];
+        f->ge = *s == 'd';
+        f->k = (int)strtol(s + 1, &end, 10);
+        f->at = 0;
+        s = end;
+        if (*s == ':') {
+            f->at = strtod(s + 1, &end);
+            if (end == s + 1 || f->at != f->at) goto bad;
+            s = end;
+        }
+    }
+    return 1;
+bad:
+    fprintf(stderr, "lifthull %s: option '%s': expected Pdk[:n] or PDk[:n] (k a coordinate, n a "
+            "number; several may follow each other), PAn (n > 0), Pg or PG\n", o->name, w);
+    return -1;
+}
+
+/* qhalf's Hn,n,...: the interior point (missing coordinates 0; "H" alone: the
+ * origin). */
+static int interior(lh_cli_qopts *o, const char *w)
+{
+    o->ninterior = 1;
+    o->interior[0] = 0;
+    if (!w[1]) return 1;
+    o->ninterior = 0;
+    for (const char *s = w + 1;;) {
+        char *end;
+        double v = strtod(s, &end);
+        if (end == s || !isfinite(v) || (*end && *end != ',') || o->ninterior == LH_DELAUNAY_MAX_DIM) {
+            fprintf(stderr, "lifthull %s: option '%s': expected Hn,n,... (at most %d coordinates "
+                    "of the interior point)\n", o->name, w, LH_DELAUNAY_MAX_DIM);
+            return 0;
+        }
+        o->interior[o->ninterior++] = v;
+        if (!*end) return 1;
+        s = end + 1;
+    }
 }
 
 /* One option word; 0 after printing a usage error. `next` is the following word,
  * consumed (*used = 1) by TI and TO. */
 static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
 {
+    if (!strcmp(w, "FS") && o->prog != LH_QPROG_VORONOI) o->areas = 1; /* also an output */
     if (is_output(o->prog, w)) {
         if (o->nout == LH_QOUT_MAX) {
             fprintf(stderr, "lifthull %s: more than %d output options\n", o->name, LH_QOUT_MAX);
@@ -78,8 +181,6 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
         strcpy(o->out[o->nout++], w);
         return 1;
     }
-    if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
-    if (!strcmp(w, "Tv")) return o->verify = 1;
     if (!strcmp(w, "TI") || !strcmp(w, "TO")) {
         if (!next) {
             fprintf(stderr, "lifthull %s: option '%s' needs a file name\n", o->name, w);
@@ -87,6 +188,28 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
         }
         *(w[1] == 'I' ? &o->input : &o->output) = next;
         return *used = 1;
+    }
+    const int facets = o->prog == LH_QPROG_CONVEX || o->prog == LH_QPROG_DELAUNAY;
+    const int half = o->prog == LH_QPROG_HALF;
+    if (!strcmp(w, "FO")) return o->show_options = 1;
+    if (half && w[0] == 'H') return interior(o, w);
+    if (half && (w[0] == 'T' || !strcmp(w, "Qu"))) goto unknown; /* no check or statistics */
+    if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
+    if (!strcmp(w, "FA") && facets) return o->areas = 1;
+    if (!strcmp(w, "Tv")) return o->verify = 1;
+    if (!strcmp(w, "Ts")) return o->stats = 1;
+    if (!strcmp(w, "Tc")) {
+        fprintf(stderr, "lifthull %s: option 'Tc': every step is exact; the result is checked "
+                "once, exactly, as with 'Tv'\n", o->name);
+        return o->verify = 1;
+    }
+    if (!strcmp(w, "FD") && facets) return o->cdd = 1;
+    int pf = print_filter(o, w);
+    if (pf) return pf > 0;
+    if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
+                "QGn, QVn)\n", o->name, w);
+        return 0;
     }
     for (size_t i = 0; i < sizeof noops / sizeof noops[0]; i++) {
         const noop *p = &noops[i];
@@ -98,14 +221,16 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
         if (p->why) fprintf(stderr, "lifthull %s: option '%s' ignored: %s\n", o->name, w, p->why);
         return 1;
     }
-    fprintf(stderr, "lifthull %s: option '%s' is not supported (outputs: %s; also Qu, Tv, TI, TO; "
-            "lifthull %s --help)\n", o->name, w, outputs[o->prog], o->name);
+unknown:
+    fprintf(stderr, "lifthull %s: option '%s' is not supported (outputs: %s; %s, TI, TO; "
+            "lifthull %s --help)\n", o->name, w, outputs[o->prog],
+            o->prog == LH_QPROG_HALF ? "also H" : "also Qu, Tv", o->name);
     return 0;
 }
 
 int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv)
 {
-    static const char *const names[3] = {"qdelaunay", "qvoronoi", "qconvex"};
+    static const char *const names[4] = {"qdelaunay", "qvoronoi", "qconvex", "qhalf"};
     memset(o, 0, sizeof *o);
     o->prog = prog;
     o->name = names[prog];
@@ -138,6 +263,9 @@ int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv)
         if (!word(o, words[i], i + 1 < nw ? words[i + 1] : NULL, &took)) return -1;
         i += took;
     }
-    if (o->nout == 0) strcpy(o->out[o->nout++], "s");
+    if (o->nout == 0) {
+        strcpy(o->out[o->nout++], "s");
+        o->summary_default = 1;
+    }
     return 0;
 }

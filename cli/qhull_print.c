@@ -1,6 +1,7 @@
 /*
  * qhull_print.c — Qhull's text formats for facets: i, Fv, Fn, FN, o, p, s, Fx, and
- * qconvex's planes (n, Fi, Fo) and centrums (FC). Byte habits as Qhull 2020.2:
+ * qconvex's planes (n, Fi, Fo) and centrums (FC); the measures (FA, FS, Fa, Fs) are
+ * in qhull_measure.c. Byte habits as Qhull 2020.2:
  * coordinates as "%6.16g " (trailing blank), index lists of 'i' and 'o' with a
  * trailing blank, those of Fn, FN, Fv without; the lifted coordinate of qdelaunay's
  * 'o' and 'p' scaled to [0, max |coordinate|] as Qhull's Qbb does.
@@ -19,11 +20,9 @@ void lh_cli_qcoords(FILE *f, const double *x, int d)
 }
 
 /* The lifted coordinate |p|^2 scaled to [0, max |coordinate|] (Qhull's Qbb). */
-typedef struct lift_scale {
-    double low, factor;
-} lift_scale;
+typedef lh_cli_qlift lift_scale;
 
-static lift_scale lift_scale_of(const lh_cli_qmodel *mo)
+lh_cli_qlift lh_cli_qlift_scale(const lh_cli_qmodel *mo)
 {
     double low = INFINITY, high = -INFINITY, big = 0;
     for (size_t i = 0; i < mo->n; i++) {
@@ -40,20 +39,32 @@ static lift_scale lift_scale_of(const lh_cli_qmodel *mo)
     return s;
 }
 
-static void lifted_point(FILE *f, const lh_cli_qmodel *mo, lift_scale s, size_t i)
+double lh_cli_qlifted(const lh_cli_qmodel *mo, lh_cli_qlift s, size_t i)
 {
     const double *x = mo->xyz + i * mo->d;
     double z = 0;
     for (int j = 0; j < mo->d; j++) z += x[j] * x[j];
-    lh_cli_qcoords(f, x, mo->d);
-    fprintf(f, "%6.16g \n", (z - s.low) * s.factor);
+    return (z - s.low) * s.factor;
 }
 
-static int is_vertex(const lh_cli_qmodel *mo, size_t i)
+static void lifted_point(FILE *f, const lh_cli_qmodel *mo, lift_scale s, size_t i)
+{
+    lh_cli_qcoords(f, mo->xyz + i * mo->d, mo->d);
+    fprintf(f, "%6.16g \n", lh_cli_qlifted(mo, s, i));
+}
+
+int lh_cli_qis_vertex(const lh_cli_qmodel *mo, size_t i)
 {
     for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
         if (mo->inc[k] >= 0) return 1;
     return 0;
+}
+
+size_t lh_cli_qvertex_count(const lh_cli_qmodel *mo)
+{
+    size_t v = 0;
+    for (size_t i = 0; i < mo->n; i++) v += lh_cli_qis_vertex(mo, i);
+    return v;
 }
 
 static void print_i(FILE *f, const lh_cli_qmodel *mo)
@@ -115,12 +126,16 @@ static void print_fN(FILE *f, const lh_cli_qmodel *mo)
 static void print_p(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     size_t count = 0;
-    for (size_t i = 0; i < mo->n; i++) count += is_vertex(mo, i);
+    for (size_t i = 0; i < mo->n; i++) count += lh_cli_qis_vertex(mo, i);
     int lifted = o->prog != LH_QPROG_CONVEX;
-    fprintf(f, "%d\n%zu\n", mo->d + lifted, count);
-    lift_scale s = lift_scale_of(mo);
+    if (o->cdd) /* FD: cdd's format, a 1 before each point */
+        fprintf(f, "%s\nbegin\n%zu %d real\n", o->command, count, mo->d + lifted + 1);
+    else
+        fprintf(f, "%d\n%zu\n", mo->d + lifted, count);
+    lift_scale s = lh_cli_qlift_scale(mo);
     for (size_t i = 0; i < mo->n; i++) {
-        if (!is_vertex(mo, i)) continue;
+        if (!lh_cli_qis_vertex(mo, i)) continue;
+        if (o->cdd) fputs("1 ", f);
         if (lifted) {
             lifted_point(f, mo, s, i);
         } else {
@@ -128,13 +143,14 @@ static void print_p(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
             fputc('\n', f);
         }
     }
+    if (o->cdd) fputs("end\n", f);
 }
 
 static void print_o(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     int lifted = o->prog != LH_QPROG_CONVEX;
     fprintf(f, "%d\n%zu %zu %zu\n", mo->d + lifted, mo->n, mo->m, mo->m * mo->nv / 2);
-    lift_scale s = lift_scale_of(mo);
+    lift_scale s = lh_cli_qlift_scale(mo);
     for (size_t i = 0; i < mo->n; i++) {
         if (lifted) {
             lifted_point(f, mo, s, i);
@@ -150,7 +166,10 @@ static void print_o(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     }
 }
 
-/* Extreme points: the sites on the convex hull, increasing. */
+/* Extreme points, increasing (Qhull lists them in its facets' order): qconvex, the
+ * hull's vertices; qdelaunay and qvoronoi, the sites on the hull's boundary (on an
+ * upper or vertical facet, as Qhull's); with Qu, the furthest-site triangulation's
+ * vertices (the corners: a site inside a hull facet lifts below the upper hull). */
 static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     size_t count = 0;
@@ -159,7 +178,7 @@ static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
         for (size_t i = 0; i < mo->n; i++) {
             int on = 0;
             for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !on; k++)
-                on = o->prog == LH_QPROG_CONVEX || mo->inc[k] < 0;
+                on = o->prog == LH_QPROG_CONVEX || (mo->inc[k] < 0) != o->furthest;
             if (!on) continue;
             if (pass) fprintf(f, "%zu\n", i);
             else count++;
@@ -167,16 +186,13 @@ static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     }
 }
 
-static void print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
+static int print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
+    size_t v = lh_cli_qvertex_count(mo);
     if (o->prog == LH_QPROG_CONVEX) {
-        size_t v = 0;
-        for (size_t i = 0; i < mo->n; i++) v += is_vertex(mo, i);
         fprintf(f, "\nConvex hull of %zu points in %d-d:\n\n  Number of vertices: %zu\n"
                    "  Number of facets: %zu\n", mo->n, mo->d, v, mo->m);
     } else if (o->prog == LH_QPROG_VORONOI) {
-        size_t v = 0;
-        for (size_t i = 0; i < mo->n; i++) v += is_vertex(mo, i);
         fprintf(f, "\nVoronoi diagram by the convex hull of %zu points in %d-d:\n\n"
                    "  Number of Voronoi regions%s: %zu\n  Number of Voronoi vertices: %zu\n",
                 mo->n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v, mo->m);
@@ -189,34 +205,51 @@ static void print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     if (mo->ndup) fprintf(f, "  Number of duplicate sites merged: %zu\n", mo->ndup);
     fprintf(f, "\nStatistics for: %s\n\n  Number of points processed: %zu\n"
                "  Exact arithmetic: every facet a simplex, no merging, no precision error\n"
-               "  CPU seconds to compute %s: %.3g\n\n",
+               "  CPU seconds to compute %s: %.3g\n",
             o->command, mo->n - mo->ndup, o->prog == LH_QPROG_CONVEX ? "the hull" : "the triangulation",
             mo->seconds);
+    if (o->areas) { /* FA, FS: Qhull's lines, its "%2.8g" */
+        double area, volume;
+        if (!lh_cli_qtotals(mo, &area, &volume)) return 0;
+        fprintf(f, "  Total facet area:   %2.8g\n", area);
+        if (o->prog == LH_QPROG_CONVEX) fprintf(f, "  Total volume:       %2.8g\n", volume);
+    }
+    fputc('\n', f);
+    return 1;
 }
 
 /* The outward hyperplane n.x + off = 0 of hull facet t, |n| = 1, from the exact
  * cofactors (lh_hyperplane). The model lists a hull facet with its last two vertices
  * exchanged (Qhull's parity), so outward is the opposite of that order's orientation. */
-static void facet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off)
+void lh_cli_qfacet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off)
 {
     const int d = mo->d;
-    const double *p[LH_DELAUNAY_MAX_DIM];
+    const double *p[LH_DELAUNAY_MAX_DIM] = {0};
     for (int k = 0; k < d; k++) p[k] = mo->xyz + (size_t)mo->vert[t * d + k] * d;
     lh_hyperplane(mo->pred, d, p, n, off);
     for (int j = 0; j < d; j++) n[j] = -n[j];
     *off = -*off;
 }
 
-static void print_planes(FILE *f, const lh_cli_qmodel *mo)
+/* n.x + off <= 0 inside; FD prints cdd's rows b - A x >= 0: -off, then -n. */
+static void print_planes(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     const int d = mo->d;
-    fprintf(f, "%d\n%zu\n", d + 1, mo->m);
+    if (o->cdd) fprintf(f, "%s\nbegin\n    %zu %d real\n", o->command, mo->m, d + 1);
+    else fprintf(f, "%d\n%zu\n", d + 1, mo->m);
     for (size_t t = 0; t < mo->m; t++) {
         double n[LH_DELAUNAY_MAX_DIM], off;
-        facet_plane(mo, t, n, &off);
-        lh_cli_qcoords(f, n, d);
-        fprintf(f, "%6.16g \n", off);
+        lh_cli_qfacet_plane(mo, t, n, &off);
+        if (o->cdd) {
+            fprintf(f, "%6.16g ", -off);
+            for (int j = 0; j < d; j++) fprintf(f, "%6.16g ", -n[j]);
+        } else {
+            lh_cli_qcoords(f, n, d);
+            fprintf(f, "%6.16g ", off);
+        }
+        fputc('\n', f);
     }
+    if (o->cdd) fputs("end\n", f);
 }
 
 static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
@@ -235,7 +268,7 @@ static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
     if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "FN") &&
-        strcmp(opt, "i"))
+        strcmp(opt, "i") && strcmp(opt, "Fs") && strcmp(opt, "Fx"))
         return lh_cli_qprint_voronoi(f, o, mo, opt);
     if (!strcmp(opt, "i")) print_i(f, mo);
     else if (!strcmp(opt, "Fv")) print_fv(f, mo);
@@ -244,8 +277,11 @@ int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const
     else if (!strcmp(opt, "p")) print_p(f, o, mo);
     else if (!strcmp(opt, "o") || !strcmp(opt, "Ft")) print_o(f, o, mo);
     else if (!strcmp(opt, "Fx")) print_fx(f, o, mo);
-    else if (!strcmp(opt, "s")) print_s(f, o, mo);
-    else if (!strcmp(opt, "n") || !strcmp(opt, "Fi") || !strcmp(opt, "Fo")) print_planes(f, mo);
+    else if (!strcmp(opt, "s")) return print_s(f, o, mo);
+    else if (!strcmp(opt, "FS") || !strcmp(opt, "Fa") || !strcmp(opt, "Fs"))
+        return lh_cli_qprint_measure(f, o, mo, opt);
+    else if (!strcmp(opt, "n") || !strcmp(opt, "Fi") || !strcmp(opt, "Fo")) print_planes(f, o, mo);
     else if (!strcmp(opt, "FC")) print_centrums(f, mo);
+    else return lh_cli_qprint_extra(f, o, mo, opt);
     return 1;
 }

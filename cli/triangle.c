@@ -13,14 +13,14 @@
 #include <string.h>
 
 typedef struct sw {
-    int p, r, q, a_regions, A, c, D, Y, O, I, Q, V, S, noP;
+    int p, r, q, a_regions, A, c, D, Y, O, I, Q, V, S, noP, s;
     double angle, area;
     size_t steiner;
     lh_cli_tri_files files;
 } sw;
 
 static const char *const usage_text =
-    "usage: lifthull triangle [-prqaAcDYSjezBPNEIOQVgnil] FILE[.poly|.node|.json]\n"
+    "usage: lifthull triangle [-prqaAcDYSjevno2zBPNEIOQVgil] FILE[.poly|.node|.json]\n"
     "\n"
     "Triangle's command line (J. R. Shewchuk), computed exactly by lifthull: the same\n"
     "switches, input and output files. FILE.poly (or -p FILE) is a planar straight-line\n"
@@ -34,20 +34,26 @@ static const char *const usage_text =
     "  -q[A]   quality mesh: no angle below A degrees (default 20, at most 40)\n"
     "  -a[X]   no triangle area above X; -a alone: the .poly regions' area bounds\n"
     "  -A      regional attributes: each triangle gets its region's attribute\n"
-    "  -c      keep the convex hull (do not carve from the outside)\n"
+    "  -c      keep the convex hull (do not carve from the outside); with a .node\n"
+    "          (or -r) input, write FILE.1.poly: the hull's (the mesh's boundary) edges\n"
     "  -D      conforming Delaunay: segments split until every triangle is Delaunay\n"
+    "  -s      segments split at midpoints until each is a chain of Delaunay edges\n"
     "  -Y      no Steiner points on the boundary; -YY: on no segment\n"
     "  -S[N]   at most N Steiner points\n"
     "  -j      leave points that are in no triangle out of the output\n"
     "  -e      write FILE.1.edge; -n FILE.1.neigh; -g FILE.1.off\n"
+    "  -v      write the Voronoi diagram: FILE.1.v.node, FILE.1.v.edge (Triangle's\n"
+    "          format: a vertex per triangle, an edge per edge, rays \"t -1 dx dy\")\n"
+    "  -o2     quadratic elements: 6 nodes per triangle, the midpoints of the edges\n"
+    "          opposite corners 1, 2, 3 numbered after the vertices\n"
     "  -z      number everything from 0 (default 1)\n"
     "  -B      no boundary markers; -P no .poly; -N no .node; -E no .ele output\n"
     "  -I      no iteration number in the output names (FILE.node ...)\n"
     "  -O      ignore the holes of the .poly\n"
     "  -Q      quiet; -V verbose: the quality report (angles, areas, histogram)\n"
-    "  -i -F -l -s -C -X   Triangle's choices of algorithm or arithmetic: accepted,\n"
+    "  -i -F -l -C -X   Triangle's choices of algorithm or arithmetic: accepted,\n"
     "          nothing changes (lifthull is always exact)\n"
-    "not supported: -o2, -v, -u\n"
+    "not supported: -u\n"
     "\n"
     "examples:\n"
     "  lifthull triangle -pq30 examples/A.poly       # the letter A: examples/A.1.*\n"
@@ -115,8 +121,17 @@ static int parse_switches(const char *s, sw *o)
         case 'O': o->O = 1; break;
         case 'Q': o->Q = 1; break;
         case 'V': o->V = 1; break;
-        case 'i': case 'F': case 'l': case 's': case 'C': case 'X': break;
-        case 'o': case 'v': case 'u': case 'k': case 'L': case 'w': case 'W':
+        case 'v': o->files.voronoi = 1; break;
+        case 'o':
+            if (s[j + 1] != '2') {
+                fprintf(stderr, "lifthull triangle: -o must be -o2 (quadratic elements), not '%s'\n", s);
+                return 0;
+            }
+            o->files.order2 = 1, j++;
+            break;
+        case 's': o->s = 1; break;
+        case 'i': case 'F': case 'l': case 'C': case 'X': break;
+        case 'u': case 'k': case 'L': case 'w': case 'W':
             fprintf(stderr, "lifthull triangle: -%c is not supported (see lifthull triangle --help)\n", s[j]);
             return 0;
         default:
@@ -201,6 +216,7 @@ static int run(const sw *o, const char *file)
     opt.region_areas = o->a_regions;
     opt.region_attributes = o->A;
     opt.boundary_steiner = o->Y == 0 ? 1 : o->Y == 1 ? 0 : -1;
+    opt.split_segments = o->s;
     if (o->S) opt.max_steiner = o->steiner;
     char msg[512];
     const double t0 = lh_cli_seconds();
@@ -238,7 +254,7 @@ int lh_cli_triangle(int argc, char **argv)
 {
     sw o;
     memset(&o, 0, sizeof o);
-    o.files = (lh_cli_tri_files){1, 1, 0, 0, 0, 0, 1, 1, 0, 0};
+    o.files = (lh_cli_tri_files){1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0};
     const char *file = NULL;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -265,6 +281,8 @@ int lh_cli_triangle(int argc, char **argv)
     }
     int kind;
     free(base_of(file, o.p, &kind));
-    o.files.poly = kind != LH_CLI_NODE && !o.noP; /* Triangle writes a .poly for -p */
+    /* Triangle writes a .poly for -p, and with -c for a point set (the hull's edges) or
+       a mesh refined (its boundary edges) */
+    o.files.poly = (kind != LH_CLI_NODE || o.c) && !o.noP;
     return run(&o, file);
 }

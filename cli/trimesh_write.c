@@ -15,6 +15,7 @@ typedef struct ctx {
     const lh_cli_tri_files *w;
     lh_index *num;   /* output number of each point (-1: jettisoned) */
     size_t kept;
+    lh_cli_edges e;  /* the edges (-e, -v, -o2), or none */
 } ctx;
 
 static long long num(const ctx *c, lh_index p) { return (long long)c->num[p] + c->w->base; }
@@ -25,12 +26,23 @@ static void write_node(FILE *f, const ctx *c)
     const double *xy = lh_trimesh_points(m), *at = lh_trimesh_point_attrs(m);
     const lh_index *mk = lh_trimesh_point_markers(m);
     const int na = lh_trimesh_point_attr_count(m);
-    fprintf(f, "%zu  2  %d  %d\n", c->kept, na, c->w->markers ? 1 : 0);
+    fprintf(f, "%zu  2  %d  %d\n", c->kept + (c->w->order2 ? c->e.n : 0), na, c->w->markers ? 1 : 0);
     for (size_t p = 0; p < lh_trimesh_point_count(m); p++) {
         if (c->num[p] < 0) continue;
         fprintf(f, "%4lld    %.17g  %.17g", num(c, (lh_index)p), xy[2 * p], xy[2 * p + 1]);
         for (int j = 0; j < na; j++) fprintf(f, "  %.17g", at[p * (size_t)na + j]);
         if (c->w->markers) fprintf(f, "    %lld", (long long)mk[p]);
+        fputc('\n', f);
+    }
+    /* -o2: a node at the middle of edge k numbered kept + k, its attributes the
+       ends' mean, its marker the edge's (Triangle's rule for a point on an edge) */
+    for (size_t k = 0; c->w->order2 && k < c->e.n; k++) {
+        const lh_index a = c->e.end[2 * k], b = c->e.end[2 * k + 1];
+        fprintf(f, "%4lld    %.17g  %.17g", (long long)(c->kept + k) + c->w->base, (xy[2 * a] + xy[2 * b]) / 2,
+                (xy[2 * a + 1] + xy[2 * b + 1]) / 2);
+        for (int j = 0; j < na; j++)
+            fprintf(f, "  %.17g", (at[a * (size_t)na + j] + at[b * (size_t)na + j]) / 2);
+        if (c->w->markers) fprintf(f, "    %lld", (long long)c->e.mark[k]);
         fputc('\n', f);
     }
 }
@@ -41,10 +53,13 @@ static void write_ele(FILE *f, const ctx *c)
     const lh_index *t = lh_trimesh_triangles(m);
     const double *ta = lh_trimesh_triangle_attrs(m);
     const size_t nt = lh_trimesh_triangle_count(m);
-    fprintf(f, "%zu  3  %d\n", nt, ta ? 1 : 0);
+    fprintf(f, "%zu  %d  %d\n", nt, c->w->order2 ? 6 : 3, ta ? 1 : 0);
     for (size_t i = 0; i < nt; i++) {
         fprintf(f, "%4lld    %4lld  %4lld  %4lld", (long long)i + c->w->base, num(c, t[3 * i]),
                 num(c, t[3 * i + 1]), num(c, t[3 * i + 2]));
+        /* -o2: then the midpoints of the edges opposite corners 1, 2, 3 (Triangle's order) */
+        for (int j = 0; c->w->order2 && j < 3; j++)
+            fprintf(f, "  %4lld", (long long)(c->kept + (size_t)c->e.id[3 * i + j]) + c->w->base);
         if (ta) fprintf(f, "    %.17g", ta[i]);
         fputc('\n', f);
     }
@@ -74,46 +89,15 @@ static void write_poly(FILE *f, const ctx *c, const lh_pslg *g)
     }
 }
 
-/* The subsegment lying on edge a-b, if any (marker in *mk): a sorted lookup. */
-typedef struct segkey { lh_index lo, hi, mk; } segkey;
-static int segkey_cmp(const void *x, const void *y)
+static void write_edge(FILE *f, const ctx *c)
 {
-    const segkey *a = x, *b = y;
-    return a->lo != b->lo ? (a->lo < b->lo ? -1 : 1) : a->hi != b->hi ? (a->hi < b->hi ? -1 : 1) : 0;
-}
-
-static int write_edge(FILE *f, const ctx *c)
-{
-    const lh_trimesh *m = c->m;
-    const size_t nt = lh_trimesh_triangle_count(m), ns = lh_trimesh_segment_count(m);
-    const lh_index *t = lh_trimesh_triangles(m), *nb = lh_trimesh_neighbors(m);
-    const lh_index *s = lh_trimesh_segments(m), *sm = lh_trimesh_segment_markers(m);
-    segkey *k = malloc((ns ? ns : 1) * sizeof *k);
-    if (!k) return 0;
-    for (size_t i = 0; i < ns; i++) {
-        const lh_index a = s[2 * i], b = s[2 * i + 1];
-        k[i] = (segkey){a < b ? a : b, a < b ? b : a, sm[i]};
+    fprintf(f, "%zu  %d\n", c->e.n, c->w->markers ? 1 : 0);
+    for (size_t k = 0; k < c->e.n; k++) {
+        fprintf(f, "%4lld    %4lld  %4lld", (long long)k + c->w->base, num(c, c->e.end[2 * k]),
+                num(c, c->e.end[2 * k + 1]));
+        if (c->w->markers) fprintf(f, "    %lld", (long long)c->e.mark[k]);
+        fputc('\n', f);
     }
-    qsort(k, ns, sizeof *k, segkey_cmp);
-    size_t ne = 0;
-    for (size_t i = 0; i < 3 * nt; i++) ne += nb[i] < 0 || (size_t)nb[i] > i / 3;
-    fprintf(f, "%zu  %d\n", ne, c->w->markers ? 1 : 0);
-    size_t e = 0;
-    for (size_t i = 0; i < nt; i++)
-        for (int j = 0; j < 3; j++) {
-            const lh_index n = nb[3 * i + j];
-            if (n >= 0 && (size_t)n < i) continue;
-            const lh_index a = t[3 * i + (j + 1) % 3], b = t[3 * i + (j + 2) % 3];
-            fprintf(f, "%4lld    %4lld  %4lld", (long long)e++ + c->w->base, num(c, a), num(c, b));
-            if (c->w->markers) {
-                const segkey key = {a < b ? a : b, a < b ? b : a, 0};
-                const segkey *hit = bsearch(&key, k, ns, sizeof *k, segkey_cmp);
-                fprintf(f, "    %lld", hit ? (long long)hit->mk : 0LL);
-            }
-            fputc('\n', f);
-        }
-    free(k);
-    return 1;
 }
 
 static void write_neigh(FILE *f, const ctx *c)
@@ -161,17 +145,17 @@ static int number_points(ctx *c)
 
 /* BASE.node etc. for the files w asks for (malloc'ed, NULL where not wanted); 0 when
  * out of memory. */
-static const char *const tri_ext[] = {".node", ".ele", ".poly", ".edge", ".neigh", ".off"};
-enum { nfiles = 6 };
+static const char *const tri_ext[] = {".node", ".ele", ".poly", ".edge", ".neigh", ".off", ".v.node", ".v.edge"};
+enum { nfiles = 8 };
 
 static int tri_paths(const char *base, const lh_cli_tri_files *w, char *path[nfiles])
 {
-    const int want[nfiles] = {w->node, w->ele, w->poly, w->edge, w->neigh, w->off};
+    const int want[nfiles] = {w->node, w->ele, w->poly, w->edge, w->neigh, w->off, w->voronoi, w->voronoi};
     const size_t len = strlen(base);
     for (int i = 0; i < nfiles; i++) path[i] = NULL;
     for (int i = 0; i < nfiles; i++) {
         if (!want[i]) continue;
-        path[i] = malloc(len + 8);
+        path[i] = malloc(len + 9);
         if (!path[i]) return 0;
         memcpy(path[i], base, len);
         strcpy(path[i] + len, tri_ext[i]);
@@ -196,9 +180,11 @@ static int write_file(int i, FILE *f, const ctx *c, const lh_pslg *g)
     case 0: write_node(f, c); break;
     case 1: write_ele(f, c); break;
     case 2: write_poly(f, c, g); break;
-    case 3: return write_edge(f, c);
+    case 3: write_edge(f, c); break;
     case 4: write_neigh(f, c); break;
-    default: write_off(f, c); break;
+    case 5: write_off(f, c); break;
+    case 6: lh_cli_write_vnode(f, c->m, c->w->base); break;
+    default: lh_cli_write_vedge(f, c->m, &c->e, c->w->base); break;
     }
     return 1;
 }
@@ -208,9 +194,9 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
 {
     char *path[nfiles];
     FILE *f[nfiles] = {0};
-    ctx c = {m, w, NULL, 0};
+    ctx c = {m, w, NULL, 0, {0, NULL, NULL, NULL, NULL}};
     int ok = tri_paths(base, w, path);
-    ok = ok && number_points(&c);
+    ok = ok && number_points(&c) && (!(w->edge || w->voronoi || w->order2) || lh_cli_edges_build(&c.e, m));
     if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
     /* every target checked and its temporary opened before anything is written */
     lh_cli_outset set;
@@ -232,5 +218,6 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
     const int rc = lh_cli_outset_close(&set, ok);
     for (int i = 0; i < nfiles; i++) free(path[i]);
     free(c.num);
+    lh_cli_edges_free(&c.e);
     return rc;
 }

@@ -151,7 +151,8 @@ typedef struct lh__m2_cavity {
     lh_index *dead;
     size_t tri_count, tri_cap;
     lh_index *tri, *tsg;
-    /* scratch: boundary edges (x, y, outside triangle, subsegment) and edge records */
+    /* scratch: boundary edges (x, y, outside triangle, subsegment, its position
+       there, dead triangle: m2_cavity.c) and edge records */
     size_t bnd_count, bnd_cap;
     lh_index *bnd;
     size_t rec_cap;
@@ -160,6 +161,9 @@ typedef struct lh__m2_cavity {
     lh_index *stack;   /* for the callers' searches */
     lh_index *chain[2];/* segment insertion: the vertices left and right of it */
     size_t chain_count[2], chain_cap[2];
+    double *reg;       /* scratch: 2 per new triangle, its region's attribute and area
+                          bound (m->tattr, m->tarea) while the dead slots are reused */
+    size_t reg_cap;
 } lh__m2_cavity;
 
 void lh__m2_cavity_free(lh__m2 *m, lh__m2_cavity *c);

@@ -13,6 +13,9 @@
 
 #include "m2.h"
 
+enum { BND = 6 }; /* boundary record: x, y, outside triangle, subsegment, its position
+                     there, the dead triangle it is an edge of */
+
 void lh__m2_cavity_free(lh__m2 *m, lh__m2_cavity *c)
 {
     lh__free(&m->al, c->dead);
@@ -23,6 +26,7 @@ void lh__m2_cavity_free(lh__m2 *m, lh__m2_cavity *c)
     lh__free(&m->al, c->stack);
     lh__free(&m->al, c->chain[0]);
     lh__free(&m->al, c->chain[1]);
+    lh__free(&m->al, c->reg);
     memset(c, 0, sizeof *c);
 }
 
@@ -106,18 +110,46 @@ static lh_status collect_boundary(lh__m2 *m, lh__m2_cavity *c, uint32_t e)
         for (int k = 0; k < 3; k++) {
             const lh_index n = m->nb[3 * t + k];
             if (n >= 0 && m->mark[n] == e) continue;
-            if (!lh__m2_grow(m, (void **)&c->bnd, 5 * c->bnd_count, &c->bnd_cap,
-                             5 * (c->bnd_count + 1), sizeof(lh_index)))
-                return LH_ERR_NOMEM;
-            lh_index *b = c->bnd + 5 * c->bnd_count++;
-            b[0] = m->v[3 * t + (k + 1) % 3];
-            b[1] = m->v[3 * t + (k + 2) % 3];
-            b[2] = n;
-            b[3] = m->sg[3 * t + k];
-            b[4] = n >= 0 ? lh__m2_npos(m, n, (lh_index)t) : -1;
+            lh_status st = lh__m2_cavity_push_bnd(m, c, (lh_index)t, k);
+            if (st != LH_OK) return st;
         }
     }
     return LH_OK;
+}
+
+/* The region (attribute, area bound) of each new triangle, into c->reg before the
+ * dead triangles' slots are reused: that of the dead triangle whose boundary edge it
+ * takes, else dead[0]'s. A cavity crosses no subsegment but the one a point splits
+ * (lh__m2_insert_point), so the dead triangles on each side of that one lie in one
+ * region each (regions flood across every other edge, cdt_domain.c), and each new
+ * triangle lies on one side, holding a boundary edge of that side: the regions stay
+ * bounded by the segments, as in Triangle, where a triangle's pieces keep its
+ * attribute. fan: new triangle i holds boundary edge i (lh__m2_cavity_apply_fan);
+ * else the nr sorted records pair them. */
+static lh_status new_regions(lh__m2 *m, lh__m2_cavity *c, int fan, size_t nr)
+{
+    if (!m->tattr || !c->dead_count) return LH_OK;
+    if (!lh__m2_grow(m, (void **)&c->reg, 0, &c->reg_cap, 2 * c->tri_count, sizeof(double)))
+        return LH_ERR_NOMEM;
+    for (size_t i = 0; i < c->tri_count; i++) {
+        const size_t d = (size_t)(fan ? c->bnd[BND * i + 5] : c->dead[0]);
+        c->reg[2 * i] = m->tattr[d], c->reg[2 * i + 1] = m->tarea[d];
+    }
+    for (size_t i = 0; !fan && i + 1 < nr; i++) {
+        const lh_index *r = c->rec + 3 * i; /* a boundary record sorts first in its pair */
+        if (r[0] != r[3] || r[1] != r[4] || r[2] >= 0 || r[5] < 0) continue;
+        const size_t d = (size_t)c->bnd[BND * (size_t)(-r[2] - 1) + 5], k = (size_t)r[5] / 3;
+        c->reg[2 * k] = m->tattr[d], c->reg[2 * k + 1] = m->tarea[d];
+    }
+    return LH_OK;
+}
+
+/* New triangle i, in slot t, takes its region from c->reg (none without dead ones). */
+static void set_region(lh__m2 *m, const lh__m2_cavity *c, size_t i, size_t t)
+{
+    if (!m->tattr) return;
+    m->tattr[t] = c->dead_count ? c->reg[2 * i] : 0;
+    m->tarea[t] = c->dead_count ? c->reg[2 * i + 1] : 0;
 }
 
 lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
@@ -138,12 +170,10 @@ lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
             put_record(c->rec + 3 * r++, c->tri[3 * i + (k + 1) % 3], c->tri[3 * i + (k + 2) % 3],
                        (lh_index)(3 * i + k));
     for (size_t j = 0; j < c->bnd_count; j++)
-        put_record(c->rec + 3 * r++, c->bnd[5 * j], c->bnd[5 * j + 1], -(lh_index)j - 1);
+        put_record(c->rec + 3 * r++, c->bnd[BND * j], c->bnd[BND * j + 1], -(lh_index)j - 1);
     sort_records(c->rec, nr);
 
-    /* a cavity never crosses a subsegment, so it lies in one region */
-    const double rattr = m->tattr && c->dead_count ? m->tattr[c->dead[0]] : 0;
-    const double rarea = m->tarea && c->dead_count ? m->tarea[c->dead[0]] : 0;
+    if ((st = new_regions(m, c, 0, nr)) != LH_OK) return st;
     for (size_t i = 0; i < c->dead_count; i++) lh__m2_kill_tri(m, c->dead[i]);
     lh_index *id = c->stack; /* new triangle ids: reuse the stack's storage */
     c->stack_count = 0;
@@ -151,7 +181,7 @@ lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
         if ((st = lh__m2_stack_push(m, c, lh__m2_new_tri(m))) != LH_OK) return st;
         id = c->stack;
         const size_t t = (size_t)id[i];
-        if (m->tattr) m->tattr[t] = rattr, m->tarea[t] = rarea;
+        set_region(m, c, i, t);
         for (int k = 0; k < 3; k++) {
             m->v[3 * t + k] = c->tri[3 * i + k];
             m->sg[3 * t + k] = c->tsg[3 * i + k];
@@ -172,12 +202,12 @@ lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
                 m->nb[3 * ta + a % 3] = (lh_index)tb;
                 m->nb[3 * tb + b % 3] = (lh_index)ta;
             } else {
-                const lh_index *bd = c->bnd + 5 * (size_t)(-a - 1), n = bd[2];
+                const lh_index *bd = c->bnd + BND * (size_t)(-a - 1), n = bd[2];
                 m->nb[3 * tb + b % 3] = n;
                 m->sg[3 * tb + b % 3] = bd[3];
                 if (n >= 0) m->nb[3 * (size_t)n + bd[4]] = (lh_index)tb;
             }
-        } else if (j - i != 1 || (c->rec[3 * i + 2] < 0 && c->bnd[5 * (size_t)(-c->rec[3 * i + 2] - 1) + 2] >= 0)) {
+        } else if (j - i != 1 || (c->rec[3 * i + 2] < 0 && c->bnd[BND * (size_t)(-c->rec[3 * i + 2] - 1) + 2] >= 0)) {
             return LH_ERR_INTERNAL; /* an edge on three sides, or an uncovered live edge */
         }
         i = j;
@@ -187,16 +217,17 @@ lh_status lh__m2_cavity_apply(lh__m2 *m, lh__m2_cavity *c)
 
 lh_status lh__m2_cavity_push_bnd(lh__m2 *m, lh__m2_cavity *c, lh_index t, int k)
 {
-    if (!lh__m2_grow(m, (void **)&c->bnd, 5 * c->bnd_count, &c->bnd_cap, 5 * (c->bnd_count + 1),
+    if (!lh__m2_grow(m, (void **)&c->bnd, BND * c->bnd_count, &c->bnd_cap, BND * (c->bnd_count + 1),
                      sizeof(lh_index)))
         return LH_ERR_NOMEM;
-    lh_index *b = c->bnd + 5 * c->bnd_count++;
+    lh_index *b = c->bnd + BND * c->bnd_count++;
     const lh_index n = m->nb[3 * (size_t)t + k];
     b[0] = m->v[3 * (size_t)t + (k + 1) % 3];
     b[1] = m->v[3 * (size_t)t + (k + 2) % 3];
     b[2] = n;
     b[3] = m->sg[3 * (size_t)t + k];
     b[4] = n >= 0 ? lh__m2_npos(m, n, t) : -1;
+    b[5] = t;
     return LH_OK;
 }
 
@@ -213,8 +244,7 @@ lh_status lh__m2_cavity_apply_fan(lh__m2 *m, lh__m2_cavity *c)
     }
     lh_status st = k > c->dead_count ? lh__m2_reserve_tris(m, k - c->dead_count) : LH_OK;
     if (st != LH_OK) return st;
-    const double rattr = m->tattr && c->dead_count ? m->tattr[c->dead[0]] : 0;
-    const double rarea = m->tarea && c->dead_count ? m->tarea[c->dead[0]] : 0;
+    if ((st = new_regions(m, c, 1, 0)) != LH_OK) return st;
     for (size_t i = 0; i < c->dead_count; i++) lh__m2_kill_tri(m, c->dead[i]);
     lh_index id[32];
     c->stack_count = 0;
@@ -224,8 +254,8 @@ lh_status lh__m2_cavity_apply_fan(lh__m2 *m, lh__m2_cavity *c)
     }
     for (size_t i = 0; i < k; i++) {
         const size_t t = (size_t)id[i];
-        const lh_index *v = c->tri + 3 * i, *b = c->bnd + 5 * i;
-        if (m->tattr) m->tattr[t] = rattr, m->tarea[t] = rarea;
+        const lh_index *v = c->tri + 3 * i, *b = c->bnd + BND * i;
+        set_region(m, c, i, t);
         lh_index nx = -1, ny = -1; /* across y-p: starts at y; across p-x: ends at x */
         for (size_t j = 0; j < k; j++) {
             if (c->tri[3 * j] == v[1]) nx = id[j];

@@ -56,6 +56,13 @@ lh_status lh__m2_smooth(lh__m2 *m, lh__m2_cavity *c, int passes, double max_area
 /* The subsegment on which point p lies (closed: an endpoint too), or -1 (cdt_domain.c).
  * A hole seed there would carve whichever side point location happens to find. */
 lh_index lh__m2_subseg_at(lh__m2 *m, const double *p);
+
+/* Triangle's -s (cdt_split.c): subsegments split at their midpoints until each is
+ * locally Delaunay, at most max_steiner points (*added); *unsplit counts those left
+ * not locally Delaunay (below the length floor, refused, or the budget spent). */
+lh_status lh__m2_split_segments(lh__m2 *m, lh__m2_cavity *c, size_t max_steiner, size_t *added,
+                                size_t *unsplit);
+
 /* The domain (cdt_domain.c): Triangle's flood, the even-odd rule, or m->cover. */
 lh_status lh__m2_domain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, int convex_hull,
                         size_t *holes_ignored, size_t *regions_ignored);

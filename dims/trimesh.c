@@ -151,6 +151,34 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri
     return LH_OK;
 }
 
+/* Point markers by Triangle's rule (its "boundary markers" page): a vertex's own
+ * nonzero marker; else the marker of an input segment with a nonzero one that it
+ * lies on (an endpoint or a point put on it; of several, the first in input order, as
+ * Triangle inserts them); else 1 on the domain's boundary; else 0. Steiner points have
+ * no own marker. Subsegment markers (r->smark) are already the segments' rule. */
+static lh_status point_markers(lh_trimesh *r, const lh__m2 *m)
+{
+    lh_index *from = lh__alloc(&r->al, (r->np ? r->np : 1) * sizeof *from); /* deciding segment */
+    if (!from) return LH_ERR_NOMEM;
+    for (size_t p = 0; p < r->np; p++) {
+        from[p] = -1;
+        if (p >= m->n_input) r->pmark[p] = 0;
+    }
+    for (size_t s = 0; s < r->ns; s++) {
+        const lh_index par = r->spar[s], given = par >= 0 && m->seg_marker ? m->seg_marker[par] : 0;
+        for (int j = 0; given && j < 2; j++) {
+            const lh_index p = r->seg[2 * s + j];
+            if ((r->pmark[p] && from[p] < 0) || (from[p] >= 0 && from[p] < par)) continue; /* own, or earlier */
+            r->pmark[p] = given, from[p] = par;
+        }
+    }
+    for (size_t s = 0; s < r->ns; s++) /* a nonzero subsegment marker without a segment's: the boundary */
+        for (int j = 0; r->smark[s] && j < 2; j++)
+            if (!r->pmark[r->seg[2 * s + j]]) r->pmark[r->seg[2 * s + j]] = 1;
+    lh__free(&r->al, from);
+    return LH_OK;
+}
+
 /* Step 5: the handle's arrays from the mesh's live triangles. The point arrays and,
  * when no triangle slot is free, the triangle arrays are taken over as they are (the
  * mesh's own allocations, same hooks); otherwise the triangles are renumbered. */
@@ -205,11 +233,7 @@ static lh_status harvest(lh_trimesh *r, lh__m2 *m)
         }
         if (!dense && r->tattr) r->tattr[u] = m->tattr[t];
     }
-    /* point markers: the vertex's own, else its first subsegment's */
-    for (size_t s = 0; s < r->ns; s++)
-        for (int j = 0; j < 2; j++)
-            if (!r->pmark[r->seg[2 * s + j]]) r->pmark[r->seg[2 * s + j]] = r->smark[s];
-    st = LH_OK;
+    st = point_markers(r, m);
 done:
     lh__free(&r->al, map);
     lh__free(&r->al, smap);
@@ -321,6 +345,10 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
         return LH_ERR_DEGENERATE;
     }
     if ((st = holes_off_segments(m, g, msg, size)) != LH_OK) return st;
+    size_t split = 0, unsplit = 0; /* -s: before the carving, as Triangle splits while inserting */
+    if (o->split_segments && !m->cover &&
+        (st = lh__m2_split_segments(m, c, o->max_steiner, &split, &unsplit)) != LH_OK)
+        return st;
     st = lh__m2_domain(m, c, g, keep_hull, &r->stats.holes_ignored, &r->stats.regions_ignored);
     if (st == LH_ERR_DEGENERATE) {
         say(msg, size, NULL, 0, g->even_odd ? "no triangle is inside the polygon rings"
@@ -330,11 +358,12 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     }
     if (st != LH_OK) return st;
     lh__refine_opts ro = {o->min_angle, o->max_area, o->region_areas, o->conforming,
-                          o->boundary_steiner, o->max_steiner, g->segments, dup,
+                          o->boundary_steiner, o->max_steiner - split, g->segments, dup,
                           m->cover ? g->cover_area : NULL, &r->stats};
     if ((o->min_angle > 0 || o->max_area > 0 || o->region_areas || o->conforming) &&
         (st = lh__m2_refine(m, c, &ro)) != LH_OK)
         return st;
+    r->stats.segments_unsplit += unsplit;
     if (o->smooth > 0 && (st = lh__m2_smooth(m, c, o->smooth, o->max_area, &r->stats.smoothing_moves)) != LH_OK)
         return st;
     if ((st = lh__m2_drop_removed(m)) != LH_OK) return st;

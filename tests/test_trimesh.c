@@ -242,6 +242,25 @@ LH_TEST(chews_rule_removes_points_crowding_a_segment)
 
 /* -D: subsegments split until every edge, those on segments too, is locally Delaunay
  * (checked with no subsegments given, so that every interior edge is tested). */
+/* Meshes g with o, asserts that every edge is Delaunay (the check with no subsegment),
+ * nothing left unsplit and the segments kept; returns the mesh. */
+static lh_trimesh *mesh_all_delaunay(lh_test_state *lh_t_, const lh_pslg *g, const lh_trimesh_options *o,
+                                     const char *what)
+{
+    lh_trimesh *m = mesh_checked(lh_t_, g, o, what);
+    char msg[256] = "";
+    if (!m) return NULL;
+    LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
+                                      lh_trimesh_triangles(m), 0, NULL, 1, NULL, msg, sizeof msg),
+                     LH_OK);
+    if (msg[0]) LH_NOTE("%s: %s", what, msg);
+    lh_trimesh_stats st;
+    lh_trimesh_get_stats(m, &st);
+    LH_EXPECT_EQ_U64(st.segments_unsplit, 0);
+    expect_segments_kept(lh_t_, g, m);
+    return m;
+}
+
 LH_TEST(conforming_delaunay_has_every_edge_delaunay)
 {
     for (size_t i = 0; i < sizeof triangle_files / sizeof triangle_files[0]; i++) {
@@ -250,19 +269,9 @@ LH_TEST(conforming_delaunay_has_every_edge_delaunay)
         lh_trimesh_options o;
         lh_trimesh_options_default(&o);
         o.conforming = 1;
-        lh_trimesh *m = mesh_checked(lh_t_, &g, &o, triangle_files[i]), *cdt = mesh_checked(lh_t_, &g, NULL, "cdt");
+        lh_trimesh *m = mesh_all_delaunay(lh_t_, &g, &o, triangle_files[i]);
+        lh_trimesh *cdt = mesh_checked(lh_t_, &g, NULL, "cdt");
         char msg[256] = "";
-        if (m) {
-            LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
-                                              lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0, NULL, 1,
-                                              NULL, msg, sizeof msg),
-                             LH_OK);
-            lh_trimesh_stats st;
-            lh_trimesh_get_stats(m, &st);
-            LH_EXPECT_EQ_U64(st.segments_unsplit, 0);
-            expect_segments_kept(lh_t_, &g, m);
-        }
-        if (msg[0]) LH_NOTE("%s: %s", triangle_files[i], msg);
         /* the plain CDT of these files is not conforming: the test can fail */
         if (cdt && i == 1) /* la.poly */
             LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(cdt), lh_trimesh_points(cdt),
@@ -389,6 +398,80 @@ LH_TEST(holes_are_carved_and_regions_marked)
     g.regions = NULL; /* the reader's arrays only */
     g.region_count = 0;
     lh_pslg_free(&g);
+}
+
+/* Two unit fields side by side, split by the segment x = 1, the left one with the
+ * finer area bound (regions: x, y, attribute, area). */
+static const char two_fields[] = "6 2 0 0\n1 0 0\n2 1 0\n3 2 0\n4 2 1\n5 1 1\n6 0 1\n"
+                                 "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n7 2 5\n0\n"
+                                 "2\n1 0.5 0.5 1 0.002\n2 1.5 0.5 2 0.5\n";
+
+/* Refinement keeps Triangle's regions: a triangle's pieces keep its attribute and
+ * area bound (the split segment's cavity lies on both sides; before the fix the left
+ * field's leaked across x = 1 with each split: 767 triangles wrong, 814 points where
+ * Triangle makes 432). Markers by Triangle's rule, no marker in the file: a point
+ * on the boundary 1, inside 0 (on the inner segment too: it was 1). */
+LH_TEST(regions_and_markers_survive_refinement)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load_text(two_fields, &g), LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.min_angle = 20, o.region_areas = 1, o.region_attributes = 1;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "two fields");
+    if (m) {
+        const double *xy = lh_trimesh_points(m), *at = lh_trimesh_triangle_attrs(m);
+        const lh_index *t = lh_trimesh_triangles(m), *mk = lh_trimesh_point_markers(m);
+        size_t wrong = 0, over = 0, badmark = 0;
+        for (size_t i = 0; i < lh_trimesh_triangle_count(m); i++) {
+            const double *a = xy + 2 * t[3 * i], *b = xy + 2 * t[3 * i + 1], *c = xy + 2 * t[3 * i + 2];
+            const int left = a[0] + b[0] + c[0] < 3; /* the centroid left of x = 1 (exact here) */
+            const double area = ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
+            wrong += at[i] != (left ? 1 : 2);
+            over += area > (left ? 0.002 : 0.5) * (1 + 1e-12);
+        }
+        for (size_t p = 0; p < lh_trimesh_point_count(m); p++) {
+            const double x = xy[2 * p], y = xy[2 * p + 1];
+            badmark += mk[p] != (x == 0 || x == 2 || y == 0 || y == 1);
+        }
+        LH_EXPECT_EQ_U64(wrong, 0);
+        LH_EXPECT_EQ_U64(over, 0);
+        LH_EXPECT_EQ_U64(badmark, 0);
+        LH_EXPECT_LE_U64(lh_trimesh_point_count(m), 600);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+    /* box.poly with the hull kept (Triangle's -pc box, its box.1.node): the corners
+       (0,0) and (1,2) take the markers 5 and 10 of the segments they end, not the 1 of
+       the hull and hole edges there */
+    LH_ASSERT_EQ_INT(load(lh_poly_read, "triangle/box.poly", &g), LH_OK);
+    lh_trimesh_options_default(&o);
+    o.convex_hull = 1;
+    m = mesh_checked(lh_t_, &g, &o, "box -c");
+    if (m) {
+        static const lh_index want[8] = {5, 5, 1, 33, 1, 10, 1, 10};
+        const lh_index *mk = lh_trimesh_point_markers(m);
+        for (int p = 0; p < 8; p++) LH_EXPECT_EQ_INT(mk[p], want[p]);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+}
+
+/* split_segments (Triangle's -s): every edge Delaunay, each segment a chain of edges;
+ * A.poly gets Triangle's 2 Steiner points. */
+LH_TEST(split_segments_makes_every_edge_delaunay)
+{
+    for (size_t i = 0; i < sizeof triangle_files / sizeof triangle_files[0]; i++) {
+        lh_pslg g;
+        LH_ASSERT_EQ_INT(load(lh_poly_read, triangle_files[i], &g), LH_OK);
+        lh_trimesh_options o;
+        lh_trimesh_options_default(&o);
+        o.split_segments = 1;
+        lh_trimesh *m = mesh_all_delaunay(lh_t_, &g, &o, triangle_files[i]);
+        if (m && i == 0) LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), 31); /* A.poly: Triangle's -ps */
+        lh_trimesh_free(m);
+        lh_pslg_free(&g);
+    }
 }
 
 static void expect_failure(lh_test_state *lh_t_, const char *text, lh_status want, const char *want_msg)
@@ -1113,7 +1196,8 @@ int main(int argc, char **argv)
         LH_CASE(quality_bound_met_but_at_small_input_angles), LH_CASE(chews_rule_removes_points_crowding_a_segment),
         LH_CASE(conforming_delaunay_has_every_edge_delaunay),
         LH_CASE(smoothing_raises_angles_and_keeps_the_mesh_valid), LH_CASE(area_bound_and_steiner_limit),
-        LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(bad_input_gets_its_error_and_line),
+        LH_CASE(holes_are_carved_and_regions_marked), LH_CASE(regions_and_markers_survive_refinement),
+        LH_CASE(split_segments_makes_every_edge_delaunay), LH_CASE(bad_input_gets_its_error_and_line),
         LH_CASE(crossings_are_split_when_asked), LH_CASE(an_overlap_follows_a_chain_bent_at_a_crossing),
         LH_CASE(a_small_angle_far_from_the_origin_ends), LH_CASE(a_bent_segment_still_meets_the_vertex_on_it),
         LH_CASE(conforming_below_the_floor_is_reported),

@@ -485,6 +485,34 @@ const lh_index *lh_hull_vertices(const lh_hull *h);  /* increasing site indices 
 const lh_index *lh_hull_duplicate_of(const lh_hull *h);
 void lh_hull_free(lh_hull *h);
 
+/*
+ * Lengths, areas and volumes (Qhull's FA, Fa, FS).
+ *
+ * lh_simplex_measures: the k-dimensional measure (k = 1: length, 2: area, 3: volume,
+ * ...) of m simplices in R^d (1 <= k <= d <= 8), each given by k+1 indices into the
+ * n sites xyz (n*d doubles). each (m doubles) and total may be NULL. Each measure is
+ * sqrt(det G) / k!, G the Gram matrix of the edges from the first vertex, summed as
+ * the squares of exact k x k minors each rounded once (Cauchy-Binet): k = d, one
+ * exact determinant, relative error below 2^-51 however thin the simplex; k < d,
+ * below (C(d,k) + 3) * 2^-53. total: for k = d the exact sum of the exact volumes,
+ * rounded (relative error below 2^-51); for k < d the measures' compensated sum
+ * (Neumaier), within a few ulps of their sum. A result beyond DBL_MAX is +inf;
+ * below the subnormals 0. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT
+ * (an index outside 0..n-1, k or d out of range).
+ */
+lh_status lh_simplex_measures(int d, int k, const double *xyz, size_t n, size_t m,
+                              const lh_index *simplices, double *each, double *total);
+/* The simplices of t (k = lh_tri_simplex_dim): each (lh_tri_count doubles) and
+ * their total, as lh_simplex_measures; for k = d the total is the exact volume of
+ * the convex hull rounded once. */
+lh_status lh_tri_measures(const lh_tri *t, double *each, double *total);
+/* The hull h of the n sites xyz it was computed from: each facet's (d-1)-measure
+ * (lh_hull_facet_count doubles), their total (the surface area; d = 2: the
+ * perimeter), and the enclosed volume (d = 2: the area), exact and rounded once.
+ * Any pointer but h and xyz may be NULL. */
+lh_status lh_hull_measures(const lh_hull *h, const double *xyz, size_t n, double *each,
+                           double *area, double *volume);
+
 /* ---- file formats ------------------------------------------------------------------ */
 
 /*
@@ -790,6 +818,13 @@ typedef struct lh_trimesh_options {
                                   every triangle positive and within its area bound;
                                   then flips make the mesh constrained Delaunay again.
                                   The smallest angle never decreases (default 0)      */
+    int split_segments;        /* -s: before the domain is carved, every subsegment
+                                  that is not locally Delaunay is split at its
+                                  midpoint until all are: segments become chains of
+                                  Delaunay edges (a conforming Delaunay triangulation
+                                  of the graph), counted in steiner_points and within
+                                  max_steiner; ignored when refining a given mesh
+                                  (cover) (default 0)                              */
 } lh_trimesh_options;
 
 #define LH_TRIMESH_MAX_ANGLE 40.0 /* degrees: beyond it refinement need not end */
@@ -835,7 +870,10 @@ lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
 void lh_trimesh_free(lh_trimesh *m);
 
 /* Points: the PSLG's vertices first, with their indices (merged duplicates too), then
- * the Steiner points. Markers: a vertex's own, a Steiner point's segment's. */
+ * the Steiner points. Markers, Triangle's rule: a vertex's own nonzero marker; else
+ * the nonzero marker of an input segment it lies on (an endpoint, or a Steiner point
+ * put on it; of several, the first segment in input order); else 1 on the domain's
+ * boundary (holes' too); else 0. */
 size_t lh_trimesh_point_count(const lh_trimesh *m);
 const double *lh_trimesh_points(const lh_trimesh *m);         /* 2 per point          */
 const lh_index *lh_trimesh_point_markers(const lh_trimesh *m);/* 1 per point          */

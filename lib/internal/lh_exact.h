@@ -26,6 +26,9 @@ lh_status lh__detsum_create(const lh_allocator *alloc, int d, int scale, lh__det
 /* sum += det (negate: sum -= det) of the d+1 points pts. */
 void lh__detsum_add(lh_pred *ctx, lh__detsum *s, const double *const *pts, int negate);
 int lh__detsum_sign(const lh__detsum *s); /* -1, 0, +1 */
+/* The sum as v * 2^e (*e), the exact integer rounded once (relative error below
+ * 2^-52). */
+double lh__detsum_value(const lh__detsum *s, int *e);
 void lh__detsum_free(lh__detsum *s);
 /* Exponent of the lowest set bit of x (finite, nonzero). */
 int lh__dbl_low_exp(double x);

@@ -256,3 +256,13 @@ void lh__detsum_add(lh_pred *ctx, lh__detsum *s, const double *const *pts, int n
 }
 
 int lh__detsum_sign(const lh__detsum *s) { return lh__bn_sign(&s->acc); }
+
+/* The rows were reduced by the first, so the integer matrix is d x d, every entry
+ * the coordinate difference divided by 2^scale: the sum is the integer times
+ * 2^(d * scale). */
+double lh__detsum_value(const lh__detsum *s, int *e)
+{
+    double v = lh__bn_to_double(&s->acc, e);
+    *e += s->d * s->scale;
+    return v;
+}

@@ -184,11 +184,10 @@ cd ..
 # usage errors: exit 2, the switch named
 fresh A.poly
 expect "unknown switch" 2 "lifthull triangle: unknown switch 'x' in '-pxq'" '' -- "$lh" triangle -pxq A.poly
-expect "-o refused" 2 "lifthull triangle: -o is not supported" '' -- "$lh" triangle -po2 A.poly
+expect "-o3 refused" 2 "lifthull triangle: -o must be -o2 \(quadratic elements\), not '-po3'" '' -- "$lh" triangle -po3 A.poly
 expect "-u refused" 2 "lifthull triangle: -u is not supported" '' -- "$lh" triangle -pu A.poly
-expect "-v refused" 2 "lifthull triangle: -v is not supported" '' -- "$lh" triangle -pv A.poly
 expect "two files" 2 "one input file, not 'A\.poly' and 'B\.poly'" '' -- "$lh" triangle -p A.poly B.poly
-expect "accepted, no effect" 0 '' '' -- "$lh" triangle -pQiFlsCX A.poly
+expect "accepted, no effect" 0 '' '' -- "$lh" triangle -pQiFlCX A.poly
 expect "-D conforming" 0 '' '' -- "$lh" triangle -pDQ A.poly
 cd ..
 

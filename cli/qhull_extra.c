@@ -1,0 +1,165 @@
+/*
+ * qhull_extra.c — Qhull's FI, Fm, FQ, Fc, FP and the Mathematica (m) and Maple (FM)
+ * pictures, for qconvex and qdelaunay, in Qhull 2020.2's layout.
+ *
+ * Coplanar points (Fc, FP) are exact here: for qconvex the sites that are not
+ * vertices and lie exactly on a facet's hyperplane (each with the first such
+ * facet), for qdelaunay the merged duplicates (with the first facet of the site they
+ * were merged into). Facet ids are the output's facet numbers (FI prints them); no
+ * facet is ever merged, so Fm prints 0 for each.
+ */
+#include "qhull.h"
+#include "qhull_print.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void print_ids(FILE *f, const lh_cli_qmodel *mo, int merges)
+{
+    fprintf(f, "%zu\n", mo->m);
+    for (size_t t = 0; t < mo->m; t++) fprintf(f, "%zu\n", merges ? (size_t)0 : t);
+}
+
+/* The first printed facet site i is coplanar with, or -1. */
+static lh_index coplanar_facet(const lh_cli_qopts *o, const lh_cli_qmodel *mo, size_t i)
+{
+    if (lh_cli_qis_vertex(mo, i)) return -1;
+    if (o->prog != LH_QPROG_CONVEX) {
+        size_t v = (size_t)mo->dup[i];
+        if (v == i) return -1; /* a site that is no vertex and no duplicate: none here */
+        for (lh_index k = mo->inc_off[v]; k < mo->inc_off[v + 1]; k++)
+            if (mo->inc[k] >= 0) return mo->inc[k];
+        return -1;
+    }
+    const int d = mo->d;
+    const double *p[LH_DELAUNAY_MAX_DIM + 1] = {0};
+    p[d] = mo->xyz + i * d;
+    for (size_t t = 0; t < mo->m; t++) {
+        for (int k = 0; k < d; k++) p[k] = mo->xyz + (size_t)mo->vert[t * d + k] * d;
+        if (lh_orient(mo->pred, d, p) == 0) return (lh_index)t;
+    }
+    return -1;
+}
+
+/* Fc: per facet, its coplanar points; FP: per coplanar point its facet's nearest
+ * vertex (exact comparison; the first of equally near ones), the point, the facet
+ * and the distance. */
+static int print_coplanar(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, int nearest)
+{
+    lh_index *of = malloc((mo->n ? mo->n : 1) * sizeof *of);
+    size_t *count = calloc(mo->m ? mo->m : 1, sizeof *count), total = 0;
+    if (!of || !count) {
+        free(of);
+        free(count);
+        return 0;
+    }
+    for (size_t i = 0; i < mo->n; i++) {
+        of[i] = coplanar_facet(o, mo, i);
+        if (of[i] >= 0) count[of[i]]++, total++;
+    }
+    const int d = mo->d;
+    if (nearest) {
+        fprintf(f, "%zu\n", total);
+        for (size_t i = 0; i < mo->n; i++) {
+            if (of[i] < 0) continue;
+            const lh_index *v = mo->vert + (size_t)of[i] * mo->nv;
+            const double *q = mo->xyz + i * d;
+            lh_index best = v[0];
+            for (int k = 1; k < mo->nv; k++)
+                if (lh_compare_distance(mo->pred, d, q, mo->xyz + (size_t)v[k] * d,
+                                        mo->xyz + (size_t)best * d) < 0 ||
+                    (lh_compare_distance(mo->pred, d, q, mo->xyz + (size_t)v[k] * d,
+                                         mo->xyz + (size_t)best * d) == 0 && v[k] < best))
+                    best = v[k];
+            double s = 0;
+            for (int j = 0; j < d; j++) {
+                double e = q[j] - mo->xyz[(size_t)best * d + j];
+                s += e * e;
+            }
+            fprintf(f, "%" LH_INDEX_PRI " %zu %" LH_INDEX_PRI " %6.16g \n", best, i, of[i], sqrt(s));
+        }
+    } else {
+        fprintf(f, "%zu\n", mo->m);
+        for (size_t t = 0; t < mo->m; t++) {
+            fprintf(f, "%zu", count[t]);
+            for (size_t i = 0; i < mo->n && count[t]; i++)
+                if (of[i] == (lh_index)t) fprintf(f, " %zu", i);
+            fputc('\n', f);
+        }
+    }
+    free(of);
+    free(count);
+    return 1;
+}
+
+/* The pictures' vertex: qconvex's coordinates, or qdelaunay's lifted point. */
+static void picture_point(FILE *f, const lh_cli_qmodel *mo, lh_cli_qlift s, int lifted, size_t i,
+                          const char *open, const char *close)
+{
+    const double *x = mo->xyz + i * mo->d;
+    fputs(open, f);
+    for (int j = 0; j < mo->d; j++) fprintf(f, "%s%16.8f", j ? ", " : "", x[j]);
+    if (lifted) fprintf(f, ", %16.8f", lh_cli_qlifted(mo, s, i));
+    fputs(close, f);
+}
+
+/* m (Mathematica) and FM (Maple): 2-d hull edges as lines, 3-d hull facets or 2-d
+ * Delaunay triangles (lifted) as polygons, vertices in the facet's order. */
+static void print_picture(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, int maple)
+{
+    int lifted = o->prog != LH_QPROG_CONVEX;
+    lh_cli_qlift s = lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1};
+    if (mo->nv == 2) { /* 2-d hull: segments */
+        fputs(maple ? "PLOT(CURVES(\n" : "{\n", f);
+        for (size_t t = 0; t < mo->m; t++) {
+            const lh_index *v = mo->vert + t * 2;
+            fputs(t ? "," : "", f);
+            picture_point(f, mo, s, 0, (size_t)v[0], maple ? "[[" : "Line[{{", maple ? "], " : "}, ");
+            picture_point(f, mo, s, 0, (size_t)v[1], maple ? "[" : "{", maple ? "]]\n" : "}}]\n");
+        }
+        fputs(maple ? "));\n" : "}\n", f);
+        return;
+    }
+    fputs(maple ? "PLOT3D(POLYGONS(\n" : "{\n", f);
+    for (size_t t = 0; t < mo->m; t++) {
+        const lh_index *v = mo->vert + t * 3;
+        if (t) fputs(",\n", f);
+        for (int k = 0; k < 3; k++)
+            picture_point(f, mo, s, lifted, (size_t)v[k],
+                          k ? (maple ? "[" : "{") : (maple ? "[[" : "Polygon[{{"),
+                          k < 2 ? (maple ? "],\n" : "},\n") : (maple ? "]]" : "}}]"));
+    }
+    fputs(maple ? "));\n" : "}\n", f);
+}
+
+int lh_cli_qprint_extra(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
+{
+    if (!strcmp(opt, "FI") || !strcmp(opt, "Fm")) print_ids(f, mo, opt[1] == 'm');
+    else if (!strcmp(opt, "FQ")) fprintf(f, "%s\n", o->command);
+    else if (!strcmp(opt, "Fc") || !strcmp(opt, "FP")) return print_coplanar(f, o, mo, opt[1] == 'P');
+    else if (!strcmp(opt, "G")) return lh_cli_qprint_geomview(f, o, mo);
+    else if (!strcmp(opt, "f") || !strcmp(opt, "FF")) lh_cli_qprint_fields(f, o, mo);
+    else print_picture(f, o, mo, opt[1] == 'M');
+    return 1;
+}
+
+int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d)
+{
+    for (int i = 0; i < o->nout; i++) {
+        const char *w = o->out[i];
+        if ((!strcmp(w, "f") || !strcmp(w, "FF")) && o->prog != LH_QPROG_CONVEX &&
+            d + 1 > LH_ORIENT_MAX_DIM) {
+            fprintf(stderr, "lifthull %s: option '%s': the lifted facets' normals are for at most "
+                    "%d-d input\n", o->name, w, LH_ORIENT_MAX_DIM - 1);
+            return 0;
+        }
+        if ((strcmp(w, "m") && strcmp(w, "FM") && strcmp(w, "G")) ||
+            (o->prog == LH_QPROG_CONVEX ? d == 2 || d == 3 : d == 2))
+            continue;
+        fprintf(stderr, "lifthull %s: option '%s': Mathematica, Maple and Geomview output are for "
+                "2-d and 3-d convex hulls and 2-d Delaunay triangulations (here %d-d)\n", o->name, w, d);
+        return 0;
+    }
+    return 1;
+}
