@@ -202,6 +202,9 @@ enum { LH__M2_CROSSING = 1 };
  * at the crossing splitting both (cdt_insert.c). */
 lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
                                 lh_index parent, lh__m2_problem *pb);
+/* Input segment `parent` runs along subsegment s, a piece of a boundary edge of
+ * m->cover: recorded for lh__cover_relabel (cdt_cover.c). LH_OK or LH_ERR_NOMEM. */
+lh_status lh__cover_claim(lh__m2 *m, lh_index s, lh_index parent);
 /* The triangle holding the edge a->b (a before b counterclockwise), with *pos the
  * edge's index in it; -1 when a->b is not an edge. */
 lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos);

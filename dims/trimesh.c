@@ -357,6 +357,7 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
         return st;
     }
     if (st != LH_OK) return st;
+    if (m->cover) lh__cover_relabel(m, m->cover);
     lh__refine_opts ro = {o->min_angle, o->max_area, o->region_areas, o->conforming,
                           o->boundary_steiner, o->max_steiner - split, g->segments, dup,
                           m->cover ? g->cover_area : NULL, &r->stats};

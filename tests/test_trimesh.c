@@ -999,6 +999,37 @@ LH_TEST(refining_a_mesh_splits_its_boundary_edges)
     }
 }
 
+/* -rp: the input segments along the old mesh's boundary give their markers and
+ * parents to its pieces and to the Steiner points put there (as Triangle's -rpa on
+ * box.1, reference_outputs/box.2: cli_triangle_ref), not the old boundary's 1 and -1. */
+LH_TEST(refining_a_mesh_keeps_the_segments_along_its_boundary)
+{
+    double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    lh_index cover[6] = {0, 1, 3, 1, 2, 3}, seg[8] = {0, 1, 1, 2, 2, 3, 3, 0}, mark[4] = {5, 6, 7, 8};
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = 4, g.xy = xy, g.cover_count = 2, g.cover = cover;
+    g.segment_count = 4, g.segments = seg, g.segment_marker = mark;
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.max_area = 0.01;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "-rpa0.01 square");
+    LH_ASSERT_TRUE(m != NULL);
+    const double *p = lh_trimesh_points(m);
+    const lh_index *pm = lh_trimesh_point_markers(m), *sv = lh_trimesh_segments(m),
+                   *sm = lh_trimesh_segment_markers(m), *sp = lh_trimesh_segment_parents(m);
+    size_t on_bottom = 0;
+    for (size_t i = 4; i < lh_trimesh_point_count(m); i++)
+        if (p[2 * i + 1] == 0) LH_EXPECT_EQ_INT(pm[i], 5), on_bottom++;
+    LH_EXPECT_GT_U64(on_bottom, 0);
+    for (size_t s = 0; s < lh_trimesh_segment_count(m); s++) {
+        LH_EXPECT_TRUE(sp[s] >= 0 && sp[s] < 4);
+        if (sp[s] >= 0 && sp[s] < 4) LH_EXPECT_EQ_INT(sm[s], mark[sp[s]]);
+        if (p[2 * sv[2 * s] + 1] == 0 && p[2 * sv[2 * s + 1] + 1] == 0) LH_EXPECT_EQ_INT(sp[s], 0);
+    }
+    lh_trimesh_free(m);
+}
+
 LH_TEST(degenerate_input_is_resolved_and_reported)
 {
     /* vertex 5 duplicates 1, segment 5 has zero length after merging, segment 6
@@ -1204,6 +1235,7 @@ int main(int argc, char **argv)
         LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
         LH_CASE(refining_a_mesh_splits_its_boundary_edges), LH_CASE(api_misuse_is_refused_with_a_message),
+        LH_CASE(refining_a_mesh_keeps_the_segments_along_its_boundary),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
         LH_CASE(a_hole_seed_on_a_segment_is_refused), LH_CASE(the_check_rejects_what_is_not_a_cdt),
