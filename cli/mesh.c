@@ -290,12 +290,13 @@ int lh_cli_mesh(int argc, char **argv)
         lh_cli_pslg_report(&in, st, msg);
         rc = st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL ? LH_EXIT_FAIL : LH_EXIT_INPUT;
     } else if (!a.output) {
-        lh_cli_trimesh_report(stdout, m, a.opt.min_angle);
+        lh_cli_trimesh_report(stdout, m, a.opt.min_angle, 1); /* Triangle's numbering */
         rc = lh_cli_finish_output("mesh");
     } else {
         rc = write_output(&a, &in, m, ok_kind, out_stem);
         if (rc == LH_EXIT_OK && a.report) {
-            lh_cli_trimesh_report(stdout, m, a.opt.min_angle);
+            /* numbered as the file written: VTU and OFF cells from 0, .ele and .msh from 1 */
+            lh_cli_trimesh_report(stdout, m, a.opt.min_angle, ok_kind == OUT_VTU || ok_kind == OUT_OFF ? 0 : 1);
         } else if (rc == LH_EXIT_OK && !a.quiet) {
             lh_trimesh_stats s;
             lh_trimesh_get_stats(m, &s);

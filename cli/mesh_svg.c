@@ -5,10 +5,13 @@
  *
  * The canvas is svg.c's (the Delaunay and Voronoi pictures): the mesh's bounding box
  * plus a 5% margin, its longer side 10^4 units, y flipped, a legend band above, every
- * coordinate an integer; triangles of one colour share a few <path> elements.
+ * coordinate an integer, computed on the points multiplied by a power of two
+ * (lh_cli_svg_shift: no overflow near +-DBL_MAX, nothing lost near 1e-300); triangles
+ * of one colour share a few <path> elements.
  * SVG 1.1: 8.3 (path data), 11.3 (fill).
  */
 #include "pslg_io.h"
+#include "svg.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -20,6 +23,7 @@
 enum { PER_PATH = 2048, BINS = 12 }; /* subpaths per <path>; ramp bins of 5 degrees */
 
 typedef struct view {
+    int shift; /* the points are drawn multiplied by 2^-shift (lh_cli_svg_shift) */
     double x0, y1, scale, width, height, line;
 } view;
 
@@ -35,10 +39,12 @@ static view fit(const lh_trimesh *m)
         for (int j = 0; j < 2; j++) lo[j] = fmin(lo[j], p[j]), hi[j] = fmax(hi[j], p[j]);
     }
     if (!(lo[0] <= hi[0] && lo[1] <= hi[1])) lo[0] = lo[1] = 0, hi[0] = hi[1] = 1;
+    view v;
+    v.shift = lh_cli_svg_shift(lo, hi);
+    for (int j = 0; j < 2; j++) lo[j] = ldexp(lo[j], -v.shift), hi[j] = ldexp(hi[j], -v.shift);
     double side = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(side > 0) || !isfinite(CANVAS / side)) side = 1;
     const double margin = 0.05 * side;
-    view v;
     v.scale = CANVAS / side;
     v.x0 = lo[0] - margin;
     v.y1 = hi[1] + margin;
@@ -52,7 +58,8 @@ static view fit(const lh_trimesh *m)
 
 static void put(FILE *f, const view *v, const double *p, const char *cmd)
 {
-    fprintf(f, "%s%lld %lld", cmd, llround((p[0] - v->x0) * v->scale), llround((v->y1 - p[1]) * v->scale));
+    const double x = ldexp(p[0], -v->shift), y = ldexp(p[1], -v->shift);
+    fprintf(f, "%s%lld %lld", cmd, llround((x - v->x0) * v->scale), llround((v->y1 - y) * v->scale));
 }
 
 /* Subpaths in <path> elements of PER_PATH each. */
@@ -64,22 +71,15 @@ static void next(FILE *f, size_t *count)
 
 static void close_paths(FILE *f, size_t count) { fputs(count ? "\"/>\n</g>\n" : "</g>\n", f); }
 
-/* The smallest angle of triangle i in degrees (law of cosines, clamped). */
+/* The smallest angle of triangle i in degrees, scale-free (lh_cli_triangle_shape). */
 static double smallest_angle(const lh_trimesh *m, size_t i)
 {
     const double *xy = lh_trimesh_points(m);
     const lh_index *t = lh_trimesh_triangles(m) + 3 * i;
-    double l2[3];
-    for (int k = 0; k < 3; k++) {
-        const double *a = xy + 2 * (size_t)t[(k + 1) % 3], *b = xy + 2 * (size_t)t[(k + 2) % 3];
-        l2[k] = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
-    }
-    int lo = 0;
-    for (int k = 1; k < 3; k++)
-        if (l2[k] < l2[lo]) lo = k;
-    double c = (l2[(lo + 1) % 3] + l2[(lo + 2) % 3] - l2[lo]) / (2 * sqrt(l2[(lo + 1) % 3] * l2[(lo + 2) % 3]));
-    c = c > 1 ? 1 : c < -1 ? -1 : c;
-    return acos(c) * 180 / 3.14159265358979323846;
+    const double *p[3] = {xy + 2 * (size_t)t[0], xy + 2 * (size_t)t[1], xy + 2 * (size_t)t[2]};
+    double ang[3], ratio, len[3];
+    lh_cli_triangle_shape(p, ang, &ratio, len);
+    return fmin(ang[0], fmin(ang[1], ang[2]));
 }
 
 /* Ramp bin b (5 degrees each, 0..60) as a light colour: orange, pale yellow at 30,

@@ -77,8 +77,16 @@ void lh_cli_edges_free(lh_cli_edges *e);
 void lh_cli_write_vnode(FILE *f, const lh_trimesh *m, int base);
 void lh_cli_write_vedge(FILE *f, const lh_trimesh *m, const lh_cli_edges *e, int base);
 
-/* The quality report: counts, angle and area ranges, an angle histogram. */
-void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle);
+/* The quality report: counts, angle and area ranges, an angle histogram, the
+ * triangles below the bounds numbered from first (as the files written: 1, or 0 with
+ * Triangle's -z, VTU and OFF). */
+void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle, int first);
+/* Triangle p[0..2]'s angles in degrees (ang[k] at p[k]), radius-edge ratio (circumradius
+ * over shortest edge; infinity when flat) and edge lengths (len[k] opposite p[k];
+ * infinity beyond DBL_MAX), scale-free: the edge vectors are computed at half scale
+ * when a difference overflows, then scaled by the power of two of their largest
+ * component, so points near +-DBL_MAX, near 1e-300 or both give no NaN. */
+void lh_cli_triangle_shape(const double *const p[3], double ang[3], double *ratio, double len[3]);
 /* The line that says refinement left subsegments unsplit (stats.segments_unsplit). */
 void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s);
 /* The line saying refinement stopped at its Steiner budget (s->steiner_budget_reached). */

@@ -14,7 +14,9 @@
  *
  * Canvas: the sites' bounding box plus a 5% margin, scaled so that the box's longer
  * side is 10^4 units, y flipped (canvas y grows downwards); a legend band above
- * (negative canvas y). Every coordinate written is an integer of that canvas.
+ * (negative canvas y). Every coordinate written is an integer of that canvas. All of
+ * it is computed on the sites multiplied by a power of two (lh_cli_svg_shift), so
+ * that sites near +-DBL_MAX or 1e-300 draw as the unit-scale ones do.
  */
 #include "svg.h"
 
@@ -350,13 +352,45 @@ static lh_index *build_neighbors(const lh_cli_svg *s)
     return nb;
 }
 
-int lh_cli_svg_write(FILE *f, const lh_cli_svg *s)
+int lh_cli_svg_shift(const double lo[2], const double hi[2])
 {
+    const double big = fmax(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
+    int e = 0;
+    if (big > 0 && isfinite(big)) frexp(big, &e);
+    return e;
+}
+
+/* s with its sites multiplied by 2^-lh_cli_svg_shift of their finite box, in *copy
+ * (malloc'ed): every construction below (circumcentres, rays, the view) then stays
+ * finite. NULL when out of memory. */
+static double *scaled_sites(const lh_cli_svg *s, lh_cli_svg *copy)
+{
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (size_t i = 0; i < 2 * s->site_count; i++)
+        if (isfinite(s->sites[i])) lo[i % 2] = fmin(lo[i % 2], s->sites[i]), hi[i % 2] = fmax(hi[i % 2], s->sites[i]);
+    const int e = lo[0] <= hi[0] && lo[1] <= hi[1] ? lh_cli_svg_shift(lo, hi) : 0;
+    double *xy = malloc((s->site_count ? 2 * s->site_count : 1) * sizeof *xy);
+    if (!xy) return NULL;
+    for (size_t i = 0; i < 2 * s->site_count; i++) xy[i] = ldexp(s->sites[i], -e);
+    *copy = *s;
+    copy->sites = xy;
+    return xy;
+}
+
+int lh_cli_svg_write(FILE *f, const lh_cli_svg *orig)
+{
+    lh_cli_svg scaled;
+    double *xy = scaled_sites(orig, &scaled);
+    if (!xy) return -1;
+    const lh_cli_svg *s = &scaled;
     lh_index *own = NULL;
     const lh_index *nb = s->neighbors;
     if (!nb && s->tri_count && (s->draw_delaunay || s->draw_voronoi)) {
         nb = own = build_neighbors(s);
-        if (!own) return -1;
+        if (!own) {
+            free(xy);
+            return -1;
+        }
     }
     view v = view_fit(s);
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -378,5 +412,6 @@ int lh_cli_svg_write(FILE *f, const lh_cli_svg *s)
     if (s->draw_sites) draw_sites(f, &v, s);
     fputs("</svg>\n", f);
     free(own);
+    free(xy);
     return fflush(f) != 0 || ferror(f) ? -1 : 0;
 }

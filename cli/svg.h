@@ -31,8 +31,16 @@ typedef struct lh_cli_svg {
  * pointing up), with a legend line above it; everything outside it is clipped. All
  * edges of one kind go into a few <path> elements (a dot per site too), coordinates
  * are integers on a 10^4-unit scale, so 10^4 sites make about 1.5 MB. Returns 0, or
- * -1 on a write error (ferror(f) or a failed fflush) or when out of memory (only with
- * neighbors NULL). f stays open. */
+ * -1 on a write error (ferror(f) or a failed fflush) or when out of memory. f stays
+ * open. */
 int lh_cli_svg_write(FILE *f, const lh_cli_svg *s);
+
+/* The exponent e that brings the largest magnitude of the box lo..hi into [1/2, 1)
+ * when every coordinate is multiplied by 2^-e (0 for an empty or all-zero box). A
+ * picture drawn from coordinates scaled so has a finite, nonzero side, margin and
+ * canvas scale for any finite points, subnormals, +-DBL_MAX or both: the scaling is
+ * exact but where a coordinate far below the largest underflows, far below a canvas
+ * unit (svg.c, mesh_svg.c). */
+int lh_cli_svg_shift(const double lo[2], const double hi[2]);
 
 #endif

@@ -8,6 +8,7 @@
 #include "pslg_io.h"
 
 #include <ctype.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -72,6 +73,22 @@ static int number_after(const char *s, int *j, double *out)
     return 1;
 }
 
+/* -S's count after s[*j]: none is 0, as Triangle; a number is rounded down, and one
+ * that no size_t holds (1e30, 1e400: strtod's HUGE_VAL) means no limit, the budget
+ * unbounded rather than wrapped around. A sign is refused (0 returned, after a
+ * message). */
+static int steiner_after(const char *s, int *j, size_t *out)
+{
+    const char c = s[*j + 1];
+    if (c == '-' || c == '+') {
+        fprintf(stderr, "lifthull triangle: -S takes a count of Steiner points (0 or more), not '%s'\n", s + *j + 1);
+        return 0;
+    }
+    double x;
+    *out = !number_after(s, j, &x) ? 0 : x >= (double)SIZE_MAX ? SIZE_MAX : (size_t)x;
+    return 1;
+}
+
 static int parse_switches(const char *s, sw *o)
 {
     for (int j = 1; s[j]; j++) {
@@ -87,7 +104,10 @@ static int parse_switches(const char *s, sw *o)
         case 'c': o->c = 1; break;
         case 'D': o->D = 1; break;
         case 'Y': o->Y++; break;
-        case 'S': o->S = 1; o->steiner = number_after(s, &j, &x) && x >= 0 ? (size_t)x : 0; break;
+        case 'S':
+            o->S = 1;
+            if (!steiner_after(s, &j, &o->steiner)) return 0;
+            break;
         case 'j': o->files.jettison = 1; break;
         case 'e': o->files.edge = 1; break;
         case 'n': o->files.neigh = 1; break;
@@ -208,7 +228,7 @@ static int run(const sw *o, const char *file)
         rc = st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL ? LH_EXIT_FAIL : LH_EXIT_INPUT;
     } else {
         rc = lh_cli_trimesh_write(m, &in, outb, &o->files, "triangle");
-        if (rc == LH_EXIT_OK && o->V) lh_cli_trimesh_report(stdout, m, opt.min_angle);
+        if (rc == LH_EXIT_OK && o->V) lh_cli_trimesh_report(stdout, m, opt.min_angle, o->files.base);
         if (rc == LH_EXIT_OK && !o->Q && !o->V) {
             lh_trimesh_stats s;
             lh_trimesh_get_stats(m, &s);

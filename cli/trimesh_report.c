@@ -56,6 +56,33 @@ static void scaled_edges(const double *const *p, double d[3][2], long *e)
     *e = x + half;
 }
 
+/* The corners' angles in radians (ang[k] between d[k+2] and -d[k+1]), from the
+ * scaled edge vectors d of scaled_edges: atan2 of the cross and dot products, which
+ * neither overflow nor vanish there. */
+static void corner_angles(double d[3][2], double ang[3])
+{
+    for (int k = 0; k < 3; k++) {
+        const double *u = d[(k + 2) % 3], *v = d[(k + 1) % 3];
+        ang[k] = atan2(fabs(u[0] * v[1] - u[1] * v[0]), -(u[0] * v[0] + u[1] * v[1]));
+    }
+}
+
+void lh_cli_triangle_shape(const double *const p[3], double ang[3], double *ratio, double len[3])
+{
+    double d[3][2], l[3];
+    long ex;
+    scaled_edges(p, d, &ex);
+    corner_angles(d, ang);
+    for (int k = 0; k < 3; k++) {
+        ang[k] *= 180 / 3.14159265358979323846;
+        l[k] = hypot(d[k][0], d[k][1]);
+        len[k] = ldexp(l[k], (int)ex); /* infinity for an edge longer than DBL_MAX */
+    }
+    /* R = l0 l1 l2 / (4 area) = l0 l1 l2 / (2 |d0 x d1|), over the shortest edge */
+    const double a2 = fabs(d[0][0] * d[1][1] - d[0][1] * d[1][0]), lmin = fmin(l[0], fmin(l[1], l[2]));
+    *ratio = a2 > 0 && lmin > 0 ? l[0] * l[1] * l[2] / (2 * a2 * lmin) : INFINITY;
+}
+
 void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s)
 {
     fprintf(out, "%zu subsegments could not be split (shorter than 2^-40 of the domain's size, or their "
@@ -70,7 +97,7 @@ void lh_cli_trimesh_budget(FILE *out, const lh_trimesh_stats *s, double min_angl
             s->steiner_budget, min_angle, LH_TRIMESH_PROVABLE_ANGLE, s->bad_triangles);
 }
 
-void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
+void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle, int first)
 {
     lh_trimesh_stats s;
     lh_trimesh_get_stats(m, &s);
@@ -95,13 +122,11 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
         if (xless(emax, xl)) emax = xl;
         if (i == 0 || xless(xa, amin)) amin = xa;
         if (xless(amax, xa)) amax = xa;
-        const double e[3] = {a, b, c};
-        for (int k = 0; k < 3; k++) { /* law of cosines, clamped */
-            const double x = e[k], y = e[(k + 1) % 3], z = e[(k + 2) % 3];
-            double cs = (y * y + z * z - x * x) / (2 * y * z);
-            cs = cs > 1 ? 1 : cs < -1 ? -1 : cs;
-            int bin = (int)(acos(cs) * 180 / 3.14159265358979323846 / 10);
-            hist[bin > 17 ? 17 : bin < 0 ? 0 : bin]++;
+        double ang[3];
+        corner_angles(d, ang);
+        for (int k = 0; k < 3; k++) { /* an angle of [0, pi]: a bin of 0..17 */
+            const int bin = (int)(ang[k] * 180 / 3.14159265358979323846 / 10);
+            hist[bin > 17 ? 17 : bin]++;
         }
     }
     fprintf(out, "Mesh: %zu points (%zu input, %zu Steiner: %zu on segments), %zu triangles, %zu subsegments\n",
@@ -130,7 +155,9 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle)
         fprintf(out, "Triangles below the bounds: %zu%s", s.bad_triangles,
                 s.steiner_limit_reached ? " (the Steiner point limit was reached)" : "");
         const lh_index *bad = lh_trimesh_bad_triangles(m);
-        for (size_t i = 0; i < s.bad_triangles && i < 10; i++) fprintf(out, "%s%lld", i ? " " : ": ", (long long)bad[i]);
+        if (s.bad_triangles) fprintf(out, ", numbered from %d as the files", first);
+        for (size_t i = 0; i < s.bad_triangles && i < 10; i++)
+            fprintf(out, "%s%lld", i ? " " : ": ", (long long)bad[i] + first);
         fprintf(out, "%s\n", s.bad_triangles > 10 ? " ..." : "");
     }
 }

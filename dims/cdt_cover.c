@@ -111,6 +111,7 @@ void lh__cover_free(lh__cover *cv)
     const lh_allocator al = cv->mesh.al;
     lh__free(&al, cv->old);
     lh__free(&al, cv->bnd);
+    lh__free(&al, cv->claim);
     lh__m2_free(&cv->mesh);
 }
 
@@ -123,6 +124,25 @@ lh_status lh__cover_segments(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, l
         if (st != LH_OK) return st;
     }
     return LH_OK;
+}
+
+lh_status lh__cover_claim(lh__m2 *m, lh_index s, lh_index parent)
+{
+    lh__cover *cv = m->cover;
+    if (!lh__m2_grow(m, (void **)&cv->claim, 2 * cv->claim_count, &cv->claim_cap, 2 * (cv->claim_count + 1),
+                     sizeof(lh_index)))
+        return LH_ERR_NOMEM;
+    cv->claim[2 * cv->claim_count] = s;
+    cv->claim[2 * cv->claim_count++ + 1] = parent;
+    return LH_OK;
+}
+
+void lh__cover_relabel(lh__m2 *m, const lh__cover *cv)
+{
+    for (size_t i = 0; i < cv->claim_count; i++) {
+        const lh_index s = cv->claim[2 * i];
+        if (m->sp[s] <= LH__COVER_PARENT(0)) m->sp[s] = cv->claim[2 * i + 1];
+    }
 }
 
 lh_status lh__cover_outside(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, uint32_t e)

@@ -72,7 +72,7 @@ static lh_status claim_edge(lh__m2 *m, lh_index t, int pos, lh_index a, lh_index
     const lh_index s = m->sg[3 * (size_t)t + pos];
     if (s >= 0) { /* overlapping input segments share the edge */
         m->smul[s]++;
-        return LH_OK;
+        return m->cover && parent >= 0 && m->sp[s] < -1 ? lh__cover_claim(m, s, parent) : LH_OK;
     }
     lh_index id;
     lh_status st = lh__m2_add_subseg(m, a, u, parent, &id);

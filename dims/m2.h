@@ -12,10 +12,12 @@
  * Subsegments: the pieces of input segments that are edges of the mesh; subsegment s
  * joins sv[2s], sv[2s+1] and belongs to input segment sp[s] (whose marker it has).
  * Points: the input vertices first, with their indices, then Steiner points; pseg[p]
- * is the input segment a Steiner point was put on (-1 otherwise, and for input
- * vertices; LH__M2_REMOVED for a Steiner point removed again, which the output
- * leaves out); vt[p] is a triangle incident to p (-1 while p is not a vertex: merged
- * duplicates, points in removed regions, removed Steiner points).
+ * is the parent of the subsegment a Steiner point was put on (an input segment >= 0,
+ * or a boundary edge of the mesh being refined, <= -2: refine.h's LH__COVER_PARENT),
+ * -1 for a free Steiner point and for input vertices, LH__M2_REMOVED (below every
+ * parent) for a Steiner point removed again, which the output leaves out; vt[p] is a
+ * triangle incident to p (-1 while p is not a vertex: merged duplicates, points in
+ * removed regions, removed Steiner points).
  *
  * Invariants kept by every operation: every live triangle is positively oriented;
  * neighbour links are symmetric; every unconstrained interior edge is locally
@@ -200,6 +202,9 @@ enum { LH__M2_CROSSING = 1 };
  * at the crossing splitting both (cdt_insert.c). */
 lh_status lh__m2_insert_segment(lh__m2 *m, lh__m2_cavity *c, lh_index a, lh_index b,
                                 lh_index parent, lh__m2_problem *pb);
+/* Input segment `parent` runs along subsegment s, a piece of a boundary edge of
+ * m->cover: recorded for lh__cover_relabel (cdt_cover.c). LH_OK or LH_ERR_NOMEM. */
+lh_status lh__cover_claim(lh__m2 *m, lh_index s, lh_index parent);
 /* The triangle holding the edge a->b (a before b counterclockwise), with *pos the
  * edge's index in it; -1 when a->b is not an edge. */
 lh_index lh__m2_find_edge(const lh__m2 *m, lh_index a, lh_index b, int *pos);
@@ -240,7 +245,9 @@ int lh__m2_encroaches(const lh__m2 *m, lh_index s, const double *p);
  * left in c->stack, and pseg[p] = LH__M2_REMOVED. *removed = 0 when p is not such a
  * vertex or the link's triangulation is blocked (m2_remove.c): the mesh is unchanged.
  * Returns LH_OK or LH_ERR_NOMEM / LH_ERR_INTERNAL. */
-enum { LH__M2_REMOVED = -2 };
+/* The least lh_index: a parent LH__COVER_PARENT(i) is -(i + 2) for a boundary edge i
+ * that has a subsegment id < LH_INDEX_MAX, so always greater. */
+#define LH__M2_REMOVED ((lh_index)(-LH_INDEX_MAX - 1))
 lh_status lh__m2_remove_vertex(lh__m2 *m, lh__m2_cavity *c, lh_index p, int *removed);
 /* Drops the removed Steiner points, renumbering the later ones down (input vertices
  * keep their indices). Returns LH_OK or LH_ERR_NOMEM (mesh unchanged). */

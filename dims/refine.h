@@ -33,6 +33,9 @@ typedef struct lh__cover { /* m2.h's struct lh__cover */
     lh_index *old;       /* per triangle of mesh: its index in lh_pslg.cover      */
     lh_index *bnd;
     size_t bnd_count;
+    lh_index *claim;     /* pairs (subsegment of a boundary edge, input segment along
+                            it), recorded by lh__cover_claim                       */
+    size_t claim_count, claim_cap;
 } lh__cover;
 /* The subsegment parent of boundary edge i, and back (the map is an involution). */
 #define LH__COVER_PARENT(i) (-(lh_index)(i) - 2)
@@ -43,6 +46,11 @@ void lh__cover_free(lh__cover *cv);
 /* Inserts the boundary edges as segments (before the input's). */
 lh_status lh__cover_segments(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv,
                              lh__m2_problem *pb);
+/* After the domain is known (the boundary edges' parents have served
+ * lh__cover_outside): each claimed subsegment takes the input segment along it as its
+ * parent, so that it and the Steiner points put on it carry that segment's marker,
+ * as Triangle's -rp gives them. */
+void lh__cover_relabel(lh__m2 *m, const lh__cover *cv);
 /* Marks with epoch e the triangles outside the old mesh. */
 lh_status lh__cover_outside(lh__m2 *m, lh__m2_cavity *c, const lh__cover *cv, uint32_t e);
 /* m->tarea[t] = area[old triangle holding t's centroid], for t / every live t. */

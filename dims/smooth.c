@@ -148,7 +148,7 @@ lh_status lh__m2_smooth(lh__m2 *m, lh__m2_cavity *c, int passes, double max_area
     for (int pass = 0; pass < passes; pass++) {
         size_t k = 0;
         for (size_t v = m->n_input; v < m->np; v++)
-            if (m->pseg[v] < 0 && m->vt[v] >= 0) k += (size_t)move(m, (lh_index)v, max_area);
+            if (m->pseg[v] == -1 && m->vt[v] >= 0) k += (size_t)move(m, (lh_index)v, max_area);
         *moved += k;
         lh_status st = restore_delaunay(m, c);
         if (st != LH_OK) return st;

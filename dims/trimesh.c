@@ -9,6 +9,7 @@
  */
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -27,6 +28,7 @@ struct lh_trimesh {
 
 void lh_trimesh_options_default(lh_trimesh_options *o)
 {
+    if (!o) return;
     memset(o, 0, sizeof *o);
     o->boundary_steiner = 1;
     o->max_steiner = SIZE_MAX;
@@ -45,11 +47,29 @@ static void say(char *msg, size_t size, const size_t *lines, size_t item, const 
     va_end(ap);
 }
 
+/* Counts the mesh's arithmetic can hold: vertices and old triangles are numbered by
+ * lh_index (m2_store.c keeps triangles below LH_INDEX_MAX / 4), and n attr_count
+ * doubles must be a size. Larger counts cannot describe arrays that exist. */
+static lh_status check_counts(const lh_pslg *g, char *msg, size_t size)
+{
+    const size_t most = (size_t)LH_INDEX_MAX / 4;
+    if (g->n >= most || g->cover_count >= most || g->segment_count >= most ||
+        (g->attr_count > 0 && g->n > SIZE_MAX / 2 / sizeof(double) / (size_t)g->attr_count)) {
+        say(msg, size, NULL, 0, "%zu vertices (%d attributes each), %zu segments, %zu triangles to refine: "
+            "more than an lh_index can number", g->n, g->attr_count, g->segment_count, g->cover_count);
+        return LH_ERR_TOO_LARGE;
+    }
+    return LH_OK;
+}
+
 static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char *msg, size_t size)
 {
     const long long base = g->first_index, ibase = base + g->item_first_shift;
+    const lh_status counted = check_counts(g, msg, size);
+    if (counted != LH_OK) return counted;
     if ((g->n && !g->xy) || (g->segment_count && !g->segments) || (g->hole_count && !g->holes) ||
-        (g->region_count && !g->regions) || (g->attr_count < 0) || (g->attr_count && g->n && !g->attr)) {
+        (g->region_count && !g->regions) || (g->cover_count && !g->cover) || (g->attr_count < 0) ||
+        (g->attr_count && g->n && !g->attr)) {
         say(msg, size, NULL, 0, "an array of the PSLG is missing");
         return LH_ERR_INVALID_ARGUMENT;
     }
@@ -75,8 +95,12 @@ static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char
         for (int j = 0; j < 2; j++) {
             const lh_index v = g->segments[2 * s + j];
             if (v < 0 || (size_t)v >= g->n) {
-                say(msg, size, g->segment_line, s, "segment %lld: endpoint %lld is not a vertex (%lld..%lld)",
-                    ibase + (long long)s, base + (long long)v, base, base + (long long)g->n - 1);
+                if (g->n)
+                    say(msg, size, g->segment_line, s, "segment %lld: endpoint %lld is not a vertex (%lld..%lld)",
+                        ibase + (long long)s, base + (long long)v, base, base + (long long)g->n - 1);
+                else
+                    say(msg, size, g->segment_line, s, "segment %lld: endpoint %lld is not a vertex (there are none)",
+                        ibase + (long long)s, base + (long long)v);
                 return LH_ERR_INVALID_ARGUMENT;
             }
         }
@@ -309,6 +333,7 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
         return st;
     }
     if (st != LH_OK) return st;
+    if (m->cover) lh__cover_relabel(m, m->cover);
     lh__refine_opts ro = {o->min_angle, o->max_area, o->region_areas, o->conforming,
                           o->boundary_steiner, o->max_steiner - split, g->segments, dup,
                           m->cover ? g->cover_area : NULL, &r->stats};
@@ -335,7 +360,8 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     }
     r->stats.steiner_points = m->np - m->n_input;
     r->stats.crossings_split = m->crossings;
-    for (size_t p = m->n_input; p < m->np; p++) r->stats.steiner_on_segments += m->pseg[p] >= 0;
+    /* on input segments and on the boundary edges of a mesh being refined (pseg <= -2) */
+    for (size_t p = m->n_input; p < m->np; p++) r->stats.steiner_on_segments += m->pseg[p] != -1;
     if ((st = harvest(r, m)) != LH_OK) return st;
     if (!o->region_attributes) {
         lh__free(&r->al, r->tattr);
@@ -358,7 +384,11 @@ lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
     lh_trimesh_options o;
     if (opt) o = *opt; else lh_trimesh_options_default(&o);
     lh_allocator al;
-    if (!g || !lh__allocator_init(&al, o.alloc)) return LH_ERR_INVALID_ARGUMENT;
+    if (!g) return LH_ERR_INVALID_ARGUMENT;
+    if (!lh__allocator_init(&al, o.alloc)) {
+        say(msg, msg_size, NULL, 0, "the allocator lacks its alloc or free hook");
+        return LH_ERR_INVALID_ARGUMENT;
+    }
     lh_status st = check_input(g, &o, msg, msg_size);
     if (st != LH_OK) return st;
     lh_options dopt;

@@ -44,6 +44,8 @@
  *     angle is at least that of a run without it.
  * Every run's allocations are counted (fuzz_common.h): nothing may leak; a third run
  * failing one chosen allocation must return LH_ERR_NOMEM (or succeed identically).
+ * The byte after the PSLG's may ask for the cover stage (refine_cover): the mesh made,
+ * refined as Triangle's -r refines a .node/.ele, under the same checks.
  * Anything else aborts. Build as fuzz_delaunay.c (fuzz/README.md); with
  * -DLH_FUZZ_TRIMESH_VERBOSE an input's PSLG, options and outcome go to stderr.
  */
@@ -142,7 +144,7 @@ typedef struct input {
     int crossing, collinear, keep_hull, refine, fail_mode;
     lh_index open;         /* the first vertex ending an odd number of segments, or -1 */
     size_t dups;
-    unsigned fail_pick;
+    unsigned fail_pick, cover; /* cover: the byte after the PSLG's (refine_cover) */
 } input;
 
 static const double angles[8] = {0, 20, 25, 30, 33, 0, 20, 30};
@@ -258,6 +260,7 @@ static void decode(const uint8_t *data, size_t size, input *in)
     for (size_t i = n; i-- > 0;)
         if (odd[i]) in->open = (lh_index)i;
     in->refine = o->min_angle > 0 || o->max_area > 0 || o->region_areas || o->conforming;
+    in->cover = get(&s); /* after everything else: the inputs written before it mean the same */
 }
 
 static int same(const lh_trimesh *a, const lh_trimesh *b)
@@ -309,29 +312,22 @@ static lh_status run(const input *in, counter *c, lh_trimesh **m, char *msg, siz
 }
 
 /* The checks of a successful run (the header's list). */
-static void check_mesh(const input *in, const lh_trimesh *m)
+/* lh_check_trimesh passes; indices in range, neighbours symmetric across the same
+ * edge, -1 only on subsegments. */
+static void check_links(const lh_trimesh *m)
 {
-    const lh_pslg *g = &in->g;
-    const size_t n = g->n, np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m),
-                 ns = lh_trimesh_segment_count(m);
+    const size_t np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m), ns = lh_trimesh_segment_count(m);
     const double *xy = lh_trimesh_points(m);
-    const lh_index *tri = lh_trimesh_triangles(m), *nb = lh_trimesh_neighbors(m), *seg = lh_trimesh_segments(m),
-                   *par = lh_trimesh_segment_parents(m);
+    const lh_index *tri = lh_trimesh_triangles(m), *nb = lh_trimesh_neighbors(m), *seg = lh_trimesh_segments(m);
     char msg[256];
-    if (np < n || !nt || memcmp(xy, g->xy, 2 * n * sizeof(double))) abort();
-    if (lh_check_trimesh(np, xy, nt, tri, ns, seg, 0, NULL, msg, sizeof msg) != LH_OK) {
+    if (!nt || lh_check_trimesh(np, xy, nt, tri, ns, seg, 0, NULL, msg, sizeof msg) != LH_OK) {
 #ifdef LH_FUZZ_TRIMESH_VERBOSE
         fprintf(stderr, "lh_check_trimesh: %s\n", msg);
 #endif
         abort();
     }
-    for (size_t i = 0; i < 3 * nt; i++) {
+    for (size_t i = 0; i < 3 * nt; i++)
         if (tri[i] < 0 || (size_t)tri[i] >= np || nb[i] < -1 || nb[i] >= (lh_index)nt) abort();
-        /* a merged duplicate (equal to an earlier vertex) is in no triangle */
-        if ((size_t)tri[i] < n)
-            for (size_t j = 0; j < (size_t)tri[i]; j++)
-                if (in->v[j].x == in->v[tri[i]].x && in->v[j].y == in->v[tri[i]].y) abort();
-    }
     for (size_t t = 0; t < nt; t++)
         for (int k = 0; k < 3; k++) {
             const lh_index a = tri[3 * t + (k + 1) % 3], b = tri[3 * t + (k + 2) % 3], u = nb[3 * t + k];
@@ -348,6 +344,89 @@ static void check_mesh(const input *in, const lh_trimesh *m)
             if (back < 0 || tri[3 * (size_t)u + (back + 1) % 3] != b || tri[3 * (size_t)u + (back + 2) % 3] != a)
                 abort();
         }
+}
+
+/* The bad list increasing, and every triangle not on it within o's angle and global
+ * area bounds (measured here by atan2); the extremes within them unless refinement
+ * was stopped. */
+static void check_bounds(const lh_trimesh_options *o, const lh_trimesh *m, const lh_trimesh_stats *st)
+{
+    const size_t nt = lh_trimesh_triangle_count(m);
+    const double *xy = lh_trimesh_points(m);
+    const lh_index *tri = lh_trimesh_triangles(m), *bad = lh_trimesh_bad_triangles(m);
+    for (size_t i = 0; i < st->bad_triangles; i++)
+        if (bad[i] < 0 || (size_t)bad[i] >= nt || (i && bad[i] <= bad[i - 1])) abort();
+    const int stopped = st->bad_triangles > 0 || st->steiner_limit_reached || o->boundary_steiner != 1;
+    if (!stopped && o->min_angle > 0 && st->min_angle < o->min_angle - 1e-6) abort();
+    if (!stopped && o->max_area > 0 && st->max_area > o->max_area * (1 + 1e-9)) abort();
+    for (size_t t = 0, b = 0; t < nt; t++) {
+        if (b < st->bad_triangles && (size_t)bad[b] == t) {
+            b++;
+            continue;
+        }
+        const double *q[3];
+        for (int k = 0; k < 3; k++) q[k] = xy + 2 * (size_t)tri[3 * t + k];
+        double small = 180;
+        for (int k = 0; k < 3; k++) {
+            const double ux = q[(k + 1) % 3][0] - q[k][0], uy = q[(k + 1) % 3][1] - q[k][1];
+            const double vx = q[(k + 2) % 3][0] - q[k][0], vy = q[(k + 2) % 3][1] - q[k][1];
+            const double a = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180 / 3.14159265358979323846);
+            small = a < small ? a : small;
+        }
+        const double area = ((q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0])) / 2;
+        if ((o->min_angle > 0 && small < o->min_angle - 1e-6) || (o->max_area > 0 && area > o->max_area * (1 + 1e-9)))
+            abort();
+    }
+}
+
+/* Twice the area of m's triangles in grid units (exact but for the long double sums
+ * of points off the grid); *moved: the points from `from` on that end subsegments. */
+static long double grid_area2(const input *in, const lh_trimesh *m, size_t from, size_t *moved)
+{
+    const size_t np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m), ns = lh_trimesh_segment_count(m);
+    const double *xy = lh_trimesh_points(m);
+    const lh_index *tri = lh_trimesh_triangles(m), *seg = lh_trimesh_segments(m);
+    long double got = 0;
+    for (size_t t = 0; t < nt; t++) {
+        long double q[3][2];
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 2; j++)
+                q[k][j] = (long double)xy[2 * (size_t)tri[3 * t + k] + j] / in->scale - in->off;
+        got += (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0]);
+    }
+    unsigned char *on = calloc(np, 1);
+    if (!on) abort();
+    *moved = 0;
+    for (size_t s = 0; s < 2 * ns; s++)
+        if ((size_t)seg[s] >= from && !on[seg[s]]) on[seg[s]] = 1, ++*moved;
+    free(on);
+    return got;
+}
+
+/* Points put on segments (and on hull or old boundary edges) are within an ulp of
+ * them: each moves the area by at most about an ulp of the coordinates times the
+ * grid's size. */
+static void check_area(const input *in, long double want, long double got, size_t moved)
+{
+    const double ulp = ldexp(1.0, -52) * (in->off + 8) * 64;
+    if (fabsl(got - want) > (long double)moved * ulp + 1e-9L * want) abort();
+}
+
+static void check_mesh(const input *in, const lh_trimesh *m)
+{
+    const lh_pslg *g = &in->g;
+    const size_t n = g->n, np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m),
+                 ns = lh_trimesh_segment_count(m);
+    const double *xy = lh_trimesh_points(m);
+    const lh_index *tri = lh_trimesh_triangles(m), *seg = lh_trimesh_segments(m), *par = lh_trimesh_segment_parents(m);
+    char msg[256];
+    if (np < n || memcmp(xy, g->xy, 2 * n * sizeof(double))) abort();
+    check_links(m);
+    /* a merged duplicate (equal to an earlier vertex) is in no triangle */
+    for (size_t i = 0; i < 3 * nt; i++)
+        if ((size_t)tri[i] < n)
+            for (size_t j = 0; j < (size_t)tri[i]; j++)
+                if (in->v[j].x == in->v[tri[i]].x && in->v[j].y == in->v[tri[i]].y) abort();
     for (size_t s = 0; s < ns; s++) {
         const lh_index p = par[s];
         if (p < -1 || p >= (lh_index)g->segment_count || (p < 0 && !in->keep_hull)) abort();
@@ -370,31 +449,7 @@ static void check_mesh(const input *in, const lh_trimesh *m)
         st.steiner_on_segments > st.steiner_points ||
         (!o->smooth && st.smoothing_moves))
         abort();
-    const lh_index *bad = lh_trimesh_bad_triangles(m);
-    for (size_t i = 0; i < st.bad_triangles; i++)
-        if (bad[i] < 0 || (size_t)bad[i] >= nt || (i && bad[i] <= bad[i - 1])) abort();
-    const int stopped = st.bad_triangles > 0 || st.steiner_limit_reached || o->boundary_steiner != 1;
-    if (!stopped && o->min_angle > 0 && st.min_angle < o->min_angle - 1e-6) abort();
-    if (!stopped && o->max_area > 0 && st.max_area > o->max_area * (1 + 1e-9)) abort();
-    /* and every triangle not on the bad list meets the bounds (measured here by atan2) */
-    for (size_t t = 0, b = 0; t < nt; t++) {
-        if (b < st.bad_triangles && (size_t)bad[b] == t) {
-            b++;
-            continue;
-        }
-        const double *q[3];
-        for (int k = 0; k < 3; k++) q[k] = xy + 2 * (size_t)tri[3 * t + k];
-        double small = 180;
-        for (int k = 0; k < 3; k++) {
-            const double ux = q[(k + 1) % 3][0] - q[k][0], uy = q[(k + 1) % 3][1] - q[k][1];
-            const double vx = q[(k + 2) % 3][0] - q[k][0], vy = q[(k + 2) % 3][1] - q[k][1];
-            const double a = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180 / 3.14159265358979323846);
-            small = a < small ? a : small;
-        }
-        const double area = ((q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0])) / 2;
-        if ((o->min_angle > 0 && small < o->min_angle - 1e-6) || (o->max_area > 0 && area > o->max_area * (1 + 1e-9)))
-            abort();
-    }
+    check_bounds(o, m, &st);
     /* conforming alone: every edge Delaunay. Not with crossings split (rounding beside
        chains bent at rounded crossings leaves some subsegments unsplittable), with an
        angle or area bound (splits towards a small angle's apex stop at the minimum
@@ -415,27 +470,106 @@ static void check_mesh(const input *in, const lh_trimesh *m)
     if (in->keep_hull && !g->hole_count) {
         grid v[MAXV];
         memcpy(v, in->v, n * sizeof *v);
-        const long double want = (long double)hull_area2(v, n);
-        long double got = 0;
-        for (size_t t = 0; t < nt; t++) {
-            long double q[3][2];
-            for (int k = 0; k < 3; k++)
-                for (int j = 0; j < 2; j++)
-                    q[k][j] = (long double)xy[2 * (size_t)tri[3 * t + k] + j] / in->scale - in->off;
-            got += (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0]);
-        }
-        /* points put on segments (and on hull edges, parent -1) are within an ulp of
-           them: each moves the area by at most about an ulp of the coordinates times
-           the grid's size */
-        unsigned char *on = calloc(np, 1);
-        size_t moved = 0;
-        if (!on) abort();
-        for (size_t s = 0; s < 2 * ns; s++)
-            if ((size_t)seg[s] >= n && !on[seg[s]]) on[seg[s]] = 1, moved++;
-        free(on);
-        const double ulp = ldexp(1.0, -52) * (in->off + 8) * 64;
-        if (fabsl(got - want) > (long double)moved * ulp + 1e-9L * want) abort();
+        size_t moved;
+        const long double got = grid_area2(in, m, n, &moved);
+        check_area(in, (long double)hull_area2(v, n), got, moved);
     }
+}
+
+/* The refinement of a mesh (the cover stage): the old points first and unchanged,
+ * the checks of check_links and check_bounds, subsegment parents the old segments' or
+ * -1 (old boundary edges), the statistics consistent, the old union kept, and the
+ * attributes interpolated finite. */
+static void check_refined(const input *in, const lh_pslg *g, const lh_trimesh_options *o, const lh_trimesh *old,
+                          const lh_trimesh *m)
+{
+    const size_t n = g->n, np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m),
+                 ns = lh_trimesh_segment_count(m);
+    const lh_index *par = lh_trimesh_segment_parents(m);
+    if (np < n || memcmp(lh_trimesh_points(m), g->xy, 2 * n * sizeof(double))) abort();
+    check_links(m);
+    for (size_t s = 0; s < ns; s++)
+        if (par[s] < -1 || par[s] >= (lh_index)g->segment_count) abort();
+    lh_trimesh_stats st;
+    lh_trimesh_get_stats(m, &st);
+    if (st.input_vertices != n || st.triangles != nt || st.steiner_points != np - n || st.crossings_split ||
+        st.steiner_points > o->max_steiner ||
+        (st.steiner_limit_reached && st.steiner_points + st.steiner_removed != o->max_steiner) ||
+        st.steiner_on_segments > st.steiner_points || (!o->smooth && st.smoothing_moves))
+        abort();
+    check_bounds(o, m, &st);
+    size_t moved, ignored;
+    const long double got = grid_area2(in, m, n, &moved), want = grid_area2(in, old, n, &ignored);
+    check_area(in, want, got, moved);
+    const double *pa = lh_trimesh_point_attrs(m);
+    if (g->attr_count) {
+        if (!pa || lh_trimesh_point_attr_count(m) != 1) abort();
+        for (size_t p = 0; p < np; p++)
+            if (!isfinite(pa[p]) || (p < n && pa[p] != g->attr[p])) abort();
+    }
+}
+
+/* A run failing allocation number 1 + fail_pick % calls (calls: the first run's) must
+ * return LH_ERR_NOMEM and nothing, or succeed with m's arrays, leaking nothing. */
+static void check_failure(const input *in, const lh_trimesh *m, long calls)
+{
+    if (calls <= 0) return;
+    counter c3 = {0, 0, 1 + (long)(in->fail_pick % (unsigned long)calls), 0};
+    lh_trimesh *m3 = NULL;
+    char msg[256];
+    const lh_status s3 = run(in, &c3, &m3, msg, sizeof msg);
+    if (!c3.failed || (s3 == LH_OK ? !same(m, m3) : s3 != LH_ERR_NOMEM || m3)) abort();
+    lh_trimesh_free(m3);
+    if (c3.live) abort();
+}
+
+/* The cover stage (Triangle's -r), when bit 0 of in->cover is set: the mesh `old`
+ * refined with its triangles as lh_pslg.cover, its points (and attributes) as the
+ * vertices; bit 1: its subsegments as segments too (-rp); bits 2-3: the old
+ * triangles' area bounds (none, or 0.5, 2, 8 and none in turn from a start they
+ * choose); bits 4-6: the angle bound; bit 7: the global area bound 2. The other
+ * options are the first run's. It must succeed (the old mesh passed the checks) and
+ * pass check_refined, a second run equal byte for byte, nothing leaking, and with
+ * fail_mode a run failing one chosen allocation returning LH_ERR_NOMEM. */
+static void refine_cover(const input *in, const lh_trimesh *old)
+{
+    const size_t nt = lh_trimesh_triangle_count(old);
+    static const double areas[4] = {0.5, 2, 8, -1};
+    double *area = malloc(nt * sizeof *area);
+    if (!area) abort();
+    const unsigned b = in->cover;
+    for (size_t t = 0; t < nt; t++) {
+        const double bound = areas[(t + (b >> 2)) & 3];
+        area[t] = bound > 0 ? bound * in->scale * in->scale : -1;
+    }
+    input r = *in; /* the options and the scale; g is the old mesh */
+    lh_pslg *g = &r.g;
+    memset(g, 0, sizeof *g);
+    g->n = lh_trimesh_point_count(old), g->xy = (double *)lh_trimesh_points(old); /* read only */
+    g->cover_count = nt, g->cover = (lh_index *)lh_trimesh_triangles(old);
+    if (b & 2) g->segment_count = lh_trimesh_segment_count(old), g->segments = (lh_index *)lh_trimesh_segments(old);
+    if (lh_trimesh_point_attr_count(old))
+        g->attr_count = 1, g->attr = (double *)lh_trimesh_point_attrs(old);
+    r.o.region_areas = (b & 12) != 0;
+    g->cover_area = r.o.region_areas ? area : NULL;
+    r.o.min_angle = angles[(b >> 4) & 7];
+    r.o.max_area = b >> 7 ? 2 * in->scale * in->scale : 0;
+    counter c1 = {0, 0, 0, 0}, c2 = c1;
+    lh_trimesh *m1 = NULL, *m2 = NULL;
+    char msg[256] = "x";
+    const lh_status st = run(&r, &c1, &m1, msg, sizeof msg);
+#ifdef LH_FUZZ_TRIMESH_VERBOSE
+    fprintf(stderr, "cover stage: %zu points, %zu triangles, %zu segments, q %g a %g, areas %d -> %s \"%s\"\n", g->n,
+            nt, g->segment_count, r.o.min_angle, r.o.max_area, r.o.region_areas, lh_status_name(st), msg);
+#endif
+    if (st != LH_OK || msg[0]) abort();
+    check_refined(&r, g, &r.o, old, m1);
+    if (run(&r, &c2, &m2, msg, sizeof msg) != LH_OK || !same(m1, m2)) abort();
+    lh_trimesh_free(m2);
+    if (r.fail_mode) check_failure(&r, m1, c1.calls);
+    lh_trimesh_free(m1);
+    free(area);
+    if (c1.live || c2.live) abort();
 }
 
 #ifdef LH_FUZZ_TRIMESH_VERBOSE
@@ -517,14 +651,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (a.min_angle < b.min_angle - 1e-9 || b.smoothing_moves) abort();
         lh_trimesh_free(m2);
     }
-    if (in.fail_mode && c1.calls > 0) {
-        counter c3 = {0, 0, 1 + (long)(in.fail_pick % (unsigned long)c1.calls), 0};
-        lh_trimesh *m3 = NULL;
-        const lh_status s3 = run(&in, &c3, &m3, msg, sizeof msg);
-        if (!c3.failed || (s3 == LH_OK ? !same(m1, m3) : s3 != LH_ERR_NOMEM || m3)) abort();
-        lh_trimesh_free(m3);
-        if (c3.live) abort();
-    }
+    if (in.cover & 1) refine_cover(&in, m1);
+    if (in.fail_mode) check_failure(&in, m1, c1.calls);
     lh_trimesh_free(m1);
     if (c1.live || c2.live) abort();
     return 0;

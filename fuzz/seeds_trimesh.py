@@ -13,10 +13,12 @@ AREAS = {0: 0, 0.5: 1, 2: 2, 8: 3}
 def encode(verts, ring=0, segs=(), holes=(), regions=(), even_odd=0, convex_hull=0,
            conforming=0, noncrossing=0, angle=0, fail=None, bsteiner=1, area=0,
            steiner=None, region_areas=0, region_attr=0, mode=0, big_offset=0, k=0,
-           attr=0, lines=0, split=0, smooth=0):
+           attr=0, lines=0, split=0, smooth=0, cover=None):
     """verts: (x, y) in -8..8; segs: index pairs; holes, regions: half-integers in
     -8..8 (regions: (x, y, attribute, area index 0..3)); mode: 1 scale 2^k, 2 offset,
-    3 both; steiner: None (5000), 'small' (k & 15) or 64."""
+    3 both; steiner: None (5000), 'small' (k & 15) or 64; cover: the byte after the
+    PSLG that asks for the second stage, refining the mesh made (fuzz_trimesh.c,
+    refine_cover), or None."""
     f0 = even_odd | convex_hull << 1 | conforming << 2 | noncrossing << 3 | ANGLES[angle] << 4
     f0 |= (fail is not None) << 7
     f1 = {1: 0, 0: 2, -1: 3}[bsteiner] | AREAS[area] << 2
@@ -33,7 +35,15 @@ def encode(verts, ring=0, segs=(), holes=(), regions=(), even_odd=0, convex_hull
         out += [int(2 * (x + 8)), int(2 * (y + 8))]
     for x, y, a, ar in regions:
         out += [int(2 * (x + 8)), int(2 * (y + 8)), a << 2 | ar]
+    if cover is not None:
+        out.append(cover)
     return bytes(out)
+
+
+def cover_byte(segments=0, area_start=None, angle=0, area=0):
+    """refine_cover's byte: with the old subsegments (-rp), the old triangles' area
+    bounds from area_start (1..3, None: none), the angle bound, the global area 2."""
+    return 1 | segments << 1 | (area_start or 0) << 2 | ANGLES[angle] << 4 | (area == 2) << 7
 
 
 def seeds():
@@ -72,6 +82,17 @@ def seeds():
     yield "cocircular_ring", encode(circle, ring=len(circle), even_odd=1, angle=30, area=0.5)
     yield "cocircular_steiner_limit", encode(circle + [(0, 0)], ring=len(circle), angle=33, steiner="small",
                                              k=9, bsteiner=-1)
+    # the cover stage: the mesh made, refined with its triangles as the domain (-r)
+    yield "cover_square_hole", encode(sq + inner, ring=4, segs=hole_segs, holes=[(0, 0)],
+                                      cover=cover_byte(segments=1, area_start=1, angle=30))
+    yield "cover_hull_area", encode([(-8, -8), (8, -8), (8, 8), (-8, 8), (0, 3), (-2, -1)], convex_hull=1,
+                                    segs=[(4, 5)], cover=cover_byte(area=2))
+    yield "cover_wedge_angle", encode([(-8, 0), (8, 0), (8, 3), (0, 6)], ring=4, angle=20, attr=1,
+                                      cover=cover_byte(angle=30, area=2, area_start=2))
+    yield "cover_offset", encode(sq + inner, ring=4, segs=hole_segs, regions=[(0, 0, 2, 1)], mode=3, k=-30,
+                                 cover=cover_byte(segments=1, area_start=3, angle=25, area=2))
+    yield "cover_allocation_failure", encode(sq + inner, ring=4, segs=hole_segs, holes=[(0, 0)], fail=700,
+                                             cover=cover_byte(area_start=1, angle=20))
     yield "allocation_failure", encode(sq + inner, ring=4, segs=hole_segs, holes=[(0, 0)], angle=20,
                                        fail=300)
 

@@ -17,6 +17,7 @@
 #include "lh_sort.h"
 
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -358,9 +359,25 @@ static void chk_release(chk *c)
     lh_pred_free(c->pred);
 }
 
+/* Whether every array of the check can be sized without wrapping around: sites and
+ * facets are numbered by lh_index, the facet records hold count nv (nv + 1) indices
+ * (d vertices, simplex, index per facet), the marks count + n. */
+static int sizes_fit(size_t n, size_t count, int nv)
+{
+    const size_t most = SIZE_MAX / sizeof(lh_index) - 1, w = (size_t)nv + 1;
+    return n <= (size_t)LH_INDEX_MAX && count <= (size_t)LH_INDEX_MAX / (size_t)nv &&
+           count * (size_t)nv <= most / w && n <= most - count;
+}
+
 static lh_status run_check(chk *c, const lh_index *simplices)
 {
     size_t boundary = 0;
+    if (!sizes_fit(c->n, c->count, c->nv)) {
+        if (c->msg && c->msg_size)
+            snprintf(c->msg, c->msg_size, "%zu sites and %zu simplices: more than an lh_index or a size_t can count",
+                     c->n, c->count);
+        return LH_ERR_TOO_LARGE;
+    }
     c->simp = lh__alloc(&c->alloc, (c->count * c->nv + 1) * sizeof *c->simp);
     if (!c->simp) return LH_ERR_NOMEM;
     if (c->count) memcpy(c->simp, simplices, c->count * c->nv * sizeof *c->simp);

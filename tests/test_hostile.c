@@ -542,6 +542,27 @@ LH_TEST(the_site_count_limit)
     lh_tri_free(t);
 }
 
+/* lh_check_delaunay with counts no array can have: 2^60 simplices in 3D made a
+ * 4-byte block ((2^62 + 1) * 4 wraps around) and then wrote past it; now
+ * LH_ERR_TOO_LARGE before any allocation. */
+LH_TEST(check_delaunay_refuses_counts_that_wrap)
+{
+    const double tet[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const lh_index simp[4] = {0, 1, 2, 3};
+    peak p = {0, 0, 0};
+    lh_allocator a = {peak_alloc, peak_free, &p};
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = &a;
+    char msg[160];
+    LH_EXPECT_EQ_INT(lh_check_delaunay(3, 4, tet, (size_t)1 << 60, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_STREQ(msg, "4 sites and 1152921504606846976 simplices: more than an lh_index or a size_t can count");
+    LH_EXPECT_EQ_INT(lh_check_delaunay(3, SIZE_MAX / 2, tet, 1, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 3, tet, SIZE_MAX, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_U64(p.peak, 0);
+    LH_EXPECT_EQ_INT(lh_check_delaunay(3, 4, tet, 1, simp, &o, msg, sizeof msg), LH_OK);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
@@ -558,6 +579,7 @@ int main(int argc, char **argv)
         LH_CASE(reader_takes_megabyte_lines),
         LH_CASE(constructions_at_extreme_scales),
         LH_CASE(the_site_count_limit),
+        LH_CASE(check_delaunay_refuses_counts_that_wrap),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -508,6 +508,46 @@ LH_TEST(bad_input_gets_its_error_and_line)
     LH_EXPECT_STREQ(msg, "max_area is NaN (0 or below: no area bound)");
 }
 
+/* Misuse of the API gets a status and a message, never a crash: a cover count
+ * without its array (a segfault before), lh_trimesh_options_default(NULL) (a
+ * segfault before), a NaN area bound, segments with no vertices, an allocator without
+ * hooks, counts no array can have. */
+LH_TEST(api_misuse_is_refused_with_a_message)
+{
+    double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = 4, g.xy = xy, g.cover_count = 2;
+    lh_trimesh *m = NULL;
+    char msg[128];
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "an array of the PSLG is missing");
+    LH_EXPECT_TRUE(m == NULL);
+    g.cover_count = 0;
+    lh_trimesh_options_default(NULL);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.max_area = NAN;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "max_area is NaN (0 or below: no area bound)");
+    o.max_area = 0;
+    lh_allocator none = {NULL, NULL, NULL};
+    o.alloc = &none;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "the allocator lacks its alloc or free hook");
+    lh_index seg[2] = {0, 1};
+    g.n = 0, g.segment_count = 1, g.segments = seg;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "segment 0: endpoint 0 is not a vertex (there are none)");
+    LH_EXPECT_TRUE(m == NULL);
+    /* counts no array can have: refused before any size is computed from them */
+    g.n = 4, g.segment_count = 0, g.cover_count = SIZE_MAX, g.cover = seg;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    g.cover_count = 0, g.attr_count = INT32_MAX, g.attr = xy, g.n = SIZE_MAX / 8;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_TRUE(m == NULL);
+}
+
 /* split_crossings: an X becomes four segments meeting at a new vertex; earcut's
  * self-crossing water polygons (proper crossings counted by the oracle harness: 2, 19,
  * 65, 133) are meshed with one vertex per crossing. */
@@ -850,6 +890,122 @@ LH_TEST(an_existing_mesh_is_refined_with_its_area_bounds)
     lh_points_free(&pts);
 }
 
+/* Twice the total area of m's triangles. */
+static double area2_sum(const lh_trimesh *m)
+{
+    const double *xy = lh_trimesh_points(m);
+    const lh_index *t = lh_trimesh_triangles(m);
+    double sum = 0;
+    for (size_t i = 0; i < lh_trimesh_triangle_count(m); i++) {
+        const double *a = xy + 2 * (size_t)t[3 * i], *b = xy + 2 * (size_t)t[3 * i + 1], *c = xy + 2 * (size_t)t[3 * i + 2];
+        sum += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+    return sum;
+}
+
+/* Refines the mesh `old` (its points and triangles as the cover) under o: the result
+ * is exactly valid, covers the same union, meets the area bound, and names its bad
+ * triangles in range and in order. Returns the Steiner points put on the old
+ * boundary. */
+static size_t refine_cover(lh_test_state *lh_t_, const lh_trimesh *old, const lh_trimesh_options *o,
+                           const char *what)
+{
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = lh_trimesh_point_count(old), g.xy = (double *)lh_trimesh_points(old); /* read only */
+    g.cover_count = lh_trimesh_triangle_count(old), g.cover = (lh_index *)lh_trimesh_triangles(old);
+    lh_trimesh *m = mesh_checked(lh_t_, &g, o, what);
+    if (!m) return 0;
+    lh_trimesh_stats st;
+    lh_trimesh_get_stats(m, &st);
+    const double before = area2_sum(old), after = area2_sum(m);
+    if (fabs(after - before) > 1e-12 * before) LH_NOTE("%s: area %.17g, was %.17g", what, after / 2, before / 2);
+    LH_EXPECT_TRUE(fabs(after - before) <= 1e-12 * before);
+    if (o->max_area > 0) LH_EXPECT_GT_U64(st.steiner_points, 0);
+    if (o->max_area > 0) LH_EXPECT_LE_DBL(st.max_area, o->max_area);
+    const lh_index *bad = lh_trimesh_bad_triangles(m);
+    for (size_t i = 0; i < st.bad_triangles; i++) {
+        LH_EXPECT_TRUE(bad[i] >= 0 && (size_t)bad[i] < lh_trimesh_triangle_count(m));
+        if (i) LH_EXPECT_LT_INT(bad[i - 1], bad[i]);
+    }
+    const size_t on_boundary = st.steiner_on_segments;
+    lh_trimesh_free(m);
+    return on_boundary;
+}
+
+/* Triangle's -r with -a or -q (`-pc box.poly` then `-rpa0.2 box.1`; `-rq30 face.1`):
+ * Steiner points on the old mesh's boundary edges (subsegment parents -2, -3, ...)
+ * were taken for removed points (pseg -2), dropped, and their triangles left naming
+ * point -1: reads before the point array, a double free. Every such refinement is
+ * exactly valid; the unit square split along a diagonal, and meshes of Triangle's
+ * files, each refined by area, angle and both. */
+LH_TEST(refining_a_mesh_splits_its_boundary_edges)
+{
+    const char *const files[] = {"triangle/box.poly", "triangle/face.poly", "triangle/A.poly"};
+    for (size_t i = 0; i < sizeof files / sizeof files[0] + 1; i++) {
+        lh_trimesh *old = NULL;
+        if (i == 0) { /* the unit square, two triangles */
+            static double xy[] = {0, 0, 1, 0, 1, 1, 0, 1};
+            static lh_index cover[] = {0, 1, 3, 1, 2, 3};
+            lh_pslg sq;
+            memset(&sq, 0, sizeof sq);
+            sq.n = 4, sq.xy = xy, sq.cover_count = 2, sq.cover = cover;
+            old = mesh_checked(lh_t_, &sq, NULL, "the unit square as a cover");
+        } else {
+            lh_pslg g;
+            LH_ASSERT_EQ_INT(load(lh_poly_read, files[i - 1], &g), LH_OK);
+            lh_trimesh_options c;
+            lh_trimesh_options_default(&c);
+            c.convex_hull = 1; /* -pc */
+            old = mesh_checked(lh_t_, &g, &c, files[i - 1]);
+            lh_pslg_free(&g);
+        }
+        if (!old) continue;
+        const double area = area2_sum(old) / 2;
+        lh_trimesh_options o;
+        lh_trimesh_options_default(&o);
+        o.max_area = area / 50;
+        size_t on_boundary = refine_cover(lh_t_, old, &o, "-ra");
+        o.max_area = 0, o.min_angle = 30;
+        refine_cover(lh_t_, old, &o, "-rq30");
+        o.max_area = area / 200;
+        on_boundary += refine_cover(lh_t_, old, &o, "-rq30a");
+        LH_EXPECT_GT_U64(on_boundary, 0);
+        lh_trimesh_free(old);
+    }
+}
+
+/* -rp: the input segments along the old mesh's boundary give their markers and
+ * parents to its pieces and to the Steiner points put there (as Triangle's -rpa on
+ * box.1, reference_outputs/box.2: cli_triangle_ref), not the old boundary's 1 and -1. */
+LH_TEST(refining_a_mesh_keeps_the_segments_along_its_boundary)
+{
+    double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    lh_index cover[6] = {0, 1, 3, 1, 2, 3}, seg[8] = {0, 1, 1, 2, 2, 3, 3, 0}, mark[4] = {5, 6, 7, 8};
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = 4, g.xy = xy, g.cover_count = 2, g.cover = cover;
+    g.segment_count = 4, g.segments = seg, g.segment_marker = mark;
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.max_area = 0.01;
+    lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "-rpa0.01 square");
+    LH_ASSERT_TRUE(m != NULL);
+    const double *p = lh_trimesh_points(m);
+    const lh_index *pm = lh_trimesh_point_markers(m), *sv = lh_trimesh_segments(m),
+                   *sm = lh_trimesh_segment_markers(m), *sp = lh_trimesh_segment_parents(m);
+    size_t on_bottom = 0;
+    for (size_t i = 4; i < lh_trimesh_point_count(m); i++)
+        if (p[2 * i + 1] == 0) LH_EXPECT_EQ_INT(pm[i], 5), on_bottom++;
+    LH_EXPECT_GT_U64(on_bottom, 0);
+    for (size_t s = 0; s < lh_trimesh_segment_count(m); s++) {
+        LH_EXPECT_TRUE(sp[s] >= 0 && sp[s] < 4);
+        if (sp[s] >= 0 && sp[s] < 4) LH_EXPECT_EQ_INT(sm[s], mark[sp[s]]);
+        if (p[2 * sv[2 * s] + 1] == 0 && p[2 * sv[2 * s + 1] + 1] == 0) LH_EXPECT_EQ_INT(sp[s], 0);
+    }
+    lh_trimesh_free(m);
+}
+
 LH_TEST(degenerate_input_is_resolved_and_reported)
 {
     /* vertex 5 duplicates 1, segment 5 has zero length after merging, segment 6
@@ -1054,6 +1210,8 @@ int main(int argc, char **argv)
         LH_CASE(conforming_below_the_floor_is_reported),
         LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
+        LH_CASE(refining_a_mesh_splits_its_boundary_edges), LH_CASE(api_misuse_is_refused_with_a_message),
+        LH_CASE(refining_a_mesh_keeps_the_segments_along_its_boundary),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
         LH_CASE(a_hole_seed_on_a_segment_is_refused), LH_CASE(the_check_rejects_what_is_not_a_cdt),

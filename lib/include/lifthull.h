@@ -333,7 +333,9 @@ void lh_tri_free(lh_tri *t);
  * alone admit coverings wound twice); every site is a vertex or an exact duplicate
  * of one. opt: only its allocator is used (NULL: malloc). Returns LH_OK,
  * LH_ERR_NOMEM, or LH_ERR_INTERNAL with a one-line reason in msg (msg may be NULL;
- * msg_size bytes).
+ * msg_size bytes); LH_ERR_INVALID_ARGUMENT for a NULL array with a nonzero count or a
+ * bad allocator; LH_ERR_TOO_LARGE, with the reason in msg, for n or count beyond what
+ * lh_index and size_t can count (the check's sizes would wrap around).
  */
 lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
                             const lh_index *simplices, const lh_options *opt, char *msg,
@@ -867,8 +869,12 @@ void lh_trimesh_options_default(lh_trimesh_options *opt);
  * boundary: LH_ERR_DEGENERATE), with even_odd a vertex ending an odd number of
  * segments (rings not closed, the parity undefined: LH_ERR_DEGENERATE, naming it),
  * a hole seed lying exactly on a segment or at its endpoint (the side to carve is
- * undefined: LH_ERR_DEGENERATE, naming both), a segment endpoint out of range or an option out of range
- * (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), LH_ERR_NOMEM.
+ * undefined: LH_ERR_DEGENERATE, naming both), a segment endpoint out of range, an
+ * option out of range (min_angle outside 0..LH_TRIMESH_MAX_ANGLE, max_area NaN,
+ * smooth < 0), a count with a NULL array or an allocator without hooks
+ * (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), counts no lh_index
+ * can number (n, segment_count or cover_count from LH_INDEX_MAX / 4 up:
+ * LH_ERR_TOO_LARGE), LH_ERR_NOMEM.
  * msg (msg_size bytes, may be NULL) receives a one-line reason; when the PSLG came
  * from a reader it starts with the line of the item at fault and a colon ("17:
  * segment 3 crosses segment 5 (line 19)"), so "FILE:" + msg names the place. Items are

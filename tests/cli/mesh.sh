@@ -114,6 +114,39 @@ grep -q '<svg xmlns="http://www.w3.org/2000/svg" viewBox=' A.svg && grep -q 'id=
 expect "-o svg, bad triangles" 0 '' 'triangles are below the bounds' -- "$lh" mesh la.poly --min-angle 30 -o la.svg
 xml "la.svg is XML" la.svg
 grep -A1 '<g id="bad"' la.svg | grep -q '<path d="M' && ok || bad "la.svg: the bad triangles are not outlined"
+# --report numbers the triangles below the bounds as the files written: from 1 as the
+# .ele (each listed number is a triangle of m30.ele with an angle below 30 degrees),
+# from 0 as VTU cells (it numbered from 0 always)
+expect "--report lists .ele numbers" 0 '' 'numbered from 1 as the files: ' -- "$lh" mesh la.poly --min-angle 30 -o m30.node --report
+first="$(sed -nE 's/^Triangles below the bounds: [0-9]+, numbered from 1 as the files: ([0-9]+).*/\1/p' out.txt)"
+small() { # small NODE ELE NUMBER: the smallest angle (degrees) of triangle NUMBER
+  awk -v k="$3" 'FNR == 1 { f++; next } f == 1 && NF { x[$1] = $2; y[$1] = $3 }
+    f == 2 && $1 == k { m = 180; for (i = 2; i <= 4; i++) { a = $i; b = $(i % 3 + 2); c = $((i + 1) % 3 + 2)
+      ux = x[b] - x[a]; uy = y[b] - y[a]; vx = x[c] - x[a]; vy = y[c] - y[a]
+      t = atan2(ux * vy - uy * vx, ux * vx + uy * vy) * 57.29577951308232; if (t < 0) t = -t; if (t < m) m = t }
+      print m }' "$1" "$2"
+}
+ge 30 "$(small m30.node m30.ele "$first")" && ok || bad "--report: triangle $first of m30.ele is not below 30 degrees"
+expect "--report lists VTU numbers" 0 '' "numbered from 0 as the files: $((first - 1)) " -- "$lh" mesh la.poly --min-angle 30 -o m30.vtu --report
+
+# quality report and SVG of meshes near +-DBL_MAX, or mixing 1e300 and 1e-300: the
+# angles were NaN (converted to int: undefined), the SVG's viewBox "... -nan"; now the
+# angles are right and the DBL_MAX square draws as the square of +-(1 - 2^-53)
+mkdir -p big unit
+printf '4 2 0 0\n1 -%s -%s\n2 %s -%s\n3 %s %s\n4 -%s %s\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' \
+  1.7976931348623157e+308 1.7976931348623157e+308 1.7976931348623157e+308 1.7976931348623157e+308 \
+  1.7976931348623157e+308 1.7976931348623157e+308 1.7976931348623157e+308 1.7976931348623157e+308 > big/sq.poly
+sed 's/1\.7976931348623157e+308/0.99999999999999989/g' big/sq.poly > unit/sq.poly
+expect "DBL_MAX square --quality" 0 '' '^Angles: smallest 45, largest 90 degrees$' -- "$lh" mesh big/sq.poly --quality
+grep -q '^   40 -  50:         4 ' out.txt && grep -q '^    0 -  10:         0    |   90 - 100:         2$' out.txt &&
+  ! grep -qi nan out.txt && ok || bad "DBL_MAX square: $(cat out.txt)"
+printf '5 2 0 0\n1 -1e300 -1e300\n2 1e300 -1e300\n3 1e300 1e300\n4 -1e300 1e300\n5 1e-300 1e-300\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' > mixed.poly
+expect "1e300 square, 1e-300 centre --quality" 0 '' '^Angles: smallest 45, largest 90 degrees$' -- "$lh" mesh mixed.poly --quality
+grep -q '^   40 -  50:         8 ' out.txt && grep -q '^    0 -  10:         0    |   90 - 100:         4$' out.txt &&
+  ! grep -qi nan out.txt && ok || bad "mixed: $(cat out.txt)"
+(cd big && "$lh" mesh sq.poly --quality -o sq.svg -q) && (cd unit && "$lh" mesh sq.poly --quality -o sq.svg -q) && ok || bad "DBL_MAX square -o svg failed"
+same "DBL_MAX square SVG = unit square SVG" "$(cmp -s big/sq.svg unit/sq.svg && echo same)" "same"
+grep -q 'viewBox="0 -1250 11000 12250"' big/sq.svg && ok || bad "DBL_MAX square viewBox: $(grep -o 'viewBox="[^"]*"' big/sq.svg)"
 expect "--report with -o" 0 '' '^Mesh: ' -- "$lh" mesh A.poly -o r.off --report
 grep -q '^r\.off:' out.txt && bad "--report: the summary line too" || ok
 expect "-q" 0 '' '' -- "$lh" mesh A.poly -o q.off -q

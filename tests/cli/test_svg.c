@@ -8,6 +8,8 @@
 #include "lifthull.h"
 #include "svg.h"
 
+#include <float.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -181,10 +183,65 @@ LH_TEST(write_error)
     fclose(f);
 }
 
+/* Writes sites xy (n, drawn with the triangles and neighbours of t) to path; returns
+ * the file's contents (malloc'ed) and size. */
+static char *draw_with(lh_test_state *lh_t_, const char *path, size_t n, const double *xy, const lh_tri *t,
+                       size_t *size)
+{
+    lh_cli_svg s = {n, xy, lh_tri_count(t), lh_tri_simplices(t), lh_tri_neighbors(t), 1, 1, 1, 1, "scaled"};
+    FILE *f = fopen(path, "w");
+    LH_EXPECT_TRUE(f != NULL);
+    if (!f) return NULL;
+    LH_EXPECT_EQ_INT(lh_cli_svg_write(f, &s), 0);
+    LH_EXPECT_EQ_INT(fclose(f), 0);
+    return slurp(path, size);
+}
+
+/* The picture is drawn from the sites multiplied by a power of two: the square with
+ * its centre scaled by 2^1000 and 2^-1070 (subnormal), and the square of +-DBL_MAX
+ * (= +-(1 - 2^-53) 2^1024), draw exactly as their unscaled copies (at DBL_MAX the
+ * viewBox was "... -nan" and every path coordinate garbage). The square of +-10^300
+ * with a centre at 10^-300 draws the same as with the centre at 0. */
+LH_TEST(extreme_scales_draw_as_the_unit_scale)
+{
+    static const double unit[] = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5};
+    const double c = 0x1.fffffffffffffp-1;
+    const double sym[] = {-c, -c, c, -c, c, c, -c, c, 0, 0};
+    const double M = DBL_MAX, dmax[] = {-M, -M, M, -M, M, M, -M, M, 0, 0};
+    const double e = 1e300, tiny = 1e-300, mixed[] = {-e, -e, e, -e, e, e, -e, e, tiny, tiny},
+                 zero[] = {-e, -e, e, -e, e, e, -e, e, 0, 0};
+    lh_tri *tu = NULL, *ts = NULL;
+    LH_ASSERT_EQ_INT(lh_delaunay(2, 5, unit, NULL, &tu), LH_OK);
+    LH_ASSERT_EQ_INT(lh_delaunay(2, 5, sym, NULL, &ts), LH_OK);
+    size_t nu = 0, n2 = 0;
+    char *ref = draw_with(lh_t_, "test_svg_unit.svg", 5, unit, tu, &nu);
+    for (int k = 0; k < 2; k++) {
+        double xy[10];
+        for (int i = 0; i < 10; i++) xy[i] = ldexp(unit[i], k ? -1070 : 1000);
+        char *got = draw_with(lh_t_, k ? "test_svg_2m1070.svg" : "test_svg_2p1000.svg", 5, xy, tu, &n2);
+        LH_EXPECT_TRUE(ref && got && nu == n2 && !memcmp(ref, got, nu));
+        free(got);
+    }
+    free(ref);
+    ref = draw_with(lh_t_, "test_svg_sym.svg", 5, sym, ts, &nu);
+    char *got = draw_with(lh_t_, "test_svg_dblmax.svg", 5, dmax, ts, &n2);
+    LH_EXPECT_TRUE(ref && got && nu == n2 && !memcmp(ref, got, nu));
+    LH_EXPECT_TRUE(got && strstr(got, "viewBox=\"0 -600 11000 11600\"") != NULL);
+    free(ref);
+    free(got);
+    ref = draw_with(lh_t_, "test_svg_zero.svg", 5, zero, ts, &nu);
+    got = draw_with(lh_t_, "test_svg_mixed.svg", 5, mixed, ts, &n2);
+    LH_EXPECT_TRUE(ref && got && nu == n2 && !memcmp(ref, got, nu));
+    free(ref);
+    free(got);
+    lh_tri_free(tu);
+    lh_tri_free(ts);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {LH_CASE(square_with_centre), LH_CASE(neighbors_computed),
                                          LH_CASE(no_triangles), LH_CASE(ten_thousand_sites),
-                                         LH_CASE(write_error)};
+                                         LH_CASE(write_error), LH_CASE(extreme_scales_draw_as_the_unit_scale)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -36,7 +36,23 @@ cd ..
 fresh A.poly
 expect "-pq30V" 0 '' '^Angles: smallest (3[0-9]|[4-9][0-9])' -- "$lh" triangle -pq30V A.poly
 matches out.txt '^Triangles below the bounds: 0$' && ok || bad "-V: bad triangles line: $(cat out.txt)"
+# -V numbers the triangles below the bounds as the .ele: from 1, from 0 with -z
+cp "$data/la.poly" .
+expect "-pq30V la.poly" 0 '' '^Triangles below the bounds: [0-9]+, numbered from 1 as the files: ' -- "$lh" triangle -pq30V la.poly
+one="$(sed -nE 's/.*numbered from 1 as the files: ([0-9]+).*/\1/p' out.txt)"
+expect "-pzq30V la.poly" 0 '' "^Triangles below the bounds: [0-9]+, numbered from 0 as the files: $((one - 1)) " -- "$lh" triangle -pzq30V la.poly
 expect "-q41 refused" 2 "the angle bound must be 0\.\.40 degrees" '' -- "$lh" triangle -pq41 A.poly
+# -S beyond any size_t (1e30, 1e400) is no limit: the same mesh as without -S (it
+# became a budget of 0, UB in the conversion); -S alone is 0, as Triangle; a sign is
+# refused
+expect "-pq30Q" 0 '' '' -- "$lh" triangle -pq30Q A.poly
+mv A.1.ele unbounded.ele
+expect "-pq30S1e30" 0 '' '^A\.1: 78 points, 89 triangles \(49 Steiner points\)' -- "$lh" triangle -pq30S1e30 A.poly
+same "-S1e30 = no -S" "$(cmp -s A.1.ele unbounded.ele && echo same)" "same"
+expect "-pq30S1e400" 0 '' '^A\.1: 78 points, 89 triangles \(49 Steiner points\)' -- "$lh" triangle -pq30S1e400 A.poly
+expect "-pq30S10" 0 '' '^A\.1: 39 points, 39 triangles \(10 Steiner points\)' -- "$lh" triangle -pq30S10 A.poly
+expect "-pq30S" 0 '' '^A\.1: 29 points, 29 triangles \(0 Steiner points\)' -- "$lh" triangle -pq30S A.poly
+expect "-S-1 refused" 2 "^lifthull triangle: -S takes a count of Steiner points \(0 or more\), not '-1'$" '' -- "$lh" triangle -pq30S-1 A.poly
 cd ..
 
 # -z: everything from 0; -e, -n: the .edge and .neigh files
@@ -134,6 +150,35 @@ expect "-r bad .ele" 3 '^bad\.ele:3:' '' -- "$lh" triangle -r bad
 cp bbox.1.node nothere.node
 expect "-r missing .ele" 3 '^nothere\.ele: No such file' '' -- "$lh" triangle -r nothere.node
 absent bad.1.node short.1.node
+cd ..
+
+# -r with -a or -q on a mesh lifthull wrote: Steiner points on the old boundary were
+# dropped as if removed, leaving triangles on point -1 (a double free). The union is
+# kept, every corner is a point of the .node, and every triangle meets -a.
+# mesh_sum FILE: "points triangles lowest highest total-area largest-area" of FILE.node/.ele
+mesh_sum() {
+  awk 'FNR == 1 { f++; if (f == 1) np = $1; else nt = $1; next }
+       f == 1 && NF { x[$1] = $2; y[$1] = $3 }
+       f == 2 && NF { for (i = 2; i <= 4; i++) { if (lo == "" || $i < lo) lo = $i; if ($i > hi) hi = $i }
+                      a = ((x[$3] - x[$2]) * (y[$4] - y[$2]) - (y[$3] - y[$2]) * (x[$4] - x[$2])) / 2
+                      s += a; if (a > mx) mx = a }
+       END { printf "%d %d %d %d %.9g %.9g\n", np, nt, lo, hi, s, mx }' "$1.node" "$1.ele"
+}
+fresh box.poly face.poly
+expect "-pcQ box.poly" 0 '' '' -- "$lh" triangle -pcQ box.poly
+expect "-rpa0.2 box.1" 0 '' '^box\.2: ' -- "$lh" triangle -rpa0.2 box.1
+read -r np nt lo hi total big <<< "$(mesh_sum box.2)"
+same "-rpa0.2: corners are points 1..$np" "$lo $((hi <= np))" "1 1"
+same "-rpa0.2: the union of box.1 kept" "$total" "$(mesh_sum box.1 | cut -d' ' -f5)"
+same "-rpa0.2: every triangle at most 0.2" "$(awk -v b="$big" 'BEGIN { print (b <= 0.2) }')" "1"
+expect "-pQ face.poly" 0 '' '' -- "$lh" triangle -pQ face.poly
+for sw in -rq30 -rpq30 -ra20; do
+  rm -f face.2.*
+  expect "$sw face.1" 0 '' '^face\.2: ' -- "$lh" triangle "$sw" face.1
+  read -r np nt lo hi total big <<< "$(mesh_sum face.2)"
+  same "$sw face.1: corners are points 1..$np" "$lo $((hi <= np))" "1 1"
+  same "$sw face.1: the union of face.1 kept" "$total" "$(mesh_sum face.1 | cut -d' ' -f5)"
+done
 cd ..
 
 # usage errors: exit 2, the switch named
