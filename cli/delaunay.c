@@ -31,7 +31,7 @@ static const char help[] =
     "             it (k+1 indices a simplex) instead of failing\n"
     "  -q         no progress line (shown on a terminal after 2 s)\n"
     "  -o FILE    write FILE, whole or not at all; an existing FILE needs -f\n"
-    "  --threads N  insert with N threads (0: one per CPU; default 1); the output\n"
+    "  --threads N  insert with N threads (default 0: one per CPU); the output\n"
     "             is the same, byte for byte\n"
     "\n"
     "examples:\n"
