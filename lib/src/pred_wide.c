@@ -2,7 +2,9 @@
  * pred_wide.c — the wide-exponent filter: the floating-point filter's determinant
  * and error bound evaluated on numbers m * 2^e with a double m and an integer e, so
  * that no product overflows or underflows whatever the magnitudes (1e+300 beside
- * 5e-324). It runs only where the double filter's band ends, before the exact stage.
+ * 5e-324). It runs where the double filter could not decide, before the exact stage,
+ * translated to the point that makes the expansion cancel least (pivot() below), and
+ * in plain doubles when the entries allow.
  *
  * Error bound (Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed.,
  * 3.1 and 3.3; the derivation of docs/predicates.md, "The filter's error bound").
@@ -104,26 +106,116 @@ static void expand(const lh__subsets *sub, int n, const wide *e, wide *det, wide
     *perm = lay[n & 1][1][top];
 }
 
+/* The same expansion in doubles, valid when no product can overflow or underflow. */
+static void expand_dbl(const lh__subsets *sub, int n, const double *e, double *det, double *perm)
+{
+    double lay[2][2][LH__LAYER_SLOTS];
+    for (int r = 0; r < n; r++) {
+        lay[1][0][sub->slot[1 << r]] = e[r * n];
+        lay[1][1][sub->slot[1 << r]] = fabs(e[r * n]);
+    }
+    for (int s = 2; s <= n; s++) {
+        double(*cur)[LH__LAYER_SLOTS] = lay[s & 1], (*prev)[LH__LAYER_SLOTS] = lay[(s - 1) & 1];
+        for (int t = 0; t < sub->count[s] && sub->by_size[s][t] < (1 << n); t++) {
+            int mask = sub->by_size[s][t], pos = 0;
+            double acc = 0, acc_abs = 0;
+            for (int r = 0; r < n; r++) {
+                if (!(mask & (1 << r))) continue;
+                int j = sub->slot[mask ^ (1 << r)];
+                double x = e[r * n + s - 1], term = x * prev[0][j];
+                acc = ((pos + s - 1) & 1) ? acc - term : acc + term;
+                acc_abs = acc_abs + fabs(x) * prev[1][j];
+                pos++;
+            }
+            cur[0][sub->slot[mask]] = acc;
+            cur[1][sub->slot[mask]] = acc_abs;
+        }
+    }
+    int top = sub->slot[(1 << n) - 1];
+    *det = lay[n & 1][0][top];
+    *perm = lay[n & 1][1][top];
+}
+
+/* The row to subtract from the others: the point k minimising the product over i of
+ * max_c |p_i[c] - p_k[c]| (compared by binary exponents), so that a cell with most of
+ * its points in a small cluster and one far away is translated to the cluster, where
+ * its small rows are formed without rounding and the expansion cancels little. */
+static int pivot(int dim, int rows, const double *const *pts)
+{
+    int best = 0;
+    long best_sum = 0;
+    for (int k = 0; k < rows; k++) {
+        long sum = 0;
+        for (int i = 0; i < rows; i++) {
+            if (i == k) continue;
+            double most = 0;
+            for (int c = 0; c < dim; c++) most = fmax(most, fabs(pts[i][c] - pts[k][c]));
+            sum += most == 0 ? -1100 : !isfinite(most) ? 1100 : ilogb(most);
+        }
+        if (k == 0 || sum < best_sum) {
+            best = k;
+            best_sum = sum;
+        }
+    }
+    return best;
+}
+
+/* Whether every nonzero |x| of the n x n entries lies in [2^-100, 2^100] (the lifted
+ * column, when present: [2^-200, 2^200]): then every product of the expansion lies in
+ * [2^-1000, 2^1000] and every partial sum below 9! 2^1000, so doubles hold them. */
+static int in_band(int n, int dim, int lifted, const double *e)
+{
+    for (int i = 0; i < n * n; i++) {
+        double a = fabs(e[i]), lim = lifted && i % n == dim ? 0x1p200 : 0x1p100;
+        if (a != 0 && !(a >= 1 / lim && a <= lim)) return 0;
+    }
+    return 1;
+}
+
 int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
                   int *sign)
 {
-    int n = dim + lifted; /* rows p_1..p_n minus p_0 */
+    int n = dim + lifted; /* rows p_i - p_k for i != k */
+    int k = pivot(dim, n + 1, pts);
+    /* Subtracting row k of the homogeneous matrix from the others and expanding along
+     * the column of ones leaves (-1)^k times the determinant of these rows. */
+    int flip = k & 1;
+    int g = n * (n + 1) / 2 - 1 + dim + 2;
+    double ed[(LH__MAXN - 1) * (LH__MAXN - 1)];
+    for (int i = 0, r = 0; i <= n; i++) {
+        if (i == k) continue;
+        double lift = 0;
+        for (int c = 0; c < dim; c++) {
+            double diff = pts[i][c] - pts[k][c];
+            ed[r * n + c] = diff;
+            lift += diff * diff;
+        }
+        if (lifted) ed[r * n + dim] = lift;
+        r++;
+    }
+    if (in_band(n, dim, lifted, ed)) {
+        double det, perm;
+        expand_dbl(sub, n, ed, &det, &perm);
+        if (perm == 0 || !(fabs(det) > perm * (4.0 * (g + 2) * 0x1p-53))) return 0;
+        *sign = (det > 0) != flip ? 1 : -1;
+        return 1;
+    }
     wide e[(LH__MAXN - 1) * (LH__MAXN - 1)];
-    for (int i = 0; i < n; i++) {
+    for (int i = 0, r = 0; i <= n; i++) {
+        if (i == k) continue;
         wide lift = {0, 0};
         for (int c = 0; c < dim; c++) {
-            wide x = w_make(pts[i + 1][c], 0), y = w_make(-pts[0][c], 0);
-            wide diff = w_add(x, y);
-            if (c < n) e[i * n + c] = diff;
+            wide diff = w_add(w_make(pts[i][c], 0), w_make(-pts[k][c], 0));
+            e[r * n + c] = diff;
             if (lifted) lift = w_add(lift, w_mul(diff, diff));
         }
-        if (lifted) e[i * n + dim] = lift;
+        if (lifted) e[r * n + dim] = lift;
+        r++;
     }
     wide det, perm;
     expand(sub, n, e, &det, &perm);
-    int g = n * (n + 1) / 2 - 1 + dim + 2;
     wide bound = w_mul(perm, w_make(4.0 * (g + 2), -53));
     if (perm.m == 0 || !w_abs_greater(det, bound)) return 0;
-    *sign = det.m > 0 ? 1 : -1;
+    *sign = (det.m > 0) != flip ? 1 : -1;
     return 1;
 }
