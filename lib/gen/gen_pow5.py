@@ -18,6 +18,8 @@ q > 308 one of at least 10^309 (beyond DBL_MAX).
 """
 import sys
 
+import gen_check
+
 QMIN, QMAX = -342, 308
 
 
@@ -62,28 +64,7 @@ def generate():
 
 
 def main(argv):
-    check = "--check" in argv
-    paths = [a for a in argv[1:] if a != "--check"]
-    if len(paths) != 1:
-        sys.stderr.write("usage: gen_pow5.py [--check] OUTPUT\n")
-        return 2
-    text = generate()
-    if check:
-        try:
-            with open(paths[0]) as f:
-                same = f.read() == text
-        except OSError as e:
-            sys.stderr.write("gen_pow5.py: %s\n" % e)
-            return 1
-        if not same:
-            sys.stderr.write("%s differs from what lib/gen/gen_pow5.py writes; "
-                             "regenerate it\n" % paths[0])
-            return 1
-        print("%s matches the generator" % paths[0])
-        return 0
-    with open(paths[0], "w") as f:
-        f.write(text)
-    return 0
+    return gen_check.main(argv, generate)
 
 
 if __name__ == "__main__":
