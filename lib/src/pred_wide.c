@@ -25,6 +25,7 @@
  */
 #include "pred_internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 
@@ -136,6 +137,97 @@ static void expand_dbl(const lh__subsets *sub, int n, const double *e, double *d
     *perm = lay[n & 1][1][top];
 }
 
+/* Double-word numbers hi + lo, |lo| <= ulp(hi) / 2 (Joldes, Muller, Popescu, "Tight and
+ * rigorous error bounds for basic building blocks of double-word arithmetic", ACM TOMS
+ * 44(2), 2017): the sum below is their AccurateDWPlusDW (relative error at most
+ * 3u^2 / (1 - 4u)), the product their DWTimesDW1 (at most 7u^2), exact transforms by
+ * Knuth's TwoSum and Dekker's TwoProduct. Valid without overflow or underflow, which
+ * the band of dd_band() excludes, and only under round-to-nearest double evaluation. */
+typedef struct dword {
+    double hi, lo;
+} dword;
+
+static dword two_sum(double a, double b)
+{
+    double s = a + b, bb = s - a;
+    dword r = {s, (a - (s - bb)) + (b - bb)};
+    return r;
+}
+
+static dword fast_two_sum(double a, double b) /* |a| >= |b| or a == 0 */
+{
+    double s = a + b;
+    dword r = {s, b - (s - a)};
+    return r;
+}
+
+static void split(double a, double *hi, double *lo)
+{
+    double c = 134217729.0 * a; /* 2^27 + 1 */
+    *hi = c - (c - a);
+    *lo = a - *hi;
+}
+
+static dword two_prod(double a, double b)
+{
+    double p = a * b, ah, al, bh, bl;
+    split(a, &ah, &al);
+    split(b, &bh, &bl);
+    dword r = {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+    return r;
+}
+
+static dword dw_add(dword x, dword y)
+{
+    dword s = two_sum(x.hi, y.hi), t = two_sum(x.lo, y.lo);
+    dword v = fast_two_sum(s.hi, s.lo + t.hi);
+    return fast_two_sum(v.hi, t.lo + v.lo);
+}
+
+static dword dw_mul(dword x, dword y)
+{
+    dword c = two_prod(x.hi, y.hi);
+    return fast_two_sum(c.hi, c.lo + (x.hi * y.lo + x.lo * y.hi));
+}
+
+/* The expansion on double-word entries: the determinant, and in doubles the permanent
+ * of |hi| + |lo|. */
+static void expand_dw(const lh__subsets *sub, int n, const dword *e, dword *det, double *perm)
+{
+    dword lay[2][LH__LAYER_SLOTS];
+    double lay_abs[2][LH__LAYER_SLOTS];
+    for (int r = 0; r < n; r++) {
+        lay[1][sub->slot[1 << r]] = e[r * n];
+        lay_abs[1][sub->slot[1 << r]] = fabs(e[r * n].hi) + fabs(e[r * n].lo);
+    }
+    for (int s = 2; s <= n; s++) {
+        dword *cur = lay[s & 1], *prev = lay[(s - 1) & 1];
+        double *cur_abs = lay_abs[s & 1], *prev_abs = lay_abs[(s - 1) & 1];
+        for (int t = 0; t < sub->count[s] && sub->by_size[s][t] < (1 << n); t++) {
+            int mask = sub->by_size[s][t], pos = 0;
+            dword acc = {0, 0};
+            double acc_abs = 0;
+            for (int r = 0; r < n; r++) {
+                if (!(mask & (1 << r))) continue;
+                int j = sub->slot[mask ^ (1 << r)];
+                dword x = e[r * n + s - 1], term = dw_mul(x, prev[j]);
+                if ((pos + s - 1) & 1) {
+                    term.hi = -term.hi;
+                    term.lo = -term.lo;
+                }
+                acc = dw_add(acc, term);
+                acc_abs = acc_abs + (fabs(x.hi) + fabs(x.lo)) * prev_abs[j];
+                pos++;
+            }
+            cur[sub->slot[mask]] = acc;
+            cur_abs[sub->slot[mask]] = acc_abs;
+        }
+    }
+    int top = sub->slot[(1 << n) - 1];
+    *det = lay[n & 1][top];
+    *perm = lay_abs[n & 1][top];
+}
+
 /* The row to subtract from the others: the point k minimising the product over i of
  * max_c |p_i[c] - p_k[c]| (compared by binary exponents), so that a cell with most of
  * its points in a small cluster and one far away is translated to the cluster, where
@@ -163,13 +255,52 @@ static int pivot(int dim, int rows, const double *const *pts)
 /* Whether every nonzero |x| of the n x n entries lies in [2^-100, 2^100] (the lifted
  * column, when present: [2^-200, 2^200]): then every product of the expansion lies in
  * [2^-1000, 2^1000] and every partial sum below 9! 2^1000, so doubles hold them. */
-static int in_band(int n, int dim, int lifted, const double *e)
+static int in_band(int n, int dim, int lifted, const double *e, int b)
 {
     for (int i = 0; i < n * n; i++) {
-        double a = fabs(e[i]), lim = lifted && i % n == dim ? 0x1p200 : 0x1p100;
+        double a = fabs(e[i]), lim = ldexp(1.0, lifted && i % n == dim ? 2 * b : b);
         if (a != 0 && !(a >= 1 / lim && a <= lim)) return 0;
     }
     return 1;
+}
+
+/* The double-word stage for rows p_i - p_k (flip: k odd): the entries formed exactly
+ * (a difference of doubles and a sum of squares, each as a double word), every nonzero
+ * one in [2^-50, 2^50] (lifted: squared), so that every product of the expansion and
+ * every rounding error of one lies far inside the normal range. Each of the g steps of
+ * a product's path multiplies its relative error by at most 1 + 8u^2 (the two
+ * operations' bounds above; the entries add none but the lifted sum's d - 1
+ * additions), so |computed - det| <= ((1 + 8u^2)^g - 1) P, below 32 (g + 2) u^2 P. */
+static int dw_sign(const lh__subsets *sub, int n, int dim, int lifted, const double *const *pts,
+                   int k, int flip, int *sign)
+{
+#if FLT_EVAL_METHOD == 0
+    dword e[(LH__MAXN - 1) * (LH__MAXN - 1)];
+    double mag[(LH__MAXN - 1) * (LH__MAXN - 1)];
+    for (int i = 0, r = 0; i <= n; i++) {
+        if (i == k) continue;
+        dword lift = {0, 0};
+        for (int c = 0; c < dim; c++) {
+            dword diff = two_sum(pts[i][c], -pts[k][c]);
+            e[r * n + c] = diff;
+            if (lifted) lift = dw_add(lift, dw_mul(diff, diff));
+        }
+        if (lifted) e[r * n + dim] = lift;
+        r++;
+    }
+    for (int i = 0; i < n * n; i++) mag[i] = e[i].hi;
+    if (!in_band(n, dim, lifted, mag, 50)) return 0;
+    int g = n * (n + 1) / 2 - 1 + dim + 2;
+    dword det;
+    double perm;
+    expand_dw(sub, n, e, &det, &perm);
+    if (perm == 0 || !(fabs(det.hi) > perm * (32.0 * (g + 2) * 0x1p-106))) return 0;
+    *sign = (det.hi > 0) != flip ? 1 : -1;
+    return 1;
+#else
+    (void)sub, (void)n, (void)dim, (void)lifted, (void)pts, (void)k, (void)flip, (void)sign;
+    return 0;
+#endif
 }
 
 int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
@@ -193,12 +324,14 @@ int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *con
         if (lifted) ed[r * n + dim] = lift;
         r++;
     }
-    if (in_band(n, dim, lifted, ed)) {
+    if (in_band(n, dim, lifted, ed, 100)) {
         double det, perm;
         expand_dbl(sub, n, ed, &det, &perm);
-        if (perm == 0 || !(fabs(det) > perm * (4.0 * (g + 2) * 0x1p-53))) return 0;
-        *sign = (det > 0) != flip ? 1 : -1;
-        return 1;
+        if (perm != 0 && fabs(det) > perm * (4.0 * (g + 2) * 0x1p-53)) {
+            *sign = (det > 0) != flip ? 1 : -1;
+            return 1;
+        }
+        return dw_sign(sub, n, dim, lifted, pts, k, flip, sign);
     }
     wide e[(LH__MAXN - 1) * (LH__MAXN - 1)];
     for (int i = 0, r = 0; i <= n; i++) {
