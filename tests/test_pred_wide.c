@@ -59,32 +59,33 @@ LH_TEST(claimed_signs_are_exact)
     lh_pred_free(ctx);
 }
 
-/* Triangulates n such sites in R^d: exactly valid, and at most `percent` of the
- * predicate calls reach the exact stage (all of them did without this filter). */
+/* Triangulates the n sites x in R^d: exactly valid, and at most per_mille / 1000 of
+ * the predicate calls reach the exact stage. */
+static void few_exact(lh_test_state *lh_t_, int d, size_t n, const double *x, unsigned per_mille)
+{
+    lh_options opt;
+    lh_options_default(&opt);
+    lh_tri *t = NULL;
+    LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, &opt, &t), LH_OK);
+    char msg[256] = "";
+    LH_EXPECT_EQ_INT(lh_check_delaunay(d, n, x, lh_tri_count(t), lh_tri_simplices(t), NULL, msg,
+                                       sizeof msg),
+                     LH_OK);
+    lh_pred_counters c;
+    lh_tri_pred_counters(t, &c);
+    LH_NOTE("d %d n %zu: calls %llu, exact %llu, zero %llu", d, n, (unsigned long long)c.calls,
+            (unsigned long long)c.exact_exits, (unsigned long long)c.zero_results);
+    LH_EXPECT_LE_U64(c.exact_exits * 1000, c.calls * per_mille);
+    lh_tri_free(t);
+}
+
+/* n mixed-magnitude sites in R^d (all their calls were exact without this filter). */
 static void triangulate_mixed(lh_test_state *lh_t_, int d, size_t n, unsigned percent)
 {
     double *x = malloc(n * (size_t)d * sizeof *x);
     LH_ASSERT_TRUE(x != NULL);
     for (size_t i = 0; i < n * (size_t)d; i++) x[i] = mixed_value();
-    lh_options opt;
-    lh_options_default(&opt);
-    lh_tri *t = NULL;
-    lh_status st = lh_delaunay(d, n, x, &opt, &t);
-    LH_EXPECT_EQ_INT(st, LH_OK);
-    if (st == LH_OK) {
-        char msg[256] = "";
-        LH_EXPECT_EQ_INT(lh_check_delaunay(d, n, x, lh_tri_count(t), lh_tri_simplices(t), NULL,
-                                           msg, sizeof msg),
-                         LH_OK);
-        lh_pred_counters c;
-        lh_tri_pred_counters(t, &c);
-        LH_NOTE("d %d n %zu: calls %llu, exact %llu, zero %llu, sos %llu %llu", d, n,
-                (unsigned long long)c.calls, (unsigned long long)c.exact_exits,
-                (unsigned long long)c.zero_results, (unsigned long long)c.sos_fast,
-                (unsigned long long)c.sos_general);
-        LH_EXPECT_LE_U64(c.exact_exits * 100, c.calls * percent);
-    }
-    lh_tri_free(t);
+    few_exact(lh_t_, d, n, x, 10 * percent);
     free(x);
 }
 
@@ -92,9 +93,9 @@ LH_TEST(mixed_magnitudes_triangulate_without_the_exact_stage)
 {
     /* The rest are near-cancellations: large terms that cancel exactly, leaving a
      * determinant far below the rounding error of the large ones. */
-    triangulate_mixed(lh_t_, 8, 20, 5);
-    triangulate_mixed(lh_t_, 5, 60, 25);
-    triangulate_mixed(lh_t_, 3, 200, 40);
+    triangulate_mixed(lh_t_, 8, 20, 1);
+    triangulate_mixed(lh_t_, 5, 60, 5);
+    triangulate_mixed(lh_t_, 3, 200, 15);
 }
 
 /* n sites in R^d from 10 Gaussian clusters with standard deviations 1e-6 .. 1e-2
@@ -122,20 +123,7 @@ LH_TEST(clustered_sites_avoid_the_exact_stage)
     enum { N = 300, D = 5 };
     static double x[N * D];
     clustered(D, N, x);
-    lh_options opt;
-    lh_options_default(&opt);
-    lh_tri *t = NULL;
-    LH_ASSERT_EQ_INT(lh_delaunay(D, N, x, &opt, &t), LH_OK);
-    char msg[256] = "";
-    LH_EXPECT_EQ_INT(lh_check_delaunay(D, N, x, lh_tri_count(t), lh_tri_simplices(t), NULL, msg,
-                                       sizeof msg),
-                     LH_OK);
-    lh_pred_counters c;
-    lh_tri_pred_counters(t, &c);
-    LH_NOTE("clusters 5D: calls %llu, exact %llu", (unsigned long long)c.calls,
-            (unsigned long long)c.exact_exits);
-    LH_EXPECT_LE_U64(c.exact_exits * 100, c.calls); /* at most 1% */
-    lh_tri_free(t);
+    few_exact(lh_t_, D, N, x, 10); /* at most 1% */
 }
 
 /* The grid {0,1,2}^5 with every coordinate x moved to x (1 + 1e-12 u) (0 to 1e-12 u),
@@ -150,20 +138,7 @@ LH_TEST(perturbed_grid_avoids_the_exact_stage)
             double u = (double)(next() >> 11) * 0x1p-52 - 1.0;
             x[i * D + j] = v % 3 ? (v % 3) * (1.0 + 1e-12 * u) : 1e-12 * u;
         }
-    lh_options opt;
-    lh_options_default(&opt);
-    lh_tri *t = NULL;
-    LH_ASSERT_EQ_INT(lh_delaunay(D, N, x, &opt, &t), LH_OK);
-    char msg[256] = "";
-    LH_EXPECT_EQ_INT(lh_check_delaunay(D, N, x, lh_tri_count(t), lh_tri_simplices(t), NULL, msg,
-                                       sizeof msg),
-                     LH_OK);
-    lh_pred_counters c;
-    lh_tri_pred_counters(t, &c);
-    LH_NOTE("perturbed grid 5D: calls %llu, exact %llu", (unsigned long long)c.calls,
-            (unsigned long long)c.exact_exits);
-    LH_EXPECT_LE_U64(c.exact_exits * 1000, c.calls); /* at most 0.1% */
-    lh_tri_free(t);
+    few_exact(lh_t_, D, N, x, 1); /* at most 0.1% */
 }
 
 int main(int argc, char **argv)
