@@ -3,12 +3,13 @@
  * and error bound evaluated on numbers m * 2^e with a double m and an integer e, so
  * that no product overflows or underflows whatever the magnitudes (1e+300 beside
  * 5e-324). It runs where the double filter could not decide, before the exact stage,
- * translated to the point that makes the expansion cancel least (pivot() below), and
- * in plain doubles when the entries allow.
+ * translated to the point that makes the expansion cancel least (pivot() below), in
+ * plain doubles when the entries allow, then once more in double-word arithmetic
+ * (dw_sign() below) for near-degenerate input.
  *
  * Error bound (Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed.,
  * 3.1 and 3.3; the derivation of docs/predicates.md, "The filter's error bound").
- * The m x m determinant of rows p_i - p_0 (and |p_i - p_0|^2 for insphere) is
+ * The m x m determinant of rows p_i - p_k (and |p_i - p_k|^2 for insphere) is
  * expanded along columns with every minor of the leading columns computed once per
  * row subset. A product's path through the expansion passes at most
  *     g = m(m+1)/2 - 1 + (d + 2)
@@ -252,9 +253,9 @@ static int pivot(int dim, int rows, const double *const *pts)
     return best;
 }
 
-/* Whether every nonzero |x| of the n x n entries lies in [2^-100, 2^100] (the lifted
- * column, when present: [2^-200, 2^200]): then every product of the expansion lies in
- * [2^-1000, 2^1000] and every partial sum below 9! 2^1000, so doubles hold them. */
+/* Whether every nonzero |x| of the n x n entries lies in [2^-b, 2^b] (the lifted
+ * column, when present: [2^-2b, 2^2b]). With b = 100 every product of the expansion
+ * lies in [2^-1000, 2^1000] and every partial sum below 9! 2^1000: doubles hold them. */
 static int in_band(int n, int dim, int lifted, const double *e, int b)
 {
     for (int i = 0; i < n * n; i++) {
@@ -266,8 +267,10 @@ static int in_band(int n, int dim, int lifted, const double *e, int b)
 
 /* The double-word stage for rows p_i - p_k (flip: k odd): the entries formed exactly
  * (a difference of doubles and a sum of squares, each as a double word), every nonzero
- * one in [2^-50, 2^50] (lifted: squared), so that every product of the expansion and
- * every rounding error of one lies far inside the normal range. Each of the g steps of
+ * one in [2^-50, 2^50] (lifted: squared), so that every product of the leading words
+ * lies in [2^-500, 2^500] and its rounding error far inside the normal range; an
+ * underflow among the low words costs at most 2^-1074 per operation, far below
+ * u^2 P (P >= 2^-500 when nonzero), absorbed by the factor 4 below. Each of the g steps of
  * a product's path multiplies its relative error by at most 1 + 8u^2 (the two
  * operations' bounds above; the entries add none but the lifted sum's d - 1
  * additions), so |computed - det| <= ((1 + 8u^2)^g - 1) P, below 32 (g + 2) u^2 P. */
