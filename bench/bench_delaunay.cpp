@@ -3,7 +3,7 @@
 //
 // Three modes:
 //
-//   bench_delaunay run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere]
+//   bench_delaunay run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere|clusters|pgrid]
 //       Generates the sites (seeded; identical for every tool): by default N sites uniform
 //       in [0,1)^D; --dist grid or sphere: an integer grid of about N points or N integer
 //       points on one sphere (bench_sites.h). Computes one triangulation in this process
@@ -350,10 +350,10 @@ size_t parse_count(const char *s) {
 }
 
 int cmd_run(int argc, char **argv) {
-    // argv: run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere]
+    // argv: run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere|clusters|pgrid]
     if (argc < 5) {
         std::fprintf(stderr, "usage: bench_delaunay run TOOL D N SEED [--timeout S] "
-                             "[--dist uniform|grid|sphere]\n");
+                             "[--dist uniform|grid|sphere|clusters|pgrid]\n");
         return 1;
     }
     std::string tool = argv[1];
@@ -583,7 +583,7 @@ void suite_usage() {
                  "usage: bench_delaunay suite [--quick] [--rounds R] [--dims 2,3,4,5]\n"
                  "                            [--tools lifthull,cgal_dd,...] [--scale K]\n"
                  "                            [--seed S] [--timeout S]\n"
-                 "       bench_delaunay run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere]\n"
+                 "       bench_delaunay run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere|clusters|pgrid]\n"
                  "       bench_delaunay info   (machine and build facts)\n"
                  "  sizes: (2,10^6) (3,10^6) (4,10^5) (5,2*10^4); --quick divides N by 20 and\n"
                  "  runs 2 rounds (--scale K divides by K); R interleaved rounds (default 3;\n"

@@ -1,5 +1,6 @@
 // bench_sites.cpp — the site distributions declared in bench_sites.h: uniform random
-// sites, integer grids, and exactly cospherical integer points.
+// sites, integer grids, exactly cospherical integer points, and two near-degenerate
+// families: Gaussian clusters of very different widths and perturbed grids.
 #include "bench_sites.h"
 
 #include <algorithm>
@@ -270,12 +271,43 @@ bool sphere_high_sites(int d, size_t n, std::vector<double> *out, std::string *e
     return true;
 }
 
+// 10 Gaussian clusters with standard deviations 10^-6 .. 10^-2 (cluster c: 10^(-6+4c/9))
+// about centres uniform in [0,1)^d; site i belongs to cluster i mod 10.
+std::vector<double> cluster_sites(int d, size_t n, uint64_t seed) {
+    std::mt19937_64 g(seed);
+    std::vector<double> centre(10 * size_t(d));
+    for (double &x : centre) x = double(g() >> 11) * 0x1p-53;
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::vector<double> xyz(n * size_t(d));
+    for (size_t i = 0; i < n; ++i) {
+        size_t c = i % 10;
+        double sigma = std::pow(10.0, -6.0 + 4.0 * double(c) / 9.0);
+        for (int j = 0; j < d; ++j)
+            xyz[i * size_t(d) + size_t(j)] = centre[c * size_t(d) + size_t(j)] + sigma * normal(g);
+    }
+    return xyz;
+}
+
+// The grid of grid_sites, every coordinate x replaced by x (1 + 10^-12 u), u uniform in
+// [-1, 1) (0 by 10^-12 u): near-degenerate, no longer exactly so.
+bool perturbed_grid_sites(int d, size_t n, uint64_t seed, std::vector<double> *out,
+                          std::string *err) {
+    if (!grid_sites(d, n, seed, out, err)) return false;
+    std::mt19937_64 g(seed ^ 0x51ed270b27a1e2b5ULL);
+    for (double &x : *out) {
+        double u = double(g() >> 11) * 0x1p-52 - 1.0;
+        x = x != 0 ? x * (1.0 + 1e-12 * u) : 1e-12 * u;
+    }
+    return true;
+}
 } // namespace
 
 bool site_dist_parse(const std::string &name, SiteDist *out) {
     if (name == "uniform") *out = SiteDist::uniform;
     else if (name == "grid") *out = SiteDist::grid;
     else if (name == "sphere") *out = SiteDist::sphere;
+    else if (name == "clusters") *out = SiteDist::clusters;
+    else if (name == "pgrid") *out = SiteDist::pgrid;
     else return false;
     return true;
 }
@@ -284,6 +316,8 @@ const char *site_dist_name(SiteDist dist) {
     switch (dist) {
     case SiteDist::grid: return "grid";
     case SiteDist::sphere: return "sphere";
+    case SiteDist::clusters: return "clusters";
+    case SiteDist::pgrid: return "pgrid";
     default: return "uniform";
     }
 }
@@ -297,6 +331,8 @@ bool site_make(SiteDist dist, int d, size_t n, uint64_t seed, std::vector<double
     switch (dist) {
     case SiteDist::uniform: *xyz = uniform_sites(d, n, seed); return true;
     case SiteDist::grid: return grid_sites(d, n, seed, xyz, err);
+    case SiteDist::clusters: *xyz = cluster_sites(d, n, seed); return true;
+    case SiteDist::pgrid: return perturbed_grid_sites(d, n, seed, xyz, err);
     case SiteDist::sphere: {
         bool ok = d == 2 ? circle_sites(n, xyz, err)
                 : d == 3 ? sphere3_sites(n, xyz, err)

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-enum class SiteDist { uniform, grid, sphere };
+enum class SiteDist { uniform, grid, sphere, clusters, pgrid };
 
-// "uniform" | "grid" | "sphere" -> *out; false for any other name.
+// "uniform" | "grid" | "sphere" | "clusters" | "pgrid" -> *out; false for any other name.
 bool site_dist_parse(const std::string &name, SiteDist *out);
 const char *site_dist_name(SiteDist dist);
 
@@ -26,6 +26,10 @@ const char *site_dist_name(SiteDist dist);
 //            quaternions of norm R (N = R^2), from 4D on every lattice point of |x|^2 = N.
 //            Every coordinate is an integer below 2^53, so exact in a double, and every
 //            site is checked on the sphere in integer arithmetic.
+//   clusters n sites from 10 Gaussian clusters, standard deviations 10^-6 .. 10^-2, about
+//            centres uniform in [0,1)^d (near-degenerate at every scale between).
+//   pgrid    the grid above with every coordinate x moved to x (1 + 10^-12 u), u uniform in
+//            [-1, 1): near-degenerate, no longer exactly.
 // On failure (sizes the construction cannot reach with exact doubles) returns false and
 // sets *err.
 bool site_make(SiteDist dist, int d, size_t n, uint64_t seed, std::vector<double> *xyz,

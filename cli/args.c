@@ -39,7 +39,7 @@ int lh_cli_args_parse(lh_cli_args *a, const char *cmd, const char *accepted, int
                       int max_files, int argc, char **argv, const char *help)
 {
     memset(a, 0, sizeof *a);
-    a->threads = 1;
+    a->threads = 0; /* every CPU: the output is the same for every count */
     for (int i = 0; i < argc; i++) {
         const char *s = argv[i];
         if (!strcmp(s, "--help") || !strcmp(s, "-h")) {

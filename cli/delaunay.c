@@ -35,7 +35,7 @@ static const char help[] =
     "             inserting or writing)\n"
     "  -o FILE    write FILE, whole or not at all; an existing FILE needs -f\n"
     "  --ascii    a .vtu as text (default: binary, base64 inline)\n"
-    "  --threads N  insert with N threads (0: one per CPU; default 1); the output\n"
+    "  --threads N  insert with N threads (default 0: one per CPU); the output\n"
     "             is the same, byte for byte\n"
     "\n"
     "examples:\n"

@@ -39,7 +39,7 @@ static void usage(FILE *out)
     fprintf(out, "\nevery command: --help (usage and examples). The point commands (delaunay,\n"
                  "voronoi, hull, locate, interpolate, check): --format qhull|node|columns to\n"
                  "read their input files so (default: by name and content), and --threads N\n"
-                 "for the Delaunay triangulation (0: one per CPU; the output is the same).\n"
+                 "for the Delaunay triangulation (default 0: one per CPU; the output is the same).\n"
                  "Manual: docs/lifthull.1\n"
                  "\nexit codes: 0 success, 1 a computation or check failed, 2 usage error,\n"
                  "            3 bad input file\n");

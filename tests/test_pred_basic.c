@@ -123,17 +123,26 @@ LH_TEST(counters_record_the_stage_that_answered)
     LH_EXPECT_EQ_U64(n.grid_exits, 1);
     LH_EXPECT_EQ_U64(n.exact_exits, 0);
     LH_EXPECT_EQ_U64(n.zero_results, 1);
-    /* The classroom example: collinear up to 2^-53, coordinates of mixed granularity,
-     * so only the exact stage can tell. */
+    /* The classroom example: collinear up to 2^-53, coordinates of mixed granularity:
+     * beyond the double filter, decided by the double-word stage (pred_wide.c), which
+     * counts as a filter exit. */
     const double a[2] = {0.5 + 0x1p-53, 0.5}, b[2] = {12, 12}, d[2] = {24, 24};
     const double *abd[3] = {a, b, d};
     LH_EXPECT_EQ_INT(lh_orient(ctx, 2, abd), -1);
+    lh_pred_counters_get(ctx, &n);
+    LH_EXPECT_EQ_U64(n.filter_exits, 2);
+    LH_EXPECT_EQ_U64(n.exact_exits, 0);
+    /* Off the line y = x by 2^-52 at 1, beside points at 2^-70 and 2^70: every
+     * filter stage's bound exceeds the determinant there, so the exact stage decides. */
+    const double e[2] = {1 + 0x1p-52, 1}, f[2] = {0x1p-70, 0x1p-70}, g[2] = {0x1p70, 0x1p70};
+    const double *efg[3] = {e, f, g};
+    LH_EXPECT_EQ_INT(lh_orient(ctx, 2, efg), -1);
     lh_pred_counters_get(ctx, &n);
     LH_EXPECT_EQ_U64(n.exact_exits, 1);
     LH_EXPECT_EQ_INT(lh_insphere_sos(ctx, 3, c.p) != 0, 1);
     lh_pred_counters_get(ctx, &n);
     LH_EXPECT_EQ_U64(n.sos_fast + n.sos_general, 1);
-    LH_EXPECT_EQ_U64(n.calls, 4);
+    LH_EXPECT_EQ_U64(n.calls, 5);
     lh_pred_counters_reset(ctx);
     lh_pred_counters_get(ctx, &n);
     LH_EXPECT_EQ_U64(n.calls, 0);

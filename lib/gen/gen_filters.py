@@ -31,6 +31,8 @@ import re
 import sys
 from fractions import Fraction
 
+import gen_check
+
 U = Fraction(1, 2**53)
 
 
@@ -320,28 +322,7 @@ def generate():
 
 
 def main(argv):
-    check = "--check" in argv
-    paths = [a for a in argv[1:] if a != "--check"]
-    if len(paths) != 1:
-        sys.stderr.write("usage: gen_filters.py [--check] OUTPUT\n")
-        return 2
-    text = generate()
-    if check:
-        try:
-            with open(paths[0]) as f:
-                same = f.read() == text
-        except OSError as e:
-            sys.stderr.write("gen_filters.py: %s\n" % e)
-            return 1
-        if not same:
-            sys.stderr.write("%s differs from what lib/gen/gen_filters.py writes; "
-                             "regenerate it\n" % paths[0])
-            return 1
-        print("%s matches the generator" % paths[0])
-        return 0
-    with open(paths[0], "w") as f:
-        f.write(text)
-    return 0
+    return gen_check.main(argv, generate)
 
 
 if __name__ == "__main__":

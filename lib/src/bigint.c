@@ -83,6 +83,7 @@ void lh__bn_mul(lh__bn *r, const lh__bn *a, const lh__bn *b)
     memset(r->d, 0, (size_t)n * sizeof *r->d);
     for (int i = 0; i < a->n; i++) {
         uint64_t ai = a->d[i], carry = 0;
+        if (!ai) continue; /* r->d[i + b->n] is still 0 from the memset */
         for (int j = 0; j < b->n; j++) {
             /* (2^32-1)^2 + 2*(2^32-1) = 2^64-1: no overflow. */
             uint64_t t = ai * b->d[j] + r->d[i + j] + carry;

@@ -37,12 +37,16 @@ typedef struct lh__token {
     char text[LH_READ_MAX_TOKEN + 1]; /* NUL-terminated WORD */
 } lh__token;
 
+#define LH__SCAN_BLOCK 16384 /* bytes the scanner reads from the FILE at a time */
+
 /* Invariant: c is the byte at (line, col), or EOF past the end; bytes come from
- * pre[pre_pos..pre_len) first, then from f. */
+ * pre[pre_pos..pre_len) first, then from f through block[block_pos..block_len). */
 typedef struct lh__scan {
     FILE *f;
     const unsigned char *pre;
     size_t pre_len, pre_pos;
+    unsigned char block[LH__SCAN_BLOCK];
+    size_t block_len, block_pos;
     int c;
     int read_error; /* ferror(f) was seen: c is EOF */
     int commas;     /* 1: ',' ends a word and is a token of its own */
@@ -78,6 +82,12 @@ lh_status lh__fail_at(lh__scan *s, lh_status st, const lh__token *t, const char 
 
 /* A word that is a whole number for strtod: 1 and *x (possibly infinite or NaN), else 0. */
 int lh__word_double(const lh__token *t, double *x);
+/* text[0..len) (followed by a NUL) as strtod reads it: 1 and *x when strtod would
+ * consume all of it, else 0; the same double, bit for bit (parse_double.c). */
+int lh__parse_double(const char *text, size_t len, double *x);
+/* The fast stages alone: 1 and strtod's *x when they decide, 0 when they cannot
+ * (for tests: every decided value must be strtod's). */
+int lh__parse_fast(const char *text, size_t len, double *x);
 /* A word of an optional sign and decimal digits: 1 and *v (saturated at +-LLONG_MAX,
  * beyond every count and index limit of either index width), else 0. */
 int lh__word_integer(const lh__token *t, long long *v);

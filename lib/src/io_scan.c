@@ -9,12 +9,23 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int fetch(lh__scan *s)
+/* Refills the block from f; the next byte, or EOF (after a read error too). */
+static int refill(lh__scan *s)
 {
+    s->block_pos = 0;
+    s->block_len = fread(s->block, 1, sizeof s->block, s->f);
+    if (s->block_len == 0) {
+        if (ferror(s->f)) s->read_error = 1;
+        return EOF;
+    }
+    return s->block[s->block_pos++];
+}
+
+static inline int fetch(lh__scan *s)
+{
+    if (s->block_pos < s->block_len) return s->block[s->block_pos++];
     if (s->pre_pos < s->pre_len) return s->pre[s->pre_pos++];
-    int c = getc(s->f);
-    if (c == EOF && ferror(s->f)) s->read_error = 1;
-    return c;
+    return refill(s);
 }
 
 void lh__scan_init(lh__scan *s, FILE *f, const unsigned char *pre, size_t pre_len,
@@ -34,7 +45,7 @@ void lh__scan_init(lh__scan *s, FILE *f, const unsigned char *pre, size_t pre_le
     s->c = fetch(s);
 }
 
-void lh__scan_advance(lh__scan *s)
+static inline void advance(lh__scan *s)
 {
     int was = s->c;
     size_t col = s->col;
@@ -49,6 +60,8 @@ void lh__scan_advance(lh__scan *s)
     s->cr_col = (was == '\r' && s->c == '\n') ? col : 0;
 }
 
+void lh__scan_advance(lh__scan *s) { advance(s); }
+
 static int is_blank(int c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 int lh__is_text(int c) { return (c >= 0x20 && c < 0x7f) || is_blank(c) || c == '\n'; }
@@ -58,24 +71,44 @@ int lh__starts_number(int c) { return (c >= '0' && c <= '9') || c == '+' || c ==
 void lh__scan_skip(lh__scan *s, int cross_lines)
 {
     for (;;) {
-        while (is_blank(s->c) || (cross_lines && s->c == '\n')) lh__scan_advance(s);
+        while (is_blank(s->c) || (cross_lines && s->c == '\n')) advance(s);
         if (s->c != '#') return;
         /* A comment may hold any byte but NUL, which the next token reports. */
-        while (s->c != EOF && s->c != '\n' && s->c != 0) lh__scan_advance(s);
+        while (s->c != EOF && s->c != '\n' && s->c != 0) advance(s);
     }
 }
 
 void lh__scan_skip_line(lh__scan *s)
 {
-    while (s->c != EOF && s->c != '\n' && s->c != 0) lh__scan_advance(s);
-    if (s->c == '\n') lh__scan_advance(s);
+    while (s->c != EOF && s->c != '\n' && s->c != 0) advance(s);
+    if (s->c == '\n') advance(s);
 }
 
-static int word_byte(const lh__scan *s)
+/* A text byte that is neither blank nor a line end nor '#' (nor a splitting ','). */
+static inline int word_char(int c, int commas)
 {
-    int c = s->c;
-    return c != EOF && lh__is_text(c) && !is_blank(c) && c != '\n' && c != '#' &&
-           !(s->commas && c == ',');
+    return c > 0x20 && c < 0x7f && c != '#' && !(commas && c == ',');
+}
+
+static inline int word_byte(const lh__scan *s) { return word_char(s->c, s->commas); }
+
+/* Appends to t the word bytes that follow in the block (the pre bytes being used
+ * up), at most up to LH_READ_MAX_TOKEN, advancing over them: advance() for bytes
+ * that are neither '\n' nor '\r', without the per-byte calls. */
+static void take_run(lh__scan *s, lh__token *t)
+{
+    const unsigned char *in = s->block;
+    char *out = t->text;
+    size_t i = s->block_pos, len = t->len, room = LH_READ_MAX_TOKEN - len;
+    size_t stop = s->block_len - i < room ? s->block_len : i + room;
+    if (s->commas) {
+        while (i < stop && word_char(in[i], 1)) out[len++] = (char)in[i++];
+    } else {
+        while (i < stop && word_char(in[i], 0)) out[len++] = (char)in[i++];
+    }
+    t->len = len;
+    s->col += i - s->block_pos;
+    s->block_pos = i;
 }
 
 void lh__scan_next(lh__scan *s, int cross_lines, lh__token *t)
@@ -91,7 +124,7 @@ void lh__scan_next(lh__scan *s, int cross_lines, lh__token *t)
     } else if (s->c == '\n') {
         t->kind = LH__TOK_EOL;
         if (s->cr_col) t->col = s->cr_col;
-        lh__scan_advance(s);
+        advance(s);
     } else if (s->c == 0) {
         t->kind = LH__TOK_NUL;
     } else if (s->commas && s->c == ',') {
@@ -99,7 +132,7 @@ void lh__scan_next(lh__scan *s, int cross_lines, lh__token *t)
         t->text[0] = ',';
         t->text[1] = 0;
         t->len = 1;
-        lh__scan_advance(s);
+        advance(s);
     } else if (!word_byte(s)) {
         t->kind = LH__TOK_BYTE;
     } else {
@@ -111,7 +144,10 @@ void lh__scan_next(lh__scan *s, int cross_lines, lh__token *t)
                 return;
             }
             t->text[t->len++] = (char)s->c;
-            lh__scan_advance(s);
+            s->col++; /* advance(s) for a byte that is neither '\n' nor '\r' */
+            s->cr_col = 0;
+            if (s->pre_pos == s->pre_len) take_run(s, t);
+            s->c = fetch(s);
         }
         t->text[t->len] = 0;
     }
@@ -156,9 +192,7 @@ lh_status lh__expected(lh__scan *s, lh_status st, const lh__token *t, const char
 int lh__word_double(const lh__token *t, double *x)
 {
     if (t->kind != LH__TOK_WORD || t->len == 0) return 0;
-    char *end;
-    *x = strtod(t->text, &end);
-    return end == t->text + t->len;
+    return lh__parse_double(t->text, t->len, x);
 }
 
 int lh__word_integer(const lh__token *t, long long *v)

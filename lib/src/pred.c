@@ -1,7 +1,8 @@
 /*
  * pred.c — the public predicates: filter, then exact stage, then (for *_sos) the
  * perturbation; the context that holds counters and the exact stage's scratch.
- * Stages: lh_filter.gen.h (generated), pred_bound.c, pred_exact.c, pred_sos.c.
+ * Stages: lh_filter.gen.h (generated), pred_bound.c, pred_wide.c, pred_exact.c,
+ * pred_sos.c.
  */
 #include "lh_alloc.h"
 #include "lh_filter.gen.h"
@@ -71,7 +72,9 @@ static int after_filter(lh_pred *ctx, int dim, int lifted, const double *const *
     int s, stage = lh__bound_sign(&ctx->sub, dim, lifted, pts, det, err, &s);
     if (count && stage == LH__BY_GRANULARITY) ctx->count.grid_exits++;
     if (count && stage == LH__BY_RESIDUES) ctx->count.residue_exits++;
-    if (!stage) {
+    if (!stage && lh__wide_sign(&ctx->sub, dim, lifted, pts, &s)) {
+        if (count) ctx->count.filter_exits++;
+    } else if (!stage) {
         if (count) ctx->count.exact_exits++;
         s = lifted ? lh__insphere_exact(ctx, dim, pts) : lh__orient_exact(ctx, dim, pts);
     }

@@ -59,6 +59,11 @@ enum { LH__BY_GRANULARITY = 1, LH__BY_RESIDUES = 2 };
 int lh__bound_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
                    double det, double err, int *sign);
 
+/* The wide-exponent filter (pred_wide.c): 1 with *sign (-1 or +1) when it decides
+ * orient_dim (insphere_dim when `lifted`) of pts, 0 when the exact stage must. */
+int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
+                  int *sign);
+
 /* Filtered then exact, unperturbed (the body of lh_orient without the counting of
  * a call; used by the perturbation's fast path). */
 int lh__orient_sign(lh_pred *ctx, int k, const double *const *pts);

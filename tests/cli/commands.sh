@@ -41,8 +41,15 @@ expect "--threads accepted" 0 '' '^4$' -- "$lh" delaunay --threads 2 sq.txt
 expect "--threads checked" 2 "--threads takes a whole number from 0 to 4096, not 'x'" '' -- "$lh" hull --threads x sq.txt
 # enough sites for parallel phases: the same file from 1, 2 and 3 threads
 "$lh" points 60000 -d 2 --seed 5 > big.txt
-"$lh" delaunay -q big.txt -o one.txt
-for k in 2 3 0; do
+"$lh" delaunay -q --threads 1 big.txt -o one.txt
+expect "--threads defaults to every CPU" 0 '' 'default 0: one per CPU' -- "$lh" delaunay --help
+for k in 2 3 0 default; do
+  if [ "$k" = default ]; then
+    expect "no --threads: the one-thread output" 0 '' '' -- "$lh" delaunay -q big.txt -o many.txt
+    if cmp -s one.txt many.txt && [ -s one.txt ]; then ok; else bad "no --threads: output differs"; fi
+    rm -f many.txt
+    continue
+  fi
   expect "--threads $k: the one-thread output" 0 '' '' -- "$lh" delaunay -q --threads "$k" big.txt -o many.txt
   if cmp -s one.txt many.txt && [ -s one.txt ]; then ok; else bad "--threads $k: output differs"; fi
   rm -f many.txt
