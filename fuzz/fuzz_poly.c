@@ -55,8 +55,10 @@ static void check_ok(const lh_pslg *g, const char *msg, int rings)
     finite(g->attr, g->n * (size_t)g->attr_count);
     finite(g->holes, 2 * g->hole_count);
     finite(g->regions, 4 * g->region_count);
+    /* with n = 0 an endpoint 0 of a 1-based file is stored as -1, until
+     * lh_pslg_take_points renumbers the endpoints as the .node */
     for (size_t i = 0; i < 2 * g->segment_count; i++)
-        if (g->segments[i] < 0 || (g->n && (size_t)g->segments[i] >= g->n)) abort();
+        if (g->segments[i] < (g->n ? 0 : -g->first_index) || (g->n && (size_t)g->segments[i] >= g->n)) abort();
     size_t at = lines(g->vertex_line, g->n, 1);
     if (rings) { /* cycles of consecutive vertices, each segment on its start's line */
         if (g->vertex_marker || g->segment_marker || g->hole_count || g->region_count || g->first_index)
