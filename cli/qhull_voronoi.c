@@ -115,24 +115,6 @@ static void bisector(const double *a, const double *b, int d, double *n, double 
     }
 }
 
-/* Prints m 2^e as Qhull prints a double ("%6.16g"); beyond the doubles' range
- * (offsets of sites near DBL_MAX) in long double, or from logarithms where long
- * double is no wider (about 13 correct digits then). */
-static void print_scaled(FILE *f, double m, int e)
-{
-    double x = ldexp(m, e);
-    if (isfinite(x) || m == 0) {
-        fprintf(f, "%6.16g", x);
-        return;
-    }
-#if LDBL_MAX_EXP > DBL_MAX_EXP
-    fprintf(f, "%6.16Lg", ldexpl((long double)m, e));
-#else
-    double lg = log10(fabs(m)) + e * log10(2.0), k = floor(lg);
-    fprintf(f, "%s%.15fe+%.0f", m < 0 ? "-" : "", pow(10.0, lg - k), k);
-#endif
-}
-
 /* A ridge needs d vertices, the one at infinity counted once, to be printed: Qhull
  * leaves out the unbounded ridges with fewer (qh_eachvoronoi, "count >= hull_dim - 1"). */
 static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, lh_index i, lh_index j, int unbounded)
@@ -157,7 +139,7 @@ static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, lh_index i, lh_
     bisector(rp->x + (size_t)i * d, rp->x + (size_t)j * d, d, n, &off, &e);
     fprintf(rp->f, "%d %" LH_INDEX_PRI " %" LH_INDEX_PRI " ", d + 3, i, j);
     lh_cli_qcoords(rp->f, n, d);
-    print_scaled(rp->f, off, e);
+    lh_cli_qscaled(rp->f, 6, 16, off, e);
     fputs(" \n", rp->f);
 }
 
@@ -265,8 +247,6 @@ static int print_regions(FILE *f, const lh_cli_qmodel *mo)
 int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
     (void)o;
-    const double *c;
-    if (lh_tri_circumcenters(mo->tri, &c) != LH_OK) return 0;
     const int d = mo->d;
     if (!strcmp(opt, "p") || !strcmp(opt, "o")) {
         int full = opt[0] == 'o';
@@ -278,8 +258,11 @@ int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *m
         } else {
             fprintf(f, "%zu\n", mo->m);
         }
-        for (size_t s = 0; s < mo->m; s++) {
-            lh_cli_qcoords(f, c + s * d, d);
+        for (size_t s = 0; s < mo->m; s++) { /* c 2^e: finite where the centre passes DBL_MAX */
+            double m[LH_DELAUNAY_MAX_DIM];
+            int e;
+            lh_tri_circumcenter_exp(mo->tri, s, m, &e);
+            lh_cli_qcoords_scaled(f, m, e, d);
             fputc('\n', f);
         }
         return full ? print_regions(f, mo) : 1;

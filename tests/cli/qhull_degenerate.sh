@@ -11,7 +11,9 @@
 #             Qhull prints across a smaller face);
 # and, without Qhull (which refuses them), qvoronoi Fi/Fo at extreme scales: every value
 # finite, the exact bisectors (qvoronoi_planes.py), the same ridges and normals at 2^-1070
-# and 2^1000 as at the unit scale.
+# and 2^1000 as at the unit scale; qconvex's planes (n, Fi, FD n), qvoronoi's vertices and
+# qdelaunay's lifted coordinates (p) finite numbers there too, also past DBL_MAX, each
+# checked in decimal (qhull_extreme.py).
 # usage: qhull_degenerate.sh LIFTHULL [PYTHON3]. Skipped (77) when rbox, qconvex, qvoronoi or
 # python3 is missing.
 lh="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; here="$(cd "$(dirname "$0")" && pwd)"
@@ -94,6 +96,11 @@ for f in grid52.txt circle.txt sphere.txt huge3.txt dblmin2.txt beyond.txt; do
   case "$f" in huge3.txt | dblmin2.txt | beyond.txt) scales= ;; *) scales="-1070 1000" ;; esac
   if "$py" "$here/qvoronoi_planes.py" "$lh" "$f" $scales > planes.txt 2>&1
   then ok; else bad "qvoronoi Fi/Fo on $f: $(grep -E 'FAIL|DIFF|Error' planes.txt | head -3)"; fi
+done
+for f in sphere.txt huge3.txt dblmin2.txt beyond.txt; do
+  case "$f" in sphere.txt) scales="-1070 1000" ;; *) scales= ;; esac
+  if "$py" "$here/qhull_extreme.py" "$lh" "$f" $scales > extreme.txt 2>&1
+  then ok; else bad "qconvex n Fi, qvoronoi p, qdelaunay p on $f: $(grep -E 'FAIL|Error' extreme.txt | head -3)"; fi
 done
 
 echo "$pass passed, $fail failed"
