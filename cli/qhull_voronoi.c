@@ -7,7 +7,8 @@
  * Cospherical sites make several simplices with one circumcentre: they form one
  * cell of the Delaunay complex (lh_tri_complex_cells), one Voronoi vertex. As Qhull
  * with Qt, every simplex keeps its number in 'p' and 'o', but a ridge or a region
- * lists each cell once, by its smallest simplex. The ridges are the edges of the
+ * (and FN's list of a region's vertices) lists each cell once, by its smallest
+ * simplex. The ridges are the edges of the
  * Delaunay complex (lh_tri_complex_edges: sites whose regions share a face of
  * dimension d-1; not two sites meeting at one Voronoi vertex only, as across the
  * diagonal of a grid square, nor in 4D and up along a smaller face, which Qhull
@@ -244,10 +245,47 @@ static int print_regions(FILE *f, const lh_cli_qmodel *mo)
     return 1;
 }
 
+/* FN: for each site the Voronoi vertices of its region, as Qhull's ids (the 'o'
+ * number less one): each cell of the Delaunay complex once, by its smallest simplex
+ * as in 'o' and Fv, in increasing order; then, negative, the upper Delaunay
+ * facets around the site (Qhull's "vertices at infinity"), one per simplex of the
+ * upper hull. */
+static int print_neighbors(FILE *f, const lh_cli_qmodel *mo)
+{
+    lh_index *list = malloc(max_incidence(mo) * sizeof *list), *rep = cell_reps(mo);
+    if (!list || !rep) {
+        free(list);
+        free(rep);
+        return 0;
+    }
+    fprintf(f, "%zu\n", mo->n);
+    for (size_t i = 0; i < mo->n; i++) {
+        size_t count = 0, cells;
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+            if (mo->inc[k] >= 0) add_once(list, &count, rep[mo->inc[k]]);
+        cells = count;
+        for (size_t a = 1; a < cells; a++) /* increasing, as the other formats' lists */
+            for (size_t b = a; b > 0 && list[b - 1] > list[b]; b--) {
+                lh_index x = list[b];
+                list[b] = list[b - 1];
+                list[b - 1] = x;
+            }
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+            if (mo->inc[k] < 0) list[count++] = mo->inc[k]; /* distinct facets */
+        fprintf(f, "%zu", count);
+        for (size_t c = 0; c < count; c++) fprintf(f, " %" LH_INDEX_PRI, list[c]);
+        fputc('\n', f);
+    }
+    free(list);
+    free(rep);
+    return 1;
+}
+
 int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
     (void)o;
     const int d = mo->d;
+    if (!strcmp(opt, "FN")) return print_neighbors(f, mo);
     if (!strcmp(opt, "p") || !strcmp(opt, "o")) {
         int full = opt[0] == 'o';
         fprintf(f, "%d\n", d);
