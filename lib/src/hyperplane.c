@@ -1,52 +1,50 @@
 /*
- * hyperplane.c — lh_hyperplane_exp: the hyperplane through d points of R^d with its
- * offset as a mantissa and a binary exponent, so that it stays exact in range where
- * the offset's magnitude passes DBL_MAX (facets of sites near DBL_MAX: the offset
- * is a d x d minor over a (d-1) x (d-1) one, up to about DBL_MAX * sqrt(d)).
- * With rows [1, p_i] (i < d) and [1, x], det = sum_c (-1)^(d+c) x'_c M_c (x'_0 = 1,
- * x'_j = x_j; M_c the minor of the first d rows without column c), so
- * n_j = (-1)^(d+j) M_j and the offset (-1)^d M_0 give orient_d(p, x) = sign(n.x + off).
- * Each M_c is an exact integer determinant rounded once (lh__minor_value, as v 2^e);
- * the normal's cofactors are brought to a common exponent before their length is
- * taken, so neither the normal nor the mantissa overflows or underflows.
+ * hyperplane.c — lh_hyperplane_exp: lh_hyperplane with the offset as a mantissa and
+ * a binary exponent, exact in range where the offset's magnitude passes DBL_MAX
+ * (facets of sites near DBL_MAX: up to about DBL_MAX sqrt(d)) or falls below DBL_MIN.
+ * With M_c the minor of the homogeneous rows [1, p_i] without column c, lh_hyperplane
+ * gives n_j = (-1)^(d+c) M_c / |M| (c = j + 1) and offset (-1)^d M_0 / |M|, |M| the
+ * length of (M_1..M_d). So offset = (-1)^d M_0 n_j / ((-1)^(d+c) M_c) for any j with
+ * n_j != 0. Where lh_hyperplane's offset is a normal double it is taken as it is;
+ * else (+-inf, subnormal or an underflowed 0) it is formed at the largest |n_j|
+ * (>= 1/sqrt(d)) from M_0 and M_c as mantissas and exponents (lh__minor_value: each
+ * exact, rounded once): nothing overflows or underflows, relative error a few ulps.
  */
 #include "lh_exact.h"
 
 #include <math.h>
-#include <stdint.h>
+
+/* The minor without column c of the first d rows, signed (-1)^(d+c), as v 2^e. */
+static double cofactor(lh_pred *ctx, int d, const double *const *pts, int c, int *e)
+{
+    int rows[LH_ORIENT_MAX_DIM + 1], cols[LH_ORIENT_MAX_DIM + 1];
+    for (int i = 0; i < d; i++) rows[i] = i;
+    for (int k = 0, j = 0; j <= d; j++)
+        if (j != c) cols[k++] = j;
+    double v = lh__minor_value(ctx, pts, d, d, rows, cols, e);
+    return (d + c) & 1 ? -v : v;
+}
 
 int lh_hyperplane_exp(lh_pred *ctx, int d, const double *const *pts, double *normal,
                       double *offset, int *offset_exp)
 {
-    if (!ctx || !pts || !normal || !offset || !offset_exp || d < 1 || d > LH_ORIENT_MAX_DIM) return 0;
-    int rows[LH_ORIENT_MAX_DIM + 1], cols[LH_ORIENT_MAX_DIM + 1], e[LH_ORIENT_MAX_DIM + 1];
-    double v[LH_ORIENT_MAX_DIM + 1];
-    for (int i = 0; i < d; i++) rows[i] = i;
-    int emax = INT32_MIN;
-    for (int c = 0; c <= d; c++) {
-        for (int k = 0, j = 0; j <= d; j++)
-            if (j != c) cols[k++] = j;
-        v[c] = lh__minor_value(ctx, pts, d, d, rows, cols, &e[c]);
-        if ((d + c) & 1) v[c] = -v[c];
-        if (c > 0 && v[c] != 0 && e[c] > emax) emax = e[c];
-    }
+    if (!offset || !offset_exp) return 0;
+    double off;
     *offset = 0;
     *offset_exp = 0;
-    if (emax == INT32_MIN) { /* every normal component 0: dependent points */
-        for (int j = 0; j < d; j++) normal[j] = 0;
-        return 0;
+    if (!lh_hyperplane(ctx, d, pts, normal, &off)) return 0;
+    if (isnormal(off)) { /* in range: lh_hyperplane's offset, bit for bit */
+        *offset = frexp(off, offset_exp);
+        return 1;
     }
-    double norm = 0;
-    for (int j = 1; j <= d; j++) {
-        v[j] = v[j] != 0 ? ldexp(v[j], e[j] - emax) : 0;
-        norm += v[j] * v[j];
-    }
-    norm = sqrt(norm);
-    for (int j = 0; j < d; j++) normal[j] = v[j + 1] / norm;
-    if (v[0] != 0) { /* v[0] 2^(e[0] - emax) / norm, its mantissa in [0.5, 1) */
-        int g;
-        *offset = frexp(v[0] / norm, &g);
-        *offset_exp = g + e[0] - emax;
-    }
+    int j = 0;
+    for (int k = 1; k < d; k++)
+        if (fabs(normal[k]) > fabs(normal[j])) j = k;
+    int e0, ec, g;
+    double v0 = cofactor(ctx, d, pts, 0, &e0);
+    if (v0 == 0) return 1; /* through the origin */
+    double vc = cofactor(ctx, d, pts, j + 1, &ec);
+    *offset = frexp(v0 / vc * normal[j], &g);
+    *offset_exp = g + e0 - ec;
     return 1;
 }
