@@ -305,7 +305,8 @@ static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
 
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
-    if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "i") && strcmp(opt, "Fs") && strcmp(opt, "Fx"))
+    if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "i") &&
+        strcmp(opt, "Fs") && strcmp(opt, "Fx"))
         return lh_cli_qprint_voronoi(f, o, mo, opt);
     if (!strcmp(opt, "i")) print_i(f, mo);
     else if (!strcmp(opt, "Fv")) print_fv(f, mo);

@@ -7,10 +7,9 @@
  * Cospherical sites make several simplices with one circumcentre: they form one
  * cell of the Delaunay complex (lh_tri_complex_cells), one Voronoi vertex. As Qhull
  * with Qt, every simplex keeps its number in 'p' and 'o', but a ridge or a region
- * (and FN's list of a region's vertices) lists each cell once, by its smallest
- * simplex. The ridges are the edges of the
- * Delaunay complex (lh_tri_complex_edges: sites whose regions share a face of
- * dimension d-1; not two sites meeting at one Voronoi vertex only, as across the
+ * (also in FN) lists each cell once, by its smallest simplex. The ridges are the
+ * edges of the Delaunay complex (lh_tri_complex_edges: sites whose regions share a
+ * face of dimension d-1; not two sites meeting at one Voronoi vertex only, as across the
  * diagonal of a grid square, nor in 4D and up along a smaller face, which Qhull
  * prints) that have d distinct cells around them (the one at infinity counted once),
  * Qhull's rule.
@@ -18,7 +17,6 @@
  */
 #include "qhull_print.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

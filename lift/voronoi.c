@@ -8,21 +8,13 @@
 #include "geom.h"
 #include "lh_alloc.h"
 
-#include <math.h>
-
-/* Simplex s's circumcentre as c 2^e (lh__circumcenter_exp). */
-static void centre(const lh_tri *t, size_t s, double *c, int *e)
+lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, int *e)
 {
+    if (!t || !c || !e || s >= t->count) return LH_ERR_INVALID_ARGUMENT;
     const int d = t->d, k = t->frame.k;
     const double *p[LH_DELAUNAY_MAX_DIM + 1];
     for (int j = 0; j <= k; j++) p[j] = t->xyz + (size_t)t->simp[s * (size_t)(k + 1) + j] * d;
     lh__circumcenter_exp(d, k, p, c, e);
-}
-
-lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, int *e)
-{
-    if (!t || !c || !e || s >= t->count) return LH_ERR_INVALID_ARGUMENT;
-    centre(t, s, c, e);
     return LH_OK;
 }
 
@@ -30,13 +22,13 @@ lh_status lh_tri_circumcenters(lh_tri *t, const double **centers)
 {
     if (!t || !centers) return LH_ERR_INVALID_ARGUMENT;
     if (!t->centers) {
-        const int d = t->d;
+        const int d = t->d, k = t->frame.k;
         double *c = lh__alloc(&t->alloc, (t->count ? t->count : 1) * (size_t)d * sizeof *c);
         if (!c) return LH_ERR_NOMEM;
         for (size_t s = 0; s < t->count; s++) {
-            int e;
-            centre(t, s, c + s * (size_t)d, &e);
-            for (int j = 0; j < d; j++) c[s * (size_t)d + j] = ldexp(c[s * (size_t)d + j], e);
+            const double *p[LH_DELAUNAY_MAX_DIM + 1];
+            for (int j = 0; j <= k; j++) p[j] = t->xyz + (size_t)t->simp[s * (size_t)(k + 1) + j] * d;
+            lh__circumcenter(d, k, p, c + s * (size_t)d);
         }
         t->centers = c;
     }

@@ -423,8 +423,8 @@ lh_status lh_tri_circumcenters(lh_tri *t, const double **centers);
  * as lh_tri_circumcenters, whose coordinates are +-inf where a centre's pass DBL_MAX
  * (sites near DBL_MAX, a thin simplex on the hull); c is computed on the sites scaled
  * by 2^-e, so it stays finite there (NaN only where lh_tri_circumcenters' is: an
- * exact zero pivot in the floating-point solve). Returns LH_OK or LH_ERR_INVALID_ARGUMENT (t, c or e NULL, or
- * s >= the number of simplices). */
+ * exact zero pivot in the floating-point solve). Returns LH_OK or
+ * LH_ERR_INVALID_ARGUMENT (t, c or e NULL, or s >= the number of simplices). */
 lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, int *e);
 
 /*
