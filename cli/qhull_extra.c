@@ -109,7 +109,7 @@ static void picture_point(FILE *f, const lh_cli_qmodel *mo, lh_cli_qlift s, int 
 static void print_picture(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, int maple)
 {
     int lifted = o->prog != LH_QPROG_CONVEX;
-    lh_cli_qlift s = lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1};
+    lh_cli_qlift s = lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1, 0};
     if (mo->nv == 2) { /* 2-d hull: segments */
         fputs(maple ? "PLOT(CURVES(\n" : "{\n", f);
         for (size_t t = 0; t < mo->m; t++) {

@@ -13,10 +13,12 @@
 #include "qhull.h"
 #include "qhull_print.h"
 
+#include <math.h>
+
 void lh_cli_qprint_fields(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     const int lifted = o->prog != LH_QPROG_CONVEX;
-    lh_cli_qlift s = lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1};
+    lh_cli_qlift s = lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1, 0};
     fputs("Vertices and facets:\n", f);
     for (size_t i = 0; i < mo->n; i++) {
         if (!lh_cli_qis_vertex(mo, i)) continue;
@@ -27,18 +29,22 @@ void lh_cli_qprint_fields(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *m
     }
     for (size_t t = 0; t < mo->m; t++) {
         double n[LH_DELAUNAY_MAX_DIM + 1], off = 0;
+        int e = 0;
         if (lifted) {
             lh_cli_qfacet_normal(mo, o, s, t, n);
+            e = s.exp; /* every term below max |coordinate|: the sum on them scaled by 2^-e */
             for (int k = 0; k <= mo->d; k++) {
                 size_t i = (size_t)mo->vert[t * mo->nv];
-                off -= n[k] * (k < mo->d ? mo->xyz[i * mo->d + k] : lh_cli_qlifted(mo, s, i));
+                off -= n[k] * (k < mo->d ? ldexp(mo->xyz[i * mo->d + k], -e) : lh_cli_qlifted_scaled(mo, s, i));
             }
         } else {
-            lh_cli_qfacet_plane(mo, t, n, &off);
+            lh_cli_qfacet_plane(mo, t, n, &off, &e);
         }
         fprintf(f, "- f%zu\n    - flags: simplicial\n    - normal: ", t);
         for (int j = 0; j < mo->d + lifted; j++) fprintf(f, " %8.4g", n[j]);
-        fprintf(f, "\n    - offset: %10.7g\n    - vertices:", off);
+        fputs("\n    - offset: ", f);
+        lh_cli_qscaled(f, 10, 7, off, e);
+        fputs("\n    - vertices:", f);
         for (int k = 0; k < mo->nv; k++) {
             lh_index v = mo->vert[t * mo->nv + k];
             fprintf(f, " p%" LH_INDEX_PRI "(v%" LH_INDEX_PRI ")", v, v + 1);

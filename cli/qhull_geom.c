@@ -56,7 +56,7 @@ static void triangle(FILE *f, const lh_cli_qmodel *mo, lh_cli_qlift s, int lifte
 int lh_cli_qprint_geomview(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     const int lifted = o->prog != LH_QPROG_CONVEX, dims = mo->d + lifted;
-    lh_cli_qlift s = lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1};
+    lh_cli_qlift s = lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1, 0};
     double n[LH_DELAUNAY_MAX_DIM + 1];
     if (dims == 2) {
         fprintf(f, "{appearance {linewidth 3} LIST # %s\n", o->command);

@@ -10,6 +10,7 @@
 #include "qhull_print.h"
 #include "qhull_sides.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,38 +20,72 @@ void lh_cli_qcoords(FILE *f, const double *x, int d)
     for (int j = 0; j < d; j++) fprintf(f, "%6.16g ", x[j]);
 }
 
+void lh_cli_qscaled(FILE *f, int width, int prec, double m, int e)
+{
+    double x = ldexp(m, e);
+    if (isnormal(x) || m == 0) {
+        fprintf(f, "%*.*g", width, prec, x);
+        return;
+    }
+#if LDBL_MAX_EXP > DBL_MAX_EXP
+    fprintf(f, "%*.*Lg", width, prec, ldexpl((long double)m, e));
+#else
+    double lg = log10(fabs(m)) + e * log10(2.0), k = floor(lg);
+    fprintf(f, "%s%.*fe%+.0f", m < 0 ? "-" : "", prec > 1 ? prec - 1 : 0, pow(10.0, lg - k), k);
+#endif
+}
+
+void lh_cli_qcoords_scaled(FILE *f, const double *m, int e, int d)
+{
+    for (int j = 0; j < d; j++) {
+        lh_cli_qscaled(f, 6, 16, m[j], e);
+        fputc(' ', f);
+    }
+}
+
 /* The lifted coordinate |p|^2 scaled to [0, max |coordinate|] (Qhull's Qbb). */
 typedef lh_cli_qlift lift_scale;
 
 lh_cli_qlift lh_cli_qlift_scale(const lh_cli_qmodel *mo)
 {
     double low = INFINITY, high = -INFINITY, big = 0;
+    for (size_t i = 0; i < mo->n * (size_t)mo->d; i++) big = fmax(big, fabs(mo->xyz[i]));
+    int e;
+    frexp(big, &e); /* |x| 2^-e < 1: the squares and their sums stay finite */
     for (size_t i = 0; i < mo->n; i++) {
         double z = 0;
         for (int j = 0; j < mo->d; j++) {
-            double x = mo->xyz[i * mo->d + j];
+            double x = ldexp(mo->xyz[i * mo->d + j], -e);
             z += x * x;
-            if (fabs(x) > big) big = fabs(x);
         }
         if (z < low) low = z;
         if (z > high) high = z;
     }
-    lift_scale s = {low, high > low ? big / (high - low) : 1};
+    lift_scale s = {low, high > low ? ldexp(big, -e) / (high - low) : 1, e};
     return s;
+}
+
+double lh_cli_qlifted_scaled(const lh_cli_qmodel *mo, lh_cli_qlift s, size_t i)
+{
+    const double *x = mo->xyz + i * mo->d;
+    double z = 0;
+    for (int j = 0; j < mo->d; j++) {
+        double y = ldexp(x[j], -s.exp);
+        z += y * y;
+    }
+    return (z - s.low) * s.factor; /* at most max |coordinate| 2^-exp < 1 when high > low */
 }
 
 double lh_cli_qlifted(const lh_cli_qmodel *mo, lh_cli_qlift s, size_t i)
 {
-    const double *x = mo->xyz + i * mo->d;
-    double z = 0;
-    for (int j = 0; j < mo->d; j++) z += x[j] * x[j];
-    return (z - s.low) * s.factor;
+    return ldexp(lh_cli_qlifted_scaled(mo, s, i), s.exp);
 }
 
 static void lifted_point(FILE *f, const lh_cli_qmodel *mo, lift_scale s, size_t i)
 {
     lh_cli_qcoords(f, mo->xyz + i * mo->d, mo->d);
-    fprintf(f, "%6.16g \n", lh_cli_qlifted(mo, s, i));
+    lh_cli_qscaled(f, 6, 16, lh_cli_qlifted_scaled(mo, s, i), s.exp);
+    fputs(" \n", f);
 }
 
 int lh_cli_qis_vertex(const lh_cli_qmodel *mo, size_t i)
@@ -221,12 +256,12 @@ static int print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 /* The outward hyperplane n.x + off = 0 of hull facet t, |n| = 1, from the exact
  * cofactors (lh_hyperplane). The model lists a hull facet with its last two vertices
  * exchanged (Qhull's parity), so outward is the opposite of that order's orientation. */
-void lh_cli_qfacet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off)
+void lh_cli_qfacet_plane(const lh_cli_qmodel *mo, size_t t, double *n, double *off, int *e)
 {
     const int d = mo->d;
     const double *p[LH_DELAUNAY_MAX_DIM] = {0};
     for (int k = 0; k < d; k++) p[k] = mo->xyz + (size_t)mo->vert[t * d + k] * d;
-    lh_hyperplane(mo->pred, d, p, n, off);
+    lh_hyperplane_exp(mo->pred, d, p, n, off, e);
     for (int j = 0; j < d; j++) n[j] = -n[j];
     *off = -*off;
 }
@@ -239,13 +274,16 @@ static void print_planes(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo
     else fprintf(f, "%d\n%zu\n", d + 1, mo->m);
     for (size_t t = 0; t < mo->m; t++) {
         double n[LH_DELAUNAY_MAX_DIM], off;
-        lh_cli_qfacet_plane(mo, t, n, &off);
+        int e;
+        lh_cli_qfacet_plane(mo, t, n, &off, &e);
         if (o->cdd) {
-            fprintf(f, "%6.16g ", -off);
+            lh_cli_qscaled(f, 6, 16, -off, e);
+            fputc(' ', f);
             for (int j = 0; j < d; j++) fprintf(f, "%6.16g ", -n[j]);
         } else {
             lh_cli_qcoords(f, n, d);
-            fprintf(f, "%6.16g ", off);
+            lh_cli_qscaled(f, 6, 16, off, e);
+            fputc(' ', f);
         }
         fputc('\n', f);
     }
@@ -267,8 +305,8 @@ static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
 
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
-    if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "FN") &&
-        strcmp(opt, "i") && strcmp(opt, "Fs") && strcmp(opt, "Fx"))
+    if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "i") &&
+        strcmp(opt, "Fs") && strcmp(opt, "Fx"))
         return lh_cli_qprint_voronoi(f, o, mo, opt);
     if (!strcmp(opt, "i")) print_i(f, mo);
     else if (!strcmp(opt, "Fv")) print_fv(f, mo);

@@ -37,7 +37,8 @@ void lh_cli_qfacet_normal(const lh_cli_qmodel *mo, const lh_cli_qopts *o, lh_cli
                           size_t t, double *n)
 {
     double off;
-    if (o->prog == LH_QPROG_CONVEX) lh_cli_qfacet_plane(mo, t, n, &off);
+    int e;
+    if (o->prog == LH_QPROG_CONVEX) lh_cli_qfacet_plane(mo, t, n, &off, &e);
     else lh_cli_qlifted_normal(mo, s, mo->vert + t * mo->nv, o->furthest, n);
 }
 
@@ -56,7 +57,7 @@ static int normal_filters(const lh_cli_qmodel *mo, const lh_cli_qopts *o, char *
                 o->name, LH_ORIENT_MAX_DIM);
         return -1;
     }
-    lh_cli_qlift s = o->prog == LH_QPROG_CONVEX ? (lh_cli_qlift){0, 1} : lh_cli_qlift_scale(mo);
+    lh_cli_qlift s = o->prog == LH_QPROG_CONVEX ? (lh_cli_qlift){0, 1, 0} : lh_cli_qlift_scale(mo);
     for (size_t t = 0; t < mo->m && o->npd; t++) {
         double n[LH_DELAUNAY_MAX_DIM + 1];
         lh_cli_qfacet_normal(mo, o, s, t, n);

@@ -7,9 +7,9 @@
  * Cospherical sites make several simplices with one circumcentre: they form one
  * cell of the Delaunay complex (lh_tri_complex_cells), one Voronoi vertex. As Qhull
  * with Qt, every simplex keeps its number in 'p' and 'o', but a ridge or a region
- * lists each cell once, by its smallest simplex. The ridges are the edges of the
- * Delaunay complex (lh_tri_complex_edges: sites whose regions share a face of
- * dimension d-1; not two sites meeting at one Voronoi vertex only, as across the
+ * (also in FN) lists each cell once, by its smallest simplex. The ridges are the
+ * edges of the Delaunay complex (lh_tri_complex_edges: sites whose regions share a
+ * face of dimension d-1; not two sites meeting at one Voronoi vertex only, as across the
  * diagonal of a grid square, nor in 4D and up along a smaller face, which Qhull
  * prints) that have d distinct cells around them (the one at infinity counted once),
  * Qhull's rule.
@@ -17,7 +17,6 @@
  */
 #include "qhull_print.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -115,24 +114,6 @@ static void bisector(const double *a, const double *b, int d, double *n, double 
     }
 }
 
-/* Prints m 2^e as Qhull prints a double ("%6.16g"); beyond the doubles' range
- * (offsets of sites near DBL_MAX) in long double, or from logarithms where long
- * double is no wider (about 13 correct digits then). */
-static void print_scaled(FILE *f, double m, int e)
-{
-    double x = ldexp(m, e);
-    if (isfinite(x) || m == 0) {
-        fprintf(f, "%6.16g", x);
-        return;
-    }
-#if LDBL_MAX_EXP > DBL_MAX_EXP
-    fprintf(f, "%6.16Lg", ldexpl((long double)m, e));
-#else
-    double lg = log10(fabs(m)) + e * log10(2.0), k = floor(lg);
-    fprintf(f, "%s%.15fe+%.0f", m < 0 ? "-" : "", pow(10.0, lg - k), k);
-#endif
-}
-
 /* A ridge needs d vertices, the one at infinity counted once, to be printed: Qhull
  * leaves out the unbounded ridges with fewer (qh_eachvoronoi, "count >= hull_dim - 1"). */
 static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, lh_index i, lh_index j, int unbounded)
@@ -157,7 +138,7 @@ static void print_ridge(ridge_pass *rp, const lh_cli_qmodel *mo, lh_index i, lh_
     bisector(rp->x + (size_t)i * d, rp->x + (size_t)j * d, d, n, &off, &e);
     fprintf(rp->f, "%d %" LH_INDEX_PRI " %" LH_INDEX_PRI " ", d + 3, i, j);
     lh_cli_qcoords(rp->f, n, d);
-    print_scaled(rp->f, off, e);
+    lh_cli_qscaled(rp->f, 6, 16, off, e);
     fputs(" \n", rp->f);
 }
 
@@ -262,12 +243,47 @@ static int print_regions(FILE *f, const lh_cli_qmodel *mo)
     return 1;
 }
 
+/* FN: for each site the Voronoi vertices of its region, as Qhull's ids (the 'o'
+ * number less one): each cell of the Delaunay complex once, by its smallest simplex
+ * as in 'o' and Fv, in increasing order; then, negative, the upper Delaunay
+ * facets around the site (Qhull's "vertices at infinity"), one per simplex of the
+ * upper hull. */
+static int print_neighbors(FILE *f, const lh_cli_qmodel *mo)
+{
+    lh_index *list = malloc(max_incidence(mo) * sizeof *list), *rep = cell_reps(mo);
+    if (!list || !rep) {
+        free(list);
+        free(rep);
+        return 0;
+    }
+    fprintf(f, "%zu\n", mo->n);
+    for (size_t i = 0; i < mo->n; i++) {
+        size_t count = 0, cells;
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+            if (mo->inc[k] >= 0) add_once(list, &count, rep[mo->inc[k]]);
+        cells = count;
+        for (size_t a = 1; a < cells; a++) /* increasing, as the other formats' lists */
+            for (size_t b = a; b > 0 && list[b - 1] > list[b]; b--) {
+                lh_index x = list[b];
+                list[b] = list[b - 1];
+                list[b - 1] = x;
+            }
+        for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++)
+            if (mo->inc[k] < 0) list[count++] = mo->inc[k]; /* distinct facets */
+        fprintf(f, "%zu", count);
+        for (size_t c = 0; c < count; c++) fprintf(f, " %" LH_INDEX_PRI, list[c]);
+        fputc('\n', f);
+    }
+    free(list);
+    free(rep);
+    return 1;
+}
+
 int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
     (void)o;
-    const double *c;
-    if (lh_tri_circumcenters(mo->tri, &c) != LH_OK) return 0;
     const int d = mo->d;
+    if (!strcmp(opt, "FN")) return print_neighbors(f, mo);
     if (!strcmp(opt, "p") || !strcmp(opt, "o")) {
         int full = opt[0] == 'o';
         fprintf(f, "%d\n", d);
@@ -278,8 +294,11 @@ int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *m
         } else {
             fprintf(f, "%zu\n", mo->m);
         }
-        for (size_t s = 0; s < mo->m; s++) {
-            lh_cli_qcoords(f, c + s * d, d);
+        for (size_t s = 0; s < mo->m; s++) { /* c 2^e: finite where the centre passes DBL_MAX */
+            double m[LH_DELAUNAY_MAX_DIM];
+            int e;
+            lh_tri_circumcenter_exp(mo->tri, s, m, &e);
+            lh_cli_qcoords_scaled(f, m, e, d);
             fputc('\n', f);
         }
         return full ? print_regions(f, mo) : 1;

@@ -48,10 +48,11 @@ int lh__scale_exp(const double *const *p, int m, int d, const double *q)
 }
 
 /* Computed on the points scaled by 2^-s (lh__scale_exp), relative to p0. */
-int lh__circumcenter(int d, int k, const double *const *p, double *c)
+int lh__circumcenter_exp(int d, int k, const double *const *p, double *c, int *exp)
 {
     double a[MAXD * MAXD], b[MAXD], e[MAXD][MAXD], p0[MAXD];
     const int sc = lh__scale_exp(p, k + 1, d, NULL);
+    *exp = sc;
     for (int j = 0; j < d; j++) p0[j] = ldexp(p[0][j], -sc);
     for (int i = 0; i < k; i++) {
         b[i] = 0;
@@ -79,7 +80,15 @@ int lh__circumcenter(int d, int k, const double *const *p, double *c)
         } else {
             for (int i = 0; i < k; i++) x += b[i] * e[i][j];
         }
-        c[j] = ok ? ldexp(x, sc) : NAN;
+        c[j] = ok ? x : NAN;
     }
+    return ok;
+}
+
+int lh__circumcenter(int d, int k, const double *const *p, double *c)
+{
+    int e;
+    int ok = lh__circumcenter_exp(d, k, p, c, &e);
+    for (int j = 0; j < d; j++) c[j] = ldexp(c[j], e);
     return ok;
 }

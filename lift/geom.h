@@ -17,6 +17,9 @@ int lh__solve(double *a, double *b, int m);
  * c - p0 directly (no Gram matrix, whose condition is the square). Returns 0 for
  * affinely dependent points (c is then filled with NaN). */
 int lh__circumcenter(int d, int k, const double *const *p, double *c);
+/* The same centre as c 2^exp (*exp from lh__scale_exp): c is finite where the
+ * centre's coordinates pass DBL_MAX (lh__circumcenter's are then +-inf). */
+int lh__circumcenter_exp(int d, int k, const double *const *p, double *c, int *exp);
 
 /* The exponent e with every |p[i][j]| < 2^e (frexp of the largest; 0 when all are
  * 0): the points scaled by 2^-e (ldexp, exact but for underflow far below the

@@ -59,6 +59,11 @@ static double simplex_measure(lh_pred *ctx, int d, int k, const double *const *p
 static void neumaier_add(double *s, double *c, double x)
 {
     double t = *s + x;
+    if (isinf(t)) { /* past DBL_MAX: the total is +inf; a correction would be inf - inf */
+        *s = t;
+        *c = 0;
+        return;
+    }
     *c += fabs(*s) >= fabs(x) ? (*s - t) + x : (x - t) + *s;
     *s = t;
 }

@@ -8,6 +8,16 @@
 #include "geom.h"
 #include "lh_alloc.h"
 
+lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, int *e)
+{
+    if (!t || !c || !e || s >= t->count) return LH_ERR_INVALID_ARGUMENT;
+    const int d = t->d, k = t->frame.k;
+    const double *p[LH_DELAUNAY_MAX_DIM + 1];
+    for (int j = 0; j <= k; j++) p[j] = t->xyz + (size_t)t->simp[s * (size_t)(k + 1) + j] * d;
+    lh__circumcenter_exp(d, k, p, c, e);
+    return LH_OK;
+}
+
 lh_status lh_tri_circumcenters(lh_tri *t, const double **centers)
 {
     if (!t || !centers) return LH_ERR_INVALID_ARGUMENT;

@@ -102,9 +102,26 @@ LH_TEST(bad_arguments)
     LH_EXPECT_EQ_INT(lh_hull_measures(NULL, x, 3, NULL, &a, NULL), LH_ERR_INVALID_ARGUMENT);
 }
 
+/* A total past DBL_MAX of finite measures is +inf, never nan (the compensated sum's
+ * correction was inf - inf: qconvex FS printed -nan for sites near DBL_MAX). */
+LH_TEST(totals_past_dbl_max_are_infinite)
+{
+    const double M = 1.7e308, x[8] = {0, 0, M, 0, M, M, 0, M};
+    const lh_index edges[8] = {0, 1, 1, 2, 2, 3, 3, 0};
+    double each[4], total;
+    LH_ASSERT_EQ_INT(lh_simplex_measures(2, 1, x, 4, 4, edges, each, &total), LH_OK);
+    for (int i = 0; i < 4; i++) LH_EXPECT_TRUE(near_ulps(each[i], M, 1));
+    LH_EXPECT_TRUE(isinf(total) && total > 0);
+    const double big[6] = {0, 0, 1e200, 0, 0, 1e200}; /* area 5e399: +inf, edges finite */
+    const lh_index tri[3] = {0, 1, 2};
+    LH_ASSERT_EQ_INT(lh_simplex_measures(2, 2, big, 3, 1, tri, each, &total), LH_OK);
+    LH_EXPECT_TRUE(isinf(total) && total > 0);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {LH_CASE(cube_far_from_origin_is_exact),
-                                         LH_CASE(thin_huge_and_flat), LH_CASE(bad_arguments)};
+                                         LH_CASE(thin_huge_and_flat), LH_CASE(bad_arguments),
+                                         LH_CASE(totals_past_dbl_max_are_infinite)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -295,10 +295,67 @@ LH_TEST(hyperplanes_through_points)
     lh_pred_free(ctx);
 }
 
+/* lh_hyperplane_exp: the offset of the plane x + y + z = 2M through (M,M,0), (M,0,M),
+ * (0,M,M) is 2M/sqrt(3) > DBL_MAX for M = 0x1.fp1023: finite as off 2^e there, where
+ * lh_hyperplane's is +-inf (never nan) with the same normal; and a lattice triangle
+ * has bit for bit the same normal and offset mantissa at 2^-1070 (subnormal), 2^0
+ * and 2^1000, its offset exponent shifted by the scale. */
+LH_TEST(hyperplane_offsets_past_dbl_max_and_scale_free_normals)
+{
+    lh_pred *ctx;
+    LH_ASSERT_EQ_INT(lh_pred_create(NULL, &ctx), LH_OK);
+    const double M = 0x1.fp1023;
+    const double a[3] = {M, M, 0}, b[3] = {M, 0, M}, c[3] = {0, M, M}, *p[3] = {a, b, c};
+    double n[3], n2[3], off, m;
+    int e;
+    LH_ASSERT_EQ_INT(lh_hyperplane_exp(ctx, 3, p, n, &m, &e), 1);
+    LH_ASSERT_EQ_INT(lh_hyperplane(ctx, 3, p, n2, &off), 1);
+    LH_EXPECT_TRUE(memcmp(n, n2, sizeof n) == 0);
+    LH_EXPECT_TRUE(isinf(off) && (off > 0) == (m > 0));
+    LH_EXPECT_TRUE(fabs(m) >= 0.5 && fabs(m) < 1);
+    for (int j = 0; j < 3; j++) LH_EXPECT_LE_DBL(fabs(fabs(n[j]) - 1 / sqrt(3.0)), 3e-16);
+    /* n.a + off = 0: off 2^-1024 = -2 n_0 M 2^-1024, to a few ulps */
+    double want = -2 * n[0] * ldexp(M, -1024), got = ldexp(m, e - 1024);
+    LH_EXPECT_LE_DBL(fabs(got - want), 1e-15 * fabs(want));
+    LH_EXPECT_TRUE(isfinite(got));
+
+    static const double tri[3][3] = {{1, 2, 0}, {0, 1, 3}, {2, 0, 1}};
+    double base_n[3], base_m = 0;
+    int base_e = 0;
+    static const int scales[] = {0, -1070, 1000};
+    for (size_t k = 0; k < LH_COUNT(scales); k++) {
+        double x[3][3];
+        const double *q[3] = {x[0], x[1], x[2]};
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) x[i][j] = ldexp(tri[i][j], scales[k]); /* exact */
+        LH_ASSERT_EQ_INT(lh_hyperplane_exp(ctx, 3, q, n, &m, &e), 1);
+        if (k == 0) {
+            memcpy(base_n, n, sizeof n);
+            base_m = m;
+            base_e = e;
+            LH_EXPECT_TRUE(m != 0);
+            continue;
+        }
+        LH_NOTE("scale 2^%d: offset %.17g 2^%d", scales[k], m, e);
+        LH_EXPECT_TRUE(memcmp(n, base_n, sizeof n) == 0);
+        LH_EXPECT_TRUE(m == base_m);
+        LH_EXPECT_EQ_INT(e, base_e + scales[k]);
+    }
+    const double o[2] = {0, 0}, u[2] = {1, 1}, *through[2] = {o, u};
+    LH_EXPECT_EQ_INT(lh_hyperplane_exp(ctx, 2, through, n, &m, &e), 1);
+    LH_EXPECT_TRUE(m == 0 && e == 0); /* the line y = x through the origin */
+    const double *dup[2] = {u, u};
+    LH_EXPECT_EQ_INT(lh_hyperplane_exp(ctx, 2, dup, n, &m, &e), 0);
+    LH_EXPECT_EQ_INT(lh_hyperplane_exp(ctx, 2, dup, n, &m, NULL), 0);
+    LH_EXPECT_EQ_INT(lh_hyperplane_exp(NULL, 2, dup, n, &m, &e), 0);
+    lh_pred_free(ctx);
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(hyperplanes_through_points),
+        LH_CASE(hyperplane_offsets_past_dbl_max_and_scale_free_normals),
         LH_CASE(orient_of_unit_simplex_in_every_dimension),
         LH_CASE(insphere_inside_on_outside_in_every_dimension),
         LH_CASE(counters_record_the_stage_that_answered),

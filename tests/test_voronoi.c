@@ -63,6 +63,40 @@ LH_TEST(circumcenters_are_empty_sphere_centres)
         }
 }
 
+/* lh_tri_circumcenter_exp: the triangle (2^1023, 0), (-2^1023, 0), (0, 2^1010) has
+ * its circumcentre at (0, 2^1009 - 2^1035), past DBL_MAX: lh_tri_circumcenters gives
+ * -inf there, c 2^e the centre itself (finite c); at unit scale both agree. */
+LH_TEST(circumcentres_past_dbl_max_as_mantissa_and_exponent)
+{
+    const double x[6] = {0x1p1023, 0, -0x1p1023, 0, 0, 0x1p1010};
+    lh_tri *t = build(2, 3, x);
+    LH_ASSERT_TRUE(t);
+    LH_ASSERT_EQ_INT(lh_tri_count(t), 1);
+    const double *all;
+    LH_ASSERT_EQ_INT(lh_tri_circumcenters(t, &all), LH_OK);
+    LH_EXPECT_TRUE(isinf(all[1]) && all[1] < 0);
+    double c[2];
+    int e;
+    LH_ASSERT_EQ_INT(lh_tri_circumcenter_exp(t, 0, c, &e), LH_OK);
+    LH_EXPECT_TRUE(isfinite(c[0]) && isfinite(c[1]));
+    double y = ldexp(c[1], e - 1035), want = -1 + 0x1p-26; /* the centre's y 2^-1035 */
+    LH_NOTE("centre (%.17g, %.17g) 2^%d", c[0], c[1], e);
+    LH_EXPECT_LE_DBL(fabs(y - want), 1e-15);
+    LH_EXPECT_LE_DBL(fabs(ldexp(c[0], e - 1035)), 1e-15);
+    LH_EXPECT_EQ_INT(lh_tri_circumcenter_exp(t, 1, c, &e), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_tri_circumcenter_exp(t, 0, c, NULL), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_tri_circumcenter_exp(NULL, 0, c, &e), LH_ERR_INVALID_ARGUMENT);
+    lh_tri_free(t);
+    const double unit[6] = {0, 0, 4, 0, 0, 2};
+    t = build(2, 3, unit);
+    LH_ASSERT_TRUE(t);
+    LH_ASSERT_EQ_INT(lh_tri_circumcenters(t, &all), LH_OK);
+    LH_ASSERT_EQ_INT(lh_tri_circumcenter_exp(t, 0, c, &e), LH_OK);
+    LH_EXPECT_TRUE(ldexp(c[0], e) == all[0] && ldexp(c[1], e) == all[1]);
+    LH_EXPECT_TRUE(all[0] == 2 && all[1] == 1);
+    lh_tri_free(t);
+}
+
 /* Ties and near ties that double arithmetic gets wrong, and the sign convention. */
 LH_TEST(compare_distance_is_exact)
 {
@@ -240,7 +274,9 @@ LH_TEST(every_allocation_failure_is_survived)
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
-        LH_CASE(circumcenters_are_empty_sphere_centres), LH_CASE(compare_distance_is_exact),
+        LH_CASE(circumcenters_are_empty_sphere_centres),
+        LH_CASE(circumcentres_past_dbl_max_as_mantissa_and_exponent),
+        LH_CASE(compare_distance_is_exact),
         LH_CASE(nearest_matches_brute_force), LH_CASE(interpolation_reproduces_affine_functions),
         LH_CASE(bad_arguments), LH_CASE(every_allocation_failure_is_survived)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);

@@ -179,9 +179,18 @@ int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts); /* -1, +1   
  * normal (d doubles, unit length) and offset with normal.x + offset > 0 where
  * orient_d(pts[0..d-1], x) > 0 (up to the rounding of the coefficients). Computed
  * from the exact cofactors, each rounded once, then normalised: a few ulps however
- * thin the simplex. Returns 1; 0 for affinely dependent points (normal all 0). */
+ * thin the simplex. Returns 1; 0 for affinely dependent points (normal all 0).
+ * The normal is finite for every finite input (cofactors brought to one exponent
+ * before the length is taken: the same unit vector at every power-of-two scale);
+ * the offset is a distance to the origin, which may pass DBL_MAX for points near
+ * it: then it is +-inf here (never nan) — lh_hyperplane_exp gives it exactly. */
 int lh_hyperplane(lh_pred *ctx, int d, const double *const *pts, double *normal,
                   double *offset);
+/* lh_hyperplane with the offset as offset * 2^offset_exp: the mantissa in [0.5, 1)
+ * (0 with exponent 0 for a plane through the origin), finite for every finite
+ * input, relative error a few ulps. Same normal and return value as lh_hyperplane. */
+int lh_hyperplane_exp(lh_pred *ctx, int d, const double *const *pts, double *normal,
+                      double *offset, int *offset_exp);
 /* The sign of |q - a| - |q - b| for points q, a, b of R^d (d = 1..8): -1 when a is
  * strictly nearer to q, +1 when b is, 0 when they are exactly as near. Filtered,
  * then exact for every finite double (no perturbation: ties are for the caller). */
@@ -410,6 +419,13 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, lh_index hint, lh_location *
  * LH_ERR_INVALID_ARGUMENT.
  */
 lh_status lh_tri_circumcenters(lh_tri *t, const double **centers);
+/* Simplex s's circumcentre as c * 2^e (d doubles c, and *e): the same construction
+ * as lh_tri_circumcenters, whose coordinates are +-inf where a centre's pass DBL_MAX
+ * (sites near DBL_MAX, a thin simplex on the hull); c is computed on the sites scaled
+ * by 2^-e, so it stays finite there (NaN only where lh_tri_circumcenters' is: an
+ * exact zero pivot in the floating-point solve). Returns LH_OK or
+ * LH_ERR_INVALID_ARGUMENT (t, c or e NULL, or s >= the number of simplices). */
+lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, int *e);
 
 /*
  * lh_tri_nearest: the site nearest to q (d doubles): a greedy walk along Delaunay

@@ -8,10 +8,13 @@
 #   qvoronoi  Fv, Fi, Fo, o on grids and cospherical sets in 2D, 3D and 4D: the same ridges,
 #             regions, as Voronoi vertices and hyperplanes (qvoronoi_compare.py; no ridge between
 #             sites that meet at one Voronoi vertex only, nor, in 4D, the bounded ones
-#             Qhull prints across a smaller face);
+#             Qhull prints across a smaller face); FN: each region's vertices, a cell once, as
+#             'o' numbers them, as many as Qhull lists (qvoronoi_fn.py);
 # and, without Qhull (which refuses them), qvoronoi Fi/Fo at extreme scales: every value
 # finite, the exact bisectors (qvoronoi_planes.py), the same ridges and normals at 2^-1070
-# and 2^1000 as at the unit scale.
+# and 2^1000 as at the unit scale; qconvex's planes (n, Fi, FD n), qvoronoi's vertices and
+# qdelaunay's lifted coordinates (p) finite numbers there too, also past DBL_MAX, each
+# checked in decimal (qhull_extreme.py).
 # usage: qhull_degenerate.sh LIFTHULL [PYTHON3]. Skipped (77) when rbox, qconvex, qvoronoi or
 # python3 is missing.
 lh="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; here="$(cd "$(dirname "$0")" && pwd)"
@@ -90,10 +93,18 @@ printf '2 5\n1.6e308 1.6e308\n1.7e308 1.7e308\n1.7e308 1.6e308\n1.6e308 1.7e308\
 if "$py" "$here/qvoronoi_compare.py" "$lh" "$(command -v qvoronoi)" grid52.txt circle.txt grid43.txt sphere.txt \
      grid34.txt cell24.txt > cmp.txt 2>&1
 then ok; else bad "qvoronoi Fv/Fi/Fo against Qhull: $(grep -v ' same$' cmp.txt | head -5)"; fi
+if "$py" "$here/qvoronoi_fn.py" "$lh" "$(command -v qvoronoi)" grid52.txt circle.txt grid43.txt sphere.txt \
+     grid34.txt cell24.txt > fn.txt 2>&1
+then ok; else bad "qvoronoi FN: $(grep -E 'FAIL|Error' fn.txt | head -3)"; fi
 for f in grid52.txt circle.txt sphere.txt huge3.txt dblmin2.txt beyond.txt; do
   case "$f" in huge3.txt | dblmin2.txt | beyond.txt) scales= ;; *) scales="-1070 1000" ;; esac
   if "$py" "$here/qvoronoi_planes.py" "$lh" "$f" $scales > planes.txt 2>&1
   then ok; else bad "qvoronoi Fi/Fo on $f: $(grep -E 'FAIL|DIFF|Error' planes.txt | head -3)"; fi
+done
+for f in sphere.txt huge3.txt dblmin2.txt beyond.txt; do
+  case "$f" in sphere.txt) scales="-1070 1000" ;; *) scales= ;; esac
+  if "$py" "$here/qhull_extreme.py" "$lh" "$f" $scales > extreme.txt 2>&1
+  then ok; else bad "qconvex n Fi, qvoronoi p, qdelaunay p on $f: $(grep -E 'FAIL|Error' extreme.txt | head -3)"; fi
 done
 
 echo "$pass passed, $fail failed"
