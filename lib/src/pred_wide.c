@@ -29,6 +29,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 /* x = m * 2^e with 1/2 <= |m| < 1, or m = 0 (e = 0). */
 typedef struct wide {
@@ -36,12 +37,31 @@ typedef struct wide {
     int64_t e;
 } wide;
 
+/* 2^k for -1074 <= k <= 1023, from its encoding. */
+static double pow2(int k)
+{
+    uint64_t bits = k >= -1022 ? (uint64_t)(k + 1023) << 52 : UINT64_C(1) << (k + 1074);
+    double r;
+    memcpy(&r, &bits, sizeof r);
+    return r;
+}
+
 static wide w_make(double m, int64_t e)
 {
-    int k;
+    uint64_t bits;
+    memcpy(&bits, &m, sizeof bits);
+    int biased = (int)((bits >> 52) & 0x7ff);
     wide r;
-    r.m = frexp(m, &k); /* exact; 0 stays 0 */
-    r.e = r.m == 0 ? 0 : e + k;
+    if (biased == 0) { /* zero or subnormal */
+        int k;
+        r.m = frexp(m, &k); /* exact; 0 stays 0 */
+        r.e = r.m == 0 ? 0 : e + k;
+        return r;
+    }
+    /* normal: m = (1.f) 2^(biased - 1023) = (0.1f) 2^(biased - 1022) */
+    bits = (bits & ~(UINT64_C(0x7ff) << 52)) | (UINT64_C(1022) << 52);
+    memcpy(&r.m, &bits, sizeof r.m);
+    r.e = e + biased - 1022;
     return r;
 }
 
@@ -58,7 +78,10 @@ static wide w_add(wide a, wide b)
     }
     int64_t shift = b.e - a.e; /* <= 0 */
     if (shift < -1100) return a; /* |b| < 2^-1099 |a| */
-    return w_make(a.m + ldexp(b.m, (int)shift), a.e);
+    /* b.m 2^shift rounded once, as ldexp would: multiplying by a power of two is
+     * exact, or one rounding into the subnormal range. */
+    double bs = shift >= -1074 ? b.m * pow2((int)shift) : ldexp(b.m, (int)shift);
+    return w_make(a.m + bs, a.e);
 }
 
 static wide w_abs(wide a)
