@@ -82,10 +82,50 @@ LH_TEST(cancellation_reaches_exact_zero)
     LH_EXPECT_EQ_INT(p.neg, 0);
 }
 
+/* Limbs drawn from zero, all ones and random, so that products meet runs of each
+ * (lh__bn_mul takes a run of all-ones limbs as a difference of two powers). */
+static void sparse_limbs(lh__bn *x, int n)
+{
+    for (int i = 0; i < n; i++) {
+        uint64_t r = next() % 5;
+        x->d[i] = r < 2 ? 0 : r < 4 ? 0xffffffffu : (uint32_t)next();
+    }
+    if (!x->d[n - 1]) x->d[n - 1] = (next() & 1) ? 0xffffffffu : 1 + (uint32_t)(next() % 1000);
+    x->n = n;
+    x->neg = (int)(next() & 1);
+}
+
+LH_TEST(products_with_runs_of_zero_and_one_limbs_match_schoolbook)
+{
+    lh__bn a = mk(0), b = mk(1), p = mk(2);
+    for (int it = 0; it < 20000 && !LH_FAILED(); it++) {
+        sparse_limbs(&a, 1 + (int)(next() % 40));
+        sparse_limbs(&b, 1 + (int)(next() % 40));
+        lh__bn_mul(&p, &a, &b);
+        uint32_t want[80] = {0};
+        for (int i = 0; i < a.n; i++) {
+            uint64_t carry = 0;
+            for (int j = 0; j < b.n; j++) {
+                uint64_t t = (uint64_t)a.d[i] * b.d[j] + want[i + j] + carry;
+                want[i + j] = (uint32_t)t;
+                carry = t >> 32;
+            }
+            want[i + b.n] = (uint32_t)carry;
+        }
+        int wn = a.n + b.n;
+        while (wn > 0 && !want[wn - 1]) wn--;
+        LH_EXPECT_EQ_INT(p.n, wn);
+        LH_EXPECT_EQ_INT(p.neg, a.neg ^ b.neg);
+        for (int i = 0; i < wn && i < p.n && !LH_FAILED(); i++) LH_EXPECT_EQ_U64(p.d[i], want[i]);
+        if (LH_FAILED()) LH_NOTE("iteration %d: %d x %d limbs", it, a.n, b.n);
+    }
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {LH_CASE(doubles_convert_exactly),
                                          LH_CASE(products_and_sums_match_128_bit_arithmetic),
-                                         LH_CASE(cancellation_reaches_exact_zero)};
+                                         LH_CASE(cancellation_reaches_exact_zero),
+                                         LH_CASE(products_with_runs_of_zero_and_one_limbs_match_schoolbook)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -47,7 +47,9 @@ LH_TEST(claimed_signs_are_exact)
                     for (int c = 0; c < d; c++) p[i][c] = mixed_value();
                 int s = 0;
                 cases++;
-                if (!lh__wide_sign(&ctx->sub, d, lifted, row, &s)) continue;
+                if (!lh__wide_sign(&ctx->sub, d, lifted, row, 0, &s) &&
+                    !lh__wide_sign(&ctx->sub, d, lifted, row, 1, &s))
+                    continue;
                 claimed++;
                 int exact = lifted ? lh__insphere_exact(ctx, d, row) : lh__orient_exact(ctx, d, row);
                 if (s != exact) {

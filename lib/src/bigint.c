@@ -72,6 +72,74 @@ void lh__bn_set_dbl(lh__bn *r, double x, int scale)
     trim(r);
 }
 
+/* Limb classes for the product: zero, all ones (2^32 - 1) and plain. */
+#define ONES UINT32_C(0xffffffff)
+
+/* End of the run of limbs of x starting at j that are all ones (ones = 1) or all
+ * plain (ones = 0). */
+static int run_end(const lh__bn *x, int j, int ones)
+{
+    while (j < x->n && x->d[j] && ((x->d[j] == ONES) == ones)) j++;
+    return j;
+}
+
+/* Counts for the cost of lh__bn_mul: nonzero limbs, limbs multiplied when x is the
+ * inner factor (all but runs of ones below the top limb) and those runs of ones. */
+typedef struct mul_counts {
+    long nz, plain, ones;
+} mul_counts;
+
+static mul_counts count_limbs(const lh__bn *x)
+{
+    mul_counts c = {0, 0, 0};
+    for (int j = 0; j < x->n;) {
+        if (!x->d[j]) {
+            j++;
+            continue;
+        }
+        int ones = x->d[j] == ONES, k = run_end(x, j, ones);
+        c.nz += k - j;
+        if (ones && k < x->n)
+            c.ones++;
+        else
+            c.plain += k - j;
+        j = k;
+    }
+    return c;
+}
+
+/* Work with a as the outer factor and b split into runs: a's nonzero limbs times b's
+ * plain limbs, plus two shifted additions of a per run of ones. */
+static long mul_cost(const lh__bn *a, mul_counts ca, mul_counts cb)
+{
+    return ca.nz * cb.plain + 2 * cb.ones * a->n;
+}
+
+/* r[off..n) += a (sub = 0) or -= a (sub = 1), the carry or borrow propagated; the
+ * caller guarantees the result lies in [0, 2^(32 n)). */
+static void add_shifted(uint32_t *r, const lh__bn *a, int off, int sub)
+{
+    uint64_t c = 0;
+    int i = 0;
+    for (; i < a->n; i++) {
+        uint64_t t = sub ? (uint64_t)r[off + i] - a->d[i] - c : (uint64_t)r[off + i] + a->d[i] + c;
+        r[off + i] = (uint32_t)t;
+        c = sub ? (t >> 63) : (t >> 32);
+    }
+    for (; c; i++) {
+        uint64_t t = sub ? (uint64_t)r[off + i] - c : (uint64_t)r[off + i] + c;
+        r[off + i] = (uint32_t)t;
+        c = sub ? (t >> 63) : (t >> 32);
+    }
+}
+
+/* Schoolbook product that skips zero limbs and takes a run of all-ones limbs
+ * b[lo..hi) as 2^(32 hi) - 2^(32 lo): exact entries that mix magnitudes
+ * (2^1000 - 2^-1000) are a few short runs of plain limbs between long runs of zeros
+ * or of ones (borrows), so the cost follows the limbs that carry information, not the
+ * exponent range. Runs are taken in ascending order, so after each r = a * (b's limbs
+ * below the run's end) < 2^(32 n); within a run of ones ending at hi <= b->n - 1, r
+ * stays below a * 2^(32 hi + 1) <= 2^(32 n). */
 void lh__bn_mul(lh__bn *r, const lh__bn *a, const lh__bn *b)
 {
     if (!a->n || !b->n) {
@@ -79,18 +147,42 @@ void lh__bn_mul(lh__bn *r, const lh__bn *a, const lh__bn *b)
         r->neg = 0;
         return;
     }
+    mul_counts ca = count_limbs(a), cb = count_limbs(b);
+    if (mul_cost(b, cb, ca) < mul_cost(a, ca, cb)) {
+        const lh__bn *t = a;
+        a = b;
+        b = t;
+    }
     int n = a->n + b->n;
     memset(r->d, 0, (size_t)n * sizeof *r->d);
-    for (int i = 0; i < a->n; i++) {
-        uint64_t ai = a->d[i], carry = 0;
-        if (!ai) continue; /* r->d[i + b->n] is still 0 from the memset */
-        for (int j = 0; j < b->n; j++) {
-            /* (2^32-1)^2 + 2*(2^32-1) = 2^64-1: no overflow. */
-            uint64_t t = ai * b->d[j] + r->d[i + j] + carry;
-            r->d[i + j] = (uint32_t)t;
-            carry = t >> 32;
+    for (int j = 0; j < b->n;) {
+        if (!b->d[j]) {
+            j++;
+            continue;
         }
-        r->d[i + b->n] = (uint32_t)carry;
+        int ones = b->d[j] == ONES, hi = run_end(b, j, ones);
+        if (ones && hi < b->n) {
+            add_shifted(r->d, a, hi, 0);
+            add_shifted(r->d, a, j, 1);
+            j = hi;
+            continue;
+        }
+        for (int i = 0; i < a->n; i++) {
+            uint64_t ai = a->d[i], carry = 0;
+            if (!ai) continue;
+            for (int k = j; k < hi; k++) {
+                /* (2^32-1)^2 + 2*(2^32-1) = 2^64-1: no overflow. */
+                uint64_t t = ai * b->d[k] + r->d[i + k] + carry;
+                r->d[i + k] = (uint32_t)t;
+                carry = t >> 32;
+            }
+            for (int k = i + hi; carry; k++) {
+                uint64_t t = (uint64_t)r->d[k] + carry;
+                r->d[k] = (uint32_t)t;
+                carry = t >> 32;
+            }
+        }
+        j = hi;
     }
     r->n = n;
     r->neg = a->neg ^ b->neg;

@@ -64,15 +64,22 @@ void lh_pred_counters_reset(lh_pred *ctx)
 }
 
 /* The stages after a filter that could not decide (det, err its value and bound):
- * granularity rule, residues (exact zeros), exact stage; counts the stage when
- * `count` is set. */
+ * granularity rule, the wide filter's first pass, residues (exact zeros), its
+ * double-word pass, exact stage; counts the stage when `count` is set. The cheap
+ * stages that decide most calls come first: the granularity rule on grids, the
+ * first wide pass on mixed magnitudes and clusters; the residues cost less than the
+ * double-word pass and decide what it cannot (exact zeros). */
 static int after_filter(lh_pred *ctx, int dim, int lifted, const double *const *pts,
                         double det, double err, int count)
 {
-    int s, stage = lh__bound_sign(&ctx->sub, dim, lifted, pts, det, err, &s);
+    int s, stage = lh__bound_sign(&ctx->sub, dim, lifted, pts, det, err, 0, &s);
+    int wide = 0;
+    if (!stage) wide = lh__wide_sign(&ctx->sub, dim, lifted, pts, 0, &s);
+    if (!stage && !wide) stage = lh__bound_sign(&ctx->sub, dim, lifted, pts, det, err, 1, &s);
+    if (!stage && !wide) wide = lh__wide_sign(&ctx->sub, dim, lifted, pts, 1, &s);
     if (count && stage == LH__BY_GRANULARITY) ctx->count.grid_exits++;
     if (count && stage == LH__BY_RESIDUES) ctx->count.residue_exits++;
-    if (!stage && lh__wide_sign(&ctx->sub, dim, lifted, pts, &s)) {
+    if (wide) {
         if (count) ctx->count.filter_exits++;
     } else if (!stage) {
         if (count) ctx->count.exact_exits++;

@@ -296,7 +296,7 @@ static int integer_coords(int npts, int dim, const double *const *pts)
 }
 
 int lh__bound_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
-                   double det, double err, int *sign)
+                   double det, double err, int residues, int *sign)
 {
     if (!(err >= 0)) return 0;
     if (err < 0.5 && integer_coords(dim + 1 + lifted, dim, pts)) {
@@ -307,7 +307,7 @@ int lh__bound_sign(const lh__subsets *sub, int dim, int lifted, const double *co
     int scale = split_coords(dim + 1 + lifted, dim, pts, x);
     if (scale == INT_MAX) scale = 0; /* every coordinate 0 */
     if (granular_sign(dim, lifted, x, scale, det, err, sign)) return LH__BY_GRANULARITY;
-    if (!residues_zero(sub, dim, lifted, x, scale, det, err)) return 0;
+    if (!residues || !residues_zero(sub, dim, lifted, x, scale, det, err)) return 0;
     *sign = 0;
     return LH__BY_RESIDUES;
 }

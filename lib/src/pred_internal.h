@@ -54,15 +54,18 @@ int lh__insphere_exact(lh_pred *ctx, int d, const double *const *pts);
 /* The stages between the filter and the exact one (pred_bound.c), given the
  * filter's rounded determinant det and its proven error bound err (< 0: none) for
  * orient_dim, or insphere_dim when `lifted`: LH__BY_GRANULARITY or LH__BY_RESIDUES
- * with *sign set when one decides (residues only ever prove 0), else 0. */
+ * with *sign set when one decides (residues only ever prove 0), else 0. The
+ * residues are tried only when `residues` is set. */
 enum { LH__BY_GRANULARITY = 1, LH__BY_RESIDUES = 2 };
 int lh__bound_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
-                   double det, double err, int *sign);
+                   double det, double err, int residues, int *sign);
 
 /* The wide-exponent filter (pred_wide.c): 1 with *sign (-1 or +1) when it decides
- * orient_dim (insphere_dim when `lifted`) of pts, 0 when the exact stage must. */
+ * orient_dim (insphere_dim when `lifted`) of pts, else 0. With double_word = 0 its pass
+ * in doubles (or numbers with a separate exponent); with double_word = 1 its double-word
+ * pass, for calls the first pass left undecided. */
 int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
-                  int *sign);
+                  int double_word, int *sign);
 
 /* Filtered then exact, unperturbed (the body of lh_orient without the counting of
  * a call; used by the perturbation's fast path). */

@@ -29,6 +29,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 /* x = m * 2^e with 1/2 <= |m| < 1, or m = 0 (e = 0). */
 typedef struct wide {
@@ -36,12 +37,31 @@ typedef struct wide {
     int64_t e;
 } wide;
 
+/* 2^k for -1074 <= k <= 1023, from its encoding. */
+static double pow2(int k)
+{
+    uint64_t bits = k >= -1022 ? (uint64_t)(k + 1023) << 52 : UINT64_C(1) << (k + 1074);
+    double r;
+    memcpy(&r, &bits, sizeof r);
+    return r;
+}
+
 static wide w_make(double m, int64_t e)
 {
-    int k;
+    uint64_t bits;
+    memcpy(&bits, &m, sizeof bits);
+    int biased = (int)((bits >> 52) & 0x7ff);
     wide r;
-    r.m = frexp(m, &k); /* exact; 0 stays 0 */
-    r.e = r.m == 0 ? 0 : e + k;
+    if (biased == 0) { /* zero or subnormal */
+        int k;
+        r.m = frexp(m, &k); /* exact; 0 stays 0 */
+        r.e = r.m == 0 ? 0 : e + k;
+        return r;
+    }
+    /* normal: m = (1.f) 2^(biased - 1023) = (0.1f) 2^(biased - 1022) */
+    bits = (bits & ~(UINT64_C(0x7ff) << 52)) | (UINT64_C(1022) << 52);
+    memcpy(&r.m, &bits, sizeof r.m);
+    r.e = e + biased - 1022;
     return r;
 }
 
@@ -58,7 +78,10 @@ static wide w_add(wide a, wide b)
     }
     int64_t shift = b.e - a.e; /* <= 0 */
     if (shift < -1100) return a; /* |b| < 2^-1099 |a| */
-    return w_make(a.m + ldexp(b.m, (int)shift), a.e);
+    /* b.m 2^shift rounded once, as ldexp would: multiplying by a power of two is
+     * exact, or one rounding into the subnormal range. */
+    double bs = shift >= -1074 ? b.m * pow2((int)shift) : ldexp(b.m, (int)shift);
+    return w_make(a.m + bs, a.e);
 }
 
 static wide w_abs(wide a)
@@ -229,6 +252,15 @@ static void expand_dw(const lh__subsets *sub, int n, const dword *e, dword *det,
     *perm = lay_abs[n & 1][top];
 }
 
+/* ilogb(x) for finite x > 0, from the encoding when x is normal. */
+static int binary_exponent(double x)
+{
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    int biased = (int)(bits >> 52); /* x > 0: no sign bit */
+    return biased ? biased - 1023 : ilogb(x);
+}
+
 /* The row to subtract from the others: the point k minimising the product over i of
  * max_c |p_i[c] - p_k[c]| (compared by binary exponents), so that a cell with most of
  * its points in a small cluster and one far away is translated to the cluster, where
@@ -242,8 +274,11 @@ static int pivot(int dim, int rows, const double *const *pts)
         for (int i = 0; i < rows; i++) {
             if (i == k) continue;
             double most = 0;
-            for (int c = 0; c < dim; c++) most = fmax(most, fabs(pts[i][c] - pts[k][c]));
-            sum += most == 0 ? -1100 : !isfinite(most) ? 1100 : ilogb(most);
+            for (int c = 0; c < dim; c++) {
+                double d = fabs(pts[i][c] - pts[k][c]);
+                if (d > most) most = d;
+            }
+            sum += most == 0 ? -1100 : !isfinite(most) ? 1100 : binary_exponent(most);
         }
         if (k == 0 || sum < best_sum) {
             best = k;
@@ -259,8 +294,9 @@ static int pivot(int dim, int rows, const double *const *pts)
 static int in_band(int n, int dim, int lifted, const double *e, int b)
 {
     for (int i = 0; i < n * n; i++) {
-        double a = fabs(e[i]), lim = ldexp(1.0, lifted && i % n == dim ? 2 * b : b);
-        if (a != 0 && !(a >= 1 / lim && a <= lim)) return 0;
+        double a = fabs(e[i]);
+        int lift = lifted && i % n == dim;
+        if (a != 0 && !(a >= pow2(lift ? -2 * b : -b) && a <= pow2(lift ? 2 * b : b))) return 0;
     }
     return 1;
 }
@@ -307,13 +343,14 @@ static int dw_sign(const lh__subsets *sub, int n, int dim, int lifted, const dou
 }
 
 int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
-                  int *sign)
+                  int double_word, int *sign)
 {
     int n = dim + lifted; /* rows p_i - p_k for i != k */
     int k = pivot(dim, n + 1, pts);
     /* Subtracting row k of the homogeneous matrix from the others and expanding along
      * the column of ones leaves (-1)^k times the determinant of these rows. */
     int flip = k & 1;
+    if (double_word) return dw_sign(sub, n, dim, lifted, pts, k, flip, sign);
     int g = n * (n + 1) / 2 - 1 + dim + 2;
     double ed[(LH__MAXN - 1) * (LH__MAXN - 1)];
     for (int i = 0, r = 0; i <= n; i++) {
@@ -334,7 +371,7 @@ int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *con
             *sign = (det > 0) != flip ? 1 : -1;
             return 1;
         }
-        return dw_sign(sub, n, dim, lifted, pts, k, flip, sign);
+        return 0;
     }
     wide e[(LH__MAXN - 1) * (LH__MAXN - 1)];
     for (int i = 0, r = 0; i <= n; i++) {
