@@ -73,7 +73,8 @@ void lh_cli_edges_free(lh_cli_edges *e);
 /* Triangle's -v files: FILE.v.node, one Voronoi vertex per triangle (its circumcentre,
  * the vertex attributes interpolated linearly, no markers); FILE.v.edge, one Voronoi
  * edge per mesh edge in the .edge order: the two triangles' vertices, or on the
- * boundary "t -1 dx dy", a ray from t's circumcentre outward across the edge. */
+ * boundary "t -1 dx dy", a ray from t's circumcentre outward across the edge (dx dy
+ * the edge turned clockwise; halved where its length overflows). */
 void lh_cli_write_vnode(FILE *f, const lh_trimesh *m, int base);
 void lh_cli_write_vedge(FILE *f, const lh_trimesh *m, const lh_cli_edges *e, int base);
 

@@ -141,8 +141,11 @@ void lh_cli_write_vedge(FILE *f, const lh_trimesh *m, const lh_cli_edges *e, int
             continue;
         }
         /* a ray: outward across the hull edge a -> b (counterclockwise in t), its
-           direction the edge turned clockwise, as long as the edge */
+           direction the edge turned clockwise, as long as the edge (half as long where
+           that overflows, near +-DBL_MAX: a direction, never an infinity) */
         const double *a = xy + 2 * (size_t)e->end[2 * k], *b = xy + 2 * (size_t)e->end[2 * k + 1];
-        fprintf(f, "  -1    %.17g  %.17g\n", b[1] - a[1], a[0] - b[0]);
+        double dx = b[1] - a[1], dy = a[0] - b[0];
+        if (!isfinite(dx) || !isfinite(dy)) dx = b[1] / 2 - a[1] / 2, dy = a[0] / 2 - b[0] / 2;
+        fprintf(f, "  -1    %.17g  %.17g\n", dx, dy);
     }
 }

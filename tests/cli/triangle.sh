@@ -209,8 +209,8 @@ cd ..
 
 # -v and -o2 at the ends of the range: the Voronoi vertices of points scaled by 2^k are
 # the unit-scale ones times 2^k (at 2^-1000 the squared lengths underflowed: every
-# vertex was NaN), and -o2's midpoints on a square at +-2^1023 are finite (the sums
-# overflowed: inf in the .node)
+# vertex was NaN), and -o2's midpoints and -v's rays on a square at +-2^1023 are
+# finite (the sums and differences overflowed: inf in the .node and .v.edge)
 rm -rf w; mkdir w; cd w
 for k in 0 -1000 1000; do
   awk -v k="$k" 'BEGIN { f = 2 ^ k; split("0 0 4 0 0 4 4 4 1 2", c, " "); print "5 2 0 0"
@@ -223,7 +223,9 @@ for k in -1000 1000; do
       END { print bad + 0, FNR }' s0.1.v.node "s$k.1.v.node")" "0 5"
 done
 printf '4 2 0 0\n1 -0x1p1023 -0x1p1023\n2 0x1p1023 -0x1p1023\n3 0x1p1023 0x1p1023\n4 -0x1p1023 0x1p1023\n' > big.node
-expect "-o2 at +-2^1023" 0 '' '' -- "$lh" triangle -o2Q big.node
+expect "-o2 -v at +-2^1023" 0 '' '' -- "$lh" triangle -o2vQ big.node
+same "-v at +-2^1023: the rays' directions" "$(awk '$3 == -1 { printf "%s %s;", $4, $5 }' big.1.v.edge)" \
+  "-8.9884656743115795e+307 0;0 -8.9884656743115795e+307;0 8.9884656743115795e+307;8.9884656743115795e+307 0;"
 same "-o2 at +-2^1023: midpoints" "$(awk 'NR > 5 { printf "%s %s;", $2, $3 }' big.1.node)" \
   "0 0;-8.9884656743115795e+307 0;0 -8.9884656743115795e+307;0 8.9884656743115795e+307;8.9884656743115795e+307 0;"
 cd ..
