@@ -406,6 +406,7 @@ int lh_cli_qhalf(int argc, char **argv)
     lh_cli_qopts o;
     int rc = lh_cli_qparse(&o, LH_QPROG_HALF, argc, argv);
     if (rc != 0) return rc > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check(o.name, o.output, 1, o.input)) return LH_EXIT_FAIL; /* before the input */
     halfspaces hs = {0};
     const char *name;
     if (!read_halfspaces(o.input, &hs, &name)) {
