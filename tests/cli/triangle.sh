@@ -186,6 +186,13 @@ fresh A.poly
 expect "unknown switch" 2 "lifthull triangle: unknown switch 'x' in '-pxq'" '' -- "$lh" triangle -pxq A.poly
 expect "-o3 refused" 2 "lifthull triangle: -o must be -o2 \(quadratic elements\), not '-po3'" '' -- "$lh" triangle -po3 A.poly
 expect "-u refused" 2 "lifthull triangle: -u is not supported" '' -- "$lh" triangle -pu A.poly
+# the --help synopsis names every switch parse_switches accepts, the refused ones
+# after "not supported"
+"$lh" triangle --help > help.txt
+same "--help synopsis" "$(sed -n '1s/.*\[-\([^]]*\)\].*/\1/p' help.txt | fold -w1 | sort | tr -d '\n')" \
+  "$(printf '%s' prqaAcDsYSjevno2zBPNEIOQVgilFCX | fold -w1 | sort | tr -d '\n')"
+for c in s v; do "$lh" triangle -Q$c A.poly > /dev/null 2>&1 || bad "-$c refused"; done
+matches help.txt '^not supported \(refused\): -u -k -L -w -W$' && ok || bad "--help: the refused switches"
 expect "two files" 2 "one input file, not 'A\.poly' and 'B\.poly'" '' -- "$lh" triangle -p A.poly B.poly
 expect "accepted, no effect" 0 '' '' -- "$lh" triangle -pQiFlCX A.poly
 expect "-D conforming" 0 '' '' -- "$lh" triangle -pDQ A.poly
