@@ -13,6 +13,8 @@
  * of the input's extent, or whose rounded midpoint is refused, stays constrained and
  * is counted; the Steiner budget stops the splitting.
  */
+#include <math.h>
+
 #include "m2_geom.h"
 #include "refine.h"
 
@@ -36,12 +38,16 @@ static lh_status push(lh__m2 *m, lh_index **q, size_t *count, size_t *cap, lh_in
     return LH_OK;
 }
 
-/* The new point pi on subsegment a-b: attributes linear along it. */
+/* The new point pi on subsegment a-b: attributes linear along it, the mean of the
+ * ends' (halved first where their sum overflows: never an infinity between finite
+ * values, and the same double wherever the sum is finite). */
 static void point_data(lh__m2 *m, lh_index pi, lh_index a, lh_index b)
 {
     const int na = m->attr_count;
-    for (int j = 0; j < na; j++)
-        m->attr[(size_t)pi * na + j] = (m->attr[(size_t)a * na + j] + m->attr[(size_t)b * na + j]) / 2;
+    for (int j = 0; j < na; j++) {
+        const double x = m->attr[(size_t)a * na + j], y = m->attr[(size_t)b * na + j], sum = x + y;
+        m->attr[(size_t)pi * na + j] = isfinite(sum) ? sum / 2 : x / 2 + y / 2;
+    }
 }
 
 /* Whether subsegment s is at least the floor (fm * 2^fe) long. */

@@ -3,7 +3,7 @@
  *   to 2^600 gives the same mesh, byte for byte once unscaled, meeting the bound and
  *   exactly valid; a 10^-300 radian wedge counts as bad; an area bound applies at
  *   +-2^511 and +-DBL_MAX; split_segments (-s) gives the unit mesh scaled from 2^-600
- *   up to a square at +-2^1023;
+ *   up to a square at +-2^1023, and its midpoints' attributes do not overflow;
  * - where the domain is pinched (a hole touching the outer ring, a ring touching
  *   itself), no triangle beside the pinch is left below the bound unless an input
  *   angle there is below it too (earcut's hole-touching-outer.json and
@@ -237,6 +237,31 @@ LH_TEST(split_segments_are_scale_free)
     }
 }
 
+/* split_segments interpolates the vertex attributes at the midpoints without
+ * overflowing: every attribute 1.5e308 stays 1.5e308 (the point put on the inner
+ * segment got (a + b) / 2 = inf). */
+LH_TEST(split_segments_attributes_stay_finite)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(lh_test_pslg_text("7 2 1 0\n1 -1 -1 1.5e308\n2 1 -1 1.5e308\n3 1 1 1.5e308\n4 -1 1 1.5e308\n"
+                                       "5 -1 0 1.5e308\n6 1 0 1.5e308\n7 0 0.0625 1.5e308\n"
+                                       "5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n0\n", &g),
+                     LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.split_segments = 1;
+    lh_trimesh_stats st;
+    lh_trimesh *m = mesh_valid(lh_t_, &g, &o, &st);
+    if (m) {
+        LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), 8);
+        LH_ASSERT_EQ_INT(lh_trimesh_point_attr_count(m), 1);
+        for (size_t p = 0; p < lh_trimesh_point_count(m); p++)
+            LH_EXPECT_EQ_DBL(lh_trimesh_point_attrs(m)[p], 1.5e308);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+}
+
 static int same_point(const double *a, const double *b) { return a[0] == b[0] && a[1] == b[1]; }
 
 /* The smallest angle (degrees) between two input segments ending at point p (their
@@ -310,6 +335,7 @@ int main(int argc, char **argv)
         LH_CASE(refinement_above_the_provable_angle_ends),
         LH_CASE(an_area_bound_applies_at_the_ends_of_the_range),
         LH_CASE(split_segments_are_scale_free),
+        LH_CASE(split_segments_attributes_stay_finite),
         LH_CASE(a_pinched_domain_is_refined_beside_the_pinch),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
