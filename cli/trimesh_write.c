@@ -182,7 +182,8 @@ int lh_cli_trimesh_check(const char *base, const lh_cli_tri_files *w, const char
     return ok;
 }
 
-static int write_file(int i, FILE *f, const ctx *c, const lh_pslg *g)
+/* File i of tri_ext; write errors show at the close (lh_cli_outset_close). */
+static void write_file(int i, FILE *f, const ctx *c, const lh_pslg *g)
 {
     switch (i) {
     case 0: write_node(f, c); break;
@@ -194,7 +195,6 @@ static int write_file(int i, FILE *f, const ctx *c, const lh_pslg *g)
     case 6: lh_cli_write_vnode(f, c->m, c->w->base); break;
     default: lh_cli_write_vedge(f, c->m, &c->e, c->w->base); break;
     }
-    return 1;
 }
 
 int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
@@ -220,8 +220,7 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
         }
     }
     for (int i = 0; i < nfiles && ok; i++)
-        if (f[i] && !(ok = write_file(i, f[i], &c, &in->g)))
-            fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+        if (f[i]) write_file(i, f[i], &c, &in->g);
     /* all or none: renamed only when every file was written */
     const int rc = lh_cli_outset_close(&set, ok);
     for (int i = 0; i < nfiles; i++) free(path[i]);
