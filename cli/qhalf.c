@@ -112,10 +112,7 @@ static int read_halfspaces(const char *file, halfspaces *hs, const char **name)
     *name = "<stdin>";
     if (file && strcmp(file, "-")) {
         *name = file;
-        if (!(f = fopen(file, "r"))) {
-            fprintf(stderr, "%s: %s\n", file, strerror(errno));
-            return 0;
-        }
+        if (!(f = lh_cli_open_input(file))) return 0; /* said: missing, a directory, ... */
     }
     size_t len;
     char *text = slurp(f, &len);

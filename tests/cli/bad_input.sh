@@ -92,6 +92,7 @@ exact n0_endpoint 3 "n0.poly:5: segment 3: endpoint 9 is not a vertex (0..3)" --
 mkdir "$tmp/dir.poly" "$tmp/dir.txt"
 exact dir_points 3 "dir.txt: is a directory, not an input file" -- "$lh" delaunay dir.txt
 exact dir_qhull 3 "dir.txt: is a directory, not an input file" -- "$lh" qconvex TI dir.txt
+exact dir_qhalf 3 "dir.txt: is a directory, not an input file" -- "$lh" qhalf Fp TI dir.txt
 exact dir_poly 3 "dir.poly: is a directory, not an input file" -- "$lh" mesh dir.poly
 exact dir_check 3 "dir.txt: is a directory, not an input file" -- "$lh" check n0.node dir.txt
 # -r: the .ele's attributes are numbers as a .node's are (finite); the .area file read
