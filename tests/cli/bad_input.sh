@@ -113,6 +113,9 @@ area area_line_numbers "\n# c\n2\n\n1 1\n2 1 7\n" "q.area:6:5: expected the end 
 area area_long_line "$(printf '%600s' '')2\n1 1\n$(printf '%600s' '')2 x\n" "q.area:3:603: expected the area bound of triangle 2 (a number), found 'x'"
 area area_short "2\n1 1\n" "q.area:3:1: expected triangle number 2, found the end of the file"
 area area_long "2\n1 1\n2 1\n3 1\n" "q.area:4:1: expected the end of the file after 2 triangles, found '3'"
+# a number of any length, as in a .node (a 100-digit bound was "not a number")
+printf '2\n1 1%s.5\n2 1\n' "$(printf '%099d' 0)" > "$tmp/q.area"
+exact area_long_number 0 "" -- "$lh" triangle -raQ q
 
 # numbers of options: empty, signed, blank-padded or trailing text is refused; a value
 # just past a bound prints with every digit
