@@ -72,18 +72,21 @@ static int integer(const token *t, long long *v)
     return 1;
 }
 
-/* A whole token as a double (strtod's syntax): 1 finite, 2 NaN or infinity, 3 a
- * finite decimal beyond DBL_MAX; 0 not a number. */
+/* A whole token as a double (strtod's syntax, of any length, as a .node's numbers):
+ * 1 finite, 2 NaN or infinity, 3 a finite decimal beyond DBL_MAX; 0 not a number,
+ * -1 out of memory for a long token's copy. */
 static int number(const token *t, double *v)
 {
-    char buf[64];
-    if (!t->s || t->nul || !t->len || t->len >= sizeof buf) return 0;
+    char small[64], *buf = small;
+    if (!t->s || t->nul || !t->len) return 0;
+    if (t->len >= sizeof small && !(buf = malloc(t->len + 1))) return -1;
     memcpy(buf, t->s, t->len);
     buf[t->len] = 0;
     char *end;
     *v = strtod(buf, &end);
-    if (end != buf + t->len) return 0;
-    return isfinite(*v) ? 1 : strpbrk(buf, "iInN") ? 2 : 3;
+    const int kind = end != buf + t->len ? 0 : isfinite(*v) ? 1 : strpbrk(buf, "iInN") ? 2 : 3;
+    if (buf != small) free(buf);
+    return kind;
 }
 
 /* Triangle k's line: "number area" then the end of the line. */
@@ -102,6 +105,10 @@ static int item(area_text *x, size_t k, long long *first, double *area)
     t = next(x, 0);
     snprintf(what, sizeof what, "the area bound of triangle %lld (a number)", num);
     const int kind = number(&t, area);
+    if (kind < 0) {
+        fprintf(stderr, "%s: out of memory\n", x->path);
+        return 0;
+    }
     if (!kind) return expected(x, &t, what);
     if (kind > 1) {
         fprintf(stderr, "%s:%zu:%zu: the area bound of triangle %lld is '%.*s'%s\n", x->path, t.line, t.col, num,

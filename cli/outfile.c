@@ -21,7 +21,6 @@ enum { TEMP_SLOTS = 16 };
 static char *volatile temps[TEMP_SLOTS];
 static const int caught[] = {SIGHUP, SIGINT, SIGPIPE, SIGTERM, SIGXFSZ};
 enum { n_caught = sizeof caught / sizeof caught[0] };
-static int handlers_installed;
 
 /* Async-signal-safe: unlink, signal and raise only. The signal stays blocked until the
  * handler returns, then the default action ends the process. */
@@ -46,11 +45,10 @@ static void block_signals(sigset_t *old)
 static void restore_signals(const sigset_t *old) { pthread_sigmask(SIG_SETMASK, old, NULL); }
 
 /* Installs the handler for each caught signal that is not ignored (nohup, a shell's
- * background job: the caller's choice stands). */
+ * background job: the caller's choice stands) nor handled by it already: the
+ * disposition itself says whether this ran before, no flag is kept. */
 static void install_handlers(void)
 {
-    if (handlers_installed) return;
-    handlers_installed = 1;
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
@@ -58,7 +56,7 @@ static void install_handlers(void)
     for (int i = 0; i < n_caught; i++) sigaddset(&sa.sa_mask, caught[i]);
     for (int i = 0; i < n_caught; i++) {
         struct sigaction old;
-        if (sigaction(caught[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+        if (sigaction(caught[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN && old.sa_handler != on_signal)
             sigaction(caught[i], &sa, NULL);
     }
 }

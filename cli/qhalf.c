@@ -112,10 +112,7 @@ static int read_halfspaces(const char *file, halfspaces *hs, const char **name)
     *name = "<stdin>";
     if (file && strcmp(file, "-")) {
         *name = file;
-        if (!(f = fopen(file, "r"))) {
-            fprintf(stderr, "%s: %s\n", file, strerror(errno));
-            return 0;
-        }
+        if (!(f = lh_cli_open_input(file))) return 0; /* said: missing, a directory, ... */
     }
     size_t len;
     char *text = slurp(f, &len);
@@ -406,6 +403,7 @@ int lh_cli_qhalf(int argc, char **argv)
     lh_cli_qopts o;
     int rc = lh_cli_qparse(&o, LH_QPROG_HALF, argc, argv);
     if (rc != 0) return rc > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (!lh_cli_out_check(o.name, o.output, 1, o.input)) return LH_EXIT_FAIL; /* before the input */
     halfspaces hs = {0};
     const char *name;
     if (!read_halfspaces(o.input, &hs, &name)) {

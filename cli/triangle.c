@@ -20,7 +20,7 @@ typedef struct sw {
 } sw;
 
 static const char *const usage_text =
-    "usage: lifthull triangle [-prqaAcDYSjevno2zBPNEIOQVgil] FILE[.poly|.node|.json]\n"
+    "usage: lifthull triangle [-prqaAcDsYSjevno2zBPNEIOQVgilFCX] FILE[.poly|.node|.json]\n"
     "\n"
     "Triangle's command line (J. R. Shewchuk), computed exactly by lifthull: the same\n"
     "switches, input and output files. FILE.poly (or -p FILE) is a planar straight-line\n"
@@ -53,7 +53,7 @@ static const char *const usage_text =
     "  -Q      quiet; -V verbose: the quality report (angles, areas, histogram)\n"
     "  -i -F -l -C -X   Triangle's choices of algorithm or arithmetic: accepted,\n"
     "          nothing changes (lifthull is always exact)\n"
-    "not supported: -u\n"
+    "not supported (refused): -u -k -L -w -W\n"
     "\n"
     "examples:\n"
     "  lifthull triangle -pq30 examples/A.poly       # the letter A: examples/A.1.*\n"

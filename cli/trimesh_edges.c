@@ -4,6 +4,7 @@
  * midpoint nodes of quadratic elements (-o2, triangle.highorder.html). */
 #include "pslg_io.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 /* The subsegment lying on edge a-b, if any (its marker): a sorted lookup. */
@@ -86,16 +87,22 @@ int lh_cli_edges_build(lh_cli_edges *e, const lh_trimesh *m)
 }
 
 /* Triangle t's circumcentre c and the barycentric weights w of c in t (for the
- * attributes, extrapolated outside t), from t's first vertex. */
+ * attributes, extrapolated outside t), from t's first vertex, on the edge vectors
+ * scaled by a power of two (lh_cli_scaled_edges): no square over- or underflows for
+ * points near +-DBL_MAX or 1e-300; elsewhere the same doubles as unscaled. */
 static void circumcentre(const lh_trimesh *m, size_t t, double c[2], double w[3])
 {
     const double *xy = lh_trimesh_points(m);
     const lh_index *v = lh_trimesh_triangles(m) + 3 * t;
-    const double *a = xy + 2 * (size_t)v[0], *b = xy + 2 * (size_t)v[1], *d = xy + 2 * (size_t)v[2];
-    const double bx = b[0] - a[0], by = b[1] - a[1], dx = d[0] - a[0], dy = d[1] - a[1];
+    const double *p[3] = {xy + 2 * (size_t)v[0], xy + 2 * (size_t)v[1], xy + 2 * (size_t)v[2]};
+    double ed[3][2];
+    long e;
+    lh_cli_scaled_edges(p, ed, &e);
+    const double *a = p[0];
+    const double bx = ed[2][0], by = ed[2][1], dx = -ed[1][0], dy = -ed[1][1]; /* b - a, d - a */
     const double den = 2 * (bx * dy - by * dx), b2 = bx * bx + by * by, d2 = dx * dx + dy * dy;
     const double ux = (dy * b2 - by * d2) / den, uy = (bx * d2 - dx * b2) / den;
-    c[0] = a[0] + ux, c[1] = a[1] + uy;
+    c[0] = a[0] + ldexp(ux, (int)e), c[1] = a[1] + ldexp(uy, (int)e);
     /* u = w1 (b - a) + w2 (d - a): Cramer's rule with the same denominator / 2 */
     w[1] = 2 * (ux * dy - uy * dx) / den;
     w[2] = 2 * (bx * uy - by * ux) / den;
@@ -134,8 +141,11 @@ void lh_cli_write_vedge(FILE *f, const lh_trimesh *m, const lh_cli_edges *e, int
             continue;
         }
         /* a ray: outward across the hull edge a -> b (counterclockwise in t), its
-           direction the edge turned clockwise, as long as the edge */
+           direction the edge turned clockwise, as long as the edge (half as long where
+           that overflows, near +-DBL_MAX: a direction, never an infinity) */
         const double *a = xy + 2 * (size_t)e->end[2 * k], *b = xy + 2 * (size_t)e->end[2 * k + 1];
-        fprintf(f, "  -1    %.17g  %.17g\n", b[1] - a[1], a[0] - b[0]);
+        double dx = b[1] - a[1], dy = a[0] - b[0];
+        if (!isfinite(dx) || !isfinite(dy)) dx = b[1] / 2 - a[1] / 2, dy = a[0] / 2 - b[0] / 2;
+        fprintf(f, "  -1    %.17g  %.17g\n", dx, dy);
     }
 }

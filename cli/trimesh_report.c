@@ -35,8 +35,7 @@ static void xprint(FILE *out, xval v)
     fprintf(out, "%.6ge%+.0f", mant, x);
 }
 
-/* Triangle p's edge vectors (opposite corners 0, 1, 2) scaled by 2^-*e. */
-static void scaled_edges(const double *const *p, double d[3][2], long *e)
+void lh_cli_scaled_edges(const double *const *p, double d[3][2], long *e)
 {
     int half = 0;
     for (int k = 0; k < 3; k++)
@@ -71,7 +70,7 @@ void lh_cli_triangle_shape(const double *const p[3], double ang[3], double *rati
 {
     double d[3][2], l[3];
     long ex;
-    scaled_edges(p, d, &ex);
+    lh_cli_scaled_edges(p, d, &ex);
     corner_angles(d, ang);
     for (int k = 0; k < 3; k++) {
         ang[k] *= 180 / 3.14159265358979323846;
@@ -112,7 +111,7 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle, int
         for (int k = 0; k < 3; k++) p[k] = xy + 2 * (size_t)t[3 * i + k];
         double d[3][2];
         long ex;
-        scaled_edges(p, d, &ex);
+        lh_cli_scaled_edges(p, d, &ex);
         const double a = hypot(d[0][0], d[0][1]), b = hypot(d[1][0], d[1][1]), c = hypot(d[2][0], d[2][1]);
         const double area = fabs(d[1][0] * d[2][1] - d[1][1] * d[2][0]) / 2;
         const double r = a * b * c / (4 * area), sh = fmin(a, fmin(b, c));

@@ -4,6 +4,7 @@
  * items numbered from the base; neighbour k across from corner k, -1 for none. */
 #include "pslg_io.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,6 +20,14 @@ typedef struct ctx {
 } ctx;
 
 static long long num(const ctx *c, lh_index p) { return (long long)c->num[p] + c->w->base; }
+
+/* (x + y) / 2, or x / 2 + y / 2 where the sum overflows (both near +-DBL_MAX): the
+ * same double wherever the sum is finite, never an infinity between finite ends. */
+static double mid(double x, double y)
+{
+    const double s = x + y;
+    return isfinite(s) ? s / 2 : x / 2 + y / 2;
+}
 
 static void write_node(FILE *f, const ctx *c)
 {
@@ -38,10 +47,9 @@ static void write_node(FILE *f, const ctx *c)
        ends' mean, its marker the edge's (Triangle's rule for a point on an edge) */
     for (size_t k = 0; c->w->order2 && k < c->e.n; k++) {
         const lh_index a = c->e.end[2 * k], b = c->e.end[2 * k + 1];
-        fprintf(f, "%4lld    %.17g  %.17g", (long long)(c->kept + k) + c->w->base, (xy[2 * a] + xy[2 * b]) / 2,
-                (xy[2 * a + 1] + xy[2 * b + 1]) / 2);
-        for (int j = 0; j < na; j++)
-            fprintf(f, "  %.17g", (at[a * (size_t)na + j] + at[b * (size_t)na + j]) / 2);
+        fprintf(f, "%4lld    %.17g  %.17g", (long long)(c->kept + k) + c->w->base, mid(xy[2 * a], xy[2 * b]),
+                mid(xy[2 * a + 1], xy[2 * b + 1]));
+        for (int j = 0; j < na; j++) fprintf(f, "  %.17g", mid(at[a * (size_t)na + j], at[b * (size_t)na + j]));
         if (c->w->markers) fprintf(f, "    %lld", (long long)c->e.mark[k]);
         fputc('\n', f);
     }
@@ -174,7 +182,8 @@ int lh_cli_trimesh_check(const char *base, const lh_cli_tri_files *w, const char
     return ok;
 }
 
-static int write_file(int i, FILE *f, const ctx *c, const lh_pslg *g)
+/* File i of tri_ext; write errors show at the close (lh_cli_outset_close). */
+static void write_file(int i, FILE *f, const ctx *c, const lh_pslg *g)
 {
     switch (i) {
     case 0: write_node(f, c); break;
@@ -186,7 +195,6 @@ static int write_file(int i, FILE *f, const ctx *c, const lh_pslg *g)
     case 6: lh_cli_write_vnode(f, c->m, c->w->base); break;
     default: lh_cli_write_vedge(f, c->m, &c->e, c->w->base); break;
     }
-    return 1;
 }
 
 int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char *base,
@@ -212,8 +220,7 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
         }
     }
     for (int i = 0; i < nfiles && ok; i++)
-        if (f[i] && !(ok = write_file(i, f[i], &c, &in->g)))
-            fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+        if (f[i]) write_file(i, f[i], &c, &in->g);
     /* all or none: renamed only when every file was written */
     const int rc = lh_cli_outset_close(&set, ok);
     for (int i = 0; i < nfiles; i++) free(path[i]);

@@ -15,6 +15,7 @@
  */
 #include <math.h>
 
+#include "m2_geom.h"
 #include "refine.h"
 
 /* Whether subsegment s is not locally Delaunay (both sides in the mesh). */
@@ -37,26 +38,24 @@ static lh_status push(lh__m2 *m, lh_index **q, size_t *count, size_t *cap, lh_in
     return LH_OK;
 }
 
-/* The new point pi on subsegment a-b: attributes linear along it. */
+/* The new point pi on subsegment a-b: attributes linear along it, the mean of the
+ * ends' (halved first where their sum overflows: never an infinity between finite
+ * values, and the same double wherever the sum is finite). */
 static void point_data(lh__m2 *m, lh_index pi, lh_index a, lh_index b)
 {
     const int na = m->attr_count;
-    for (int j = 0; j < na; j++)
-        m->attr[(size_t)pi * na + j] = (m->attr[(size_t)a * na + j] + m->attr[(size_t)b * na + j]) / 2;
+    for (int j = 0; j < na; j++) {
+        const double x = m->attr[(size_t)a * na + j], y = m->attr[(size_t)b * na + j], sum = x + y;
+        m->attr[(size_t)pi * na + j] = isfinite(sum) ? sum / 2 : x / 2 + y / 2;
+    }
 }
 
-/* The extent of the points: the larger of the diameter and the largest coordinate,
- * squared, times 2^-80 (refine.c's floor). */
-static double floor2(const lh__m2 *m)
+/* Whether subsegment s is at least the floor (fm * 2^fe) long. */
+static int splittable(const lh__m2 *m, lh_index s, double fm, long fe)
 {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, mag = 0;
-    for (size_t i = 0; i < m->np; i++)
-        for (int j = 0; j < 2; j++) {
-            const double x = m->xy[2 * i + j];
-            lo[j] = fmin(lo[j], x), hi[j] = fmax(hi[j], x), mag = fmax(mag, fabs(x));
-        }
-    const double dx = hi[0] - lo[0], dy = hi[1] - lo[1];
-    return ldexp(fmax(dx * dx + dy * dy, mag * mag), -80);
+    double d[2];
+    const int e = lh__g_vec(lh__m2_pt(m, m->sv[2 * (size_t)s]), lh__m2_pt(m, m->sv[2 * (size_t)s + 1]), d);
+    return lh__g_cmp(lh__g_len(d[0], d[1]), e, fm, fe) >= 0;
 }
 
 /* One split of subsegment s at its midpoint; the subsegments beside the new
@@ -66,7 +65,8 @@ static lh_status split(lh__m2 *m, lh__m2_cavity *c, lh__m2_ins *ins, lh_index s,
 {
     const lh_index a = m->sv[2 * (size_t)s], b = m->sv[2 * (size_t)s + 1];
     const double *pa = lh__m2_pt(m, a), *pb = lh__m2_pt(m, b);
-    const double p[2] = {pa[0] + (pb[0] - pa[0]) / 2, pa[1] + (pb[1] - pa[1]) / 2};
+    double p[2];
+    lh__g_along(pa, pb, 0.5, p); /* the difference halved in a scaled frame: finite */
     ins->check_encroach = 0;
     ins->origin = NULL;
     lh_status st = lh__m2_insert_point(m, c, p, -1, s, ins);
@@ -88,16 +88,16 @@ lh_status lh__m2_split_segments(lh__m2 *m, lh__m2_cavity *c, size_t max_steiner,
     size_t count = 0, cap = 0;
     lh__m2_ins ins = {0};
     lh_status st = LH_OK;
-    const double minlen2 = floor2(m);
+    double fm;
+    long fe;
+    lh__m2_length_floor(m, &fm, &fe);
     *added = *unsplit = 0;
     for (size_t s = m->ns; s-- > 0 && st == LH_OK;) st = push(m, &q, &count, &cap, (lh_index)s);
     while (st == LH_OK && count && *added < max_steiner) {
         const lh_index s = q[--count];
         if (!not_delaunay(m, s)) continue;
-        const double *pa = lh__m2_pt(m, m->sv[2 * (size_t)s]), *pb = lh__m2_pt(m, m->sv[2 * (size_t)s + 1]);
-        const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
         int done = 0;
-        if (dx * dx + dy * dy >= minlen2 && (st = split(m, c, &ins, s, &q, &count, &cap, &done)) != LH_OK) break;
+        if (splittable(m, s, fm, fe) && (st = split(m, c, &ins, s, &q, &count, &cap, &done)) != LH_OK) break;
         *added += (size_t)done;
     }
     for (size_t s = 0; s < m->ns && st == LH_OK; s++) *unsplit += (size_t)not_delaunay(m, (lh_index)s);

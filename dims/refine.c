@@ -605,21 +605,8 @@ static size_t budget(const rf *r)
     return sum < 0x1p62 ? (size_t)sum : SIZE_MAX;
 }
 
-lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
+void lh__m2_length_floor(const lh__m2 *m, double *fm, long *fe)
 {
-    rf r;
-    memset(&r, 0, sizeof r);
-    r.m = m, r.c = c, r.o = o;
-    if (o->min_angle > 0) {
-        r.sin_bound = sin(o->min_angle * PI / 180);
-        const double cs = cos(o->min_angle * PI / 180);
-        r.off_h = 0.475 * sqrt((1 + cs) / (1 - cs));
-    }
-    /* the lens of the angle bound; with none (area bounds only) the lens is flat, a
-       point encroaches only what it lies on (as Triangle does without -q), and only
-       centres beyond a subsegment split it */
-    const double cs = cos(o->min_angle * PI / 180);
-    if (!o->conforming) m->lens = (2 * cs * cs - 1) * (2 * cs * cs - 1);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t i = 0; i < m->np; i++)
         for (int j = 0; j < 2; j++) {
@@ -636,7 +623,25 @@ lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
     const int e = lh__g_vec(lo, hi, d);
     const double diam = lh__g_len(d[0], d[1]);
     const int by_diam = lh__g_cmp(diam, e, mag, 0) > 0;
-    r.minlen_m = by_diam ? diam : mag, r.minlen_e = (by_diam ? e : 0) - 40;
+    *fm = by_diam ? diam : mag, *fe = (by_diam ? e : 0) - 40;
+}
+
+lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o)
+{
+    rf r;
+    memset(&r, 0, sizeof r);
+    r.m = m, r.c = c, r.o = o;
+    if (o->min_angle > 0) {
+        r.sin_bound = sin(o->min_angle * PI / 180);
+        const double cs = cos(o->min_angle * PI / 180);
+        r.off_h = 0.475 * sqrt((1 + cs) / (1 - cs));
+    }
+    /* the lens of the angle bound; with none (area bounds only) the lens is flat, a
+       point encroaches only what it lies on (as Triangle does without -q), and only
+       centres beyond a subsegment split it */
+    const double cs = cos(o->min_angle * PI / 180);
+    if (!o->conforming) m->lens = (2 * cs * cs - 1) * (2 * cs * cs - 1);
+    lh__m2_length_floor(m, &r.minlen_m, &r.minlen_e);
     if (o->min_angle > LH_TRIMESH_PROVABLE_ANGLE) r.budget = o->out->steiner_budget = budget(&r);
     lh_status st = start(&r);
     if (st == LH_OK) st = run(&r);

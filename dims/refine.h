@@ -21,6 +21,10 @@ typedef struct lh__refine_opts {
 } lh__refine_opts;
 
 lh_status lh__m2_refine(lh__m2 *m, lh__m2_cavity *c, const lh__refine_opts *o);
+/* The resolution floor of m's points, fm * 2^*fe (an lh__g_cmp pair, m2_geom.h):
+ * 2^-40 of the larger of their diameter and their largest |coordinate|. No
+ * subsegment shorter than it is split (refine.c, cdt_split.c). */
+void lh__m2_length_floor(const lh__m2 *m, double *fm, long *fe);
 /* The live triangles still bad under o's bounds: *count, and their indices when bad
  * is not NULL. */
 lh_status lh__m2_bad_triangles(lh__m2 *m, const lh__refine_opts *o, lh_index *bad,

@@ -249,6 +249,9 @@ int lh__eng_finite(const lh__eng *e, lh_index c);
  * lh__tds_sort_cells, its count: they are all after the finite cells). */
 lh_status lh__eng_hull_facets(lh__eng *e, lh_index first, lh_index **out, size_t *count);
 
+/* hull.c: the hooks handle h allocates with (for queries on it: lh_hull_measures). */
+const lh_allocator *lh__hull_allocator(const lh_hull *h);
+
 /* Union-find: the root of x's set, halving the path on the way. */
 static inline lh_index lh__uf_find(lh_index *parent, lh_index x)
 {

@@ -38,6 +38,8 @@ void lh_hull_free(lh_hull *h)
     lh__free(&a, h);
 }
 
+const lh_allocator *lh__hull_allocator(const lh_hull *h) { return &h->alloc; }
+
 /* The corners (ext[i] set), increasing. */
 static lh_status collect_vertices(lh_hull *h, const uint8_t *ext)
 {

@@ -93,11 +93,11 @@ static int valid(int d, int k, const double *xyz, size_t n, size_t m, const lh_i
 }
 
 /* Exact total of the full-dimensional simplices' volumes (|det| / d!), rounded. */
-static lh_status exact_total(lh_pred *ctx, int d, const double *xyz, size_t m,
+static lh_status exact_total(const lh_allocator *al, lh_pred *ctx, int d, const double *xyz, size_t m,
                              const lh_index *simp, double *total)
 {
     lh__detsum *sum = NULL;
-    lh_status st = lh__detsum_create(NULL, d, sites_scale(d, xyz, m * (size_t)(d + 1), simp), &sum);
+    lh_status st = lh__detsum_create(al, d, sites_scale(d, xyz, m * (size_t)(d + 1), simp), &sum);
     if (st != LH_OK) return st;
     const double *p[LH_DELAUNAY_MAX_DIM + 1];
     for (size_t s = 0; s < m; s++) {
@@ -111,12 +111,14 @@ static lh_status exact_total(lh_pred *ctx, int d, const double *xyz, size_t m,
     return LH_OK;
 }
 
-lh_status lh_simplex_measures(int d, int k, const double *xyz, size_t n, size_t m,
-                              const lh_index *simplices, double *each, double *total)
+/* lh_simplex_measures with its allocations through al (NULL: malloc): a handle's
+ * measures use the handle's hooks. */
+static lh_status measures(const lh_allocator *al, int d, int k, const double *xyz, size_t n, size_t m,
+                          const lh_index *simplices, double *each, double *total)
 {
     if (!valid(d, k, xyz, n, m, simplices)) return LH_ERR_INVALID_ARGUMENT;
     lh_pred *ctx;
-    lh_status st = lh_pred_create(NULL, &ctx);
+    lh_status st = lh_pred_create(al, &ctx);
     if (st != LH_OK) return st;
     double s = 0, c = 0;
     const double *p[LH_DELAUNAY_MAX_DIM + 1];
@@ -127,26 +129,32 @@ lh_status lh_simplex_measures(int d, int k, const double *xyz, size_t n, size_t 
         neumaier_add(&s, &c, x);
     }
     if (total && k < d) *total = s + c;
-    else if (total) st = exact_total(ctx, d, xyz, m, simplices, total);
+    else if (total) st = exact_total(al, ctx, d, xyz, m, simplices, total);
     lh_pred_free(ctx);
     return st;
+}
+
+lh_status lh_simplex_measures(int d, int k, const double *xyz, size_t n, size_t m,
+                              const lh_index *simplices, double *each, double *total)
+{
+    return measures(NULL, d, k, xyz, n, m, simplices, each, total);
 }
 
 lh_status lh_tri_measures(const lh_tri *t, double *each, double *total)
 {
     if (!t) return LH_ERR_INVALID_ARGUMENT;
-    return lh_simplex_measures(t->d, t->frame.k, t->xyz, t->n, t->count, t->simp, each, total);
+    return measures(&t->alloc, t->d, t->frame.k, t->xyz, t->n, t->count, t->simp, each, total);
 }
 
 /* The volume the outward facets enclose: the cone from a vertex o over every facet,
  * sum det(f, o) = -d! volume (orient_d(f, o) <= 0 for o inside), exactly. */
-static lh_status enclosed_volume(lh_pred *ctx, int d, const double *xyz, size_t m,
+static lh_status enclosed_volume(const lh_allocator *al, lh_pred *ctx, int d, const double *xyz, size_t m,
                                  const lh_index *facets, double *volume)
 {
     *volume = 0;
     if (m == 0) return LH_OK;
     lh__detsum *sum = NULL;
-    lh_status st = lh__detsum_create(NULL, d, sites_scale(d, xyz, m * (size_t)d, facets), &sum);
+    lh_status st = lh__detsum_create(al, d, sites_scale(d, xyz, m * (size_t)d, facets), &sum);
     if (st != LH_OK) return st;
     const double *p[LH_DELAUNAY_MAX_DIM + 1];
     p[d] = xyz + (size_t)facets[0] * d;
@@ -168,14 +176,15 @@ lh_status lh_hull_measures(const lh_hull *h, const double *xyz, size_t n, double
     const int d = lh_hull_dim(h);
     const size_t m = lh_hull_facet_count(h);
     const lh_index *f = lh_hull_facets(h);
+    const lh_allocator *al = lh__hull_allocator(h);
     lh_status st = LH_OK;
-    if (each || area) st = lh_simplex_measures(d, d - 1, xyz, n, m, f, each, area);
+    if (each || area) st = measures(al, d, d - 1, xyz, n, m, f, each, area);
     else if (!valid(d, d - 1, xyz, n, m, f)) st = LH_ERR_INVALID_ARGUMENT;
     if (st != LH_OK || !volume) return st;
     lh_pred *ctx;
-    st = lh_pred_create(NULL, &ctx);
+    st = lh_pred_create(al, &ctx);
     if (st != LH_OK) return st;
-    st = enclosed_volume(ctx, d, xyz, m, f, volume);
+    st = enclosed_volume(al, ctx, d, xyz, m, f, volume);
     lh_pred_free(ctx);
     return st;
 }

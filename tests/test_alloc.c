@@ -1,8 +1,9 @@
 /*
  * test_alloc.c — every allocation failing in turn, for the public entry points not
  * covered next to their own tests: lh_affine_dim, lh_check_delaunay, lh_tri_check,
- * lh_tri_complex, lh_tri_complex_cells, lh_tri_complex_edges, lh_convex_hull of a grid
- * (flat faces: the corners and the rebuilt hull), and lh_tri_locate at a point shared
+ * lh_tri_complex, lh_tri_complex_cells, lh_tri_complex_edges, lh_tri_measures,
+ * lh_convex_hull of a grid (flat faces: the corners and the rebuilt hull) and
+ * lh_hull_measures on it, and lh_tri_locate at a point shared
  * by more than 64 simplices. Each
  * failing run must return LH_ERR_NOMEM and leave nothing allocated
  * (lh_test_every_failure). The others: lh_pred_create (test_pred_basic),
@@ -82,6 +83,14 @@ static lh_status q_complex_edges(lh_test_state *lh_t_, lh_tri *t)
     return st;
 }
 
+static lh_status q_measures(lh_test_state *lh_t_, lh_tri *t)
+{
+    double total = 0;
+    lh_status st = lh_tri_measures(t, NULL, &total);
+    if (st == LH_OK) LH_EXPECT_EQ_DBL(total, 64); /* the cube [0, 4]^3 */
+    return st;
+}
+
 /* lh_convex_hull of the 5^3 grid: its 8 corners, 12 triangles. */
 static lh_status hull_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
 {
@@ -96,6 +105,9 @@ static lh_status hull_run(lh_test_state *lh_t_, const lh_allocator *a, const voi
     if (st != LH_OK) return st;
     LH_EXPECT_EQ_U64(lh_hull_vertex_count(h), 8);
     LH_EXPECT_EQ_U64(lh_hull_facet_count(h), 12);
+    double area = 0, volume = 0;
+    st = lh_hull_measures(h, x, N, NULL, &area, &volume);
+    if (st == LH_OK) LH_EXPECT_EQ_DBL(area, 96), LH_EXPECT_EQ_DBL(volume, 64);
     lh_hull_free(h);
     return st;
 }
@@ -140,7 +152,7 @@ static lh_status query_run(lh_test_state *lh_t_, const lh_allocator *a, const vo
 
 LH_TEST(every_allocation_failure_is_survived)
 {
-    static const query_fn queries[] = {q_check, q_complex, q_complex_edges};
+    static const query_fn queries[] = {q_check, q_complex, q_complex_edges, q_measures};
     LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, affine_run, NULL), 1);
     LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, check_run, NULL), 1);
     for (size_t i = 0; i < LH_COUNT(queries); i++)
@@ -149,8 +161,50 @@ LH_TEST(every_allocation_failure_is_survived)
     LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, hull_run, NULL), 1);
 }
 
+/* Counts the hook's allocations. */
+static void *counting_alloc(void *user, size_t size)
+{
+    ++*(size_t *)user;
+    return malloc(size);
+}
+static void counting_free(void *user, void *p)
+{
+    (void)user;
+    free(p);
+}
+
+/* lh_tri_measures and lh_hull_measures allocate (their exact sums) through the
+ * handle's hooks, as every query on a handle does; they used malloc. */
+LH_TEST(measures_use_the_handles_allocator)
+{
+    double x[N * 3];
+    grid(x);
+    size_t calls = 0;
+    const lh_allocator al = {counting_alloc, counting_free, &calls};
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = &al;
+    lh_tri *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(3, N, x, &o, &t), LH_OK);
+    size_t before = calls;
+    double total = 0;
+    LH_EXPECT_EQ_INT(lh_tri_measures(t, NULL, &total), LH_OK);
+    LH_EXPECT_EQ_DBL(total, 64);
+    LH_EXPECT_GT_U64(calls, before);
+    lh_tri_free(t);
+    lh_hull *h;
+    LH_ASSERT_EQ_INT(lh_convex_hull(3, N, x, &o, &h), LH_OK);
+    before = calls;
+    double area = 0, volume = 0;
+    LH_EXPECT_EQ_INT(lh_hull_measures(h, x, N, NULL, &area, &volume), LH_OK);
+    LH_EXPECT_EQ_DBL(volume, 64);
+    LH_EXPECT_GT_U64(calls, before);
+    lh_hull_free(h);
+}
+
 int main(int argc, char **argv)
 {
-    static const lh_test_case cases[] = {LH_CASE(every_allocation_failure_is_survived)};
+    static const lh_test_case cases[] = {LH_CASE(every_allocation_failure_is_survived),
+                                         LH_CASE(measures_use_the_handles_allocator)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -2,7 +2,8 @@
  * - every quality decision is scale-free (m2_geom.h): A.poly scaled by 2^k from 2^-600
  *   to 2^600 gives the same mesh, byte for byte once unscaled, meeting the bound and
  *   exactly valid; a 10^-300 radian wedge counts as bad; an area bound applies at
- *   +-2^511 and +-DBL_MAX;
+ *   +-2^511 and +-DBL_MAX; split_segments (-s) gives the unit mesh scaled from 2^-600
+ *   up to a square at +-2^1023, and its midpoints' attributes do not overflow;
  * - where the domain is pinched (a hole touching the outer ring, a ring touching
  *   itself), no triangle beside the pinch is left below the bound unless an input
  *   angle there is below it too (earcut's hole-touching-outer.json and
@@ -192,6 +193,75 @@ LH_TEST(an_area_bound_applies_at_the_ends_of_the_range)
     }
 }
 
+/* split_segments (Triangle's -s) is scale-free too: a square +-1 with an inner
+ * segment and a point beside it, and A.poly, scaled by 2^k up to the square at
+ * +-2^1023, give the unit-scale mesh times 2^k. At +-2^1023 the midpoint of the inner
+ * segment was computed as a + (b - a) / 2 with b - a overflowing: an infinite point,
+ * refused, the segment left unsplit (7 points instead of 8). */
+LH_TEST(split_segments_are_scale_free)
+{
+    static const int ks[] = {-600, -1, 0, 1, 600, 1023};
+    for (int f = 0; f < 2; f++) {
+        lh_pslg g;
+        if (f) LH_ASSERT_EQ_INT(load(lh_poly_read, "triangle/A.poly", &g), LH_OK);
+        else
+            LH_ASSERT_EQ_INT(lh_test_pslg_text("7 2 0 0\n1 -1 -1\n2 1 -1\n3 1 1\n4 -1 1\n5 -1 0\n6 1 0\n"
+                                               "7 0 0.0625\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n0\n", &g),
+                             LH_OK);
+        double *xy0 = malloc(2 * g.n * sizeof *xy0), h0[2] = {g.hole_count ? g.holes[0] : 0, g.hole_count ? g.holes[1] : 0};
+        LH_ASSERT_TRUE(xy0 != NULL);
+        memcpy(xy0, g.xy, 2 * g.n * sizeof *xy0);
+        lh_trimesh_options o;
+        lh_trimesh_options_default(&o);
+        o.split_segments = 1;
+        lh_trimesh *ref = NULL;
+        char msg[256];
+        LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &ref, msg, sizeof msg), LH_OK);
+        if (!f) LH_EXPECT_EQ_U64(lh_trimesh_point_count(ref), 8);
+        for (size_t i = 0; i < LH_COUNT(ks); i++) {
+            const int k = ks[i];
+            if (f && k > 600) continue; /* A.poly is not centred: 2^1023 overflows */
+            for (size_t v = 0; v < 2 * g.n; v++) g.xy[v] = ldexp(xy0[v], k);
+            if (g.hole_count) g.holes[0] = ldexp(h0[0], k), g.holes[1] = ldexp(h0[1], k);
+            lh_trimesh_stats st;
+            lh_trimesh *m = mesh_valid(lh_t_, &g, &o, &st);
+            if (!m) break;
+            if (!same_up_to_scale(m, ref, k)) LH_NOTE("file %d, 2^%d: not the unit mesh scaled", f, k);
+            LH_EXPECT_TRUE(same_up_to_scale(m, ref, k));
+            LH_EXPECT_EQ_U64(st.segments_unsplit, 0);
+            lh_trimesh_free(m);
+        }
+        lh_trimesh_free(ref);
+        free(xy0);
+        lh_pslg_free(&g);
+    }
+}
+
+/* split_segments interpolates the vertex attributes at the midpoints without
+ * overflowing: every attribute 1.5e308 stays 1.5e308 (the point put on the inner
+ * segment got (a + b) / 2 = inf). */
+LH_TEST(split_segments_attributes_stay_finite)
+{
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(lh_test_pslg_text("7 2 1 0\n1 -1 -1 1.5e308\n2 1 -1 1.5e308\n3 1 1 1.5e308\n4 -1 1 1.5e308\n"
+                                       "5 -1 0 1.5e308\n6 1 0 1.5e308\n7 0 0.0625 1.5e308\n"
+                                       "5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n0\n", &g),
+                     LH_OK);
+    lh_trimesh_options o;
+    lh_trimesh_options_default(&o);
+    o.split_segments = 1;
+    lh_trimesh_stats st;
+    lh_trimesh *m = mesh_valid(lh_t_, &g, &o, &st);
+    if (m) {
+        LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), 8);
+        LH_ASSERT_EQ_INT(lh_trimesh_point_attr_count(m), 1);
+        for (size_t p = 0; p < lh_trimesh_point_count(m); p++)
+            LH_EXPECT_EQ_DBL(lh_trimesh_point_attrs(m)[p], 1.5e308);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+}
+
 static int same_point(const double *a, const double *b) { return a[0] == b[0] && a[1] == b[1]; }
 
 /* The smallest angle (degrees) between two input segments ending at point p (their
@@ -264,6 +334,8 @@ int main(int argc, char **argv)
         LH_CASE(a_wedge_of_1e_300_is_counted_bad),
         LH_CASE(refinement_above_the_provable_angle_ends),
         LH_CASE(an_area_bound_applies_at_the_ends_of_the_range),
+        LH_CASE(split_segments_are_scale_free),
+        LH_CASE(split_segments_attributes_stay_finite),
         LH_CASE(a_pinched_domain_is_refined_beside_the_pinch),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);

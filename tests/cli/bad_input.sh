@@ -92,6 +92,7 @@ exact n0_endpoint 3 "n0.poly:5: segment 3: endpoint 9 is not a vertex (0..3)" --
 mkdir "$tmp/dir.poly" "$tmp/dir.txt"
 exact dir_points 3 "dir.txt: is a directory, not an input file" -- "$lh" delaunay dir.txt
 exact dir_qhull 3 "dir.txt: is a directory, not an input file" -- "$lh" qconvex TI dir.txt
+exact dir_qhalf 3 "dir.txt: is a directory, not an input file" -- "$lh" qhalf Fp TI dir.txt
 exact dir_poly 3 "dir.poly: is a directory, not an input file" -- "$lh" mesh dir.poly
 exact dir_check 3 "dir.txt: is a directory, not an input file" -- "$lh" check n0.node dir.txt
 # -r: the .ele's attributes are numbers as a .node's are (finite); the .area file read
@@ -112,6 +113,9 @@ area area_line_numbers "\n# c\n2\n\n1 1\n2 1 7\n" "q.area:6:5: expected the end 
 area area_long_line "$(printf '%600s' '')2\n1 1\n$(printf '%600s' '')2 x\n" "q.area:3:603: expected the area bound of triangle 2 (a number), found 'x'"
 area area_short "2\n1 1\n" "q.area:3:1: expected triangle number 2, found the end of the file"
 area area_long "2\n1 1\n2 1\n3 1\n" "q.area:4:1: expected the end of the file after 2 triangles, found '3'"
+# a number of any length, as in a .node (a 100-digit bound was "not a number")
+printf '2\n1 1%s.5\n2 1\n' "$(printf '%099d' 0)" > "$tmp/q.area"
+exact area_long_number 0 "" -- "$lh" triangle -raQ q
 
 # numbers of options: empty, signed, blank-padded or trailing text is refused; a value
 # just past a bound prints with every digit

@@ -57,6 +57,7 @@ expect "locate -o dir" 1 "'d.txt' is a directory" '' -- "$lh" locate no.txt no.t
 expect "interpolate -o dir" 1 "'d.txt' is a directory" '' -- "$lh" interpolate no.txt no.txt -o d.txt
 expect "points -o dir" 1 "'d.txt' is a directory" '' -- "$lh" points 10 -o d.txt
 expect "qconvex TO dir" 1 "'d.txt' is a directory" '' -- "$lh" qconvex i TI no.txt TO d.txt
+expect "qhalf TO dir" 1 "'d.txt' is a directory" '' -- "$lh" qhalf Fp TI no.txt TO d.txt
 expect "mesh -o dir" 1 "'d.vtu' is a directory" '' -- "$lh" mesh no.poly -o d.vtu
 expect "mesh -o .node set" 1 "'d.node' is a directory" '' -- "$lh" mesh no.poly -o d.ele
 expect "triangle -I: .node a directory" 1 "'d.node' is a directory" '' -- "$lh" triangle -I d.poly

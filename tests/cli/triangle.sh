@@ -4,7 +4,7 @@
 # -I), -z numbering, the .edge/.neigh files and every header line, the switches that
 # suppress files or markers (-P -N -E -B, -j), -Q and -V, usage errors (unknown and
 # unsupported switches, exit 2), bad input (exit 3, FILE:LINE[:COL]), and output files
-# written all or none, never over an input.
+# written all or none, never over an input; -v and -o2 at the ends of the range.
 set -u
 . "$(dirname "${BASH_SOURCE[0]}")/harness.sh"
 fresh() { rm -rf w; mkdir w; for f in "$@"; do cp "$data/$f" w/; done; cd w; }
@@ -186,6 +186,13 @@ fresh A.poly
 expect "unknown switch" 2 "lifthull triangle: unknown switch 'x' in '-pxq'" '' -- "$lh" triangle -pxq A.poly
 expect "-o3 refused" 2 "lifthull triangle: -o must be -o2 \(quadratic elements\), not '-po3'" '' -- "$lh" triangle -po3 A.poly
 expect "-u refused" 2 "lifthull triangle: -u is not supported" '' -- "$lh" triangle -pu A.poly
+# the --help synopsis names every switch parse_switches accepts, the refused ones
+# after "not supported"
+"$lh" triangle --help > help.txt
+same "--help synopsis" "$(sed -n '1s/.*\[-\([^]]*\)\].*/\1/p' help.txt | fold -w1 | sort | tr -d '\n')" \
+  "$(printf '%s' prqaAcDsYSjevno2zBPNEIOQVgilFCX | fold -w1 | sort | tr -d '\n')"
+for c in s v; do "$lh" triangle -Q$c A.poly > /dev/null 2>&1 || bad "-$c refused"; done
+matches help.txt '^not supported \(refused\): -u -k -L -w -W$' && ok || bad "--help: the refused switches"
 expect "two files" 2 "one input file, not 'A\.poly' and 'B\.poly'" '' -- "$lh" triangle -p A.poly B.poly
 expect "accepted, no effect" 0 '' '' -- "$lh" triangle -pQiFlCX A.poly
 expect "-D conforming" 0 '' '' -- "$lh" triangle -pDQ A.poly
@@ -205,6 +212,29 @@ cp "$data/box.poly" .
 expect "unclosed boundary" 3 "^box\.poly: the domain is empty" '' -- "$lh" triangle -p box.poly
 expect "-c keeps the hull" 0 '' '' -- "$lh" triangle -pcQ box.poly
 exists box.1.node box.1.ele box.1.poly
+cd ..
+
+# -v and -o2 at the ends of the range: the Voronoi vertices of points scaled by 2^k are
+# the unit-scale ones times 2^k (at 2^-1000 the squared lengths underflowed: every
+# vertex was NaN), and -o2's midpoints and -v's rays on a square at +-2^1023 are
+# finite (the sums and differences overflowed: inf in the .node and .v.edge)
+rm -rf w; mkdir w; cd w
+for k in 0 -1000 1000; do
+  awk -v k="$k" 'BEGIN { f = 2 ^ k; split("0 0 4 0 0 4 4 4 1 2", c, " "); print "5 2 0 0"
+                         for (i = 1; i <= 5; i++) printf "%d %.17g %.17g\n", i, c[2*i-1] * f, c[2*i] * f }' > "s$k.node"
+  expect "-v 2^$k" 0 '' '' -- "$lh" triangle -vQ "s$k.node"
+done
+for k in -1000 1000; do
+  same "-v 2^$k: the unit Voronoi vertices scaled" "$(awk -v k="$k" 'FNR == 1 { f++; next }
+      f == 1 { x[$1] = $2; y[$1] = $3; next } !($2 == x[$1] * 2 ^ k && $3 == y[$1] * 2 ^ k) { bad++ }
+      END { print bad + 0, FNR }' s0.1.v.node "s$k.1.v.node")" "0 5"
+done
+printf '4 2 0 0\n1 -0x1p1023 -0x1p1023\n2 0x1p1023 -0x1p1023\n3 0x1p1023 0x1p1023\n4 -0x1p1023 0x1p1023\n' > big.node
+expect "-o2 -v at +-2^1023" 0 '' '' -- "$lh" triangle -o2vQ big.node
+same "-v at +-2^1023: the rays' directions" "$(awk '$3 == -1 { printf "%s %s;", $4, $5 }' big.1.v.edge)" \
+  "-8.9884656743115795e+307 0;0 -8.9884656743115795e+307;0 8.9884656743115795e+307;8.9884656743115795e+307 0;"
+same "-o2 at +-2^1023: midpoints" "$(awk 'NR > 5 { printf "%s %s;", $2, $3 }' big.1.node)" \
+  "0 0;-8.9884656743115795e+307 0;0 -8.9884656743115795e+307;0 8.9884656743115795e+307;8.9884656743115795e+307 0;"
 cd ..
 
 finish
