@@ -146,7 +146,7 @@ static int parse(mesh_args *a, int argc, char **argv)
             a->opt.smooth = (int)x;
         } else if (!strcmp(s, "--threads")) { /* as the point commands; meshing is sequential */
             if (!number(s, v, 0, 4096, 1, &x)) return -1;
-            if (x != 1) fprintf(stderr, "lifthull mesh: --threads %s: meshing runs on one thread\n", v);
+            if (x > 1) fprintf(stderr, "lifthull mesh: --threads %s: meshing runs on one thread\n", v);
         } else {
             return usage_error("unknown option", s);
         }

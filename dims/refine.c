@@ -581,12 +581,12 @@ static lh_status start(rf *r)
 }
 
 /* The Steiner budget above the provable angle bound, where refinement may add points
- * without end (la.poly at 36 degrees: millions). A quality mesh grades from each
+ * without end. A quality mesh grades from each
  * feature geometrically, so its size grows with the logarithm of the feature sizes'
  * ratios: each triangle t of the mesh before refinement allows 64 (1 + log2 of its
  * longest edge squared over its area) points, plus 4 per multiple of its area bound
- * that its area is, plus 1024 — 16 to 100 times what la, A, face, double_hex and
- * fish-and-rectangle.poly take at 34 degrees. */
+ * that its area is, plus 1024 (docs/meshing.md compares it with what Triangle's
+ * example inputs take at 34 degrees). */
 static size_t budget(const rf *r)
 {
     const lh__m2 *m = r->m;

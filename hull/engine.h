@@ -183,6 +183,12 @@ int lh__independent_coords(lh_pred *pred, int d, const double *const *pts, int k
  * span less than R^d (*affdim tells the dimension). Afterwards the cells hold the
  * caller's site indices. */
 lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim);
+/* The cells_hint of a convex hull of n sites: 4n + 256, at most 4 * 10^6 (the store
+ * grows past it by doubling), so the cast never wraps. */
+static inline lh_index lh__hull_cells_hint(size_t n)
+{
+    return (lh_index)(n < 1000000 ? 4 * n + 256 : 4000000);
+}
 
 /* order.c: lexicographic order of sites, ties by index; ctx is an lh__lex (for
  * lh__sort_idx). */

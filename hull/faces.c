@@ -204,7 +204,7 @@ static lh_status corners(const lh_allocator *a, int d, size_t n, const double *x
     lh__eng e;
     lh_status st = lh__eng_init(&e, a, d, n, xyz, dup, NULL);
     int affdim = -1, flat = 0;
-    if (st == LH_OK) st = lh__eng_build(&e, (lh_index)(4 * n + 256), &affdim);
+    if (st == LH_OK) st = lh__eng_build(&e, lh__hull_cells_hint(n), &affdim);
     if (st == LH_OK) st = lh__eng_hull_corners(&e, ext, &flat);
     lh__eng_release(&e);
     lh__free(a, dup);
@@ -301,7 +301,7 @@ static lh_status edges_of(const lh_allocator *a, lh_pred *pred, int d, size_t n,
     lh__eng e;
     lh_status st = lh__eng_init(&e, a, d, n, xyz, dup, NULL);
     int affdim = -1;
-    if (st == LH_OK) st = lh__eng_build(&e, (lh_index)(4 * n + 256), &affdim);
+    if (st == LH_OK) st = lh__eng_build(&e, lh__hull_cells_hint(n), &affdim);
     lh_index *parent = st == LH_OK ? lh__alloc(a, ((size_t)e.tds.top + 1) * sizeof *parent) : NULL;
     if (st == LH_OK && !parent) st = LH_ERR_NOMEM;
     if (st == LH_OK) {

@@ -72,7 +72,7 @@ static lh_status corner_facets(lh_hull *h, const double *xyz)
         lh__eng e;
         st = lh__eng_init(&e, &h->alloc, d, m, x, tmp, NULL); /* tmp: the (no) duplicates */
         int affdim = -1;
-        if (st == LH_OK) st = lh__eng_build(&e, (lh_index)(4 * m + 256), &affdim);
+        if (st == LH_OK) st = lh__eng_build(&e, lh__hull_cells_hint(m), &affdim);
         if (st == LH_OK) st = lh__eng_hull_facets(&e, 0, &raw, &count);
         lh__eng_release(&e);
     }
@@ -128,7 +128,7 @@ lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *o
     lh__eng e;
     st = lh__eng_init(&e, &a, d, n, xyz, h->dup, opt);
     int affdim = -1, flat = 0;
-    if (st == LH_OK) st = lh__eng_build(&e, (lh_index)(n < 1000000 ? 4 * n + 256 : 4000000), &affdim);
+    if (st == LH_OK) st = lh__eng_build(&e, lh__hull_cells_hint(n), &affdim);
     if (st == LH_OK) st = lh__eng_hull_corners(&e, ext, &flat);
     if (st == LH_OK && !flat) st = lh__eng_hull_facets(&e, 0, &h->facets, &h->count);
     h->ndup = e.ndup;
