@@ -55,31 +55,39 @@ void lh_cli_scaled_edges(const double *const *p, double d[3][2], long *e)
     *e = x + half;
 }
 
-/* The corners' angles in radians (ang[k] between d[k+2] and -d[k+1]), from the
- * scaled edge vectors d of scaled_edges: atan2 of the cross and dot products, which
- * neither overflow nor vanish there. */
-static void corner_angles(double d[3][2], double ang[3])
+/* Triangle p in the frame of lh_cli_scaled_edges (edge k = d[k] * 2^ex, opposite
+ * p[k]): the edges' lengths l, the area |d1 x d2| / 2, the radius-edge ratio
+ * R / shortest = l0 l1 l2 / (4 area shortest) (infinity when flat) and the corners'
+ * angles in radians (ang[k] between d[k+2] and -d[k+1], atan2 of the cross and dot
+ * products); no product overflows or vanishes in that frame. */
+typedef struct shape {
+    double d[3][2], l[3], area, ratio, ang[3];
+    long ex;
+} shape;
+
+static void shape_of(const double *const p[3], shape *t)
 {
+    lh_cli_scaled_edges(p, t->d, &t->ex);
     for (int k = 0; k < 3; k++) {
-        const double *u = d[(k + 2) % 3], *v = d[(k + 1) % 3];
-        ang[k] = atan2(fabs(u[0] * v[1] - u[1] * v[0]), -(u[0] * v[0] + u[1] * v[1]));
+        const double *u = t->d[(k + 2) % 3], *v = t->d[(k + 1) % 3];
+        t->ang[k] = atan2(fabs(u[0] * v[1] - u[1] * v[0]), -(u[0] * v[0] + u[1] * v[1]));
+        t->l[k] = hypot(t->d[k][0], t->d[k][1]);
     }
+    t->area = fabs(t->d[1][0] * t->d[2][1] - t->d[1][1] * t->d[2][0]) / 2;
+    const int m = t->l[0] <= t->l[1] && t->l[0] <= t->l[2] ? 0 : t->l[1] <= t->l[2] ? 1 : 2;
+    /* the shortest edge cancelled, not divided: no underflow for a needle */
+    t->ratio = t->area > 0 ? t->l[(m + 1) % 3] * t->l[(m + 2) % 3] / (4 * t->area) : INFINITY;
 }
 
 void lh_cli_triangle_shape(const double *const p[3], double ang[3], double *ratio, double len[3])
 {
-    double d[3][2], l[3];
-    long ex;
-    lh_cli_scaled_edges(p, d, &ex);
-    corner_angles(d, ang);
+    shape t;
+    shape_of(p, &t);
     for (int k = 0; k < 3; k++) {
-        ang[k] *= 180 / 3.14159265358979323846;
-        l[k] = hypot(d[k][0], d[k][1]);
-        len[k] = ldexp(l[k], (int)ex); /* infinity for an edge longer than DBL_MAX */
+        ang[k] = t.ang[k] * (180 / 3.14159265358979323846);
+        len[k] = ldexp(t.l[k], (int)t.ex); /* infinity for an edge longer than DBL_MAX */
     }
-    /* R = l0 l1 l2 / (4 area) = l0 l1 l2 / (2 |d0 x d1|), over the shortest edge */
-    const double a2 = fabs(d[0][0] * d[1][1] - d[0][1] * d[1][0]), lmin = fmin(l[0], fmin(l[1], l[2]));
-    *ratio = a2 > 0 && lmin > 0 ? l[0] * l[1] * l[2] / (2 * a2 * lmin) : INFINITY;
+    *ratio = t.ratio;
 }
 
 void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s)
@@ -109,22 +117,18 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle, int
     for (size_t i = 0; i < nt; i++) {
         const double *p[3];
         for (int k = 0; k < 3; k++) p[k] = xy + 2 * (size_t)t[3 * i + k];
-        double d[3][2];
-        long ex;
-        lh_cli_scaled_edges(p, d, &ex);
-        const double a = hypot(d[0][0], d[0][1]), b = hypot(d[1][0], d[1][1]), c = hypot(d[2][0], d[2][1]);
-        const double area = fabs(d[1][0] * d[2][1] - d[1][1] * d[2][0]) / 2;
-        const double r = a * b * c / (4 * area), sh = fmin(a, fmin(b, c));
-        rmin = fmin(rmin, r / sh), rmax = fmax(rmax, r / sh);
-        const xval xs = {sh, ex}, xl = {fmax(a, fmax(b, c)), ex}, xa = {area, 2 * ex};
+        shape sh;
+        shape_of(p, &sh);
+        rmin = fmin(rmin, sh.ratio), rmax = fmax(rmax, sh.ratio);
+        const double *l = sh.l;
+        const xval xs = {fmin(l[0], fmin(l[1], l[2])), sh.ex}, xl = {fmax(l[0], fmax(l[1], l[2])), sh.ex};
+        const xval xa = {sh.area, 2 * sh.ex};
         if (i == 0 || xless(xs, emin)) emin = xs;
         if (xless(emax, xl)) emax = xl;
         if (i == 0 || xless(xa, amin)) amin = xa;
         if (xless(amax, xa)) amax = xa;
-        double ang[3];
-        corner_angles(d, ang);
         for (int k = 0; k < 3; k++) { /* an angle of [0, pi]: a bin of 0..17 */
-            const int bin = (int)(ang[k] * 180 / 3.14159265358979323846 / 10);
+            const int bin = (int)(sh.ang[k] * 180 / 3.14159265358979323846 / 10);
             hist[bin > 17 ? 17 : bin]++;
         }
     }
