@@ -31,7 +31,7 @@ COLOR = {
 }
 DISTS = ["uniform", "grid", "sphere"]
 DIST_LABEL = {"uniform": "uniform", "grid": "integer grid", "sphere": "cospherical"}
-# lifthull's fixed-dimension engines (dims/): elsewhere lh_delaunay runs the generic
+# lifthull's fixed-dimension engines (lift/insert_delaunay.h): elsewhere lh_delaunay runs the generic
 # engine anyway, so a separate "generic" run would measure the same code.
 FIXED_DIMS = (2, 3, 4, 5)
 

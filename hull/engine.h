@@ -8,19 +8,19 @@
  * the infinite cells carry the convex hull, and every cell has d+1 neighbours.
  *
  * Which cells a new site q conflicts with is the caller's choice, through one test
- * on finite cells:
+ * on finite cells, handed in:
  *   - an infinite cell conflicts when q is strictly beyond its facet (orient_d > 0);
  *     when q lies on the facet's hyperplane it conflicts exactly when the finite
  *     cell across the facet does (CGAL's rule), so no flat cell ever appears;
- *   - a finite cell conflicts when the lifted test says so (conflict_sign set: the
- *     insertion loops evaluate it inline), else when finite_conflict does.
+ *   - a finite cell conflicts when the caller's test says so: a function
+ *     (finite_conflict, run by the generic loop, insert_generic.c) or a test
+ *     compiled inline into the caller's own builds of the loop (insert, insert_par:
+ *     insert_impl.h is a template), which read conflict_sign and conflict_eb.
  * With neither, no finite cell conflicts: a placing triangulation, whose infinite
  * cells are the convex hull (qconvex's job); sites inside the current hull are not
- * inserted. lift/ sets conflict_sign -1 (insphere < 0) and gets the Delaunay
- * triangulation, the lower hull of the lifted sites (inside_conflicts: the simplex
- * containing q is always in conflict); or +1 (insphere > 0, inside_conflicts = 0)
- * and gets the furthest-site Delaunay triangulation, the upper hull, whose vertices
- * are the convex hull's; lift/flat.c passes its own test in the k-flat.
+ * inserted. With inside_conflicts the cell containing q always conflicts. lift/
+ * hands in its test and gets Delaunay triangulations (lift/dt.h); lift/flat.c
+ * passes its own test in a k-flat.
  *
  * Steps: sites ordered (order.c: Hilbert radix sort, exact duplicates merged, BRIO
  * rounds), an initial simplex of d+1 affinely independent sites (exact), then for
@@ -36,7 +36,7 @@
 #define LH__ENGINE_MAX_DIM LH_ORIENT_MAX_DIM
 
 /* A hot helper inlined whatever the compiler's size heuristics say (the insertion
- * loop's predicates, insert_preds.h, whose switches on a run-time d look large). */
+ * loop's predicates, insert_orient.h, whose switches on a run-time d look large). */
 #if defined(__GNUC__) || defined(__clang__)
 #define LH__ALWAYS_INLINE __attribute__((always_inline)) inline
 #else
@@ -90,10 +90,10 @@ typedef struct lh__eng {
     uint64_t rng;
     lh__finite_conflict_fn finite_conflict;
     void *user;
-    lh__insert_fn insert; /* NULL: lh__eng_insert_generic; dims/ has fixed-d ones,
-                             which test finite cells by conflict_sign only */
+    lh__insert_fn insert; /* a loop with the caller's conflict test inline, or NULL:
+                             lh__eng_insert_generic with finite_conflict */
     lh__insert_fn insert_par; /* the same loop for a worker of a parallel phase
-                                 (hull/parallel.c), or NULL: Delaunay only */
+                                 (hull/parallel.c), or NULL: no parallel phases */
     int threads;          /* lh_options.threads, resolved: the parallel phases'
                              workers and the shared loops' threads (1: one) */
     struct lh__par *par;  /* a worker's rounds and deferred sites (NULL: sequential) */
@@ -106,9 +106,8 @@ typedef struct lh__eng {
                              as the store holds), few to make workers stop */
     size_t par_stopped;   /* workers stopped early (out of blocks, or no cell to
                              start from), over all phases */
-    int conflict_sign;    /* the lifted sign that means conflict: -1 for Delaunay
-                             (inside), +1 furthest-site (outside); 0: finite_conflict
-                             decides (NULL: no finite cell conflicts) */
+    int conflict_sign;    /* for an inline conflict test (insert): the sign of its
+                             predicate that means conflict */
     uint64_t filtered;    /* predicate calls settled by inline filters, not yet
                              added to pred's counters */
     size_t turned;        /* tests: sequential insertions in 4D and up whose new
@@ -122,11 +121,12 @@ typedef struct lh__eng {
                              0: a site inside the current hull is not inserted */
     double lo[LH__ENGINE_MAX_DIM];   /* per coordinate, the sites' minimum and     */
     double span[LH__ENGINE_MAX_DIM]; /* fl(max - min): Hilbert keys (order.c), the
-                                       static filters' bounds (insert_preds.h)   */
-    double static_eb[2];  /* those bounds for orient, insphere (per insertion call) */
+                                       static filters' bounds (insert_orient.h)  */
+    double orient_eb;     /* orient_d's static filter bound (insert_orient.h), and */
+    double conflict_eb;   /* an inline conflict test's, set per insertion call    */
     int integer;          /* every coordinate of the sites an integer */
-    int static_exact[2];  /* the static filter of orient, insphere exact: its bound
-                             is 0 and a 0 from it an exact zero (insert_preds.h) */
+    int orient_exact;     /* orient's, the conflict test's static filter exact: */
+    int conflict_exact;   /* its bound is 0 and a 0 from it an exact zero       */
     void (*progress)(void *user, size_t done, size_t total); /* lh_options */
     void *progress_user;
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */
@@ -198,14 +198,9 @@ typedef struct lh__lex {
 } lh__lex;
 int lh__lex_cmp(const void *ctx, lh_index a, lh_index b);
 
-/* A source of fixed-dimension insertion loops (dims/): the one for Delaunay in
- * R^d (its parallel worker when `parallel`), or NULL. */
-typedef lh__insert_fn (*lh__insert_pick)(int d, int parallel);
-
-/* insert_generic.c: the insertion loop with d a runtime value; _par: its parallel
- * worker (insert_generic_par.c). */
+/* insert_generic.c: the insertion loop with d a runtime value and the conflict
+ * test e->finite_conflict. */
 lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const lh_index *list);
-lh_status lh__eng_insert_generic_par(lh__eng *e, size_t first, size_t count, const lh_index *list);
 /* parallel.c: inserts order positions at..e->norder-1 as lh__eng_build's loop does,
  * splitting the larger BRIO rounds among e->threads workers (e->insert_par). */
 lh_status lh__eng_insert_parallel(lh__eng *e, size_t at);
@@ -303,7 +298,7 @@ static inline void lh__canonical_ranks(const lh_index *v, int m, int *rank)
 }
 
 /* call(m) with m a constant when it is 3 to 6 (a simplex in 2D to 5D, the
- * dimensions dims/ compiles: the hot loops over a tuple unroll), else call(m). */
+ * dimensions lift/ compiles the loop for: the hot loops over a tuple unroll), else call(m). */
 #define LH__WITH_CONSTANT_M(m, call) \
     do {                             \
         switch (m) {                 \

@@ -1,8 +1,10 @@
 /*
  * insert_impl.h — the engine's insertion loop as a template: the walk, the conflict
- * region, the cone of new cells and their linking. One source, compiled once with
- * the dimension a runtime value (hull/insert_generic.c) and once per fixed
- * dimension (dims/), so that the hot loops see constant sizes there.
+ * region, the cone of new cells and their linking. One source, compiled with the
+ * conflict test a caller's function and the dimension a runtime value
+ * (hull/insert_generic.c), and by lift/ with its conflict test inline, once with the
+ * dimension a runtime value and once per fixed dimension, so that the hot loops see
+ * constant sizes there (lift/insert_delaunay.h).
  *
  * Parameters (macros defined before including this file):
  *   LH_T_NAME   the entry function's name (external linkage);
@@ -10,13 +12,13 @@
  *   LH_T_FINITE_CONFLICT(e, v, q)  whether the finite cell with vertices v conflicts
  *               with vertex q (engine.h: the rule);
  *   LH_T_FINITE_CONFLICT2(e, v, w, q, x)  the same for finite cells v and w at
- *               once, into x[0] and x[1] (the lifted test pairs their filters);
- *   LH_T_ORIENT(e, pts)  orient_d of pts;
+ *               once, into x[0] and x[1] (a test may pair their filters);
+ *   LH_T_PLACING(e)  no finite cell conflicts (a placing triangulation);
+ *   LH_T_ORIENT(e, pts)  orient_d of pts (insert_orient.h);
  *   LH_T_PREPARE(e)  run once per call before inserting;
  *   LH_T_PARALLEL  (optional) defined: the entry function is a worker of a
  *               parallel phase (parallel.h: it locks every cell before reading it
  *               and defers the sites whose cells another worker holds).
- * Both builds take the last three from insert_preds.h.
  *
  * Location: a remembering stochastic visibility walk (Devillers, Pion & Teillaud,
  * "Walking in a triangulation", IJFCS 13(2), 2002) from the last new cell. It stops
@@ -26,8 +28,8 @@
  * Cavity: the conflict region grows depth-first from the located cell through
  * facets (its cells are marked in, the tested neighbours out); each boundary facet
  * (c, k) becomes the new cell c with vertex k replaced by q, which keeps c's
- * orientation (Bowyer 1981; Watson 1981; in the lifted view the cone from q to the
- * horizon of the visible facets).
+ * orientation (Bowyer 1981; Watson 1981; in the hull view the cone from q to the
+ * horizon of the facets it sees).
  *
  * Linking the new cells: the new cell N made from boundary facet (c, k) meets,
  * across its facet opposite vertex v_j (j != k), the new cell made from the other
@@ -60,8 +62,8 @@
 #define NV (t->nv) /* every function below has the store t in scope */
 #endif
 #if !defined(LH_T_NAME) || !defined(LH_T_FINITE_CONFLICT) || !defined(LH_T_FINITE_CONFLICT2) || \
-    !defined(LH_T_ORIENT) || !defined(LH_T_PREPARE)
-#error "insert_impl.h: define LH_T_NAME, LH_T_FINITE_CONFLICT(2), LH_T_ORIENT and LH_T_PREPARE first"
+    !defined(LH_T_PLACING) || !defined(LH_T_ORIENT) || !defined(LH_T_PREPARE)
+#error "insert_impl.h: define LH_T_NAME, LH_T_FINITE_CONFLICT(2), LH_T_PLACING, LH_T_ORIENT and LH_T_PREPARE first"
 #endif
 
 /* HOLD(e, c): whether this computation may read and write cell c; always in a
@@ -101,7 +103,7 @@ static LH__ALWAYS_INLINE int conflict(lh__eng *e, lh_index c)
     e->pts[0] = lh__eng_site(e, e->q);
     for (int k = 1; k < NV; k++) e->pts[k] = lh__eng_site(e, v[k]);
     int o = LH_T_ORIENT(e, e->pts);
-    if (o || !(e->conflict_sign || e->finite_conflict)) return o > 0; /* placing: none */
+    if (o || LH_T_PLACING(e)) return o > 0;
     lh_index f = t->nbr[(size_t)c * NV];
     if (!HOLD(e, f)) return -1;
     return LH_T_FINITE_CONFLICT(e, t->vert + (size_t)f * NV, e->q);

@@ -18,16 +18,36 @@ void lh_options_default(lh_options *opt)
     opt->threads = 1;
 }
 
+/* The insertion loops with the lifted test inline (insert_delaunay.h), stamped out
+ * by lift/CMakeLists.txt: d = 2..5 with the dimension a constant, and any d. */
+#define LH__DT_LOOPS(X) X(2) X(3) X(4) X(5) X(any)
+#define LH__DT_DECLARE(D)                                                                      \
+    lh_status lh__dt_insert_##D(lh__eng *e, size_t first, size_t count, const lh_index *list); \
+    lh_status lh__dt_insert_##D##_par(lh__eng *e, size_t first, size_t count, const lh_index *list);
+LH__DT_LOOPS(LH__DT_DECLARE)
+
+/* The loop for d, or its worker of a parallel phase: the fixed-dimension one
+ * unless `generic` (lh_options.generic_engine; the output is identical). */
+static lh__insert_fn loop_for(int d, int generic, int parallel)
+{
+    switch (generic ? 0 : d) {
+    case 2: return parallel ? lh__dt_insert_2_par : lh__dt_insert_2;
+    case 3: return parallel ? lh__dt_insert_3_par : lh__dt_insert_3;
+    case 4: return parallel ? lh__dt_insert_4_par : lh__dt_insert_4;
+    case 5: return parallel ? lh__dt_insert_5_par : lh__dt_insert_5;
+    default: return parallel ? lh__dt_insert_any_par : lh__dt_insert_any;
+    }
+}
+
 /* The lifted visibility of a finite cell from q, tested inline by the insertion
- * loops (insert_preds.h): q strictly inside the circumsphere (Delaunay), or strictly
- * outside (furthest-site: the upper hull). */
-void lh__dt_conflicts(lh__eng *e, int furthest, lh__insert_pick pick)
+ * loops (insert_lifted.h): q strictly inside the circumsphere (Delaunay), or
+ * strictly outside (furthest-site: the upper hull, no parallel phases). */
+void lh__dt_conflicts(lh__eng *e, int furthest, int generic)
 {
     e->inside_conflicts = !furthest;
     e->conflict_sign = furthest ? 1 : -1;
-    e->insert = pick ? pick(e->d, 0) : NULL;
-    lh__insert_fn par = pick ? pick(e->d, 1) : NULL; /* parallel phases: Delaunay only */
-    e->insert_par = furthest ? NULL : par ? par : lh__eng_insert_generic_par;
+    e->insert = loop_for(e->d, generic, 0);
+    e->insert_par = furthest ? NULL : loop_for(e->d, generic, 1);
 }
 
 /* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,
@@ -91,8 +111,7 @@ static lh_status copy_sites(lh_tri *t, const double *xyz)
     return LH_OK;
 }
 
-lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
-                          lh__insert_pick pick, lh_tri **out)
+lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt, lh_tri **out)
 {
     if (!out) return LH_ERR_INVALID_ARGUMENT;
     *out = NULL;
@@ -103,8 +122,8 @@ lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *
     lh__eng e;
     st = lh__eng_init(&e, &t->alloc, d, n, xyz, t->dup, opt);
     int furthest = opt && opt->furthest_site;
-    t->pick = pick;
-    lh__dt_conflicts(&e, furthest, pick);
+    t->generic = opt && opt->generic_engine;
+    lh__dt_conflicts(&e, furthest, t->generic);
     t->furthest = furthest;
     t->affine_hull = opt && opt->affine_hull;
     int affdim = -1;

@@ -57,7 +57,7 @@ struct lh_tri {
     lh_pred *pred;    /* for queries (lh_tri_locate) */
     int furthest;     /* the furthest-site triangulation (lh_options) */
     int affine_hull;  /* lh_options.affine_hull, for lh_tri_insert */
-    lh__insert_pick pick; /* the fixed-dimension insertion loops (dims/), or NULL */
+    int generic;      /* lh_options.generic_engine, for lh_tri_insert */
     size_t ncells;    /* the Delaunay complex, built on demand (complex.c) */
     lh_index *cell_off, *cell_vert;
     lh_index *simp_cell; /* count: the cell of each simplex */
@@ -68,13 +68,9 @@ struct lh_tri {
 
 /* delaunay.c: a capacity hint, the cells expected for n uniform sites in R^d. */
 lh_index lh__dt_expected_cells(int d, size_t n);
-/* delaunay.c: sets e's conflict test: lifted (Delaunay) or reversed (furthest),
- * and its insertion loop from pick (NULL: the generic one). */
-void lh__dt_conflicts(lh__eng *e, int furthest, lh__insert_pick pick);
-/* delaunay.c: lh_delaunay with the fixed-dimension loops of pick (dims/ passes
- * its own; NULL: generic only). */
-lh_status lh__dt_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
-                          lh__insert_pick pick, lh_tri **out);
+/* delaunay.c: sets e's conflict test, lifted (Delaunay) or reversed (furthest),
+ * and its insertion loops: for e->d, or with d a runtime value when `generic`. */
+void lh__dt_conflicts(lh__eng *e, int furthest, int generic);
 
 /* flat.c: t (sites copied, dup allocated) triangulated in the k-flat spanned by
  * its sites, 1 <= k < d. */

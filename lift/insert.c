@@ -239,8 +239,9 @@ static lh_status rebuild(lh_tri *t, size_t m, const double *xyz)
     o.alloc = &t->alloc;
     o.furthest_site = t->furthest;
     o.affine_hull = t->affine_hull;
+    o.generic_engine = t->generic;
     lh_tri *nt;
-    lh_status st = lh__dt_delaunay(t->d, n, all, &o, t->pick, &nt);
+    lh_status st = lh_delaunay(t->d, n, all, &o, &nt);
     lh__free(&t->alloc, all);
     if (st != LH_OK) return st;
     take_arrays(t, nt);
@@ -274,7 +275,7 @@ lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz)
         engine = 1;
     }
     if (st == LH_OK) {
-        lh__dt_conflicts(&e, t->furthest, t->pick);
+        lh__dt_conflicts(&e, t->furthest, t->generic);
         e.site = nt.xyz; /* vertex v is site v */
         st = rebuild_cells(&e, t);
     }

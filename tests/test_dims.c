@@ -1,6 +1,6 @@
-/* test_dims.c — the fixed-dimension engines (dims/, d = 2..5) give exactly the
- * generic engine's output on every family, furthest-site included, and the
- * predicate counters still count every call. */
+/* test_dims.c — the fixed-dimension engines (lift/insert_delaunay.h, d = 2..5)
+ * give exactly the generic engine's output on every family, furthest-site
+ * included, and the predicate counters still count every call. */
 #include "lh_families.h"
 #include "lh_test.h"
 #include "lh_api_test.h"

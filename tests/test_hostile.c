@@ -366,7 +366,7 @@ LH_TEST(sites_on_a_common_circumsphere)
 /* Row "lattice points on a sphere ... scaled": exactly cospherical lattice points in
  * 2D-5D (every insphere among them a perturbed zero) scaled by odd integers, whose
  * spans run from within the range where the engine's static filters are exact on
- * integer sites (hull/insert_preds.h: 2D up to about 5000, 3D 650, 4D 160, 5D 59)
+ * integer sites (lift/insert_lifted.h: 2D up to about 5000, 3D 650, 4D 160, 5D 59)
  * to far past it, where products round: the triangulation of the unscaled points,
  * and exactly valid. */
 LH_TEST(scaled_lattice_spheres_triangulate_alike)

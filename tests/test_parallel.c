@@ -12,6 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* lift/delaunay.c (lift/dt.h): the lifted conflict test and its insertion loops. */
+void lh__dt_conflicts(lh__eng *e, int furthest, int generic);
+
 /* Sizes that give every dimension at least two parallel phases with 2 threads. */
 static const size_t SIZE[7] = {0, 0, 40000, 12000, 2400, 640, 300};
 
@@ -72,9 +75,7 @@ static size_t engine_run(lh_test_state *lh_t_, int d, int fam, int threads, size
             lh__eng_release(&e);
             continue;
         }
-        e.conflict_sign = -1;
-        e.inside_conflicts = 1;
-        e.insert_par = lh__eng_insert_generic_par;
+        lh__dt_conflicts(&e, 0, 1); /* Delaunay, the loops with d a runtime value */
         e.par_scratch = scratch;
         e.par_blocks = blocks;
         int affdim;

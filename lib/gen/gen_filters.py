@@ -278,7 +278,7 @@ def generate():
     for d in range(1, 9):
         emit_filter("insphere", d, out)
     out.append("")
-    out.append("/* Static filters for the engine's insertion loop (hull/insert_preds.h): one bound per")
+    out.append("/* Static filters for the engine's insertion loop (hull/insert_orient.h, lift/insert_lifted.h): one bound per")
     out.append(" * computation, from the column spans of its sites (see the generator). */")
     for k in range(2, 6):
         emit_static("orient", k, out)

@@ -51,14 +51,15 @@ int lh__insphere_sos_unfiltered(lh_pred *ctx, int d, const double *const *pts, d
 int lh__orient_unfiltered(lh_pred *ctx, int k, const double *const *pts, double det,
                           double err);
 /* For a caller that knows the insphere determinant of pts is exactly 0 (an exact
- * static filter, hull/insert_preds.h): its perturbed sign; counted as a call
+ * static filter, lift/insert_lifted.h): its perturbed sign; counted as a call
  * settled by granularity with a zero result. */
 int lh__insphere_sos_zero(lh_pred *ctx, int d, const double *const *pts);
 /* Counts such a call of lh_orient whose exact zero the caller found itself. */
 void lh__pred_count_zero(lh_pred *ctx);
 
 /* Counts n calls of lh_orient/lh_insphere that a caller settled with the inline
- * filters of lh_filter.gen.h (dims/), as filter exits. */
+ * filters of lh_filter.gen.h (hull/insert_orient.h, lift/insert_lifted.h), as
+ * filter exits. */
 void lh__pred_count_filtered(lh_pred *ctx, uint64_t n);
 /* Adds src's counters to dst's and resets src's (the contexts of parallel workers). */
 void lh__pred_move_counters(lh_pred *dst, lh_pred *src);

@@ -2869,7 +2869,7 @@ static inline int lh__insphere_filter_8(const double *const *p, int *sign, doubl
     return 0;
 }
 
-/* Static filters for the engine's insertion loop (hull/insert_preds.h): one bound per
+/* Static filters for the engine's insertion loop (hull/insert_orient.h, lift/insert_lifted.h): one bound per
  * computation, from the column spans of its sites (see the generator). */
 
 #define LH__ORIENT_C_2 0x1.0000000001005p-50 /* the bound constant of orient_2 */

@@ -1,6 +1,6 @@
 /*
  * m2.h — the mutable 2D triangle mesh behind constrained Delaunay triangulation and
- * quality refinement (dims/m2_*.c, dims/cdt_*.c, dims/refine*.c).
+ * quality refinement (mesh2d/m2_*.c, cdt_*.c, refine.c).
  *
  * Encoding (the engine's, in 2D): triangle t has vertices v[3t..3t+2] in
  * counterclockwise order (orient_2 > 0, exactly), nb[3t+k] the triangle across the
