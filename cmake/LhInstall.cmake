@@ -2,7 +2,7 @@
 include(CMakePackageConfigHelpers)
 set(LH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/lifthull)
 
-install(TARGETS lifthull EXPORT lifthullTargets
+install(TARGETS lifthull lifthull_shared EXPORT lifthullTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   PUBLIC_HEADER DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -35,6 +35,16 @@
 extern "C" {
 #endif
 
+/* LH_API marks every function of the API: the shared library exports these and
+ * nothing else (it is built with hidden visibility). */
+#if defined(_WIN32) && defined(LH_SHARED_BUILD)
+#define LH_API __declspec(dllexport)
+#elif defined(__GNUC__) || defined(__clang__)
+#define LH_API __attribute__((visibility("default")))
+#else
+#define LH_API
+#endif
+
 /* ---- version -------------------------------------------------------------------- */
 
 #define LH_VERSION_MAJOR 0
@@ -43,9 +53,9 @@ extern "C" {
 #define LH_VERSION_STRING "0.1.0"
 
 /* The library's version as MAJOR*10000 + MINOR*100 + PATCH, at run time. */
-int lh_version_number(void);
+LH_API int lh_version_number(void);
 /* The library's version as "MAJOR.MINOR.PATCH", at run time (static storage). */
-const char *lh_version_string(void);
+LH_API const char *lh_version_string(void);
 
 /* ---- status codes --------------------------------------------------------------- */
 
@@ -70,9 +80,9 @@ typedef enum lh_status {
 
 /* A one-line English message for a status (static storage, never NULL; an unknown
  * value gives "unknown status"). */
-const char *lh_status_message(lh_status status);
+LH_API const char *lh_status_message(lh_status status);
 /* The enumerator's name, e.g. "LH_ERR_NONFINITE" (static storage, never NULL). */
-const char *lh_status_name(lh_status status);
+LH_API const char *lh_status_name(lh_status status);
 
 /* ---- indices ------------------------------------------------------------------- */
 
@@ -94,7 +104,7 @@ typedef int32_t lh_index;
 /* LH_INDEX_PRI: printf's conversion for an lh_index, as inttypes.h's PRId32/PRId64:
  * printf("%" LH_INDEX_PRI "\n", lh_tri_simplices(t)[0]). */
 /* LH_INDEX_BITS of the library (32 or 64). */
-int lh_index_bits(void);
+LH_API int lh_index_bits(void);
 
 /* ---- memory --------------------------------------------------------------------- */
 
@@ -118,7 +128,7 @@ typedef struct lh_allocator {
  * (with *bad_index, if bad_index is not NULL, set to the flat index i*d+j of the
  * first offending coordinate), LH_ERR_INVALID_ARGUMENT (xyz NULL with n > 0, or
  * d < 1) or LH_ERR_TOO_LARGE (n*d overflows size_t). */
-lh_status lh_coords_validate(int d, size_t n, const double *xyz, size_t *bad_index);
+LH_API lh_status lh_coords_validate(int d, size_t n, const double *xyz, size_t *bad_index);
 
 /* ---- exact predicates ------------------------------------------------------------ */
 
@@ -168,13 +178,13 @@ typedef struct lh_pred lh_pred;
 /* Creates a predicate context (counters and a scratch arena of about 1 MiB for the
  * exact stage, allocated once here so that no predicate call allocates).
  * alloc may be NULL. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
-lh_status lh_pred_create(const lh_allocator *alloc, lh_pred **out);
-void lh_pred_free(lh_pred *ctx);
+LH_API lh_status lh_pred_create(const lh_allocator *alloc, lh_pred **out);
+LH_API void lh_pred_free(lh_pred *ctx);
 
-int lh_orient(lh_pred *ctx, int k, const double *const *pts);       /* -1, 0, +1 */
-int lh_orient_sos(lh_pred *ctx, int k, const double *const *pts);   /* -1, +1    */
-int lh_insphere(lh_pred *ctx, int d, const double *const *pts);     /* -1, 0, +1 */
-int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts); /* -1, +1    */
+LH_API int lh_orient(lh_pred *ctx, int k, const double *const *pts);       /* -1, 0, +1 */
+LH_API int lh_orient_sos(lh_pred *ctx, int k, const double *const *pts);   /* -1, +1    */
+LH_API int lh_insphere(lh_pred *ctx, int d, const double *const *pts);     /* -1, 0, +1 */
+LH_API int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts); /* -1, +1    */
 /* The hyperplane through the d points pts of R^d (d = 1..8), oriented as orient_d:
  * normal (d doubles, unit length) and offset with normal.x + offset > 0 where
  * orient_d(pts[0..d-1], x) > 0 (up to the rounding of the coefficients). Computed
@@ -184,18 +194,18 @@ int lh_insphere_sos(lh_pred *ctx, int d, const double *const *pts); /* -1, +1   
  * before the length is taken: the same unit vector at every power-of-two scale);
  * the offset is a distance to the origin, which may pass DBL_MAX for points near
  * it: then it is +-inf here (never nan) — lh_hyperplane_exp gives it exactly. */
-int lh_hyperplane(lh_pred *ctx, int d, const double *const *pts, double *normal,
-                  double *offset);
+LH_API int lh_hyperplane(lh_pred *ctx, int d, const double *const *pts, double *normal,
+                         double *offset);
 /* lh_hyperplane with the offset as offset * 2^offset_exp: the mantissa in [0.5, 1)
  * (0 with exponent 0 for a plane through the origin), finite for every finite
  * input, relative error a few ulps. Same normal and return value as lh_hyperplane. */
-int lh_hyperplane_exp(lh_pred *ctx, int d, const double *const *pts, double *normal,
-                      double *offset, int *offset_exp);
+LH_API int lh_hyperplane_exp(lh_pred *ctx, int d, const double *const *pts, double *normal,
+                             double *offset, int *offset_exp);
 /* The sign of |q - a| - |q - b| for points q, a, b of R^d (d = 1..8): -1 when a is
  * strictly nearer to q, +1 when b is, 0 when they are exactly as near. Filtered,
  * then exact for every finite double (no perturbation: ties are for the caller). */
-int lh_compare_distance(lh_pred *ctx, int d, const double *q, const double *a,
-                        const double *b);
+LH_API int lh_compare_distance(lh_pred *ctx, int d, const double *q, const double *a,
+                               const double *b);
 
 /* How often each stage ran since creation or the last reset. */
 typedef struct lh_pred_counters {
@@ -209,8 +219,8 @@ typedef struct lh_pred_counters {
     uint64_t sos_general;   /* perturbation needed the general (rank-based) search   */
 } lh_pred_counters;
 
-void lh_pred_counters_get(const lh_pred *ctx, lh_pred_counters *out);
-void lh_pred_counters_reset(lh_pred *ctx);
+LH_API void lh_pred_counters_get(const lh_pred *ctx, lh_pred_counters *out);
+LH_API void lh_pred_counters_reset(lh_pred *ctx);
 
 /* ---- Delaunay triangulation ------------------------------------------------------ */
 
@@ -252,7 +262,7 @@ typedef struct lh_options {
                                   (default 1)                                        */
 } lh_options;
 
-void lh_options_default(lh_options *opt);
+LH_API void lh_options_default(lh_options *opt);
 
 /*
  * lh_delaunay: the Delaunay triangulation of n sites in R^d (d = 2..8), row-major in
@@ -280,13 +290,13 @@ void lh_options_default(lh_options *opt);
  * LH_ERR_NOMEM. On failure *out is NULL and nothing is leaked.
  */
 typedef struct lh_tri lh_tri;
-lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
-                      lh_tri **out);
+LH_API lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
+                             lh_tri **out);
 
 /* The affine dimension spanned by n sites in R^d (0 for one distinct site, -1 for
  * none), computed exactly; opt as lh_delaunay's (only alloc is used; NULL:
  * defaults); LH_ERR_* as lh_delaunay for bad arguments. */
-lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt, int *dim);
+LH_API lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt, int *dim);
 
 /*
  * lh_tri_insert: adds m sites (m*d doubles, copied) to t; they get the indices
@@ -300,37 +310,37 @@ lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *op
  * coordinate, counted from the first new site); LH_ERR_NOMEM. On failure t is
  * unchanged.
  */
-lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz);
+LH_API lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz);
 
-int lh_tri_dim(const lh_tri *t);             /* d, coordinates per site               */
+LH_API int lh_tri_dim(const lh_tri *t);             /* d, coordinates per site               */
 /* k, the dimension of the simplices: d, or with lh_options.affine_hull the affine
  * dimension of the sites. Below, "k-simplex" arrays have k+1 entries per simplex.
  * When k < d, orientation means orient_k of the sites projected to k coordinates
  * that are one to one on the sites' affine hull (the same for the whole handle). */
-int lh_tri_simplex_dim(const lh_tri *t);
-size_t lh_tri_site_count(const lh_tri *t);   /* n, duplicates included                */
-size_t lh_tri_count(const lh_tri *t);        /* finite simplices                      */
+LH_API int lh_tri_simplex_dim(const lh_tri *t);
+LH_API size_t lh_tri_site_count(const lh_tri *t);   /* n, duplicates included                */
+LH_API size_t lh_tri_count(const lh_tri *t);        /* finite simplices                      */
 /* (k+1) * lh_tri_count indices into the sites, canonical order (see lh_delaunay). */
-const lh_index *lh_tri_simplices(const lh_tri *t);
+LH_API const lh_index *lh_tri_simplices(const lh_tri *t);
 /* (k+1) * lh_tri_count: neighbour j of simplex s is across the facet opposite its
  * j-th vertex; -1 across the convex hull. */
-const lh_index *lh_tri_neighbors(const lh_tri *t);
+LH_API const lh_index *lh_tri_neighbors(const lh_tri *t);
 /* Convex hull facets: lh_tri_hull_count facets of k site indices each, ordered so that
  * orient_k(facet, p) > 0 for points p strictly outside the hull (k = 1: the two end
  * sites of the line, which have no orientation). */
-size_t lh_tri_hull_count(const lh_tri *t);
-const lh_index *lh_tri_hull_facets(const lh_tri *t);
+LH_API size_t lh_tri_hull_count(const lh_tri *t);
+LH_API const lh_index *lh_tri_hull_facets(const lh_tri *t);
 /* Per site: one simplex incident to it (-1 for a merged duplicate, or, furthest-site,
  * for a site that is not a vertex). */
-const lh_index *lh_tri_vertex_simplex(const lh_tri *t);
+LH_API const lh_index *lh_tri_vertex_simplex(const lh_tri *t);
 /* Per site: the index of the earlier equal site it was merged into (itself if none). */
-const lh_index *lh_tri_duplicate_of(const lh_tri *t);
-size_t lh_tri_duplicate_count(const lh_tri *t); /* sites merged into an earlier one */
+LH_API const lh_index *lh_tri_duplicate_of(const lh_tri *t);
+LH_API size_t lh_tri_duplicate_count(const lh_tri *t); /* sites merged into an earlier one */
 /* How often each predicate stage ran for t (lh_pred_counters): the whole lh_delaunay
  * run (the fixed-dimension engines' inline filters included), then every query and
  * insertion since. All zero for t NULL. */
-void lh_tri_pred_counters(const lh_tri *t, lh_pred_counters *out);
-void lh_tri_free(lh_tri *t);
+LH_API void lh_tri_pred_counters(const lh_tri *t, lh_pred_counters *out);
+LH_API void lh_tri_free(lh_tri *t);
 
 /*
  * lh_check_delaunay: exact validity check of a triangulation given as sites and
@@ -346,13 +356,13 @@ void lh_tri_free(lh_tri *t);
  * bad allocator; LH_ERR_TOO_LARGE, with the reason in msg, for n or count beyond what
  * lh_index and size_t can count (the check's sizes would wrap around).
  */
-lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
-                            const lh_index *simplices, const lh_options *opt, char *msg,
-                            size_t msg_size);
+LH_API lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
+                                   const lh_index *simplices, const lh_options *opt, char *msg,
+                                   size_t msg_size);
 /* The same for a handle, also verifying its neighbour and hull arrays; for a
  * furthest-site triangulation the conditions are reversed (every interior facet
  * locally furthest-site Delaunay; sites that are not vertices inside the hull). */
-lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
+LH_API lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
 
 /*
  * lh_tri_complex: the Delaunay complex — simplices whose circumspheres coincide
@@ -363,19 +373,19 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
  * handle (the pointers stay valid until lh_tri_free). Returns LH_OK, LH_ERR_NOMEM or
  * LH_ERR_INVALID_ARGUMENT.
  */
-lh_status lh_tri_complex(lh_tri *t, size_t *count, const lh_index **offsets,
-                         const lh_index **vertices);
+LH_API lh_status lh_tri_complex(lh_tri *t, size_t *count, const lh_index **offsets,
+                                const lh_index **vertices);
 /* cell[s] (lh_tri_count entries): the cell of lh_tri_complex that simplex s belongs
  * to; kept by the handle as lh_tri_complex's lists. The Voronoi diagram's vertices are
  * the cells' circumcentres (each cell's simplices share theirs); two sites share a
  * Voronoi ridge of full dimension d-1 exactly when they share an edge of the complex.
  * Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
-lh_status lh_tri_complex_cells(lh_tri *t, const lh_index **cell);
+LH_API lh_status lh_tri_complex_cells(lh_tri *t, const lh_index **cell);
 /* The edges of the Delaunay complex (the 1-faces of its cells): *count pairs i < j in
  * *edges (2 each), sorted; exactly the pairs of sites whose Voronoi regions share a
  * face of dimension d-1 (a diagonal of a grid square is no edge). Kept by the handle
  * as lh_tri_complex's lists. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT. */
-lh_status lh_tri_complex_edges(lh_tri *t, size_t *count, const lh_index **edges);
+LH_API lh_status lh_tri_complex_edges(lh_tri *t, size_t *count, const lh_index **edges);
 
 /* Where a query point lies in a triangulation. */
 typedef struct lh_location {
@@ -402,7 +412,7 @@ typedef struct lh_location {
  * (a point shared by more than 64 simplices needs memory). Not const: it
  * uses the handle's predicate context (one thread per handle).
  */
-lh_status lh_tri_locate(lh_tri *t, const double *q, lh_index hint, lh_location *out);
+LH_API lh_status lh_tri_locate(lh_tri *t, const double *q, lh_index hint, lh_location *out);
 
 /* ---- Voronoi diagram, nearest site, interpolation ---------------------------------- */
 
@@ -418,14 +428,14 @@ lh_status lh_tri_locate(lh_tri *t, const double *q, lh_index hint, lh_location *
  * with site j is dual to the Delaunay edge ij. Returns LH_OK, LH_ERR_NOMEM or
  * LH_ERR_INVALID_ARGUMENT.
  */
-lh_status lh_tri_circumcenters(lh_tri *t, const double **centers);
+LH_API lh_status lh_tri_circumcenters(lh_tri *t, const double **centers);
 /* Simplex s's circumcentre as c * 2^e (d doubles c, and *e): the same construction
  * as lh_tri_circumcenters, whose coordinates are +-inf where a centre's pass DBL_MAX
  * (sites near DBL_MAX, a thin simplex on the hull); c is computed on the sites scaled
  * by 2^-e, so it stays finite there (NaN only where lh_tri_circumcenters' is: an
  * exact zero pivot in the floating-point solve). Returns LH_OK or
  * LH_ERR_INVALID_ARGUMENT (t, c or e NULL, or s >= the number of simplices). */
-lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, int *e);
+LH_API lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, int *e);
 
 /*
  * lh_tri_nearest: the site nearest to q (d doubles): a greedy walk along Delaunay
@@ -436,7 +446,7 @@ lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, int *e);
  * LH_ERR_INVALID_ARGUMENT (t, q or site NULL; or a furthest-site handle; or, when
  * k < d, q off the sites' affine hull), LH_ERR_NONFINITE or LH_ERR_NOMEM.
  */
-lh_status lh_tri_nearest(lh_tri *t, const double *q, lh_index hint, lh_index *site);
+LH_API lh_status lh_tri_nearest(lh_tri *t, const double *q, lh_index hint, lh_index *site);
 
 /*
  * lh_tri_natural_coords: Sibson's natural-neighbour coordinates of q (Sibson 1980,
@@ -458,8 +468,8 @@ lh_status lh_tri_nearest(lh_tri *t, const double *q, lh_index hint, lh_index *si
  * than cap natural neighbours: *count is the number needed, nothing written);
  * LH_ERR_NONFINITE; LH_ERR_NOMEM.
  */
-lh_status lh_tri_natural_coords(lh_tri *t, const double *q, lh_index hint, size_t cap,
-                                lh_index *sites, double *weights, size_t *count);
+LH_API lh_status lh_tri_natural_coords(lh_tri *t, const double *q, lh_index hint, size_t cap,
+                                       lh_index *sites, double *weights, size_t *count);
 
 typedef enum lh_interp_method {
     LH_INTERP_LINEAR = 0,  /* barycentric in the simplex containing q (scipy's
@@ -480,9 +490,9 @@ typedef enum lh_interp_method {
  * LH_ERR_DIMENSION (NATURAL outside d = 2, 3), LH_ERR_NONFINITE (a query
  * coordinate) or LH_ERR_NOMEM; on failure out is unspecified.
  */
-lh_status lh_tri_interpolate(lh_tri *t, lh_interp_method method, size_t m,
-                             const double *q, int channels, const double *values,
-                             double *out);
+LH_API lh_status lh_tri_interpolate(lh_tri *t, lh_interp_method method, size_t m,
+                                    const double *q, int channels, const double *values,
+                                    double *out);
 
 /* ---- convex hull ------------------------------------------------------------------ */
 
@@ -504,15 +514,15 @@ lh_status lh_tri_interpolate(lh_tri *t, lh_interp_method method, size_t m,
  * when the sites span less than R^d).
  */
 typedef struct lh_hull lh_hull;
-lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *opt,
-                         lh_hull **out);
-int lh_hull_dim(const lh_hull *h);
-size_t lh_hull_facet_count(const lh_hull *h);
-const lh_index *lh_hull_facets(const lh_hull *h);    /* d per facet              */
-size_t lh_hull_vertex_count(const lh_hull *h);
-const lh_index *lh_hull_vertices(const lh_hull *h);  /* the corners, increasing  */
-const lh_index *lh_hull_duplicate_of(const lh_hull *h);
-void lh_hull_free(lh_hull *h);
+LH_API lh_status lh_convex_hull(int d, size_t n, const double *xyz, const lh_options *opt,
+                                lh_hull **out);
+LH_API int lh_hull_dim(const lh_hull *h);
+LH_API size_t lh_hull_facet_count(const lh_hull *h);
+LH_API const lh_index *lh_hull_facets(const lh_hull *h);    /* d per facet              */
+LH_API size_t lh_hull_vertex_count(const lh_hull *h);
+LH_API const lh_index *lh_hull_vertices(const lh_hull *h);  /* the corners, increasing  */
+LH_API const lh_index *lh_hull_duplicate_of(const lh_hull *h);
+LH_API void lh_hull_free(lh_hull *h);
 
 /*
  * Lengths, areas and volumes (Qhull's FA, Fa, FS).
@@ -529,18 +539,18 @@ void lh_hull_free(lh_hull *h);
  * below the subnormals 0. Returns LH_OK, LH_ERR_NOMEM or LH_ERR_INVALID_ARGUMENT
  * (an index outside 0..n-1, k or d out of range).
  */
-lh_status lh_simplex_measures(int d, int k, const double *xyz, size_t n, size_t m,
-                              const lh_index *simplices, double *each, double *total);
+LH_API lh_status lh_simplex_measures(int d, int k, const double *xyz, size_t n, size_t m,
+                                     const lh_index *simplices, double *each, double *total);
 /* The simplices of t (k = lh_tri_simplex_dim): each (lh_tri_count doubles) and
  * their total, as lh_simplex_measures; for k = d the total is the exact volume of
  * the convex hull rounded once. */
-lh_status lh_tri_measures(const lh_tri *t, double *each, double *total);
+LH_API lh_status lh_tri_measures(const lh_tri *t, double *each, double *total);
 /* The hull h of the n sites xyz it was computed from: each facet's (d-1)-measure
  * (lh_hull_facet_count doubles), their total (the surface area; d = 2: the
  * perimeter), and the enclosed volume (d = 2: the area), exact and rounded once.
  * Any pointer but h and xyz may be NULL. */
-lh_status lh_hull_measures(const lh_hull *h, const double *xyz, size_t n, double *each,
-                           double *area, double *volume);
+LH_API lh_status lh_hull_measures(const lh_hull *h, const double *xyz, size_t n, double *each,
+                                  double *area, double *volume);
 
 /* ---- file formats ------------------------------------------------------------------ */
 
@@ -595,7 +605,7 @@ typedef enum lh_format {
 
 /* The format's name: "auto", "qhull", "node", "columns" (static storage; "unknown"
  * for other values). */
-const char *lh_format_name(lh_format format);
+LH_API const char *lh_format_name(lh_format format);
 
 #define LH_READ_MAX_POINTS (LH_INDEX_MAX - 1) /* as lh_delaunay accepts: 2^31 - 2
                                                 (2^63 - 2 with 64-bit indices)   */
@@ -632,11 +642,11 @@ typedef struct lh_points {
  * overflow), LH_ERR_NOMEM, LH_ERR_IO (a read error) or LH_ERR_INVALID_ARGUMENT (f or
  * out NULL, format unknown, or an allocator without hooks).
  */
-lh_status lh_points_read(FILE *f, const char *name, lh_format format,
-                         const lh_allocator *alloc, lh_points *out, char *msg,
-                         size_t msg_size);
+LH_API lh_status lh_points_read(FILE *f, const char *name, lh_format format,
+                                const lh_allocator *alloc, lh_points *out, char *msg,
+                                size_t msg_size);
 /* Frees the arrays of p (not p itself) and zeroes it; NULL or a zeroed p is a no-op. */
-void lh_points_free(lh_points *p);
+LH_API void lh_points_free(lh_points *p);
 
 /* Cells read from a file (lh_cells_read); the array is released by lh_cells_free. */
 typedef struct lh_cells {
@@ -659,10 +669,10 @@ typedef struct lh_cells {
  * (one field: 'i'). With n_points > 0 every index must name one of n_points points. Diagnostics and
  * statuses as lh_points_read ("NAME:LINE:COL: expected ..., found ...").
  */
-lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
-                        lh_cells *out, char *msg, size_t msg_size);
+LH_API lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
+                               lh_cells *out, char *msg, size_t msg_size);
 /* Frees c's array (not c) and zeroes it; NULL or a zeroed c is a no-op. */
-void lh_cells_free(lh_cells *c);
+LH_API void lh_cells_free(lh_cells *c);
 
 /*
  * A mesh to write, as flat arrays the caller owns: n points of dimension d, and
@@ -714,12 +724,12 @@ typedef struct lh_mesh_view {
  *                "3 a b c" per triangle: k = 2 with d = 2 (a triangulation) or d = 3
  *                (a surface, e.g. a 3D convex hull's facets).
  */
-lh_status lh_write_vtu(FILE *f, const lh_mesh_view *m);
-lh_status lh_write_msh(FILE *f, const lh_mesh_view *m);
-lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index);
-lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index);
-lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index);
-lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
+LH_API lh_status lh_write_vtu(FILE *f, const lh_mesh_view *m);
+LH_API lh_status lh_write_msh(FILE *f, const lh_mesh_view *m);
+LH_API lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
 
 /*
  * The .vtu writer's choices; a zeroed struct (or NULL) gives the defaults: binary,
@@ -739,7 +749,7 @@ typedef struct lh_vtu_options {
     const char *cell_values_name; /* its name (as values_name), NULL for "cell_value"      */
 } lh_vtu_options;
 /* lh_write_vtu with choices; checks and statuses as the writers above. */
-lh_status lh_write_vtu_opts(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
+LH_API lh_status lh_write_vtu_opts(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
 
 /* ---- 2D meshing: constrained Delaunay triangulation and quality refinement -------- */
 
@@ -804,17 +814,17 @@ typedef struct lh_pslg {
  * a cycle of segments (a ring of one point, earcut's Steiner point, a vertex alone),
  * even_odd is set.
  */
-lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
-                       char *msg, size_t msg_size);
-lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
-                        char *msg, size_t msg_size);
+LH_API lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
+                              char *msg, size_t msg_size);
+LH_API lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
+                               char *msg, size_t msg_size);
 /* Moves p's coordinates, attributes and markers into g, which has none (g->n == 0),
  * leaving p zeroed; p must have d = 2 and the same allocator hooks as g. g's segment
  * endpoints are renumbered from p's first_index, which g takes (Triangle numbers them
  * as the .node). Returns LH_OK or LH_ERR_INVALID_ARGUMENT. */
-lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p);
+LH_API lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p);
 /* Frees what a reader allocated (not g) and zeroes g; NULL or a zeroed g is a no-op. */
-void lh_pslg_free(lh_pslg *g);
+LH_API void lh_pslg_free(lh_pslg *g);
 
 /* Options of lh_triangulate_pslg; lh_trimesh_options_default sets every default.
  * The letters are Triangle's switches for the same thing. */
@@ -862,7 +872,7 @@ typedef struct lh_trimesh_options {
  * (lh_trimesh_stats.steiner_budget). */
 #define LH_TRIMESH_PROVABLE_ANGLE 20.7
 
-void lh_trimesh_options_default(lh_trimesh_options *opt);
+LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
 
 /*
  * lh_triangulate_pslg: the constrained Delaunay triangulation (Chew 1989) of a PSLG,
@@ -898,34 +908,34 @@ void lh_trimesh_options_default(lh_trimesh_options *opt);
  * from g->first_index + g->item_first_shift).
  */
 typedef struct lh_trimesh lh_trimesh;
-lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
-                              lh_trimesh **out, char *msg, size_t msg_size);
-void lh_trimesh_free(lh_trimesh *m);
+LH_API lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
+                                     lh_trimesh **out, char *msg, size_t msg_size);
+LH_API void lh_trimesh_free(lh_trimesh *m);
 
 /* Points: the PSLG's vertices first, with their indices (merged duplicates too), then
  * the Steiner points. Markers, Triangle's rule: a vertex's own nonzero marker; else
  * the nonzero marker of an input segment it lies on (an endpoint, or a Steiner point
  * put on it; of several, the first segment in input order); else 1 on the domain's
  * boundary (holes' too); else 0. */
-size_t lh_trimesh_point_count(const lh_trimesh *m);
-const double *lh_trimesh_points(const lh_trimesh *m);         /* 2 per point          */
-const lh_index *lh_trimesh_point_markers(const lh_trimesh *m);/* 1 per point          */
-int lh_trimesh_point_attr_count(const lh_trimesh *m);
-const double *lh_trimesh_point_attrs(const lh_trimesh *m);    /* interpolated; or NULL */
+LH_API size_t lh_trimesh_point_count(const lh_trimesh *m);
+LH_API const double *lh_trimesh_points(const lh_trimesh *m);         /* 2 per point          */
+LH_API const lh_index *lh_trimesh_point_markers(const lh_trimesh *m);/* 1 per point          */
+LH_API int lh_trimesh_point_attr_count(const lh_trimesh *m);
+LH_API const double *lh_trimesh_point_attrs(const lh_trimesh *m);    /* interpolated; or NULL */
 /* Triangles counterclockwise; neighbour k opposite vertex k, -1 on the boundary. */
-size_t lh_trimesh_triangle_count(const lh_trimesh *m);
-const lh_index *lh_trimesh_triangles(const lh_trimesh *m);
-const lh_index *lh_trimesh_neighbors(const lh_trimesh *m);
-const double *lh_trimesh_triangle_attrs(const lh_trimesh *m); /* region_attributes: 1
+LH_API size_t lh_trimesh_triangle_count(const lh_trimesh *m);
+LH_API const lh_index *lh_trimesh_triangles(const lh_trimesh *m);
+LH_API const lh_index *lh_trimesh_neighbors(const lh_trimesh *m);
+LH_API const double *lh_trimesh_triangle_attrs(const lh_trimesh *m); /* region_attributes: 1
                                                                  per triangle; or NULL */
 /* Subsegments: the edges that lie on input segments (or, with convex_hull, on the
  * hull), 2 points each, with the segment's marker (1 for hull edges and for segments
  * without markers on the boundary, 0 inside); and the input segment each lies on (-1:
  * a hull edge). */
-size_t lh_trimesh_segment_count(const lh_trimesh *m);
-const lh_index *lh_trimesh_segments(const lh_trimesh *m);
-const lh_index *lh_trimesh_segment_markers(const lh_trimesh *m);
-const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m);
+LH_API size_t lh_trimesh_segment_count(const lh_trimesh *m);
+LH_API const lh_index *lh_trimesh_segments(const lh_trimesh *m);
+LH_API const lh_index *lh_trimesh_segment_markers(const lh_trimesh *m);
+LH_API const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m);
 
 /* What happened, and the quality reached (angles in degrees; the ranges are measured
  * at each call, one pass over the triangles). */
@@ -950,9 +960,9 @@ typedef struct lh_trimesh_stats {
                                         else 0 (no budget)                           */
     int steiner_budget_reached;      /* refinement stopped there: bad_triangles are left */
 } lh_trimesh_stats;
-void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out);
+LH_API void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out);
 /* The triangles still bad at the end (lh_trimesh_stats.bad_triangles of them). */
-const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
+LH_API const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
 
 /*
  * lh_check_trimesh: exact check of a 2D triangulation of a domain — points (n, xy),
@@ -964,9 +974,9 @@ const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
  * count, a subsegment endpoint out of range, an allocator lacking alloc or free) or
  * LH_ERR_TOO_LARGE, the argument named in msg; LH_ERR_NOMEM.
  */
-lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
-                           size_t seg_count, const lh_index *segs, int boundary_free,
-                           const lh_allocator *alloc, char *msg, size_t msg_size);
+LH_API lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
+                                  size_t seg_count, const lh_index *segs, int boundary_free,
+                                  const lh_allocator *alloc, char *msg, size_t msg_size);
 
 #ifdef __cplusplus
 }

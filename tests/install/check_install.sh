@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the build tree BUILD into a temporary prefix and builds consumer.c against
-# it twice: with find_package(lifthull) and with pkg-config. Also runs the installed
-# tool. Usage: check_install.sh BUILD C_COMPILER
+# it: with find_package(lifthull), static and shared, and with pkg-config (shared).
+# Checks that the shared library exports lh_ functions only, under its SONAME, and
+# runs the installed tool. Usage: check_install.sh BUILD C_COMPILER
 set -euo pipefail
 build="$1"
 cc="$2"
@@ -16,13 +17,27 @@ test -f "$tmp/prefix/include/lifthull.h"
 (cd "$tmp" && "$tmp/prefix/bin/lifthull" selfcheck | tail -n 1 | grep -q '^selfcheck: 33 cases, 0 wrong') ||
   { echo "install: the installed lifthull selfcheck failed outside the source tree" >&2; exit 1; }
 
-CC="$cc" cmake -S "$here" -B "$tmp/cmake-consumer" -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
-cmake --build "$tmp/cmake-consumer" >/dev/null
-"$tmp/cmake-consumer/consumer"
+so="$(find "$tmp/prefix" -name 'liblifthull.so.*.*.*' | head -n 1)"
+test -f "$(dirname "$so")/liblifthull.a" || { echo "install: no liblifthull.a beside $so" >&2; exit 1; }
+soname="$(objdump -p "$so" | awk '$1 == "SONAME" { print $2 }')"
+test "$soname" = "liblifthull.so.$(lifthull_ver="$("$tmp/prefix/bin/lifthull" --version | awk '{ print $2 }')"; echo "${lifthull_ver%.*}")" ||
+  { echo "install: SONAME $soname" >&2; exit 1; }
+others="$(nm -D --defined-only "$so" | awk '{ print $3 }' | grep -v '^lh_[a-z]' || true)"
+test -z "$others" || { echo "install: liblifthull.so exports more than lh_ functions:" $others >&2; exit 1; }
+nm -D --defined-only "$so" | awk '{ print $3 }' | grep -q '^lh_delaunay$'
+
+for shared in OFF ON; do
+  CC="$cc" cmake -S "$here" -B "$tmp/cmake-consumer-$shared" -DCMAKE_PREFIX_PATH="$tmp/prefix" \
+    -DLH_SHARED=$shared >/dev/null
+  cmake --build "$tmp/cmake-consumer-$shared" >/dev/null
+  "$tmp/cmake-consumer-$shared/consumer"
+done
+ldd "$tmp/cmake-consumer-ON/consumer" | grep -q liblifthull.so ||
+  { echo "install: the shared consumer does not load liblifthull.so" >&2; exit 1; }
 
 pcdir="$(dirname "$(find "$tmp/prefix" -name lifthull.pc | head -n 1)")"
 # shellcheck disable=SC2046
 "$cc" -o "$tmp/pc-consumer" "$here/consumer.c" \
   $(PKG_CONFIG_PATH="$pcdir" pkg-config --cflags --libs lifthull)
-"$tmp/pc-consumer"
-echo "install: CMake package and pkg-config consumers OK"
+LD_LIBRARY_PATH="$(dirname "$so")" "$tmp/pc-consumer"
+echo "install: CMake package (static, shared) and pkg-config consumers OK"
