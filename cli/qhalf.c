@@ -7,12 +7,15 @@
  * dual points' convex hull, and each hull facet n.p + off = 0 is a vertex
  * x = c + n / -off of the intersection, tight on the facet's halfspaces.
  *
- * Precision: each dual coordinate is rounded once; their hull, and which hull facets
- * lie on one hyperplane (merged into one intersection point, as Qhull merges them),
- * are exact for those rounded points; each intersection point is computed from its
+ * Precision: s_i is a.c + b in twice the precision, rounded (dot2), each dual
+ * coordinate one more rounding; their hull, and which hull facets lie on one
+ * hyperplane (merged into one intersection point, as Qhull merges them), are exact
+ * for those rounded points; each intersection point is computed from its
  * halfspaces' own coefficients (tight_point): a few ulps from the exact point.
  * The interior point comes from option Hn,n,..., the input's first point, or is the
- * origin when that is strictly inside every halfspace (Qhull requires one).
+ * origin when that is strictly inside every halfspace, or else the halfspaces'
+ * Chebyshev centre (qhalf_lp.c; Qhull requires one); whichever, it is checked to be
+ * strictly inside every halfspace exactly (inside_sign) before it is used.
  */
 #include "cli.h"
 #include "outfile.h"
@@ -550,10 +553,18 @@ static int interior_point(const lh_cli_qopts *o, halfspaces *hs, const char **fr
     }
     *from = hs->has_c ? "the input's first point" : "the origin";
     if (hs->has_c || origin_inside(hs)) return 1;
-    fprintf(stderr, "lifthull qhalf: an interior point is needed (the origin is not strictly "
-            "inside every halfspace): prepend one to the input (a line 'd 1', then its d "
-            "coordinates) or give option Hn,n,...; a linear program finds one (lifthull qhalf "
-            "--help)\n");
+    *from = "the Chebyshev centre";
+    if (lh_cli_qhalf_centre(hs, hs->c)) {
+        fprintf(stderr, "lifthull qhalf: no interior point given, the origin not inside: using the "
+                "halfspaces' Chebyshev centre H");
+        for (int j = 0; j < hs->d; j++) fprintf(stderr, "%s%.17g", j ? "," : "", hs->c[j]);
+        fputc('\n', stderr);
+        return 1;
+    }
+    fprintf(stderr, "lifthull qhalf: an interior point is needed: the origin is not strictly "
+            "inside every halfspace and the linear program for their Chebyshev centre found no "
+            "ball inside them (their intersection may be empty, flat or unbounded): prepend a "
+            "point to the input (a line 'd 1', then its d coordinates) or give option Hn,n,...\n");
     return 0;
 }
 

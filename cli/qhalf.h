@@ -36,6 +36,11 @@ typedef struct lh_cli_hresult {
  * memory (message printed). */
 int lh_cli_qhalf_print(FILE *f, const lh_cli_qopts *o, const lh_cli_halfspaces *hs,
                        const lh_cli_hresult *r, const char *opt);
+/* The Chebyshev centre of the halfspaces (the centre of the largest ball inside
+ * them) in x, from a floating-point linear program (qhalf_lp.c); 1 when it found
+ * one with a positive radius, 0 otherwise (also when out of memory). The caller
+ * checks x exactly. */
+int lh_cli_qhalf_centre(const lh_cli_halfspaces *hs, double *x);
 /* Tv: every dual point inside or on every facet of the dual hull (exact); 1 when
  * so, 0 after printing the first violation. */
 int lh_cli_qhalf_verify(const lh_cli_qopts *o, const lh_cli_halfspaces *hs, const lh_cli_hresult *r);

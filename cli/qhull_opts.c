@@ -56,10 +56,10 @@ static void help_half(void)
            "Qhull's qhalf: the intersection of halfspaces a.x + b <= 0, given as Qhull's\n"
            "input (d+1, count, then a_1 .. a_d b per line; qconvex n writes them), about\n"
            "an interior point: option Hn,n,... (missing coordinates 0), the input's first\n"
-           "lines 'd 1' and the point, or else the origin if every b < 0. The dual points\n"
-           "a / -(a.c + b) are rounded once; their convex hull is exact. Without a known\n"
-           "interior point, the linear program max t: a_i.x + |a_i| t + b_i <= 0 gives\n"
-           "one (Chebyshev centre: x, when t > 0).\n\n"
+           "lines 'd 1' and the point, the origin if every b < 0, or else the halfspaces'\n"
+           "Chebyshev centre (max t: a_i.x + |a_i| t + b_i <= 0, named on standard\n"
+           "error); it must be strictly inside every halfspace (checked exactly). The dual\n"
+           "points a / -(a.c + b) are rounded once; their convex hull is exact.\n\n"
            "outputs, printed in the order given:  %s\n"
            "  s   summary (none asked: on standard output; asked: on standard error)\n"
            "  Fp  the intersection points      Fx  the non-redundant halfspaces\n"
@@ -237,7 +237,7 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
 unknown:
     fprintf(stderr, "lifthull %s: option '%s' is not supported (outputs: %s; %s, TI, TO; "
             "lifthull %s --help)\n", o->name, w, outputs[o->prog],
-            o->prog == LH_QPROG_HALF ? "also H" : "also Qu, Tv", o->name);
+            o->prog == LH_QPROG_HALF ? "also H, Fd, Tv, Ts" : "also Qu, Tv", o->name);
     return 0;
 }
 

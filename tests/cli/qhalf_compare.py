@@ -24,13 +24,14 @@ import qhull_formats as qf  # noqa: E402  (check, run, rbox, points, same_rows, 
 check, run, rbox, points, same_rows = qf.check, qf.run, qf.rbox, qf.points, qf.same_rows
 
 
-def tangent(spec, push=0, extra=()):
-    """Planes tangent to rbox's sphere of radius 0.5 at its points p: p.x - 0.25 <= 0
-    (general position); `push` of them again, moved inwards (redundant); extra rows."""
+def tangent(spec, push=0):
+    """Planes tangent to rbox's sphere of radius 0.5 at its points p: p.x - 0.25 <= 0, in
+    general position (planes a hull's facets span, as qconvex n writes them, meet only up to
+    rounding: lifthull then finds every exact vertex, Qhull merges); `push` of them again,
+    moved inwards (redundant)."""
     d, pts = points(rbox(spec))
     rows = [" ".join(repr(x) for x in p) + " " + repr(-0.25) for p in pts]
     rows += [" ".join(repr(x) for x in p) + " " + repr(-0.25 - 0.1) for p in pts[:push]]
-    rows += list(extra)
     return "%d\n%d\n" % (d + 1, len(rows)) + "\n".join(rows) + "\n"
 
 
@@ -51,14 +52,6 @@ def basics(lh):
         return sorted(tuple(sorted(int(x) for x in (r.split()[1:] if skip_count else r.split()))) for r in rows)
     def points_of(out):
         return [tuple(float(x) for x in l.split()) for l in out.strip().split("\n")[2:]]
-    def tangent(spec, push=0):
-        """Planes tangent to rbox's sphere of radius 0.5 at its points p: p.x - 0.25 <= 0,
-        in general position (planes a hull's facets span, as qconvex n writes them,
-        meet only up to rounding: lifthull then finds every exact vertex, Qhull merges)."""
-        d, pts = points(rbox(spec))
-        rows = [" ".join(repr(x) for x in p) + " " + repr(-0.25) for p in pts]
-        rows += [" ".join(repr(x) for x in p) + " " + repr(-0.25 - 0.1) for p in pts[:push]]
-        return "%d\n%d\n" % (d + 1, len(rows)) + "\n".join(rows) + "\n"
     cases = []
     for spec in ("40 s D3 t61", "30 s D2 t62", "25 s D4 t63"):
         cases.append((spec + " tangent planes", tangent(spec), ["H0"]))
@@ -106,7 +99,7 @@ def basics(lh):
     _, a, _ = run([lh, "qhalf", "Fp"], sq)
     check("qhalf square cut, the origin by default", sorted(points_of(a)) == want, a)
     shifted = "3\n3\n1 0 -1\n-1 0 2\n0 1 -1\n"  # x >= 2: the origin is outside
-    for h, text, msg in ((["Fp"], shifted, "an interior point is needed (the origin is not"),
+    for h, text, msg in ((["Fp"], shifted, "an interior point is needed: the origin is not"),
                          (["H5", "Fp"], n, "(option H) is outside halfspace"),
                          (["H0", "Fp"], "3\n2\n1 0 -1\n-1 0 -1\n", "unbounded"),
                          (["H0", "Fp"], "3\n3\n1 0 -1\n-1 0 -1\n0 1 -1\n", "unbounded"),
@@ -242,6 +235,8 @@ def hostile(lh):
     # a count of 2^30 halfspaces in a 3-line file: memory follows the input, not the count
     p = subprocess.run([lh, "qhalf", "Fp"], input="3\n1073741824\n1 0 -1\n", capture_output=True, text=True,
                        preexec_fn=limited(1024))
+    if "Sanitizer" in p.stderr:  # ASan reserves more address space than the limit: without it
+        p = subprocess.run([lh, "qhalf", "Fp"], input="3\n1073741824\n1 0 -1\n", capture_output=True, text=True)
     check("qhalf 2^30 announced, one given", p.returncode == 3 and p.stderr ==
           "<stdin>:4: expected a coefficient, found the end of the input\n", p.stderr)
     sq = "3\n4\n1 0 -1\n-1 0 -1\n0 1 -1\n0 -1 -1\n"
@@ -272,9 +267,34 @@ def hostile(lh):
     r, a, e = run([lh, "qhalf", "H0", "Fp"], "3\n3\n1e-308 1 -1\n-1e-308 1 -1\n0 -1 -1\n")
     check("qhalf vertices beyond DBL_MAX printed finite", r == 0 and "inf" not in a and
           sorted(a.split()[2:]) == sorted(["2e+308", "-1", "-0", "1", "-2e+308", "-1"]), a + e)
-    r, _, e = run([lh, "qhalf", "Fp"], "3\n3\n1 0 -1\n-1 0 2\n0 1 -1\n")
-    check("qhalf no interior point: the ways to give one", r == 2 and "option Hn,n,..." in e and
-          "prepend one to the input" in e, e)
+    for what, text in (("empty", "3\n3\n1 0 -1\n-1 0 2\n0 1 -1\n"), ("flat", "3\n3\n1 0 -1\n-1 0 1\n0 1 -1\n"),
+                       ("unbounded", "3\n2\n1 0 1\n0 1 1\n")):
+        r, _, e = run([lh, "qhalf", "Fp"], text)
+        check("qhalf no interior point (%s): the ways to give one" % what, r == 2 and e ==
+              "lifthull qhalf: an interior point is needed: the origin is not strictly inside every "
+              "halfspace and the linear program for their Chebyshev centre found no ball inside them "
+              "(their intersection may be empty, flat or unbounded): prepend a point to the input (a "
+              "line 'd 1', then its d coordinates) or give option Hn,n,...\n", e)
+
+
+def centre(lh):
+    """No interior point and the origin outside: the Chebyshev centre, then as qhalf with it."""
+    box = "3\n4\n1 0 -3\n-1 0 2\n0 1 -1\n0 -1 -5\n"  # [2,3] x [-5,1]: radius 0.5, x = 2.5
+    r, a, e = run([lh, "qhalf", "Fp"], box)
+    check("qhalf Chebyshev centre of a box", r == 0 and e.startswith(
+        "lifthull qhalf: no interior point given, the origin not inside: using the halfspaces' "
+        "Chebyshev centre H2.5,") and len(a.strip().split("\n")) == 6, e + a)
+    for spec in ("300 s D3 t66", "200 s D4 t67", "60 s D6 t68"):
+        d, pts = points(rbox(spec))
+        rows = [" ".join(repr(x) for x in p) + " " + repr(-0.25 - sum(5 * x for x in p)) for p in pts]
+        text = "%d\n%d\n" % (d + 1, len(rows)) + "\n".join(rows) + "\n"  # about (5, ..., 5)
+        r, a, e = run([lh, "qhalf", "i"], text)
+        h = e.split("centre ")[-1].strip()
+        c = [float(x) for x in h[1:].split(",")] if h.startswith("H") else []
+        check("qhalf %s centre found" % spec, r == 0 and len(c) == d and all(abs(x - 5) < 1e-6 for x in c), e)
+        _, b, _ = run(["qhalf", h, "i"], text)
+        check("qhalf %s about the centre, i as qhalf's" % spec,
+              sorted(map(sorted, keys(a))) == sorted(map(sorted, keys(b))) and keys(a), a[:80] + " / " + b[:80])
 
 
 def eight(lh):
@@ -300,7 +320,7 @@ def main():
         return 77
     lh = a.lifthull
     for name, fn in (("basics", basics), ("outputs", outputs), ("cdd", cdd), ("hostile", hostile),
-                     ("8-d", eight)):
+                     ("8-d", eight), ("centre", centre)):
         qf.guard(name, fn, lh)
     print("%d passed, %d failed" % (qf.PASSES[0], len(qf.FAILS)))
     return 1 if qf.FAILS else 0
