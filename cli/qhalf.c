@@ -573,19 +573,15 @@ static int print_all(FILE *out, const lh_cli_qopts *o, const halfspaces *hs, con
                      const char *name)
 {
     lh_cli_qmodel mo;
+    lh_cli_qopts oc = *o; /* the dual points' hull through qconvex's printers */
+    oc.prog = LH_QPROG_CONVEX;
+    oc.verify = 0;
     int model = 0, ok = 1;
     for (int i = 0; i < o->nout; i++) model |= dual_output(o->out[i]);
-    if (model) { /* the dual points' hull through qconvex's printers (every facet a simplex) */
-        lh_cli_qopts oc = *o;
-        oc.prog = LH_QPROG_CONVEX;
-        oc.verify = 0;
-        if (!lh_cli_qmodel_build(&mo, &oc, hs->d, hs->n, r->dual, name)) return 0;
-    }
+    if (model && !lh_cli_qmodel_build(&mo, &oc, hs->d, hs->n, r->dual, name)) return 0;
     for (int i = 0; ok && i < o->nout; i++) {
         FILE *f = !strcmp(o->out[i], "s") && !o->summary_default ? stderr : out;
         if (dual_output(o->out[i])) {
-            lh_cli_qopts oc = *o;
-            oc.prog = LH_QPROG_CONVEX;
             ok = lh_cli_qprint(f, &oc, &mo, o->out[i]);
             if (!ok) fprintf(stderr, "lifthull qhalf: out of memory\n");
         } else {
