@@ -7,15 +7,19 @@
  * dual points' convex hull, and each hull facet n.p + off = 0 is a vertex
  * x = c + n / -off of the intersection, tight on the facet's halfspaces.
  *
- * Precision: each dual coordinate is rounded once; their hull, and which hull facets
- * lie on one hyperplane (merged into one intersection point, as Qhull merges them),
- * are exact for those rounded points; each intersection point is computed from its
+ * Precision: s_i is a.c + b in twice the precision, rounded (dot2), each dual
+ * coordinate one more rounding; their hull, and which hull facets lie on one
+ * hyperplane (merged into one intersection point, as Qhull merges them), are exact
+ * for those rounded points; each intersection point is computed from its
  * halfspaces' own coefficients (tight_point): a few ulps from the exact point.
  * The interior point comes from option Hn,n,..., the input's first point, or is the
- * origin when that is strictly inside every halfspace (Qhull requires one).
+ * origin when that is strictly inside every halfspace, or else the halfspaces'
+ * Chebyshev centre (qhalf_lp.c; Qhull requires one); whichever, it is checked to be
+ * strictly inside every halfspace exactly (inside_sign) before it is used.
  */
 #include "cli.h"
 #include "outfile.h"
+#include "qhalf.h"
 #include "qhull.h"
 #include "qhull_print.h"
 #include "qhull_sides.h"
@@ -26,13 +30,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct halfspaces {
-    int d;        /* dimension of the space: d + 1 coefficients per halfspace */
-    size_t n;
-    double *h;    /* n * (d + 1): a_i, then b_i                              */
-    double c[LH_DELAUNAY_MAX_DIM];
-    int has_c;    /* from the input's first point                            */
-} halfspaces;
+typedef lh_cli_halfspaces halfspaces;
+typedef lh_cli_hresult result;
 
 /* A token reader over the whole input with line numbers. */
 typedef struct scan {
@@ -69,9 +68,16 @@ static long whole(double v)
 }
 
 /* A header line: an integer, then either a second integer on the same line or a
- * comment (then the count is the next number, on a later line). */
-static int header(scan *t, long *dim, long *count)
+ * comment (then the count is the next number, on a later line). Lines before it
+ * that start with a character no number starts with are comments, as Qhull's
+ * (qconvex FQ writes one). */
+static int header(scan *t, long *dim, long *count, char *comment, size_t size)
 {
+    for (skip_blank(t, 1); *t->s && !isdigit((unsigned char)*t->s) && !strchr("+-.", *t->s); skip_blank(t, 1)) {
+        size_t k = strcspn(t->s, "\r\n");
+        if (comment && !*comment) snprintf(comment, size, "%.*s", (int)(k < size ? k : size - 1), t->s);
+        t->s += k;
+    }
     double v;
     if (!number(t, &v, "a dimension")) return 0;
     *dim = whole(v);
@@ -106,7 +112,75 @@ static char *slurp(FILE *f, size_t *len)
     return b;
 }
 
-static int read_halfspaces(const char *file, halfspaces *hs, const char **name)
+/* Appends the coefficients of halfspace hs->n (d + 1 numbers, from the current
+ * position), growing the arrays as they fill: memory follows what the input holds,
+ * never a count it announces. cdd: cdd's row b' a' (b' + a'.x >= 0), stored as
+ * Qhull's -a', -b'. 0 after printing the problem. */
+static int append(scan *t, halfspaces *hs, size_t *cap, int cdd)
+{
+    const size_t D = (size_t)hs->d + 1;
+    if (hs->n == *cap) {
+        size_t c = *cap ? 2 * *cap : 256;
+        double *h = realloc(hs->h, c * D * sizeof *h);
+        if (h) hs->h = h;
+        size_t *l = h ? realloc(hs->line, c * sizeof *l) : NULL;
+        if (l) hs->line = l;
+        if (!h || !l) {
+            fprintf(stderr, "%s: out of memory\n", t->name);
+            return 0;
+        }
+        *cap = c;
+    }
+    double *row = hs->h + hs->n * D;
+    for (size_t j = 0; j < D; j++) {
+        if (!number(t, &row[j], "a coefficient")) return 0;
+        if (j == 0) hs->line[hs->n] = t->line;
+    }
+    if (cdd) {
+        double b = row[0];
+        for (size_t j = 0; j + 1 < D; j++) row[j] = -row[j + 1];
+        row[D - 1] = -b;
+    }
+    hs->n++;
+    return 1;
+}
+
+/* The next word (letters up to a blank), lower case, in w (at most 15 characters). */
+static void next_word(scan *t, char *w)
+{
+    skip_blank(t, 1);
+    size_t k = 0;
+    for (; *t->s && !isspace((unsigned char)*t->s); t->s++)
+        if (k < 15) w[k++] = (char)tolower((unsigned char)*t->s);
+    w[k] = 0;
+}
+
+/* cdd's H-representation (Qhull's Fd): lines up to "begin", "m d+1 real" (or
+ * integer), m rows, "end". */
+static int cdd_header(scan *t, long *dim, long *count)
+{
+    char w[16] = "";
+    while (*t->s && strcmp(w, "begin")) next_word(t, w);
+    if (strcmp(w, "begin")) {
+        fprintf(stderr, "%s:%zu: expected cdd's 'begin' line (option Fd), found the end of the "
+                "input\n", t->name, t->line);
+        return 0;
+    }
+    double c, dd;
+    if (!number(t, &c, "the number of halfspaces") || !number(t, &dd, "the number of columns"))
+        return 0;
+    next_word(t, w);
+    if (strcmp(w, "real") && strcmp(w, "integer")) {
+        fprintf(stderr, "%s:%zu: expected cdd's number type 'real' or 'integer', found '%s'\n",
+                t->name, t->line, w);
+        return 0;
+    }
+    *count = whole(c);
+    *dim = whole(dd);
+    return 1;
+}
+
+static int read_halfspaces(const char *file, int cdd, halfspaces *hs, const char **name)
 {
     FILE *f = stdin;
     *name = "<stdin>";
@@ -125,12 +199,12 @@ static int read_halfspaces(const char *file, halfspaces *hs, const char **name)
     }
     scan t = {text, *name, 1};
     long dim, count;
-    int ok = header(&t, &dim, &count);
-    if (ok && count == 1 && dim >= 2 && dim <= LH_DELAUNAY_MAX_DIM) { /* the interior point */
+    int ok = cdd ? cdd_header(&t, &dim, &count) : header(&t, &dim, &count, hs->comment, sizeof hs->comment);
+    if (!cdd && ok && count == 1 && dim >= 2 && dim <= LH_DELAUNAY_MAX_DIM) { /* the interior point */
         long cdim = dim;
         hs->has_c = 1;
         for (long j = 0; ok && j < dim; j++) ok = number(&t, &hs->c[j], "a coordinate of the interior point");
-        if (ok) ok = header(&t, &dim, &count);
+        if (ok) ok = header(&t, &dim, &count, NULL, 0);
         if (ok && dim != cdim + 1) {
             fprintf(stderr, "%s:%zu: the interior point has %ld coordinates, so the halfspaces need "
                     "%ld coefficients, not %ld\n", *name, t.line, cdim, cdim + 1, dim);
@@ -143,17 +217,21 @@ static int read_halfspaces(const char *file, halfspaces *hs, const char **name)
                 LH_DELAUNAY_MAX_DIM, dim, count);
         ok = 0;
     }
-    if (ok) {
-        hs->d = (int)dim - 1;
-        hs->n = (size_t)count;
-        hs->h = malloc(hs->n * (size_t)dim * sizeof *hs->h);
-        if (!hs->h) fprintf(stderr, "%s: out of memory\n", *name);
-        ok = hs->h != NULL;
+    hs->d = (int)dim - 1;
+    size_t cap = 0;
+    while (ok && hs->n < (size_t)count) ok = append(&t, hs, &cap, cdd);
+    if (ok && cdd) {
+        char w[16];
+        next_word(&t, w);
+        if (strcmp(w, "end")) {
+            fprintf(stderr, "%s:%zu: expected cdd's 'end' after the %zu halfspaces announced\n",
+                    *name, t.line, hs->n);
+            ok = 0;
+        }
     }
-    for (size_t i = 0; ok && i < hs->n * (size_t)dim; i++) ok = number(&t, &hs->h[i], "a coefficient");
     if (ok) {
         skip_blank(&t, 1);
-        if (*t.s) {
+        if (*t.s && !cdd) {
             fprintf(stderr, "%s:%zu: more than the %zu halfspaces announced\n", *name, t.line, hs->n);
             ok = 0;
         }
@@ -161,16 +239,6 @@ static int read_halfspaces(const char *file, halfspaces *hs, const char **name)
     free(text);
     return ok;
 }
-
-/* The intersection's vertices: groups of dual hull facets on one hyperplane. */
-typedef struct result {
-    lh_hull *hull;
-    double *dual;       /* n * d                                     */
-    size_t groups;
-    lh_index *group_of; /* per hull facet: its group                */
-    double *point;      /* groups * d: the intersection points        */
-    lh_index *off, *idx; /* group g's halfspaces: idx[off[g]..off[g+1]) */
-} result;
 
 static int increasing(const void *a, const void *b)
 {
@@ -185,21 +253,18 @@ static lh_index find(lh_index *up, lh_index x)
 }
 
 /* Merges neighbouring facets whose hyperplanes coincide (exact orient_d = 0 of one
- * facet with the other's opposite vertex). */
-static int merge_coplanar(const halfspaces *hs, result *r, lh_pred *pred, lh_index *up)
+ * facet with the other's opposite vertex); keeps the facets' neighbours in r->nbr. */
+static int merge_coplanar(const halfspaces *hs, result *r, lh_index *up)
 {
     const int d = hs->d;
     const size_t m = lh_hull_facet_count(r->hull);
     const lh_index *v = lh_hull_facets(r->hull);
-    lh_index *nbr = malloc((m ? m : 1) * d * sizeof *nbr);
-    if (!nbr || !lh_cli_pair_within(d, m, v, nbr)) {
-        free(nbr);
-        return 0;
-    }
+    r->nbr = malloc((m ? m : 1) * d * sizeof *r->nbr);
+    if (!r->nbr || !lh_cli_pair_within(d, m, v, r->nbr)) return 0;
     for (size_t f = 0; f < m; f++) up[f] = (lh_index)f;
     for (size_t f = 0; f < m; f++)
         for (int k = 0; k < d; k++) {
-            lh_index g = nbr[f * d + k];
+            lh_index g = r->nbr[f * d + k];
             if (g < 0 || (size_t)g < f) continue;
             const double *p[LH_DELAUNAY_MAX_DIM + 1];
             for (int j = 0; j < d; j++) p[j] = r->dual + (size_t)v[f * d + j] * d;
@@ -209,9 +274,8 @@ static int merge_coplanar(const halfspaces *hs, result *r, lh_pred *pred, lh_ind
                 for (int i = 0; i < d; i++) in |= v[f * d + i] == w;
                 if (!in) p[d] = r->dual + (size_t)w * d;
             }
-            if (lh_orient(pred, d, p) == 0) up[find(up, (lh_index)f)] = find(up, g);
+            if (lh_orient(r->pred, d, p) == 0) up[find(up, (lh_index)f)] = find(up, g);
         }
-    free(nbr);
     return 1;
 }
 
@@ -219,9 +283,10 @@ static int merge_coplanar(const halfspaces *hs, result *r, lh_pred *pred, lh_ind
  * (t x, t) spans the null space of the rows (a_i, b_i), i.e. is the normal of the
  * hyperplane of R^(d+1) through them and the origin (lh_hyperplane: exact cofactors,
  * each rounded once), so x is within a few ulps of the exact intersection, and
- * exact when its coordinates are simple ratios of the coefficients. 0 when
- * d + 1 > LH_ORIENT_MAX_DIM (then the dual facet's plane gives x). */
-static int tight_point(const halfspaces *hs, lh_pred *pred, const lh_index *v, double *x)
+ * exact when its coordinates are simple ratios of the coefficients. x = m 2^e with
+ * each m_j = n_j / (n_d 2^-e) rounded once, |m_j| <= 2: finite wherever x passes
+ * DBL_MAX. 0 when d + 1 > LH_ORIENT_MAX_DIM (then the dual facet's plane gives x). */
+static int tight_point(const halfspaces *hs, lh_pred *pred, const lh_index *v, double *m, int *e)
 {
     const int d = hs->d, D = d + 1;
     if (D > LH_ORIENT_MAX_DIM) return 0;
@@ -230,13 +295,46 @@ static int tight_point(const halfspaces *hs, lh_pred *pred, const lh_index *v, d
     for (int i = 0; i < d; i++) p[i + 1] = hs->h + (size_t)v[i] * D;
     double n[LH_DELAUNAY_MAX_DIM + 1], off;
     if (!lh_hyperplane(pred, D, p, n, &off) || n[d] == 0) return 0;
-    for (int j = 0; j < d; j++) x[j] = n[j] / n[d];
+    int k;
+    double top = frexp(n[d], &k); /* n_d = top 2^k, |top| in [0.5, 1) */
+    for (int j = 0; j < d; j++) m[j] = n[j] / top;
+    *e = -k;
+    if (*e < 900) { /* an ordinary point: plain doubles (2^e m exact, finite) */
+        for (int j = 0; j < d; j++) m[j] = ldexp(m[j], *e);
+        *e = 0;
+    }
     return 1;
+}
+
+/* The same from the dual facet's hyperplane n.y + o = 0 (n outward, o < 0):
+ * x = c + n / -o, as m 2^e with m_j = c_j 2^-e + (n_j / -o) 2^-e, 2^e at least the
+ * largest |c_j| and 1 / |o|: one rounding per coordinate, finite everywhere. */
+static void dual_point(const halfspaces *hs, const result *r, const lh_index *v, double *m, int *e)
+{
+    const int d = hs->d;
+    const double *p[LH_DELAUNAY_MAX_DIM];
+    for (int j = 0; j < d; j++) p[j] = r->dual + (size_t)v[j] * d;
+    double n[LH_DELAUNAY_MAX_DIM], om;
+    int oe, ce = 0;
+    lh_hyperplane_exp(r->pred, d, p, n, &om, &oe);
+    double sign = om > 0 ? -1 : 1; /* outward: the duals' origin inside, n.0 + o < 0 */
+    for (int j = 0; j < d; j++) {
+        int k;
+        frexp(hs->c[j], &k);
+        if (hs->c[j] != 0 && k > ce) ce = k;
+    }
+    *e = ce > 1 - oe ? ce : 1 - oe;
+    for (int j = 0; j < d; j++)
+        m[j] = ldexp(hs->c[j], -*e) + ldexp((sign * n[j]) / -(sign * om), -oe - *e);
+    if (*e < 900) {
+        for (int j = 0; j < d; j++) m[j] = ldexp(m[j], *e);
+        *e = 0;
+    }
 }
 
 /* Groups (the facets' classes, in the order of their first facet), their points and
  * their halfspaces (increasing). */
-static int collect(const halfspaces *hs, result *r, lh_pred *pred, lh_index *up)
+static int collect(const halfspaces *hs, result *r, lh_index *up)
 {
     const int d = hs->d;
     const size_t m = lh_hull_facet_count(r->hull);
@@ -244,11 +342,15 @@ static int collect(const halfspaces *hs, result *r, lh_pred *pred, lh_index *up)
     lh_index *first = malloc((m ? m : 1) * sizeof *first); /* facets by group */
     lh_index *start = calloc(m + 1, sizeof *start);
     r->group_of = malloc((m ? m : 1) * sizeof *r->group_of);
+    r->facets = malloc((m ? m : 1) * sizeof *r->facets);
+    r->first = malloc((m ? m : 1) * sizeof *r->first);
     r->point = malloc((m ? m : 1) * d * sizeof *r->point);
+    r->exp = malloc((m ? m : 1) * sizeof *r->exp);
     r->off = calloc(m + 1, sizeof *r->off);
     r->idx = malloc((m ? m : 1) * d * sizeof *r->idx);
     lh_index *mark = malloc((hs->n ? hs->n : 1) * sizeof *mark);
-    int ok = first && start && r->group_of && r->point && r->off && r->idx && mark;
+    int ok = first && start && r->group_of && r->facets && r->first && r->point && r->exp && r->off &&
+             r->idx && mark;
     r->groups = 0;
     for (size_t f = 0; ok && f < m; f++) /* number the groups by their first facet */
         r->group_of[f] = find(up, (lh_index)f) == (lh_index)f ? (lh_index)r->groups++ : -1;
@@ -263,14 +365,10 @@ static int collect(const halfspaces *hs, result *r, lh_pred *pred, lh_index *up)
     for (size_t i = 0; ok && i < hs->n; i++) mark[i] = -1;
     for (size_t g = 0; ok && g < r->groups; g++) {
         size_t f = (size_t)first[start[g]];
-        const double *p[LH_DELAUNAY_MAX_DIM];
-        for (int j = 0; j < d; j++) p[j] = r->dual + (size_t)v[f * d + j] * d;
-        if (!tight_point(hs, pred, v + f * d, r->point + g * d)) {
-            double n[LH_DELAUNAY_MAX_DIM], o;
-            lh_hyperplane(pred, d, p, n, &o);
-            double sign = o > 0 ? -1 : 1; /* outward: n.0 + o < 0, the interior point inside */
-            for (int j = 0; j < d; j++) r->point[g * d + j] = hs->c[j] + (sign * n[j]) / -(sign * o);
-        }
+        r->first[g] = (lh_index)f;
+        r->facets[g] = start[g + 1] - start[g];
+        if (!tight_point(hs, r->pred, v + f * d, r->point + g * d, &r->exp[g]))
+            dual_point(hs, r, v + f * d, r->point + g * d, &r->exp[g]);
         size_t c = (size_t)r->off[g], from = c;
         for (lh_index e = start[g]; e < start[g + 1]; e++)
             for (int j = 0; j < d; j++) {
@@ -289,39 +387,109 @@ static int collect(const halfspaces *hs, result *r, lh_pred *pred, lh_index *up)
 static void result_free(result *r)
 {
     lh_hull_free(r->hull);
+    lh_pred_free(r->pred);
     free(r->dual);
+    free(r->nbr);
     free(r->group_of);
+    free(r->facets);
+    free(r->first);
     free(r->point);
+    free(r->exp);
     free(r->off);
     free(r->idx);
 }
 
+/* The exact sign of a.c + b for halfspace i: the determinant of the rows (a, b) and
+ * (e_j, -c_j), j = 1..d, is (-1)^d (a.c + b) (add c_j times column j to the last
+ * one), an orient_(d+1) of those rows about the origin; its sign convention is
+ * taken from the same rows with (a, b) = (0, 1). 2 when d + 1 > LH_ORIENT_MAX_DIM. */
+static int inside_sign(const halfspaces *hs, lh_pred *pred, size_t i)
+{
+    const int d = hs->d, D = d + 1;
+    if (D > LH_ORIENT_MAX_DIM) return 2;
+    double rows[LH_DELAUNAY_MAX_DIM + 1][LH_DELAUNAY_MAX_DIM + 1] = {{0}};
+    const double origin[LH_DELAUNAY_MAX_DIM + 1] = {0};
+    const double *p[LH_DELAUNAY_MAX_DIM + 2] = {origin};
+    for (int j = 0; j < d; j++) {
+        rows[j + 1][j] = 1;
+        rows[j + 1][d] = -hs->c[j];
+    }
+    rows[0][d] = 1;
+    for (int j = 0; j <= d; j++) p[j + 1] = rows[j];
+    int unit = lh_orient(pred, D, p); /* the sign of (-1)^d * 1 */
+    memcpy(rows[0], hs->h + i * D, D * sizeof rows[0][0]);
+    return unit * lh_orient(pred, D, p);
+}
+
+/* a.c + b as if computed in twice the working precision, then rounded (Dot2: Ogita,
+ * Rump and Oishi, "Accurate sum and dot product", SIAM J. Sci. Comput. 26, 2005):
+ * error-free products (fma) and sums (TwoSum). +-inf where a term or the sum passes
+ * DBL_MAX (the plain sum then). */
+static double dot2(const double *a, const double *c, int d)
+{
+    double s = a[d], e = 0, plain = a[d];
+    for (int j = 0; j < d; j++) {
+        double p = a[j] * c[j], ep = fma(a[j], c[j], -p);
+        double t = s + p, z = t - s;
+        e += ep + ((s - (t - z)) + (p - z));
+        s = t;
+        plain += p;
+    }
+    return isfinite(s + e) ? s + e : plain;
+}
+
+/* Halfspace i's dual point a / -(a.c + b); 0 after saying why there is none. */
+static int dual_of(const halfspaces *hs, result *r, size_t i, const char *name, const char *from)
+{
+    const int d = hs->d;
+    const double *a = hs->h + i * (d + 1);
+    double s = -dot2(a, hs->c, d);
+    int sign = inside_sign(hs, r->pred, i);
+    if (sign == 2) sign = s > 0 ? -1 : s < 0 ? 1 : 0; /* 8-d: the rounded value */
+    const char *where = sign > 0 ? "outside" : sign == 0 ? "on the boundary of" : NULL;
+    if (where) {
+        char v[40] = "> DBL_MAX";
+        if (sign == 0) snprintf(v, sizeof v, "= 0%s", d + 1 <= LH_ORIENT_MAX_DIM ? " exactly" : "");
+        else if (isfinite(s)) snprintf(v, sizeof v, "= %.17g", -s);
+        fprintf(stderr, "%s:%zu: the interior point (%s) is %s halfspace %zu (a.c + b %s): it "
+                "must be strictly inside every halfspace\n", name, hs->line[i], from, where, i, v);
+        return 0;
+    }
+    int finite = s > 0 && isfinite(s);
+    for (int j = 0; finite && j < d; j++) finite = isfinite(r->dual[i * d + j] = a[j] / s);
+    if (!finite) {
+        char v[40] = "|a.c + b| > DBL_MAX: too far from it";
+        if (isfinite(s)) snprintf(v, sizeof v, "a.c + b = %.17g", -s);
+        fprintf(stderr, "%s:%zu: the interior point (%s) is strictly inside halfspace %zu, but %s%s, "
+                "so its dual point a / -(a.c + b) is not a finite double; choose a point %s\n", name,
+                hs->line[i], from, i, v, isfinite(s) ? ": too near its boundary" : "",
+                isfinite(s) ? "further inside" : "nearer to it");
+        return 0;
+    }
+    return 1;
+}
+
 /* The dual points, their hull, its facets grouped by hyperplane. 0 after printing
- * the problem. */
-static int compute(const halfspaces *hs, const lh_cli_qopts *o, const char *name, result *r,
-                   double *seconds)
+ * the problem (exit status in *status). */
+static int compute(const halfspaces *hs, const lh_cli_qopts *o, const char *name, const char *from,
+                   result *r, int *status)
 {
     const int d = hs->d;
     memset(r, 0, sizeof *r);
+    *status = LH_EXIT_FAIL;
     r->dual = malloc(hs->n * d * sizeof *r->dual);
-    if (!r->dual) {
+    if (!r->dual || lh_pred_create(NULL, &r->pred) != LH_OK) {
         fprintf(stderr, "%s: out of memory\n", name);
         return 0;
     }
-    for (size_t i = 0; i < hs->n; i++) {
-        const double *a = hs->h + i * (d + 1);
-        double s = -a[d];
-        for (int j = 0; j < d; j++) s -= a[j] * hs->c[j];
-        if (!(s > 0)) {
-            fprintf(stderr, "lifthull %s: the interior point is not strictly inside halfspace %zu "
-                    "(a.c + b = %g, must be < 0)\n", o->name, i, -s);
+    for (size_t i = 0; i < hs->n; i++)
+        if (!dual_of(hs, r, i, name, from)) {
+            *status = LH_EXIT_INPUT;
             return 0;
         }
-        for (int j = 0; j < d; j++) r->dual[i * d + j] = a[j] / s;
-    }
     double t0 = lh_cli_seconds();
     lh_status st = lh_convex_hull(d, hs->n, r->dual, NULL, &r->hull);
-    *seconds = lh_cli_seconds() - t0;
+    r->seconds = lh_cli_seconds() - t0;
     if (st == LH_ERR_DEGENERATE) {
         fprintf(stderr, "lifthull %s: the halfspaces' normals span less than R^%d: their "
                 "intersection is unbounded\n", o->name, d);
@@ -331,61 +499,24 @@ static int compute(const halfspaces *hs, const lh_cli_qopts *o, const char *name
         fprintf(stderr, "%s: %s\n", name, lh_status_message(st));
         return 0;
     }
-    lh_pred *pred = NULL;
     const size_t m = lh_hull_facet_count(r->hull);
-    lh_index *up = malloc((m ? m : 1) * sizeof *up);
-    int ok = up && lh_pred_create(NULL, &pred) == LH_OK;
     /* bounded: the interior point (the duals' origin) strictly inside every facet */
     const double zero[LH_DELAUNAY_MAX_DIM] = {0};
-    for (size_t f = 0; ok && f < m; f++) {
+    for (size_t f = 0; f < m; f++) {
         const double *p[LH_DELAUNAY_MAX_DIM + 1];
         for (int j = 0; j < d; j++) p[j] = r->dual + (size_t)lh_hull_facets(r->hull)[f * d + j] * d;
         p[d] = zero;
-        if (lh_orient(pred, d, p) >= 0) {
+        if (lh_orient(r->pred, d, p) >= 0) {
             fprintf(stderr, "lifthull %s: the intersection is unbounded (no halfspace bounds it "
                     "in some direction)\n", o->name);
-            lh_pred_free(pred);
-            free(up);
             return 0;
         }
     }
-    ok = ok && merge_coplanar(hs, r, pred, up) && collect(hs, r, pred, up);
+    lh_index *up = malloc((m ? m : 1) * sizeof *up);
+    int ok = up && merge_coplanar(hs, r, up) && collect(hs, r, up);
     if (!ok) fprintf(stderr, "%s: out of memory\n", name);
-    lh_pred_free(pred);
     free(up);
     return ok;
-}
-
-static void print_half(FILE *f, const lh_cli_qopts *o, const halfspaces *hs, const result *r,
-                       const char *opt, double seconds)
-{
-    const int d = hs->d;
-    if (!strcmp(opt, "Fp")) {
-        fprintf(f, "%d\n%zu\n", d, r->groups);
-        for (size_t g = 0; g < r->groups; g++) {
-            lh_cli_qcoords(f, r->point + g * d, d);
-            fputc('\n', f);
-        }
-    } else if (!strcmp(opt, "i") || !strcmp(opt, "Fv")) {
-        fprintf(f, "%zu\n", r->groups);
-        for (size_t g = 0; g < r->groups; g++) {
-            if (opt[0] == 'F') fprintf(f, "%" LH_INDEX_PRI, r->off[g + 1] - r->off[g]);
-            for (lh_index k = r->off[g]; k < r->off[g + 1]; k++)
-                fprintf(f, opt[0] == 'F' ? " %" LH_INDEX_PRI : "%" LH_INDEX_PRI " ", r->idx[k]);
-            fputc('\n', f);
-        }
-    } else if (!strcmp(opt, "Fx")) {
-        size_t nv = lh_hull_vertex_count(r->hull);
-        fprintf(f, "%zu\n", nv);
-        for (size_t i = 0; i < nv; i++) fprintf(f, "%" LH_INDEX_PRI "\n", lh_hull_vertices(r->hull)[i]);
-    } else { /* s */
-        fprintf(f, "\nHalfspace intersection by the convex hull of %zu points in %d-d:\n\n"
-                   "  Number of halfspaces: %zu\n  Number of non-redundant halfspaces: %zu\n"
-                   "  Number of intersection points: %zu\n\nStatistics for: %s\n\n"
-                   "  Exact arithmetic on the dual points (each rounded once)\n"
-                   "  CPU seconds to compute the hull: %.3g\n\n",
-                hs->n, d, hs->n, lh_hull_vertex_count(r->hull), r->groups, o->command, seconds);
-    }
 }
 
 /* Without H or a point in the input, the origin serves when it is strictly inside
@@ -398,6 +529,69 @@ static int origin_inside(halfspaces *hs)
     return 1;
 }
 
+/* Whether an output prints the dual hull (qconvex's printers). */
+static int dual_output(const char *w)
+{
+    static const char *const words[] = {"o", "G", "m", "FM", "f", "FF"};
+    for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
+        if (!strcmp(w, words[i])) return 1;
+    return 0;
+}
+
+/* The interior point: option H, the input's, or the origin; 0 after the message. */
+static int interior_point(const lh_cli_qopts *o, halfspaces *hs, const char **from)
+{
+    if (o->ninterior) {
+        if (o->ninterior > hs->d) {
+            fprintf(stderr, "lifthull qhalf: option 'H' gives %d coordinates for %d-d halfspaces\n",
+                    o->ninterior, hs->d);
+            return 0;
+        }
+        for (int j = 0; j < hs->d; j++) hs->c[j] = j < o->ninterior ? o->interior[j] : 0;
+        *from = "option H";
+        return 1;
+    }
+    *from = hs->has_c ? "the input's first point" : "the origin";
+    if (hs->has_c || origin_inside(hs)) return 1;
+    *from = "the Chebyshev centre";
+    if (lh_cli_qhalf_centre(hs, hs->c)) {
+        fprintf(stderr, "lifthull qhalf: no interior point given, the origin not inside: using the "
+                "halfspaces' Chebyshev centre H");
+        for (int j = 0; j < hs->d; j++) fprintf(stderr, "%s%.17g", j ? "," : "", hs->c[j]);
+        fputc('\n', stderr);
+        return 1;
+    }
+    fprintf(stderr, "lifthull qhalf: an interior point is needed: the origin is not strictly "
+            "inside every halfspace and the linear program for their Chebyshev centre found no "
+            "ball inside them (their intersection may be empty, flat or unbounded): prepend a "
+            "point to the input (a line 'd 1', then its d coordinates) or give option Hn,n,...\n");
+    return 0;
+}
+
+/* Prints every output asked for; 0 after a message. */
+static int print_all(FILE *out, const lh_cli_qopts *o, const halfspaces *hs, const result *r,
+                     const char *name)
+{
+    lh_cli_qmodel mo;
+    lh_cli_qopts oc = *o; /* the dual points' hull through qconvex's printers */
+    oc.prog = LH_QPROG_CONVEX;
+    oc.verify = 0;
+    int model = 0, ok = 1;
+    for (int i = 0; i < o->nout; i++) model |= dual_output(o->out[i]);
+    if (model && !lh_cli_qmodel_build(&mo, &oc, hs->d, hs->n, r->dual, name)) return 0;
+    for (int i = 0; ok && i < o->nout; i++) {
+        FILE *f = !strcmp(o->out[i], "s") && !o->summary_default ? stderr : out;
+        if (dual_output(o->out[i])) {
+            ok = lh_cli_qprint(f, &oc, &mo, o->out[i]);
+            if (!ok) fprintf(stderr, "lifthull qhalf: out of memory\n");
+        } else {
+            ok = lh_cli_qhalf_print(f, o, hs, r, o->out[i]);
+        }
+    }
+    if (model) lh_cli_qmodel_free(&mo);
+    return ok;
+}
+
 int lh_cli_qhalf(int argc, char **argv)
 {
     lh_cli_qopts o;
@@ -405,41 +599,44 @@ int lh_cli_qhalf(int argc, char **argv)
     if (rc != 0) return rc > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     if (!lh_cli_out_check(o.name, o.output, 1, o.input)) return LH_EXIT_FAIL; /* before the input */
     halfspaces hs = {0};
-    const char *name;
-    if (!read_halfspaces(o.input, &hs, &name)) {
+    const char *name, *from;
+    if (!read_halfspaces(o.input, o.cdd, &hs, &name)) {
         free(hs.h);
+        free(hs.line);
         return LH_EXIT_INPUT;
     }
-    if (o.ninterior) {
-        if (o.ninterior > hs.d) {
-            fprintf(stderr, "lifthull qhalf: option 'H' gives %d coordinates for %d-d halfspaces\n",
-                    o.ninterior, hs.d);
-            free(hs.h);
-            return LH_EXIT_USAGE;
-        }
-        for (int j = 0; j < hs.d; j++) hs.c[j] = j < o.ninterior ? o.interior[j] : 0;
-    } else if (!hs.has_c && !origin_inside(&hs)) {
-        fprintf(stderr, "lifthull qhalf: an interior point is needed (the origin is not strictly "
-                "inside every halfspace): prepend one to the input (a line 'd 1', then its d "
-                "coordinates) or give option Hn,n,...\n");
+    if (hs.comment[0]) { /* Qhull's FQ, s and G name the input's comment first */
+        char cmd[sizeof o.command + sizeof hs.comment + 4];
+        snprintf(cmd, sizeof cmd, "%s | %s", hs.comment, o.command);
+        memcpy(o.command, cmd, sizeof o.command - 1); /* cut to the buffer */
+        o.command[sizeof o.command - 1] = 0;
+    }
+    lh_cli_qopts oc = o;
+    oc.prog = LH_QPROG_CONVEX;
+    if (!interior_point(&o, &hs, &from) || !lh_cli_qcheck_outputs(&oc, hs.d)) {
         free(hs.h);
+        free(hs.line);
         return LH_EXIT_USAGE;
     }
     result r;
-    double seconds = 0;
-    if (!compute(&hs, &o, name, &r, &seconds)) {
+    int status;
+    if (!compute(&hs, &o, name, from, &r, &status) || (o.verify && !lh_cli_qhalf_verify(&o, &hs, &r))) {
         result_free(&r);
         free(hs.h);
-        return LH_EXIT_FAIL;
+        free(hs.line);
+        return status;
     }
     if (o.show_options) fprintf(stderr, "Options selected for %s\n", o.command);
     lh_cli_out out;
-    int ok = lh_cli_out_open(&out, o.name, o.output, 1, o.input);
-    for (int i = 0; ok && i < o.nout; i++)
-        print_half(!strcmp(o.out[i], "s") && !o.summary_default ? stderr : out.f, &o, &hs, &r,
-                   o.out[i], seconds);
-    int status = out.f ? lh_cli_out_close(&out, o.name, ok) : LH_EXIT_FAIL;
+    int ok = lh_cli_out_open(&out, o.name, o.output, 1, o.input) && print_all(out.f, &o, &hs, &r, name);
+    if (ok && o.stats)
+        fprintf(stderr, "\nlifthull statistics: %s\n\n%10zu halfspaces in %d-d\n%10zu non-redundant "
+                "(vertices of the dual hull)\n%10zu facets of the dual hull\n%10zu intersection points\n"
+                "%10.3g CPU seconds for the dual hull\n\n", o.command, hs.n, hs.d,
+                lh_hull_vertex_count(r.hull), lh_hull_facet_count(r.hull), r.groups, r.seconds);
+    int status2 = out.f ? lh_cli_out_close(&out, o.name, ok) : LH_EXIT_FAIL;
     result_free(&r);
     free(hs.h);
-    return status;
+    free(hs.line);
+    return status2;
 }

@@ -22,7 +22,7 @@ typedef struct lh_cli_qopts {
     int nout;
     int furthest;             /* Qu                                            */
     int areas;                /* FA or FS: totals in the summary 's'           */
-    int cdd;                  /* FD: cdd's format for n, Fi, Fo, p             */
+    int cdd;                  /* FD: cdd's format for n, Fi, Fo, p (qhalf: Fd, in) */
     int show_options;         /* FO: the options on standard error             */
     int stats;                /* Ts: statistics on standard error              */
     double interior[LH_DELAUNAY_MAX_DIM]; /* qhalf's Hn,n,...                  */

@@ -12,7 +12,7 @@ static const char *const outputs[4] = {
     "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
     "o p s i Fi Fo Fv Fn FN Fs Fx",
     "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
-    "s i Fp Fx Fv",
+    "s i o p Fp Fx Fv Fn FN FI Fm Fc FP Fs FQ G m FM f FF",
 };
 
 /* Qhull options that change nothing here, with why. */
@@ -56,14 +56,24 @@ static void help_half(void)
            "Qhull's qhalf: the intersection of halfspaces a.x + b <= 0, given as Qhull's\n"
            "input (d+1, count, then a_1 .. a_d b per line; qconvex n writes them), about\n"
            "an interior point: option Hn,n,... (missing coordinates 0), the input's first\n"
-           "lines 'd 1' and the point, or else the origin if every b < 0. The dual points\n"
-           "a / -(a.c + b) are rounded once; their convex hull is exact.\n\n"
+           "lines 'd 1' and the point, the origin if every b < 0, or else the halfspaces'\n"
+           "Chebyshev centre (max t: a_i.x + |a_i| t + b_i <= 0, named on standard\n"
+           "error); it must be strictly inside every halfspace (checked exactly). The dual\n"
+           "points a / -(a.c + b) are rounded once; their convex hull is exact.\n\n"
            "outputs, printed in the order given:  %s\n"
            "  s   summary (none asked: on standard output; asked: on standard error)\n"
-           "  i   the halfspaces through each intersection point (Fv: with counts)\n"
            "  Fp  the intersection points      Fx  the non-redundant halfspaces\n"
+           "  i   the halfspaces through each intersection point (Fv: with counts)\n"
+           "  Fn  each point's neighbouring points   FN  each halfspace's points\n"
+           "  FI  the points' ids   Fm  their merge counts (dual simplices - 1)\n"
+           "  Fc  the coplanar halfspaces of each point (exact; FP: nearest halfspace)\n"
+           "  Fs  sizes   FQ  the command   p  the dual points of the non-redundant ones\n"
+           "  o G m FM f FF  the dual points' convex hull (as qconvex; every facet a simplex,\n"
+           "      as Qhull's qhalf Qt)\n"
            "other options:\n"
-           "  Hn,n,...  the interior point      FO  the options on standard error\n"
+           "  Hn,n,...  the interior point      Fd  the input in cdd's format\n"
+           "  Tv, Tc    check the dual hull exactly      Ts  statistics on standard error\n"
+           "  FO        the options on standard error\n"
            "  TI FILE   read from FILE          TO FILE  write the output to FILE\n"
            "  Qt QJ Qbb Qx and Qhull's tuning options are accepted (a note says why).\n\n"
            "e.g.  rbox c D3 | qconvex n | lifthull qhalf H0 Fp\n",
@@ -193,7 +203,10 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
     const int half = o->prog == LH_QPROG_HALF;
     if (!strcmp(w, "FO")) return o->show_options = 1;
     if (half && w[0] == 'H') return interior(o, w);
-    if (half && (w[0] == 'T' || !strcmp(w, "Qu"))) goto unknown; /* no check or statistics */
+    if (half && !strcmp(w, "Fd")) return o->cdd = 1; /* cdd's format for the input */
+    if (half && ((w[0] == 'T' && strcmp(w, "Tv") && strcmp(w, "Tc") && strcmp(w, "Ts")) ||
+                 !strcmp(w, "Qu")))
+        goto unknown;
     if (!strcmp(w, "Qu") && o->prog != LH_QPROG_CONVEX) return o->furthest = 1;
     if (!strcmp(w, "FA") && facets) return o->areas = 1;
     if (!strcmp(w, "Tv")) return o->verify = 1;
@@ -224,7 +237,7 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
 unknown:
     fprintf(stderr, "lifthull %s: option '%s' is not supported (outputs: %s; %s, TI, TO; "
             "lifthull %s --help)\n", o->name, w, outputs[o->prog],
-            o->prog == LH_QPROG_HALF ? "also H" : "also Qu, Tv", o->name);
+            o->prog == LH_QPROG_HALF ? "also H, Fd, Tv, Ts" : "also Qu, Tv", o->name);
     return 0;
 }
 

@@ -433,82 +433,6 @@ def geomview(lh):
     check("qconvex Gv refused", r == 2 and "option 'Gv' is not supported" in e, e)
 
 
-def halfspace(lh):
-    def sets(out, skip_count=False):
-        rows = out.strip().split("\n")[1:]
-        return sorted(tuple(sorted(int(x) for x in (r.split()[1:] if skip_count else r.split()))) for r in rows)
-    def points_of(out):
-        return [tuple(float(x) for x in l.split()) for l in out.strip().split("\n")[2:]]
-    def tangent(spec, push=0):
-        """Planes tangent to rbox's sphere of radius 0.5 at its points p: p.x - 0.25 <= 0,
-        in general position (planes a hull's facets span, as qconvex n writes them,
-        meet only up to rounding: lifthull then finds every exact vertex, Qhull merges)."""
-        d, pts = points(rbox(spec))
-        rows = [" ".join(repr(x) for x in p) + " " + repr(-0.25) for p in pts]
-        rows += [" ".join(repr(x) for x in p) + " " + repr(-0.25 - 0.1) for p in pts[:push]]
-        return "%d\n%d\n" % (d + 1, len(rows)) + "\n".join(rows) + "\n"
-    cases = []
-    for spec in ("40 s D3 t61", "30 s D2 t62", "25 s D4 t63"):
-        cases.append((spec + " tangent planes", tangent(spec), ["H0"]))
-    n = tangent("30 s D3 t64", 10)  # ten redundant halfspaces, parallel to ten others
-    cases.append(("redundant", n, ["H0"]))
-    cases.append(("interior point H0.01,0.02,-0.03", n, ["H0.01,0.02,-0.03"]))
-    cases.append(("interior point in the input", "3 1\n0.01 0.02 -0.03\n" + n, []))
-    _, octa, _ = run(["qconvex", "n"], rbox("d D3"))
-    cases.append(("octahedron (4 planes a vertex)", octa, ["H0"]))
-    for name, text, h in cases:
-        _, a, _ = run([lh, "qhalf"] + h + ["Fp"], text)
-        _, b, _ = run(["qhalf"] + h + ["Fp"], text)
-        check("qhalf %s Fp" % name, a.split()[:2] == b.split()[:2] and same_rows(points_of(a), points_of(b), 1e-9),
-              a[:100] + " / " + b[:100])
-        _, a, _ = run([lh, "qhalf"] + h + ["i"], text)
-        _, b, _ = run(["qhalf"] + h + ["i"], text)
-        check("qhalf %s i" % name, sets(a) == sets(b), a[:100] + " / " + b[:100])
-        _, a, _ = run([lh, "qhalf"] + h + ["Fv"], text)
-        _, b, _ = run(["qhalf"] + h + ["Fv"], text)
-        check("qhalf %s Fv" % name, sets(a, True) == sets(b, True))
-        _, a, _ = run([lh, "qhalf"] + h + ["Fx"], text)
-        _, b, _ = run(["qhalf"] + h + ["Fx"], text)
-        check("qhalf %s Fx" % name, sorted(a.split()) == sorted(b.split()), a + " / " + b)
-    # the i and Fp lines belong together: each point is tight on its halfspaces
-    text = cases[0][1]
-    _, a, _ = run([lh, "qhalf", "H0", "i", "Fp"], text)
-    lines = a.strip().split("\n")
-    m = int(lines[0])
-    hs = [[float(x) for x in l.split()] for l in text.strip().split("\n")[2:]]
-    pts = [[float(x) for x in l.split()] for l in lines[m + 3:]]
-    tight = all(abs(sum(c * x for c, x in zip(hs[k][:-1], p)) + hs[k][-1]) < 1e-12
-                for l, p in zip(lines[1:m + 1], pts) for k in map(int, l.split()))
-    check("qhalf i and Fp: each point on its halfspaces", tight and len(pts) == m)
-    # exact where the vertices are simple ratios of the coefficients: the square cut by
-    # x + y <= 1.5 has vertices (1, 0.5) and (0.5, 1) exactly (qhalf: 0.5000000000000001)
-    sq = "3\n5\n1 0 -1\n-1 0 -1\n0 1 -1\n0 -1 -1\n1 1 -1.5\n"
-    want = sorted([(1.0, -1.0), (-1.0, 1.0), (0.5, 1.0), (-1.0, -1.0), (1.0, 0.5)])
-    for h in (["H0"], ["H0.1,0.2"], ["H-0.3,0.7"]):
-        _, a, _ = run([lh, "qhalf"] + h + ["Fp"], sq)
-        check("qhalf square cut %s Fp exact" % h[0], sorted(points_of(a)) == want, a)
-        _, b, _ = run(["qhalf"] + h + ["Fp"], sq)
-        print("note: square cut %s: qhalf %s" % (h[0], sorted(points_of(b))))
-    r, a, e = run([lh, "qhalf", "H0", "Qt", "QJ", "Fp"], sq)
-    check("qhalf Qt QJ accepted", r == 0 and sorted(points_of(a)) == want and "'QJ' ignored" in e, e)
-    _, a, _ = run([lh, "qhalf", "Fp"], sq)
-    check("qhalf square cut, the origin by default", sorted(points_of(a)) == want, a)
-    shifted = "3\n3\n1 0 -1\n-1 0 2\n0 1 -1\n"  # x >= 2: the origin is outside
-    for h, text, msg in ((["Fp"], shifted, "an interior point is needed (the origin is not"),
-                         (["H5", "Fp"], n, "not strictly inside halfspace"),
-                         (["H0", "Fp"], "3\n2\n1 0 -1\n-1 0 -1\n", "unbounded"),
-                         (["H0", "Fp"], "3\n3\n1 0 -1\n-1 0 -1\n0 1 -1\n", "unbounded"),
-                         (["H0,x"], n, "expected Hn,n"),
-                         (["H0", "Fp"], "4\n2\n1 0 0 x\n", "expected a coefficient"),
-                         (["H0", "o"], n, "option 'o' is not supported"),
-                         (["H0", "Tv"], n, "option 'Tv' is not supported"),
-                         (["H0"], "1e300 5\n", "<stdin>:1: expected halfspaces of 3..9 coefficients"),
-                         (["Fp"], "2 1\n0 0\n3 2\n1 0 -1\n-1 0 -1\n7\n", "<stdin>:6: more than the 2"),
-                         (["Fp"], "2 1\n0 0\n4 2\n", "<stdin>:3: the interior point has 2 coordinates")):
-        r, _, e = run([lh, "qhalf"] + h, text)
-        check("qhalf %s refused (%s)" % (" ".join(h), msg), r != 0 and msg in e, e)
-
-
 def fields(out):
     """f output: vertices {p: coords}, facets {vertex set: (normal, offset, neighbour ids)}
     and facet id -> vertex set."""
@@ -595,7 +519,7 @@ def main():
     ap.add_argument("-v", action="store_true")
     a = ap.parse_args()
     VERBOSE[0] = a.v
-    if not all(shutil.which(p) for p in ("rbox", "qconvex", "qdelaunay", "qvoronoi", "qhalf")):
+    if not all(shutil.which(p) for p in ("rbox", "qconvex", "qdelaunay", "qvoronoi")):
         print("SKIP: Qhull's programs (qhull-bin) not found")
         return 77
     lh = a.lifthull
@@ -612,7 +536,6 @@ def main():
     guard("extras", extras, lh)
     guard("trace", trace, lh)
     guard("geomview", geomview, lh)
-    guard("qhalf", halfspace, lh)
     guard("f", all_fields, lh)
     guard("f in 8-d", fields_refused, lh)
     guard("refusals", refusals, lh)
