@@ -917,6 +917,44 @@ LH_TEST(every_allocation_failure)
     free(s);
 }
 
+/* The readers' stack stays small (a caller's thread may have a small one): the
+ * scanner's block and the attributes' scratch live on the heap. */
+typedef struct stack_case {
+    alloc_case c;
+    lh_status st;
+    size_t n;
+} stack_case;
+
+static void *read_on_thread(void *arg)
+{
+    stack_case *s = arg;
+    lh_pslg g;
+    char msg[256];
+    s->st = read_text(s->c.rd, "stack", s->c.text, s->c.len, NULL, &g, msg, sizeof msg);
+    s->n = s->st == LH_OK ? g.n : 0;
+    lh_pslg_free(&g);
+    return NULL;
+}
+
+LH_TEST(reading_needs_little_stack)
+{
+    size_t len = 0;
+    char *text[2] = {big_poly(300, &len), NULL};
+    stack_case s[2] = {{{lh_poly_read, text[0], len}, LH_ERR_INTERNAL, 0}};
+    text[1] = big_rings(1000, &len);
+    s[1] = (stack_case){{lh_rings_read, text[1], len}, LH_ERR_INTERNAL, 0};
+    for (int k = 0; k < 2; k++) {
+        LH_ASSERT_TRUE(text[k] != NULL);
+        const size_t used = lh_test_stack_used(read_on_thread, &s[k]);
+        LH_EXPECT_EQ_INT(s[k].st, LH_OK);
+        LH_EXPECT_EQ_U64(s[k].n, k ? 1000 : 300);
+        LH_EXPECT_GT_INT(used, 0);
+        LH_EXPECT_LE_U64(used, 8192);
+        if (LH_FAILED()) LH_NOTE("%s: %zu bytes of stack", k ? "rings" : ".poly", used);
+        free(text[k]);
+    }
+}
+
 #ifdef LH_TEST_DATA_DIR
 typedef struct file_case {
     reader rd;
@@ -993,7 +1031,8 @@ int main(int argc, char **argv)
         LH_CASE(poly_n0_renumbered), LH_CASE(poly_n0_keeps_its_item_numbers), LH_CASE(poly_take_points_arguments), LH_CASE(poly_text_forms),
         LH_CASE(poly_header_errors), LH_CASE(poly_vertex_errors), LH_CASE(poly_segment_errors),
         LH_CASE(poly_hole_region_errors), LH_CASE(rings_text_forms), LH_CASE(rings_errors), LH_CASE(long_tokens),
-        LH_CASE(declared_counts_are_not_trusted), LH_CASE(every_allocation_failure), LH_CASE(read_error_and_arguments),
+        LH_CASE(declared_counts_are_not_trusted), LH_CASE(every_allocation_failure), LH_CASE(reading_needs_little_stack),
+        LH_CASE(read_error_and_arguments),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }
