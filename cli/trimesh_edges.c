@@ -89,7 +89,7 @@ int lh_cli_edges_build(lh_cli_edges *e, const lh_trimesh *m)
 
 /* Triangle t's circumcentre and the barycentric weights w of it in t (for the
  * attributes, extrapolated outside t), from its vertex o, on the edge vectors scaled
- * by 2^-e (lh_cli_scaled_edges): no square over- or underflows for points near
+ * by 2^-e (lh_triangle_scaled_edges): no square over- or underflows for points near
  * +-DBL_MAX or 1e-300; elsewhere the same doubles as unscaled. The centre is
  * p[o] + u 2^e: c, or where that passes DBL_MAX, (p[o] 2^-e + u) 2^e.
  * From o = the first vertex as a rule. Where the cross product of its two edges is
@@ -109,8 +109,7 @@ static void circumcentre(const lh_trimesh *m, size_t t, centre *z)
     const lh_index *v = lh_trimesh_triangles(m) + 3 * t;
     const double *p[3] = {xy + 2 * (size_t)v[0], xy + 2 * (size_t)v[1], xy + 2 * (size_t)v[2]};
     double ed[3][2];
-    long e;
-    lh_cli_scaled_edges(p, ed, &e);
+    const int e = lh_triangle_scaled_edges(p[0], p[1], p[2], ed);
     int o = 0;
     double pq = ed[2][0] * -ed[1][1], qp = ed[2][1] * -ed[1][0], den = 2 * (pq - qp);
     if (!(fabs(pq - qp) > 0x1p-52 * (fabs(pq) + fabs(qp)))) {
@@ -126,8 +125,8 @@ static void circumcentre(const lh_trimesh *m, size_t t, centre *z)
     const double bx = ed[o2][0], by = ed[o2][1], dx = -ed[o1][0], dy = -ed[o1][1]; /* p[o+1] - p[o], p[o+2] - p[o] */
     const double b2 = bx * bx + by * by, d2 = dx * dx + dy * dy;
     const double ux = (dy * b2 - by * d2) / den, uy = (bx * d2 - dx * b2) / den;
-    z->a = p[o], z->e = (int)e, z->u[0] = ux, z->u[1] = uy;
-    z->c[0] = p[o][0] + ldexp(ux, (int)e), z->c[1] = p[o][1] + ldexp(uy, (int)e);
+    z->a = p[o], z->e = e, z->u[0] = ux, z->u[1] = uy;
+    z->c[0] = p[o][0] + ldexp(ux, e), z->c[1] = p[o][1] + ldexp(uy, e);
     /* u = w1 (b - a) + w2 (d - a): Cramer's rule with the same denominator / 2 */
     z->w[o1] = 2 * (ux * dy - uy * dx) / den;
     z->w[o2] = 2 * (bx * uy - by * ux) / den;
