@@ -919,39 +919,19 @@ LH_TEST(every_allocation_failure)
 
 /* The readers' stack stays small (a caller's thread may have a small one): the
  * scanner's block and the attributes' scratch live on the heap. */
-typedef struct stack_case {
-    alloc_case c;
-    lh_status st;
-    size_t n;
-} stack_case;
-
-static void *read_on_thread(void *arg)
-{
-    stack_case *s = arg;
-    lh_pslg g;
-    char msg[256];
-    s->st = read_text(s->c.rd, "stack", s->c.text, s->c.len, NULL, &g, msg, sizeof msg);
-    s->n = s->st == LH_OK ? g.n : 0;
-    lh_pslg_free(&g);
-    return NULL;
-}
-
 LH_TEST(reading_needs_little_stack)
 {
-    size_t len = 0;
-    char *text[2] = {big_poly(300, &len), NULL};
-    stack_case s[2] = {{{lh_poly_read, text[0], len}, LH_ERR_INTERNAL, 0}};
-    text[1] = big_rings(1000, &len);
-    s[1] = (stack_case){{lh_rings_read, text[1], len}, LH_ERR_INTERNAL, 0};
     for (int k = 0; k < 2; k++) {
-        LH_ASSERT_TRUE(text[k] != NULL);
-        const size_t used = lh_test_stack_used(read_on_thread, &s[k]);
-        LH_EXPECT_EQ_INT(s[k].st, LH_OK);
-        LH_EXPECT_EQ_U64(s[k].n, k ? 1000 : 300);
+        alloc_case c = {k ? lh_rings_read : lh_poly_read, NULL, 0};
+        char *text = k ? big_rings(1000, &c.len) : big_poly(300, &c.len);
+        LH_ASSERT_TRUE(text != NULL);
+        c.text = text;
+        size_t used;
+        LH_EXPECT_EQ_INT(lh_test_run_on_thread(lh_t_, run_read, &c, &used), LH_OK);
         LH_EXPECT_GT_INT(used, 0);
         LH_EXPECT_LE_U64(used, 8192);
         if (LH_FAILED()) LH_NOTE("%s: %zu bytes of stack", k ? "rings" : ".poly", used);
-        free(text[k]);
+        free(text);
     }
 }
 

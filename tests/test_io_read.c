@@ -466,37 +466,27 @@ static lh_status run_read(lh_test_state *lh_t_, const lh_allocator *a, const voi
     return st;
 }
 
+/* The 1000-point 2D input of format fmt as c (its text malloc'ed, returned). */
+static char *big_case(lh_format fmt, alloc_case *c)
+{
+    char *s = big_input(fmt, 2, 1000, &c->len);
+    c->text = s;
+    c->fmt = fmt;
+    return s;
+}
+
 /* A reader's stack stays small (a caller's thread may have a small one): the
  * scanner's 16 KiB block, its read-ahead bytes and the attributes' scratch live on
  * the heap. */
-typedef struct stack_case {
-    alloc_case c;
-    lh_status st;
-    size_t n;
-} stack_case;
-
-static void *read_on_thread(void *arg)
-{
-    stack_case *s = arg;
-    lh_points p;
-    char msg[256];
-    s->st = read_text("stack", s->c.text, s->c.len, s->c.fmt, NULL, &p, msg, sizeof msg);
-    s->n = s->st == LH_OK ? p.n : 0;
-    lh_points_free(&p);
-    return NULL;
-}
-
 LH_TEST(reading_needs_little_stack)
 {
     static const lh_format fmts[] = {Q, N, C};
     for (int k = 0; k < 3; k++) {
-        stack_case s = {{NULL, 0, fmts[k]}, LH_ERR_INTERNAL, 0};
-        char *text = big_input(fmts[k], 2, 1000, &s.c.len);
+        alloc_case c;
+        char *text = big_case(fmts[k], &c);
         LH_ASSERT_TRUE(text != NULL);
-        s.c.text = text;
-        const size_t used = lh_test_stack_used(read_on_thread, &s);
-        LH_EXPECT_EQ_INT(s.st, LH_OK);
-        LH_EXPECT_EQ_U64(s.n, 1000);
+        size_t used;
+        LH_EXPECT_EQ_INT(lh_test_run_on_thread(lh_t_, run_read, &c, &used), LH_OK);
         LH_EXPECT_GT_INT(used, 0);
         LH_EXPECT_LE_U64(used, 8192);
         if (LH_FAILED()) LH_NOTE("format %d: %zu bytes of stack", (int)fmts[k], used);
@@ -509,10 +499,8 @@ LH_TEST(every_allocation_failure)
     static const lh_format fmts[] = {Q, N, C};
     for (int k = 0; k < 3; k++) {
         alloc_case c;
-        char *s = big_input(fmts[k], 2, 1000, &c.len);
+        char *s = big_case(fmts[k], &c);
         LH_ASSERT_TRUE(s != NULL);
-        c.text = s;
-        c.fmt = fmts[k];
         long runs = lh_test_every_failure(lh_t_, run_read, &c);
         LH_EXPECT_GE_INT(runs, fmts[k] == N ? 10 : 4); /* growth happened, for each array */
         free(s);
