@@ -50,19 +50,12 @@ static int one_file(const char *cmd, const lh_cli_args *a, const char *input, co
 }
 
 /* The three Triangle/TetGen files of a .node or .ele output name: BASE.node, BASE.ele,
- * BASE.neigh (malloc'ed, into path[3]); 0 when out of memory. */
+ * BASE.neigh (into path[3]: lh_cli_paths); 0 when out of memory. */
 static const char *const tri_ext[3] = {".node", ".ele", ".neigh"};
 
 static int tri_paths(const char *output, char *path[3])
 {
-    const size_t base = (size_t)(extension(output) - output);
-    for (int i = 0; i < 3; i++) path[i] = NULL;
-    for (int i = 0; i < 3; i++) {
-        if (!(path[i] = malloc(base + 8))) return 0;
-        memcpy(path[i], output, base);
-        strcpy(path[i] + base, tri_ext[i]);
-    }
-    return 1;
+    return lh_cli_paths(output, (size_t)(extension(output) - output), tri_ext, NULL, 3, path);
 }
 
 static int is_tri_path(const char *path)
@@ -78,7 +71,7 @@ int lh_cli_mesh_out_check(const char *cmd, const lh_cli_args *a, const char *inp
     int ok = tri_paths(a->output, path);
     if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
     for (int i = 0; i < 3 && ok; i++) ok = lh_cli_out_check(cmd, path[i], a->force, input);
-    for (int i = 0; i < 3; i++) free(path[i]);
+    lh_cli_paths_free(path, 3);
     return ok;
 }
 
@@ -103,7 +96,7 @@ static int triangle_files(const char *cmd, const lh_cli_args *a, const char *inp
         ok = st == LH_OK;
     }
     const int rc = lh_cli_outset_close(&set, ok);
-    for (int i = 0; i < 3; i++) free(path[i]);
+    lh_cli_paths_free(path, 3);
     return rc;
 }
 

@@ -88,6 +88,34 @@ static void temp_remove(char *name)
     restore_signals(&old);
 }
 
+/* ---- names ------------------------------------------------------------------------ */
+
+char *lh_cli_path_ext(const char *base, size_t len, const char *ext)
+{
+    const size_t n = strlen(ext);
+    char *p = malloc(len + n + 1);
+    if (!p) return NULL;
+    memcpy(p, base, len);
+    memcpy(p + len, ext, n + 1);
+    return p;
+}
+
+int lh_cli_paths(const char *base, size_t len, const char *const *ext, const int *want, int n,
+                 char **path)
+{
+    int ok = 1;
+    for (int i = 0; i < n; i++) {
+        path[i] = NULL;
+        if (ok && (!want || want[i])) ok = (path[i] = lh_cli_path_ext(base, len, ext[i])) != NULL;
+    }
+    return ok;
+}
+
+void lh_cli_paths_free(char **path, int n)
+{
+    for (int i = 0; i < n; i++) free(path[i]);
+}
+
 /* ---- checks ----------------------------------------------------------------------- */
 
 int lh_cli_same_file(const char *a, const char *b)

@@ -76,6 +76,16 @@ int lh_cli_out_open(lh_cli_out *o, const char *cmd, const char *path, int replac
                     const char *input);
 int lh_cli_out_close(lh_cli_out *o, const char *cmd, int ok);
 
+/* base[0..len) followed by ext (malloc'ed): BASE.node from BASE; NULL when out of
+ * memory. */
+char *lh_cli_path_ext(const char *base, size_t len, const char *ext);
+/* path[i] = lh_cli_path_ext(base, len, ext[i]) for each i < n where want is NULL or
+ * want[i] is nonzero, NULL elsewhere. Returns 1, or 0 when out of memory; either
+ * way lh_cli_paths_free(path, n) frees them. */
+int lh_cli_paths(const char *base, size_t len, const char *const *ext, const int *want, int n,
+                 char **path);
+void lh_cli_paths_free(char **path, int n);
+
 /* Whether a and b (either may be NULL) name one existing file (device and inode). */
 int lh_cli_same_file(const char *a, const char *b);
 

@@ -88,12 +88,6 @@ void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle, int
  * when a difference overflows, then scaled by the power of two of their largest
  * component, so points near +-DBL_MAX, near 1e-300 or both give no NaN. */
 void lh_cli_triangle_shape(const double *const p[3], double ang[3], double *ratio, double len[3]);
-/* Triangle p's edge vectors d[k] = p[k+2] - p[k+1] (opposite corner k), each rounded
- * once (at half scale when a difference overflows), times 2^-*e: the largest
- * component in [1, 2). Exact scaling, so a construction on them, scaled back by 2^*e,
- * is the same double as on the unscaled vectors wherever those neither over- nor
- * underflow (trimesh_report.c). */
-void lh_cli_scaled_edges(const double *const *p, double d[3][2], long *e);
 /* The line that says refinement left subsegments unsplit (stats.segments_unsplit). */
 void lh_cli_trimesh_unsplit(FILE *out, const lh_trimesh_stats *s);
 /* The line saying refinement stopped at its Steiner budget (s->steiner_budget_reached). */

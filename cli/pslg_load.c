@@ -3,6 +3,7 @@
  * set, or JSON polygon rings. */
 #include "pslg_io.h"
 #include "cli.h"
+#include "outfile.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -10,11 +11,8 @@
 /* A .poly whose vertices are in BASE.node: read that and hand its points over. */
 static int attach_node(lh_cli_pslg *in, const char *base)
 {
-    const size_t len = strlen(base);
-    char *node = malloc(len + 6);
+    char *node = lh_cli_path_ext(base, strlen(base), ".node");
     if (!node) return 0;
-    memcpy(node, base, len);
-    memcpy(node + len, ".node", 6);
     lh_points pts;
     memset(&pts, 0, sizeof pts);
     FILE *f = lh_cli_open_input(node);
@@ -110,11 +108,8 @@ static int load_area(lh_cli_pslg *in, const char *path)
 
 int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area)
 {
-    const size_t len = strlen(base);
-    char *path = malloc(len + 6);
+    char *path = lh_cli_path_ext(base, strlen(base), ".ele");
     if (!path) return 0;
-    memcpy(path, base, len);
-    memcpy(path + len, ".ele", 5);
     FILE *f = lh_cli_open_input(path);
     char msg[512];
     lh_status st = f ? lh_cells_read(f, path, in->g.n, NULL, &in->ele, msg, sizeof msg) : LH_ERR_IO;
@@ -130,8 +125,8 @@ int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area)
         in->g.cover_count = in->ele.count;
     }
     if (ok && area) {
-        memcpy(path + len, ".area", 6);
-        ok = load_area(in, path);
+        free(path);
+        ok = (path = lh_cli_path_ext(base, strlen(base), ".area")) != NULL && load_area(in, path);
         in->g.cover_area = in->area;
     }
     free(path);

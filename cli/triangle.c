@@ -5,6 +5,7 @@
  * (yet) are refused by name; switches that choose among Triangle's algorithms or its
  * arithmetic are accepted and change nothing (lifthull is always exact). */
 #include "cli.h"
+#include "outfile.h"
 #include "pslg_io.h"
 
 #include <ctype.h>
@@ -190,14 +191,11 @@ static int run(const sw *o, const char *file)
     lh_cli_pslg in;
     lh_trimesh *m = NULL;
     if (!base || !outb) goto done;
-    path = malloc(strlen(base) + 6);
-    if (!path) goto done;
     /* Triangle reads BASE.poly with -p, else BASE.node, whatever extension FILE has
        (but for polygon rings, which have no other form) */
-    if (kind == LH_CLI_RINGS)
-        strcpy(path, file);
-    else
-        sprintf(path, "%s%s", base, kind == LH_CLI_POLY ? ".poly" : ".node");
+    path = kind == LH_CLI_RINGS ? lh_cli_path_ext(file, strlen(file), "")
+                                : lh_cli_path_ext(base, strlen(base), kind == LH_CLI_POLY ? ".poly" : ".node");
+    if (!path) goto done;
     /* every output file is checked before the input is read */
     if (!lh_cli_trimesh_check(outb, &o->files, path, "triangle")) goto done;
     if (!lh_cli_pslg_load(&in, path, base, kind) ||

@@ -3,6 +3,7 @@
  * https://www.cs.cmu.edu/~quake/triangle.voronoi.html and triangle.edge.html) and the
  * midpoint nodes of quadratic elements (-o2, triangle.highorder.html). */
 #include "pslg_io.h"
+#include "qhull_print.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -86,27 +87,58 @@ int lh_cli_edges_build(lh_cli_edges *e, const lh_trimesh *m)
     return 1;
 }
 
-/* Triangle t's circumcentre c and the barycentric weights w of c in t (for the
- * attributes, extrapolated outside t), from t's first vertex, on the edge vectors
- * scaled by a power of two (lh_cli_scaled_edges): no square over- or underflows for
- * points near +-DBL_MAX or 1e-300; elsewhere the same doubles as unscaled. */
-static void circumcentre(const lh_trimesh *m, size_t t, double c[2], double w[3])
+/* Triangle t's circumcentre and the barycentric weights w of it in t (for the
+ * attributes, extrapolated outside t), from its vertex o, on the edge vectors scaled
+ * by 2^-e (lh_triangle_scaled_edges): no square over- or underflows for points near
+ * +-DBL_MAX or 1e-300; elsewhere the same doubles as unscaled. The centre is
+ * p[o] + u 2^e: c, or where that passes DBL_MAX, (p[o] 2^-e + u) 2^e.
+ * From o = the first vertex as a rule. Where the cross product of its two edges is
+ * below its rounding error (at most 2^-52 of |bx dy| + |by dx|: Higham 2002, 3.1), the
+ * triangle is a needle: then o is an end of the shortest edge, so that the
+ * numerators do not cancel (the short edge's terms are the small ones), and the
+ * cross product is Kahan's with fma (2 ulps: Jeannerod, Louvet and Muller 2013). */
+typedef struct centre {
+    const double *a; /* p[o] */
+    double u[2], c[2], w[3];
+    int e;
+} centre;
+
+static void circumcentre(const lh_trimesh *m, size_t t, centre *z)
 {
     const double *xy = lh_trimesh_points(m);
     const lh_index *v = lh_trimesh_triangles(m) + 3 * t;
     const double *p[3] = {xy + 2 * (size_t)v[0], xy + 2 * (size_t)v[1], xy + 2 * (size_t)v[2]};
     double ed[3][2];
-    long e;
-    lh_cli_scaled_edges(p, ed, &e);
-    const double *a = p[0];
-    const double bx = ed[2][0], by = ed[2][1], dx = -ed[1][0], dy = -ed[1][1]; /* b - a, d - a */
-    const double den = 2 * (bx * dy - by * dx), b2 = bx * bx + by * by, d2 = dx * dx + dy * dy;
+    const int e = lh_triangle_scaled_edges(p[0], p[1], p[2], ed);
+    int o = 0;
+    double pq = ed[2][0] * -ed[1][1], qp = ed[2][1] * -ed[1][0], den = 2 * (pq - qp);
+    if (!(fabs(pq - qp) > 0x1p-52 * (fabs(pq) + fabs(qp)))) {
+        int k = 0; /* the shortest edge, opposite corner k: o = corner k + 1 */
+        for (int j = 1; j < 3; j++)
+            if (ed[j][0] * ed[j][0] + ed[j][1] * ed[j][1] < ed[k][0] * ed[k][0] + ed[k][1] * ed[k][1]) k = j;
+        o = (k + 1) % 3;
+        const double *b = ed[(o + 2) % 3], *d = ed[(o + 1) % 3]; /* b - o, o - d */
+        qp = b[1] * -d[0];
+        den = 2 * (fma(b[0], -d[1], -qp) - fma(b[1], -d[0], -qp));
+    }
+    const int o1 = (o + 1) % 3, o2 = (o + 2) % 3;
+    const double bx = ed[o2][0], by = ed[o2][1], dx = -ed[o1][0], dy = -ed[o1][1]; /* p[o+1] - p[o], p[o+2] - p[o] */
+    const double b2 = bx * bx + by * by, d2 = dx * dx + dy * dy;
     const double ux = (dy * b2 - by * d2) / den, uy = (bx * d2 - dx * b2) / den;
-    c[0] = a[0] + ldexp(ux, (int)e), c[1] = a[1] + ldexp(uy, (int)e);
+    z->a = p[o], z->e = e, z->u[0] = ux, z->u[1] = uy;
+    z->c[0] = p[o][0] + ldexp(ux, e), z->c[1] = p[o][1] + ldexp(uy, e);
     /* u = w1 (b - a) + w2 (d - a): Cramer's rule with the same denominator / 2 */
-    w[1] = 2 * (ux * dy - uy * dx) / den;
-    w[2] = 2 * (bx * uy - by * ux) / den;
-    w[0] = 1 - w[1] - w[2];
+    z->w[o1] = 2 * (ux * dy - uy * dx) / den;
+    z->w[o2] = 2 * (bx * uy - by * ux) / den;
+    z->w[o] = 1 - z->w[o1] - z->w[o2];
+}
+
+/* Coordinate j of the centre as "%.17g", with all its digits where it passes
+ * DBL_MAX (docs/meshing.md): as qvoronoi's o and p print such centres. */
+static void centre_coordinate(FILE *f, const centre *z, int j)
+{
+    if (isfinite(z->c[j])) fprintf(f, "%.17g", z->c[j]);
+    else lh_cli_qscaled(f, 0, 17, ldexp(z->a[j], -z->e) + z->u[j], z->e);
 }
 
 void lh_cli_write_vnode(FILE *f, const lh_trimesh *m, int base)
@@ -117,12 +149,15 @@ void lh_cli_write_vnode(FILE *f, const lh_trimesh *m, int base)
     const lh_index *v = lh_trimesh_triangles(m);
     fprintf(f, "%zu  2  %d  0\n", nt, na);
     for (size_t i = 0; i < nt; i++) {
-        double c[2], w[3];
-        circumcentre(m, i, c, w);
-        fprintf(f, "%4lld    %.17g  %.17g", (long long)i + base, c[0], c[1]);
+        centre z;
+        circumcentre(m, i, &z);
+        fprintf(f, "%4lld    ", (long long)i + base);
+        centre_coordinate(f, &z, 0);
+        fputs("  ", f);
+        centre_coordinate(f, &z, 1);
         for (int j = 0; j < na; j++) {
             double x = 0;
-            for (int k = 0; k < 3; k++) x += w[k] * at[(size_t)v[3 * i + k] * (size_t)na + (size_t)j];
+            for (int k = 0; k < 3; k++) x += z.w[k] * at[(size_t)v[3 * i + k] * (size_t)na + (size_t)j];
             fprintf(f, "  %.17g", x);
         }
         fputc('\n', f);

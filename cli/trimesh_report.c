@@ -35,39 +35,19 @@ static void xprint(FILE *out, xval v)
     fprintf(out, "%.6ge%+.0f", mant, x);
 }
 
-void lh_cli_scaled_edges(const double *const *p, double d[3][2], long *e)
-{
-    int half = 0;
-    for (int k = 0; k < 3; k++)
-        for (int j = 0; j < 2; j++) {
-            d[k][j] = p[(k + 2) % 3][j] - p[(k + 1) % 3][j];
-            half |= isinf(d[k][j]) != 0;
-        }
-    double big = 0;
-    for (int k = 0; k < 3; k++)
-        for (int j = 0; j < 2; j++) {
-            if (half) d[k][j] = p[(k + 2) % 3][j] / 2 - p[(k + 1) % 3][j] / 2;
-            big = fmax(big, fabs(d[k][j]));
-        }
-    const int x = big > 0 ? ilogb(big) : 0;
-    for (int k = 0; k < 3; k++)
-        for (int j = 0; j < 2; j++) d[k][j] = ldexp(d[k][j], -x);
-    *e = x + half;
-}
-
-/* Triangle p in the frame of lh_cli_scaled_edges (edge k = d[k] * 2^ex, opposite
+/* Triangle p in the frame of lh_triangle_scaled_edges (edge k = d[k] * 2^ex, opposite
  * p[k]): the edges' lengths l, the area |d1 x d2| / 2, the radius-edge ratio
  * R / shortest = l0 l1 l2 / (4 area shortest) (infinity when flat) and the corners'
  * angles in radians (ang[k] between d[k+2] and -d[k+1], atan2 of the cross and dot
  * products); no product overflows or vanishes in that frame. */
 typedef struct shape {
     double d[3][2], l[3], area, ratio, ang[3];
-    long ex;
+    int ex;
 } shape;
 
 static void shape_of(const double *const p[3], shape *t)
 {
-    lh_cli_scaled_edges(p, t->d, &t->ex);
+    t->ex = lh_triangle_scaled_edges(p[0], p[1], p[2], t->d);
     for (int k = 0; k < 3; k++) {
         const double *u = t->d[(k + 2) % 3], *v = t->d[(k + 1) % 3];
         t->ang[k] = atan2(fabs(u[0] * v[1] - u[1] * v[0]), -(u[0] * v[0] + u[1] * v[1]));
@@ -85,7 +65,7 @@ void lh_cli_triangle_shape(const double *const p[3], double ang[3], double *rati
     shape_of(p, &t);
     for (int k = 0; k < 3; k++) {
         ang[k] = t.ang[k] * (180 / 3.14159265358979323846);
-        len[k] = ldexp(t.l[k], (int)t.ex); /* infinity for an edge longer than DBL_MAX */
+        len[k] = ldexp(t.l[k], t.ex); /* infinity for an edge longer than DBL_MAX */
     }
     *ratio = t.ratio;
 }

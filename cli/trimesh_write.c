@@ -151,24 +151,15 @@ static int number_points(ctx *c)
     return 1;
 }
 
-/* BASE.node etc. for the files w asks for (malloc'ed, NULL where not wanted); 0 when
- * out of memory. */
+/* BASE.node etc. for the files w asks for (lh_cli_paths: NULL where not wanted); 0
+ * when out of memory. */
 static const char *const tri_ext[] = {".node", ".ele", ".poly", ".edge", ".neigh", ".off", ".v.node", ".v.edge"};
 enum { nfiles = 8 };
 
 static int tri_paths(const char *base, const lh_cli_tri_files *w, char *path[nfiles])
 {
     const int want[nfiles] = {w->node, w->ele, w->poly, w->edge, w->neigh, w->off, w->voronoi, w->voronoi};
-    const size_t len = strlen(base);
-    for (int i = 0; i < nfiles; i++) path[i] = NULL;
-    for (int i = 0; i < nfiles; i++) {
-        if (!want[i]) continue;
-        path[i] = malloc(len + 9);
-        if (!path[i]) return 0;
-        memcpy(path[i], base, len);
-        strcpy(path[i] + len, tri_ext[i]);
-    }
-    return 1;
+    return lh_cli_paths(base, strlen(base), tri_ext, want, nfiles, path);
 }
 
 int lh_cli_trimesh_check(const char *base, const lh_cli_tri_files *w, const char *input, const char *cmd)
@@ -178,7 +169,7 @@ int lh_cli_trimesh_check(const char *base, const lh_cli_tri_files *w, const char
     if (!ok) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
     for (int i = 0; i < nfiles && ok; i++)
         if (path[i]) ok = lh_cli_out_check(cmd, path[i], !w->no_replace, input);
-    for (int i = 0; i < nfiles; i++) free(path[i]);
+    lh_cli_paths_free(path, nfiles);
     return ok;
 }
 
@@ -223,7 +214,7 @@ int lh_cli_trimesh_write(const lh_trimesh *m, const lh_cli_pslg *in, const char 
         if (f[i]) write_file(i, f[i], &c, &in->g);
     /* all or none: renamed only when every file was written */
     const int rc = lh_cli_outset_close(&set, ok);
-    for (int i = 0; i < nfiles; i++) free(path[i]);
+    lh_cli_paths_free(path, nfiles);
     free(c.num);
     lh_cli_edges_free(&c.e);
     return rc;

@@ -47,6 +47,28 @@ static lh_index find(lh__m2 *m, const double *p)
     return lh__m2_locate(m, -1, p, 0, &blocked);
 }
 
+/* The subsegment ending at vertex a, found in the fan of triangles around a from
+ * triangle t (which has a as a vertex): of an input segment, the least segment number;
+ * else (boundary edges of a mesh to refine) the least subsegment id; -1 when none.
+ * The fan is a's neighbourhood: O(degree of a), and the same answer for every t. */
+static lh_index subseg_at_vertex(const lh__m2 *m, lh_index t, lh_index a)
+{
+    lh_index best = -1;
+    lh__m2_fan f = {a, t, t, 0};
+    for (lh_index u = t; u >= 0; u = lh__m2_fan_next(m, &f)) {
+        const int i = lh__m2_vpos(m, u, a);
+        for (int j = 1; j < 3; j++) { /* the two edges of u at a */
+            const lh_index s = m->sg[3 * (size_t)u + (i + j) % 3];
+            if (s < 0) continue;
+            const int input = m->sp[s] >= 0, best_input = best >= 0 && m->sp[best] >= 0;
+            if (best < 0 || (input && !best_input) ||
+                (input == best_input && (input ? m->sp[s] < m->sp[best] : s < best)))
+                best = s;
+        }
+    }
+    return best;
+}
+
 lh_index lh__m2_subseg_at(lh__m2 *m, const double *p)
 {
     const lh_index t = find(m, p);
@@ -54,13 +76,7 @@ lh_index lh__m2_subseg_at(lh__m2 *m, const double *p)
     const lh_index *v = m->v + 3 * (size_t)t;
     for (int k = 0; k < 3; k++) {
         const double *q = lh__m2_pt(m, v[k]);
-        if (q[0] != p[0] || q[1] != p[1]) continue;
-        for (size_t u = 0; u < m->nt; u++) /* p is vertex v[k]: any subsegment ending there */
-            for (int j = 0; m->v[3 * u] >= 0 && j < 3; j++)
-                if (m->sg[3 * u + j] >= 0 && m->v[3 * u + j] != v[k] &&
-                    (m->v[3 * u] == v[k] || m->v[3 * u + 1] == v[k] || m->v[3 * u + 2] == v[k]))
-                    return m->sg[3 * u + j];
-        return -1;
+        if (q[0] == p[0] && q[1] == p[1]) return subseg_at_vertex(m, t, v[k]);
     }
     for (int k = 0; k < 3; k++) /* p in the closed triangle t: on edge k when collinear */
         if (m->sg[3 * (size_t)t + k] >= 0 && lh__m2_orient_pt(m, v[(k + 1) % 3], v[(k + 2) % 3], p) == 0)

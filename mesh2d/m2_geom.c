@@ -4,6 +4,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "lifthull.h"
 #include "m2_geom.h"
 
 /* 2^k for -1074 <= k <= 1023, from its bits (ldexp's result, without the call). */
@@ -97,7 +98,8 @@ double lh__g_dot(const double *u, const double *v)
     return fma(u[0], v[0], p) + err;
 }
 
-void lh__g_measure(const double *a, const double *b, const double *c, lh__g_tri *t)
+int lh_triangle_scaled_edges(const double a[2], const double b[2], const double c[2],
+                             double d[3][2])
 {
     /* d[k] from corner k+1 to corner k+2, each rounded once from the coordinates,
        all three scaled by one power of two */
@@ -105,19 +107,24 @@ void lh__g_measure(const double *a, const double *b, const double *c, lh__g_tri 
     int half = 0;
     for (int k = 0; k < 3 && !half; k++)
         for (int j = 0; j < 2; j++) {
-            t->d[k][j] = to[k][j] - from[k][j];
-            if (isinf(t->d[k][j])) half = 1;
+            d[k][j] = to[k][j] - from[k][j];
+            if (isinf(d[k][j])) half = 1;
         }
     if (half)
         for (int k = 0; k < 3; k++)
-            for (int j = 0; j < 2; j++) t->d[k][j] = to[k][j] / 2 - from[k][j] / 2;
+            for (int j = 0; j < 2; j++) d[k][j] = to[k][j] / 2 - from[k][j] / 2;
     double big = 0;
-    for (int k = 0; k < 3; k++) big = fmax(big, fmax(fabs(t->d[k][0]), fabs(t->d[k][1])));
+    for (int k = 0; k < 3; k++) big = fmax(big, fmax(fabs(d[k][0]), fabs(d[k][1])));
     const int e = big > 0 ? exponent(big) : 0;
-    t->e = e + half;
+    for (int k = 0; k < 3; k++) d[k][0] = scale_down(d[k][0], e), d[k][1] = scale_down(d[k][1], e);
+    return e + half;
+}
+
+void lh__g_measure(const double *a, const double *b, const double *c, lh__g_tri *t)
+{
+    t->e = lh_triangle_scaled_edges(a, b, c, t->d);
     t->k = 0;
     for (int k = 0; k < 3; k++) {
-        t->d[k][0] = scale_down(t->d[k][0], e), t->d[k][1] = scale_down(t->d[k][1], e);
         t->len[k] = lh__g_len(t->d[k][0], t->d[k][1]);
         if (t->len[k] < t->len[t->k]) t->k = k;
     }

@@ -49,7 +49,8 @@ static inline double lh__g_len(double x, double y)
 }
 
 /* A triangle a, b, c (counterclockwise) measured: d[k] the edge opposite corner k
- * (from corner k+1 to corner k+2) and len[k] its length, both scaled by 2^-e; area2
+ * (from corner k+1 to corner k+2: lh_triangle_scaled_edges, the public face of this
+ * frame) and len[k] its length, both scaled by 2^-e; area2
  * twice the area scaled by 2^-2e; k the shortest edge; sin_min the sine of the
  * smallest angle (at corner k), scale-free. */
 typedef struct lh__g_tri {

@@ -65,8 +65,11 @@ lh_status lh__cover_areas(lh__m2 *m, lh__cover *cv, const double *area);
  * followed by Lawson's flips (smooth.c); *moved counts the moves. */
 lh_status lh__m2_smooth(lh__m2 *m, lh__m2_cavity *c, int passes, double max_area, size_t *moved);
 
-/* The subsegment on which point p lies (closed: an endpoint too), or -1 (cdt_domain.c).
- * A hole seed there would carve whichever side point location happens to find. */
+/* The subsegment on which point p lies (closed: an endpoint too), or -1 (cdt_domain.c);
+ * at a vertex, of the subsegments ending there the one of the least input segment.
+ * For the mesh before carving (a triangulation of the convex hull, where the
+ * triangles around a vertex form one fan): point location, then that fan. A hole seed
+ * on a subsegment would carve whichever side point location happens to find. */
 lh_index lh__m2_subseg_at(lh__m2 *m, const double *p);
 
 /* Triangle's -s (cdt_split.c): subsegments split at their midpoints until each is

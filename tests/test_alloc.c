@@ -19,19 +19,21 @@
 
 enum { N = 125 }; /* a 5^3 grid: every cell cospherical, centres shared by many simplices */
 
-static void grid(double *x)
+/* The grid into x, and options with allocator a. */
+static lh_options grid(double *x, const lh_allocator *a)
 {
     for (int i = 0; i < N; i++) x[3 * i] = i % 5, x[3 * i + 1] = i / 5 % 5, x[3 * i + 2] = i / 25;
+    lh_options o;
+    lh_options_default(&o);
+    o.alloc = a;
+    return o;
 }
 
 static lh_status affine_run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
 {
     (void)user;
     double x[N * 3];
-    grid(x);
-    lh_options o;
-    lh_options_default(&o);
-    o.alloc = a;
+    lh_options o = grid(x, a);
     int k = -2;
     lh_status st = lh_affine_dim(3, N, x, &o, &k);
     if (st == LH_OK) LH_EXPECT_EQ_INT(k, 3);
@@ -43,12 +45,9 @@ static lh_status check_run(lh_test_state *lh_t_, const lh_allocator *a, const vo
 {
     (void)user;
     double x[N * 3];
-    grid(x);
+    lh_options o = grid(x, a);
     lh_tri *t;
     LH_EXPECT_EQ_INT(lh_delaunay(3, N, x, NULL, &t), LH_OK);
-    lh_options o;
-    lh_options_default(&o);
-    o.alloc = a;
     char msg[200];
     lh_status st = lh_check_delaunay(3, N, x, lh_tri_count(t), lh_tri_simplices(t), &o, msg, sizeof msg);
     lh_tri_free(t);
@@ -96,10 +95,7 @@ static lh_status hull_run(lh_test_state *lh_t_, const lh_allocator *a, const voi
 {
     (void)user;
     double x[N * 3];
-    grid(x);
-    lh_options o;
-    lh_options_default(&o);
-    o.alloc = a;
+    lh_options o = grid(x, a);
     lh_hull *h;
     lh_status st = lh_convex_hull(3, N, x, &o, &h);
     if (st != LH_OK) return st;
@@ -138,10 +134,7 @@ static lh_status query_run(lh_test_state *lh_t_, const lh_allocator *a, const vo
 {
     const query_fn *q = user;
     double x[N * 3];
-    grid(x);
-    lh_options o;
-    lh_options_default(&o);
-    o.alloc = a;
+    lh_options o = grid(x, a);
     lh_tri *t;
     lh_status st = lh_delaunay(3, N, x, &o, &t);
     if (st != LH_OK) return st;
@@ -177,13 +170,10 @@ static void counting_free(void *user, void *p)
  * handle's hooks, as every query on a handle does; they used malloc. */
 LH_TEST(measures_use_the_handles_allocator)
 {
-    double x[N * 3];
-    grid(x);
     size_t calls = 0;
     const lh_allocator al = {counting_alloc, counting_free, &calls};
-    lh_options o;
-    lh_options_default(&o);
-    o.alloc = &al;
+    double x[N * 3];
+    lh_options o = grid(x, &al);
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(3, N, x, &o, &t), LH_OK);
     size_t before = calls;

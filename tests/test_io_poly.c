@@ -917,6 +917,24 @@ LH_TEST(every_allocation_failure)
     free(s);
 }
 
+/* The readers' stack stays small (a caller's thread may have a small one): the
+ * scanner's block and the attributes' scratch live on the heap. */
+LH_TEST(reading_needs_little_stack)
+{
+    for (int k = 0; k < 2; k++) {
+        alloc_case c = {k ? lh_rings_read : lh_poly_read, NULL, 0};
+        char *text = k ? big_rings(1000, &c.len) : big_poly(300, &c.len);
+        LH_ASSERT_TRUE(text != NULL);
+        c.text = text;
+        size_t used;
+        LH_EXPECT_EQ_INT(lh_test_run_on_thread(lh_t_, run_read, &c, &used), LH_OK);
+        LH_EXPECT_GT_INT(used, 0);
+        LH_EXPECT_LE_U64(used, 12288); /* under the 16 KiB block alone; sanitizers widen frames */
+        if (LH_FAILED()) LH_NOTE("%s: %zu bytes of stack", k ? "rings" : ".poly", used);
+        free(text);
+    }
+}
+
 #ifdef LH_TEST_DATA_DIR
 typedef struct file_case {
     reader rd;
@@ -993,7 +1011,8 @@ int main(int argc, char **argv)
         LH_CASE(poly_n0_renumbered), LH_CASE(poly_n0_keeps_its_item_numbers), LH_CASE(poly_take_points_arguments), LH_CASE(poly_text_forms),
         LH_CASE(poly_header_errors), LH_CASE(poly_vertex_errors), LH_CASE(poly_segment_errors),
         LH_CASE(poly_hole_region_errors), LH_CASE(rings_text_forms), LH_CASE(rings_errors), LH_CASE(long_tokens),
-        LH_CASE(declared_counts_are_not_trusted), LH_CASE(every_allocation_failure), LH_CASE(read_error_and_arguments),
+        LH_CASE(declared_counts_are_not_trusted), LH_CASE(every_allocation_failure), LH_CASE(reading_needs_little_stack),
+        LH_CASE(read_error_and_arguments),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -1125,6 +1125,31 @@ LH_TEST(a_hole_seed_on_a_segment_is_refused)
     }
 }
 
+/* Hole seeds on vertices that end no segment (a 3 x 3 grid inside a square ring, a
+ * seed on each) are no error: the first carves the inside, the others are ignored
+ * (tests/cli/scaling.sh: the check of each seed costs its vertex's degree). */
+LH_TEST(hole_seeds_on_free_vertices_carve)
+{
+    const char *text = "17 2 0 0\n1 0 0\n2 6 0\n3 6 6\n4 0 6\n5 1 1\n6 5 1\n7 5 5\n8 1 5\n"
+                       "9 1.5 1.5\n10 2.5 1.5\n11 3.5 1.5\n12 1.5 2.5\n13 2.5 2.5\n14 3.5 2.5\n"
+                       "15 1.5 3.5\n16 2.5 3.5\n17 3.5 3.5\n8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
+                       "5 5 6\n6 6 7\n7 7 8\n8 8 5\n9\n1 1.5 1.5\n2 2.5 1.5\n3 3.5 1.5\n4 1.5 2.5\n"
+                       "5 2.5 2.5\n6 3.5 2.5\n7 1.5 3.5\n8 2.5 3.5\n9 3.5 3.5\n";
+    lh_pslg g;
+    LH_ASSERT_EQ_INT(load_text(text, &g), LH_OK);
+    lh_trimesh *m = NULL;
+    char msg[128];
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_OK);
+    if (m) {
+        lh_trimesh_stats s;
+        lh_trimesh_get_stats(m, &s);
+        LH_EXPECT_EQ_U64(lh_trimesh_triangle_count(m), 8); /* the ring */
+        LH_EXPECT_EQ_U64(s.holes_ignored, 8);
+    }
+    lh_trimesh_free(m);
+    lh_pslg_free(&g);
+}
+
 LH_TEST(the_check_rejects_what_is_not_a_cdt)
 {
     /* the unit square split by the diagonal 0-2, and a fifth point near the centre */
@@ -1214,7 +1239,8 @@ int main(int argc, char **argv)
         LH_CASE(refining_a_mesh_keeps_the_segments_along_its_boundary),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),
-        LH_CASE(a_hole_seed_on_a_segment_is_refused), LH_CASE(the_check_rejects_what_is_not_a_cdt),
+        LH_CASE(a_hole_seed_on_a_segment_is_refused), LH_CASE(hole_seeds_on_free_vertices_carve),
+        LH_CASE(the_check_rejects_what_is_not_a_cdt),
         LH_CASE(every_allocation_failure_is_survived),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);

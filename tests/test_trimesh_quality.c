@@ -59,6 +59,31 @@ static int same_up_to_scale(const lh_trimesh *m, const lh_trimesh *ref, int k)
 /* A.poly scaled by 2^k at 30 degrees (the same at 34, and at 20 with an area bound
  * scaled by 2^2k): the unit-scale mesh times 2^k. Before the decisions were scale-free, 2^177
  * left a 7.18 degree triangle and reported none below the bound. */
+/* lh_triangle_scaled_edges: the edges opposite each corner, the largest component in
+ * [1, 2), the same at every power-of-two scale, halved where a difference overflows. */
+LH_TEST(scaled_edges_are_the_meshers_frame)
+{
+    const double a[2] = {0, 0}, b[2] = {3, 0}, c[2] = {0, 1};
+    double d[3][2];
+    LH_EXPECT_EQ_INT(lh_triangle_scaled_edges(a, b, c, d), 1);
+    const double want[3][2] = {{-1.5, 0.5}, {0, -0.5}, {1.5, 0}}; /* c - b, a - c, b - a over 2 */
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 2; j++) LH_EXPECT_EQ_DBL(d[k][j], want[k][j]);
+    for (int s = -1070; s <= 1020; s += 415) { /* 2^s times the triangle: the same d */
+        const double as[2] = {0, 0}, bs[2] = {ldexp(3, s), 0}, cs[2] = {0, ldexp(1, s)};
+        double ds[3][2];
+        LH_EXPECT_EQ_INT(lh_triangle_scaled_edges(as, bs, cs, ds), 1 + s);
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 2; j++) LH_EXPECT_EQ_DBL(ds[k][j], want[k][j]);
+    }
+    const double p[2] = {-DBL_MAX, -DBL_MAX}, q[2] = {DBL_MAX, -DBL_MAX}, r[2] = {0, DBL_MAX};
+    LH_EXPECT_EQ_INT(lh_triangle_scaled_edges(p, q, r, d), 1024); /* 2 DBL_MAX: halved */
+    LH_EXPECT_EQ_DBL(d[2][0], DBL_MAX / 0x1p1023);
+    LH_EXPECT_EQ_DBL(d[0][1], DBL_MAX / 0x1p1023);
+    LH_EXPECT_EQ_INT(lh_triangle_scaled_edges(a, a, a, d), 0);
+    LH_EXPECT_EQ_DBL(d[1][0], 0);
+}
+
 LH_TEST(quality_decisions_are_scale_free)
 {
     static const int ks[] = {-600, -260, -177, -1, 0, 1, 177, 260, 600};
@@ -334,7 +359,7 @@ int main(int argc, char **argv)
         LH_CASE(a_wedge_of_1e_300_is_counted_bad),
         LH_CASE(refinement_above_the_provable_angle_ends),
         LH_CASE(an_area_bound_applies_at_the_ends_of_the_range),
-        LH_CASE(split_segments_are_scale_free),
+        LH_CASE(split_segments_are_scale_free), LH_CASE(scaled_edges_are_the_meshers_frame),
         LH_CASE(split_segments_attributes_stay_finite),
         LH_CASE(a_pinched_domain_is_refined_beside_the_pinch),
     };

@@ -964,6 +964,18 @@ LH_API void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out);
 /* The triangles still bad at the end (lh_trimesh_stats.bad_triangles of them). */
 LH_API const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
 
+/* Triangle a, b, c's edge vectors in the frame the mesher measures quality in (its
+ * angle and area bounds): d[k] is the edge opposite corner k (corners a, b, c are 0,
+ * 1, 2), from corner k+1 to corner k+2, each difference rounded once (all three at
+ * half scale when one overflows: both coordinates beyond 2^970), then times 2^-e for
+ * the returned e, so that the largest component lies in [1, 2) (all zero: e = 0).
+ * That scaling is exact but for components that become subnormal, so a construction
+ * on d scaled back by 2^e is the same double as on the plain differences wherever
+ * those neither over- nor underflow, and no square or product of d over- or
+ * underflows for points near +-DBL_MAX, near 1e-300, or both. For finite points. */
+int lh_triangle_scaled_edges(const double a[2], const double b[2], const double c[2],
+                             double d[3][2]);
+
 /*
  * lh_check_trimesh: exact check of a 2D triangulation of a domain — points (n, xy),
  * triangles (3 indices each), subsegments (2 indices each): every triangle

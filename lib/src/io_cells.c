@@ -163,20 +163,24 @@ lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_all
     if (!out) return LH_ERR_INVALID_ARGUMENT;
     memset(out, 0, sizeof *out);
     if (!f || !lh__allocator_init(&out->alloc_, alloc)) return LH_ERR_INVALID_ARGUMENT;
-    lh__scan s;
-    lh__scan_init(&s, f, NULL, 0, name ? name : "<input>", msg, msg_size);
-    cells_ctx x = {&s, out, 0, 0, n_points, 0, 0};
+    lh__scan *s = lh__scan_open(f, 0, &out->alloc_, name ? name : "<input>", msg, msg_size);
+    if (!s) {
+        lh_cells_free(out);
+        return LH_ERR_NOMEM;
+    }
+    cells_ctx x = {s, out, 0, 0, n_points, 0, 0};
     lh_status st = read_header(&x);
     for (size_t i = 0; st == LH_OK && i < x.declared; i++) {
         st = read_cell(&x, i);
     }
     lh__token t;
-    if (st == LH_OK) lh__scan_next(&s, 1, &t);
+    if (st == LH_OK) lh__scan_next(s, 1, &t);
     if (st == LH_OK && t.kind != LH__TOK_EOF) {
         char what[80];
         snprintf(what, sizeof what, "the end of the input after %zu cell%s", x.declared, x.declared == 1 ? "" : "s");
-        st = lh__expected(&s, LH_ERR_PARSE, &t, what, NULL);
+        st = lh__expected(s, LH_ERR_PARSE, &t, what, NULL);
     }
+    lh__scan_close(s);
     if (st != LH_OK) lh_cells_free(out);
     return st;
 }

@@ -38,9 +38,12 @@ typedef struct lh__token {
 } lh__token;
 
 #define LH__SCAN_BLOCK 16384 /* bytes the scanner reads from the FILE at a time */
+#define LH__READ_MAX_ATTR 1000 /* attributes a .node or .poly vertex may have */
 
 /* Invariant: c is the byte at (line, col), or EOF past the end; bytes come from
- * pre[pre_pos..pre_len) first, then from f through block[block_pos..block_len). */
+ * pre[pre_pos..pre_len) first, then from f through block[block_pos..block_len).
+ * It lives on the heap (lh__scan_open): the block and the scratch are too large for
+ * the stack of a caller's thread, which may be small. */
 typedef struct lh__scan {
     FILE *f;
     const unsigned char *pre;
@@ -55,11 +58,19 @@ typedef struct lh__scan {
     const char *name;
     char *msg;
     size_t msg_size;
+    lh_allocator al;                   /* what lh__scan_close frees it with */
+    unsigned char head[LH__IO_PREFIX]; /* the bytes read ahead: pre points here */
+    double attr[LH__READ_MAX_ATTR];    /* the readers' scratch: one item's attributes */
 } lh__scan;
 
-/* Starts scanning (pre: the bytes already read from f; a UTF-8 BOM there is skipped). */
-void lh__scan_init(lh__scan *s, FILE *f, const unsigned char *pre, size_t pre_len,
-                   const char *name, char *msg, size_t msg_size);
+/* Starts scanning f on a scanner allocated with al: the first pre_want bytes (at most
+ * LH__IO_PREFIX) are read ahead into s->head, s->pre_len of them (a UTF-8 BOM there
+ * is skipped). NULL when out of memory, with "NAME:1:1: out of memory for the input
+ * buffer" in msg. */
+lh__scan *lh__scan_open(FILE *f, size_t pre_want, const lh_allocator *al, const char *name,
+                        char *msg, size_t msg_size);
+/* Frees s (NULL: nothing). */
+void lh__scan_close(lh__scan *s);
 void lh__scan_advance(lh__scan *s);
 /* Skips blanks and '#' comments, across line ends when cross_lines. */
 void lh__scan_skip(lh__scan *s, int cross_lines);

@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#define MAX_ATTRIBUTES 1000
+#define MAX_ATTRIBUTES LH__READ_MAX_ATTR
 
 /* An optional small integer field of the header (lo..hi); EOL/EOF leave *v at 0 and
  * set *ended. */
@@ -127,9 +127,8 @@ lh_status lh__read_node(lh__scan *s, lh__builder *b)
     lh_status st = read_header(s, b, &n);
     if (st != LH_OK) return st;
     b->expected = n;
-    double attr[MAX_ATTRIBUTES];
     for (size_t i = 0; i < n; i++) {
-        st = read_point(s, b, i, n, attr);
+        st = read_point(s, b, i, n, s->attr);
         if (st != LH_OK) return st;
     }
     lh__token t;

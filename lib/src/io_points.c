@@ -107,18 +107,19 @@ lh_status lh_points_read(FILE *f, const char *name, lh_format format,
     if (!f || format < LH_FORMAT_AUTO || format > LH_FORMAT_COLUMNS) return LH_ERR_INVALID_ARGUMENT;
     if (!lh__allocator_init(&out->alloc_, alloc)) return LH_ERR_INVALID_ARGUMENT;
     if (!name) name = "<input>";
-    unsigned char pre[LH__IO_PREFIX];
-    size_t len = 0;
-    int c;
-    while (len < sizeof pre && (c = getc(f)) != EOF) pre[len++] = (unsigned char)c;
-    if (format == LH_FORMAT_AUTO) format = lh__format_detect(name, pre, len, len < sizeof pre);
+    lh__scan *s = lh__scan_open(f, LH__IO_PREFIX, &out->alloc_, name, msg, msg_size);
+    if (!s) {
+        lh_points_free(out);
+        return LH_ERR_NOMEM;
+    }
+    if (format == LH_FORMAT_AUTO)
+        format = lh__format_detect(name, s->head, s->pre_len, s->pre_len < LH__IO_PREFIX);
     out->format = format;
-    lh__scan s;
-    lh__scan_init(&s, f, pre, len, name, msg, msg_size);
     lh__builder b = {out, &out->alloc_, 0, 0, 0};
-    lh_status st = format == LH_FORMAT_QHULL  ? lh__read_qhull(&s, &b)
-                   : format == LH_FORMAT_NODE ? lh__read_node(&s, &b)
-                                              : lh__read_columns(&s, &b);
+    lh_status st = format == LH_FORMAT_QHULL  ? lh__read_qhull(s, &b)
+                   : format == LH_FORMAT_NODE ? lh__read_node(s, &b)
+                                              : lh__read_columns(s, &b);
+    lh__scan_close(s);
     if (st != LH_OK) lh_points_free(out);
     return st;
 }

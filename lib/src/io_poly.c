@@ -28,7 +28,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#define MAX_ATTRIBUTES 1000
+#define MAX_ATTRIBUTES LH__READ_MAX_ATTR
 
 /* ---- shared by the PSLG readers ---------------------------------------------------- */
 
@@ -58,13 +58,12 @@ lh_status lh__pslg_start(FILE *f, const lh_allocator *alloc, lh_pslg *out, char 
     return LH_OK;
 }
 
-void lh__pslg_scan_init(lh__scan *s, FILE *f, unsigned char *pre, const char *name,
-                        char *msg, size_t msg_size)
+lh__scan *lh__pslg_scan_open(FILE *f, lh_pslg *out, const char *name, char *msg,
+                             size_t msg_size)
 {
-    size_t len = 0;
-    int c;
-    while (len < LH__PSLG_PRE && (c = getc(f)) != EOF) pre[len++] = (unsigned char)c;
-    lh__scan_init(s, f, pre, len, name ? name : "<input>", msg, msg_size);
+    lh__scan *s = lh__scan_open(f, LH__PSLG_PRE, &out->alloc_, name ? name : "<input>", msg, msg_size);
+    if (!s) lh_pslg_free(out);
+    return s;
 }
 
 lh_status lh__pslg_room(lh__scan *s, const lh_allocator *a, const lh__pslg_col *cols,
@@ -368,8 +367,7 @@ static lh_status read_poly(poly_ctx *x)
     lh__token t;
     int ended = 0;
     lh_status st = read_header(s, g, &x->v.declared, &x->vertex_markers);
-    double attr[MAX_ATTRIBUTES];
-    for (size_t i = 0; st == LH_OK && i < x->v.declared; i++) st = read_vertex(x, i, attr);
+    for (size_t i = 0; st == LH_OK && i < x->v.declared; i++) st = read_vertex(x, i, s->attr);
     if (st != LH_OK) return st;
     lh__scan_next(s, 1, &t);
     st = read_count(s, &t, "the number of segments", 0, &x->seg.declared);
@@ -404,12 +402,12 @@ lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_
 {
     lh_status st = lh__pslg_start(f, alloc, out, msg, msg_size);
     if (st != LH_OK) return st;
-    unsigned char pre[LH__PSLG_PRE];
-    lh__scan s;
-    lh__pslg_scan_init(&s, f, pre, name, msg, msg_size);
-    poly_ctx x = {&s, out, {"vertex", "vertices", 0, 0}, {"segment", "segments", 0, 0},
+    lh__scan *s = lh__pslg_scan_open(f, out, name, msg, msg_size);
+    if (!s) return LH_ERR_NOMEM;
+    poly_ctx x = {s, out, {"vertex", "vertices", 0, 0}, {"segment", "segments", 0, 0},
                   {"hole", "holes", 0, 0}, {"region", "regions", 0, 0}, 0, 0, 0};
     st = read_poly(&x);
+    lh__scan_close(s);
     if (st != LH_OK) {
         lh_pslg_free(out);
         return st;

@@ -29,10 +29,11 @@ lh_status lh__pslg_room(lh__scan *s, const lh_allocator *a, const lh__pslg_col *
 lh_status lh__pslg_start(FILE *f, const lh_allocator *alloc, lh_pslg *out, char *msg,
                          size_t msg_size);
 
-/* Starts s on f: the first bytes are read ahead so that a UTF-8 BOM is skipped (pre
- * holds them, LH__PSLG_PRE bytes, and must live as long as s). */
+/* A scanner on f with out's allocator (lh__scan_open): the first LH__PSLG_PRE bytes
+ * are read ahead so that a UTF-8 BOM is skipped. NULL when out of memory: then out
+ * is freed (lh_pslg_free) and msg says so. */
 #define LH__PSLG_PRE 3
-void lh__pslg_scan_init(lh__scan *s, FILE *f, unsigned char *pre, const char *name,
-                        char *msg, size_t msg_size);
+lh__scan *lh__pslg_scan_open(FILE *f, lh_pslg *out, const char *name, char *msg,
+                             size_t msg_size);
 
 #endif

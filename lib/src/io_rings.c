@@ -232,11 +232,11 @@ lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh
 {
     lh_status st = lh__pslg_start(f, alloc, out, msg, msg_size);
     if (st != LH_OK) return st;
-    unsigned char pre[LH__PSLG_PRE];
-    lh__scan s;
-    lh__pslg_scan_init(&s, f, pre, name, msg, msg_size);
-    rings_ctx x = {&s, out, 0, 0};
+    lh__scan *s = lh__pslg_scan_open(f, out, name, msg, msg_size);
+    if (!s) return LH_ERR_NOMEM;
+    rings_ctx x = {s, out, 0, 0};
     st = read_rings(&x);
+    lh__scan_close(s);
     if (st != LH_OK) {
         lh_pslg_free(out);
         return st;

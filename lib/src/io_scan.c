@@ -6,6 +6,7 @@
 
 #include <limits.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -28,21 +29,39 @@ static inline int fetch(lh__scan *s)
     return refill(s);
 }
 
-void lh__scan_init(lh__scan *s, FILE *f, const unsigned char *pre, size_t pre_len,
-                   const char *name, char *msg, size_t msg_size)
+lh__scan *lh__scan_open(FILE *f, size_t pre_want, const lh_allocator *al, const char *name,
+                        char *msg, size_t msg_size)
 {
-    memset(s, 0, sizeof *s);
+    lh__scan *s = lh__alloc(al, sizeof *s);
+    if (!s) {
+        if (msg && msg_size) snprintf(msg, msg_size, "%s:1:1: out of memory for the input buffer", name);
+        return NULL;
+    }
+    memset(s, 0, offsetof(lh__scan, head));
+    s->al = *al;
+    size_t len = 0;
+    int c;
+    while (len < pre_want && len < sizeof s->head && (c = getc(f)) != EOF)
+        s->head[len++] = (unsigned char)c;
     s->f = f;
-    s->pre = pre;
-    s->pre_len = pre_len;
+    s->pre = s->head;
+    s->pre_len = len;
     /* The UTF-8 encoding of U+FEFF, which some editors put first (RFC 3629, 6). */
-    if (pre_len >= 3 && pre[0] == 0xEF && pre[1] == 0xBB && pre[2] == 0xBF) s->pre_pos = 3;
+    if (len >= 3 && s->head[0] == 0xEF && s->head[1] == 0xBB && s->head[2] == 0xBF) s->pre_pos = 3;
     s->name = name;
     s->msg = msg;
     s->msg_size = msg_size;
     s->line = 1;
     s->col = 1;
     s->c = fetch(s);
+    return s;
+}
+
+void lh__scan_close(lh__scan *s)
+{
+    if (!s) return;
+    const lh_allocator al = s->al;
+    lh__free(&al, s);
 }
 
 static inline void advance(lh__scan *s)

@@ -1,8 +1,9 @@
 #!/bin/bash
 # outputs.sh LIFTHULL DATA — the output files of every command (cli/outfile.h): all
 # targets checked before the input is read; a set of files (.node .ele .neigh ...)
-# written whole, together or not at all; no temporary file left after a failure or a
-# signal; a file replaced with -f keeps its mode. DATA: tests/data/triangle.
+# written whole, together or not at all; no temporary file left after a failure; a
+# file replaced with -f keeps its mode; binary and ASCII .vtu. Signals and progress:
+# tests/cli/outputs_slow.sh. DATA: tests/data/triangle.
 source "$(dirname "$0")/harness.sh"
 
 printf '2\n5\n0 0\n1 0\n0 1\n1 1\n0.5 0.5\n' > p.txt
@@ -75,26 +76,6 @@ same "mode 751 kept" "$(stat -c %a rx.txt)" 751
 (umask 027; "$lh" points 5 -o new.txt)
 same "a new file: 0666 less the umask" "$(stat -c %a new.txt)" 640
 
-# ---- signals: the temporaries go, the old file stays, the signal ends the process --
-# SIGXFSZ, deterministic: the write passes the file size limit.
-old big.msh
-{ (ulimit -f 20; exec "$lh" delaunay g.txt -o big.msh -f) > out.txt 2> err.txt; } 2> /dev/null; rc=$?
-same "killed by SIGXFSZ" "$rc" $((128 + 25))
-content "big.msh untouched" big.msh OLD; notemp "SIGXFSZ"
-# SIGTERM and SIGINT while a large file is written: stopped once its temporary exists.
-"$lh" points 200000 -d 3 -o c.txt
-for sig in TERM INT; do
-  old big.msh
-  set -m # a job of its own: SIGINT is not ignored as in a background job without it
-  "$lh" delaunay -q c.txt -o big.msh -f 2> err.txt & pid=$!
-  set +m
-  for _ in $(seq 600); do ls big.msh.tmp?????? > /dev/null 2>&1 && break; sleep 0.05; done
-  kill -STOP $pid; kill -$sig $pid; kill -CONT $pid; wait $pid; rc=$?
-  if [ "$rc" -eq 0 ]; then echo "SIG$sig came after the file was complete: not checked"; rm -f big.msh; continue; fi
-  same "SIG$sig: exit" "$rc" $((128 + $(kill -l $sig)))
-  content "SIG$sig: big.msh untouched" big.msh OLD; notemp "SIG$sig"
-done
-
 # ---- .vtu: binary by default (base64 inline), --ascii as text; the same mesh --------
 "$lh" points 300 -d 3 -o c3.txt
 expect "delaunay -o vtu" 0 '' '' -- "$lh" delaunay c3.txt -o b.vtu
@@ -145,25 +126,6 @@ for b, a in (("b.vtu", "a.vtu"), ("la.vtu", "la-a.vtu")):
             name = da.GetArrayName(i)
             assert np.array_equal(arr(db.GetArray(name)), arr(da.GetArray(name))), (b, name)
 PY
-fi
-
-# ---- progress: reading and writing show a line too (on a terminal, after 2 s) -------
-# A FIFO fed slowly makes reading take 3 s; one drained slowly, writing (the output
-# is larger than a pipe's buffer). `script` gives the command a terminal.
-if command -v script > /dev/null; then
-  "$lh" points 3000 -d 3 -o p3k.txt
-  slow_read() { mkfifo slow.txt; ( printf '3\n4\n0 0 0\n'; sleep 3; printf '1 0 0\n0 1 0\n0 0 1\n' ) > slow.txt & }
-  slow_drain() { mkfifo out.fifo; ( exec 3< out.fifo; sleep 3; cat <&3 > /dev/null ) & }
-  slow_read; script -qefc "'$lh' delaunay slow.txt -o s.vtu -f" /dev/null > tty.txt; wait; rm -f slow.txt
-  grep -q 'lifthull delaunay: reading slow.txt, [23] s' tty.txt && ok || bad "no reading progress: $(cat -v tty.txt)"
-  slow_drain; script -qefc "'$lh' delaunay p3k.txt -o out.fifo -f" /dev/null > tty.txt; wait; rm -f out.fifo
-  grep -q 'lifthull delaunay: writing out.fifo, [23] s' tty.txt && ok || bad "no writing progress: $(cat -v tty.txt)"
-  slow_drain; script -qefc "'$lh' delaunay -q p3k.txt -o out.fifo -f" /dev/null > tty.txt; wait; rm -f out.fifo
-  grep -q 'writing' tty.txt && bad "-q: progress shown: $(cat -v tty.txt)" || ok
-  slow_read; "$lh" delaunay slow.txt -o s.vtu -f 2> err.txt; wait; rm -f slow.txt
-  [ -s err.txt ] && bad "not a terminal: progress shown: $(cat -v err.txt)" || ok
-else
-  echo "script not found: the progress lines not checked (Debian: util-linux)"
 fi
 
 notemp "the end"

@@ -235,6 +235,16 @@ same "-v at +-2^1023: the rays' directions" "$(awk '$3 == -1 { printf "%s %s;", 
   "-8.9884656743115795e+307 0;0 -8.9884656743115795e+307;0 8.9884656743115795e+307;8.9884656743115795e+307 0;"
 same "-o2 at +-2^1023: midpoints" "$(awk 'NR > 5 { printf "%s %s;", $2, $3 }' big.1.node)" \
   "0 0;-8.9884656743115795e+307 0;0 -8.9884656743115795e+307;0 8.9884656743115795e+307;8.9884656743115795e+307 0;"
+# a circumcentre past DBL_MAX is written with all its digits, never inf (docs/meshing.md):
+# (0, (1e600 - 1e616) / 2e300) for the flat triangle; a needle at unit scale (its cross
+# product from the first vertex cancels to 0) gets its centre (-1, 2) to within ulps
+printf '4 2 0 0\n1 -1e308 0\n2 1e308 0\n3 0 1e300\n4 0 1e305\n' > far.node
+expect "-v past DBL_MAX" 0 '' '' -- "$lh" triangle -vQ far.node
+same "-v past DBL_MAX: the centres" "$(awk 'NR > 1 { printf "%s %s;", $2, $3 }' far.1.v.node)" \
+  "0 -4.9999999999999993e+315;-5.0000000000499988e+307 5.0000499988205894e+304;5.0000000000499988e+307 5.0000499988205894e+304;"
+printf '3 2 0 0\n1 0 0\n2 1 1.0000000000000002\n3 0.99999999999999989 1\n' > needle.node
+expect "-v needle" 0 '' '' -- "$lh" triangle -vQ needle.node
+same "-v needle: the centre" "$(awk 'NR > 1 { printf "%s %s;", $2, $3 }' needle.1.v.node)" "-1.0000000000000004 2.0000000000000004;"
 cd ..
 
 finish

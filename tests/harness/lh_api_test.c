@@ -62,3 +62,25 @@ long lh_test_every_failure(lh_test_state *lh_t_, lh_test_alloc_run run, const vo
         }
     }
 }
+
+typedef struct thread_run {
+    lh_test_state *t;
+    lh_test_alloc_run run;
+    const void *user;
+    lh_status st;
+} thread_run;
+
+static void *run_thread(void *arg)
+{
+    thread_run *r = arg;
+    r->st = r->run(r->t, NULL, r->user);
+    return NULL;
+}
+
+lh_status lh_test_run_on_thread(lh_test_state *lh_t_, lh_test_alloc_run run, const void *user,
+                                size_t *stack)
+{
+    thread_run r = {lh_t_, run, user, LH_ERR_INTERNAL};
+    *stack = lh_test_stack_used(run_thread, &r);
+    return r.st;
+}

@@ -21,6 +21,12 @@ typedef lh_status (*lh_test_alloc_run)(lh_test_state *lh_t_, const lh_allocator 
  * number of runs. */
 long lh_test_every_failure(lh_test_state *lh_t_, lh_test_alloc_run run, const void *user);
 
+/* Runs `run` with the default allocator on a thread of its own: its status, and in
+ * *stack the bytes of stack it used (lh_test_stack_used; 0 when no thread ran, then
+ * LH_ERR_INTERNAL). */
+lh_status lh_test_run_on_thread(lh_test_state *lh_t_, lh_test_alloc_run run, const void *user,
+                                size_t *stack);
+
 /* A PSLG reader (lh_poly_read, lh_rings_read, ...). */
 typedef lh_status (*lh_test_pslg_reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, char *, size_t);
 /* Reads dir/path with rd: the reader's status (LH_ERR_IO when it cannot be opened). */

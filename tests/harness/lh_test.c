@@ -1,9 +1,23 @@
 /* lh_test.c — runner and reporters for lh_test.h. */
+#define _POSIX_C_SOURCE 200809L /* pthread_attr_setstack */
 #include "lh_test.h"
 
+#include <pthread.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* Under valgrind a finished thread's stack is no longer addressable: reading its
+ * paint back needs it declared defined again (memcheck's client request). */
+#if defined(__has_include)
+#if __has_include(<valgrind/memcheck.h>)
+#include <valgrind/memcheck.h>
+#define LH_TEST_MAKE_DEFINED(p, n) VALGRIND_MAKE_MEM_DEFINED(p, n)
+#endif
+#endif
+#ifndef LH_TEST_MAKE_DEFINED
+#define LH_TEST_MAKE_DEFINED(p, n) ((void)0)
+#endif
 
 enum { LH_TEST_MAX_REPORTS = 20 }; /* failure lines printed per test, then quiet */
 
@@ -139,4 +153,36 @@ void lh_test_counting_free(void *user, void *ptr)
     lh_test_counter *c = user;
     if (ptr) c->live--;
     free(ptr);
+}
+
+static void *nothing(void *arg) { return arg; }
+
+/* Bytes of a painted stack that fn(arg) on a thread touched; 0 on failure. */
+static size_t painted_use(void *(*fn)(void *), void *arg)
+{
+    enum { SIZE = 1 << 20, PAINT = 0xA5 };
+    unsigned char *stack = aligned_alloc(4096, SIZE);
+    if (!stack) return 0;
+    memset(stack, PAINT, SIZE);
+    pthread_attr_t attr;
+    pthread_t th;
+    size_t used = 0;
+    if (pthread_attr_init(&attr) == 0) {
+        if (pthread_attr_setstack(&attr, stack, SIZE) == 0 && pthread_create(&th, &attr, fn, arg) == 0 &&
+            pthread_join(th, NULL) == 0) {
+            LH_TEST_MAKE_DEFINED(stack, SIZE);
+            size_t low = 0; /* the stack grows down from stack + SIZE */
+            while (low < SIZE && stack[low] == PAINT) low++;
+            used = SIZE - low;
+        }
+        pthread_attr_destroy(&attr);
+    }
+    free(stack);
+    return used;
+}
+
+size_t lh_test_stack_used(void *(*fn)(void *), void *arg)
+{
+    const size_t base = painted_use(nothing, NULL), used = painted_use(fn, arg);
+    return base && used > base ? used - base : 0;
 }

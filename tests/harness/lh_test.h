@@ -63,6 +63,10 @@ void lh_test_counting_free(void *user, void *ptr);
 /* A temporary file holding text[0..len) (NUL bytes allowed), rewound; NULL when the
  * system has no temporary files. The caller fcloses it (which removes it). */
 FILE *lh_test_file(const char *text, size_t len);
+/* The bytes of stack fn(arg) uses on a thread of its own, beyond what a thread that
+ * does nothing uses (the thread's 1 MiB stack is painted first; the bytes no longer
+ * painted were touched); 0 when the thread cannot be run. */
+size_t lh_test_stack_used(void *(*fn)(void *), void *arg);
 
 /* Adds a free-form note (e.g. the seed or the failing case) to the current test's
  * failure output. printf-style. */
