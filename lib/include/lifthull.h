@@ -973,8 +973,8 @@ LH_API const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
  * on d scaled back by 2^e is the same double as on the plain differences wherever
  * those neither over- nor underflow, and no square or product of d over- or
  * underflows for points near +-DBL_MAX, near 1e-300, or both. For finite points. */
-int lh_triangle_scaled_edges(const double a[2], const double b[2], const double c[2],
-                             double d[3][2]);
+LH_API int lh_triangle_scaled_edges(const double a[2], const double b[2], const double c[2],
+                                    double d[3][2]);
 
 /*
  * lh_check_trimesh: exact check of a 2D triangulation of a domain — points (n, xy),

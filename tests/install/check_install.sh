@@ -24,7 +24,11 @@ test "$soname" = "liblifthull.so.$(lifthull_ver="$("$tmp/prefix/bin/lifthull" --
   { echo "install: SONAME $soname" >&2; exit 1; }
 others="$(nm -D --defined-only "$so" | awk '{ print $3 }' | grep -v '^lh_[a-z]' || true)"
 test -z "$others" || { echo "install: liblifthull.so exports more than lh_ functions:" $others >&2; exit 1; }
-nm -D --defined-only "$so" | awk '{ print $3 }' | grep -q '^lh_delaunay$'
+# every function lifthull.h marks LH_API is exported
+api="$(grep -o 'LH_API [^(]*(' "$tmp/prefix/include/lifthull.h" | grep -o 'lh_[a-z0-9_]*($' | tr -d '(' | sort)"
+exported="$(nm -D --defined-only "$so" | awk '{ print $3 }' | sort)"
+test -n "$api" && test "$api" = "$exported" ||
+  { echo "install: LH_API functions and liblifthull.so's exports differ:" >&2; diff <(echo "$api") <(echo "$exported") >&2; exit 1; }
 
 for shared in OFF ON; do
   CC="$cc" cmake -S "$here" -B "$tmp/cmake-consumer-$shared" -DCMAKE_PREFIX_PATH="$tmp/prefix" \
