@@ -4,9 +4,10 @@
  *
  * Coplanar points (Fc, FP) are exact here: for qconvex the sites that are not
  * vertices and lie exactly on a facet's hyperplane (each with the first such
- * facet), for qdelaunay the merged duplicates (with the first facet of the site they
- * were merged into). Facet ids are the output's facet numbers (FI prints them); no
- * facet is ever merged, so Fm prints 0 for each.
+ * facet), for qdelaunay and qvoronoi the merged duplicates (with the first facet of
+ * the site they were merged into). Facet ids are the output's facet numbers (FI
+ * prints them; qvoronoi's Voronoi vertex v >= 1 is facet v - 1); no facet is ever
+ * merged, so Fm prints 0 for each.
  */
 #include "qhull.h"
 #include "qhull_print.h"
@@ -152,6 +153,11 @@ int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d)
             d + 1 > LH_ORIENT_MAX_DIM) {
             fprintf(stderr, "lifthull %s: option '%s': the lifted facets' normals are for at most "
                     "%d-d input\n", o->name, w, LH_ORIENT_MAX_DIM - 1);
+            return 0;
+        }
+        if (!strcmp(w, "G") && o->prog == LH_QPROG_VORONOI && d != 2) {
+            fprintf(stderr, "lifthull qvoronoi: option 'G': Geomview output for Voronoi diagrams "
+                    "only for 2-d (Qhull's rule; here %d-d)\n", d);
             return 0;
         }
         if ((strcmp(w, "m") && strcmp(w, "FM") && strcmp(w, "G")) ||

@@ -10,7 +10,7 @@
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
 static const char *const outputs[4] = {
     "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
-    "o p s i Fi Fo Fv Fn FN Fs Fx",
+    "o p s i Fi Fo Fv Fn FN Fs Fx FI Fc FP G",
     "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
     "s i Fp Fx Fv",
 };
@@ -96,7 +96,7 @@ static void help(const lh_cli_qopts *o)
            o->name, o->name, o->name, outputs[o->prog],
            o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "",
            o->prog == LH_QPROG_VORONOI ? "" : "  FA        total area (and volume) in the summary 's'\n",
-           o->prog == LH_QPROG_VORONOI ? "" : "; FD: cdd's format for n, Fi, Fo, p",
+           o->prog == LH_QPROG_VORONOI ? "; FD: cdd's format for p" : "; FD: cdd's format for n, Fi, Fo, p",
            o->prog == LH_QPROG_VORONOI ? "" :
            "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
            "  PAn       print the n largest facets (Pg); PG: their other neighbours\n",
@@ -203,7 +203,12 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
                 "once, exactly, as with 'Tv'\n", o->name);
         return o->verify = 1;
     }
-    if (!strcmp(w, "FD") && facets) return o->cdd = 1;
+    if (!strcmp(w, "FD") && !half) return o->cdd = 1;
+    if ((!strcmp(w, "m") || !strcmp(w, "FM")) && o->prog == LH_QPROG_VORONOI) {
+        fprintf(stderr, "lifthull qvoronoi: option '%s' is not used with qvoronoi (as in Qhull: "
+                "Mathematica and Maple output are for qconvex and qdelaunay)\n", w);
+        return 0;
+    }
     int pf = print_filter(o, w);
     if (pf) return pf > 0;
     if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) {

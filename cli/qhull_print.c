@@ -305,9 +305,11 @@ static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
 
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
-    if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "i") &&
-        strcmp(opt, "Fs") && strcmp(opt, "Fx"))
-        return lh_cli_qprint_voronoi(f, o, mo, opt);
+    static const char *const facet_formats[] = {"s", "Fn", "i", "Fs", "Fx", "FI", "Fc", "FP"};
+    int as_facets = 0; /* qvoronoi prints these of the Delaunay facets, as Qhull */
+    for (size_t k = 0; k < sizeof facet_formats / sizeof facet_formats[0]; k++)
+        as_facets |= !strcmp(opt, facet_formats[k]);
+    if (o->prog == LH_QPROG_VORONOI && !as_facets) return lh_cli_qprint_voronoi(f, o, mo, opt);
     if (!strcmp(opt, "i")) print_i(f, mo);
     else if (!strcmp(opt, "Fv")) print_fv(f, mo);
     else if (!strcmp(opt, "Fn")) print_fn(f, mo);

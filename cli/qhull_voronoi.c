@@ -215,7 +215,10 @@ static size_t cells_once(const lh_index *rep, lh_index *list, size_t count)
     return w;
 }
 
-static int print_regions(FILE *f, const lh_cli_qmodel *mo)
+/* 'o': each region's Voronoi vertices, 0 (infinity) last for an unbounded one; 'G'
+ * (geom): without 0, a comment naming the site, and a site that is no vertex (a
+ * merged duplicate) as Qhull's "coplanar or isolated" line. */
+static int print_regions(FILE *f, const lh_cli_qmodel *mo, int geom)
 {
     lh_index *list = malloc((mo->m ? mo->m : 1) * sizeof *list), *rep = cell_reps(mo);
     if (!list || !rep) {
@@ -234,8 +237,14 @@ static int print_regions(FILE *f, const lh_cli_qmodel *mo)
         }
         if (count && mo->d == 2) count = cyclic_2d(mo, (lh_index)i, list);
         count = cells_once(rep, list, count); /* a cell's simplices are consecutive in 2D */
+        if (geom && !count) {
+            fprintf(f, " # p%zu is coplanar or isolated\n", i);
+            continue;
+        }
+        unbounded &= !geom;
         fprintf(f, "%zu", count + (count && unbounded));
         for (size_t c = 0; c < count; c++) fprintf(f, " %" LH_INDEX_PRI, list[c] + 1);
+        if (geom) fprintf(f, " # p%zu", i);
         fputs(count && unbounded ? " 0\n" : "\n", f);
     }
     free(list);
@@ -279,29 +288,64 @@ static int print_neighbors(FILE *f, const lh_cli_qmodel *mo)
     return 1;
 }
 
+/* Voronoi vertex s + 1: the circumcentre of simplex s, c 2^e (finite where the
+ * centre passes DBL_MAX), "%6.16g " each coordinate. */
+static void centre(FILE *f, const lh_cli_qmodel *mo, size_t s)
+{
+    double m[LH_DELAUNAY_MAX_DIM];
+    int e;
+    lh_tri_circumcenter_exp(mo->tri, s, m, &e);
+    lh_cli_qcoords_scaled(f, m, e, mo->d);
+}
+
+/* G (2-d only, lh_cli_qcheck_outputs): Qhull's picture of the Voronoi diagram, one
+ * OFF object whose vertices are the Voronoi vertices (0: infinity, at the origin and
+ * "not used") and whose faces are the sites' regions without infinity; the comment
+ * "# v f<id>" names the Delaunay facet (FI's id) of Voronoi vertex v. */
+static int print_geomview(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
+{
+    fprintf(f, "{appearance {linewidth 3} LIST # %s\n", o->command);
+    fprintf(f, "{appearance {+edge -face} OFF %zu %zu 1 # Voronoi centers and cells\n", mo->m + 1,
+            lh_cli_qvertex_count(mo));
+    fprintf(f, "%6.16g %6.16g  0 # infinity not used\n", 0.0, 0.0);
+    for (size_t s = 0; s < mo->m; s++) {
+        fprintf(f, "# %zu f%zu\n", s + 1, s);
+        centre(f, mo, s);
+        fputs(" 0\n", f);
+    }
+    if (!print_regions(f, mo, 1)) return 0;
+    fputs("}\n}\n", f);
+    return 1;
+}
+
 int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
-    (void)o;
     const int d = mo->d;
     if (!strcmp(opt, "FN")) return print_neighbors(f, mo);
+    if (!strcmp(opt, "G")) return print_geomview(f, o, mo);
     if (!strcmp(opt, "p") || !strcmp(opt, "o")) {
-        int full = opt[0] == 'o';
-        fprintf(f, "%d\n", d);
+        int full = opt[0] == 'o', cdd = o->cdd && !full;
+        if (full && o->cdd)
+            fprintf(stderr, "lifthull qvoronoi: option 'FD': cdd's format is not available for "
+                    "'o' (OFF format; as in Qhull)\n");
+        if (cdd) /* FD: cdd's format, a 1 before each point */
+            fprintf(f, "%s\nbegin\n%zu %d real\n", o->command, mo->m, d + 1);
+        else
+            fprintf(f, "%d\n", d);
         if (full) {
             fprintf(f, "%zu %zu 1\n", mo->m + 1, mo->n);
             for (int j = 0; j < d; j++) fprintf(f, "%6.16g ", -10.101);
             fputc('\n', f);
-        } else {
+        } else if (!cdd) {
             fprintf(f, "%zu\n", mo->m);
         }
-        for (size_t s = 0; s < mo->m; s++) { /* c 2^e: finite where the centre passes DBL_MAX */
-            double m[LH_DELAUNAY_MAX_DIM];
-            int e;
-            lh_tri_circumcenter_exp(mo->tri, s, m, &e);
-            lh_cli_qcoords_scaled(f, m, e, d);
+        for (size_t s = 0; s < mo->m; s++) {
+            if (cdd) fputs("1 ", f);
+            centre(f, mo, s);
             fputc('\n', f);
         }
-        return full ? print_regions(f, mo) : 1;
+        if (cdd) fputs("end\n", f);
+        return full ? print_regions(f, mo, 0) : 1;
     }
     return print_ridges(f, mo, !strcmp(opt, "Fv") ? 'v' : !strcmp(opt, "Fi") ? 'i' : 'o');
 }

@@ -1,0 +1,191 @@
+#!/usr/bin/env python3
+"""qvoronoi's FI, FD, Fc, FP and G (issue 30 item 15) against Qhull 2020.2's qvoronoi:
+
+  qvoronoi_extras.py LIFTHULL [-v]
+
+On rbox sets in general position: FI lists one facet id per Voronoi vertex (lifthull's are
+the Delaunay facets' numbers 0..m-1, Qhull's its internal ids: only the count is compared);
+FD p prints the Voronoi vertices in cdd's format (rows equal as multisets to 1e-9); FD leaves
+Fi, Fo and Fv as they are. Fc and FP on a set with a repeated site: the duplicate is the
+coplanar point of the site it repeats (the facet it is listed with may differ: Qhull's is
+the one its partition ended in; Qhull may keep the later copy as the vertex). G: the same frame, Voronoi vertices (as a multiset) and
+regions (as cycles of vertex positions, either direction) as Qhull's; refused as Qhull does
+in 3-d; m and FM refused as Qhull does. Exit 0 when all passed, 1 otherwise, 77 without
+Qhull's programs.
+"""
+
+import re
+import shutil
+import subprocess
+import sys
+
+FAILS = []
+PASSES = [0]
+VERBOSE = [False]
+
+
+def check(name, cond, detail=""):
+    if cond:
+        PASSES[0] += 1
+        if VERBOSE[0]:
+            print("PASS", name)
+    else:
+        FAILS.append(name)
+        print("FAIL", name, detail)
+
+
+def run(cmd, text):
+    p = subprocess.run(cmd, input=text, capture_output=True, text=True)
+    return p.returncode, p.stdout, p.stderr
+
+
+def rbox(spec):
+    return subprocess.run(["rbox"] + spec.split(), capture_output=True, text=True, check=True).stdout
+
+
+def cdd_rows(out):
+    lines = out.split("\n")
+    b, e = lines.index("begin"), lines.index("end")
+    head = lines[b + 1].split()
+    rows = [tuple(float(x) for x in l.split()) for l in lines[b + 2:e]]
+    return (int(head[0]), int(head[1]), head[2]), rows
+
+
+def same_rows(a, b, tol):
+    """Rows of numbers equal as multisets within tol (relative to the row's size)."""
+    if len(a) != len(b):
+        return False
+    left = sorted(b)
+    for r in sorted(a):
+        scale = max([1.0] + [abs(x) for x in r])
+        j = next((j for j, q in enumerate(left) if all(abs(x - y) <= tol * scale for x, y in zip(r, q))), None)
+        if j is None:
+            return False
+        left.pop(j)
+    return True
+
+
+def key(p):
+    return tuple(round(x, 6) for x in p)
+
+
+def canon_cycle(c):
+    """A cycle up to rotation and direction."""
+    if not c:
+        return ()
+    forms = []
+    for seq in (c, c[::-1]):
+        forms += [tuple(seq[i:] + seq[:i]) for i in range(len(seq))]
+    return min(forms)
+
+
+def geom(out):
+    """qvoronoi G: (header counts, Voronoi vertices, regions as cycles of positions, the
+    sites that are 'coplanar or isolated')."""
+    lines = out.rstrip("\n").split("\n")
+    m = re.match(r"\{appearance \{\+edge -face\} OFF (\d+) (\d+) 1 # Voronoi centers and cells$", lines[1])
+    nv, nf = int(m.group(1)), int(m.group(2))
+    body = [l for l in lines[2:] if not l.startswith("# ")]
+    verts = [tuple(float(x) for x in l.split("#")[0].split()) for l in body[:nv]]
+    regions, isolated = [], []
+    for l in body[nv:]:
+        if l == "}":
+            continue
+        if "is coplanar or isolated" in l:
+            isolated.append(int(re.search(r"p(\d+)", l).group(1)))
+            continue
+        w = [int(x) for x in l.split("#")[0].split()]
+        assert w[0] == len(w) - 1
+        site = int(re.search(r"# p(\d+)", l).group(1))
+        regions.append((site, canon_cycle([key(verts[v][:2]) for v in w[1:]])))
+    assert verts[0] == (0.0, 0.0, 0.0)
+    return (nv, nf), sorted(key(v) for v in verts[1:]), sorted(regions), isolated, lines[0], lines[-2:]
+
+
+def general(lh):
+    for spec in ("30 D2 t51", "80 D2 t52", "40 D3 t53", "30 D4 t54"):
+        text = rbox(spec)
+        _, a, _ = run([lh, "qvoronoi", "FI"], text)
+        _, b, _ = run(["qvoronoi", "FI"], text)
+        ids = a.split()[1:]
+        check(spec + " FI", a.split()[0] == b.split()[0] and ids == [str(k) for k in range(len(ids))],
+              a[:40] + " / " + b[:40])
+        r, a, _ = run([lh, "qvoronoi", "FD", "p"], text)
+        _, b, _ = run(["qvoronoi", "FD", "p"], text)
+        (ha, ra), (hb, rb) = cdd_rows(a), cdd_rows(b)
+        check(spec + " FD p", r == 0 and ha == hb and same_rows(ra, rb, 1e-9)
+              and a.split("\n")[0] == "lifthull qvoronoi FD p", "%s %s" % (ha, hb))
+        for o in ("Fi", "Fo", "Fv"):
+            _, a, _ = run([lh, "qvoronoi", "FD", o], text)
+            _, b, _ = run([lh, "qvoronoi", o], text)
+            check(spec + " FD " + o + " as " + o, a == b and a != "")
+        r, a, e = run([lh, "qvoronoi", "FD", "o"], text)
+        _, b, _ = run([lh, "qvoronoi", "o"], text)
+        check(spec + " FD o: a note, then o", r == 0 and a == b and "not available for 'o'" in e, e)
+        # a set with a repeated site: the duplicate is the one coplanar point
+        lines = text.split("\n")
+        n = int(lines[1])
+        dup = lines[0] + "\n%d\n" % (n + 1) + "\n".join(lines[2:2 + n]) + "\n" + lines[5] + "\n"
+        _, a, _ = run([lh, "qvoronoi", "Fc"], dup)
+        _, b, _ = run(["qvoronoi", "Fc"], dup)
+        fc = lambda out: sorted(int(x) for l in out.strip().split("\n")[1:] for x in l.split()[1:])
+        # lifthull keeps the first of equal sites as the vertex (lh_tri_duplicate_of), Qhull
+        # the one it happened to insert first
+        check(spec + " Fc", a.split()[0] == b.split()[0] and fc(a) == [n] and fc(b) in ([n], [3]),
+              a[:80] + " / " + b[:80])
+        _, a, _ = run([lh, "qvoronoi", "FP"], dup)
+        _, b, _ = run(["qvoronoi", "FP"], dup)
+        fp = lambda out: sorted((min(int(l.split()[0]), int(l.split()[1])),
+                                 max(int(l.split()[0]), int(l.split()[1])), float(l.split()[3]))
+                                for l in out.strip().split("\n")[1:])
+        check(spec + " FP", fp(a) == fp(b) == [(3, n, 0.0)] and a.split()[1:3] == ["3", str(n)], a + " / " + b)
+
+
+def geomview(lh):
+    for spec in ("20 D2 t61", "100 D2 t62", "12 D2 s t63"):
+        text = rbox(spec)
+        r, a, _ = run([lh, "qvoronoi", "G"], text)
+        _, b, _ = run(["qvoronoi", "G"], text)
+        ga, gb = geom(a), geom(b)
+        check(spec + " G counts", r == 0 and ga[0] == gb[0], "%s %s" % (ga[0], gb[0]))
+        if "s" not in spec.split():  # cospherical: Qhull merges the centres, lifthull keeps them
+            check(spec + " G vertices", ga[1] == gb[1], "%s / %s" % (ga[1][:3], gb[1][:3]))
+            check(spec + " G regions", ga[2] == gb[2], "%s / %s" % (ga[2][:2], gb[2][:2]))
+        check(spec + " G frame", ga[4] == "{appearance {linewidth 3} LIST # lifthull qvoronoi G"
+              and gb[4].startswith("{appearance {linewidth 3} LIST # ") and ga[5] == gb[5] == ["}", "}"])
+    # a repeated site: Qhull's "coplanar or isolated" line, the faces counted without it
+    text = "2\n6\n0 0\n1 0\n0 1\n1 0\n0.3 0.3\n1 1\n"
+    _, a, _ = run([lh, "qvoronoi", "G"], text)
+    _, b, _ = run(["qvoronoi", "G"], text)
+    ga, gb = geom(a), geom(b)
+    check("duplicate G", ga[:4] == gb[:4] and ga[3] == [3], a + b)
+    r, a, e = run([lh, "qvoronoi", "G"], rbox("20 D3 t64"))
+    check("qvoronoi G in 3-d refused", r == 2 and a == "" and "only for 2-d" in e, e)
+    for opt in ("m", "FM"):
+        r, _, e = run([lh, "qvoronoi", opt], rbox("20 D2 t65"))
+        check("qvoronoi %s refused" % opt, r == 2 and "option '%s' is not used with qvoronoi" % opt in e, e)
+
+
+def guard(name, fn, *args):
+    try:
+        fn(*args)
+    except (ValueError, IndexError, AttributeError, AssertionError, TypeError) as e:
+        check(name + " (output parses)", False, repr(e))
+
+
+def main():
+    if len(sys.argv) < 2:
+        print(__doc__)
+        return 2
+    VERBOSE[0] = "-v" in sys.argv[2:]
+    if not all(shutil.which(p) for p in ("rbox", "qvoronoi")):
+        print("SKIP: Qhull's programs (qhull-bin) not found")
+        return 77
+    guard("general", general, sys.argv[1])
+    guard("geomview", geomview, sys.argv[1])
+    print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
+    return 1 if FAILS else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
