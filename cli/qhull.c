@@ -15,7 +15,7 @@ static int run(lh_cli_qprog prog, int argc, char **argv)
     lh_points pts;
     const char *name;
     if (!lh_cli_load(o.input, LH_FORMAT_AUTO, &pts, &name)) return LH_EXIT_INPUT;
-    if (!lh_cli_qcheck_outputs(&o, pts.d)) {
+    if (!lh_cli_qcheck_outputs(&o, pts.d, pts.n)) {
         lh_points_free(&pts);
         return LH_EXIT_USAGE;
     }

@@ -36,6 +36,10 @@ typedef struct lh_cli_qopts {
     int npd;
     size_t largest;           /* PAn: the n largest facets are the good ones   */
     int good, good_nbrs;      /* Pg: print good facets; PG: their neighbours   */
+    struct lh_cli_qgood {     /* QGn (visible from point n; QG-n: not visible), */
+        int on, not;          /* QVn (with vertex n; QV-n: without)             */
+        size_t n;
+    } gpoint, gvertex;
     const char *input;        /* TI file, NULL: standard input                 */
     const char *output;       /* TO file, NULL: standard output                */
     char command[256];        /* "lifthull qdelaunay OPTIONS", for summaries    */
@@ -63,11 +67,18 @@ typedef struct lh_cli_qmodel {
     lh_index *nbr;         /* nv per facet, opposite each vertex             */
     lh_index *own_vert;    /* vert when the model owns it (hull facets)      */
     size_t m_other;        /* the other facets                               */
+    size_t m_upper;        /* the first m_upper of them: upper (Qu: lower) and
+                              vertical facets; then those the filters dropped */
     lh_index *other;       /* nv per other facet, in site numbering (-1: the
                               empty slot of a vertical facet's d vertices)    */
     lh_index *inc_off;     /* n + 1: site i's facets are inc[inc_off[i]..]   */
     lh_index *inc;         /* main facets, then other ones as -(j+1)         */
     const lh_index *dup;   /* the site each one was merged into              */
+    lh_index *own_dup;     /* dup when the model owns it (QGn)               */
+    lh_index excluded;     /* QGn's point n, left out of the hull; -1: none  */
+    size_t built_n;        /* the sites the hull was built on: all, or (QGn) */
+    const double *built_xyz; /* all but `excluded`, in order (lh_hull_measures) */
+    double *own_xyz;       /* built_xyz when the model owns it               */
     size_t ndup;
     double seconds;        /* the computation's time                          */
     lh_tri *tri, *tri_other;
@@ -86,11 +97,14 @@ lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo);
  * 0 when out of memory, -1 for a coordinate outside the facets' normals (both after
  * printing the problem). */
 int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
+/* Whether options select good facets (QGn QVn Pdk PDk PAn PG): then, as in Qhull,
+ * the summary counts them apart and Fx, FN name only the printed facets' vertices. */
+int lh_cli_qselecting(const lh_cli_qopts *o);
 
-/* Whether the outputs asked for suit d-dimensional input (m, FM, G: 2-d and 3-d
- * hulls, 2-d Delaunay; qdelaunay's f and FF: up to 7-d); 0 after printing the
- * problem (qhull_extra.c). */
-int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d);
+/* Whether the outputs asked for suit n sites in d dimensions (m, FM, G: 2-d and 3-d
+ * hulls, 2-d Delaunay; qdelaunay's f and FF: up to 7-d; QGn, QVn: a point n); 0
+ * after printing the problem (qhull_extra.c). */
+int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d, size_t n);
 
 /* Ts: the computation's statistics (qhull_stats.c). */
 void lh_cli_qstats(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo);

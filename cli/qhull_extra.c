@@ -25,7 +25,7 @@ static void print_ids(FILE *f, const lh_cli_qmodel *mo, int merges)
 /* The first printed facet site i is coplanar with, or -1. */
 static lh_index coplanar_facet(const lh_cli_qopts *o, const lh_cli_qmodel *mo, size_t i)
 {
-    if (lh_cli_qis_vertex(mo, i)) return -1;
+    if (lh_cli_qis_vertex(mo, i) || (lh_index)i == mo->excluded) return -1;
     if (o->prog != LH_QPROG_CONVEX) {
         size_t v = (size_t)mo->dup[i];
         if (v == i) return -1; /* a site that is no vertex and no duplicate: none here */
@@ -145,8 +145,16 @@ int lh_cli_qprint_extra(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo,
     return 1;
 }
 
-int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d)
+int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d, size_t n)
 {
+    const struct lh_cli_qgood *g[2] = {&o->gpoint, &o->gvertex};
+    for (int k = 0; k < 2; k++)
+        if (g[k]->on && g[k]->n >= n) { /* Qhull: QH6150 */
+            fprintf(stderr, "lifthull %s: option 'Q%c%s%zu': point %zu is not among the %zu input "
+                    "points (0..%zu)\n", o->name, k ? 'V' : 'G', g[k]->not ? "-" : "", g[k]->n,
+                    g[k]->n, n, n ? n - 1 : 0);
+            return 0;
+        }
     for (int i = 0; i < o->nout; i++) {
         const char *w = o->out[i];
         if ((!strcmp(w, "f") || !strcmp(w, "FF")) && o->prog != LH_QPROG_CONVEX &&

@@ -99,7 +99,9 @@ static void help(const lh_cli_qopts *o)
            o->prog == LH_QPROG_VORONOI ? "; FD: cdd's format for p" : "; FD: cdd's format for n, Fi, Fo, p",
            o->prog == LH_QPROG_VORONOI ? "" :
            "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
-           "  PAn       print the n largest facets (Pg); PG: their other neighbours\n",
+           "  PAn       print the n largest facets (Pg); PG: their other neighbours\n"
+           "  QGn       print the facets point n sees (n is left out; QG-n: not seen)\n"
+           "  QVn       print the facets with vertex n (QV-n: without)\n",
            o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
 }
@@ -144,6 +146,28 @@ bad:
     fprintf(stderr, "lifthull %s: option '%s': expected Pdk[:n] or PDk[:n] (k a coordinate, n a "
             "number; several may follow each other), PAn (n > 0), Pg or PG\n", o->name, w);
     return -1;
+}
+
+/* QGn / QG-n (good facets: visible from point n, or not) and QVn / QV-n (with
+ * vertex n, or without), qconvex and qdelaunay; 0 after a usage error. */
+static int good_point(lh_cli_qopts *o, const char *w)
+{
+    if (o->prog != LH_QPROG_CONVEX && o->prog != LH_QPROG_DELAUNAY) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
+                "QGn, QVn; qconvex and qdelaunay)\n", o->name, w);
+        return 0;
+    }
+    struct lh_cli_qgood *g = w[1] == 'G' ? &o->gpoint : &o->gvertex;
+    const char *s = w + 2 + (w[2] == '-');
+    char *end;
+    unsigned long long v = isdigit((unsigned char)*s) ? strtoull(s, &end, 10) : 0;
+    if (!isdigit((unsigned char)*s) || *end || v > (unsigned long long)LH_INDEX_MAX) {
+        fprintf(stderr, "lifthull %s: option '%s': expected %.2sn or %.2s-n (n a point's index)\n",
+                o->name, w, w, w);
+        return 0;
+    }
+    *g = (struct lh_cli_qgood){1, w[2] == '-', (size_t)v};
+    return 1;
 }
 
 /* qhalf's Hn,n,...: the interior point (missing coordinates 0; "H" alone: the
@@ -211,11 +235,7 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
     }
     int pf = print_filter(o, w);
     if (pf) return pf > 0;
-    if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) {
-        fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
-                "QGn, QVn)\n", o->name, w);
-        return 0;
-    }
+    if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) return good_point(o, w);
     for (size_t i = 0; i < sizeof noops / sizeof noops[0]; i++) {
         const noop *p = &noops[i];
         size_t k = strlen(p->word);

@@ -264,9 +264,9 @@ def filters(lh):
         check("qconvex %s refused" % bad, r == 2 and "option '%s': expected" % bad in e, e)
     r, _, e = run([lh, "qconvex", "Pd3", "i"], rbox("10 D2 t1"))
     check("qconvex Pd3 in 2-d refused", r == 2 and "coordinates 0..1" in e, e)
-    for q in ("QG0", "QV3", "QG-1"):
-        r, _, e = run([lh, "qdelaunay", q, "i"], rbox("10 D2 t1"))
-        check(q + " refused", r == 2 and "option '%s' is not supported" % q in e, e)
+    for q in ("QG0", "QV3", "QG-1"):  # qconvex, qdelaunay: tests/cli/qhull_good.py
+        r, _, e = run([lh, "qvoronoi", q, "o"], rbox("10 D2 t1"))
+        check("qvoronoi " + q + " refused", r == 2 and "option '%s' is not supported" % q in e, e)
 
 
 # ---- FI Fm FQ FO FD Fc FP m FM ----------------------------------------------------------
