@@ -15,6 +15,10 @@ typedef enum { LH_QPROG_DELAUNAY, LH_QPROG_VORONOI, LH_QPROG_CONVEX, LH_QPROG_HA
 
 enum { LH_QOUT_MAX = 32 };
 
+/* G's suboptions (qhull_geom.c): Gi, Go, Gn, Ga, Gr, Gh. */
+enum { LH_QG_INNER = 1, LH_QG_OUTER = 2, LH_QG_NOPLANES = 4, LH_QG_POINTS = 8, LH_QG_RIDGES = 16,
+       LH_QG_INTERSECT = 32 };
+
 typedef struct lh_cli_qopts {
     lh_cli_qprog prog;
     const char *name;         /* "qdelaunay", "qvoronoi", "qconvex", "qhalf"   */
@@ -36,6 +40,8 @@ typedef struct lh_cli_qopts {
     int npd;
     size_t largest;           /* PAn: the n largest facets are the good ones   */
     int good, good_nbrs;      /* Pg: print good facets; PG: their neighbours   */
+    int geom;                 /* G's suboptions, LH_QG_* bits                  */
+    int geom_drop;            /* GDn: the coordinate a 4-d picture drops; -1   */
     struct lh_cli_qgood {     /* QGn (visible from point n; QG-n: not visible), */
         int on, not;          /* QVn (with vertex n; QV-n: without)             */
         size_t n;
@@ -101,9 +107,10 @@ int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
  * the summary counts them apart and Fx, FN name only the printed facets' vertices. */
 int lh_cli_qselecting(const lh_cli_qopts *o);
 
-/* Whether the outputs asked for suit n sites in d dimensions (m, FM, G: 2-d and 3-d
- * hulls, 2-d Delaunay; qdelaunay's f and FF: up to 7-d; QGn, QVn: a point n); 0
- * after printing the problem (qhull_extra.c). */
+/* Whether the outputs asked for suit n sites in d dimensions (m, FM: 2-d and 3-d
+ * hulls, 2-d Delaunay; G: pictures of 2 to 4 coordinates, qvoronoi 2-d; qdelaunay's
+ * f and FF: up to 7-d; QGn, QVn: a point n); 0 after printing the problem
+ * (qhull_extra.c). */
 int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d, size_t n);
 
 /* Ts: the computation's statistics (qhull_stats.c). */

@@ -101,7 +101,9 @@ static void help(const lh_cli_qopts *o)
            "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
            "  PAn       print the n largest facets (Pg); PG: their other neighbours\n"
            "  QGn       print the facets point n sees (n is left out; QG-n: not seen)\n"
-           "  QVn       print the facets with vertex n (QV-n: without)\n",
+           "  QVn       print the facets with vertex n (QV-n: without)\n"
+           "  Gi Go Gn Ga Gr Gh GDn  G's inner/outer planes (exact: the facets), no planes,\n"
+           "            all points, ridges, intersections; GDn: 4-d pictures without coordinate n\n",
            o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
 }
@@ -148,6 +150,17 @@ bad:
     return -1;
 }
 
+/* Output option w, in the order given; 0 after a usage error. */
+static int word_output(lh_cli_qopts *o, const char *w)
+{
+    if (o->nout == LH_QOUT_MAX) {
+        fprintf(stderr, "lifthull %s: more than %d output options\n", o->name, LH_QOUT_MAX);
+        return 0;
+    }
+    strcpy(o->out[o->nout++], w);
+    return 1;
+}
+
 /* QGn / QG-n (good facets: visible from point n, or not) and QVn / QV-n (with
  * vertex n, or without), qconvex and qdelaunay; 0 after a usage error. */
 static int good_point(lh_cli_qopts *o, const char *w)
@@ -168,6 +181,34 @@ static int good_point(lh_cli_qopts *o, const char *w)
     }
     *g = (struct lh_cli_qgood){1, w[2] == '-', (size_t)v};
     return 1;
+}
+
+/* G's suboptions, one or several after a G ("Gr", "Gan", "GD3"): they also ask for
+ * the G output. 0 after a usage error. */
+static int geom_word(lh_cli_qopts *o, const char *w)
+{
+    if (o->prog == LH_QPROG_VORONOI) {
+        fprintf(stderr, "lifthull qvoronoi: option '%s' is not supported (G's suboptions are for "
+                "qconvex and qdelaunay)\n", w);
+        return 0;
+    }
+    static const char letters[] = "ionarh";
+    for (const char *c = w + 1; *c; c++) {
+        const char *at = strchr(letters, *c);
+        if (at) {
+            o->geom |= 1 << (at - letters);
+        } else if (*c == 'D' && c[1] >= '0' && c[1] <= '3') {
+            o->geom_drop = *++c - '0';
+        } else {
+            fprintf(stderr, "lifthull %s: option '%s': '%c' is not supported (G suboptions: Gi Go "
+                    "Gn Ga Gr Gh GDn, n 0..3; Qhull's spheres Gv, projections Gp, centrums Gc and "
+                    "transparency Gt are not drawn)\n", o->name, w, *c);
+            return 0;
+        }
+    }
+    for (int i = 0; i < o->nout; i++)
+        if (!strcmp(o->out[i], "G")) return 1;
+    return word_output(o, "G");
 }
 
 /* qhalf's Hn,n,...: the interior point (missing coordinates 0; "H" alone: the
@@ -197,14 +238,8 @@ static int interior(lh_cli_qopts *o, const char *w)
 static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
 {
     if (!strcmp(w, "FS") && o->prog != LH_QPROG_VORONOI) o->areas = 1; /* also an output */
-    if (is_output(o->prog, w)) {
-        if (o->nout == LH_QOUT_MAX) {
-            fprintf(stderr, "lifthull %s: more than %d output options\n", o->name, LH_QOUT_MAX);
-            return 0;
-        }
-        strcpy(o->out[o->nout++], w);
-        return 1;
-    }
+    if (is_output(o->prog, w)) return word_output(o, w);
+    if (w[0] == 'G' && w[1] && o->prog != LH_QPROG_HALF) return geom_word(o, w);
     if (!strcmp(w, "TI") || !strcmp(w, "TO")) {
         if (!next) {
             fprintf(stderr, "lifthull %s: option '%s' needs a file name\n", o->name, w);
@@ -259,6 +294,7 @@ int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv)
     memset(o, 0, sizeof *o);
     o->prog = prog;
     o->name = names[prog];
+    o->geom_drop = -1;
     snprintf(o->command, sizeof o->command, "lifthull %s", o->name);
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {

@@ -427,10 +427,10 @@ def geomview(lh):
               "%d vs %d facets" % (len(geom_facets(a)), len(geom_facets(b))))
         check("%s %s G frame" % (spec, prog), a.split(" LIST")[0] == b.split(" LIST")[0] and a.endswith("}\n}\n" if "D3" in spec or prog == "qdelaunay" else "1.0\n}\n"),
               a[:60] + " / " + b[:60])
-    r, _, e = run([lh, "qconvex", "G"], rbox("10 D4 t1"))
-    check("qconvex G in 4-d refused", r == 2 and "Geomview output are for" in e, e)
+    r, _, e = run([lh, "qconvex", "G"], rbox("10 D5 t1"))  # 4-d: tests/cli/qhull_geomview.py
+    check("qconvex G in 5-d refused", r == 2 and "only available for 2-d, 3-d and 4-d" in e, e)
     r, _, e = run([lh, "qconvex", "Gv"], rbox("10 D3 t1"))
-    check("qconvex Gv refused", r == 2 and "option 'Gv' is not supported" in e, e)
+    check("qconvex Gv refused", r == 2 and "option 'Gv': 'v' is not supported" in e, e)
 
 
 def halfspace(lh):
