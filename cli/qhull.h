@@ -90,6 +90,9 @@ typedef struct lh_cli_qmodel {
     lh_tri *tri, *tri_other;
     lh_hull *hull;
     lh_pred *pred;         /* for the exact hyperplanes of qconvex n, Fi, Fo    */
+    char *good;            /* qvoronoi's filters: the simplices kept (NULL: all) */
+    const struct lh_cli_qmodel *all; /* qvoronoi with filters: this model before
+                              them (good set), for the Voronoi formats; NULL  */
 } lh_cli_qmodel;
 
 /* Builds the model for the options' program; 0 after printing the problem. */
@@ -98,11 +101,13 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
 void lh_cli_qmodel_free(lh_cli_qmodel *mo);
 /* (Re)builds mo->inc_off and mo->inc from the facets (qhull_model.c). */
 lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo);
-/* Qhull's print filters (Pdk, PDk, PAn, Pg, PG; qhull_select.c): the facets they
- * drop join the other facets (negative ids), as Qhull's unprinted ones. Returns 1;
+/* Qhull's print filters (Pdk, PDk, PAn, Pg, PG, QGn, QVn; qhull_select.c): the
+ * facets they drop join the other facets (negative ids), as Qhull's unprinted ones.
+ * `all`, when not NULL, is a second build of the same model: it keeps every facet
+ * and gets the kept ones as its good set (qvoronoi's Voronoi formats). Returns 1;
  * 0 when out of memory, -1 for a coordinate outside the facets' normals (both after
  * printing the problem). */
-int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
+int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o, lh_cli_qmodel *all);
 /* Whether options select good facets (QGn QVn Pdk PDk PAn PG): then, as in Qhull,
  * the summary counts them apart and Fx, FN name only the printed facets' vertices. */
 int lh_cli_qselecting(const lh_cli_qopts *o);

@@ -244,6 +244,7 @@ void lh_cli_qmodel_free(lh_cli_qmodel *mo)
     free(mo->inc_off);
     free(mo->inc);
     free(mo->own_dup);
+    free(mo->good);
     free(mo->own_xyz);
     lh_tri_free(mo->tri);
     lh_tri_free(mo->tri_other);

@@ -97,7 +97,10 @@ static void help(const lh_cli_qopts *o)
            o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "",
            o->prog == LH_QPROG_VORONOI ? "" : "  FA        total area (and volume) in the summary 's'\n",
            o->prog == LH_QPROG_VORONOI ? "; FD: cdd's format for p" : "; FD: cdd's format for n, Fi, Fo, p",
-           o->prog == LH_QPROG_VORONOI ? "" :
+           o->prog == LH_QPROG_VORONOI ?
+           "  Pdk:n     print the Voronoi vertices whose Delaunay facet's lifted normal has\n"
+           "            normal[k] >= n (PDk:n: <= n; n 0 if left out); PAn: the n largest\n"
+           "  QVn       print the Voronoi vertices of site n's region (QV-n: the others)\n" :
            "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
            "  PAn       print the n largest facets (Pg); PG: their other neighbours\n"
            "  QGn       print the facets point n sees (n is left out; QG-n: not seen)\n"
@@ -113,9 +116,9 @@ static void help(const lh_cli_qopts *o)
 static int print_filter(lh_cli_qopts *o, const char *w)
 {
     if (w[0] != 'P' || !strchr("dDAgG", w[1]) || !w[1]) return 0;
-    if (o->prog != LH_QPROG_CONVEX && o->prog != LH_QPROG_DELAUNAY) {
+    if (o->prog == LH_QPROG_HALF || (o->prog == LH_QPROG_VORONOI && w[1] == 'G')) {
         fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex and "
-                "qdelaunay)\n", o->name, w);
+                "qdelaunay; qvoronoi: Pdk, PDk, PAn, Pg)\n", o->name, w);
         return -1;
     }
     if (w[1] == 'g' || w[1] == 'G') {
@@ -165,9 +168,9 @@ static int word_output(lh_cli_qopts *o, const char *w)
  * vertex n, or without), qconvex and qdelaunay; 0 after a usage error. */
 static int good_point(lh_cli_qopts *o, const char *w)
 {
-    if (o->prog != LH_QPROG_CONVEX && o->prog != LH_QPROG_DELAUNAY) {
+    if (o->prog == LH_QPROG_HALF || (o->prog == LH_QPROG_VORONOI && w[1] == 'G')) {
         fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
-                "QGn, QVn; qconvex and qdelaunay)\n", o->name, w);
+                "QGn, QVn; qconvex and qdelaunay; qvoronoi: QVn)\n", o->name, w);
         return 0;
     }
     struct lh_cli_qgood *g = w[1] == 'G' ? &o->gpoint : &o->gvertex;

@@ -233,7 +233,7 @@ static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
  * the whole hull and then the good facets; QGn's point is not among the points. */
 static int print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
-    size_t v = lh_cli_qvertex_count(mo), n = mo->n - (mo->excluded >= 0);
+    size_t v = lh_cli_qvertex_count(mo->all ? mo->all : mo), n = mo->n - (mo->excluded >= 0);
     int good = lh_cli_qselecting(o) && !o->good_nbrs;
     if (o->prog == LH_QPROG_CONVEX) {
         if (good) /* the other facets are the dropped ones: with them, the whole hull */
@@ -243,8 +243,9 @@ static int print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
         if (good && mo->m) fprintf(f, "  Number of 'good' facets: %zu\n", mo->m); /* Qhull: not 0 */
     } else if (o->prog == LH_QPROG_VORONOI) {
         fprintf(f, "\nVoronoi diagram by the convex hull of %zu points in %d-d:\n\n"
-                   "  Number of Voronoi regions%s: %zu\n  Number of Voronoi vertices: %zu\n",
-                mo->n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v, mo->m);
+                   "  Number of Voronoi regions%s: %zu\n  Number of %sVoronoi vertices: %zu\n",
+                mo->n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v,
+                o->npd || o->gvertex.on ? "'good' " : "", mo->m); /* Qhull: not for PAn */
     } else {
         fprintf(f, "\n%sDelaunay triangulation by the convex hull of %zu points in %d-d:\n\n"
                    "  Number of input sites: %zu\n  Number of %s%sDelaunay regions: %zu\n",
@@ -323,7 +324,8 @@ int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const
     int as_facets = 0; /* qvoronoi prints these of the Delaunay facets, as Qhull */
     for (size_t k = 0; k < sizeof facet_formats / sizeof facet_formats[0]; k++)
         as_facets |= !strcmp(opt, facet_formats[k]);
-    if (o->prog == LH_QPROG_VORONOI && !as_facets) return lh_cli_qprint_voronoi(f, o, mo, opt);
+    if (o->prog == LH_QPROG_VORONOI && !as_facets)
+        return lh_cli_qprint_voronoi(f, o, mo->all ? mo->all : mo, opt);
     if (!strcmp(opt, "i")) print_i(f, mo);
     else if (!strcmp(opt, "Fv")) print_fv(f, mo);
     else if (!strcmp(opt, "Fn")) print_fn(f, mo);

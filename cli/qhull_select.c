@@ -110,18 +110,19 @@ static int visible(const lh_cli_qmodel *mo, const lh_cli_qopts *o, const lh_inde
     return o->furthest ? side > 0 : side < 0;
 }
 
-/* keep[t] &= QGn (facet t visible from point n; QG-n: not visible) and QVn (n one of
- * its vertices; QV-n: not one). */
-static void point_filters(const lh_cli_qmodel *mo, const lh_cli_qopts *o, char *keep)
+/* keep[t] &= QGn (facet t visible from point n; QG-n: not visible), or (vertex) QVn
+ * (n one of its vertices; QV-n: not one). Qhull applies QVn after Pdk and its
+ * closest facet (qh_findgood_all): so does lh_cli_qselect. */
+static void point_filters(const lh_cli_qmodel *mo, const lh_cli_qopts *o, char *keep, int vertex)
 {
     for (size_t t = 0; t < mo->m; t++) {
         const lh_index *v = mo->vert + t * mo->nv;
-        if (o->gvertex.on) {
+        if (vertex && o->gvertex.on) {
             int has = 0;
             for (int k = 0; k < mo->nv; k++) has |= v[k] == (lh_index)o->gvertex.n;
             if (has == o->gvertex.not) keep[t] = 0;
         }
-        if (o->gpoint.on && visible(mo, o, v, o->gpoint.n) == o->gpoint.not) keep[t] = 0;
+        if (!vertex && o->gpoint.on && visible(mo, o, v, o->gpoint.n) == o->gpoint.not) keep[t] = 0;
     }
 }
 
@@ -207,15 +208,25 @@ int lh_cli_qselecting(const lh_cli_qopts *o)
     return o->npd || o->largest || o->good_nbrs || o->gpoint.on || o->gvertex.on;
 }
 
-int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o)
+int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o, lh_cli_qmodel *all)
 {
     if (!lh_cli_qselecting(o)) return 1; /* Pg alone: every facet is good */
     char *keep = malloc(mo->m ? mo->m : 1);
     if (!keep) goto nomem;
     memset(keep, 1, mo->m);
-    point_filters(mo, o, keep);
+    point_filters(mo, o, keep, 0);
     int r = normal_filters(mo, o, keep);
-    if (r > 0) r = good_filters(mo, o, keep) && regroup(mo, keep);
+    if (r > 0) {
+        point_filters(mo, o, keep, 1);
+        r = good_filters(mo, o, keep);
+    }
+    if (r > 0 && all) {
+        all->good = malloc(mo->m ? mo->m : 1);
+        r = all->good != NULL;
+        if (r) memcpy(all->good, keep, mo->m);
+        mo->all = all;
+    }
+    if (r > 0) r = regroup(mo, keep);
     free(keep);
     if (r >= 0 && !r) goto nomem;
     return r;

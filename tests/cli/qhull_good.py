@@ -79,15 +79,17 @@ def interior_point(text, prog):
 
 
 def same_good(lh, prog, q, text, extra, got, want):
-    """Equal facet sets; but where Pd0 leaves none of QGn's or QVn's good facets, Qhull makes
-    the closest one good (qh_findgood), picked among its own facets (qdelaunay: upper ones
-    too) in its own order, and at times prints none (with QVn, or PG): there lifthull's one
-    closest facet must be one of QGn's or QVn's, and Qhull's at most one."""
-    if "Pd0" not in extra or (len(got) > 1 and len(want) > 1):
+    """Equal facet sets; but where Pd0 leaves none of QGn's good facets, Qhull makes the
+    closest one good (qh_findgood; QVn applies after it), picked in qdelaunay among its
+    upper facets too, so that it may print another one or none, and then prints no
+    neighbours for PG: there lifthull's one closest facet must be one of QGn's."""
+    if "Pd0" not in extra or not q.startswith("QG") or got == want:
         return got == want
     _, alone, _ = run([lh, prog, q, "i"], text)
     kept = set(facets(alone))
-    return len(want) <= 1 and (set(got) <= kept or "PG" in extra) and len(got) <= 3 * len(kept)
+    if "PG" in extra:
+        return prog == "qconvex" and want == [] and 0 < len(got) <= 3 * len(kept)
+    return prog == "qdelaunay" and len(want) <= 1 and len(got) == 1 and set(got) <= kept
 
 
 def qconvex(lh):

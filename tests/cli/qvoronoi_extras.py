@@ -166,6 +166,87 @@ def geomview(lh):
         check("qvoronoi %s refused" % opt, r == 2 and "option '%s' is not used with qvoronoi" % opt in e, e)
 
 
+def vertices(out, full):
+    """p or o: the Voronoi vertices by number (1..), rounded positions."""
+    lines = out.split("\n")
+    d = int(lines[0])
+    count = int(lines[1].split()[0]) - (1 if full else 0)
+    first = 3 if full else 2
+    return {v + 1: key(float(x) / (1 + abs(float(x))) for x in lines[first + v].split()[:d])
+            for v in range(count)}, lines[first + count:]
+
+
+def regions(out):
+    """o: per site its region's vertex positions and whether it is unbounded (0)."""
+    verts, rest = vertices(out, True)
+    res = []
+    for l in rest:
+        w = [int(x) for x in l.split()]
+        if w:
+            res.append((frozenset(verts[v] for v in w[1:] if v), 0 in w[1:]))
+    return res
+
+
+def ridge_sets(out, verts):
+    """Fv: {site pair: (vertex positions, unbounded)}."""
+    res = {}
+    for l in out.strip().split("\n")[1:]:
+        w = [int(x) for x in l.split()]
+        res[(w[1], w[2])] = (frozenset(verts[v] for v in w[3:] if v), 0 in w[3:])
+    return res
+
+
+def neighbour_sets(out, verts):
+    """FN: per site the positions of its printed Voronoi vertices (ids >= 0: 'o' less one)."""
+    return [frozenset(verts[int(x) + 1] for x in l.split()[1:] if int(x) >= 0)
+            for l in out.strip().split("\n")[1:]]
+
+
+def filters(lh):
+    """Pdk, PDk, PAn and QVn select Voronoi vertices (good Delaunay facets) as Qhull."""
+    for spec in ("40 D2 t71", "60 D3 t72"):
+        text = rbox(spec)
+        for f in (["Pd0"], ["PD1"], ["Pd0", "Pd1:0.1"], ["PA5"], ["QV3"], ["QV-3"], ["Pd0", "QV4"]):
+            name = "%s qvoronoi %s" % (spec, " ".join(f))
+            r, la, _ = run([lh, "qvoronoi"] + f + ["o"], text)
+            _, qa, _ = run(["qvoronoi"] + f + ["o"], text)
+            lv, qv = vertices(la, True)[0], vertices(qa, True)[0]
+            check(name + " o vertices", r == 0 and sorted(lv.values()) == sorted(qv.values()) and (lv or len(f) > 1),
+                  "%d vs %d" % (len(lv), len(qv)))
+            check(name + " o regions", regions(la) == regions(qa))
+            _, lp, _ = run([lh, "qvoronoi"] + f + ["p"], text)
+            check(name + " p = o's vertices", sorted(vertices(lp, False)[0].values()) == sorted(lv.values()))
+            _, lf, _ = run([lh, "qvoronoi"] + f + ["Fv"], text)
+            _, qf, _ = run(["qvoronoi"] + f + ["Fv"], text)
+            check(name + " Fv", ridge_sets(lf, lv) == ridge_sets(qf, qv),
+                  "%s / %s" % (sorted(ridge_sets(lf, lv))[:4], sorted(ridge_sets(qf, qv))[:4]))
+            for o in ("Fi", "Fo"):
+                _, lf, _ = run([lh, "qvoronoi"] + f + [o], text)
+                _, qf, _ = run(["qvoronoi"] + f + [o], text)
+                pairs = lambda out: sorted(tuple(l.split()[1:3]) for l in out.strip().split("\n")[1:])
+                check(name + " " + o, pairs(lf) == pairs(qf), "%s / %s" % (pairs(lf)[:4], pairs(qf)[:4]))
+            _, lf, _ = run([lh, "qvoronoi"] + f + ["FN"], text)
+            _, qf, _ = run(["qvoronoi"] + f + ["FN"], text)
+            check(name + " FN", neighbour_sets(lf, lv) == neighbour_sets(qf, qv))
+            _, li, _ = run([lh, "qvoronoi"] + f + ["i"], text)
+            _, qi, _ = run(["qvoronoi"] + f + ["i"], text)
+            sets = lambda out: sorted(tuple(sorted(l.split())) for l in out.strip().split("\n")[1:])
+            check(name + " i", sets(li) == sets(qi))
+            _, _, ls = run([lh, "qvoronoi"] + f + ["s"], text)
+            _, _, qs = run(["qvoronoi"] + f + ["s"], text)
+            count = lambda err: re.findall(r"Number of .*Voronoi vertices: \d+", err)
+            check(name + " s", count(ls) == count(qs) and count(ls), "%s / %s" % (count(ls), count(qs)))
+        if "D2" in spec:
+            _, la, _ = run([lh, "qvoronoi", "Pd0", "G"], text)
+            _, qa, _ = run(["qvoronoi", "Pd0", "G"], text)
+            ga, gb = geom(la), geom(qa)
+            check(spec + " Pd0 G", ga[1] == gb[1] and [r for r in ga[2]] == [r for r in gb[2] if r[1]],
+                  "%s / %s" % (ga[2][:3], gb[2][:3]))
+    for bad in ("PG", "QG1"):
+        r, _, e = run([lh, "qvoronoi", bad, "o"], rbox("10 D2 t1"))
+        check("qvoronoi %s refused" % bad, r == 2 and "option '%s' is not supported" % bad in e, e)
+
+
 def guard(name, fn, *args):
     try:
         fn(*args)
@@ -183,6 +264,7 @@ def main():
         return 77
     guard("general", general, sys.argv[1])
     guard("geomview", geomview, sys.argv[1])
+    guard("filters", filters, sys.argv[1])
     print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
     return 1 if FAILS else 0
 
