@@ -231,7 +231,10 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
         if (c != LH_OK) st = c;
     }
     if (st == LH_OK) return 1;
-    lh_cli_report_failure(name, d, n, xyz, st);
+    if (mo->excluded >= 0 && mo->xyz != xyz) /* the hull without QGn's point failed */
+        fprintf(stderr, "lifthull %s: option 'QG%s%zu' leaves point %zu out of the hull:\n", o->name,
+                o->gpoint.not ? "-" : "", o->gpoint.n, o->gpoint.n);
+    lh_cli_report_failure(name, d, mo->n, mo->xyz, st); /* the sites the hull was built on */
     lh_cli_qmodel_free(mo);
     return 0;
 }

@@ -13,33 +13,11 @@ asserted). Exit 0 when every check passed, 1 otherwise, 77 when Qhull's programs
 import argparse
 import re
 import shutil
-import subprocess
 import sys
 from fractions import Fraction
 from math import factorial
 
-FAILS = []
-PASSES = [0]
-VERBOSE = [False]
-
-
-def check(name, cond, detail=""):
-    if cond:
-        PASSES[0] += 1
-        if VERBOSE[0]:
-            print("PASS", name)
-    else:
-        FAILS.append(name)
-        print("FAIL", name, detail)
-
-
-def run(cmd, text):
-    p = subprocess.run(cmd, input=text, capture_output=True, text=True)
-    return p.returncode, p.stdout, p.stderr
-
-
-def rbox(spec):
-    return subprocess.run(["rbox"] + spec.split(), capture_output=True, text=True, check=True).stdout
+from qhull_check import FAILS, PASSES, VERBOSE, cdd_rows, check, rbox, run
 
 
 def points(text):
@@ -270,14 +248,6 @@ def filters(lh):
 
 
 # ---- FI Fm FQ FO FD Fc FP m FM ----------------------------------------------------------
-def cdd_rows(out):
-    lines = out.split("\n")
-    b, e = lines.index("begin"), lines.index("end")
-    head = lines[b + 1].split()
-    rows = [tuple(float(x) for x in l.split()) for l in lines[b + 2:e]]
-    return (int(head[0]), int(head[1]), head[2]), rows
-
-
 def same_rows(a, b, tol=1e-12):
     """Rows of numbers equal as multisets within tol (greedy match after sorting)."""
     if len(a) != len(b):

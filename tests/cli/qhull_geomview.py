@@ -15,33 +15,11 @@ all passed, 1 otherwise, 77 without Qhull's programs.
 """
 
 import re
-import shutil
-import subprocess
 import sys
 
-FAILS = []
-PASSES = [0]
-VERBOSE = [False]
+from qhull_check import check, main, rbox, run, same_rows
+
 NUM = re.compile(r"^-?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$")
-
-
-def check(name, cond, detail=""):
-    if cond:
-        PASSES[0] += 1
-        if VERBOSE[0]:
-            print("PASS", name)
-    else:
-        FAILS.append(name)
-        print("FAIL", name, detail)
-
-
-def run(cmd, text):
-    p = subprocess.run(cmd, input=text, capture_output=True, text=True)
-    return p.returncode, p.stdout, p.stderr
-
-
-def rbox(spec):
-    return subprocess.run(["rbox"] + spec.split(), capture_output=True, text=True, check=True).stdout
 
 
 def rows(out):
@@ -54,17 +32,6 @@ def rows(out):
     return res
 
 
-def same_rows(a, b, tol=1e-3):
-    if len(a) != len(b):
-        return False
-    left = sorted(b)
-    for r in sorted(a):
-        j = next((j for j, q in enumerate(left) if len(q) == len(r)
-                  and all(abs(x - y) <= tol for x, y in zip(r, q))), None)
-        if j is None:
-            return False
-        left.pop(j)
-    return True
 
 
 def key(p):
@@ -109,7 +76,7 @@ def pictures(lh):
             name = "%s %s %s" % (spec, prog, " ".join(opts))
             r, a, _ = run([lh, prog] + opts, text)
             _, b, _ = run([prog] + qopts + opts, text)
-            check(name, r == 0 and same_rows(rows(a), rows(b)) and len(rows(a)) > 3,
+            check(name, r == 0 and same_rows(rows(a), rows(b), 1e-3) and len(rows(a)) > 3,
                   "%d vs %d rows" % (len(rows(a)), len(rows(b))))
             check(name + " frame", a.split(" LIST")[0] == b.split(" LIST")[0] and a.endswith("}\n"), a[:60])
         r, a, e = run([lh, prog, "Gr"], text)
@@ -149,27 +116,6 @@ def refusals(lh):
         check("%s %s %s refused" % (spec, prog, " ".join(opts)), r == 2 and a == "" and msg in e, e)
 
 
-def guard(name, fn, *args):
-    try:
-        fn(*args)
-    except (ValueError, IndexError, AttributeError, KeyError) as e:
-        check(name + " (output parses)", False, repr(e))
-
-
-def main():
-    if len(sys.argv) < 2:
-        print(__doc__)
-        return 2
-    VERBOSE[0] = "-v" in sys.argv[2:]
-    if not all(shutil.which(p) for p in ("rbox", "qconvex", "qdelaunay")):
-        print("SKIP: Qhull's programs (qhull-bin) not found")
-        return 77
-    guard("pictures", pictures, sys.argv[1])
-    guard("4-d", four_d, sys.argv[1])
-    guard("refusals", refusals, sys.argv[1])
-    print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
-    return 1 if FAILS else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(__doc__, ("rbox", "qconvex", "qdelaunay"),
+                  [("pictures", pictures), ("4-d", four_d), ("refusals", refusals)]))

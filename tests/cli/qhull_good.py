@@ -15,32 +15,9 @@ without Qhull's programs.
 """
 
 import re
-import shutil
-import subprocess
 import sys
 
-FAILS = []
-PASSES = [0]
-VERBOSE = [False]
-
-
-def check(name, cond, detail=""):
-    if cond:
-        PASSES[0] += 1
-        if VERBOSE[0]:
-            print("PASS", name)
-    else:
-        FAILS.append(name)
-        print("FAIL", name, detail)
-
-
-def run(cmd, text):
-    p = subprocess.run(cmd, input=text, capture_output=True, text=True)
-    return p.returncode, p.stdout, p.stderr
-
-
-def rbox(spec):
-    return subprocess.run(["rbox"] + spec.split(), capture_output=True, text=True, check=True).stdout
+from qhull_check import check, main, rbox, run
 
 
 def facets(out):
@@ -175,31 +152,15 @@ def refusals(lh):
         for q in ("QGx", "QV1.5", "QG-"):
             r, _, e = run([lh, prog, q, "i"], text)
             check("%s %s refused" % (prog, q), r == 2 and "option '%s': expected" % q in e, e)
+    tet = "3 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+    for prog in ("qconvex", "qdelaunay"):
+        r, a, e = run([lh, prog, "QG3", "i"], tet)
+        check(prog + " QG3: the rest is flat", r == 1 and a == "" and "option 'QG3' leaves point 3 out of the "
+              "hull:" in e and "the 3 sites span an affine subspace of dimension 2" in e, e)
     r, _, e = run([lh, "qvoronoi", "QG1", "o"], text)
     check("qvoronoi QG1 refused", r == 2 and "option 'QG1' is not supported" in e, e)
 
 
-def guard(name, fn, *args):
-    try:
-        fn(*args)
-    except (ValueError, IndexError, AttributeError, StopIteration) as e:
-        check(name + " (output parses)", False, repr(e))
-
-
-def main():
-    if len(sys.argv) < 2:
-        print(__doc__)
-        return 2
-    VERBOSE[0] = "-v" in sys.argv[2:]
-    if not all(shutil.which(p) for p in ("rbox", "qconvex", "qdelaunay")):
-        print("SKIP: Qhull's programs (qhull-bin) not found")
-        return 77
-    guard("qconvex", qconvex, sys.argv[1])
-    guard("qdelaunay", qdelaunay, sys.argv[1])
-    guard("refusals", refusals, sys.argv[1])
-    print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
-    return 1 if FAILS else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(__doc__, ("rbox", "qconvex", "qdelaunay"),
+                  [("qconvex", qconvex), ("qdelaunay", qdelaunay), ("refusals", refusals)]))

@@ -8,61 +8,19 @@ the Delaunay facets' numbers 0..m-1, Qhull's its internal ids: only the count is
 FD p prints the Voronoi vertices in cdd's format (rows equal as multisets to 1e-9); FD leaves
 Fi, Fo and Fv as they are. Fc and FP on a set with a repeated site: the duplicate is the
 coplanar point of the site it repeats (the facet it is listed with may differ: Qhull's is
-the one its partition ended in; Qhull may keep the later copy as the vertex). G: the same frame, Voronoi vertices (as a multiset) and
-regions (as cycles of vertex positions, either direction) as Qhull's; refused as Qhull does
-in 3-d; m and FM refused as Qhull does. Exit 0 when all passed, 1 otherwise, 77 without
+the one its partition ended in; Qhull may keep the later copy as the vertex). G: the same
+frame, Voronoi vertices (as a multiset) and regions (as cycles of vertex positions, either
+direction) as Qhull's; refused as Qhull does in 3-d; m and FM refused as Qhull does. Print
+filters Pdk, PDk, PAn, QVn: the same Voronoi vertices, regions, ridges and good facets. Exit 0 when all passed, 1 otherwise, 77 without
 Qhull's programs.
 """
 
 import re
-import shutil
-import subprocess
 import sys
 
-FAILS = []
-PASSES = [0]
-VERBOSE = [False]
+from qhull_check import cdd_rows, check, main, rbox, run, same_rows
 
 
-def check(name, cond, detail=""):
-    if cond:
-        PASSES[0] += 1
-        if VERBOSE[0]:
-            print("PASS", name)
-    else:
-        FAILS.append(name)
-        print("FAIL", name, detail)
-
-
-def run(cmd, text):
-    p = subprocess.run(cmd, input=text, capture_output=True, text=True)
-    return p.returncode, p.stdout, p.stderr
-
-
-def rbox(spec):
-    return subprocess.run(["rbox"] + spec.split(), capture_output=True, text=True, check=True).stdout
-
-
-def cdd_rows(out):
-    lines = out.split("\n")
-    b, e = lines.index("begin"), lines.index("end")
-    head = lines[b + 1].split()
-    rows = [tuple(float(x) for x in l.split()) for l in lines[b + 2:e]]
-    return (int(head[0]), int(head[1]), head[2]), rows
-
-
-def same_rows(a, b, tol):
-    """Rows of numbers equal as multisets within tol (relative to the row's size)."""
-    if len(a) != len(b):
-        return False
-    left = sorted(b)
-    for r in sorted(a):
-        scale = max([1.0] + [abs(x) for x in r])
-        j = next((j for j, q in enumerate(left) if all(abs(x - y) <= tol * scale for x, y in zip(r, q))), None)
-        if j is None:
-            return False
-        left.pop(j)
-    return True
 
 
 def key(p):
@@ -113,7 +71,7 @@ def general(lh):
         r, a, _ = run([lh, "qvoronoi", "FD", "p"], text)
         _, b, _ = run(["qvoronoi", "FD", "p"], text)
         (ha, ra), (hb, rb) = cdd_rows(a), cdd_rows(b)
-        check(spec + " FD p", r == 0 and ha == hb and same_rows(ra, rb, 1e-9)
+        check(spec + " FD p", r == 0 and ha == hb and same_rows(ra, rb, 1e-9, relative=True)
               and a.split("\n")[0] == "lifthull qvoronoi FD p", "%s %s" % (ha, hb))
         for o in ("Fi", "Fo", "Fv"):
             _, a, _ = run([lh, "qvoronoi", "FD", o], text)
@@ -247,27 +205,6 @@ def filters(lh):
         check("qvoronoi %s refused" % bad, r == 2 and "option '%s' is not supported" % bad in e, e)
 
 
-def guard(name, fn, *args):
-    try:
-        fn(*args)
-    except (ValueError, IndexError, AttributeError, AssertionError, TypeError) as e:
-        check(name + " (output parses)", False, repr(e))
-
-
-def main():
-    if len(sys.argv) < 2:
-        print(__doc__)
-        return 2
-    VERBOSE[0] = "-v" in sys.argv[2:]
-    if not all(shutil.which(p) for p in ("rbox", "qvoronoi")):
-        print("SKIP: Qhull's programs (qhull-bin) not found")
-        return 77
-    guard("general", general, sys.argv[1])
-    guard("geomview", geomview, sys.argv[1])
-    guard("filters", filters, sys.argv[1])
-    print("%d passed, %d failed" % (PASSES[0], len(FAILS)))
-    return 1 if FAILS else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(__doc__, ("rbox", "qvoronoi"),
+                  [("general", general), ("geomview", geomview), ("filters", filters)]))
