@@ -94,7 +94,9 @@ static int picture_init(picture *p, FILE *f, const lh_cli_qopts *o, const lh_cli
     p->dims = mo->d + p->lifted;
     p->s = p->lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1, 0};
     const size_t nv = (size_t)mo->nv;
-    size_t total = mo->m + (p->lifted ? mo->m_other : 0);
+    /* with good facets selected, Qhull draws those only; else the lifted hull's
+     * upper facets too (the first m_upper others; after them come dropped ones) */
+    size_t total = mo->m + (p->lifted && !lh_cli_qselecting(o) ? mo->m_upper : 0);
     p->vert = malloc((total ? total : 1) * nv * sizeof *p->vert);
     p->nbr = malloc((total ? total : 1) * nv * sizeof *p->nbr);
     p->id = malloc((total ? total : 1) * sizeof *p->id);

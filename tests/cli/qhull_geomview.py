@@ -85,6 +85,19 @@ def pictures(lh):
                   and a.split("\n")[1:] == run([lh, prog, "G"], text)[1].split("\n")[1:], e)
 
 
+def selected(lh):
+    """With good facets selected (Pdk, PAn, QVn), G draws the good facets only, as Qhull."""
+    for spec, prog, qopts in (("15 D2 t98", "qdelaunay", ["Qt"]), ("30 D3 t99", "qconvex", [])):
+        text = rbox(spec)
+        # qdelaunay's PAn: lifthull's among the Delaunay simplices, Qhull's among its upper
+        # facets too (they are often larger): qconvex only
+        for f in (["Pd0"], ["QV3"]) + ((["PA2"],) if prog == "qconvex" else ()):
+            r, a, _ = run([lh, prog, "G"] + f, text)
+            _, b, _ = run([prog] + qopts + ["G"] + f, text)
+            check("%s %s G %s" % (spec, prog, " ".join(f)), r == 0 and same_rows(rows(a), rows(b), 1e-3)
+                  and a.count("OFF") == b.count("OFF") > 0, "%d vs %d" % (a.count("OFF"), b.count("OFF")))
+
+
 def four_d(lh):
     for spec, prog, qopts in (("8 D4 t94", "qconvex", []), ("30 D4 t95", "qconvex", []),
                               ("9 D3 t96", "qdelaunay", ["Qt"]), ("25 D3 t97", "qdelaunay", ["Qt"])):
@@ -118,4 +131,4 @@ def refusals(lh):
 
 if __name__ == "__main__":
     sys.exit(main(__doc__, ("rbox", "qconvex", "qdelaunay"),
-                  [("pictures", pictures), ("4-d", four_d), ("refusals", refusals)]))
+                  [("pictures", pictures), ("selected", selected), ("4-d", four_d), ("refusals", refusals)]))
