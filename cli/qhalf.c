@@ -613,7 +613,7 @@ int lh_cli_qhalf(int argc, char **argv)
     }
     lh_cli_qopts oc = o;
     oc.prog = LH_QPROG_CONVEX;
-    if (!interior_point(&o, &hs, &from) || !lh_cli_qcheck_outputs(&oc, hs.d)) {
+    if (!interior_point(&o, &hs, &from) || !lh_cli_qcheck_outputs(&oc, hs.d, hs.n)) {
         free(hs.h);
         free(hs.line);
         return LH_EXIT_USAGE;

@@ -15,6 +15,10 @@ typedef enum { LH_QPROG_DELAUNAY, LH_QPROG_VORONOI, LH_QPROG_CONVEX, LH_QPROG_HA
 
 enum { LH_QOUT_MAX = 32 };
 
+/* G's suboptions (qhull_geom.c): Gi, Go, Gn, Ga, Gr, Gh. */
+enum { LH_QG_INNER = 1, LH_QG_OUTER = 2, LH_QG_NOPLANES = 4, LH_QG_POINTS = 8, LH_QG_RIDGES = 16,
+       LH_QG_INTERSECT = 32 };
+
 typedef struct lh_cli_qopts {
     lh_cli_qprog prog;
     const char *name;         /* "qdelaunay", "qvoronoi", "qconvex", "qhalf"   */
@@ -36,6 +40,12 @@ typedef struct lh_cli_qopts {
     int npd;
     size_t largest;           /* PAn: the n largest facets are the good ones   */
     int good, good_nbrs;      /* Pg: print good facets; PG: their neighbours   */
+    int geom;                 /* G's suboptions, LH_QG_* bits                  */
+    int geom_drop;            /* GDn: the coordinate a 4-d picture drops; -1   */
+    struct lh_cli_qgood {     /* QGn (visible from point n; QG-n: not visible), */
+        int on, not;          /* QVn (with vertex n; QV-n: without)             */
+        size_t n;
+    } gpoint, gvertex;
     const char *input;        /* TI file, NULL: standard input                 */
     const char *output;       /* TO file, NULL: standard output                */
     char command[256];        /* "lifthull qdelaunay OPTIONS", for summaries    */
@@ -63,16 +73,26 @@ typedef struct lh_cli_qmodel {
     lh_index *nbr;         /* nv per facet, opposite each vertex             */
     lh_index *own_vert;    /* vert when the model owns it (hull facets)      */
     size_t m_other;        /* the other facets                               */
+    size_t m_upper;        /* the first m_upper of them: upper (Qu: lower) and
+                              vertical facets; then those the filters dropped */
     lh_index *other;       /* nv per other facet, in site numbering (-1: the
                               empty slot of a vertical facet's d vertices)    */
     lh_index *inc_off;     /* n + 1: site i's facets are inc[inc_off[i]..]   */
     lh_index *inc;         /* main facets, then other ones as -(j+1)         */
     const lh_index *dup;   /* the site each one was merged into              */
+    lh_index *own_dup;     /* dup when the model owns it (QGn)               */
+    lh_index excluded;     /* QGn's point n, left out of the hull; -1: none  */
+    size_t built_n;        /* the sites the hull was built on: all, or (QGn) */
+    const double *built_xyz; /* all but `excluded`, in order (lh_hull_measures) */
+    double *own_xyz;       /* built_xyz when the model owns it               */
     size_t ndup;
     double seconds;        /* the computation's time                          */
     lh_tri *tri, *tri_other;
     lh_hull *hull;
     lh_pred *pred;         /* for the exact hyperplanes of qconvex n, Fi, Fo    */
+    char *good;            /* qvoronoi's filters: the simplices kept (NULL: all) */
+    const struct lh_cli_qmodel *all; /* qvoronoi with filters: this model before
+                              them (good set), for the Voronoi formats; NULL  */
 } lh_cli_qmodel;
 
 /* Builds the model for the options' program; 0 after printing the problem. */
@@ -81,16 +101,22 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
 void lh_cli_qmodel_free(lh_cli_qmodel *mo);
 /* (Re)builds mo->inc_off and mo->inc from the facets (qhull_model.c). */
 lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo);
-/* Qhull's print filters (Pdk, PDk, PAn, Pg, PG; qhull_select.c): the facets they
- * drop join the other facets (negative ids), as Qhull's unprinted ones. Returns 1;
+/* Qhull's print filters (Pdk, PDk, PAn, Pg, PG, QGn, QVn; qhull_select.c): the
+ * facets they drop join the other facets (negative ids), as Qhull's unprinted ones.
+ * `all`, when not NULL, is a second build of the same model: it keeps every facet
+ * and gets the kept ones as its good set (qvoronoi's Voronoi formats). Returns 1;
  * 0 when out of memory, -1 for a coordinate outside the facets' normals (both after
  * printing the problem). */
-int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o);
+int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o, lh_cli_qmodel *all);
+/* Whether options select good facets (QGn QVn Pdk PDk PAn PG): then, as in Qhull,
+ * the summary counts them apart and Fx, FN name only the printed facets' vertices. */
+int lh_cli_qselecting(const lh_cli_qopts *o);
 
-/* Whether the outputs asked for suit d-dimensional input (m, FM, G: 2-d and 3-d
- * hulls, 2-d Delaunay; qdelaunay's f and FF: up to 7-d); 0 after printing the
- * problem (qhull_extra.c). */
-int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d);
+/* Whether the outputs asked for suit n sites in d dimensions (m, FM: 2-d and 3-d
+ * hulls, 2-d Delaunay; G: pictures of 2 to 4 coordinates, qvoronoi 2-d; qdelaunay's
+ * f and FF: up to 7-d; QGn, QVn: a point n); 0 after printing the problem
+ * (qhull_extra.c). */
+int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d, size_t n);
 
 /* Ts: the computation's statistics (qhull_stats.c). */
 void lh_cli_qstats(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo);

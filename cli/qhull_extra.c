@@ -4,9 +4,10 @@
  *
  * Coplanar points (Fc, FP) are exact here: for qconvex the sites that are not
  * vertices and lie exactly on a facet's hyperplane (each with the first such
- * facet), for qdelaunay the merged duplicates (with the first facet of the site they
- * were merged into). Facet ids are the output's facet numbers (FI prints them); no
- * facet is ever merged, so Fm prints 0 for each.
+ * facet), for qdelaunay and qvoronoi the merged duplicates (with the first facet of
+ * the site they were merged into). Facet ids are the output's facet numbers (FI
+ * prints them; qvoronoi's Voronoi vertex v >= 1 is facet v - 1); no facet is ever
+ * merged, so Fm prints 0 for each.
  */
 #include "qhull.h"
 #include "qhull_print.h"
@@ -24,7 +25,7 @@ static void print_ids(FILE *f, const lh_cli_qmodel *mo, int merges)
 /* The first printed facet site i is coplanar with, or -1. */
 static lh_index coplanar_facet(const lh_cli_qopts *o, const lh_cli_qmodel *mo, size_t i)
 {
-    if (lh_cli_qis_vertex(mo, i)) return -1;
+    if (lh_cli_qis_vertex(mo, i) || (lh_index)i == mo->excluded) return -1;
     if (o->prog != LH_QPROG_CONVEX) {
         size_t v = (size_t)mo->dup[i];
         if (v == i) return -1; /* a site that is no vertex and no duplicate: none here */
@@ -144,8 +145,48 @@ int lh_cli_qprint_extra(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo,
     return 1;
 }
 
-int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d)
+/* G and its suboptions for a picture of `dims` coordinates (Qhull's rules: 2-d to
+ * 4-d; Ga, Gr, Gh, Gn not in 4-d, Gr and Gh not in 2-d, where Qhull warns and
+ * draws without them). 0 after printing the problem. */
+static int geom_fits(const lh_cli_qopts *o, int dims)
 {
+    const int extras = o->geom & (LH_QG_POINTS | LH_QG_RIDGES | LH_QG_INTERSECT);
+    if (dims < 2 || dims > 4) {
+        fprintf(stderr, "lifthull %s: option 'G': Geomview output is only available for 2-d, 3-d "
+                "and 4-d pictures (Qhull's rule; here %d-d%s)\n", o->name, dims,
+                o->prog == LH_QPROG_DELAUNAY ? ", the lifted hull" : "");
+        return 0;
+    }
+    if (dims == 4 && (o->geom & (LH_QG_POINTS | LH_QG_RIDGES | LH_QG_INTERSECT | LH_QG_NOPLANES))) {
+        fprintf(stderr, "lifthull %s: options 'Ga', 'Gr', 'Gh' and 'Gn' are for 2-d and 3-d "
+                "pictures (a 4-d one draws its ridges)\n", o->name);
+        return 0;
+    }
+    if (dims == 2 && (o->geom & (LH_QG_RIDGES | LH_QG_INTERSECT)))
+        fprintf(stderr, "lifthull %s: options 'Gr' and 'Gh' ignored: no ridges to draw in a 2-d "
+                "picture (as Qhull)\n", o->name);
+    if ((o->geom & LH_QG_NOPLANES) && !(o->geom & (LH_QG_INNER | LH_QG_OUTER)) &&
+        !(dims == 3 ? extras : extras & LH_QG_POINTS)) {
+        fprintf(stderr, "lifthull %s: option 'Gn': no output specified for Geomview (Gn leaves "
+                "the facets out: add Ga, Gr or Gh)\n", o->name);
+        return 0;
+    }
+    if (o->geom_drop >= 0 && dims != 4)
+        fprintf(stderr, "lifthull %s: option 'GD%d' ignored: it drops a coordinate of 4-d "
+                "pictures only\n", o->name, o->geom_drop);
+    return 1;
+}
+
+int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d, size_t n)
+{
+    const struct lh_cli_qgood *g[2] = {&o->gpoint, &o->gvertex};
+    for (int k = 0; k < 2; k++)
+        if (g[k]->on && g[k]->n >= n) { /* Qhull: QH6150 */
+            fprintf(stderr, "lifthull %s: option 'Q%c%s%zu': point %zu is not among the %zu input "
+                    "points (0..%zu)\n", o->name, k ? 'V' : 'G', g[k]->not ? "-" : "", g[k]->n,
+                    g[k]->n, n, n ? n - 1 : 0);
+            return 0;
+        }
     for (int i = 0; i < o->nout; i++) {
         const char *w = o->out[i];
         if ((!strcmp(w, "f") || !strcmp(w, "FF")) && o->prog != LH_QPROG_CONVEX &&
@@ -153,6 +194,15 @@ int lh_cli_qcheck_outputs(const lh_cli_qopts *o, int d)
             fprintf(stderr, "lifthull %s: option '%s': the lifted facets' normals are for at most "
                     "%d-d input\n", o->name, w, LH_ORIENT_MAX_DIM - 1);
             return 0;
+        }
+        if (!strcmp(w, "G") && o->prog == LH_QPROG_VORONOI && d != 2) {
+            fprintf(stderr, "lifthull qvoronoi: option 'G': Geomview output for Voronoi diagrams "
+                    "only for 2-d (Qhull's rule; here %d-d)\n", d);
+            return 0;
+        }
+        if (!strcmp(w, "G") && o->prog != LH_QPROG_VORONOI) {
+            if (!geom_fits(o, d + (o->prog != LH_QPROG_CONVEX))) return 0;
+            continue;
         }
         if ((strcmp(w, "m") && strcmp(w, "FM") && strcmp(w, "G")) ||
             (o->prog == LH_QPROG_CONVEX ? d == 2 || d == 3 : d == 2))

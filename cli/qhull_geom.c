@@ -1,91 +1,289 @@
 /*
- * qhull_geom.c — Qhull's G: Geomview pictures of 2-d hulls (VECT segments) and of
- * 3-d hulls and 2-d Delaunay triangulations (OFF triangles, lifted with Qhull's
- * Qbb scaling: the whole lifted hull, upper facets too, as Qhull draws it), each facet coloured by its unit normal n as (n + 1) / 2, in Qhull
- * 2020.2's layout ("%8.4g" numbers, "# f<id>" comments). Vertices are the sites
- * themselves: lifthull's facets are exact, so there are no inner and outer planes to
- * draw (Qhull projects the vertices onto them). Qhull's G suboptions are not
- * supported.
+ * qhull_geom.c — Qhull's G: Geomview pictures in Qhull 2020.2's layout ("%8.4g"
+ * numbers, "# f<id>" comments) of 2-d hulls (VECT segments), of 3-d hulls and 2-d
+ * Delaunay triangulations (OFF triangles) and of 4-d hulls and 3-d Delaunay
+ * triangulations (4OFF: the ridges as triangles, or with GDn one OFF per ridge with
+ * coordinate n dropped). A Delaunay picture is the whole lifted hull with Qhull's Qbb
+ * scaling, upper facets too, as Qhull draws it. Each facet is coloured by its unit
+ * normal n as (n + 1) / 2 (GDn: that colour without coordinate n, scaled to length
+ * 1, as Qhull does when the picture drops a dimension).
+ *
+ * Vertices are the sites themselves: lifthull's facets are exact, so the inner and
+ * outer planes Qhull draws (projecting the vertices onto them) are the facet's own
+ * hyperplane. Hence Go draws what G draws, Gi the same facets in the complementary
+ * colour (Qhull's colour for inner planes), and Gh (the intersections of neighbouring
+ * facets) draws the ridges themselves. Ga adds every input point, Gr the ridges, Gn
+ * leaves out the facets (Gr and Gh in 3-d pictures, Ga in 2-d and 3-d ones, as
+ * Qhull; lh_cli_qcheck_outputs refuses or notes the others).
  */
 #include "qhull.h"
 #include "qhull_print.h"
+#include "qhull_sides.h"
 
-static void point(FILE *f, const lh_cli_qmodel *mo, lh_cli_qlift s, int lifted, size_t i)
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct picture {
+    FILE *f;
+    const lh_cli_qopts *o;
+    const lh_cli_qmodel *mo;
+    lh_cli_qlift s;
+    int lifted, dims; /* dims: the picture's coordinates, d + lifted           */
+    size_t nf;        /* drawn facets: the model's, then (lifted) the other
+                         ones but the vertical, numbered as the model's, m + j */
+    lh_index *vert, *nbr;
+    size_t *id;
+} picture;
+
+/* Site i's coordinates in the picture (lifted; a 2-d hull's third is 0). */
+static void coords(const picture *p, size_t i, double *x)
 {
-    const double *x = mo->xyz + i * mo->d;
-    for (int j = 0; j < mo->d; j++) fprintf(f, "%8.4g ", x[j]);
-    if (lifted) fprintf(f, "%8.4g ", lh_cli_qlifted(mo, s, i));
-    else if (mo->d == 2) fprintf(f, "%8.4g", 0.0);
+    const lh_cli_qmodel *mo = p->mo;
+    for (int j = 0; j < 4; j++) x[j] = 0;
+    for (int j = 0; j < mo->d && j < 4; j++) x[j] = mo->xyz[i * mo->d + j];
+    if (p->lifted) x[mo->d] = lh_cli_qlifted(mo, p->s, i);
 }
 
-static void colour(FILE *f, const double *n, int dims)
+static void point(FILE *f, const picture *p, size_t i, int count, int drop)
 {
-    for (int j = 0; j < 3; j++) fprintf(f, "%8.4g ", j < dims ? (n[j] + 1) / 2 : 0.0);
-    fputs("1.0", f);
+    double x[4];
+    coords(p, i, x);
+    for (int j = 0; j < count; j++)
+        if (j != drop) fprintf(f, "%8.4g ", x[j]);
 }
 
-/* A triangle's 3-d point (lifted for qdelaunay). */
-static void point3(const lh_cli_qmodel *mo, lh_cli_qlift s, size_t i, double *p)
+/* Drawn facet g's unit normal: qconvex's outward one; qdelaunay's lifted one, away
+ * from the lifted hull. */
+static void normal_of(const picture *p, size_t g, double *n)
 {
-    for (int j = 0; j < 3; j++) p[j] = j < mo->d ? mo->xyz[i * mo->d + j] : lh_cli_qlifted(mo, s, i);
+    if (p->id[g] < p->mo->m) lh_cli_qfacet_normal(p->mo, p->o, p->s, p->id[g], n);
+    else lh_cli_qlifted_normal(p->mo, p->s, p->vert + g * (size_t)p->dims, !p->o->furthest, n);
 }
 
-/* Triangle v, clockwise seen from outside (against its outward normal n), as Qhull
- * orders its facets' vertices (seen on qconvex and qdelaunay, 2020.2). */
-static void triangle(FILE *f, const lh_cli_qmodel *mo, lh_cli_qlift s, int lifted,
-                     const lh_index *v, const double *n, size_t id)
+/* Facet g's colour: (n + 1) / 2 in the first three coordinates (complemented for an
+ * inner plane); with GDn, in the three kept, scaled to length 1. */
+static void colour_of(const picture *p, size_t g, int inner, double *c)
 {
-    double a[3], b[3], c[3];
-    point3(mo, s, (size_t)v[0], a);
-    point3(mo, s, (size_t)v[1], b);
-    point3(mo, s, (size_t)v[2], c);
-    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double n[LH_DELAUNAY_MAX_DIM + 1] = {0}, len = 0;
+    normal_of(p, g, n);
+    const int drop = p->dims == 4 ? p->o->geom_drop : -1;
+    for (int j = 0, w = 0; j < p->dims && w < 3; j++)
+        if (j != drop) c[w++] = (n[j] + 1) / 2;
+    if (p->dims == 2) c[2] = 0;
+    for (int j = 0; j < 3; j++) {
+        if (inner) c[j] = 1 - c[j];
+        len += c[j] * c[j];
+    }
+    for (int j = 0; j < 3 && drop >= 0 && len > 0; j++) c[j] /= sqrt(len);
+}
+
+static void colour(FILE *f, const double *c, const char *alpha)
+{
+    fprintf(f, "%8.4g %8.4g %8.4g %s", c[0], c[1], c[2], alpha);
+}
+
+/* The facets to draw and their neighbours among them (lh_cli_pair_within). */
+static int picture_init(picture *p, FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
+{
+    memset(p, 0, sizeof *p);
+    p->f = f;
+    p->o = o;
+    p->mo = mo;
+    p->lifted = o->prog != LH_QPROG_CONVEX;
+    p->dims = mo->d + p->lifted;
+    p->s = p->lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1, 0};
+    const size_t nv = (size_t)mo->nv;
+    /* with good facets selected, Qhull draws those only; else the lifted hull's
+     * upper facets too (the first m_upper others; after them come dropped ones) */
+    size_t total = mo->m + (p->lifted && !lh_cli_qselecting(o) ? mo->m_upper : 0);
+    p->vert = malloc((total ? total : 1) * nv * sizeof *p->vert);
+    p->nbr = malloc((total ? total : 1) * nv * sizeof *p->nbr);
+    p->id = malloc((total ? total : 1) * sizeof *p->id);
+    if (!p->vert || !p->nbr || !p->id) return 0;
+    for (size_t g = 0; g < total; g++) {
+        const lh_index *v = g < mo->m ? mo->vert + g * nv : mo->other + (g - mo->m) * nv;
+        if (v[nv - 1] < 0) continue; /* a vertical facet: none of the lifted hull's */
+        memcpy(p->vert + p->nf * nv, v, nv * sizeof *v);
+        p->id[p->nf++] = g;
+    }
+    return lh_cli_pair_within(mo->nv, p->nf, p->vert, p->nbr);
+}
+
+static void picture_free(picture *p)
+{
+    free(p->vert);
+    free(p->nbr);
+    free(p->id);
+}
+
+/* Ga: every input point, one VECT of dots (Qhull's layout). */
+static void all_points(const picture *p)
+{
+    FILE *f = p->f;
+    const size_t n = p->mo->n;
+    fprintf(f, "VECT %zu %zu 1\n", n, n);
+    for (size_t i = 1; i < n; i++) fputs("1 ", f);
+    fputs("\n1 # 1 point per line\n1 ", f);
+    for (size_t i = 2; i < n; i++) fputs("0 ", f);
+    fputs("\n0 # 1 color for all\n", f);
+    for (size_t i = 0; i < n; i++) {
+        point(f, p, i, 3, -1);
+        fprintf(f, " # p%zu\n", i);
+    }
+    fputs("0 1 1 1  # color of points\n", f);
+}
+
+/* A 2-d hull's edge g as Qhull's VECT. */
+static void segment(const picture *p, size_t g, int inner)
+{
+    double c[3];
+    fprintf(p->f, "VECT 1 2 1 2 1 # f%zu\n", p->id[g]);
+    for (int k = 0; k < 2; k++) { /* Qhull: no blank after the third, 0 */
+        point(p->f, p, (size_t)p->vert[g * 2 + k], 2, -1);
+        fprintf(p->f, "%8.4g\n", 0.0);
+    }
+    colour_of(p, g, inner, c);
+    colour(p->f, c, "1.0\n");
+}
+
+/* Triangle g, clockwise seen from outside (against its normal n), as Qhull orders
+ * its facets' vertices (seen on qconvex and qdelaunay, 2020.2). */
+static void triangle(const picture *p, size_t g, int inner)
+{
+    double x[3][4], n[LH_DELAUNAY_MAX_DIM + 1] = {0}, c[3];
+    for (int k = 0; k < 3; k++) coords(p, (size_t)p->vert[g * 3 + k], x[k]);
+    normal_of(p, g, n);
+    double u[3], w[3];
+    for (int j = 0; j < 3; j++) u[j] = x[1][j] - x[0][j], w[j] = x[2][j] - x[0][j];
     double turn = n[0] * (u[1] * w[2] - u[2] * w[1]) + n[1] * (u[2] * w[0] - u[0] * w[2]) +
                   n[2] * (u[0] * w[1] - u[1] * w[0]);
     int order[3] = {0, turn > 0 ? 2 : 1, turn > 0 ? 1 : 2};
-    fprintf(f, "{ OFF 3 1 1 # f%zu\n", id);
+    fprintf(p->f, "{ OFF 3 1 1 # f%zu\n", p->id[g]);
     for (int k = 0; k < 3; k++) {
-        point(f, mo, s, lifted, (size_t)v[order[k]]);
-        fputc('\n', f);
+        point(p->f, p, (size_t)p->vert[g * 3 + order[k]], 3, -1);
+        fputc('\n', p->f);
     }
-    fputs("3 0 1 2 ", f);
-    colour(f, n, 3);
-    fputs(" }\n", f);
+    fputs("3 0 1 2 ", p->f);
+    colour_of(p, g, inner, c);
+    colour(p->f, c, "1.0 }\n");
+}
+
+/* Gr and Gh of a 3-d picture: facet g's edges to the facets not drawn yet (each
+ * edge once). Gr as Qhull's qh_printline3geom (green; one dot when the ends are
+ * within 1e-3), Gh as its intersection of the two facets' planes (black): exactly
+ * the edge. */
+static void edges(const picture *p, size_t g)
+{
+    static const double green[3] = {0, 1, 0}, black[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++) {
+        lh_index u = p->nbr[g * 3 + k];
+        if (u >= 0 && (size_t)u < g) continue;
+        size_t a = (size_t)p->vert[g * 3 + (k + 1) % 3], b = (size_t)p->vert[g * 3 + (k + 2) % 3];
+        double xa[4], xb[4];
+        coords(p, a, xa);
+        coords(p, b, xb);
+        if (p->o->geom & LH_QG_RIDGES) {
+            int apart = fabs(xa[0] - xb[0]) > 1e-3 || fabs(xa[1] - xb[1]) > 1e-3 || fabs(xa[2] - xb[2]) > 1e-3;
+            fputs(apart ? "VECT 1 2 1 2 1\n" : "VECT 1 1 1 1 1\n", p->f);
+            if (apart) {
+                point(p->f, p, b, 3, -1);
+                fprintf(p->f, " # p%zu\n", b);
+            }
+            point(p->f, p, a, 3, -1);
+            fprintf(p->f, " # p%zu\n", a);
+            colour(p->f, green, "1\n");
+        }
+        if ((p->o->geom & LH_QG_INTERSECT) && u >= 0) {
+            fprintf(p->f, "VECT 1 2 1 2 1 # intersect f%zu f%zu\n", p->id[g], p->id[u]);
+            point(p->f, p, a, 3, -1);
+            fprintf(p->f, "# projected p%zu\n", a);
+            point(p->f, p, b, 3, -1);
+            fprintf(p->f, "# projected p%zu\n", b);
+            colour(p->f, black, "1.0\n");
+        }
+    }
+}
+
+/* 4-d: every ridge (facet g's side opposite vertex k, to a facet not drawn yet) once,
+ * coloured by g; 4OFF with the faces listed last, or (GDn) one OFF per ridge. */
+static void ridges_4d(const picture *p)
+{
+    FILE *f = p->f;
+    const int drop = p->o->geom_drop;
+    /* Qhull's GDn draws a Delaunay picture's lower facets only (the simplices of
+     * the triangulation, seen with the lifted coordinate dropped: GD3); they come
+     * first, and the other facets after them, so each ridge is still drawn once */
+    const size_t nf = drop >= 0 && p->lifted ? p->mo->m : p->nf;
+    size_t count = 0;
+    for (size_t g = 0; g < nf; g++)
+        for (int k = 0; k < 4; k++) count += p->nbr[g * 4 + k] < 0 || (size_t)p->nbr[g * 4 + k] > g;
+    if (drop < 0) fprintf(f, "LIST # %s\n4OFF %zu %zu 1\n", p->o->command, 3 * count, count);
+    else fprintf(f, "{appearance {+edge -evert linewidth 2} LIST # %s\n", p->o->command);
+    for (int pass = 0; pass < 1 + (drop < 0); pass++) {
+        size_t r = 0;
+        for (size_t g = 0; g < nf; g++) {
+            double c[3];
+            colour_of(p, g, 0, c);
+            for (int k = 0; k < 4; k++) {
+                lh_index u = p->nbr[g * 4 + k];
+                if (u >= 0 && (size_t)u < g) continue;
+                char other[32] = "";
+                if (u >= 0) snprintf(other, sizeof other, " f%zu", p->id[u]);
+                if (pass == 1) {
+                    fprintf(f, "3 %zu %zu %zu ", 3 * r, 3 * r + 1, 3 * r + 2);
+                    colour(f, c, "1 # ");
+                    fprintf(f, "f%zu%s\n", p->id[g], other);
+                    r++;
+                    continue;
+                }
+                fprintf(f, drop < 0 ? "# ridge between f%zu%s\n" : "OFF 3 1 1 # ridge between f%zu%s\n",
+                        p->id[g], other);
+                for (int j = 0; j < 4; j++) {
+                    if (j == k) continue;
+                    point(f, p, (size_t)p->vert[g * 4 + j], 4, drop);
+                    fputc('\n', f);
+                }
+                if (drop >= 0) {
+                    fputs("3 0 1 2 ", f);
+                    colour(f, c, "\n");
+                    fputs("}\n", f);
+                }
+            }
+        }
+    }
+    if (drop >= 0) fputs("}\n", f);
 }
 
 int lh_cli_qprint_geomview(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
-    const int lifted = o->prog != LH_QPROG_CONVEX, dims = mo->d + lifted;
-    lh_cli_qlift s = lifted ? lh_cli_qlift_scale(mo) : (lh_cli_qlift){0, 1, 0};
-    double n[LH_DELAUNAY_MAX_DIM + 1];
-    if (dims == 2) {
-        fprintf(f, "{appearance {linewidth 3} LIST # %s\n", o->command);
-        for (size_t t = 0; t < mo->m; t++) {
-            fprintf(f, "VECT 1 2 1 2 1 # f%zu\n", t);
-            for (int k = 0; k < 2; k++) {
-                point(f, mo, s, 0, (size_t)mo->vert[t * 2 + k]);
-                fputc('\n', f);
-            }
-            lh_cli_qfacet_normal(mo, o, s, t, n);
-            colour(f, n, 2);
-            fputc('\n', f);
-        }
-        fputs("}\n", f);
+    picture p;
+    if (!picture_init(&p, f, o, mo)) {
+        picture_free(&p);
+        return 0;
+    }
+    const int geom = o->geom;
+    /* Qhull: outer planes unless Gn or Gi alone; inner ones with Gi (exact: the same
+     * plane, never apart from the outer one by more than Qhull's epsilon) */
+    const int outer = (geom & LH_QG_OUTER) || !(geom & (LH_QG_NOPLANES | LH_QG_INNER));
+    const int inner = (geom & LH_QG_INNER) != 0;
+    if (p.dims == 4) {
+        ridges_4d(&p);
+        picture_free(&p);
         return 1;
     }
-    fprintf(f, "{appearance {+edge -evert linewidth 2} LIST # %s\n", o->command);
-    for (size_t t = 0; t < mo->m; t++) {
-        lh_cli_qfacet_normal(mo, o, s, t, n);
-        triangle(f, mo, s, lifted, mo->vert + t * 3, n, t);
-    }
-    /* Qhull draws the whole lifted hull: the other facets too (not the vertical
-     * ones, which are no facets of lifthull's; their last slot is -1) */
-    for (size_t j = 0; lifted && j < mo->m_other; j++) {
-        const lh_index *v = mo->other + j * 3;
-        if (v[2] < 0) continue;
-        lh_cli_qlifted_normal(mo, s, v, !o->furthest, n);
-        triangle(f, mo, s, lifted, v, n, mo->m + j);
+    if (p.dims == 2) fprintf(f, "{appearance {linewidth 3} LIST # %s\n", o->command);
+    else fprintf(f, "{appearance {+edge -evert linewidth 2} LIST # %s\n", o->command);
+    if (geom & LH_QG_POINTS) all_points(&p);
+    for (size_t g = 0; g < p.nf; g++) {
+        for (int in = 0; in < 2; in++) {
+            if (!(in ? inner : outer)) continue;
+            if (p.dims == 2) segment(&p, g, in);
+            else triangle(&p, g, in);
+        }
+        if (p.dims == 3) edges(&p, g);
     }
     fputs("}\n", f);
+    picture_free(&p);
     return 1;
 }

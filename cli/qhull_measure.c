@@ -15,7 +15,7 @@ int lh_cli_qtotals(const lh_cli_qmodel *mo, double *area, double *volume)
 {
     lh_status st;
     if (mo->hull) {
-        st = lh_hull_measures(mo->hull, mo->xyz, mo->n, NULL, area, volume);
+        st = lh_hull_measures(mo->hull, mo->built_xyz, mo->built_n, NULL, area, volume);
     } else {
         st = lh_tri_measures(mo->tri, NULL, area);
         *volume = 0;

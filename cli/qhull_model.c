@@ -167,15 +167,60 @@ lh_status lh_cli_qmodel_incidence(lh_cli_qmodel *mo)
     return LH_OK;
 }
 
+/* QGn: the sites but point g, for the hull to be built on (Qhull leaves point n
+ * out of the hull). */
+static lh_status leave_out(lh_cli_qmodel *mo, size_t g)
+{
+    const size_t d = (size_t)mo->d;
+    mo->own_xyz = malloc((mo->n > 1 ? mo->n - 1 : 1) * d * sizeof *mo->own_xyz);
+    if (!mo->own_xyz) return LH_ERR_NOMEM;
+    memcpy(mo->own_xyz, mo->xyz, g * d * sizeof *mo->own_xyz);
+    memcpy(mo->own_xyz + g * d, mo->xyz + (g + 1) * d, (mo->n - g - 1) * d * sizeof *mo->own_xyz);
+    mo->excluded = (lh_index)g;
+    mo->n--;
+    mo->xyz = mo->own_xyz;
+    return LH_OK;
+}
+
+/* After leave_out: every site index back in the input's numbering (those from g on
+ * move up by one); point g is neither a vertex nor a duplicate. */
+static lh_status put_back(lh_cli_qmodel *mo, const double *xyz)
+{
+    const lh_index g = mo->excluded;
+    const size_t nv = (size_t)mo->nv;
+    mo->built_n = mo->n++;
+    mo->built_xyz = mo->own_xyz;
+    mo->xyz = xyz;
+    if (!mo->own_vert) {
+        mo->own_vert = malloc((mo->m ? mo->m : 1) * nv * sizeof *mo->own_vert);
+        if (!mo->own_vert) return LH_ERR_NOMEM;
+        memcpy(mo->own_vert, mo->vert, mo->m * nv * sizeof *mo->own_vert);
+        mo->vert = mo->own_vert;
+    }
+    mo->own_dup = malloc(mo->n * sizeof *mo->own_dup);
+    if (!mo->own_dup) return LH_ERR_NOMEM;
+    for (size_t i = 0; i < mo->m * nv; i++) mo->own_vert[i] += mo->own_vert[i] >= g;
+    for (size_t i = 0; i < mo->m_other * nv; i++) mo->other[i] += mo->other[i] >= g;
+    for (size_t i = 0; i + 1 < mo->n; i++)
+        mo->own_dup[i + ((lh_index)i >= g)] = mo->dup[i] + (mo->dup[i] >= g);
+    mo->own_dup[g] = g;
+    mo->dup = mo->own_dup;
+    return LH_OK;
+}
+
 int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t n,
                         const double *xyz, const char *name)
 {
     memset(mo, 0, sizeof *mo);
     mo->d = d;
-    mo->n = n;
-    mo->xyz = xyz;
+    mo->n = mo->built_n = n;
+    mo->xyz = mo->built_xyz = xyz;
+    mo->excluded = -1;
     lh_status st = lh_pred_create(NULL, &mo->pred);
+    if (st == LH_OK && o->gpoint.on) st = leave_out(mo, o->gpoint.n);
     if (st == LH_OK) st = o->prog == LH_QPROG_CONVEX ? convex(mo) : delaunay(mo, o);
+    if (st == LH_OK && o->gpoint.on) st = put_back(mo, xyz);
+    mo->m_upper = mo->m_other;
     if (st == LH_OK) st = lh_cli_qmodel_incidence(mo);
     if (st == LH_OK && o->verify) {
         char msg[256];
@@ -186,7 +231,10 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
         if (c != LH_OK) st = c;
     }
     if (st == LH_OK) return 1;
-    lh_cli_report_failure(name, d, n, xyz, st);
+    if (mo->excluded >= 0 && mo->xyz != xyz) /* the hull without QGn's point failed */
+        fprintf(stderr, "lifthull %s: option 'QG%s%zu' leaves point %zu out of the hull:\n", o->name,
+                o->gpoint.not ? "-" : "", o->gpoint.n, o->gpoint.n);
+    lh_cli_report_failure(name, d, mo->n, mo->xyz, st); /* the sites the hull was built on */
     lh_cli_qmodel_free(mo);
     return 0;
 }
@@ -198,6 +246,9 @@ void lh_cli_qmodel_free(lh_cli_qmodel *mo)
     free(mo->other);
     free(mo->inc_off);
     free(mo->inc);
+    free(mo->own_dup);
+    free(mo->good);
+    free(mo->own_xyz);
     lh_tri_free(mo->tri);
     lh_tri_free(mo->tri_other);
     lh_hull_free(mo->hull);

@@ -10,7 +10,7 @@
 /* Output options each program prints (Qhull's manual pages, "Output formats"). */
 static const char *const outputs[4] = {
     "i o p s Fn FN Fv Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
-    "o p s i Fi Fo Fv Fn FN Fs Fx",
+    "o p s i Fi Fo Fv Fn FN Fs Fx FI Fc FP G",
     "i o p s n Fn FN Fv Fi Fo FC Ft Fx FS Fa Fs FI Fm FQ Fc FP m FM G f FF",
     "s i o p Fp Fx Fv Fn FN FI Fm Fc FP Fs FQ G m FM f FF",
 };
@@ -106,10 +106,17 @@ static void help(const lh_cli_qopts *o)
            o->name, o->name, o->name, outputs[o->prog],
            o->prog == LH_QPROG_CONVEX ? " (not for qconvex)" : "",
            o->prog == LH_QPROG_VORONOI ? "" : "  FA        total area (and volume) in the summary 's'\n",
-           o->prog == LH_QPROG_VORONOI ? "" : "; FD: cdd's format for n, Fi, Fo, p",
-           o->prog == LH_QPROG_VORONOI ? "" :
+           o->prog == LH_QPROG_VORONOI ? "; FD: cdd's format for p" : "; FD: cdd's format for n, Fi, Fo, p",
+           o->prog == LH_QPROG_VORONOI ?
+           "  Pdk:n     print the Voronoi vertices whose Delaunay facet's lifted normal has\n"
+           "            normal[k] >= n (PDk:n: <= n; n 0 if left out); PAn: the n largest\n"
+           "  QVn       print the Voronoi vertices of site n's region (QV-n: the others)\n" :
            "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
-           "  PAn       print the n largest facets (Pg); PG: their other neighbours\n",
+           "  PAn       print the n largest facets (Pg); PG: their other neighbours\n"
+           "  QGn       print the facets point n sees (n is left out; QG-n: not seen)\n"
+           "  QVn       print the facets with vertex n (QV-n: without)\n"
+           "  Gi Go Gn Ga Gr Gh GDn  G's inner/outer planes (exact: the facets), no planes,\n"
+           "            all points, ridges, intersections; GDn: 4-d pictures without coordinate n\n",
            o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
 }
@@ -119,9 +126,9 @@ static void help(const lh_cli_qopts *o)
 static int print_filter(lh_cli_qopts *o, const char *w)
 {
     if (w[0] != 'P' || !strchr("dDAgG", w[1]) || !w[1]) return 0;
-    if (o->prog != LH_QPROG_CONVEX && o->prog != LH_QPROG_DELAUNAY) {
+    if (o->prog == LH_QPROG_HALF || (o->prog == LH_QPROG_VORONOI && w[1] == 'G')) {
         fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex and "
-                "qdelaunay)\n", o->name, w);
+                "qdelaunay; qvoronoi: Pdk, PDk, PAn, Pg)\n", o->name, w);
         return -1;
     }
     if (w[1] == 'g' || w[1] == 'G') {
@@ -156,6 +163,67 @@ bad:
     return -1;
 }
 
+/* Output option w, in the order given; 0 after a usage error. */
+static int word_output(lh_cli_qopts *o, const char *w)
+{
+    if (o->nout == LH_QOUT_MAX) {
+        fprintf(stderr, "lifthull %s: more than %d output options\n", o->name, LH_QOUT_MAX);
+        return 0;
+    }
+    strcpy(o->out[o->nout++], w);
+    return 1;
+}
+
+/* QGn / QG-n (good facets: visible from point n, or not) and QVn / QV-n (with
+ * vertex n, or without), qconvex and qdelaunay; 0 after a usage error. */
+static int good_point(lh_cli_qopts *o, const char *w)
+{
+    if (o->prog == LH_QPROG_HALF || (o->prog == LH_QPROG_VORONOI && w[1] == 'G')) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
+                "QGn, QVn; qconvex and qdelaunay; qvoronoi: QVn)\n", o->name, w);
+        return 0;
+    }
+    struct lh_cli_qgood *g = w[1] == 'G' ? &o->gpoint : &o->gvertex;
+    const char *s = w + 2 + (w[2] == '-');
+    char *end;
+    unsigned long long v = isdigit((unsigned char)*s) ? strtoull(s, &end, 10) : 0;
+    if (!isdigit((unsigned char)*s) || *end || v > (unsigned long long)LH_INDEX_MAX) {
+        fprintf(stderr, "lifthull %s: option '%s': expected %.2sn or %.2s-n (n a point's index)\n",
+                o->name, w, w, w);
+        return 0;
+    }
+    *g = (struct lh_cli_qgood){1, w[2] == '-', (size_t)v};
+    return 1;
+}
+
+/* G's suboptions, one or several after a G ("Gr", "Gan", "GD3"): they also ask for
+ * the G output. 0 after a usage error. */
+static int geom_word(lh_cli_qopts *o, const char *w)
+{
+    if (o->prog == LH_QPROG_VORONOI) {
+        fprintf(stderr, "lifthull qvoronoi: option '%s' is not supported (G's suboptions are for "
+                "qconvex and qdelaunay)\n", w);
+        return 0;
+    }
+    static const char letters[] = "ionarh";
+    for (const char *c = w + 1; *c; c++) {
+        const char *at = strchr(letters, *c);
+        if (at) {
+            o->geom |= 1 << (at - letters);
+        } else if (*c == 'D' && c[1] >= '0' && c[1] <= '3') {
+            o->geom_drop = *++c - '0';
+        } else {
+            fprintf(stderr, "lifthull %s: option '%s': '%c' is not supported (G suboptions: Gi Go "
+                    "Gn Ga Gr Gh GDn, n 0..3; Qhull's spheres Gv, projections Gp, centrums Gc and "
+                    "transparency Gt are not drawn)\n", o->name, w, *c);
+            return 0;
+        }
+    }
+    for (int i = 0; i < o->nout; i++)
+        if (!strcmp(o->out[i], "G")) return 1;
+    return word_output(o, "G");
+}
+
 /* qhalf's Hn,n,...: the interior point (missing coordinates 0; "H" alone: the
  * origin). */
 static int interior(lh_cli_qopts *o, const char *w)
@@ -183,14 +251,8 @@ static int interior(lh_cli_qopts *o, const char *w)
 static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
 {
     if (!strcmp(w, "FS") && o->prog != LH_QPROG_VORONOI) o->areas = 1; /* also an output */
-    if (is_output(o->prog, w)) {
-        if (o->nout == LH_QOUT_MAX) {
-            fprintf(stderr, "lifthull %s: more than %d output options\n", o->name, LH_QOUT_MAX);
-            return 0;
-        }
-        strcpy(o->out[o->nout++], w);
-        return 1;
-    }
+    if (is_output(o->prog, w)) return word_output(o, w);
+    if (w[0] == 'G' && w[1] && o->prog != LH_QPROG_HALF) return geom_word(o, w);
     if (!strcmp(w, "TI") || !strcmp(w, "TO")) {
         if (!next) {
             fprintf(stderr, "lifthull %s: option '%s' needs a file name\n", o->name, w);
@@ -216,14 +278,15 @@ static int word(lh_cli_qopts *o, const char *w, const char *next, int *used)
                 "once, exactly, as with 'Tv'\n", o->name);
         return o->verify = 1;
     }
-    if (!strcmp(w, "FD") && facets) return o->cdd = 1;
-    int pf = print_filter(o, w);
-    if (pf) return pf > 0;
-    if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) {
-        fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
-                "QGn, QVn)\n", o->name, w);
+    if (!strcmp(w, "FD") && !half) return o->cdd = 1;
+    if ((!strcmp(w, "m") || !strcmp(w, "FM")) && o->prog == LH_QPROG_VORONOI) {
+        fprintf(stderr, "lifthull qvoronoi: option '%s' is not used with qvoronoi (as in Qhull: "
+                "Mathematica and Maple output are for qconvex and qdelaunay)\n", w);
         return 0;
     }
+    int pf = print_filter(o, w);
+    if (pf) return pf > 0;
+    if ((!strncmp(w, "QG", 2) || !strncmp(w, "QV", 2)) && w[2]) return good_point(o, w);
     for (size_t i = 0; i < sizeof noops / sizeof noops[0]; i++) {
         const noop *p = &noops[i];
         size_t k = strlen(p->word);
@@ -247,6 +310,7 @@ int lh_cli_qparse(lh_cli_qopts *o, lh_cli_qprog prog, int argc, char **argv)
     memset(o, 0, sizeof *o);
     o->prog = prog;
     o->name = names[prog];
+    o->geom_drop = -1;
     snprintf(o->command, sizeof o->command, "lifthull %s", o->name);
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {

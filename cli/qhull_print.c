@@ -148,10 +148,14 @@ static void print_fn(FILE *f, const lh_cli_qmodel *mo)
     }
 }
 
-static void print_fN(FILE *f, const lh_cli_qmodel *mo)
+static void print_fN(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     fprintf(f, "%zu\n", mo->n);
     for (size_t i = 0; i < mo->n; i++) {
+        if (lh_cli_qselecting(o) && !lh_cli_qis_vertex(mo, i)) { /* no printed facet's */
+            fputs("0\n", f);
+            continue;
+        }
         fprintf(f, "%" LH_INDEX_PRI, mo->inc_off[i + 1] - mo->inc_off[i]);
         for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1]; k++) print_id(f, mo->inc[k]);
         fputc('\n', f);
@@ -204,16 +208,20 @@ static void print_o(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 /* Extreme points, increasing (Qhull lists them in its facets' order): qconvex, the
  * hull's vertices; qdelaunay and qvoronoi, the sites on the hull's boundary (on an
  * upper or vertical facet, as Qhull's); with Qu, the furthest-site triangulation's
- * vertices (the corners: a site inside a hull facet lifts below the upper hull). */
+ * vertices (the corners: a site inside a hull facet lifts below the upper hull).
+ * With good facets selected, only those that are vertices of printed facets. */
 static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
     size_t count = 0;
+    const int selecting = lh_cli_qselecting(o);
     for (int pass = 0; pass < 2; pass++) {
         if (pass) fprintf(f, "%zu\n", count);
         for (size_t i = 0; i < mo->n; i++) {
             int on = 0;
             for (lh_index k = mo->inc_off[i]; k < mo->inc_off[i + 1] && !on; k++)
-                on = o->prog == LH_QPROG_CONVEX || (mo->inc[k] < 0) != o->furthest;
+                on = o->prog == LH_QPROG_CONVEX ||
+                     (o->furthest ? mo->inc[k] >= 0 : mo->inc[k] < 0 && (size_t)-mo->inc[k] <= mo->m_upper);
+            on &= !selecting || lh_cli_qis_vertex(mo, i);
             if (!on) continue;
             if (pass) fprintf(f, "%zu\n", i);
             else count++;
@@ -221,27 +229,34 @@ static void print_fx(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     }
 }
 
+/* With a selection of good facets (QGn, QVn, Pdk, PDk, PAn) Qhull's summary counts
+ * the whole hull and then the good facets; QGn's point is not among the points. */
 static int print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
 {
-    size_t v = lh_cli_qvertex_count(mo);
+    size_t v = lh_cli_qvertex_count(mo->all ? mo->all : mo), n = mo->n - (mo->excluded >= 0);
+    int good = lh_cli_qselecting(o) && !o->good_nbrs;
     if (o->prog == LH_QPROG_CONVEX) {
+        if (good) /* the other facets are the dropped ones: with them, the whole hull */
+            for (size_t i = v = 0; i < mo->n; i++) v += mo->inc_off[i + 1] > mo->inc_off[i];
         fprintf(f, "\nConvex hull of %zu points in %d-d:\n\n  Number of vertices: %zu\n"
-                   "  Number of facets: %zu\n", mo->n, mo->d, v, mo->m);
+                   "  Number of facets: %zu\n", n, mo->d, v, mo->m + (good ? mo->m_other : 0));
+        if (good && mo->m) fprintf(f, "  Number of 'good' facets: %zu\n", mo->m); /* Qhull: not 0 */
     } else if (o->prog == LH_QPROG_VORONOI) {
         fprintf(f, "\nVoronoi diagram by the convex hull of %zu points in %d-d:\n\n"
-                   "  Number of Voronoi regions%s: %zu\n  Number of Voronoi vertices: %zu\n",
-                mo->n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v, mo->m);
+                   "  Number of Voronoi regions%s: %zu\n  Number of %sVoronoi vertices: %zu\n",
+                mo->n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v,
+                o->npd || o->gvertex.on ? "'good' " : "", mo->m); /* Qhull: not for PAn */
     } else {
         fprintf(f, "\n%sDelaunay triangulation by the convex hull of %zu points in %d-d:\n\n"
-                   "  Number of input sites: %zu\n  Number of %sDelaunay regions: %zu\n",
-                o->furthest ? "Furthest-site " : "", mo->n, mo->d + 1, mo->n,
+                   "  Number of input sites: %zu\n  Number of %s%sDelaunay regions: %zu\n",
+                o->furthest ? "Furthest-site " : "", n, mo->d + 1, n, good ? "'good' " : "",
                 o->furthest ? "furthest-site " : "", mo->m);
     }
     if (mo->ndup) fprintf(f, "  Number of duplicate sites merged: %zu\n", mo->ndup);
     fprintf(f, "\nStatistics for: %s\n\n  Number of points processed: %zu\n"
                "  Exact arithmetic: every facet a simplex, no merging, no precision error\n"
                "  CPU seconds to compute %s: %.3g\n",
-            o->command, mo->n - mo->ndup, o->prog == LH_QPROG_CONVEX ? "the hull" : "the triangulation",
+            o->command, n - mo->ndup, o->prog == LH_QPROG_CONVEX ? "the hull" : "the triangulation",
             mo->seconds);
     if (o->areas) { /* FA, FS: Qhull's lines, its "%2.8g" */
         double area, volume;
@@ -305,13 +320,16 @@ static void print_centrums(FILE *f, const lh_cli_qmodel *mo)
 
 int lh_cli_qprint(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt)
 {
-    if (o->prog == LH_QPROG_VORONOI && strcmp(opt, "s") && strcmp(opt, "Fn") && strcmp(opt, "i") &&
-        strcmp(opt, "Fs") && strcmp(opt, "Fx"))
-        return lh_cli_qprint_voronoi(f, o, mo, opt);
+    static const char *const facet_formats[] = {"s", "Fn", "i", "Fs", "Fx", "FI", "Fc", "FP"};
+    int as_facets = 0; /* qvoronoi prints these of the Delaunay facets, as Qhull */
+    for (size_t k = 0; k < sizeof facet_formats / sizeof facet_formats[0]; k++)
+        as_facets |= !strcmp(opt, facet_formats[k]);
+    if (o->prog == LH_QPROG_VORONOI && !as_facets)
+        return lh_cli_qprint_voronoi(f, o, mo->all ? mo->all : mo, opt);
     if (!strcmp(opt, "i")) print_i(f, mo);
     else if (!strcmp(opt, "Fv")) print_fv(f, mo);
     else if (!strcmp(opt, "Fn")) print_fn(f, mo);
-    else if (!strcmp(opt, "FN")) print_fN(f, mo);
+    else if (!strcmp(opt, "FN")) print_fN(f, o, mo);
     else if (!strcmp(opt, "p")) print_p(f, o, mo);
     else if (!strcmp(opt, "o") || !strcmp(opt, "Ft")) print_o(f, o, mo);
     else if (!strcmp(opt, "Fx")) print_fx(f, o, mo);

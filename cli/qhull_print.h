@@ -14,7 +14,7 @@ void lh_cli_qcoords(FILE *f, const double *x, int d);
 void lh_cli_qscaled(FILE *f, int width, int prec, double m, int e);
 /* The d coordinates m 2^e as lh_cli_qcoords prints them. */
 void lh_cli_qcoords_scaled(FILE *f, const double *m, int e, int d);
-/* qvoronoi's o, p, Fv, Fi, Fo. Returns 0 when out of memory (message printed). */
+/* qvoronoi's o, p (FD: cdd's format), Fv, Fi, Fo, FN, G. Returns 0 when out of memory. */
 int lh_cli_qprint_voronoi(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo, const char *opt);
 
 /* qdelaunay's lifted coordinate, |p|^2 scaled to [0, max |coordinate|] as Qhull's

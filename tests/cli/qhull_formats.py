@@ -13,33 +13,11 @@ asserted). Exit 0 when every check passed, 1 otherwise, 77 when Qhull's programs
 import argparse
 import re
 import shutil
-import subprocess
 import sys
 from fractions import Fraction
 from math import factorial
 
-FAILS = []
-PASSES = [0]
-VERBOSE = [False]
-
-
-def check(name, cond, detail=""):
-    if cond:
-        PASSES[0] += 1
-        if VERBOSE[0]:
-            print("PASS", name)
-    else:
-        FAILS.append(name)
-        print("FAIL", name, detail)
-
-
-def run(cmd, text):
-    p = subprocess.run(cmd, input=text, capture_output=True, text=True)
-    return p.returncode, p.stdout, p.stderr
-
-
-def rbox(spec):
-    return subprocess.run(["rbox"] + spec.split(), capture_output=True, text=True, check=True).stdout
+from qhull_check import FAILS, PASSES, VERBOSE, cdd_rows, check, rbox, run
 
 
 def points(text):
@@ -257,27 +235,19 @@ def filters(lh):
           or sorted(map(sorted, facets_i(li))) == [[1, 3, 7], [1, 5, 7]], li)
     _, qi, _ = run(["qconvex", "Pd0:1", "i"], text)
     print("note: cube + 2^30 Pd0:1: lifthull %s facets, qconvex %s" % (li.split()[0], qi.split()[0]))
-    r, _, e = run([lh, "qvoronoi", "Pd0", "o"], rbox("10 D2 t1"))
-    check("qvoronoi Pd0 refused", r == 2 and "option 'Pd0' is not supported" in e, e)
+    r, _, e = run([lh, "qvoronoi", "PG", "o"], rbox("10 D2 t1"))  # Pdk: tests/cli/qvoronoi_extras.py
+    check("qvoronoi PG refused", r == 2 and "option 'PG' is not supported" in e, e)
     for bad in ("Pd", "PD0:x", "PA0", "PAx", "Pdd1"):
         r, _, e = run([lh, "qconvex", bad, "i"], rbox("10 D2 t1"))
         check("qconvex %s refused" % bad, r == 2 and "option '%s': expected" % bad in e, e)
     r, _, e = run([lh, "qconvex", "Pd3", "i"], rbox("10 D2 t1"))
     check("qconvex Pd3 in 2-d refused", r == 2 and "coordinates 0..1" in e, e)
-    for q in ("QG0", "QV3", "QG-1"):
-        r, _, e = run([lh, "qdelaunay", q, "i"], rbox("10 D2 t1"))
-        check(q + " refused", r == 2 and "option '%s' is not supported" % q in e, e)
+    for q in ("QG0", "QG-1"):  # qconvex, qdelaunay, qvoronoi's QVn: tests/cli/qhull_good.py
+        r, _, e = run([lh, "qvoronoi", q, "o"], rbox("10 D2 t1"))
+        check("qvoronoi " + q + " refused", r == 2 and "option '%s' is not supported" % q in e, e)
 
 
 # ---- FI Fm FQ FO FD Fc FP m FM ----------------------------------------------------------
-def cdd_rows(out):
-    lines = out.split("\n")
-    b, e = lines.index("begin"), lines.index("end")
-    head = lines[b + 1].split()
-    rows = [tuple(float(x) for x in l.split()) for l in lines[b + 2:e]]
-    return (int(head[0]), int(head[1]), head[2]), rows
-
-
 def same_rows(a, b, tol=1e-12):
     """Rows of numbers equal as multisets within tol (greedy match after sorting)."""
     if len(a) != len(b):
@@ -427,10 +397,10 @@ def geomview(lh):
               "%d vs %d facets" % (len(geom_facets(a)), len(geom_facets(b))))
         check("%s %s G frame" % (spec, prog), a.split(" LIST")[0] == b.split(" LIST")[0] and a.endswith("}\n}\n" if "D3" in spec or prog == "qdelaunay" else "1.0\n}\n"),
               a[:60] + " / " + b[:60])
-    r, _, e = run([lh, "qconvex", "G"], rbox("10 D4 t1"))
-    check("qconvex G in 4-d refused", r == 2 and "Geomview output are for" in e, e)
+    r, _, e = run([lh, "qconvex", "G"], rbox("10 D5 t1"))  # 4-d: tests/cli/qhull_geomview.py
+    check("qconvex G in 5-d refused", r == 2 and "only available for 2-d, 3-d and 4-d" in e, e)
     r, _, e = run([lh, "qconvex", "Gv"], rbox("10 D3 t1"))
-    check("qconvex Gv refused", r == 2 and "option 'Gv' is not supported" in e, e)
+    check("qconvex Gv refused", r == 2 and "option 'Gv': 'v' is not supported" in e, e)
 
 
 def fields(out):
