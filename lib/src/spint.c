@@ -66,15 +66,17 @@ void lh__sp_acc_add_mul(lh__sp_acc *a, const lh__sp *x, const lh__sp *y, int neg
     int lo = x->t[0].off + y->t[0].off, hi = x->t[x->n - 1].off + y->t[y->n - 1].off;
     if (!reserve(a, lo, hi, x->n < y->n ? x->n : y->n)) return;
     a->work += (uint64_t)x->n * (uint64_t)y->n;
-    int64_t *c = a->c;
-    uint8_t *flag = a->flag;
+    /* restrict: the flags are bytes, which may alias anything; without it every flag
+     * store would force y's digits to be reloaded. */
+    const lh__sd *restrict yt = y->t;
+    int yn = y->n;
     for (int i = 0; i < x->n; i++) {
         int64_t xd = neg ? -(int64_t)x->t[i].dig : (int64_t)x->t[i].dig;
-        int64_t *ci = c + x->t[i].off;
-        uint8_t *fi = flag + x->t[i].off;
-        for (int j = 0; j < y->n; j++) {
-            int o = y->t[j].off;
-            ci[o] += xd * y->t[j].dig; /* |product| <= 2^50 */
+        int64_t *restrict ci = a->c + x->t[i].off;
+        uint8_t *restrict fi = a->flag + x->t[i].off;
+        for (int j = 0; j < yn; j++) {
+            int o = yt[j].off;
+            ci[o] += xd * yt[j].dig; /* |product| <= 2^50 */
             fi[o] = 1;
         }
     }
