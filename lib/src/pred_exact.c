@@ -10,7 +10,9 @@
  * column operation that leaves the determinant unchanged and keeps the integers
  * short. The determinant itself is a Laplace expansion along columns with every
  * minor of the leading columns memoised per row subset: m * 2^(m-1) products for
- * an m x m matrix, and no division.
+ * an m x m matrix, and no division. Signs of calls whose coordinates span many bits
+ * (magnitudes mixed in one call) run the same expansion on sparse digits (spint.h,
+ * sparse_minor_sign below); values (lh__minor_value, sums) stay on bigint.h.
  */
 #include "lh_alloc.h"
 #include "pred_internal.h"

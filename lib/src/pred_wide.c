@@ -344,10 +344,11 @@ static int dw_sign(const lh__subsets *sub, int n, int dim, int lifted, const dou
 }
 
 /* x 2^k rounded once (only into the subnormal range: absolute error at most 2^-1075),
- * for k <= 2046; below -2100 every finite x gives 0 (|x 2^k| < 2^-1075). */
+ * for |x 2^k| <= 1 (so k <= 1074) or x = 0 (any k); below -2100 every finite x gives 0
+ * (|x 2^k| < 2^-1075). */
 static double scale2(double x, int k)
 {
-    if (k < -2100) return 0 * x;
+    if (x == 0 || k < -2100) return 0 * x;
     int h = k / 2; /* both factors' exponents in [-1050, 1023]; the first product is
                     * at least the final one in magnitude, so at most one more
                     * rounding, below 2^-1075 */
