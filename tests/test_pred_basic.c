@@ -231,12 +231,13 @@ LH_TEST(invalid_arguments_answer_zero_and_count_nothing)
 
 LH_TEST(create_fails_cleanly_at_every_allocation)
 {
-    for (int k = 1; k <= 3; k++) {
+    /* the context, the dense arena, the sparse accumulator's coefficients and flags */
+    for (int k = 1; k <= 5; k++) {
         lh_test_counter c = {0, k, 0};
         lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
         lh_pred *ctx = (lh_pred *)&c; /* must be overwritten */
         lh_status st = lh_pred_create(&a, &ctx);
-        if (k <= 2) {
+        if (k <= 4) {
             LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
             LH_EXPECT_TRUE(ctx == NULL);
         } else {

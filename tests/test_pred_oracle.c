@@ -200,6 +200,28 @@ static double small_coord(rng *r, int dyadic)
 }
 
 /*
+ * Coordinates drawn from a pool of eight values of a few magnitude levels: small
+ * integers times 2^997, 1, 2^-997 or 2^-1074 (subnormal), or 0, some with full 53-bit
+ * mantissas. One call then mixes 1e+300 with 5e-324, and with values repeated across
+ * points (as in the mixed-magnitude reproducers) its large terms often cancel exactly:
+ * the sign sits 1000 bits or more below them, or is 0 (the exact stage's sparse path,
+ * and the perturbation's minors on it).
+ */
+static void gen_levels(rng *r, pcase *c)
+{
+    static const int level[4] = {997, 0, -997, -1074};
+    double pool[8];
+    for (int v = 0; v < 8; v++) {
+        int k = rng_below(r, 5);
+        double m = (double)rng_int(r, -9, 9);
+        if (k < 3 && rng_below(r, 3) == 0) m = 8.0 * rng_sym(r); /* 53 bits */
+        pool[v] = k == 4 ? 0.0 : ldexp(m, level[k]);
+    }
+    for (int i = 0; i < c->n; i++)
+        for (int j = 0; j < c->D; j++) c->p[i][j] = pool[rng_below(r, 8)];
+}
+
+/*
  * All n points on one affine flat of dimension <= m: m+1 base points with small
  * integer (dyadic) coordinates, the others affine combinations of them with integer
  * weights summing to 1 (dyadic weights a/4 summing to 1). Every product and partial
@@ -503,6 +525,11 @@ static void gen_case(rng *r, pcase *c, int fam)
         break;
     }
     case F_MIXED:
+        if (rng_below(r, 2)) { /* magnitude levels, as in the mixed-magnitude reproducers */
+            gen_levels(r, c);
+            c->var = 60;
+            break;
+        }
         for (int i = 0; i < n; i++)
             for (int j = 0; j < D; j++)
                 c->p[i][j] = rng_sym(r) * pow(10.0, 16.0 * rng_unit(r) - 8.0);

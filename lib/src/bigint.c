@@ -19,8 +19,7 @@ static int low_zero_bits(uint64_t m)
 #endif
 }
 
-/* x = (-1)^neg * m * 2^e with m < 2^53, from the IEEE 754 binary64 encoding. */
-static uint64_t decompose(double x, int *e, int *neg)
+uint64_t lh__dbl_decompose(double x, int *e, int *neg)
 {
     uint64_t bits;
     memcpy(&bits, &x, sizeof bits);
@@ -39,7 +38,7 @@ static uint64_t decompose(double x, int *e, int *neg)
 int lh__dbl_low_exp(double x)
 {
     int e, neg;
-    uint64_t m = decompose(x, &e, &neg);
+    uint64_t m = lh__dbl_decompose(x, &e, &neg);
     return m ? e + low_zero_bits(m) : 0;
 }
 
@@ -52,7 +51,7 @@ static void trim(lh__bn *r)
 void lh__bn_set_dbl(lh__bn *r, double x, int scale)
 {
     int e, neg;
-    uint64_t m = decompose(x, &e, &neg);
+    uint64_t m = lh__dbl_decompose(x, &e, &neg);
     r->n = 0;
     r->neg = 0;
     if (!m) return;

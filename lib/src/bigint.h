@@ -25,6 +25,9 @@ typedef struct lh__bn {
  * written as a shifted 53-bit mantissa across three limbs (68). */
 #define LH__BN_DBL_LIMBS 68
 
+/* x = (-1)^neg * m * 2^e with m < 2^53 returned (0 for zero), from the IEEE 754
+ * binary64 encoding (x finite). */
+uint64_t lh__dbl_decompose(double x, int *e, int *neg);
 /* Exponent of the lowest set bit of x (x finite, nonzero). */
 int lh__dbl_low_exp(double x);
 /* r = x / 2^scale, exactly; requires scale <= lh__dbl_low_exp(x) for x != 0.

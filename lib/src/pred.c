@@ -33,10 +33,14 @@ lh_status lh_pred_create(const lh_allocator *alloc, lh_pred **out)
     ctx->alloc = a;
     subsets_init(&ctx->sub);
     ctx->arena = lh__alloc(&a, LH__ARENA_LIMBS * sizeof *ctx->arena);
-    if (!ctx->arena) {
-        lh__free(&a, ctx);
+    ctx->sp_coef = lh__alloc(&a, LH__SP_OFFSETS * sizeof *ctx->sp_coef);
+    ctx->sp_flag = lh__alloc(&a, LH__SP_OFFSETS);
+    if (!ctx->arena || !ctx->sp_coef || !ctx->sp_flag) {
+        lh_pred_free(ctx);
         return LH_ERR_NOMEM;
     }
+    memset(ctx->sp_coef, 0, LH__SP_OFFSETS * sizeof *ctx->sp_coef);
+    memset(ctx->sp_flag, 0, LH__SP_OFFSETS);
     *out = ctx;
     return LH_OK;
 }
@@ -46,6 +50,8 @@ void lh_pred_free(lh_pred *ctx)
     if (!ctx) return;
     lh_allocator a = ctx->alloc;
     lh__free(&a, ctx->arena);
+    lh__free(&a, ctx->sp_coef);
+    lh__free(&a, ctx->sp_flag);
     lh__free(&a, ctx);
 }
 

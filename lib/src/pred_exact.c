@@ -10,7 +10,9 @@
  * column operation that leaves the determinant unchanged and keeps the integers
  * short. The determinant itself is a Laplace expansion along columns with every
  * minor of the leading columns memoised per row subset: m * 2^(m-1) products for
- * an m x m matrix, and no division.
+ * an m x m matrix, and no division. Signs of calls whose coordinates span many bits
+ * (magnitudes mixed in one call) run the same expansion on sparse digits (spint.h,
+ * sparse_minor_sign below); values (lh__minor_value, sums) stay on bigint.h.
  */
 #include "lh_alloc.h"
 #include "pred_internal.h"
@@ -22,6 +24,7 @@ typedef struct exact_buf {
     lh__bn ent[LH__MAXN * LH__MAXN];
     lh__bn t[4];
     uint32_t *layer; /* 2 * LH__LAYER_SLOTS slots, then one product buffer */
+    uint64_t work;   /* limbs of the factors multiplied and of the sums written */
 } exact_buf;
 
 /* Points the first `entries` matrix entries and the temporaries into the arena. */
@@ -31,6 +34,7 @@ static void buf_init(exact_buf *b, uint32_t *arena, int entries)
     uint32_t *rest = arena + (size_t)LH__MAXN * LH__MAXN * LH__ENTRY_LIMBS;
     for (int i = 0; i < 4; i++) b->t[i].d = rest + (size_t)i * LH__ENTRY_LIMBS;
     b->layer = rest + 4 * LH__ENTRY_LIMBS;
+    b->work = 0;
 }
 
 /* Sign of the determinant of the m x m integer matrix e (row-major), m <= 9
@@ -83,6 +87,7 @@ static lh__bn det_value(exact_buf *b, const lh__subsets *sub, int m, const lh__b
                 if (minor->n && x->n) {
                     lh__bn_mul(&prod, x, minor);
                     lh__bn_add(acc, acc, &prod, (pos + s - 1) & 1);
+                    b->work += (uint64_t)x->n * (uint64_t)minor->n + (uint64_t)acc->n;
                 }
                 pos++;
             }
@@ -93,21 +98,26 @@ static lh__bn det_value(exact_buf *b, const lh__subsets *sub, int m, const lh__b
 }
 
 /* Scale for a call: the lowest set bit among the coordinates that enter (all of a
- * row's coordinates when the lifted column enters, else only the columns used). */
+ * row's coordinates when the lifted column enters, else only the columns used);
+ * *top (when not NULL) an upper bound on their binary exponents. */
 static int common_scale(const double *const *pts, int dim, int m, const int *rows,
-                        const int *cols, int has_lift)
+                        const int *cols, int has_lift, int *top)
 {
-    int used[LH__MAXN + 1] = {0}, scale = 0, any = 0;
+    int used[LH__MAXN + 1] = {0}, scale = 0, any = 0, most = INT_MIN;
     for (int b = 0; b < m; b++) used[cols[b]] = 1;
     for (int a = 0; a < m; a++) {
         for (int c = 1; c <= dim; c++) {
             double x = pts[rows[a]][c - 1];
             if (!(used[c] || has_lift) || x == 0) continue;
-            int e = lh__dbl_low_exp(x);
+            int e = lh__dbl_low_exp(x), neg, hi;
+            lh__dbl_decompose(x, &hi, &neg);
+            hi += 53; /* x < 2^(e + 53) for x = m 2^e, m < 2^53 */
             if (!any || e < scale) scale = e;
+            if (hi > most) most = hi;
             any = 1;
         }
     }
+    if (top) *top = any ? most : scale;
     return scale;
 }
 
@@ -141,7 +151,7 @@ static int fill_minor(lh_pred *ctx, exact_buf *b_, const double *const *pts, int
     int has_ones = cols[0] == 0, has_lift = cols[m - 1] == dim + 1;
     buf_init(&b, ctx->arena, (m - has_ones) * (m - has_ones));
     int relift = has_ones && has_lift && m - 2 == dim;
-    int scale = forced != INT_MIN ? forced : common_scale(pts, dim, m, rows, cols, has_lift);
+    int scale = forced != INT_MIN ? forced : common_scale(pts, dim, m, rows, cols, has_lift, NULL);
     const double *base = has_ones ? pts[rows[0]] : NULL;
     int n = m - has_ones; /* size of the integer matrix */
     lh__bn *base_lift = &b.t[3];
@@ -169,13 +179,129 @@ static int fill_minor(lh_pred *ctx, exact_buf *b_, const double *const *pts, int
     return n;
 }
 
+/* The sparse path (spint.h) for calls whose coordinates span more than
+ * SPARSE_MIN_BITS bits: the same matrix, the same memoised expansion, on numbers that
+ * store only their nonzero digits, so a call that mixes 1e+300 and 5e-324 costs the
+ * digits its products carry rather than the 2100-bit range. Below the threshold the
+ * dense integers are as short and cheaper per limb. */
+#define SPARSE_MIN_BITS 320
+#define SPARSE_FAILED 2
+
+typedef struct sparse_ws {
+    lh__sp_acc acc;
+    lh__sp_pool ent;    /* entries and temporaries */
+    lh__sp_pool lay[2]; /* the layers of det_value, by parity */
+} sparse_ws;
+
+/* The pools share the dense stage's arena (the two stages never overlap in time). */
+static void sparse_init(sparse_ws *w, lh_pred *ctx)
+{
+    lh__sp_acc_init(&w->acc, ctx->sp_coef, ctx->sp_flag, LH__SP_OFFSETS);
+    lh__sd *d = (lh__sd *)(void *)ctx->arena;
+    size_t total = LH__ARENA_LIMBS * sizeof *ctx->arena / sizeof *d, part = total / 4;
+    w->ent = (lh__sp_pool){d, part, 0};
+    w->lay[0] = (lh__sp_pool){d + part, (total - part) / 2, 0};
+    w->lay[1] = (lh__sp_pool){d + part + (total - part) / 2, (total - part) / 2, 0};
+}
+
+/* Accumulates sum over all coordinates c of (p[c] - q[c])^2 (q NULL: |p|^2). */
+static int sparse_norm(sparse_ws *w, const double *p, const double *q, int dim, int scale)
+{
+    lh__sp diff[LH__MAXN];
+    for (int c = 0; c < dim; c++) {
+        lh__sp_acc_add_dbl(&w->acc, p[c], scale, 0);
+        if (q) lh__sp_acc_add_dbl(&w->acc, q[c], scale, 1);
+        if (!lh__sp_acc_take(&w->acc, &w->ent, &diff[c])) return 0;
+    }
+    for (int c = 0; c < dim; c++) lh__sp_acc_add_mul(&w->acc, &diff[c], &diff[c], 0);
+    return 1;
+}
+
+/* fill_minor's matrix as sparse numbers; its size, or -1 when a pool ran out. */
+static int sparse_fill(sparse_ws *w, lh__sp *ent, const double *const *pts, int dim, int m,
+                       const int *rows, const int *cols, int scale)
+{
+    int has_ones = cols[0] == 0, has_lift = cols[m - 1] == dim + 1;
+    int relift = has_ones && has_lift && m - 2 == dim;
+    const double *base = has_ones ? pts[rows[0]] : NULL;
+    int n = m - has_ones;
+    lh__sp base_lift = {NULL, 0};
+    if (has_lift && base && !relift &&
+        !(sparse_norm(w, base, NULL, dim, scale) && lh__sp_acc_take(&w->acc, &w->ent, &base_lift)))
+        return -1;
+    for (int i = 0; i < n; i++) {
+        const double *p = pts[rows[i + has_ones]];
+        for (int j = 0; j < n; j++) {
+            int c = cols[j + has_ones];
+            if (c == dim + 1) {
+                if (!sparse_norm(w, p, relift ? base : NULL, dim, scale)) return -1;
+                if (base && !relift) lh__sp_acc_add(&w->acc, &base_lift, 1);
+            } else {
+                lh__sp_acc_add_dbl(&w->acc, p[c - 1], scale, 0);
+                if (base) lh__sp_acc_add_dbl(&w->acc, base[c - 1], scale, 1);
+            }
+            if (!lh__sp_acc_take(&w->acc, &w->ent, &ent[i * n + j])) return -1;
+        }
+    }
+    return n;
+}
+
+/* Sign of det(e) for the n x n sparse matrix e by det_value's expansion, or
+ * SPARSE_FAILED when a layer's pool ran out. */
+static int sparse_det_sign(sparse_ws *w, const lh__subsets *sub, int n, const lh__sp *e)
+{
+    if (n == 0) return 1;
+    const uint8_t *slot = sub->slot;
+    lh__sp lay[2][LH__LAYER_SLOTS], first[LH__MAXN];
+    for (int r = 0; r < n; r++) first[slot[1 << r]] = e[r * n];
+    const lh__sp *prev = first;
+    for (int s = 2; s <= n; s++) {
+        lh__sp *cur = lay[s & 1];
+        lh__sp_pool *pool = &w->lay[s & 1];
+        pool->used = 0;
+        for (int t = 0; t < sub->count[s] && sub->by_size[s][t] < (1 << n); t++) {
+            int mask = sub->by_size[s][t], pos = 0;
+            for (int r = 0; r < n; r++) {
+                if (!(mask & (1 << r))) continue;
+                lh__sp_acc_add_mul(&w->acc, &e[r * n + s - 1], &prev[slot[mask ^ (1 << r)]],
+                                   (pos + s - 1) & 1);
+                pos++;
+            }
+            if (!lh__sp_acc_take(&w->acc, pool, &cur[slot[mask]])) return SPARSE_FAILED;
+        }
+        prev = cur;
+    }
+    return lh__sp_sign(&prev[slot[(1 << n) - 1]]);
+}
+
+static int sparse_minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
+                             const int *rows, const int *cols, int scale)
+{
+    sparse_ws w;
+    sparse_init(&w, ctx);
+    lh__sp ent[LH__MAXN * LH__MAXN];
+    int n = sparse_fill(&w, ent, pts, dim, m, rows, cols, scale);
+    int s = n < 0 ? SPARSE_FAILED : sparse_det_sign(&w, &ctx->sub, n, ent);
+    ctx->exact_work += w.acc.work;
+    return s;
+}
+
 int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
                    const int *rows, const int *cols)
 {
     if (m == 0) return 1;
+    int top, has_lift = cols[m - 1] == dim + 1;
+    int scale = common_scale(pts, dim, m, rows, cols, has_lift, &top);
+    if (top - scale > SPARSE_MIN_BITS) {
+        int s = sparse_minor_sign(ctx, pts, dim, m, rows, cols, scale);
+        if (s != SPARSE_FAILED) return s;
+    }
     exact_buf b;
-    int scale, n = fill_minor(ctx, &b, pts, dim, m, rows, cols, INT_MIN, &scale);
-    return det_sign(&b, &ctx->sub, n, b.ent);
+    int n = fill_minor(ctx, &b, pts, dim, m, rows, cols, scale, &scale);
+    b.work = 0;
+    int s = det_sign(&b, &ctx->sub, n, b.ent);
+    ctx->exact_work += b.work;
+    return s;
 }
 
 double lh__minor_value(lh_pred *ctx, const double *const *pts, int dim, int m, const int *rows,

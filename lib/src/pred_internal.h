@@ -13,6 +13,7 @@
 #define LH_PRED_INTERNAL_H
 
 #include "bigint.h"
+#include "spint.h"
 #include "lh_exact.h"
 #include "lifthull.h"
 
@@ -26,6 +27,10 @@
 #define LH__DET_LIMBS \
     ((LH__MAXN - 2) * (LH__BN_DBL_LIMBS + 1) + LH__ENTRY_LIMBS + LH__MAXN + 2)
 #define LH__LAYER_SLOTS 126 /* C(9,4): the widest layer of row subsets (m <= 9) */
+
+/* Digit offsets of the sparse exact stage's accumulator (spint.h): every value it
+ * forms lies below 2^(32 LH__DET_LIMBS); room for carries. */
+#define LH__SP_OFFSETS (LH__DET_LIMBS * 32 / LH__SP_BITS + 8)
 
 #define LH__ARENA_LIMBS                                                       \
     ((size_t)LH__MAXN * LH__MAXN * LH__ENTRY_LIMBS + 4 * LH__ENTRY_LIMBS +   \
@@ -45,6 +50,13 @@ struct lh_pred {
     lh_pred_counters count;
     lh__subsets sub;
     uint32_t *arena; /* LH__ARENA_LIMBS limbs of scratch for the exact stage */
+    /* The sparse exact stage's accumulator: LH__SP_OFFSETS coefficients and their
+     * flags, all zero between calls. */
+    int64_t *sp_coef;
+    uint8_t *sp_flag;
+    /* Work of the exact stage's sign evaluations (digit or limb pairs multiplied plus
+     * digits or limbs written), for tests that bound it: not a public counter. */
+    uint64_t exact_work;
 };
 
 /* Exact, unperturbed signs (no filter). */

@@ -27,6 +27,7 @@
 #include "pred_internal.h"
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -342,6 +343,83 @@ static int dw_sign(const lh__subsets *sub, int n, int dim, int lifted, const dou
 #endif
 }
 
+/* x 2^k rounded once (only into the subnormal range: absolute error at most 2^-1075),
+ * for |x 2^k| <= 1 (so k <= 1074) or x = 0 (any k); below -2100 every finite x gives 0
+ * (|x 2^k| < 2^-1075). */
+static double scale2(double x, int k)
+{
+    if (x == 0 || k < -2100) return 0 * x;
+    int h = k / 2; /* both factors' exponents in [-1050, 1023]; the first product is
+                    * at least the final one in magnitude, so at most one more
+                    * rounding, below 2^-1075 */
+    return x * pow2(h) * pow2(k - h);
+}
+
+/* The first pass in plain doubles on the matrix scaled by powers of two where its
+ * entries leave the band of in_band(): row r (point i != k) by 2^-a_r, a_r from its
+ * largest |p_i[c] - p_k[c]|, then column j by 2^-b_j, so that every entry is at most 1
+ * and the column's largest at least 1/2 (det changes by a power of two, not its sign).
+ * Each scaled entry is formed from the unscaled difference (or from the row's scaled
+ * sum of squares S_r in [1/4, d), lifted entry S_r 2^(a_r - b_L), a_r - b_L <= 1) with
+ * the roundings counted in g, plus an underflow of at most 2^-1066 absolute in all.
+ * In the expansion (entries <= 1, minors <= 8!) products underflow by at most
+ * 2^-1075 each and sums exactly, so the absolute errors, carried through cofactors of
+ * magnitude at most 9!, stay below 2^-1030 in total; the permanent computed is at
+ * most that much (and a factor (1 - u)^g) below the true one. Hence
+ *     |computed - det| <= 2 gamma_g P_computed + 2^-1029
+ *                      <  4 (g + 2) u P_computed + 2^-1000,
+ * the bound used. 1 with *sign set (before the pivot's flip) when it decides, -1 when
+ * the scaled matrix has a zero row or column (possibly an exact zero), else 0. */
+static int scaled_sign(const lh__subsets *sub, int n, int dim, int lifted,
+                       const double *const *pts, int k, int g, int *sign)
+{
+    double diff[(LH__MAXN - 1) * (LH__MAXN - 1)], e[(LH__MAXN - 1) * (LH__MAXN - 1)];
+    int a[LH__MAXN], most[LH__MAXN], lift_exp[LH__MAXN];
+    for (int c = 0; c < dim; c++) most[c] = INT_MIN;
+    for (int i = 0, r = 0; i <= n; i++) {
+        if (i == k) continue;
+        double big = 0;
+        for (int c = 0; c < dim; c++) {
+            double x = pts[i][c] - pts[k][c];
+            if (!isfinite(x)) return 0;
+            diff[r * n + c] = x;
+            if (fabs(x) > big) big = fabs(x);
+        }
+        if (big == 0) return -1;
+        a[r] = binary_exponent(big) + 1; /* big 2^-a[r] in [1/2, 1) */
+        for (int c = 0; c < dim; c++) {
+            double x = fabs(diff[r * n + c]);
+            if (x != 0 && binary_exponent(x) + 1 - a[r] > most[c])
+                most[c] = binary_exponent(x) + 1 - a[r];
+        }
+        if (lifted) { /* S_r = sum of (diff 2^-a_r)^2, in [1/4, d) */
+            double sum = 0;
+            for (int c = 0; c < dim; c++) {
+                double t = scale2(diff[r * n + c], -a[r]);
+                sum += t * t;
+            }
+            e[r * n + dim] = sum;
+            lift_exp[r] = a[r] + binary_exponent(sum) + 1; /* S_r 2^a_r < 2^lift_exp */
+        }
+        r++;
+    }
+    for (int c = 0; c < dim; c++) {
+        if (most[c] == INT_MIN) return -1;
+        for (int r = 0; r < n; r++) e[r * n + c] = scale2(diff[r * n + c], -(a[r] + most[c]));
+    }
+    if (lifted) {
+        int top = INT_MIN;
+        for (int r = 0; r < n; r++)
+            if (lift_exp[r] > top) top = lift_exp[r];
+        for (int r = 0; r < n; r++) e[r * n + dim] = scale2(e[r * n + dim], a[r] - top);
+    }
+    double det, perm;
+    expand_dbl(sub, n, e, &det, &perm);
+    if (!(fabs(det) > perm * (4.0 * (g + 2) * 0x1p-53) + 0x1p-1000)) return 0;
+    *sign = det > 0 ? 1 : -1;
+    return 1;
+}
+
 int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *const *pts,
                   int double_word, int *sign)
 {
@@ -372,6 +450,11 @@ int lh__wide_sign(const lh__subsets *sub, int dim, int lifted, const double *con
             return 1;
         }
         return 0;
+    }
+    int decided = scaled_sign(sub, n, dim, lifted, pts, k, g, sign);
+    if (decided) {
+        if (decided > 0 && flip) *sign = -*sign;
+        return decided > 0;
     }
     wide e[(LH__MAXN - 1) * (LH__MAXN - 1)];
     for (int i = 0, r = 0; i <= n; i++) {
