@@ -64,6 +64,7 @@
  */
 #include "lifthull.h"
 #include "lh_test.h"
+#include "sites.h"
 
 #include <gmp.h>
 #include <limits.h>
@@ -107,55 +108,22 @@ enum {
 
 static const uint64_t default_seed = 0x6c69667468756c6cu; /* "lifthull" */
 
-/* ---- PRNG: splitmix64 to seed xoshiro256** ------------------------------------ */
+/* ---- PRNG: xoshiro256** (tools/sites.h), the draws the cases need ------------- */
 
-typedef struct rng {
-    uint64_t s[4];
-} rng;
-
-static uint64_t splitmix64(uint64_t *x)
-{
-    uint64_t z = (*x += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
-static void rng_seed(rng *r, uint64_t seed)
-{
-    for (int i = 0; i < 4; i++) r->s[i] = splitmix64(&seed);
-}
-
-static uint64_t rotl64(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-
-static uint64_t rng_next(rng *r)
-{
-    uint64_t *s = r->s;
-    uint64_t result = rotl64(s[1] * 5, 7) * 9;
-    uint64_t t = s[1] << 17;
-    s[2] ^= s[0];
-    s[3] ^= s[1];
-    s[1] ^= s[2];
-    s[0] ^= s[3];
-    s[2] ^= t;
-    s[3] = rotl64(s[3], 45);
-    return result;
-}
+typedef lht_rng rng;
 
 /* Uniform in 0..n-1 (n >= 1). */
 static int rng_below(rng *r, int n)
 {
-    return (int)(((rng_next(r) >> 32) * (uint64_t)n) >> 32);
+    return (int)(((lht_rng_next(r) >> 32) * (uint64_t)n) >> 32);
 }
 
 /* Uniform in lo..hi inclusive. */
 static int rng_int(rng *r, int lo, int hi) { return lo + rng_below(r, hi - lo + 1); }
 
-/* Uniform in [0,1), multiples of 2^-53. */
-static double rng_unit(rng *r) { return (double)(rng_next(r) >> 11) * 0x1p-53; }
 
 /* Uniform in [-1,1), multiples of 2^-52. */
-static double rng_sym(rng *r) { return (double)(rng_next(r) >> 11) * 0x1p-52 - 1.0; }
+static double rng_sym(rng *r) { return (double)(lht_rng_next(r) >> 11) * 0x1p-52 - 1.0; }
 
 /* ---- cases ---------------------------------------------------------------------- */
 
@@ -326,7 +294,7 @@ static void gen_sphere_int(rng *r, pcase *c)
 static void gen_sphere_float(rng *r, pcase *c)
 {
     int n = c->n, D = c->D;
-    double ctr[MAXD], rad = 0.5 + rng_unit(r);
+    double ctr[MAXD], rad = 0.5 + lht_rng_unit(r);
     for (int j = 0; j < D; j++) ctr[j] = rng_sym(r);
     for (int i = 0; i < n; i++) {
         double v[MAXD], q;
@@ -505,7 +473,7 @@ static void gen_case(rng *r, pcase *c, int fam)
     case F_MIXED:
         for (int i = 0; i < n; i++)
             for (int j = 0; j < D; j++)
-                c->p[i][j] = rng_sym(r) * pow(10.0, 16.0 * rng_unit(r) - 8.0);
+                c->p[i][j] = rng_sym(r) * pow(10.0, 16.0 * lht_rng_unit(r) - 8.0);
         break;
     default:
         gen_degen(r, c);
@@ -769,7 +737,7 @@ static int sz_nonzero(const sos_ref *s, rng *r, int K)
                 W[i][j] = s->repl[i] < 0 ? s->Hm[k][i][j] : (uint64_t)(j == s->repl[i]);
         for (int code = 0; code <= K; code++) {
             int row = s->row_at[code / s->P], col = s->col_of[code % s->P];
-            if (s->repl[row] < 0) W[row][col] = (W[row][col] + rng_next(r) % p) % p;
+            if (s->repl[row] < 0) W[row][col] = (W[row][col] + lht_rng_next(r) % p) % p;
         }
         if (det_mod_nonzero(W, s->n, p)) return 1;
     }
@@ -1185,7 +1153,7 @@ static void run_oracle(lh_test_state *lh_t_, int kind, int D)
     long bad_cases = 0, done = 0;
     for (long ci = first; ci < cases; ci++) {
         rng r;
-        rng_seed(&r, seed + (uint64_t)ci * 0xd1b54a32d192ed03u);
+        lht_rng_seed(&r, seed + (uint64_t)ci * 0xd1b54a32d192ed03u);
         pcase c;
         c.kind = kind;
         c.D = D;
