@@ -155,8 +155,8 @@ static lh_status queue_triangle(rf *r, lh_index t)
     const lh_index *v = r->m->v + 3 * (size_t)t;
     /* the triangle with the shortest shortest edge first (angle-bad ones; then those
        only too large): small features fix their neighbourhoods' sizes before larger
-       triangles are split, which measured 10-30% fewer triangles than the worst
-       angle first (Shewchuk 1996 §3 compares worst-first with first-in first-out) */
+       triangles are split, which leaves fewer triangles than the worst angle first
+       (docs/meshing.md; Shewchuk 1996 §3 compares worst-first with first-in first-out) */
     long ke;
     const double km = lh__g_norm(g.len[g.k], g.e, &ke);
     r->heap[r->heap_count] = (item){q < 0, ke, km, t, v[0], v[1], v[2]};
