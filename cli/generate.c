@@ -4,8 +4,7 @@
  * Gaussian clusters, coordinates rounded to integers).
  *
  * The random numbers (xoshiro256**, the polar method) and the exactly cospherical points
- * come from tools/sites.c, shared with the tests and the benchmarks; its header cites
- * the papers.
+ * come from tools/sites.c, shared with the tests; its header cites the papers.
  *
  * Reproducibility: every coordinate is computed with +, -, *, / and sqrt, which IEEE 754
  * rounds correctly, and floor/frexp, which are exact; the polar method's logarithm is

@@ -1,6 +1,6 @@
 /*
  * sites.c — seeded random numbers and exactly cospherical integer sites (sites.h),
- * shared by `lifthull points`, the tests and the benchmarks.
+ * for `lifthull points` and the tests.
  *
  * References:
  *   - D. Blackman, S. Vigna, "Scrambled linear pseudorandom number generators",

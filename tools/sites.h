@@ -1,7 +1,8 @@
 /*
- * sites.h — seeded random numbers and exactly cospherical integer sites, shared by the
- * tool (`lifthull points`), the tests and the benchmarks; not part of the library (libc
- * and libm only, compiled into each program that uses it). C, callable from C++.
+ * sites.h — seeded random numbers and exactly cospherical integer sites for the tool
+ * (`lifthull points`) and the tests (test_pred_oracle); not part of the library (libc
+ * and libm only, compiled into each program that uses it). C, callable from C++
+ * (bench/).
  */
 #ifndef LH_TOOLS_SITES_H
 #define LH_TOOLS_SITES_H
@@ -32,7 +33,7 @@ typedef struct lht_sphere {
     int d;
     uint64_t m;                 /* the squared radius                          */
     uint64_t total;             /* integer points with |v|^2 = m               */
-    int exps[LHT_GAUSS_PRIMES];   /* d = 2: m = prod gauss_prime[i]^exps[i]       */
+    int exps[LHT_GAUSS_PRIMES]; /* d = 2: m = prod gauss_prime[i]^exps[i]      */
     int64_t *tuples;            /* d >= 3: tuple_count sorted tuples, d each    */
     size_t tuple_count, tuple_cap;
 } lht_sphere;
