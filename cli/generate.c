@@ -3,15 +3,8 @@
  * (uniform cube, ball, sphere, exactly cospherical integer points, integer grids,
  * Gaussian clusters, coordinates rounded to integers).
  *
- * References:
- *   - D. Blackman, S. Vigna, "Scrambled linear pseudorandom number generators",
- *     ACM TOMS 47(4), 2021: xoshiro256**, seeded through splitmix64.
- *   - G. Marsaglia, T. A. Bray, "A convenient method for generating normal random
- *     variables", SIAM Review 6(3), 1964: the polar method.
- *   - D. E. Knuth, TAOCP vol. 2, 3.4.2, Algorithm S: selection sampling.
- *   - G. H. Hardy, E. M. Wright, "An Introduction to the Theory of Numbers", ch. 16.9
- *     and 20: sums of two squares through Gaussian integers, r_2(n) = 4 prod (e_i + 1)
- *     when every prime factor of n is 1 mod 4; the average of r_d(n).
+ * The random numbers (xoshiro256**, the polar method) and the exactly cospherical points
+ * come from tools/sites.c, shared with the tests; its header cites the papers.
  *
  * Reproducibility: every coordinate is computed with +, -, *, / and sqrt, which IEEE 754
  * rounds correctly, and floor/frexp, which are exact; the polar method's logarithm is
@@ -22,6 +15,7 @@
  */
 #include "cli.h"
 #include "outfile.h"
+#include "sites.h"
 
 #include <errno.h>
 #include <math.h>
@@ -56,78 +50,6 @@ typedef struct gen_opts {
     int force;          /* -f: replace an existing FILE                       */
 } gen_opts;
 
-/* ---- random numbers ------------------------------------------------------------ */
-
-typedef struct rng {
-    uint64_t s[4]; /* xoshiro256** state, never all zero (splitmix64 outputs) */
-} rng;
-
-static uint64_t splitmix64(uint64_t *x)
-{
-    uint64_t z = (*x += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
-static void rng_seed(rng *r, uint64_t seed)
-{
-    for (int i = 0; i < 4; i++) r->s[i] = splitmix64(&seed);
-}
-
-static uint64_t rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-
-static uint64_t rng_next(rng *r)
-{
-    uint64_t *s = r->s;
-    uint64_t out = rotl(s[1] * 5, 7) * 9, t = s[1] << 17;
-    s[2] ^= s[0];
-    s[3] ^= s[1];
-    s[1] ^= s[2];
-    s[0] ^= s[3];
-    s[2] ^= t;
-    s[3] = rotl(s[3], 45);
-    return out;
-}
-
-/* Uniform in [0, 1), a multiple of 2^-53. */
-static double rng_unit(rng *r) { return (double)(rng_next(r) >> 11) * 0x1.0p-53; }
-
-/* Uniform in [0, n), n >= 1, without modulo bias: draws below 2^64 mod n are redrawn,
- * so the accepted range is a whole number of copies of [0, n). */
-static uint64_t rng_below(rng *r, uint64_t n)
-{
-    uint64_t low = (0 - n) % n, x;
-    do x = rng_next(r);
-    while (x < low);
-    return x % n;
-}
-
-/* log(x), x > 0 finite, in +, -, *, / only: x = m 2^e with m in [sqrt(1/2), sqrt(2)),
- * log x = e log 2 + 2 atanh(z), z = (m - 1)/(m + 1), |z| < 0.172; the series to z^41
- * leaves a remainder below 1e-33. */
-static double det_log(double x)
-{
-    int e;
-    double m = frexp(x, &e); /* exact, m in [0.5, 1) */
-    if (m < 0.70710678118654752) {
-        m *= 2;
-        e--;
-    }
-    double z = (m - 1) / (m + 1), z2 = z * z, s = 1.0 / 41;
-    for (int k = 39; k >= 1; k -= 2) s = s * z2 + 1.0 / k;
-    return e * 0.69314718055994530942 + 2 * z * s;
-}
-
-/* A standard normal variate by the polar method (the second variate is dropped). */
-static double rng_normal(rng *r)
-{
-    for (;;) {
-        double u = 2 * rng_unit(r) - 1, v = 2 * rng_unit(r) - 1, s = u * u + v * v;
-        if (s > 0 && s < 1) return u * sqrt(-2 * det_log(s) / s);
-    }
-}
-
 /* ---- output -------------------------------------------------------------------- */
 
 /* One point, "%.17g" (round-trips exactly); adding 0.0 turns -0 into 0. */
@@ -136,6 +58,9 @@ static void put_point(FILE *f, int d, const double *x)
     for (int j = 0; j < d; j++) fprintf(f, j ? " %.17g" : "%.17g", x[j] + 0.0);
     putc('\n', f);
 }
+
+/* lht_sphere_pick's callback: one point to the file ctx. */
+static void put_site(void *ctx, int d, const double *x) { put_point(ctx, d, x); }
 
 /* The header: the dimension, the canonical command line (every effective option,
  * defaults included, -o and -f left out: they do not change the points) as a comment,
@@ -156,13 +81,13 @@ static void put_header(FILE *f, const gen_opts *o)
 
 /* ---- random distributions -------------------------------------------------------- */
 
-static void point_cube(rng *r, int d, double *x)
+static void point_cube(lht_rng *r, int d, double *x)
 {
-    for (int j = 0; j < d; j++) x[j] = rng_unit(r) - 0.5; /* exact: [-0.5, 0.5) */
+    for (int j = 0; j < d; j++) x[j] = lht_rng_unit(r) - 0.5; /* exact: [-0.5, 0.5) */
 }
 
 /* Uniform in the ball of radius 0.5 by rejection from the cube (acceptance 1.6% in 8D). */
-static double point_ball(rng *r, int d, double *x)
+static double point_ball(lht_rng *r, int d, double *x)
 {
     for (;;) {
         point_cube(r, d, x);
@@ -174,7 +99,7 @@ static double point_ball(rng *r, int d, double *x)
 
 /* Uniform on the sphere of radius 0.5: a ball point's direction (radius at least 1/8,
  * so the scaling is well conditioned; the direction stays uniform). */
-static void point_sphere(rng *r, int d, double *x)
+static void point_sphere(lht_rng *r, int d, double *x)
 {
     double q;
     do q = point_ball(r, d, x);
@@ -195,7 +120,7 @@ static void round_point(double r_max, int d, double *x)
 
 /* Cube, ball, sphere and clusters: one point at a time. Cluster centres are uniform in
  * the cube; the blobs' standard deviation 0.1 / C^(1/d) shrinks as they get more. */
-static int write_random(FILE *f, const gen_opts *o, rng *r)
+static int write_random(FILE *f, const gen_opts *o, lht_rng *r)
 {
     double *centres = NULL, sigma = 0, x[LH_DELAUNAY_MAX_DIM];
     if (o->kind == GEN_CLUSTERS) {
@@ -216,8 +141,8 @@ static int write_random(FILE *f, const gen_opts *o, rng *r)
         case GEN_BALL: point_ball(r, o->d, x); break;
         case GEN_SPHERE: point_sphere(r, o->d, x); break;
         case GEN_CLUSTERS: {
-            const double *c = centres + rng_below(r, o->k) * (size_t)o->d;
-            for (int j = 0; j < o->d; j++) x[j] = c[j] + sigma * rng_normal(r);
+            const double *c = centres + lht_rng_below(r, o->k) * (size_t)o->d;
+            for (int j = 0; j < o->d; j++) x[j] = c[j] + sigma * lht_rng_normal(r);
             break;
         }
         default: point_cube(r, o->d, x); break;
@@ -238,222 +163,6 @@ static void write_grid(FILE *f, const gen_opts *o)
         for (int j = 0; j < o->d; j++) x[j] = (double)digit[j];
         put_point(f, o->d, x);
         for (int j = o->d - 1; j >= 0 && ++digit[j] == o->k; j--) digit[j] = 0;
-    }
-}
-
-/* ---- exactly cospherical integer points ------------------------------------------- */
-
-/*
- * Design: choose a squared radius M with at least N integer points v, |v|^2 = M;
- * enumerate all of them in a fixed order and keep a uniformly random N of them by
- * selection sampling (keep the next candidate with probability still-needed /
- * still-left), streaming, so memory stays small.
- *   d = 2:  M = a product of primes p = 1 mod 4, chosen greedily (gain in points per
- *           factor of M) while M < 2^62; p = pi conj(pi) in the Gaussian integers and
- *           the points are the 4 unit multiples of the products that take
- *           pi^j conj(pi)^(e-j) from each p^e: all r_2(M) = 4 prod (e + 1) of them.
- *   d >= 3: from M0, where the average of r_d (pi^(d/2) / Gamma(d/2) M^(d/2-1)) reaches
- *           N, the first M whose points suffice, found by enumerating the sorted
- *           tuples 0 <= a_1 <= .. <= a_d with sum a_i^2 = M; each tuple stands for its
- *           distinct permutations times the signs of its nonzero entries.
- */
-enum { N_GAUSS_PRIMES = 21, EXACT_SPHERE_MAX_3D = 200000 };
-static const int64_t gauss_prime[N_GAUSS_PRIMES] = {5,  13,  17,  29,  37,  41,  53,
-                                                    61, 73,  89,  97,  101, 109, 113,
-                                                    137, 149, 157, 173, 181, 193, 197};
-
-typedef struct sphere_plan {
-    int d;
-    uint64_t m;                 /* the squared radius                          */
-    uint64_t total;             /* integer points with |v|^2 = m               */
-    int exps[N_GAUSS_PRIMES];   /* d = 2: m = prod gauss_prime[i]^exps[i]       */
-    int64_t *tuples;            /* d >= 3: tuple_count sorted tuples, d each    */
-    size_t tuple_count, tuple_cap;
-} sphere_plan;
-
-/* d = 2: the greedy exponents; 0 when N points need M >= 2^62. */
-static int plan_circle(sphere_plan *p, uint64_t n)
-{
-    uint64_t count = 1; /* prod (e + 1): the points are 4 * count */
-    p->m = 1;
-    while (4 * count < n) {
-        int best = -1;
-        double best_gain = 0;
-        for (int i = 0; i < N_GAUSS_PRIMES; i++) {
-            if (p->m > (UINT64_C(1) << 62) / (uint64_t)gauss_prime[i]) continue;
-            double g = det_log((p->exps[i] + 2.0) / (p->exps[i] + 1.0)) / det_log((double)gauss_prime[i]);
-            if (g > best_gain) best = i, best_gain = g;
-        }
-        if (best < 0) return 0;
-        count = count / (uint64_t)(p->exps[best] + 1) * (uint64_t)(p->exps[best] + 2);
-        p->exps[best]++;
-        p->m *= (uint64_t)gauss_prime[best];
-    }
-    p->total = 4 * count;
-    return 1;
-}
-
-static uint64_t isqrt_u64(uint64_t v) /* v < 2^53 */
-{
-    uint64_t s = (uint64_t)sqrt((double)v);
-    while (s * s > v) s--;
-    while ((s + 1) * (s + 1) <= v) s++;
-    return s;
-}
-
-/* Distinct signed permutations of a sorted tuple: d! / prod(run length!) * 2^nonzeros. */
-static uint64_t signed_perms(const int64_t *a, int d)
-{
-    uint64_t perms = 1; /* after step i: the multinomial of a[0..i], an integer */
-    int run = 1;
-    for (int i = 1; i < d; i++) {
-        perms *= (uint64_t)(i + 1);
-        if (a[i] == a[i - 1]) perms /= (uint64_t)++run;
-        else run = 1;
-    }
-    for (int i = 0; i < d; i++)
-        if (a[i]) perms *= 2;
-    return perms;
-}
-
-static int push_tuple(sphere_plan *p, const int64_t *a)
-{
-    if (p->tuple_count == p->tuple_cap) {
-        size_t cap = p->tuple_cap ? 2 * p->tuple_cap : 64;
-        int64_t *t = realloc(p->tuples, cap * (size_t)p->d * sizeof *t);
-        if (!t) return -1;
-        p->tuples = t;
-        p->tuple_cap = cap;
-    }
-    memcpy(p->tuples + p->tuple_count++ * (size_t)p->d, a, (size_t)p->d * sizeof *a);
-    return 0;
-}
-
-/* Sorted tuples a[pos..d-1] >= lo with squares summing to rem; -1 out of memory. */
-static int find_tuples(sphere_plan *p, int64_t *a, int pos, int64_t lo, uint64_t rem)
-{
-    if (pos == p->d - 1) {
-        uint64_t s = isqrt_u64(rem);
-        if (s * s != rem || (int64_t)s < lo) return 0;
-        a[pos] = (int64_t)s;
-        p->total += signed_perms(a, p->d);
-        return push_tuple(p, a);
-    }
-    for (int64_t v = lo; (uint64_t)(p->d - pos) * (uint64_t)(v * v) <= rem; v++) {
-        a[pos] = v;
-        if (find_tuples(p, a, pos + 1, v, rem - (uint64_t)(v * v)) != 0) return -1;
-    }
-    return 0;
-}
-
-/* d >= 3: the first M from M0 on with at least n points. 1 found, 0 none below 2^50,
- * -1 out of memory. M0 by bisection on c_d^2 M^(d-2) >= n^2 (products only). */
-static int plan_sphere(sphere_plan *p, uint64_t n)
-{
-    static const double c2[LH_DELAUNAY_MAX_DIM + 1] = {0, 0, 0, 39.47841760435743, 97.40909103400243,
-        173.17171739378205, 240.34729839382604, 273.46181506141994, 263.5703060019603};
-    uint64_t lo = 0, hi = UINT64_C(1) << 50;
-    while (hi - lo > 1) {
-        uint64_t mid = lo + (hi - lo) / 2;
-        double v = c2[p->d];
-        for (int i = 0; i < p->d - 2; i++) v *= (double)mid;
-        if (v >= (double)n * (double)n) hi = mid;
-        else lo = mid;
-    }
-    int64_t a[LH_DELAUNAY_MAX_DIM];
-    for (uint64_t m = hi, tries = 0; m < (UINT64_C(1) << 50); m++) {
-        if (p->d == 3 && (m % 8 == 7 || m % 4 == 0)) continue; /* none, or 2x those of m/4 */
-        p->tuple_count = 0;
-        p->total = 0;
-        if (find_tuples(p, a, 0, 0, m) != 0) return -1;
-        if (p->total >= n) {
-            p->m = m;
-            return 1;
-        }
-        if (++tries % 16 == 0) m += m / 8; /* unlucky stretch: move on faster */
-    }
-    return 0;
-}
-
-/* Selection sampling into the output: each candidate kept with probability need/left. */
-typedef struct picker {
-    FILE *f;
-    rng *r;
-    int d;
-    uint64_t need, left;
-} picker;
-
-static void pick(picker *k, const int64_t *v)
-{
-    if (k->need && rng_below(k->r, k->left) < k->need) {
-        double x[LH_DELAUNAY_MAX_DIM];
-        for (int j = 0; j < k->d; j++) x[j] = (double)v[j];
-        put_point(k->f, k->d, x);
-        k->need--;
-    }
-    k->left--;
-}
-
-static void gauss_mul(int64_t *z, int64_t re, int64_t im)
-{
-    int64_t a = z[0];
-    z[0] = a * re - z[1] * im;
-    z[1] = a * im + z[1] * re;
-}
-
-/* d = 2: every point of the circle, choice by choice (a mixed-radix counter j[i] in
- * 0..exps[i]), through the picker. */
-static void offer_circle(const sphere_plan *p, picker *k)
-{
-    int64_t root[N_GAUSS_PRIMES][2];
-    int j[N_GAUSS_PRIMES] = {0};
-    for (int i = 0; i < N_GAUSS_PRIMES; i++) /* p = a^2 + b^2, a > b > 0 */
-        for (int64_t b = 1; b * b * 2 < gauss_prime[i]; b++) {
-            int64_t a = (int64_t)isqrt_u64((uint64_t)(gauss_prime[i] - b * b));
-            if (a * a + b * b == gauss_prime[i]) root[i][0] = a, root[i][1] = b;
-        }
-    for (;;) {
-        int64_t z[2] = {1, 0};
-        for (int i = 0; i < N_GAUSS_PRIMES; i++)
-            for (int t = 0; t < p->exps[i]; t++) gauss_mul(z, root[i][0], t < j[i] ? root[i][1] : -root[i][1]);
-        int64_t units[4][2] = {{z[0], z[1]}, {-z[1], z[0]}, {-z[0], -z[1]}, {z[1], -z[0]}};
-        for (int u = 0; u < 4; u++) pick(k, units[u]);
-        int i = 0;
-        while (i < N_GAUSS_PRIMES && ++j[i] > p->exps[i]) j[i++] = 0;
-        if (i == N_GAUSS_PRIMES) return;
-    }
-}
-
-/* Lexicographic successor of a multiset permutation; 0 after the last. */
-static int next_perm(int64_t *a, int d)
-{
-    int i = d - 2;
-    while (i >= 0 && a[i] >= a[i + 1]) i--;
-    if (i < 0) return 0;
-    int j = d - 1;
-    while (a[j] <= a[i]) j--;
-    int64_t t = a[i];
-    a[i] = a[j];
-    a[j] = t;
-    for (int lo = i + 1, hi = d - 1; lo < hi; lo++, hi--) t = a[lo], a[lo] = a[hi], a[hi] = t;
-    return 1;
-}
-
-/* d >= 3: each tuple's permutations, each with every sign pattern of its nonzeros. */
-static void offer_sphere(const sphere_plan *p, picker *k)
-{
-    int64_t a[LH_DELAUNAY_MAX_DIM], v[LH_DELAUNAY_MAX_DIM];
-    for (size_t t = 0; t < p->tuple_count; t++) {
-        memcpy(a, p->tuples + t * (size_t)p->d, (size_t)p->d * sizeof *a);
-        do {
-            int nz = 0;
-            for (int j = 0; j < p->d; j++) nz += a[j] != 0;
-            for (uint32_t mask = 0; mask < (UINT32_C(1) << nz); mask++) {
-                for (int j = 0, b = 0; j < p->d; j++)
-                    v[j] = a[j] && ((mask >> b++) & 1) ? -a[j] : a[j];
-                pick(k, v);
-            }
-        } while (next_perm(a, p->d));
     }
 }
 
@@ -502,16 +211,6 @@ static const char usage_text[] =
     "  lifthull points 2000 -d 4 --exact-sphere | lifthull delaunay -s\n"
     "  lifthull points --grid 5 -d 3 -o grid.txt -f\n"
     "  lifthull points 100000 -d 5 --clusters 20 --seed 3 -o clusters.txt -f\n";
-
-/* The most points --exact-sphere gives in 2D (M < 2^62). */
-static uint64_t circle_max(void)
-{
-    sphere_plan p = {.d = 2};
-    plan_circle(&p, UINT64_MAX);
-    uint64_t count = 4;
-    for (int i = 0; i < N_GAUSS_PRIMES; i++) count *= (uint64_t)(p.exps[i] + 1);
-    return count;
-}
 
 /* One line on standard error, "lifthull points: ..."; returns -1. */
 static int usage_error(const char *fmt, ...)
@@ -635,11 +334,11 @@ static int check_opts(gen_opts *o, int have_n)
     if (o->kind == GEN_CLUSTERS && o->k > o->n)
         return usage_error("--clusters %llu: more clusters than the %llu points", (unsigned long long)o->k,
                            (unsigned long long)o->n);
-    if (o->kind == GEN_EXACT_SPHERE && o->d == 2 && o->n > circle_max())
+    if (o->kind == GEN_EXACT_SPHERE && o->d == 2 && o->n > lht_circle_max())
         return usage_error("--exact-sphere in 2D gives at most %llu points, not %llu",
-                           (unsigned long long)circle_max(), (unsigned long long)o->n);
-    if (o->kind == GEN_EXACT_SPHERE && o->d == 3 && o->n > EXACT_SPHERE_MAX_3D)
-        return usage_error("--exact-sphere in 3D gives at most %d points, not %llu", EXACT_SPHERE_MAX_3D,
+                           (unsigned long long)lht_circle_max(), (unsigned long long)o->n);
+    if (o->kind == GEN_EXACT_SPHERE && o->d == 3 && o->n > LHT_EXACT_SPHERE_MAX_3D)
+        return usage_error("--exact-sphere in 3D gives at most %d points, not %llu", LHT_EXACT_SPHERE_MAX_3D,
                            (unsigned long long)o->n);
     return 0;
 }
@@ -653,7 +352,7 @@ static int parse_args(int argc, char **argv, gen_opts *o)
     o->kind = GEN_CUBE;
     for (int i = 0; i < argc; i++)
         if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
-            printf(usage_text, (unsigned long long)circle_max(), EXACT_SPHERE_MAX_3D);
+            printf(usage_text, (unsigned long long)lht_circle_max(), LHT_EXACT_SPHERE_MAX_3D);
             return 1;
         }
     const char *kind_opt = NULL;
@@ -666,19 +365,17 @@ static int parse_args(int argc, char **argv, gen_opts *o)
 /* ---- writing ---------------------------------------------------------------------- */
 
 /* The header and the points; -1 out of memory (write errors are found at the end). */
-static int write_points(FILE *f, const gen_opts *o, const sphere_plan *plan)
+static int write_points(FILE *f, const gen_opts *o, const lht_sphere *plan)
 {
-    rng r;
-    rng_seed(&r, o->seed);
+    lht_rng r;
+    lht_rng_seed(&r, o->seed);
     put_header(f, o);
     if (o->kind == GEN_GRID) {
         write_grid(f, o);
         return 0;
     }
     if (o->kind != GEN_EXACT_SPHERE) return write_random(f, o, &r);
-    picker k = {f, &r, o->d, o->n, plan->total};
-    if (o->d == 2) offer_circle(plan, &k);
-    else offer_sphere(plan, &k);
+    lht_sphere_pick(plan, &r, o->n, put_site, f);
     return 0;
 }
 
@@ -688,22 +385,22 @@ int lh_cli_generate(int argc, char **argv)
     int r = parse_args(argc, argv, &o);
     if (r != 0) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     if (!lh_cli_out_check("points", o.out, o.force, NULL)) return LH_EXIT_FAIL;
-    sphere_plan plan = {.d = o.d};
+    lht_sphere plan = {.d = o.d};
     if (o.kind == GEN_EXACT_SPHERE) {
-        r = o.d == 2 ? plan_circle(&plan, o.n) : plan_sphere(&plan, o.n);
+        r = lht_sphere_plan(&plan, o.d, o.n);
         if (r <= 0) {
-            free(plan.tuples);
+            lht_sphere_free(&plan);
             fprintf(stderr, "lifthull points: %s\n", r < 0 ? "out of memory" : "no sphere found");
             return LH_EXIT_FAIL;
         }
     }
     lh_cli_out out;
     if (!lh_cli_out_open(&out, "points", o.out, o.force, NULL)) {
-        free(plan.tuples);
+        lht_sphere_free(&plan);
         return LH_EXIT_FAIL;
     }
     int status = write_points(out.f, &o, &plan);
-    free(plan.tuples);
+    lht_sphere_free(&plan);
     if (status != 0) fprintf(stderr, "lifthull points: out of memory\n");
     return lh_cli_out_close(&out, "points", status == 0);
 }

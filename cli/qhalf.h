@@ -1,5 +1,5 @@
-/* qhalf.h — `lifthull qhalf`: the halfspaces, their intersection (qhalf.c) and
- * Qhull's outputs for it (qhalf_print.c). */
+/* qhalf.h — `lifthull qhalf`: the halfspaces (read by qhalf_read.c), their intersection
+ * (qhalf.c) and Qhull's outputs for it (qhalf_print.c). */
 #ifndef LH_CLI_QHALF_H
 #define LH_CLI_QHALF_H
 
@@ -31,6 +31,11 @@ typedef struct lh_cli_hresult {
     double seconds;      /* the dual hull's computation                           */
 } lh_cli_hresult;
 
+/* Reads the halfspaces (qhalf_read.c) of file (NULL or "-": standard input), in Qhull's
+ * format or, with cdd, cdd's; *name is the name the messages use. 1 read, 0 after
+ * printing the error (FILE:LINE: problem). hs starts zeroed; the caller frees hs->h and
+ * hs->line in every case. */
+int lh_cli_qhalf_read(const char *file, int cdd, lh_cli_halfspaces *hs, const char **name);
 /* Prints output `opt` (one lh_cli_qparse accepts for qhalf; not o, G, m, FM, f, FF,
  * which print the dual hull through qconvex's printers). Returns 0 when out of
  * memory (message printed). */

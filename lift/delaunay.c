@@ -50,8 +50,8 @@ void lh__dt_conflicts(lh__eng *e, int furthest, int generic)
     e->insert_par = furthest ? NULL : loop_for(e->d, generic, 1);
 }
 
-/* Cells (finite and infinite) expected for n uniform sites: about 2n, 6.75n, 31n,
- * 161n in 2D..5D (measured), with a little room; higher dimensions start smaller
+/* Cells (finite and infinite) expected for n uniform sites: the mean counts, about
+ * 2n, 6.75n, 31n, 161n in 2D..5D, with a little room; higher dimensions start smaller
  * and grow. */
 lh_index lh__dt_expected_cells(int d, size_t n)
 {

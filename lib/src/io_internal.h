@@ -116,6 +116,10 @@ lh_status lh__number(lh__scan *s, const lh__token *t, const char *what, const ch
  * of points (1..LH_READ_MAX_POINTS) with the wording of `what`. */
 lh_status lh__dimension(lh__scan *s, const lh__token *t, int *d);
 lh_status lh__count(lh__scan *s, const lh__token *t, const char *what, size_t *n);
+/* An optional small integer field (0..hi) of a header line (.node, .poly): the line's end
+ * leaves *v as it is and sets *ended; once *ended is set, reads nothing. Error: "expected
+ * WHAT, found ...". */
+lh_status lh__header_field(lh__scan *s, const char *what, long long hi, int *v, int *ended);
 
 /* The points being built: the output and its capacity in points. */
 typedef struct lh__builder {

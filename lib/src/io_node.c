@@ -14,23 +14,6 @@
 
 #define MAX_ATTRIBUTES LH__READ_MAX_ATTR
 
-/* An optional small integer field of the header (lo..hi); EOL/EOF leave *v at 0 and
- * set *ended. */
-static lh_status header_field(lh__scan *s, const char *what, long long hi, int *v, int *ended)
-{
-    lh__token t;
-    long long x;
-    if (*ended) return LH_OK;
-    lh__scan_next(s, 0, &t);
-    if (t.kind == LH__TOK_EOL || t.kind == LH__TOK_EOF) {
-        *ended = 1;
-        return LH_OK;
-    }
-    if (!lh__word_integer(&t, &x) || x < 0 || x > hi) return lh__expected(s, LH_ERR_PARSE, &t, what, NULL);
-    *v = (int)x;
-    return LH_OK;
-}
-
 static lh_status read_header(lh__scan *s, lh__builder *b, size_t *n)
 {
     lh__token t;
@@ -41,10 +24,10 @@ static lh_status read_header(lh__scan *s, lh__builder *b, size_t *n)
     lh__scan_next(s, 0, &t);
     st = lh__dimension(s, &t, &b->p->d);
     if (st == LH_OK)
-        st = header_field(s, "the number of attributes (an integer from 0 to 1000)",
+        st = lh__header_field(s, "the number of attributes (an integer from 0 to 1000)",
                           MAX_ATTRIBUTES, &b->p->attr_count, &ended);
     if (st == LH_OK)
-        st = header_field(s, "the number of boundary markers (0 or 1)", 1, &markers, &ended);
+        st = lh__header_field(s, "the number of boundary markers (0 or 1)", 1, &markers, &ended);
     if (st != LH_OK || ended) return st;
     b->markers = markers;
     lh__scan_next(s, 0, &t);

@@ -150,23 +150,6 @@ static lh_status read_count(lh__scan *s, const lh__token *t, const char *what, i
     return LH_OK;
 }
 
-/* An optional small integer field of a header line (0..hi); the line's end leaves *v
- * and sets *ended. */
-static lh_status header_field(lh__scan *s, const char *what, long long hi, int *v, int *ended)
-{
-    lh__token t;
-    long long x;
-    if (*ended) return LH_OK;
-    lh__scan_next(s, 0, &t);
-    if (t.kind == LH__TOK_EOL || t.kind == LH__TOK_EOF) {
-        *ended = 1;
-        return LH_OK;
-    }
-    if (!lh__word_integer(&t, &x) || x < 0 || x > hi) return lh__expected(s, LH_ERR_PARSE, &t, what, NULL);
-    *v = (int)x;
-    return LH_OK;
-}
-
 static lh_status line_end(lh__scan *s, int ended, const char *what)
 {
     lh__token t;
@@ -190,10 +173,10 @@ static lh_status read_header(lh__scan *s, lh_pslg *g, size_t *n, int *markers)
     if (t.kind == LH__TOK_EOL || t.kind == LH__TOK_EOF) return LH_OK;
     if (!lh__word_integer(&t, &d)) return lh__expected(s, LH_ERR_PARSE, &t, dim, NULL);
     if (d != 2) return lh__expected(s, LH_ERR_DIMENSION, &t, dim, NULL);
-    st = header_field(s, "the number of attributes (an integer from 0 to 1000)", MAX_ATTRIBUTES,
+    st = lh__header_field(s, "the number of attributes (an integer from 0 to 1000)", MAX_ATTRIBUTES,
                       &attrs, &ended);
     if (st == LH_OK)
-        st = header_field(s, "the number of boundary markers (0 or 1)", 1, markers, &ended);
+        st = lh__header_field(s, "the number of boundary markers (0 or 1)", 1, markers, &ended);
     if (st == LH_OK)
         st = line_end(s, ended, "the end of the header line (vertices, dimension, attributes, markers)");
     if (*n == 0) *markers = 0; /* the .node's, which lh_pslg_take_points brings */
@@ -372,7 +355,7 @@ static lh_status read_poly(poly_ctx *x)
     lh__scan_next(s, 1, &t);
     st = read_count(s, &t, "the number of segments", 0, &x->seg.declared);
     if (st == LH_OK)
-        st = header_field(s, "the number of segment boundary markers (0 or 1)", 1, &x->segment_markers, &ended);
+        st = lh__header_field(s, "the number of segment boundary markers (0 or 1)", 1, &x->segment_markers, &ended);
     if (st == LH_OK) st = line_end(s, ended, "the end of the line after the number of segments and markers");
     for (size_t i = 0; st == LH_OK && i < x->seg.declared; i++) st = read_segment(x, i);
     if (st != LH_OK) return st;

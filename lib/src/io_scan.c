@@ -283,3 +283,18 @@ lh_status lh__count(lh__scan *s, const lh__token *t, const char *what, size_t *n
     *n = (size_t)v;
     return LH_OK;
 }
+
+lh_status lh__header_field(lh__scan *s, const char *what, long long hi, int *v, int *ended)
+{
+    lh__token t;
+    long long x;
+    if (*ended) return LH_OK;
+    lh__scan_next(s, 0, &t);
+    if (t.kind == LH__TOK_EOL || t.kind == LH__TOK_EOF) {
+        *ended = 1;
+        return LH_OK;
+    }
+    if (!lh__word_integer(&t, &x) || x < 0 || x > hi) return lh__expected(s, LH_ERR_PARSE, &t, what, NULL);
+    *v = (int)x;
+    return LH_OK;
+}
