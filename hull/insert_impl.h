@@ -681,7 +681,7 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
     if (st != LH_OK) return st;
     for (size_t b = 0; b < t->nbound; b++) /* the outside cells' neighbour rows */
         LH__PREFETCH(t->nbr + (size_t)t->nbr[(size_t)t->bound[2 * b] * NV + t->bound[2 * b + 1]] * NV);
-    const int twins = (NV == 3 || (NV == 4 && 2 * t->vbits <= 64)) && !e->hashed_ridges;
+    const int twins = (NV == 3 || (NV == 4 && 2 * t->vbits <= 64)) && !e->dbg.hashed_ridges;
     const int local = NV == 4 && twins && t->vloc ? cone_local(e) : 0;
     if (local) return local > 0 ? LH_OK : LH_ERR_INTERNAL;
     const int numbered = !twins && e->inside_conflicts && t->vloc ? number_boundary(t) : 0;
@@ -693,7 +693,7 @@ static lh_status cavity_insert(lh__eng *e, lh_index start)
     } else if (e->inside_conflicts) {
         link_by_turning(e);
 #ifndef LH_T_PARALLEL
-        e->turned++;
+        e->dbg.turned++;
 #endif
     } else
         link_new_cells(t);
@@ -794,7 +794,7 @@ static lh_status cavity_insert_2(lh__eng *e, lh_index start)
     return LH_OK;
 }
 #define CAVITY_INSERT(e, c)                                           \
-    (NV == 3 && (e)->inside_conflicts && !(e)->hashed_ridges ? cavity_insert_2(e, c) \
+    (NV == 3 && (e)->inside_conflicts && !(e)->dbg.hashed_ridges ? cavity_insert_2(e, c) \
                                                              : cavity_insert(e, c))
 #else
 #define CAVITY_INSERT(e, c) cavity_insert(e, c)

@@ -106,7 +106,7 @@ static lh_status setup(pctx *c, lh__eng *e, int nw)
         w->scratch.vlimit = e->tds.vlimit;
         w->par.me = i;
         w->par.sh = &c->sh;
-        lh_status st = lh__tds_scratch(&w->scratch, e->par_scratch ? e->par_scratch : SCRATCH);
+        lh_status st = lh__tds_scratch(&w->scratch, e->dbg.par_scratch ? e->dbg.par_scratch : SCRATCH);
         if (st == LH_OK && i) st = lh_pred_create(&e->alloc, &w->pred);
         if (i == 0) w->pred = e->pred;
         if (st != LH_OK) return st;
@@ -388,8 +388,8 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     const lh_index start = t->top;
     atomic_store(&c->sh.cursor, (size_t)start);
     c->sh.end = (size_t)t->cap;
-    if (e->par_blocks && c->sh.end - (size_t)start > e->par_blocks * BLOCK)
-        c->sh.end = (size_t)start + e->par_blocks * BLOCK;
+    if (e->dbg.par_blocks && c->sh.end - (size_t)start > e->dbg.par_blocks * BLOCK)
+        c->sh.end = (size_t)start + e->dbg.par_blocks * BLOCK;
     atomic_store(&c->sh.ndeferred, 0);
     cut_runs(c, first, count);
     st = cover_again(c, count);

@@ -38,10 +38,10 @@ static lh_index *engine_cells(int d, size_t n, const double *x, int furthest, in
         e.finite_conflict = furthest ? outside : inside;
         e.user = &e;
         e.inside_conflicts = !furthest;
-        e.hashed_ridges = hashed;
+        e.dbg.hashed_ridges = hashed;
         int affdim;
         if (lh__eng_build(&e, 1024, &affdim) == LH_OK) cells = lh_test_engine_cells(&e, count);
-        *turned = e.turned;
+        *turned = e.dbg.turned;
     }
     lh__eng_release(&e);
     free(dup);
