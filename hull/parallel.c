@@ -172,7 +172,7 @@ static size_t chunk_first(const pctx *c, uint32_t k)
  * at an infinite cell, or after `limit` steps. A worker starts from it, not from
  * the last insertion's cells, where every worker would start at once: their first
  * walks would cross, and a worker descheduled there would hold them, each one
- * deferring every site it tries meanwhile. Not insert_impl.h's locate, which is
+ * deferring every site it tries meanwhile. Not insert_locate.h's locate, which is
  * static to each compiled insertion loop and takes the workers' locks: this runs a
  * few times a phase, on the calling thread before any worker, so plain exact
  * orientations do. */
