@@ -32,6 +32,7 @@
 #include "lh_alloc.h"
 #include "lifthull.h"
 #include "tds.h"
+#include "threads.h"
 
 #define LH__ENGINE_MAX_DIM LH_ORIENT_MAX_DIM
 
@@ -67,7 +68,6 @@ typedef lh_status (*lh__insert_fn)(struct lh__eng *e, size_t first, size_t count
 #define LH__RETRY ((lh_status)-1000)
 /* BRIO rounds (order.c); lh__eng.round_end marks them in the insertion order. */
 #define LH__BRIO_ROUNDS 24
-#define LH__MAX_THREADS 64 /* workers of one computation, at most */
 struct lh__par;
 
 /* Knobs and counters for the tests only: they steer the engine onto paths that
@@ -216,22 +216,6 @@ lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const l
 /* parallel.c: inserts order positions at..e->norder-1 as lh__eng_build's loop does,
  * splitting the larger BRIO rounds among e->threads workers (e->insert_par). */
 lh_status lh__eng_insert_parallel(lh__eng *e, size_t at);
-/* parallel.c: the workers lh_options.threads asks for (0: one per online CPU). */
-int lh__threads(int requested);
-/* parallel.c: fn(ctx, w, nw) for w = 0..nw-1 at once, w = 0 on the calling thread,
- * the others on threads of their own (or here, after, should one not start); a
- * share is the range [lh__share(count, w, nw), lh__share(count, w + 1, nw)). */
-void lh__par_for(int nw, void (*fn)(void *ctx, int w, int nw), void *ctx);
-static inline size_t lh__share(size_t count, int w, int nw)
-{
-    return count / (size_t)nw * (size_t)w + count % (size_t)nw * (size_t)w / (size_t)nw;
-}
-/* The threads, at most nw (and LH__MAX_THREADS), worth starting for n items: each
- * must get enough (one thread for small n). */
-int lh__par_width(int nw, size_t n);
-/* fn(ctx, lo, hi) over the shares of 0..n-1 among lh__par_width(nw, n) threads, for
- * loops whose iterations touch disjoint data. */
-void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx);
 
 /* Inserts the vertices list[0..count-1] (distinct, none a vertex yet; coordinates
  * in e->site) into the cells of e->tds, which must hold a triangulation made as

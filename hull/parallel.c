@@ -25,9 +25,7 @@
 
 #include "lh_exact.h"
 
-#include <pthread.h>
 #include <string.h>
-#include <unistd.h>
 
 /* Sites per worker below which a round stays sequential, and vertices before the
  * first phase (runs far apart), in 2D; a site costs about 4x more per dimension
@@ -407,68 +405,6 @@ static lh_status phase(pctx *c, size_t first, size_t count)
         if (from < to) st = seq(e, from, to - from, NULL);
     }
     return st;
-}
-
-typedef struct for_arg {
-    void (*fn)(void *ctx, int w, int nw);
-    void *ctx;
-    int w, nw;
-} for_arg;
-
-static void *for_body(void *arg)
-{
-    const for_arg *a = arg;
-    a->fn(a->ctx, a->w, a->nw);
-    return NULL;
-}
-
-void lh__par_for(int nw, void (*fn)(void *ctx, int w, int nw), void *ctx)
-{
-    nw = nw < 1 ? 1 : nw < MAX_WORKERS ? nw : MAX_WORKERS;
-    pthread_t th[MAX_WORKERS];
-    for_arg arg[MAX_WORKERS];
-    int started[MAX_WORKERS] = {0};
-    for (int w = 0; w < nw; w++) arg[w] = (for_arg){fn, ctx, w, nw}; /* nw = 1: no thread */
-    for (int w = 1; w < nw; w++) started[w] = !pthread_create(th + w, NULL, for_body, arg + w);
-    fn(ctx, 0, nw);
-    for (int w = 1; w < nw; w++) {
-        if (started[w])
-            pthread_join(th[w], NULL);
-        else
-            fn(ctx, w, nw); /* no thread: its share runs here */
-    }
-}
-
-typedef struct range_arg {
-    void (*fn)(void *ctx, size_t lo, size_t hi);
-    void *ctx;
-    size_t n;
-} range_arg;
-
-static void range_body(void *arg, int w, int nw)
-{
-    const range_arg *a = arg;
-    a->fn(a->ctx, lh__share(a->n, w, nw), lh__share(a->n, w + 1, nw));
-}
-
-int lh__par_width(int nw, size_t n)
-{
-    enum { MIN_SHARE = 1 << 14 }; /* items a thread must get to be worth starting */
-    if (nw > 1 && n / MIN_SHARE < (size_t)nw) nw = (int)(n / MIN_SHARE);
-    return nw < 1 ? 1 : nw < MAX_WORKERS ? nw : MAX_WORKERS;
-}
-
-void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx)
-{
-    range_arg a = {fn, ctx, n};
-    lh__par_for(lh__par_width(nw, n), range_body, &a);
-}
-
-int lh__threads(int requested)
-{
-    if (requested > 0) return requested < MAX_WORKERS ? requested : MAX_WORKERS;
-    long online = sysconf(_SC_NPROCESSORS_ONLN);
-    return online < 1 ? 1 : online < MAX_WORKERS ? (int)online : MAX_WORKERS;
 }
 
 lh_status lh__eng_insert_parallel(lh__eng *e, size_t at)
