@@ -21,7 +21,7 @@ static LH__ALWAYS_INLINE void prefetch_cell(const lh__tds *t, int nv, lh_index c
  * (LH_T_FINITE_CONFLICT2), into x[k] for the neighbour across facet k; x[k] = -1
  * where grow_region tests it itself (visited, infinite, or the odd one left).
  * Same tests, same answers as one at a time: pairing only lets the two cells'
- * static filters share their evaluation (docs/engine.md, measurements). Returns 0
+ * static filters share their evaluation (docs/bench-engine.md). Returns 0
  * when a neighbour is another worker's. */
 static LH__ALWAYS_INLINE int pair_tests(lh__eng *e, lh_index c, uint32_t in, uint32_t out, int *x)
 {
@@ -63,7 +63,7 @@ static int grow_region(lh__eng *e, lh_index start, uint32_t in, uint32_t out)
         lh_index c = t->cells[i];
         /* the misses of c's neighbours overlap; those of the cell two ahead in the
            queue are taken now, to arrive while c and the next are tested (two
-           ahead hides more of the latency than one: docs/engine.md) */
+           ahead hides more of the latency than one: docs/bench-engine.md) */
         for (int k = 0; k < nv; k++) prefetch_cell(t, nv, t->nbr[(size_t)c * nv + k]);
         if (i + 2 < t->ncells) {
             const lh_index *nn = t->nbr + (size_t)t->cells[i + 2] * nv;
