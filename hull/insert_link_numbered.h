@@ -48,7 +48,8 @@ static inline int number_ridges(lh__tds *t, size_t b, uint64_t *keys, lh_index *
  * (number_ridges): the boundary's vertices are numbered as they are met, so a
  * ridge's key is its numbers in order, exact, in one word, with no sort of the
  * cell's vertices (link_new_cells) and no walk through the dead cells
- * (link_by_turning, whose pointer chase is the slower). number_boundary takes the keys, from the dead cells, before the cone;
+ * (link_by_turning, whose chain of dependent loads is the slower).
+ * number_boundary takes the keys, from the dead cells, before the cone;
  * link_numbered enters them in the ridge table (a prefix at most 1/8 full) in
  * order, each slot prefetched 16 keys ahead. The first of a pair to arrive claims
  * a slot; the second finds it, links both cells, and flags it paired: both

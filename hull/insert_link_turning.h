@@ -2,8 +2,8 @@
  * insert_link_turning.h — part of the insertion loop template (insert_impl.h):
  * linking the new cells of a Delaunay insertion by turning around each ridge
  * through the dead cells; the path for a cavity whose boundary has more than 255
- * vertices (beyond the numbering of insert_link_numbered.h), in 4D and up and under
- * the test knob hashed_ridges. Needs the dead cells intact: the cone is made
+ * vertices (beyond the numbering of insert_link_numbered.h), in 4D and up (3D
+ * beyond 2^32 sites) and under the test knob hashed_ridges. Needs the dead cells intact: the cone is made
  * without reusing them (make_cone).
  */
 

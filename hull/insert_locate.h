@@ -4,8 +4,8 @@
  *
  * A remembering stochastic visibility walk (Devillers, Pion & Teillaud, "Walking in
  * a triangulation", IJFCS 13(2), 2002) from the last new cell: it crosses a facet
- * whose far side q strictly sees, trying the facets from a random one, never back
- * across the facet it came through. It stops in the closed simplex containing q,
+ * whose hyperplane strictly separates the cell from q, trying the facets from a
+ * random one, never back across the facet it came through. It stops in the closed simplex containing q,
  * or in an infinite cell whose facet q strictly sees. A bound on its length falls
  * back to scanning every cell, so it always ends.
  */
