@@ -8,14 +8,14 @@
  * The sort is an in-place most-significant-digit radix sort on a row's first vertex
  * (American flag sort: McIlroy, Bostic & McIlroy, "Engineering radix sort",
  * Computing Systems 6(1), 1993), with digits of at most DIGIT_BITS bits: a pass
- * writes to as many places at once as it has buckets, and three passes of 7 bits
- * (keys of 10^6 sites) measured 2% faster in 2D and 3D than two of 10. A bucket
- * small enough for the cache whose remaining key bits are few is finished out of
- * place instead (gather_sort: a counting sort of positions, then one gather); rows
- * with the same first vertex are ordered by the rest of the tuple (order_group;
- * heapsort for the large groups of a degenerate input). With several threads, the
- * canonical forms are split among them, so is the first pass (first_pass), and
- * after it its buckets; the finite rows come out the same.
+ * writes to as many places at once as it has buckets, so the digits stay narrow
+ * enough for those write streams to stay in the cache (docs/bench-engine.md). A
+ * bucket small enough for the cache whose remaining key bits are few is finished
+ * out of place instead (gather_sort: a counting sort of positions, then one
+ * gather); rows with the same first vertex are ordered by the rest of the tuple
+ * (order_group; heapsort for the large groups of a degenerate input). With several
+ * threads, the canonical forms are split among them, so is the first pass
+ * (first_pass), and after it its buckets; the finite rows come out the same.
  */
 #include "engine.h"
 #include "lh_alloc.h"
@@ -28,8 +28,8 @@ enum {
     GROUP_MAX = 4096,     /* rows of one first vertex sorted through positions (more: heapsort) */
     MAX_LEVELS = 64 / DIGIT_BITS + 1,
     GATHER_BITS = 16,     /* gather_sort: the key bits left, at most */
-    GATHER_MAX = 1 << 16, /* and the rows, at most (more: sorted in place; 2x as many measured
-                             no faster in 3D: their gathers missed the cache) */
+    GATHER_MAX = 1 << 16, /* and the rows, at most (more: sorted in place, as the
+                             gathers of a larger bucket miss the cache) */
     GROUP_SMALL = 32      /* rows of one first vertex ordered by insertion */
 };
 
@@ -161,10 +161,10 @@ static inline int before(const rows *r, uint64_t kx, size_t x, uint64_t ky, size
  * reordered as their rows are to be: by their other vertices, on keys that pack
  * the next ones (group_key: whole rows in 2D and 3D, the next 3 vertices in 4D and
  * 5D below 2^21 sites), the rest compared only on equal keys. Up to GROUP_SMALL
- * by insertion (16 measured slower in 3D), else a bottom-up merge sort of local
- * indices (r->pos) with a branch-free merge step: it replaced heapsort for the
- * groups of 30 (4D) to 160 (5D) rows that every vertex has, which took 12% of a
- * 4D run. Stable either way. */
+ * by insertion, else a bottom-up merge sort of local indices (r->pos) with a
+ * branch-free merge step: every vertex has such a group, of 30 (4D) to 160 (5D)
+ * rows on average, where heapsort's data-dependent branches mispredict. Stable
+ * either way. */
 static void order_group(const rows *r, lh_index *at, size_t m, int nv)
 {
     uint64_t *key = r->gkey;
@@ -395,7 +395,7 @@ static size_t canonical_rows(const rows *r, size_t lo, size_t hi, int nv, size_t
             copy_row(cn, nb, nv);
             lh__canonical_ranks(cv, nv, rank);
             /* scattered into the rows themselves: a copy scattered into a local
-               array and read back whole stalled on store forwarding (3D: 0.10 s) */
+               array and read back whole would stall on store forwarding */
             for (int k = 0; k < nv; k++) v[rank[k]] = cv[k], nb[rank[k]] = cn[k];
         }
         r->dig[c] = digit_at(r, v, 0);
@@ -547,7 +547,7 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
         for (int w = 0; w < nw; w++) *count += job->counts[w];
         first_pass(job, nw); /* the first digit, then its buckets (sort_rows) */
         /* gather_sort's rows: as many as the largest bucket (the first vertex is
-           the least, so the first buckets hold more: 3% of the rows in 3D) */
+           the least, so the first buckets hold more than their share) */
         size_t gmax = 0;
         for (size_t b = 0, from = 0; b < job->nb; from = job->ends[b++])
             gmax = job->ends[b] - from > gmax ? job->ends[b] - from : gmax;

@@ -171,7 +171,7 @@ lh_status lh__eng_build(lh__eng *e, lh_index cells_hint, int *affdim)
     if (par && cells_hint < LH_INDEX_MAX / 2) /* the phases' blocks and margins: room, not memory, as */
         cells_hint += cells_hint / 16;        /* pages are touched only when used */
     if ((st = lh__tds_init(&e->tds, &e->alloc, e->nv, cells_hint)) != LH_OK) return st;
-    if (!e->hashed_ridges) lh__tds_vertex_bound(&e->tds, e->norder + 1);
+    if (!e->dbg.hashed_ridges) lh__tds_vertex_bound(&e->tds, e->norder + 1);
     if ((st = start(e)) != LH_OK) return st;
     st = par ? lh__eng_insert_parallel(e, (size_t)e->nv) : insert_all(e);
     if (st == LH_OK) restore_indices(e);

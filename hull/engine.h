@@ -32,6 +32,7 @@
 #include "lh_alloc.h"
 #include "lifthull.h"
 #include "tds.h"
+#include "threads.h"
 
 #define LH__ENGINE_MAX_DIM LH_ORIENT_MAX_DIM
 
@@ -67,27 +68,32 @@ typedef lh_status (*lh__insert_fn)(struct lh__eng *e, size_t first, size_t count
 #define LH__RETRY ((lh_status)-1000)
 /* BRIO rounds (order.c); lh__eng.round_end marks them in the insertion order. */
 #define LH__BRIO_ROUNDS 24
-#define LH__MAX_THREADS 64 /* workers of one computation, at most */
 struct lh__par;
 
+/* Knobs and counters for the tests only: they steer the engine onto paths that
+ * large inputs take, at small sizes, and count how often one ran. Zero: the
+ * paths every computation takes. They never change the output. */
+struct lh__eng_debug {
+    size_t par_scratch;   /* a worker's cavity bound in boundary facets (0:
+                             parallel.c's), small to make workers defer sites */
+    size_t par_blocks;    /* blocks of new cells a phase hands out (0: as many
+                             as the store holds), few to make workers stop */
+    int hashed_ridges;    /* link new cells as large n does where packed keys
+                             fit (insert_link_hashed.h; turning, not twins or
+                             the 2D tour, in 2D and 3D), to exercise those
+                             paths at small n */
+    size_t turned;        /* out: sequential insertions whose new cells were
+                             linked by turning (insert_link_turning.h) */
+};
+
 typedef struct lh__eng {
+    /* The input and options, set by lh__eng_init and the caller before building. */
     lh_allocator alloc;
     int d, nv;
     size_t n;
     const double *xyz; /* n*d sites, the caller's */
-    const double *site; /* the coordinates of vertex v are site + v*d: while
-                          lh__eng_build runs, site_copy (the distinct sites in
-                          insertion order; vertex v is the caller's order[v],
-                          mapped back at the end) */
-    double *site_copy;
     lh_index *dup;     /* n, the caller's: filled with the site each one merges into */
-    size_t ndup;
     lh_pred *pred;
-    lh__tds tds;
-    lh_index *order;   /* distinct sites in insertion order */
-    size_t norder;
-    lh_index q, hint;
-    uint64_t rng;
     lh__finite_conflict_fn finite_conflict;
     void *user;
     lh__insert_fn insert; /* a loop with the caller's conflict test inline, or NULL:
@@ -96,40 +102,46 @@ typedef struct lh__eng {
                                  (hull/parallel.c), or NULL: no parallel phases */
     int threads;          /* lh_options.threads, resolved: the parallel phases'
                              workers and the shared loops' threads (1: one) */
-    struct lh__par *par;  /* a worker's rounds and deferred sites (NULL: sequential) */
-    size_t round_end[LH__BRIO_ROUNDS]; /* end of each BRIO round in order[] */
-    size_t par_sites, par_deferred; /* sites given to parallel workers, and those
-                                       they left to the sequential pass */
-    size_t par_scratch;   /* tests: a worker's cavity bound in boundary facets (0:
-                             parallel.c's), small to make workers defer sites */
-    size_t par_blocks;    /* tests: blocks of new cells a phase hands out (0: as many
-                             as the store holds), few to make workers stop */
-    size_t par_stopped;   /* workers stopped early (out of blocks, or no cell to
-                             start from), over all phases */
     int conflict_sign;    /* for an inline conflict test (insert): the sign of its
                              predicate that means conflict */
-    uint64_t filtered;    /* predicate calls settled by inline filters, not yet
-                             added to pred's counters */
-    size_t turned;        /* tests: sequential insertions in 4D and up whose new
-                             cells were linked by turning (a boundary of more than
-                             255 vertices: insert_impl.h) */
-    int hashed_ridges;    /* tests: link new cells as large n does where packed keys
-                             fit (insert_impl.h: hashed keys; turning, not twins
-                             or the 2D tour, in 2D and 3D), to exercise those
-                             paths at small n */
     int inside_conflicts; /* 1: the cell containing q always conflicts (Delaunay);
                              0: a site inside the current hull is not inserted */
+    void (*progress)(void *user, size_t done, size_t total); /* lh_options */
+    void *progress_user;
+
+    /* The state of the computation. */
+    const double *site; /* the coordinates of vertex v are site + v*d: while
+                          lh__eng_build runs, site_copy (the distinct sites in
+                          insertion order; vertex v is the caller's order[v],
+                          mapped back at the end) */
+    double *site_copy;
+    size_t ndup;
+    lh__tds tds;
+    lh_index *order;   /* distinct sites in insertion order */
+    size_t norder;
+    size_t round_end[LH__BRIO_ROUNDS]; /* end of each BRIO round in order[] */
+    lh_index q, hint;     /* the site being inserted; the cell its walk starts from */
+    uint64_t rng;
     double lo[LH__ENGINE_MAX_DIM];   /* per coordinate, the sites' minimum and     */
     double span[LH__ENGINE_MAX_DIM]; /* fl(max - min): Hilbert keys (order.c), the
                                        static filters' bounds (insert_orient.h)  */
+    int integer;          /* every coordinate of the sites an integer */
+    size_t par_sites, par_deferred; /* sites given to parallel workers, and those
+                                       they left to the sequential pass */
+    size_t par_stopped;   /* workers stopped early (out of blocks, or no cell to
+                             start from), over all phases */
+
+    /* Scratch of one insertion loop (a parallel worker has its own lh__eng). */
+    struct lh__par *par;  /* a worker's rounds and deferred sites (NULL: sequential) */
     double orient_eb;     /* orient_d's static filter bound (insert_orient.h), and */
     double conflict_eb;   /* an inline conflict test's, set per insertion call    */
-    int integer;          /* every coordinate of the sites an integer */
     int orient_exact;     /* orient's, the conflict test's static filter exact: */
     int conflict_exact;   /* its bound is 0 and a 0 from it an exact zero       */
-    void (*progress)(void *user, size_t done, size_t total); /* lh_options */
-    void *progress_user;
+    uint64_t filtered;    /* predicate calls settled by inline filters, not yet
+                             added to pred's counters */
     const double *pts[LH__ENGINE_MAX_DIM + 2]; /* predicate arguments, reused */
+
+    struct lh__eng_debug dbg; /* the tests' knobs */
 } lh__eng;
 
 /* order.c: cell x[0..d-1] of a grid of 2^bits per side (d bits <= 64) turned in
@@ -204,22 +216,6 @@ lh_status lh__eng_insert_generic(lh__eng *e, size_t first, size_t count, const l
 /* parallel.c: inserts order positions at..e->norder-1 as lh__eng_build's loop does,
  * splitting the larger BRIO rounds among e->threads workers (e->insert_par). */
 lh_status lh__eng_insert_parallel(lh__eng *e, size_t at);
-/* parallel.c: the workers lh_options.threads asks for (0: one per online CPU). */
-int lh__threads(int requested);
-/* parallel.c: fn(ctx, w, nw) for w = 0..nw-1 at once, w = 0 on the calling thread,
- * the others on threads of their own (or here, after, should one not start); a
- * share is the range [lh__share(count, w, nw), lh__share(count, w + 1, nw)). */
-void lh__par_for(int nw, void (*fn)(void *ctx, int w, int nw), void *ctx);
-static inline size_t lh__share(size_t count, int w, int nw)
-{
-    return count / (size_t)nw * (size_t)w + count % (size_t)nw * (size_t)w / (size_t)nw;
-}
-/* The threads, at most nw (and LH__MAX_THREADS), worth starting for n items: each
- * must get enough (one thread for small n). */
-int lh__par_width(int nw, size_t n);
-/* fn(ctx, lo, hi) over the shares of 0..n-1 among lh__par_width(nw, n) threads, for
- * loops whose iterations touch disjoint data. */
-void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx);
 
 /* Inserts the vertices list[0..count-1] (distinct, none a vertex yet; coordinates
  * in e->site) into the cells of e->tds, which must hold a triangulation made as

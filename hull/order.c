@@ -57,9 +57,9 @@ typedef struct curve {
     int tables;                    /* 2D and 3D from TABLE_SITES sites: keys from h */
     lh__hilbert h;
 } curve;
-/* Sites from which the tables are worth building (0.06 ms; the transform takes
- * about 60 ns a site, the tables 25, both with the quantisation). 2D 10^6, one
- * thread: keys 0.058 -> 0.023 s; 3D 10^6: 0.056 -> 0.028 s. */
+/* Sites from which the tables are worth building: building them is a fixed cost,
+ * repaid by a key from the tables costing less than half the transform's
+ * (docs/bench-engine.md). */
 enum { TABLE_SITES = 1 << 12 };
 
 /* The low `bits` bits of x spread d places apart (bit b to bit b d): by masks

@@ -25,9 +25,7 @@
 
 #include "lh_exact.h"
 
-#include <pthread.h>
 #include <string.h>
-#include <unistd.h>
 
 /* Sites per worker below which a round stays sequential, and vertices before the
  * first phase (runs far apart), in 2D; a site costs about 4x more per dimension
@@ -106,7 +104,7 @@ static lh_status setup(pctx *c, lh__eng *e, int nw)
         w->scratch.vlimit = e->tds.vlimit;
         w->par.me = i;
         w->par.sh = &c->sh;
-        lh_status st = lh__tds_scratch(&w->scratch, e->par_scratch ? e->par_scratch : SCRATCH);
+        lh_status st = lh__tds_scratch(&w->scratch, e->dbg.par_scratch ? e->dbg.par_scratch : SCRATCH);
         if (st == LH_OK && i) st = lh_pred_create(&e->alloc, &w->pred);
         if (i == 0) w->pred = e->pred;
         if (st != LH_OK) return st;
@@ -172,7 +170,7 @@ static size_t chunk_first(const pctx *c, uint32_t k)
  * at an infinite cell, or after `limit` steps. A worker starts from it, not from
  * the last insertion's cells, where every worker would start at once: their first
  * walks would cross, and a worker descheduled there would hold them, each one
- * deferring every site it tries meanwhile. Not insert_impl.h's locate, which is
+ * deferring every site it tries meanwhile. Not insert_locate.h's locate, which is
  * static to each compiled insertion loop and takes the workers' locks: this runs a
  * few times a phase, on the calling thread before any worker, so plain exact
  * orientations do. */
@@ -388,8 +386,8 @@ static lh_status phase(pctx *c, size_t first, size_t count)
     const lh_index start = t->top;
     atomic_store(&c->sh.cursor, (size_t)start);
     c->sh.end = (size_t)t->cap;
-    if (e->par_blocks && c->sh.end - (size_t)start > e->par_blocks * BLOCK)
-        c->sh.end = (size_t)start + e->par_blocks * BLOCK;
+    if (e->dbg.par_blocks && c->sh.end - (size_t)start > e->dbg.par_blocks * BLOCK)
+        c->sh.end = (size_t)start + e->dbg.par_blocks * BLOCK;
     atomic_store(&c->sh.ndeferred, 0);
     cut_runs(c, first, count);
     st = cover_again(c, count);
@@ -407,68 +405,6 @@ static lh_status phase(pctx *c, size_t first, size_t count)
         if (from < to) st = seq(e, from, to - from, NULL);
     }
     return st;
-}
-
-typedef struct for_arg {
-    void (*fn)(void *ctx, int w, int nw);
-    void *ctx;
-    int w, nw;
-} for_arg;
-
-static void *for_body(void *arg)
-{
-    const for_arg *a = arg;
-    a->fn(a->ctx, a->w, a->nw);
-    return NULL;
-}
-
-void lh__par_for(int nw, void (*fn)(void *ctx, int w, int nw), void *ctx)
-{
-    nw = nw < 1 ? 1 : nw < MAX_WORKERS ? nw : MAX_WORKERS;
-    pthread_t th[MAX_WORKERS];
-    for_arg arg[MAX_WORKERS];
-    int started[MAX_WORKERS] = {0};
-    for (int w = 0; w < nw; w++) arg[w] = (for_arg){fn, ctx, w, nw}; /* nw = 1: no thread */
-    for (int w = 1; w < nw; w++) started[w] = !pthread_create(th + w, NULL, for_body, arg + w);
-    fn(ctx, 0, nw);
-    for (int w = 1; w < nw; w++) {
-        if (started[w])
-            pthread_join(th[w], NULL);
-        else
-            fn(ctx, w, nw); /* no thread: its share runs here */
-    }
-}
-
-typedef struct range_arg {
-    void (*fn)(void *ctx, size_t lo, size_t hi);
-    void *ctx;
-    size_t n;
-} range_arg;
-
-static void range_body(void *arg, int w, int nw)
-{
-    const range_arg *a = arg;
-    a->fn(a->ctx, lh__share(a->n, w, nw), lh__share(a->n, w + 1, nw));
-}
-
-int lh__par_width(int nw, size_t n)
-{
-    enum { MIN_SHARE = 1 << 14 }; /* items a thread must get to be worth starting */
-    if (nw > 1 && n / MIN_SHARE < (size_t)nw) nw = (int)(n / MIN_SHARE);
-    return nw < 1 ? 1 : nw < MAX_WORKERS ? nw : MAX_WORKERS;
-}
-
-void lh__par_range(int nw, size_t n, void (*fn)(void *ctx, size_t lo, size_t hi), void *ctx)
-{
-    range_arg a = {fn, ctx, n};
-    lh__par_for(lh__par_width(nw, n), range_body, &a);
-}
-
-int lh__threads(int requested)
-{
-    if (requested > 0) return requested < MAX_WORKERS ? requested : MAX_WORKERS;
-    long online = sysconf(_SC_NPROCESSORS_ONLN);
-    return online < 1 ? 1 : online < MAX_WORKERS ? (int)online : MAX_WORKERS;
 }
 
 lh_status lh__eng_insert_parallel(lh__eng *e, size_t at)

@@ -189,9 +189,10 @@ lh_status lh__tds_scratch(lh__tds *t, size_t facets)
     return ok ? LH_OK : LH_ERR_NOMEM;
 }
 
-/* The numbering of a cavity's boundary vertices (insert_impl.h: cone_local in 3D,
- * number_ridges from 3D on) and the 3D edge table, once the vertex bound is known:
- * allocated zero, kept until the store is finished. */
+/* The numbering of a cavity's boundary vertices (cone_local in 3D,
+ * insert_link_twins.h; number_ridges from 3D on, insert_link_numbered.h) and the
+ * 3D edge table, once the vertex bound is known: allocated zero, kept until the
+ * store is finished. */
 static int number_room(lh__tds *t)
 {
     if (t->nv < 4 || !t->vlimit || t->vloc) return 1;

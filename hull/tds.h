@@ -29,7 +29,7 @@ typedef uint32_t lh__uindex;
 #define LH__TDS_VBITS_MAX 32
 #endif
 
-/* An entry of the table that pairs new cells across their ridges (insert_impl.h):
+/* An entry of the table that pairs new cells across their ridges (insert_link_*.h):
  * 16 bytes, so that the table of an insertion stays in the first-level cache. */
 typedef struct lh__ridge {
     uint64_t key;   /* LH__RIDGE_PAIRED once both cells are linked */
@@ -43,7 +43,7 @@ typedef struct lh__ridge {
 /* The slots an insertion uses for `entries` ridges: a power of two, a prefix of the
  * table, so that a small cavity's entries stay in the first-level cache whatever
  * the largest one was; at most 1/8 full up to 2^16 slots (probes then rarely
- * collide, insert_impl.h), at most 2/3 beyond. */
+ * collide, insert_link_hashed.h), at most 2/3 beyond. */
 static inline size_t lh__ridge_slots(size_t entries)
 {
     size_t want = 8 * entries < (1u << 16) ? 8 * entries : (1u << 16);
@@ -61,14 +61,14 @@ static inline size_t lh__ridge_slots(size_t entries)
 
 /* Entries per new cell in lh__tds.sorted: its m old vertices, the 5 that
  * cone_local keeps in 3D, or the m 64-bit ridge keys of
- * number_boundary (insert_impl.h). */
+ * number_boundary (insert_link_numbered.h). */
 #define LH__SORTED_ROOM(m) ((m) > 2 ? 2 * (m) : 5)
 
 typedef struct lh__tds {
     lh_allocator alloc;
     int nv;           /* vertices (and neighbours) per cell */
     int vbits;        /* bits that hold every vertex index + 1 (LH__INF + 1 = 0): ridge
-                         keys pack the vertices exactly when they fit (insert_impl.h);
+                         keys pack the vertices exactly when they fit (insert_link_hashed.h);
                          LH__TDS_VBITS_MAX unless the owner knows better
                          (lh__tds_vertex_bound) */
     lh_index *vert;   /* nv per cell */
@@ -92,7 +92,8 @@ typedef struct lh__tds {
     size_t vlimit;           /* every vertex index + 1 is below it (0: unknown) */
     uint8_t *vloc;           /* 3D and up, once vlimit is known: per vertex index
                                 + 1, its number on the cavity's boundary
-                                (insert_impl.h: cone_local, number_ridges); all
+                                (insert_link_twins.h: cone_local;
+                                insert_link_numbered.h: number_ridges); all
                                 zero between insertions */
     uint32_t *edge;          /* 3D: the table of the boundary's directed edges,
                                 LH__EDGE_SLOTS entries, all zero between them */

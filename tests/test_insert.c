@@ -76,7 +76,7 @@ LH_TEST(insertion_gives_the_triangulation_of_all_sites)
 
 /* The centre of sites on a sphere, inserted last, conflicts with every finite cell:
  * its cavity's boundary is the whole hull, far more than the 63 vertices that 3D
- * linking numbers (insert_impl.h, cone_local), so it takes the hashed twins. */
+ * linking numbers (insert_link_twins.h, cone_local), so it takes the hashed twins. */
 LH_TEST(a_cavity_with_more_boundary_vertices_than_numbers)
 {
     enum { N = 300 };

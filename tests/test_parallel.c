@@ -76,8 +76,8 @@ static size_t engine_run(lh_test_state *lh_t_, int d, int fam, int threads, size
             continue;
         }
         lh__dt_conflicts(&e, 0, 1); /* Delaunay, the loops with d a runtime value */
-        e.par_scratch = scratch;
-        e.par_blocks = blocks;
+        e.dbg.par_scratch = scratch;
+        e.dbg.par_blocks = blocks;
         int affdim;
         LH_EXPECT_EQ_INT(lh__eng_build(&e, 1024, &affdim), LH_OK);
         if (run) {

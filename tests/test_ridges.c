@@ -1,5 +1,5 @@
 /* test_ridges.c — the ways the engine links new cells when a ridge's packed
- * vertices do not fit in 64 bits (insert_impl.h: large n in 4D and up; turning in
+ * vertices do not fit in 64 bits (insert_link_*.h: large n in 4D and up; turning in
  * place of twins in 3D beyond 2^32 sites), and turning in 2D in place of the tour:
  * forced here at small n, Delaunay and furthest-site, they must give exactly
  * lh_delaunay's simplices; and turning where the boundary numbering of 4D and up
@@ -38,10 +38,10 @@ static lh_index *engine_cells(int d, size_t n, const double *x, int furthest, in
         e.finite_conflict = furthest ? outside : inside;
         e.user = &e;
         e.inside_conflicts = !furthest;
-        e.hashed_ridges = hashed;
+        e.dbg.hashed_ridges = hashed;
         int affdim;
         if (lh__eng_build(&e, 1024, &affdim) == LH_OK) cells = lh_test_engine_cells(&e, count);
-        *turned = e.turned;
+        *turned = e.dbg.turned;
     }
     lh__eng_release(&e);
     free(dup);
