@@ -110,6 +110,9 @@ static void help(const lh_cli_qopts *o)
            o->prog == LH_QPROG_VORONOI ?
            "  Pdk:n     print the Voronoi vertices whose Delaunay facet's lifted normal has\n"
            "            normal[k] >= n (PDk:n: <= n; n 0 if left out); PAn: the n largest\n"
+           "  PG        print the good ones' other neighbours (not good)\n"
+           "  QGn       print those of the simplices whose circumsphere holds site n (n is\n"
+           "            left out; QG-n: the others)\n"
            "  QVn       print the Voronoi vertices of site n's region (QV-n: the others)\n" :
            "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
            "  PAn       print the n largest facets (Pg); PG: their other neighbours\n"
@@ -126,9 +129,9 @@ static void help(const lh_cli_qopts *o)
 static int print_filter(lh_cli_qopts *o, const char *w)
 {
     if (w[0] != 'P' || !strchr("dDAgG", w[1]) || !w[1]) return 0;
-    if (o->prog == LH_QPROG_HALF || (o->prog == LH_QPROG_VORONOI && w[1] == 'G')) {
-        fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex and "
-                "qdelaunay; qvoronoi: Pdk, PDk, PAn, Pg)\n", o->name, w);
+    if (o->prog == LH_QPROG_HALF) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex, "
+                "qdelaunay and qvoronoi)\n", o->name, w);
         return -1;
     }
     if (w[1] == 'g' || w[1] == 'G') {
@@ -178,9 +181,9 @@ static int word_output(lh_cli_qopts *o, const char *w)
  * vertex n, or without), qconvex and qdelaunay; 0 after a usage error. */
 static int good_point(lh_cli_qopts *o, const char *w)
 {
-    if (o->prog == LH_QPROG_HALF || (o->prog == LH_QPROG_VORONOI && w[1] == 'G')) {
+    if (o->prog == LH_QPROG_HALF) {
         fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
-                "QGn, QVn; qconvex and qdelaunay; qvoronoi: QVn)\n", o->name, w);
+                "QGn, QVn; qconvex, qdelaunay and qvoronoi)\n", o->name, w);
         return 0;
     }
     struct lh_cli_qgood *g = w[1] == 'G' ? &o->gpoint : &o->gvertex;
