@@ -14,7 +14,12 @@
  * colour (Qhull's colour for inner planes), and Gh (the intersections of neighbouring
  * facets) draws the ridges themselves. Ga adds every input point, Gr the ridges, Gn
  * leaves out the facets (Gr and Gh in 3-d pictures, Ga in 2-d and 3-d ones, as
- * Qhull; lh_cli_qcheck_outputs refuses or notes the others).
+ * Qhull; lh_cli_qcheck_outputs refuses or notes the others). Gv draws a sphere of
+ * radius r at each vertex of the drawn facets, r = 0.02 times the largest absolute
+ * coordinate c of the picture's points (Qhull's radius with no roundoff to add), and
+ * as Qhull then moves the outer plane out and the inner one in by r + 0.002 c (its
+ * qh_GEOMepsilon margin), so that the spheres stay between them: both are drawn
+ * unless Gi, Go or Gn says otherwise.
  */
 #include "qhull.h"
 #include "qhull_print.h"
@@ -30,6 +35,8 @@ typedef struct picture {
     const lh_cli_qmodel *mo;
     lh_cli_qlift s;
     int lifted, dims; /* dims: the picture's coordinates, d + lifted           */
+    double radius;    /* Gv: the spheres' radius; else 0                       */
+    double shift;     /* Gv: how far the outer (inner) plane moves out (in)  */
     size_t nf;        /* drawn facets: the model's, then (lifted) the other
                          ones but the vertical, numbered as the model's, m + j */
     lh_index *vert, *nbr;
@@ -51,6 +58,14 @@ static void point(FILE *f, const picture *p, size_t i, int count, int drop)
     coords(p, i, x);
     for (int j = 0; j < count; j++)
         if (j != drop) fprintf(f, "%8.4g ", x[j]);
+}
+
+/* Site i moved by t along unit normal n (onto a plane moved by t; 2-d: z stays 0). */
+static void moved(FILE *f, const picture *p, size_t i, const double *n, double t)
+{
+    double x[4];
+    coords(p, i, x);
+    for (int j = 0; j < 3; j++) fprintf(f, "%8.4g ", j < p->dims ? x[j] + t * n[j] : x[j]);
 }
 
 /* Drawn facet g's unit normal: qconvex's outward one; qdelaunay's lifted one, away
@@ -107,6 +122,13 @@ static int picture_init(picture *p, FILE *f, const lh_cli_qopts *o, const lh_cli
         memcpy(p->vert + p->nf * nv, v, nv * sizeof *v);
         p->id[p->nf++] = g;
     }
+    for (size_t i = 0; (o->geom & LH_QG_SPHERES) && p->dims <= 3 && i < mo->n; i++) {
+        double x[4];
+        coords(p, i, x);
+        for (int j = 0; j < p->dims; j++) p->shift = fmax(p->shift, fabs(x[j]));
+    }
+    p->radius = 0.02 * p->shift;
+    p->shift *= 0.022;
     return lh_cli_pair_within(mo->nv, p->nf, p->vert, p->nbr);
 }
 
@@ -134,13 +156,73 @@ static void all_points(const picture *p)
     fputs("0 1 1 1  # color of points\n", f);
 }
 
+/* The unit sphere Gv instances: the octahedron's 6 vertices and its 12 edges'
+ * midpoints on the sphere; each of its 8 faces split into 4 triangles. */
+static void sphere(FILE *f)
+{
+    static const signed char axis[6][3] = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+    signed char mid[12][3];
+    int nm = 0, face[8][3], corner[8][3];
+    const double h = sqrt(0.5);
+    /* octant (sx, sy, sz): corners +-x (1 or 3), +-y (2 or 4), +-z (0 or 5) */
+    for (int q = 0; q < 8; q++) {
+        int c[3] = {q & 1 ? 3 : 1, q & 2 ? 4 : 2, q & 4 ? 5 : 0};
+        for (int e = 0; e < 3; e++) {
+            const signed char *a = axis[c[e]], *b = axis[c[(e + 1) % 3]];
+            signed char m[3] = {(signed char)(a[0] + b[0]), (signed char)(a[1] + b[1]), (signed char)(a[2] + b[2])};
+            int k = 0;
+            while (k < nm && memcmp(mid[k], m, 3)) k++;
+            if (k == nm) memcpy(mid[nm++], m, 3);
+            face[q][e] = 6 + k; /* the midpoint of corners e and e + 1 */
+            corner[q][e] = c[e];
+        }
+    }
+    fputs("{appearance {-edge -normal normscale 0} {\nINST geom {define vsphere OFF\n18 32 48\n\n", f);
+    for (int i = 0; i < 6; i++) fprintf(f, "%d %d %d\n", axis[i][0], axis[i][1], axis[i][2]);
+    for (int i = 0; i < 12; i++)
+        fprintf(f, "%g %g %g\n", mid[i][0] * h + 0.0, mid[i][1] * h + 0.0, mid[i][2] * h + 0.0);
+    fputc('\n', f);
+    for (int q = 0; q < 8; q++) {
+        int *m = face[q], *c = corner[q];
+        int odd = ((q & 1) + (q >> 1 & 1) + (q >> 2 & 1)) & 1; /* keep them outward */
+        int t[4][3] = {{c[0], m[0], m[2]}, {c[1], m[1], m[0]}, {c[2], m[2], m[1]}, {m[0], m[1], m[2]}};
+        for (int k = 0; k < 4; k++)
+            fprintf(f, "3 %d %d %d\n", t[k][0], t[k][odd ? 2 : 1], t[k][odd ? 1 : 2]);
+    }
+    fputs("} transforms { TLIST\n", f);
+}
+
+/* Gv: a sphere of the picture's radius at each vertex of the drawn facets, once. */
+static int spheres(const picture *p)
+{
+    const lh_cli_qmodel *mo = p->mo;
+    char *seen = calloc(mo->n ? mo->n : 1, 1);
+    if (!seen) return 0;
+    sphere(p->f);
+    const double r = p->radius;
+    for (size_t k = 0; k < p->nf * (size_t)mo->nv; k++) {
+        size_t i = (size_t)p->vert[k];
+        if (seen[i]) continue;
+        seen[i] = 1;
+        fprintf(p->f, "%8.4g 0 0 0 # v%zu\n 0 %8.4g 0 0\n0 0 %8.4g 0\n", r, i, r, r);
+        point(p->f, p, i, 3, -1);
+        fprintf(p->f, " # p%zu\n1\n", i);
+    }
+    fputs("}}}\n", p->f);
+    free(seen);
+    return 1;
+}
+
 /* A 2-d hull's edge g as Qhull's VECT. */
 static void segment(const picture *p, size_t g, int inner)
 {
-    double c[3];
+    double c[3], n[LH_DELAUNAY_MAX_DIM + 1] = {0};
+    normal_of(p, g, n);
     fprintf(p->f, "VECT 1 2 1 2 1 # f%zu\n", p->id[g]);
     for (int k = 0; k < 2; k++) { /* Qhull: no blank after the third, 0 */
-        point(p->f, p, (size_t)p->vert[g * 2 + k], 2, -1);
+        double x[4];
+        coords(p, (size_t)p->vert[g * 2 + k], x);
+        for (int j = 0; j < 2; j++) fprintf(p->f, "%8.4g ", x[j] + (inner ? -p->shift : p->shift) * n[j]);
         fprintf(p->f, "%8.4g\n", 0.0);
     }
     colour_of(p, g, inner, c);
@@ -161,7 +243,7 @@ static void triangle(const picture *p, size_t g, int inner)
     int order[3] = {0, turn > 0 ? 2 : 1, turn > 0 ? 1 : 2};
     fprintf(p->f, "{ OFF 3 1 1 # f%zu\n", p->id[g]);
     for (int k = 0; k < 3; k++) {
-        point(p->f, p, (size_t)p->vert[g * 3 + order[k]], 3, -1);
+        moved(p->f, p, (size_t)p->vert[g * 3 + order[k]], n, inner ? -p->shift : p->shift);
         fputc('\n', p->f);
     }
     fputs("3 0 1 2 ", p->f);
@@ -266,7 +348,8 @@ int lh_cli_qprint_geomview(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *
     /* Qhull: outer planes unless Gn or Gi alone; inner ones with Gi (exact: the same
      * plane, never apart from the outer one by more than Qhull's epsilon) */
     const int outer = (geom & LH_QG_OUTER) || !(geom & (LH_QG_NOPLANES | LH_QG_INNER));
-    const int inner = (geom & LH_QG_INNER) != 0;
+    const int inner = (geom & LH_QG_INNER) ||
+                      (p.radius > 0 && !(geom & (LH_QG_NOPLANES | LH_QG_INNER | LH_QG_OUTER)));
     if (p.dims == 4) {
         ridges_4d(&p);
         picture_free(&p);
@@ -275,6 +358,10 @@ int lh_cli_qprint_geomview(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *
     if (p.dims == 2) fprintf(f, "{appearance {linewidth 3} LIST # %s\n", o->command);
     else fprintf(f, "{appearance {+edge -evert linewidth 2} LIST # %s\n", o->command);
     if (geom & LH_QG_POINTS) all_points(&p);
+    if ((geom & LH_QG_SPHERES) && !spheres(&p)) {
+        picture_free(&p);
+        return 0;
+    }
     for (size_t g = 0; g < p.nf; g++) {
         for (int in = 0; in < 2; in++) {
             if (!(in ? inner : outer)) continue;

@@ -396,8 +396,8 @@ def geomview(lh):
               a[:60] + " / " + b[:60])
     r, _, e = run([lh, "qconvex", "G"], rbox("10 D5 t1"))  # 4-d: tests/cli/qhull_geomview.py
     check("qconvex G in 5-d refused", r == 2 and "only available for 2-d, 3-d and 4-d" in e, e)
-    r, _, e = run([lh, "qconvex", "Gv"], rbox("10 D3 t1"))
-    check("qconvex Gv refused", r == 2 and "option 'Gv': 'v' is not supported" in e, e)
+    r, _, e = run([lh, "qconvex", "Gp"], rbox("10 D3 t1"))
+    check("qconvex Gp refused", r == 2 and "option 'Gp': 'p' is not supported" in e, e)
 
 
 def fields(out):

@@ -10,7 +10,8 @@ vertices onto its inner and outer planes: differences of 1e-15 there; facet and 
 order differ). 4-d pictures (4-d hulls, 3-d Delaunay's lifted hull; 4OFF, and GDn): the
 same ridges (as sets of vertex positions) and each facet's colour (a facet known by the
 vertices of the ridges it names first). Refusals as Qhull's (a 5-d picture, Gn with
-nothing to draw) and the suboptions lifthull does not draw (Gv Gp Gc Gt). Exit 0 when
+nothing to draw) and the suboptions lifthull does not draw (Gp Gc Gt). Gv: Qhull's
+spheres (as sets of triangles) and planes moved by their radius. Exit 0 when
 all passed, 1 otherwise, 77 without Qhull's programs.
 """
 
@@ -117,12 +118,40 @@ def four_d(lh):
                   head[0] == "{appearance {+edge -evert linewidth 2} LIST # lifthull %s G %s" % (prog, opts[0]), head)
 
 
+def sphere_split(out):
+    """Gv's picture: (the unit sphere's triangles as sets of corners, the rest's rows)."""
+    m = re.search(r"INST geom \{define vsphere OFF\n(\d+) (\d+) (\d+)\n\n(.*?)\n\n(.*?)\n\} transforms", out, re.S)
+    if not m:
+        return None, rows(out)
+    verts = [key(float(x) for x in l.split()) for l in m.group(4).split("\n")]
+    tris = sorted(sorted(verts[int(x)] for x in l.split()[1:]) for l in m.group(5).split("\n"))
+    return (m.group(1, 2, 3), tris), rows(out[:m.start()] + out[m.end():])
+
+
+def spheres(lh):
+    """Gv: a sphere at each vertex (0.02 times the largest coordinate), the planes moved
+    out and in by its radius (Qhull's rows within 1e-3; the sphere as a set of triangles)."""
+    for spec, prog, qopts in (("12 D2 t88", "qconvex", []), ("14 D3 t89", "qconvex", []),
+                              ("15 D2 t87 B3", "qdelaunay", ["Qt"]), ("10 D3 t86", "qconvex", [])):
+        text = rbox(spec)
+        for opts in (["Gv"], ["Gv", "Gi"], ["Gv", "Go"], ["Gvn"], ["Gv", "Ga"], ["Gvr"]):
+            if spec.split()[1] == "D2" and prog == "qconvex" and "Gvr" in opts:
+                continue  # Qhull: no ridges in 2-d
+            name = "%s %s %s" % (spec, prog, " ".join(opts))
+            r, a, _ = run([lh, prog] + opts, text)
+            _, b, _ = run([prog] + qopts + opts, text)
+            (sa, ra), (sb, rb) = sphere_split(a), sphere_split(b)
+            check(name + " sphere", r == 0 and sa == sb and sa is not None, "%s / %s" % (str(sa)[:80], str(sb)[:80]))
+            check(name, same_rows(ra, rb, 1e-3) and len(ra) > 3, "%d vs %d rows" % (len(ra), len(rb)))
+    r, a, e = run([lh, "qconvex", "Gv"], rbox("10 D4 t85"))
+    check("4-d Gv: a note, then G", r == 0 and "'Gv' ignored" in e and "vsphere" not in a, e)
+
+
 def refusals(lh):
     for prog, spec, opts, msg in (("qconvex", "10 D5 t1", ["G"], "only available for 2-d, 3-d and 4-d"),
                                   ("qdelaunay", "10 D4 t1", ["G"], "only available for 2-d, 3-d and 4-d"),
                                   ("qconvex", "10 D3 t1", ["Gn"], "no output specified for Geomview"),
                                   ("qconvex", "10 D4 t1", ["Gr"], "are for 2-d and 3-d pictures"),
-                                  ("qconvex", "10 D3 t1", ["Gv"], "'v' is not supported"),
                                   ("qconvex", "10 D3 t1", ["Gc"], "'c' is not supported"),
                                   ("qvoronoi", "10 D2 t1", ["Gr"], "G's suboptions are for qconvex and qdelaunay")):
         r, a, e = run([lh, prog] + opts, rbox(spec))
@@ -131,4 +160,5 @@ def refusals(lh):
 
 if __name__ == "__main__":
     sys.exit(main(__doc__, ("rbox", "qconvex", "qdelaunay"),
-                  [("pictures", pictures), ("selected", selected), ("4-d", four_d), ("refusals", refusals)]))
+                  [("pictures", pictures), ("selected", selected), ("4-d", four_d), ("spheres", spheres),
+                   ("refusals", refusals)]))
