@@ -3,8 +3,9 @@
  * numbers, "# f<id>" comments) of 2-d hulls (VECT segments), of 3-d hulls and 2-d
  * Delaunay triangulations (OFF triangles) and of 4-d hulls and 3-d Delaunay
  * triangulations (4OFF: the ridges as triangles, or with GDn one OFF per ridge with
- * coordinate n dropped). A Delaunay picture is the whole lifted hull with Qhull's Qbb
- * scaling, upper facets too, as Qhull draws it. Each facet is coloured by its unit
+ * coordinate n dropped; Gt, 3-d Delaunay: GD3 without the outer ridges, those to
+ * an upper facet, as Qhull's transparent ones). A Delaunay picture is the whole
+ * lifted hull with Qhull's Qbb scaling, upper facets too, as Qhull draws it. Each facet is coloured by its unit
  * normal n as (n + 1) / 2 (GDn: that colour without coordinate n, scaled to length
  * 1, as Qhull does when the picture drops a dimension).
  *
@@ -76,13 +77,19 @@ static void normal_of(const picture *p, size_t g, double *n)
     else lh_cli_qlifted_normal(p->mo, p->s, p->vert + g * (size_t)p->dims, !p->o->furthest, n);
 }
 
+/* The coordinate a 4-d picture leaves out: GDn's n, Gt's 3 (the lifted one); -1. */
+static int dropped(const picture *p)
+{
+    return p->o->geom & LH_QG_TRANSPARENT ? 3 : p->o->geom_drop;
+}
+
 /* Facet g's colour: (n + 1) / 2 in the first three coordinates (complemented for an
  * inner plane); with GDn, in the three kept, scaled to length 1. */
 static void colour_of(const picture *p, size_t g, int inner, double *c)
 {
     double n[LH_DELAUNAY_MAX_DIM + 1] = {0}, len = 0;
     normal_of(p, g, n);
-    const int drop = p->dims == 4 ? p->o->geom_drop : -1;
+    const int drop = p->dims == 4 ? dropped(p) : -1;
     for (int j = 0, w = 0; j < p->dims && w < 3; j++)
         if (j != drop) c[w++] = (n[j] + 1) / 2;
     if (p->dims == 2) c[2] = 0;
@@ -292,7 +299,8 @@ static void edges(const picture *p, size_t g)
 static void ridges_4d(const picture *p)
 {
     FILE *f = p->f;
-    const int drop = p->o->geom_drop;
+    /* Gt: Qhull's GD3 picture without the outer ridges (to an upper facet) */
+    const int clear = (p->o->geom & LH_QG_TRANSPARENT) != 0, drop = dropped(p);
     /* Qhull's GDn draws a Delaunay picture's lower facets only (the simplices of
      * the triangulation, seen with the lifted coordinate dropped: GD3); they come
      * first, and the other facets after them, so each ridge is still drawn once */
@@ -310,6 +318,7 @@ static void ridges_4d(const picture *p)
             for (int k = 0; k < 4; k++) {
                 lh_index u = p->nbr[g * 4 + k];
                 if (u >= 0 && (size_t)u < g) continue;
+                if (clear && (u < 0 || (size_t)u >= nf)) continue;
                 char other[32] = "";
                 if (u >= 0) snprintf(other, sizeof other, " f%zu", p->id[u]);
                 if (pass == 1) {
@@ -326,11 +335,8 @@ static void ridges_4d(const picture *p)
                     point(f, p, (size_t)p->vert[g * 4 + j], 4, drop);
                     fputc('\n', f);
                 }
-                if (drop >= 0) {
-                    fputs("3 0 1 2 ", f);
-                    colour(f, c, "\n");
-                    fputs("}\n", f);
-                }
+                if (drop >= 0) /* Qhull: no blank after the colour, no brace */
+                    fprintf(f, "3 0 1 2 %8.4g %8.4g %8.4g\n", c[0], c[1], c[2]);
             }
         }
     }

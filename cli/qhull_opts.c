@@ -120,7 +120,8 @@ static void help(const lh_cli_qopts *o)
            "  QVn       print the facets with vertex n (QV-n: without)\n"
            "  Gi Go Gn Ga Gr Gh GDn  G's inner/outer planes (exact: the facets), no planes,\n"
            "            all points, ridges, intersections; GDn: 4-d pictures without coordinate n\n"
-           "  Gv        G's spheres at the vertices (planes moved out and in by their radius)\n",
+           "  Gv        G's spheres at the vertices (planes moved out and in by their radius)\n"
+           "  Gt        qdelaunay, 3-d: the inner ridges only (Qhull's transparent outer ones)\n",
            o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
 }
@@ -209,7 +210,7 @@ static int geom_word(lh_cli_qopts *o, const char *w)
                 "qconvex and qdelaunay)\n", w);
         return 0;
     }
-    static const char letters[] = "ionarhv"; /* the LH_QG_* bits in order */
+    static const char letters[] = "ionarhvt"; /* the LH_QG_* bits in order */
     for (const char *c = w + 1; *c; c++) {
         const char *at = strchr(letters, *c);
         if (at) {
@@ -218,8 +219,8 @@ static int geom_word(lh_cli_qopts *o, const char *w)
             o->geom_drop = *++c - '0';
         } else {
             fprintf(stderr, "lifthull %s: option '%s': '%c' is not supported (G suboptions: Gi Go "
-                    "Gn Ga Gr Gh Gv GDn, n 0..3; Qhull's projections Gp, centrums Gc and "
-                    "transparency Gt are not drawn)\n", o->name, w, *c);
+                    "Gn Ga Gr Gh Gv Gt GDn, n 0..3; Qhull's projections Gp and centrums Gc "
+                    "are not drawn)\n", o->name, w, *c);
             return 0;
         }
     }

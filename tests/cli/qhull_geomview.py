@@ -10,7 +10,8 @@ vertices onto its inner and outer planes: differences of 1e-15 there; facet and 
 order differ). 4-d pictures (4-d hulls, 3-d Delaunay's lifted hull; 4OFF, and GDn): the
 same ridges (as sets of vertex positions) and each facet's colour (a facet known by the
 vertices of the ridges it names first). Refusals as Qhull's (a 5-d picture, Gn with
-nothing to draw) and the suboptions lifthull does not draw (Gp Gc Gt). Gv: Qhull's
+nothing to draw) and the suboptions lifthull does not draw (Gp Gc). Gt (3-d Delaunay):
+the inner ridges of GD3, as Qhull. Gv: Qhull's
 spheres (as sets of triangles) and planes moved by their radius. Exit 0 when
 all passed, 1 otherwise, 77 without Qhull's programs.
 """
@@ -103,9 +104,9 @@ def four_d(lh):
     for spec, prog, qopts in (("8 D4 t94", "qconvex", []), ("30 D4 t95", "qconvex", []),
                               ("9 D3 t96", "qdelaunay", ["Qt"]), ("25 D3 t97", "qdelaunay", ["Qt"])):
         text = rbox(spec)
-        for opts in ([], ["Gi"], ["GD0"], ["GD3"], ["GD1"]):
+        for opts in ([], ["Gi"], ["GD0"], ["GD3"], ["GD1"]) + ((["Gt"],) if prog == "qdelaunay" else ()):
             name = "%s %s G %s" % (spec, prog, " ".join(opts))
-            drop = bool(opts) and opts[0].startswith("GD")
+            drop = bool(opts) and opts[0] in ("GD0", "GD1", "GD3", "Gt")
             r, a, _ = run([lh, prog, "G"] + opts, text)
             _, b, _ = run([prog] + qopts + ["G"] + opts, text)
             (ra, ca), (rb, cb) = ridges4(a, drop), ridges4(b, drop)
@@ -116,6 +117,8 @@ def four_d(lh):
             head = a.split("\n")[:2]
             check(name + " frame", (head[1] == b.split("\n")[1]) if not drop else
                   head[0] == "{appearance {+edge -evert linewidth 2} LIST # lifthull %s G %s" % (prog, opts[0]), head)
+            if drop:  # one LIST of OFFs: a brace closes it at the end only, as Qhull's
+                check(name + " braces", a.count("}") == b.count("}") == 2 and a.endswith("\n}\n"), a[-80:])
 
 
 def sphere_split(out):
@@ -153,6 +156,9 @@ def refusals(lh):
                                   ("qconvex", "10 D3 t1", ["Gn"], "no output specified for Geomview"),
                                   ("qconvex", "10 D4 t1", ["Gr"], "are for 2-d and 3-d pictures"),
                                   ("qconvex", "10 D3 t1", ["Gc"], "'c' is not supported"),
+                                  ("qconvex", "10 D3 t1", ["Gt"], "'Gt': transparent outer ridges need"),
+                                  ("qdelaunay", "10 D2 t1", ["Gt"], "'Gt': transparent outer ridges need"),
+                                  ("qdelaunay", "10 D3 t1", ["Gt", "GD0"], "'Gt': transparent outer ridges need"),
                                   ("qvoronoi", "10 D2 t1", ["Gr"], "G's suboptions are for qconvex and qdelaunay")):
         r, a, e = run([lh, prog] + opts, rbox(spec))
         check("%s %s %s refused" % (spec, prog, " ".join(opts)), r == 2 and a == "" and msg in e, e)
