@@ -220,6 +220,39 @@ static int spheres(const picture *p)
     return 1;
 }
 
+/* Gc: facet g's centrum, Qhull's square in the facet's plane at the centroid c of
+ * its vertices (exact: c is on the facet), its axes the first drawn vertex v - c and
+ * (v - c) x n, then the centrum as a green dot. */
+static void centrum(const picture *p, size_t g)
+{
+    FILE *f = p->f;
+    const int nv = p->mo->nv;
+    double n[LH_DELAUNAY_MAX_DIM + 1] = {0}, c[4] = {0}, a[4], b[3];
+    normal_of(p, g, n);
+    for (int k = 0; k < nv; k++) {
+        double x[4];
+        coords(p, (size_t)p->vert[g * (size_t)nv + k], x);
+        for (int j = 0; j < 3; j++) c[j] += x[j] / nv;
+    }
+    coords(p, (size_t)p->vert[g * (size_t)nv], a);
+    for (int j = 0; j < 3; j++) a[j] -= c[j];
+    b[0] = a[1] * n[2] - a[2] * n[1];
+    b[1] = a[2] * n[0] - a[0] * n[2];
+    b[2] = a[0] * n[1] - a[1] * n[0];
+    fputs("{appearance {-normal -edge normscale 0} {INST geom { ", f);
+    if (g == 0)
+        fprintf(f, "define centrum CQUAD  # f%zu\n-0.3 -0.3 0.0001     0 0 1 1\n 0.3 -0.3 0.0001     0 0 1 1\n"
+                " 0.3  0.3 0.0001     0 0 1 1\n-0.3  0.3 0.0001     0 0 1 1 } transform { \n", p->id[g]);
+    else
+        fprintf(f, ": centrum } transform { # f%zu\n", p->id[g]);
+    fprintf(f, "%8.4g %8.4g %8.4g 0\n%8.4g %8.4g %8.4g 0\n%8.4g %8.4g %8.4g 0\n", a[0], a[1], a[2], b[0],
+            b[1], b[2], n[0], n[1], n[2]);
+    for (int pass = 0; pass < 2; pass++) {
+        for (int j = 0; j < 3; j++) fprintf(f, "%8.4g ", c[j]);
+        fputs(pass ? " # p-1\n       0        1        0 1\n" : " # p-1\n1 }}}\nVECT 1 1 1 1 1\n", f);
+    }
+}
+
 /* A 2-d hull's edge g as Qhull's VECT. */
 static void segment(const picture *p, size_t g, int inner)
 {
@@ -368,6 +401,7 @@ int lh_cli_qprint_geomview(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *
         picture_free(&p);
         return 0;
     }
+    for (size_t g = 0; (geom & LH_QG_CENTRUMS) && g < p.nf; g++) centrum(&p, g);
     for (size_t g = 0; g < p.nf; g++) {
         for (int in = 0; in < 2; in++) {
             if (!(in ? inner : outer)) continue;

@@ -121,7 +121,8 @@ static void help(const lh_cli_qopts *o)
            "  Gi Go Gn Ga Gr Gh GDn  G's inner/outer planes (exact: the facets), no planes,\n"
            "            all points, ridges, intersections; GDn: 4-d pictures without coordinate n\n"
            "  Gv        G's spheres at the vertices (planes moved out and in by their radius)\n"
-           "  Gt        qdelaunay, 3-d: the inner ridges only (Qhull's transparent outer ones)\n",
+           "  Gt        qdelaunay, 3-d: the inner ridges only (Qhull's transparent outer ones)\n"
+           "  Gc        G's centrums (exact: each facet's centroid)\n",
            o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
 }
@@ -210,7 +211,7 @@ static int geom_word(lh_cli_qopts *o, const char *w)
                 "qconvex and qdelaunay)\n", w);
         return 0;
     }
-    static const char letters[] = "ionarhvt"; /* the LH_QG_* bits in order */
+    static const char letters[] = "ionarhvtc"; /* the LH_QG_* bits in order */
     for (const char *c = w + 1; *c; c++) {
         const char *at = strchr(letters, *c);
         if (at) {
@@ -219,8 +220,8 @@ static int geom_word(lh_cli_qopts *o, const char *w)
             o->geom_drop = *++c - '0';
         } else {
             fprintf(stderr, "lifthull %s: option '%s': '%c' is not supported (G suboptions: Gi Go "
-                    "Gn Ga Gr Gh Gv Gt GDn, n 0..3; Qhull's projections Gp and centrums Gc "
-                    "are not drawn)\n", o->name, w, *c);
+                    "Gn Ga Gr Gh Gv Gt Gc GDn, n 0..3; Qhull's projections Gp are not "
+                    "drawn)\n", o->name, w, *c);
             return 0;
         }
     }

@@ -10,8 +10,8 @@ vertices onto its inner and outer planes: differences of 1e-15 there; facet and 
 order differ). 4-d pictures (4-d hulls, 3-d Delaunay's lifted hull; 4OFF, and GDn): the
 same ridges (as sets of vertex positions) and each facet's colour (a facet known by the
 vertices of the ridges it names first). Refusals as Qhull's (a 5-d picture, Gn with
-nothing to draw) and the suboptions lifthull does not draw (Gp Gc). Gt (3-d Delaunay):
-the inner ridges of GD3, as Qhull. Gv: Qhull's
+nothing to draw) and the suboption lifthull does not draw (Gp). Gt (3-d Delaunay): the inner ridges of GD3,
+as Qhull. Gc: the centrums' normals and centres, axes from a vertex. Gv: Qhull's
 spheres (as sets of triangles) and planes moved by their radius. Exit 0 when
 all passed, 1 otherwise, 77 without Qhull's programs.
 """
@@ -147,7 +147,39 @@ def spheres(lh):
             check(name + " sphere", r == 0 and sa == sb and sa is not None, "%s / %s" % (str(sa)[:80], str(sb)[:80]))
             check(name, same_rows(ra, rb, 1e-3) and len(ra) > 3, "%d vs %d rows" % (len(ra), len(rb)))
     r, a, e = run([lh, "qconvex", "Gv"], rbox("10 D4 t85"))
-    check("4-d Gv: a note, then G", r == 0 and "'Gv' ignored" in e and "vsphere" not in a, e)
+    check("4-d Gv: a note, then G", r == 0 and "'Gv' and 'Gc' ignored" in e and "vsphere" not in a, e)
+
+
+CENTRUM = re.compile(r"\{appearance \{-normal -edge normscale 0\} \{INST geom \{ (?:define centrum CQUAD  # f\d+\n"
+                     r"(?:.*\n){3}.* \} transform \{ \n|: centrum \} transform \{ # f\d+\n)((?:.*\n){4})1 \}\}\}\n")
+
+
+def centrums(out):
+    """Gc: (each centrum's (normal, centre) rows, whether its first two rows are some
+    vertex - centre and that x normal, the rest's rows)."""
+    cs, fit = [], True
+    pts = set(key(r) for r in rows(out))
+    for m in CENTRUM.finditer(out):
+        a, b, n, c = [tuple(float(x) for x in l.split("#")[0].split()[:3]) for l in m.group(1).strip().split("\n")]
+        cs.append((key(n), key(c)))
+        cross = (a[1] * n[2] - a[2] * n[1], a[2] * n[0] - a[0] * n[2], a[0] * n[1] - a[1] * n[0])
+        fit = fit and key(x + y for x, y in zip(a, c)) in pts and all(abs(x - y) < 2e-3 for x, y in zip(b, cross))
+    return sorted(cs), fit, rows(CENTRUM.sub("", out))
+
+
+def centrum_pictures(lh):
+    """Gc: Qhull's centrum at each facet's centroid (exact: on the facet), same normal
+    rows, axes from a vertex (Qhull's first vertex may be another one)."""
+    for spec, prog, qopts in (("12 D2 t84", "qconvex", []), ("14 D3 t83", "qconvex", []),
+                              ("15 D2 t82", "qdelaunay", ["Qt"])):
+        text = rbox(spec)
+        for opts in (["Gc"], ["Gcn"], ["Gc", "Ga"]):
+            name = "%s %s %s" % (spec, prog, " ".join(opts))
+            r, a, _ = run([lh, prog] + opts, text)
+            _, b, _ = run([prog] + qopts + opts, text)
+            (ca, fa, ra), (cb, fb, rb) = centrums(a), centrums(b)
+            check(name + " centrums", r == 0 and ca == cb and len(ca) > 3 and (fa and fb or "n" in opts[0]), "%s / %s" % (ca[:2], cb[:2]))
+            check(name, same_rows(ra, rb, 1e-3), "%d vs %d rows" % (len(ra), len(rb)))
 
 
 def refusals(lh):
@@ -155,7 +187,7 @@ def refusals(lh):
                                   ("qdelaunay", "10 D4 t1", ["G"], "only available for 2-d, 3-d and 4-d"),
                                   ("qconvex", "10 D3 t1", ["Gn"], "no output specified for Geomview"),
                                   ("qconvex", "10 D4 t1", ["Gr"], "are for 2-d and 3-d pictures"),
-                                  ("qconvex", "10 D3 t1", ["Gc"], "'c' is not supported"),
+                                  ("qconvex", "10 D3 t1", ["Gp"], "'p' is not supported"),
                                   ("qconvex", "10 D3 t1", ["Gt"], "'Gt': transparent outer ridges need"),
                                   ("qdelaunay", "10 D2 t1", ["Gt"], "'Gt': transparent outer ridges need"),
                                   ("qdelaunay", "10 D3 t1", ["Gt", "GD0"], "'Gt': transparent outer ridges need"),
@@ -167,4 +199,5 @@ def refusals(lh):
 if __name__ == "__main__":
     sys.exit(main(__doc__, ("rbox", "qconvex", "qdelaunay"),
                   [("pictures", pictures), ("selected", selected), ("4-d", four_d), ("spheres", spheres),
+                   ("centrums", centrum_pictures),
                    ("refusals", refusals)]))
