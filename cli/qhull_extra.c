@@ -163,7 +163,8 @@ static int geom_fits(const lh_cli_qopts *o, int dims)
                 "pictures (a 4-d one draws its ridges)\n", o->name);
         return 0;
     }
-    if ((o->geom & LH_QG_TRANSPARENT) && (o->prog != LH_QPROG_DELAUNAY || dims != 4 || o->geom_drop >= 0)) {
+    if ((o->geom & LH_QG_TRANSPARENT) &&
+        (o->prog != LH_QPROG_DELAUNAY || dims != 4 || o->geom_drop >= 0)) {
         fprintf(stderr, "lifthull %s: option 'Gt': transparent outer ridges need a 3-d Delaunay "
                 "triangulation and no GDn (Qhull's rule)\n", o->name);
         return 0;

@@ -5,7 +5,8 @@
  * triangulations (4OFF: the ridges as triangles, or with GDn one OFF per ridge with
  * coordinate n dropped; Gt, 3-d Delaunay: GD3 without the outer ridges, those to
  * an upper facet, as Qhull's transparent ones). A Delaunay picture is the whole
- * lifted hull with Qhull's Qbb scaling, upper facets too, as Qhull draws it. Each facet is coloured by its unit
+ * lifted hull with Qhull's Qbb scaling, upper facets too, as Qhull draws it. Each
+ * facet is coloured by its unit
  * normal n as (n + 1) / 2 (GDn: that colour without coordinate n, scaled to length
  * 1, as Qhull does when the picture drops a dimension).
  *
@@ -167,7 +168,8 @@ static void all_points(const picture *p)
  * midpoints on the sphere; each of its 8 faces split into 4 triangles. */
 static void sphere(FILE *f)
 {
-    static const signed char axis[6][3] = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+    static const signed char axis[6][3] = {{0, 0, 1},  {1, 0, 0},  {0, 1, 0},
+                                           {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
     signed char mid[12][3];
     int nm = 0, face[8][3], corner[8][3];
     const double h = sqrt(0.5);
@@ -176,7 +178,8 @@ static void sphere(FILE *f)
         int c[3] = {q & 1 ? 3 : 1, q & 2 ? 4 : 2, q & 4 ? 5 : 0};
         for (int e = 0; e < 3; e++) {
             const signed char *a = axis[c[e]], *b = axis[c[(e + 1) % 3]];
-            signed char m[3] = {(signed char)(a[0] + b[0]), (signed char)(a[1] + b[1]), (signed char)(a[2] + b[2])};
+            signed char m[3];
+            for (int j = 0; j < 3; j++) m[j] = (signed char)(a[j] + b[j]);
             int k = 0;
             while (k < nm && memcmp(mid[k], m, 3)) k++;
             if (k == nm) memcpy(mid[nm++], m, 3);
@@ -184,7 +187,8 @@ static void sphere(FILE *f)
             corner[q][e] = c[e];
         }
     }
-    fputs("{appearance {-edge -normal normscale 0} {\nINST geom {define vsphere OFF\n18 32 48\n\n", f);
+    fputs("{appearance {-edge -normal normscale 0} {\n"
+          "INST geom {define vsphere OFF\n18 32 48\n\n", f);
     for (int i = 0; i < 6; i++) fprintf(f, "%d %d %d\n", axis[i][0], axis[i][1], axis[i][2]);
     for (int i = 0; i < 12; i++)
         fprintf(f, "%g %g %g\n", mid[i][0] * h + 0.0, mid[i][1] * h + 0.0, mid[i][2] * h + 0.0);
@@ -192,7 +196,8 @@ static void sphere(FILE *f)
     for (int q = 0; q < 8; q++) {
         int *m = face[q], *c = corner[q];
         int odd = ((q & 1) + (q >> 1 & 1) + (q >> 2 & 1)) & 1; /* keep them outward */
-        int t[4][3] = {{c[0], m[0], m[2]}, {c[1], m[1], m[0]}, {c[2], m[2], m[1]}, {m[0], m[1], m[2]}};
+        int t[4][3] = {
+            {c[0], m[0], m[2]}, {c[1], m[1], m[0]}, {c[2], m[2], m[1]}, {m[0], m[1], m[2]}};
         for (int k = 0; k < 4; k++)
             fprintf(f, "3 %d %d %d\n", t[k][0], t[k][odd ? 2 : 1], t[k][odd ? 1 : 2]);
     }
@@ -241,15 +246,18 @@ static void centrum(const picture *p, size_t g)
     b[2] = a[0] * n[1] - a[1] * n[0];
     fputs("{appearance {-normal -edge normscale 0} {INST geom { ", f);
     if (g == 0)
-        fprintf(f, "define centrum CQUAD  # f%zu\n-0.3 -0.3 0.0001     0 0 1 1\n 0.3 -0.3 0.0001     0 0 1 1\n"
-                " 0.3  0.3 0.0001     0 0 1 1\n-0.3  0.3 0.0001     0 0 1 1 } transform { \n", p->id[g]);
+        fprintf(f, "define centrum CQUAD  # f%zu\n-0.3 -0.3 0.0001     0 0 1 1\n"
+                " 0.3 -0.3 0.0001     0 0 1 1\n 0.3  0.3 0.0001     0 0 1 1\n"
+                "-0.3  0.3 0.0001     0 0 1 1 } transform { \n", p->id[g]);
     else
         fprintf(f, ": centrum } transform { # f%zu\n", p->id[g]);
-    fprintf(f, "%8.4g %8.4g %8.4g 0\n%8.4g %8.4g %8.4g 0\n%8.4g %8.4g %8.4g 0\n", a[0], a[1], a[2], b[0],
-            b[1], b[2], n[0], n[1], n[2]);
+    const double *rows[3] = {a, b, n};
+    for (int r = 0; r < 3; r++)
+        fprintf(f, "%8.4g %8.4g %8.4g 0\n", rows[r][0], rows[r][1], rows[r][2]);
     for (int pass = 0; pass < 2; pass++) {
         for (int j = 0; j < 3; j++) fprintf(f, "%8.4g ", c[j]);
-        fputs(pass ? " # p-1\n       0        1        0 1\n" : " # p-1\n1 }}}\nVECT 1 1 1 1 1\n", f);
+        fputs(pass ? " # p-1\n       0        1        0 1\n" : " # p-1\n1 }}}\nVECT 1 1 1 1 1\n",
+              f);
     }
 }
 
@@ -262,7 +270,8 @@ static void segment(const picture *p, size_t g, int inner)
     for (int k = 0; k < 2; k++) { /* Qhull: no blank after the third, 0 */
         double x[4];
         coords(p, (size_t)p->vert[g * 2 + k], x);
-        for (int j = 0; j < 2; j++) fprintf(p->f, "%8.4g ", x[j] + (inner ? -p->shift : p->shift) * n[j]);
+        for (int j = 0; j < 2; j++)
+            fprintf(p->f, "%8.4g ", x[j] + (inner ? -p->shift : p->shift) * n[j]);
         fprintf(p->f, "%8.4g\n", 0.0);
     }
     colour_of(p, g, inner, c);
