@@ -92,7 +92,7 @@ typedef struct lh_cli_qmodel {
     lh_hull *hull;
     lh_pred *pred;         /* for the exact hyperplanes of qconvex n, Fi, Fo    */
     char *good;            /* qvoronoi's filters: the simplices kept (NULL: all) */
-    size_t ngood;          /* the good facets (printed, or with PG their neighbours) */
+    size_t ngood;          /* how many facets are good (PG prints their neighbours) */
     const struct lh_cli_qmodel *all; /* qvoronoi with filters: this model before
                               them (good set), for the Voronoi formats; NULL  */
 } lh_cli_qmodel;

@@ -6,9 +6,9 @@
  * coordinate n dropped; Gt, 3-d Delaunay: GD3 without the outer ridges, those to
  * an upper facet, as Qhull's transparent ones). A Delaunay picture is the whole
  * lifted hull with Qhull's Qbb scaling, upper facets too, as Qhull draws it. Each
- * facet is coloured by its unit
- * normal n as (n + 1) / 2 (GDn: that colour without coordinate n, scaled to length
- * 1, as Qhull does when the picture drops a dimension).
+ * facet is coloured by its unit normal n as (n + 1) / 2 (GDn: that colour without
+ * coordinate n, scaled to length 1, as Qhull does when the picture drops a
+ * dimension).
  *
  * Vertices are the sites themselves: lifthull's facets are exact, so the inner and
  * outer planes Qhull draws (projecting the vertices onto them) are the facet's own
@@ -21,7 +21,8 @@
  * coordinate c of the picture's points (Qhull's radius with no roundoff to add), and
  * as Qhull then moves the outer plane out and the inner one in by r + 0.002 c (its
  * qh_GEOMepsilon margin), so that the spheres stay between them: both are drawn
- * unless Gi, Go or Gn says otherwise.
+ * unless Gi, Go or Gn says otherwise. Gc draws Qhull's centrum of each drawn facet
+ * (centrum()).
  */
 #include "qhull.h"
 #include "qhull_print.h"

@@ -181,7 +181,7 @@ static int word_output(lh_cli_qopts *o, const char *w)
 }
 
 /* QGn / QG-n (good facets: visible from point n, or not) and QVn / QV-n (with
- * vertex n, or without), qconvex and qdelaunay; 0 after a usage error. */
+ * vertex n, or without), qconvex, qdelaunay and qvoronoi; 0 after a usage error. */
 static int good_point(lh_cli_qopts *o, const char *w)
 {
     if (o->prog == LH_QPROG_HALF) {
