@@ -15,9 +15,10 @@ typedef enum { LH_QPROG_DELAUNAY, LH_QPROG_VORONOI, LH_QPROG_CONVEX, LH_QPROG_HA
 
 enum { LH_QOUT_MAX = 32 };
 
-/* G's suboptions (qhull_geom.c): Gi, Go, Gn, Ga, Gr, Gh. */
+/* G's suboptions (qhull_geom.c): Gi, Go, Gn, Ga, Gr, Gh, Gv, Gt, Gc. */
 enum { LH_QG_INNER = 1, LH_QG_OUTER = 2, LH_QG_NOPLANES = 4, LH_QG_POINTS = 8, LH_QG_RIDGES = 16,
-       LH_QG_INTERSECT = 32 };
+       LH_QG_INTERSECT = 32, LH_QG_SPHERES = 64, LH_QG_TRANSPARENT = 128,
+       LH_QG_CENTRUMS = 256 };
 
 typedef struct lh_cli_qopts {
     lh_cli_qprog prog;
@@ -91,6 +92,7 @@ typedef struct lh_cli_qmodel {
     lh_hull *hull;
     lh_pred *pred;         /* for the exact hyperplanes of qconvex n, Fi, Fo    */
     char *good;            /* qvoronoi's filters: the simplices kept (NULL: all) */
+    size_t ngood;          /* how many facets are good (PG prints their neighbours) */
     const struct lh_cli_qmodel *all; /* qvoronoi with filters: this model before
                               them (good set), for the Voronoi formats; NULL  */
 } lh_cli_qmodel;

@@ -150,7 +150,8 @@ int lh_cli_qprint_extra(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo,
  * draws without them). 0 after printing the problem. */
 static int geom_fits(const lh_cli_qopts *o, int dims)
 {
-    const int extras = o->geom & (LH_QG_POINTS | LH_QG_RIDGES | LH_QG_INTERSECT);
+    const int extras = o->geom & (LH_QG_POINTS | LH_QG_RIDGES | LH_QG_INTERSECT | LH_QG_SPHERES |
+                                  LH_QG_CENTRUMS);
     if (dims < 2 || dims > 4) {
         fprintf(stderr, "lifthull %s: option 'G': Geomview output is only available for 2-d, 3-d "
                 "and 4-d pictures (Qhull's rule; here %d-d%s)\n", o->name, dims,
@@ -162,13 +163,22 @@ static int geom_fits(const lh_cli_qopts *o, int dims)
                 "pictures (a 4-d one draws its ridges)\n", o->name);
         return 0;
     }
+    if ((o->geom & LH_QG_TRANSPARENT) &&
+        (o->prog != LH_QPROG_DELAUNAY || dims != 4 || o->geom_drop >= 0)) {
+        fprintf(stderr, "lifthull %s: option 'Gt': transparent outer ridges need a 3-d Delaunay "
+                "triangulation and no GDn (Qhull's rule)\n", o->name);
+        return 0;
+    }
+    if (dims == 4 && (o->geom & (LH_QG_SPHERES | LH_QG_CENTRUMS)))
+        fprintf(stderr, "lifthull %s: options 'Gv' and 'Gc' ignored: no spheres or centrums in a "
+                "4-d picture (as Qhull)\n", o->name);
     if (dims == 2 && (o->geom & (LH_QG_RIDGES | LH_QG_INTERSECT)))
         fprintf(stderr, "lifthull %s: options 'Gr' and 'Gh' ignored: no ridges to draw in a 2-d "
                 "picture (as Qhull)\n", o->name);
     if ((o->geom & LH_QG_NOPLANES) && !(o->geom & (LH_QG_INNER | LH_QG_OUTER)) &&
-        !(dims == 3 ? extras : extras & LH_QG_POINTS)) {
+        !(dims == 3 ? extras : extras & (LH_QG_POINTS | LH_QG_SPHERES | LH_QG_CENTRUMS))) {
         fprintf(stderr, "lifthull %s: option 'Gn': no output specified for Geomview (Gn leaves "
-                "the facets out: add Ga, Gr or Gh)\n", o->name);
+                "the facets out: add Ga, Gv, Gc, Gr or Gh)\n", o->name);
         return 0;
     }
     if (o->geom_drop >= 0 && dims != 4)

@@ -221,6 +221,7 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
     if (st == LH_OK) st = o->prog == LH_QPROG_CONVEX ? convex(mo) : delaunay(mo, o);
     if (st == LH_OK && o->gpoint.on) st = put_back(mo, xyz);
     mo->m_upper = mo->m_other;
+    mo->ngood = mo->m;
     if (st == LH_OK) st = lh_cli_qmodel_incidence(mo);
     if (st == LH_OK && o->verify) {
         char msg[256];

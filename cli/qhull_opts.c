@@ -110,13 +110,19 @@ static void help(const lh_cli_qopts *o)
            o->prog == LH_QPROG_VORONOI ?
            "  Pdk:n     print the Voronoi vertices whose Delaunay facet's lifted normal has\n"
            "            normal[k] >= n (PDk:n: <= n; n 0 if left out); PAn: the n largest\n"
+           "  PG        print the good ones' other neighbours (not good)\n"
+           "  QGn       print those of the simplices whose circumsphere holds site n (n is\n"
+           "            left out; QG-n: the others)\n"
            "  QVn       print the Voronoi vertices of site n's region (QV-n: the others)\n" :
            "  Pdk:n     print the facets with normal[k] >= n (PDk:n: <= n; n 0 if left out)\n"
            "  PAn       print the n largest facets (Pg); PG: their other neighbours\n"
            "  QGn       print the facets point n sees (n is left out; QG-n: not seen)\n"
            "  QVn       print the facets with vertex n (QV-n: without)\n"
            "  Gi Go Gn Ga Gr Gh GDn  G's inner/outer planes (exact: the facets), no planes,\n"
-           "            all points, ridges, intersections; GDn: 4-d pictures without coordinate n\n",
+           "            all points, ridges, intersections; GDn: 4-d pictures without coordinate n\n"
+           "  Gv        G's spheres at the vertices (planes moved out and in by their radius)\n"
+           "  Gt        qdelaunay, 3-d: the inner ridges only (Qhull's transparent outer ones)\n"
+           "  Gc        G's centrums (exact: each facet's centroid)\n",
            o->name,
            o->prog == LH_QPROG_VORONOI ? "o" : o->prog == LH_QPROG_CONVEX ? "i" : "i Qt");
 }
@@ -126,9 +132,9 @@ static void help(const lh_cli_qopts *o)
 static int print_filter(lh_cli_qopts *o, const char *w)
 {
     if (w[0] != 'P' || !strchr("dDAgG", w[1]) || !w[1]) return 0;
-    if (o->prog == LH_QPROG_HALF || (o->prog == LH_QPROG_VORONOI && w[1] == 'G')) {
-        fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex and "
-                "qdelaunay; qvoronoi: Pdk, PDk, PAn, Pg)\n", o->name, w);
+    if (o->prog == LH_QPROG_HALF) {
+        fprintf(stderr, "lifthull %s: option '%s' is not supported (print filters: qconvex, "
+                "qdelaunay and qvoronoi)\n", o->name, w);
         return -1;
     }
     if (w[1] == 'g' || w[1] == 'G') {
@@ -175,12 +181,12 @@ static int word_output(lh_cli_qopts *o, const char *w)
 }
 
 /* QGn / QG-n (good facets: visible from point n, or not) and QVn / QV-n (with
- * vertex n, or without), qconvex and qdelaunay; 0 after a usage error. */
+ * vertex n, or without), qconvex, qdelaunay and qvoronoi; 0 after a usage error. */
 static int good_point(lh_cli_qopts *o, const char *w)
 {
-    if (o->prog == LH_QPROG_HALF || (o->prog == LH_QPROG_VORONOI && w[1] == 'G')) {
+    if (o->prog == LH_QPROG_HALF) {
         fprintf(stderr, "lifthull %s: option '%s' is not supported (good facets by a point: "
-                "QGn, QVn; qconvex and qdelaunay; qvoronoi: QVn)\n", o->name, w);
+                "QGn, QVn; qconvex, qdelaunay and qvoronoi)\n", o->name, w);
         return 0;
     }
     struct lh_cli_qgood *g = w[1] == 'G' ? &o->gpoint : &o->gvertex;
@@ -205,7 +211,7 @@ static int geom_word(lh_cli_qopts *o, const char *w)
                 "qconvex and qdelaunay)\n", w);
         return 0;
     }
-    static const char letters[] = "ionarh";
+    static const char letters[] = "ionarhvtc"; /* the LH_QG_* bits in order */
     for (const char *c = w + 1; *c; c++) {
         const char *at = strchr(letters, *c);
         if (at) {
@@ -214,8 +220,8 @@ static int geom_word(lh_cli_qopts *o, const char *w)
             o->geom_drop = *++c - '0';
         } else {
             fprintf(stderr, "lifthull %s: option '%s': '%c' is not supported (G suboptions: Gi Go "
-                    "Gn Ga Gr Gh GDn, n 0..3; Qhull's spheres Gv, projections Gp, centrums Gc and "
-                    "transparency Gt are not drawn)\n", o->name, w, *c);
+                    "Gn Ga Gr Gh Gv Gt Gc GDn, n 0..3; Qhull's projections Gp are not "
+                    "drawn)\n", o->name, w, *c);
             return 0;
         }
     }

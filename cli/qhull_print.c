@@ -244,8 +244,9 @@ static int print_s(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
     } else if (o->prog == LH_QPROG_VORONOI) {
         fprintf(f, "\nVoronoi diagram by the convex hull of %zu points in %d-d:\n\n"
                    "  Number of Voronoi regions%s: %zu\n  Number of %sVoronoi vertices: %zu\n",
-                mo->n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v,
-                o->npd || o->gvertex.on ? "'good' " : "", mo->m); /* Qhull: not for PAn */
+                n, mo->d + 1, o->furthest ? " (furthest-site)" : "", v,
+                o->npd || o->gvertex.on || o->gpoint.on ? "'good' " : "",
+                mo->ngood); /* Qhull: no 'good' for PAn; with PG, the good ones */
     } else {
         fprintf(f, "\n%sDelaunay triangulation by the convex hull of %zu points in %d-d:\n\n"
                    "  Number of input sites: %zu\n  Number of %s%sDelaunay regions: %zu\n",

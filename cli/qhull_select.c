@@ -1,5 +1,5 @@
 /*
- * qhull_select.c — Qhull's print filters for qconvex and qdelaunay (Qhull's manual,
+ * qhull_select.c — Qhull's print filters for qconvex, qdelaunay and qvoronoi (Qhull's manual,
  * "Print options"): Pdk:n prints the facets whose unit normal has coordinate k
  * >= n, PDk:n those with <= n (n 0 when left out; several combine, all must hold;
  * when no facet meets them, the closest one, as Qhull);
@@ -127,8 +127,9 @@ static void point_filters(const lh_cli_qmodel *mo, const lh_cli_qopts *o, char *
 }
 
 /* PAn, Pg, PG: the good facets are those kept so far (PAn: the n largest of them);
- * keep = the good ones, or (PG) their neighbours that are not good. */
-static int good_filters(const lh_cli_qmodel *mo, const lh_cli_qopts *o, char *keep)
+ * keep = the good ones, or (PG) their neighbours that are not good; mo->ngood
+ * counts the good ones. */
+static int good_filters(lh_cli_qmodel *mo, const lh_cli_qopts *o, char *keep)
 {
     double *area = malloc((mo->m ? mo->m : 1) * sizeof *area);
     sized *order = malloc((mo->m ? mo->m : 1) * sizeof *order);
@@ -146,6 +147,8 @@ static int good_filters(const lh_cli_qmodel *mo, const lh_cli_qopts *o, char *ke
             memset(good, 0, mo->m);
             for (size_t i = 0; i < c && i < o->largest; i++) good[order[i].t] = 1;
         }
+        mo->ngood = 0;
+        for (size_t t = 0; t < mo->m; t++) mo->ngood += good[t] != 0;
         for (size_t t = 0; t < mo->m; t++) keep[t] = good[t] && !o->good_nbrs;
         for (size_t t = 0; t < mo->m && o->good_nbrs; t++)
             for (int k = 0; good[t] && k < mo->nv; k++) {
@@ -210,6 +213,7 @@ int lh_cli_qselecting(const lh_cli_qopts *o)
 
 int lh_cli_qselect(lh_cli_qmodel *mo, const lh_cli_qopts *o, lh_cli_qmodel *all)
 {
+    mo->ngood = mo->m;
     if (!lh_cli_qselecting(o)) return 1; /* Pg alone: every facet is good */
     char *keep = malloc(mo->m ? mo->m : 1);
     if (!keep) goto nomem;

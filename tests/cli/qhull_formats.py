@@ -235,16 +235,13 @@ def filters(lh):
           or sorted(map(sorted, facets_i(li))) == [[1, 3, 7], [1, 5, 7]], li)
     _, qi, _ = run(["qconvex", "Pd0:1", "i"], text)
     print("note: cube + 2^30 Pd0:1: lifthull %s facets, qconvex %s" % (li.split()[0], qi.split()[0]))
-    r, _, e = run([lh, "qvoronoi", "PG", "o"], rbox("10 D2 t1"))  # Pdk: tests/cli/qvoronoi_extras.py
-    check("qvoronoi PG refused", r == 2 and "option 'PG' is not supported" in e, e)
+    # qvoronoi's Pdk, PG, QGn: tests/cli/qvoronoi_extras.py
     for bad in ("Pd", "PD0:x", "PA0", "PAx", "Pdd1"):
         r, _, e = run([lh, "qconvex", bad, "i"], rbox("10 D2 t1"))
         check("qconvex %s refused" % bad, r == 2 and "option '%s': expected" % bad in e, e)
     r, _, e = run([lh, "qconvex", "Pd3", "i"], rbox("10 D2 t1"))
     check("qconvex Pd3 in 2-d refused", r == 2 and "coordinates 0..1" in e, e)
-    for q in ("QG0", "QG-1"):  # qconvex, qdelaunay, qvoronoi's QVn: tests/cli/qhull_good.py
-        r, _, e = run([lh, "qvoronoi", q, "o"], rbox("10 D2 t1"))
-        check("qvoronoi " + q + " refused", r == 2 and "option '%s' is not supported" % q in e, e)
+    # QGn QVn: tests/cli/qhull_good.py (qconvex, qdelaunay), qvoronoi_extras.py (qvoronoi)
 
 
 # ---- FI Fm FQ FO FD Fc FP m FM ----------------------------------------------------------
@@ -399,8 +396,8 @@ def geomview(lh):
               a[:60] + " / " + b[:60])
     r, _, e = run([lh, "qconvex", "G"], rbox("10 D5 t1"))  # 4-d: tests/cli/qhull_geomview.py
     check("qconvex G in 5-d refused", r == 2 and "only available for 2-d, 3-d and 4-d" in e, e)
-    r, _, e = run([lh, "qconvex", "Gv"], rbox("10 D3 t1"))
-    check("qconvex Gv refused", r == 2 and "option 'Gv': 'v' is not supported" in e, e)
+    r, _, e = run([lh, "qconvex", "Gp"], rbox("10 D3 t1"))
+    check("qconvex Gp refused", r == 2 and "option 'Gp': 'p' is not supported" in e, e)
 
 
 def fields(out):

@@ -10,7 +10,9 @@ vertices onto its inner and outer planes: differences of 1e-15 there; facet and 
 order differ). 4-d pictures (4-d hulls, 3-d Delaunay's lifted hull; 4OFF, and GDn): the
 same ridges (as sets of vertex positions) and each facet's colour (a facet known by the
 vertices of the ridges it names first). Refusals as Qhull's (a 5-d picture, Gn with
-nothing to draw) and the suboptions lifthull does not draw (Gv Gp Gc Gt). Exit 0 when
+nothing to draw) and the suboption lifthull does not draw (Gp). Gt (3-d Delaunay): the inner ridges of GD3,
+as Qhull. Gc: the centrums' normals and centres, axes from a vertex. Gv: Qhull's
+spheres (as sets of triangles) and planes moved by their radius. Exit 0 when
 all passed, 1 otherwise, 77 without Qhull's programs.
 """
 
@@ -102,9 +104,9 @@ def four_d(lh):
     for spec, prog, qopts in (("8 D4 t94", "qconvex", []), ("30 D4 t95", "qconvex", []),
                               ("9 D3 t96", "qdelaunay", ["Qt"]), ("25 D3 t97", "qdelaunay", ["Qt"])):
         text = rbox(spec)
-        for opts in ([], ["Gi"], ["GD0"], ["GD3"], ["GD1"]):
+        for opts in ([], ["Gi"], ["GD0"], ["GD3"], ["GD1"]) + ((["Gt"],) if prog == "qdelaunay" else ()):
             name = "%s %s G %s" % (spec, prog, " ".join(opts))
-            drop = bool(opts) and opts[0].startswith("GD")
+            drop = bool(opts) and opts[0] in ("GD0", "GD1", "GD3", "Gt")
             r, a, _ = run([lh, prog, "G"] + opts, text)
             _, b, _ = run([prog] + qopts + ["G"] + opts, text)
             (ra, ca), (rb, cb) = ridges4(a, drop), ridges4(b, drop)
@@ -115,6 +117,69 @@ def four_d(lh):
             head = a.split("\n")[:2]
             check(name + " frame", (head[1] == b.split("\n")[1]) if not drop else
                   head[0] == "{appearance {+edge -evert linewidth 2} LIST # lifthull %s G %s" % (prog, opts[0]), head)
+            if drop:  # one LIST of OFFs: a brace closes it at the end only, as Qhull's
+                check(name + " braces", a.count("}") == b.count("}") == 2 and a.endswith("\n}\n"), a[-80:])
+
+
+def sphere_split(out):
+    """Gv's picture: (the unit sphere's triangles as sets of corners, the rest's rows)."""
+    m = re.search(r"INST geom \{define vsphere OFF\n(\d+) (\d+) (\d+)\n\n(.*?)\n\n(.*?)\n\} transforms", out, re.S)
+    if not m:
+        return None, rows(out)
+    verts = [key(float(x) for x in l.split()) for l in m.group(4).split("\n")]
+    tris = sorted(sorted(verts[int(x)] for x in l.split()[1:]) for l in m.group(5).split("\n"))
+    return (m.group(1, 2, 3), tris), rows(out[:m.start()] + out[m.end():])
+
+
+def spheres(lh):
+    """Gv: a sphere at each vertex (0.02 times the largest coordinate), the planes moved
+    out and in by its radius (Qhull's rows within 1e-3; the sphere as a set of triangles)."""
+    for spec, prog, qopts in (("12 D2 t88", "qconvex", []), ("14 D3 t89", "qconvex", []),
+                              ("15 D2 t87 B3", "qdelaunay", ["Qt"]), ("10 D3 t86", "qconvex", [])):
+        text = rbox(spec)
+        for opts in (["Gv"], ["Gv", "Gi"], ["Gv", "Go"], ["Gvn"], ["Gv", "Ga"], ["Gvr"]):
+            if spec.split()[1] == "D2" and prog == "qconvex" and "Gvr" in opts:
+                continue  # Qhull: no ridges in 2-d
+            name = "%s %s %s" % (spec, prog, " ".join(opts))
+            r, a, _ = run([lh, prog] + opts, text)
+            _, b, _ = run([prog] + qopts + opts, text)
+            (sa, ra), (sb, rb) = sphere_split(a), sphere_split(b)
+            check(name + " sphere", r == 0 and sa == sb and sa is not None, "%s / %s" % (str(sa)[:80], str(sb)[:80]))
+            check(name, same_rows(ra, rb, 1e-3) and len(ra) > 3, "%d vs %d rows" % (len(ra), len(rb)))
+    r, a, e = run([lh, "qconvex", "Gv"], rbox("10 D4 t85"))
+    check("4-d Gv: a note, then G", r == 0 and "'Gv' and 'Gc' ignored" in e and "vsphere" not in a, e)
+
+
+CENTRUM = re.compile(r"\{appearance \{-normal -edge normscale 0\} \{INST geom \{ (?:define centrum CQUAD  # f\d+\n"
+                     r"(?:.*\n){3}.* \} transform \{ \n|: centrum \} transform \{ # f\d+\n)((?:.*\n){4})1 \}\}\}\n")
+
+
+def centrums(out):
+    """Gc: (each centrum's (normal, centre) rows, whether its first two rows are some
+    vertex - centre and that x normal, the rest's rows)."""
+    cs, fit = [], True
+    pts = set(key(r) for r in rows(out))
+    for m in CENTRUM.finditer(out):
+        a, b, n, c = [tuple(float(x) for x in l.split("#")[0].split()[:3]) for l in m.group(1).strip().split("\n")]
+        cs.append((key(n), key(c)))
+        cross = (a[1] * n[2] - a[2] * n[1], a[2] * n[0] - a[0] * n[2], a[0] * n[1] - a[1] * n[0])
+        fit = fit and key(x + y for x, y in zip(a, c)) in pts and all(abs(x - y) < 2e-3 for x, y in zip(b, cross))
+    return sorted(cs), fit, rows(CENTRUM.sub("", out))
+
+
+def centrum_pictures(lh):
+    """Gc: Qhull's centrum at each facet's centroid (exact: on the facet), same normal
+    rows, axes from a vertex (Qhull's first vertex may be another one)."""
+    for spec, prog, qopts in (("12 D2 t84", "qconvex", []), ("14 D3 t83", "qconvex", []),
+                              ("15 D2 t82", "qdelaunay", ["Qt"])):
+        text = rbox(spec)
+        for opts in (["Gc"], ["Gcn"], ["Gc", "Ga"]):
+            name = "%s %s %s" % (spec, prog, " ".join(opts))
+            r, a, _ = run([lh, prog] + opts, text)
+            _, b, _ = run([prog] + qopts + opts, text)
+            (ca, fa, ra), (cb, fb, rb) = centrums(a), centrums(b)
+            check(name + " centrums", r == 0 and ca == cb and len(ca) > 3 and (fa and fb or "n" in opts[0]), "%s / %s" % (ca[:2], cb[:2]))
+            check(name, same_rows(ra, rb, 1e-3), "%d vs %d rows" % (len(ra), len(rb)))
 
 
 def refusals(lh):
@@ -122,8 +187,10 @@ def refusals(lh):
                                   ("qdelaunay", "10 D4 t1", ["G"], "only available for 2-d, 3-d and 4-d"),
                                   ("qconvex", "10 D3 t1", ["Gn"], "no output specified for Geomview"),
                                   ("qconvex", "10 D4 t1", ["Gr"], "are for 2-d and 3-d pictures"),
-                                  ("qconvex", "10 D3 t1", ["Gv"], "'v' is not supported"),
-                                  ("qconvex", "10 D3 t1", ["Gc"], "'c' is not supported"),
+                                  ("qconvex", "10 D3 t1", ["Gp"], "'p' is not supported"),
+                                  ("qconvex", "10 D3 t1", ["Gt"], "'Gt': transparent outer ridges need"),
+                                  ("qdelaunay", "10 D2 t1", ["Gt"], "'Gt': transparent outer ridges need"),
+                                  ("qdelaunay", "10 D3 t1", ["Gt", "GD0"], "'Gt': transparent outer ridges need"),
                                   ("qvoronoi", "10 D2 t1", ["Gr"], "G's suboptions are for qconvex and qdelaunay")):
         r, a, e = run([lh, prog] + opts, rbox(spec))
         check("%s %s %s refused" % (spec, prog, " ".join(opts)), r == 2 and a == "" and msg in e, e)
@@ -131,4 +198,6 @@ def refusals(lh):
 
 if __name__ == "__main__":
     sys.exit(main(__doc__, ("rbox", "qconvex", "qdelaunay"),
-                  [("pictures", pictures), ("selected", selected), ("4-d", four_d), ("refusals", refusals)]))
+                  [("pictures", pictures), ("selected", selected), ("4-d", four_d), ("spheres", spheres),
+                   ("centrums", centrum_pictures),
+                   ("refusals", refusals)]))

@@ -10,7 +10,7 @@ points); Fx and FN (only the printed facets' vertices); o (every input point). q
 QGn: the Delaunay triangles whose circumsphere holds point n; Qhull also prints the upper
 Delaunay facets point n sees (not Delaunay triangles, and left out of its own count of
 good regions): those are removed from Qhull's side first. Refusals: n out of range (as
-Qhull's QH6150), a malformed n, qvoronoi's QGn. Exit 0 when all passed, 1 otherwise, 77
+Qhull's QH6150), a malformed n (qvoronoi's QGn: qvoronoi_extras.py). Exit 0 when all passed, 1 otherwise, 77
 without Qhull's programs.
 """
 
@@ -157,8 +157,6 @@ def refusals(lh):
         r, a, e = run([lh, prog, "QG3", "i"], tet)
         check(prog + " QG3: the rest is flat", r == 1 and a == "" and "option 'QG3' leaves point 3 out of the "
               "hull:" in e and "the 3 sites span an affine subspace of dimension 2" in e, e)
-    r, _, e = run([lh, "qvoronoi", "QG1", "o"], text)
-    check("qvoronoi QG1 refused", r == 2 and "option 'QG1' is not supported" in e, e)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,8 @@ coplanar point of the site it repeats (the facet it is listed with may differ: Q
 the one its partition ended in; Qhull may keep the later copy as the vertex). G: the same
 frame, Voronoi vertices (as a multiset) and regions (as cycles of vertex positions, either
 direction) as Qhull's; refused as Qhull does in 3-d; m and FM refused as Qhull does. Print
-filters Pdk, PDk, PAn, QVn: the same Voronoi vertices, regions, ridges and good facets. Exit 0 when all passed, 1 otherwise, 77 without
+filters Pdk, PDk, PAn, QVn: the same Voronoi vertices, regions, ridges and good facets;
+QGn, QG-n, PG: the same Delaunay facets and their Voronoi vertices, less Qhull's upper ones. Exit 0 when all passed, 1 otherwise, 77 without
 Qhull's programs.
 """
 
@@ -200,11 +201,43 @@ def filters(lh):
             ga, gb = geom(la), geom(qa)
             check(spec + " Pd0 G", ga[1] == gb[1] and [r for r in ga[2]] == [r for r in gb[2] if r[1]],
                   "%s / %s" % (ga[2][:3], gb[2][:3]))
-    for bad in ("PG", "QG1"):
-        r, _, e = run([lh, "qvoronoi", bad, "o"], rbox("10 D2 t1"))
-        check("qvoronoi %s refused" % bad, r == 2 and "option '%s' is not supported" % bad in e, e)
+
+
+def facet_sets(out):
+    return sorted(tuple(sorted(int(x) for x in l.split())) for l in out.strip().split("\n")[1:] if l.strip())
+
+
+def good_by_point(lh):
+    """QGn, QG-n and PG: the Voronoi vertices of the Delaunay facets point n sees (n an
+    interior site: left out, as Qhull does, the hull is the same), or not, or the good
+    facets' other neighbours. Qhull also prints its upper Delaunay facets there (for
+    PG, those next to a good one): lifthull prints Delaunay simplices only, as its
+    qdelaunay does, so those are taken from Qhull's side first (qdelaunay Qu i)."""
+    for spec in ("40 D2 t73", "50 D3 t74"):
+        text = rbox(spec)
+        _, fx, _ = run(["qconvex", "Fx"], text)
+        hull = set(int(x) for x in fx.split()[1:])
+        inner = min(set(range(int(text.split("\n")[1]))) - hull)
+        _, up, _ = run(["qdelaunay", "Qu", "i"], text)
+        upper = set(facet_sets(up))
+        for f in (["QG%d" % inner], ["QG-%d" % inner], ["Pd0", "PG"], ["QG%d" % inner, "PG"], ["PD1", "PG"]):
+            name = "%s qvoronoi %s" % (spec, " ".join(f))
+            r, li, _ = run([lh, "qvoronoi"] + f + ["i"], text)
+            _, qi, _ = run(["qvoronoi", "Pp"] + f + ["i"], text)
+            want = [t for t in facet_sets(qi) if t not in upper]
+            check(name + " i", r == 0 and facet_sets(li) == want and want, "%s / %s" % (facet_sets(li)[:3], want[:3]))
+            r, lp, _ = run([lh, "qvoronoi"] + f + ["p"], text)
+            _, qp, _ = run(["qvoronoi"] + f + ["p"], text)
+            lv, qv = vertices(lp, False)[0], vertices(qp, False)[0]
+            check(name + " p", r == 0 and len(lv) == len(want) and set(lv.values()) <= set(qv.values()),
+                  "%d vertices, %d of Qhull's (%d Delaunay)" % (len(lv), len(qv), len(want)))
+            _, _, le = run([lh, "qvoronoi"] + f + ["s"], text)
+            _, _, qe = run(["qvoronoi"] + f + ["s"], text)
+            head = lambda err: re.findall(r"(?:convex hull of|Number of .*:) \d+", err)[:3]
+            check(name + " s", head(le) == head(qe) and "'good'" in le, "%s / %s" % (head(le), head(qe)))
 
 
 if __name__ == "__main__":
     sys.exit(main(__doc__, ("rbox", "qvoronoi"),
-                  [("general", general), ("geomview", geomview), ("filters", filters)]))
+                  [("general", general), ("geomview", geomview), ("filters", filters),
+                   ("good_by_point", good_by_point)]))
