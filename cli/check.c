@@ -63,7 +63,7 @@ int lh_cli_check(int argc, char **argv)
             printf("ok: %zu %s, the Delaunay triangulation of the %zu point%s (exact check)\n", c.count,
                    c.count == 1 ? "simplex" : "simplices", p.n, p.n == 1 ? "" : "s");
         else
-            printf("not Delaunay: %s\n", st == LH_ERR_INTERNAL ? msg : lh_status_message(st));
+            printf("not Delaunay: %s\n", st == LH_ERR_INVALID_MESH ? msg : lh_status_message(st));
         status = st == LH_OK ? lh_cli_finish_output("check") : LH_EXIT_FAIL;
     }
     lh_cells_free(&c);

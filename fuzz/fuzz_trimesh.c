@@ -13,7 +13,7 @@
  *
  * The status must be what the input calls for, decided here exactly on the integer
  * grid: LH_ERR_DEGENERATE with "collinear" exactly when all vertices are collinear or
- * fewer than 3 distinct; else "crosses" when two segments cross (their interiors meet
+ * fewer than 3 distinct; else LH_ERR_CROSSING_SEGMENTS, "crosses", when two segments cross (their interiors meet
  * in one point that is no vertex), always without split_crossings and never when none
  * do, the message naming an earlier segment that the later one crosses, with their
  * lines (with split_crossings: two segments, README finding 9); else, with even_odd,
@@ -616,11 +616,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #ifdef LH_FUZZ_TRIMESH_VERBOSE /* -DLH_FUZZ_TRIMESH_VERBOSE: what an input is, and its outcome */
     describe(&in, st, m1, msg);
 #endif
-    if (st == LH_ERR_DEGENERATE) {
+    if (st == LH_ERR_DEGENERATE || st == LH_ERR_CROSSING_SEGMENTS) {
         /* the message says which degeneracy, and it must be the one the input has */
         const int said_collinear = strstr(msg, "collinear") != NULL, said_cross = strstr(msg, "crosses") != NULL,
                   said_open = strstr(msg, "ends an odd number of segments") != NULL;
-        if (!msg[0] || m1 || c1.live) abort();
+        if (!msg[0] || m1 || c1.live || said_cross != (st == LH_ERR_CROSSING_SEGMENTS)) abort();
         /* split_crossings: a crossing is an error only when its rounded point cannot go in */
         if (in.collinear != said_collinear || (!in.collinear && !in.crossing && said_cross) ||
             (!in.collinear && in.crossing && !in.o.split_crossings && !said_cross))

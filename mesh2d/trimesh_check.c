@@ -34,7 +34,7 @@ static edge *find(edge *e, size_t n, lh_index a, lh_index b)
 static lh_status fail(char *msg, size_t size, const char *what, size_t i)
 {
     if (msg && size) snprintf(msg, size, what, i);
-    return LH_ERR_INTERNAL;
+    return LH_ERR_INVALID_MESH;
 }
 
 /* Fills msg (printf-style) and returns st. */

@@ -253,7 +253,7 @@ LH_TEST(conforming_delaunay_has_every_edge_delaunay)
             LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(cdt), lh_trimesh_points(cdt),
                                               lh_trimesh_triangle_count(cdt), lh_trimesh_triangles(cdt), 0, NULL,
                                               1, NULL, msg, sizeof msg),
-                             LH_ERR_INTERNAL);
+                             LH_ERR_INVALID_MESH);
         lh_trimesh_free(m);
         lh_trimesh_free(cdt);
         lh_pslg_free(&g);
@@ -465,7 +465,7 @@ static void expect_failure(lh_test_state *lh_t_, const char *text, lh_status wan
 LH_TEST(bad_input_gets_its_error_and_line)
 {
     expect_failure(lh_t_, "4 2 0 0\n1 0 0\n2 2 2\n3 0 2\n4 2 0\n2 0\n1 1 2\n2 3 4\n0\n",
-                   LH_ERR_DEGENERATE, "8: segment 2 crosses segment 1 (line 7)");
+                   LH_ERR_CROSSING_SEGMENTS, "8: segment 2 crosses segment 1 (line 7)");
     expect_failure(lh_t_, "3 2 0 0\n1 0 0\n2 1 0\n3 2 0\n0 0\n0\n", LH_ERR_DEGENERATE,
                    "the vertices are all collinear or fewer than 3 distinct: no triangle");
     expect_failure(lh_t_, "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n1 0\n1 1 2\n0\n", LH_ERR_DEGENERATE,
@@ -506,6 +506,27 @@ LH_TEST(bad_input_gets_its_error_and_line)
     o.max_area = NAN;
     LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "max_area is NaN (0 or below: no area bound)");
+}
+
+/* A mesh to refine (Triangle's -r) that is no valid mesh is the caller's invalid
+ * mesh, LH_ERR_INVALID_MESH with the reason (LH_ERR_DEGENERATE or
+ * LH_ERR_INVALID_ARGUMENT before): crossing edges, no triangle of positive area. */
+LH_TEST(an_invalid_mesh_to_refine_is_an_invalid_mesh)
+{
+    double sq[8] = {0, 0, 1, 0, 1, 1, 0, 1}, line[8] = {0, 0, 1, 0, 2, 0, 0, 1};
+    lh_index crossing[6] = {0, 1, 2, 0, 1, 3}, flat[3] = {0, 1, 2};
+    lh_pslg g;
+    memset(&g, 0, sizeof g);
+    g.n = 4, g.xy = sq, g.cover_count = 2, g.cover = crossing;
+    lh_trimesh *m = NULL;
+    char msg[128];
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_STREQ(msg, "the mesh to refine has crossing edges");
+    LH_EXPECT_TRUE(m == NULL);
+    g.xy = line, g.cover_count = 1, g.cover = flat;
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_STREQ(msg, "the mesh to refine has no triangle of positive area");
+    LH_EXPECT_TRUE(m == NULL);
 }
 
 /* Misuse of the API gets a status and a message, never a crash: a cover count
@@ -727,7 +748,8 @@ LH_TEST(a_bent_segment_still_meets_the_vertex_on_it)
 
 /* earcut's degenerate rings (zero-area, self-touching, shared points, holes outside
  * or touching, self-crossing): each meshed and exactly valid, or refused with
- * LH_ERR_DEGENERATE and a message (crossings without split_crossings; an empty
+ * a message and LH_ERR_CROSSING_SEGMENTS (crossings without split_crossings) or
+ * LH_ERR_DEGENERATE (an empty
  * domain); with split_crossings none is refused for crossing. Refined at 20 and 30
  * degrees each ends well inside a Steiner budget of 20,000 (infinite-loop-jhl's two
  * segments 10^-28 apart split without end before the resolution floor of refine.c). */
@@ -767,10 +789,12 @@ LH_TEST(earcut_degenerate_rings_are_valid_or_refused_clearly)
                 LH_EXPECT_EQ_INT(ts.steiner_limit_reached, 0);
                 meshed += run == 1;
             } else {
-                if (st != LH_ERR_DEGENERATE || !msg[0]) LH_NOTE("%s split %d: %s %s", files[i], split, lh_status_name(st), msg);
-                LH_EXPECT_EQ_INT(st, LH_ERR_DEGENERATE);
+                const int crosses = strstr(msg, "crosses") != NULL;
+                if (st != (crosses ? LH_ERR_CROSSING_SEGMENTS : LH_ERR_DEGENERATE) || !msg[0])
+                    LH_NOTE("%s split %d: %s %s", files[i], split, lh_status_name(st), msg);
+                LH_EXPECT_EQ_INT(st, crosses ? LH_ERR_CROSSING_SEGMENTS : LH_ERR_DEGENERATE);
                 LH_EXPECT_TRUE(msg[0] != 0);
-                if (split) LH_EXPECT_TRUE(strstr(msg, "crosses") == NULL);
+                if (split) LH_EXPECT_TRUE(!crosses);
             }
             lh_trimesh_free(m);
         }
@@ -884,7 +908,7 @@ LH_TEST(an_existing_mesh_is_refined_with_its_area_bounds)
     lh_trimesh_free(m);
     /* a cover naming a point that does not exist */
     cells.v[0] = (lh_index)pts.n;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "the mesh to refine names a point that does not exist, or has an edge of three triangles");
     lh_cells_free(&cells);
     lh_points_free(&pts);
@@ -1158,9 +1182,9 @@ LH_TEST(the_check_rejects_what_is_not_a_cdt)
     const lh_index hull[] = {0, 1, 1, 2, 2, 3, 3, 0};
     char msg[128];
     LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 4, hull, 0, NULL, msg, sizeof msg), LH_OK);
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, flipped, 4, hull, 0, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, flipped, 4, hull, 0, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "triangle 0 is not counterclockwise with positive area");
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 0, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 0, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "a boundary edge of triangle 1 is not a subsegment");
     LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 1, NULL, msg, sizeof msg), LH_OK);
     /* misuse: a message says which argument */
@@ -1179,11 +1203,11 @@ LH_TEST(the_check_rejects_what_is_not_a_cdt)
     const double kite[] = {0, 0, 2, -0.5, 4, 0, 2, 0.5};
     const lh_index long_diag[] = {0, 1, 2, 0, 2, 3}, short_diag[] = {0, 1, 3, 1, 2, 3};
     LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, short_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_OK);
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, long_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, long_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "an unconstrained edge of triangle 0 is not locally Delaunay");
     const lh_index seg[] = {0, 2}; /* ... unless that diagonal is a subsegment */
     LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, long_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_OK);
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, short_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, short_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "subsegment 0 is not an edge of the triangulation");
 }
 
@@ -1236,6 +1260,7 @@ int main(int argc, char **argv)
         LH_CASE(earcut_degenerate_rings_are_valid_or_refused_clearly),
         LH_CASE(cgal_tiny_edge_is_meshed), LH_CASE(an_existing_mesh_is_refined_with_its_area_bounds),
         LH_CASE(refining_a_mesh_splits_its_boundary_edges), LH_CASE(api_misuse_is_refused_with_a_message),
+        LH_CASE(an_invalid_mesh_to_refine_is_an_invalid_mesh),
         LH_CASE(refining_a_mesh_keeps_the_segments_along_its_boundary),
         LH_CASE(degenerate_input_is_resolved_and_reported),
         LH_CASE(output_is_deterministic_and_independent_of_segment_order),

@@ -70,7 +70,10 @@ LH_API const char *lh_version_string(void);
     X(LH_ERR_DEGENERATE, 6, "sites span a lower-dimensional affine subspace")      \
     X(LH_ERR_IO, 7, "input/output error")                                          \
     X(LH_ERR_PARSE, 8, "malformed input")                                          \
-    X(LH_ERR_INTERNAL, 9, "internal consistency check failed")
+    X(LH_ERR_INTERNAL, 9, "internal consistency check failed")                    \
+    X(LH_ERR_INVALID_MESH, 10, "the given triangulation or mesh is not valid")     \
+    X(LH_ERR_BUFFER_TOO_SMALL, 11, "output buffer too small")                      \
+    X(LH_ERR_CROSSING_SEGMENTS, 12, "input segments cross")
 
 typedef enum lh_status {
 #define LH_STATUS_ENUM_(name, value, msg) name = value,
@@ -351,7 +354,7 @@ LH_API void lh_tri_free(lh_tri *t);
  * volume equals the convex hull's, exactly, so they tile it once (local conditions
  * alone admit coverings wound twice); every site is a vertex or an exact duplicate
  * of one. opt: only its allocator is used (NULL: malloc). Returns LH_OK,
- * LH_ERR_NOMEM, or LH_ERR_INTERNAL with a one-line reason in msg (msg may be NULL;
+ * LH_ERR_NOMEM, or LH_ERR_INVALID_MESH with a one-line reason in msg (msg may be NULL;
  * msg_size bytes); LH_ERR_INVALID_ARGUMENT for a NULL array with a nonzero count or a
  * bad allocator; LH_ERR_TOO_LARGE, with the reason in msg, for n or count beyond what
  * lh_index and size_t can count (the check's sizes would wrap around).
@@ -361,7 +364,8 @@ LH_API lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t co
                                    size_t msg_size);
 /* The same for a handle, also verifying its neighbour and hull arrays; for a
  * furthest-site triangulation the conditions are reversed (every interior facet
- * locally furthest-site Delaunay; sites that are not vertices inside the hull). */
+ * locally furthest-site Delaunay; sites that are not vertices inside the hull). A
+ * failed condition is the library's fault here: LH_ERR_INTERNAL with the reason. */
 LH_API lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
 
 /*
@@ -464,7 +468,7 @@ LH_API lh_status lh_tri_nearest(lh_tri *t, const double *q, lh_index hint, lh_in
  * face, the limit is the 2D Sibson coordinates within that face, not computed here).
  * cap may be 0 with sites and weights NULL, to ask for the count. Returns LH_OK;
  * LH_ERR_INVALID_ARGUMENT (NULL arguments, furthest-site handle, or q outside the
- * hull: *count = 0); LH_ERR_DIMENSION (d or k not 2 or 3); LH_ERR_TOO_LARGE (more
+ * hull: *count = 0); LH_ERR_DIMENSION (d or k not 2 or 3); LH_ERR_BUFFER_TOO_SMALL (more
  * than cap natural neighbours: *count is the number needed, nothing written);
  * LH_ERR_NONFINITE; LH_ERR_NOMEM.
  */
@@ -888,8 +892,11 @@ LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
  * zero-length segments (after merging) are dropped; a segment overlapping another
  * shares its edges; a vertex lying on a segment splits it; a hole or region seed
  * outside the domain is ignored; segments that cross get a vertex at the crossing
- * with opt->split_crossings. Errors: segments that cross (LH_ERR_DEGENERATE, naming
- * both; also when split_crossings cannot place the rounded crossing), all vertices
+ * with opt->split_crossings. Errors: segments that cross (LH_ERR_CROSSING_SEGMENTS,
+ * naming both; also when split_crossings cannot place the rounded crossing), a mesh
+ * to refine (cover) naming a point that does not exist, with an edge of three
+ * triangles, crossing edges or no triangle of positive area (LH_ERR_INVALID_MESH),
+ * all vertices
  * collinear or fewer than 3 distinct (LH_ERR_DEGENERATE),
  * a flood from the outside or a hole that removes every triangle (an unclosed
  * boundary: LH_ERR_DEGENERATE), with even_odd a vertex ending an odd number of
@@ -982,7 +989,7 @@ LH_API int lh_triangle_scaled_edges(const double a[2], const double b[2], const 
  * counterclockwise with positive area; edges shared by at most two triangles; every subsegment an
  * edge; every edge on the boundary a subsegment (unless boundary_free); every edge
  * not a subsegment locally Delaunay (incircle, exact). Returns LH_OK, or
- * LH_ERR_INTERNAL with a reason in msg; LH_ERR_INVALID_ARGUMENT (a NULL array with a
+ * LH_ERR_INVALID_MESH with a reason in msg; LH_ERR_INVALID_ARGUMENT (a NULL array with a
  * count, a subsegment endpoint out of range, an allocator lacking alloc or free) or
  * LH_ERR_TOO_LARGE, the argument named in msg; LH_ERR_NOMEM.
  */
