@@ -21,7 +21,7 @@
  * first, duplicates merged); else LH_OK or the empty-domain message (never with the
  * convex hull kept and no hole). Never LH_ERR_INTERNAL, LH_ERR_INVALID_ARGUMENT or
  * LH_ERR_NOMEM. On LH_OK, with an empty message:
- *   - lh_check_trimesh passes (boundary_free = 0); with conforming alone (no bound,
+ *   - lh_cdt_check passes (boundary_free = 0); with conforming alone (no bound,
  *     crossing split, smoothing move, limit or unsplit subsegment), also with no
  *     subsegments (every edge Delaunay);
  *   - indices in range, neighbours symmetric across the same edge, -1 only on
@@ -312,7 +312,7 @@ static lh_status run(const input *in, counter *c, lh_trimesh **m, char *msg, siz
 }
 
 /* The checks of a successful run (the header's list). */
-/* lh_check_trimesh passes; indices in range, neighbours symmetric across the same
+/* lh_cdt_check passes; indices in range, neighbours symmetric across the same
  * edge, -1 only on subsegments. */
 static void check_links(const lh_trimesh *m)
 {
@@ -320,9 +320,9 @@ static void check_links(const lh_trimesh *m)
     const double *xy = lh_trimesh_points(m);
     const lh_index *tri = lh_trimesh_triangles(m), *nb = lh_trimesh_neighbors(m), *seg = lh_trimesh_segments(m);
     char msg[256];
-    if (!nt || lh_check_trimesh(np, xy, nt, tri, ns, seg, 0, NULL, msg, sizeof msg) != LH_OK) {
+    if (!nt || lh_cdt_check(np, xy, nt, tri, ns, seg, 0, NULL, msg, sizeof msg) != LH_OK) {
 #ifdef LH_FUZZ_TRIMESH_VERBOSE
-        fprintf(stderr, "lh_check_trimesh: %s\n", msg);
+        fprintf(stderr, "lh_cdt_check: %s\n", msg);
 #endif
         abort();
     }
@@ -458,7 +458,7 @@ static void check_mesh(const input *in, const lh_trimesh *m)
        split (README finding 10: unit features at 2^40, the resolution floor) */
     if (o->conforming && !st.steiner_limit_reached && !st.segments_unsplit && o->boundary_steiner == 1 &&
         !st.crossings_split && o->min_angle == 0 && o->max_area <= 0 && !o->region_areas && !st.smoothing_moves &&
-        lh_check_trimesh(np, xy, nt, tri, 0, NULL, 1, NULL, msg, sizeof msg) != LH_OK)
+        lh_cdt_check(np, xy, nt, tri, 0, NULL, 1, NULL, msg, sizeof msg) != LH_OK)
         abort();
     if ((o->region_attributes != 0) != (lh_trimesh_triangle_attrs(m) != NULL)) abort();
     const double *pa = lh_trimesh_point_attrs(m);

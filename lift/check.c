@@ -392,7 +392,7 @@ static lh_status run_check(chk *c, const lh_index *simplices)
     return st;
 }
 
-lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
+lh_status lh_delaunay_check(int d, size_t n, const double *xyz, size_t count,
                             const lh_index *simplices, const lh_options *opt, char *msg,
                             size_t msg_size)
 {

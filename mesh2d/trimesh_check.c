@@ -1,5 +1,5 @@
 /*
- * trimesh_check.c — lh_check_trimesh: the exact validity check of a constrained
+ * trimesh_check.c — lh_cdt_check: the exact validity check of a constrained
  * Delaunay triangulation of a 2D domain. Edges are sorted records (low vertex, high
  * vertex, triangle, position); each decision is an exact orient_2 or incircle.
  */
@@ -92,9 +92,9 @@ static lh_status check(lh_pred *pr, size_t n, const double *xy, size_t nt, const
     return LH_OK;
 }
 
-lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
-                           size_t seg_count, const lh_index *segs, int boundary_free,
-                           const lh_allocator *alloc, char *msg, size_t msg_size)
+lh_status lh_cdt_check(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
+                       size_t seg_count, const lh_index *segs, int boundary_free,
+                       const lh_allocator *alloc, char *msg, size_t msg_size)
 {
     if (msg && msg_size) msg[0] = 0;
     lh_allocator al;

@@ -316,16 +316,16 @@ LH_TEST(the_check_rejects_what_is_not_delaunay)
     double x[] = {0, 0, 2, 0, 2, 1, 0, 1.2};
     lh_index good[] = {0, 1, 2, 0, 2, 3}, bad[] = {0, 1, 3, 1, 2, 3}, flat[] = {0, 1, 1};
     char msg[200];
-    lh_status a = lh_check_delaunay(2, 4, x, 2, good, NULL, msg, sizeof msg);
-    lh_status b = lh_check_delaunay(2, 4, x, 2, bad, NULL, msg, sizeof msg);
+    lh_status a = lh_delaunay_check(2, 4, x, 2, good, NULL, msg, sizeof msg);
+    lh_status b = lh_delaunay_check(2, 4, x, 2, bad, NULL, msg, sizeof msg);
     LH_EXPECT_TRUE((a == LH_OK) != (b == LH_OK)); /* exactly one diagonal is Delaunay */
-    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, x, 1, good, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, x, 1, good, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_TRUE(strstr(msg, "site 3") != NULL); /* site 3 unused */
-    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, x, 1, flat, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, x, 1, flat, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_TRUE(strstr(msg, "repeats") != NULL);
     double c[] = {0, 0, 1, 0, 2, 0, 1, 1}; /* a flat triangle along y = 0 */
     lh_index cf[] = {0, 1, 3, 1, 2, 3, 0, 2, 1};
-    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, c, 3, cf, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, c, 3, cf, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_TRUE(strstr(msg, "flat") != NULL);
 }
 

@@ -542,7 +542,7 @@ LH_TEST(the_site_count_limit)
     lh_tri_free(t);
 }
 
-/* lh_check_delaunay with counts no array can have: 2^60 simplices in 3D made a
+/* lh_delaunay_check with counts no array can have: 2^60 simplices in 3D made a
  * 4-byte block ((2^62 + 1) * 4 wraps around) and then wrote past it; now
  * LH_ERR_TOO_LARGE before any allocation. */
 LH_TEST(check_delaunay_refuses_counts_that_wrap)
@@ -555,12 +555,12 @@ LH_TEST(check_delaunay_refuses_counts_that_wrap)
     lh_options_default(&o);
     o.alloc = &a;
     char msg[160];
-    LH_EXPECT_EQ_INT(lh_check_delaunay(3, 4, tet, (size_t)1 << 60, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, 4, tet, (size_t)1 << 60, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
     LH_EXPECT_STREQ(msg, "4 sites and 1152921504606846976 simplices: more than an lh_index or a size_t can count");
-    LH_EXPECT_EQ_INT(lh_check_delaunay(3, SIZE_MAX / 2, tet, 1, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
-    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 3, tet, SIZE_MAX, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, SIZE_MAX / 2, tet, 1, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 3, tet, SIZE_MAX, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
     LH_EXPECT_EQ_U64(p.peak, 0);
-    LH_EXPECT_EQ_INT(lh_check_delaunay(3, 4, tet, 1, simp, &o, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, 4, tet, 1, simp, &o, msg, sizeof msg), LH_OK);
 }
 
 int main(int argc, char **argv)

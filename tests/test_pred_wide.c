@@ -70,7 +70,7 @@ static void few_exact(lh_test_state *lh_t_, int d, size_t n, const double *x, un
     lh_tri *t = NULL;
     LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, &opt, &t), LH_OK);
     char msg[256] = "";
-    LH_EXPECT_EQ_INT(lh_check_delaunay(d, n, x, lh_tri_count(t), lh_tri_simplices(t), NULL, msg,
+    LH_EXPECT_EQ_INT(lh_delaunay_check(d, n, x, lh_tri_count(t), lh_tri_simplices(t), NULL, msg,
                                        sizeof msg),
                      LH_OK);
     lh_pred_counters c;

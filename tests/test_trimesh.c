@@ -1,5 +1,5 @@
 /* test_trimesh.c — 2D meshing (lifthull.h, "2D meshing"): lh_triangulate_pslg on
- * Triangle's files and earcut's polygons, checked exactly by lh_check_trimesh (every
+ * Triangle's files and earcut's polygons, checked exactly by lh_cdt_check (every
  * triangle counterclockwise, subsegments are edges, boundary edges are subsegments,
  * every other edge locally Delaunay); the CDT of a polygon with h holes has n + 2h - 2
  * triangles; quality bounds met but at small input angles; every degenerate input's
@@ -226,7 +226,7 @@ static lh_trimesh *mesh_all_delaunay(lh_test_state *lh_t_, const lh_pslg *g, con
     lh_trimesh *m = mesh_checked(lh_t_, g, o, what);
     char msg[256] = "";
     if (!m) return NULL;
-    LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
+    LH_EXPECT_EQ_INT(lh_cdt_check(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
                                       lh_trimesh_triangles(m), 0, NULL, 1, NULL, msg, sizeof msg),
                      LH_OK);
     if (msg[0]) LH_NOTE("%s: %s", what, msg);
@@ -250,7 +250,7 @@ LH_TEST(conforming_delaunay_has_every_edge_delaunay)
         char msg[256] = "";
         /* the plain CDT of these files is not conforming: the test can fail */
         if (cdt && i == 1) /* la.poly */
-            LH_EXPECT_EQ_INT(lh_check_trimesh(lh_trimesh_point_count(cdt), lh_trimesh_points(cdt),
+            LH_EXPECT_EQ_INT(lh_cdt_check(lh_trimesh_point_count(cdt), lh_trimesh_points(cdt),
                                               lh_trimesh_triangle_count(cdt), lh_trimesh_triangles(cdt), 0, NULL,
                                               1, NULL, msg, sizeof msg),
                              LH_ERR_INVALID_MESH);
@@ -698,7 +698,7 @@ LH_TEST(conforming_below_the_floor_is_reported)
         lh_trimesh_stats st;
         lh_trimesh_get_stats(m, &st);
         char msg[256] = "";
-        const lh_status conforming = lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m),
+        const lh_status conforming = lh_cdt_check(lh_trimesh_point_count(m), lh_trimesh_points(m),
                                                       lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0,
                                                       NULL, 1, NULL, msg, sizeof msg);
         LH_EXPECT_GT_U64(st.segments_unsplit, 0);
@@ -1181,33 +1181,33 @@ LH_TEST(the_check_rejects_what_is_not_a_cdt)
     const lh_index good[] = {0, 1, 2, 0, 2, 3}, flipped[] = {0, 2, 1, 0, 2, 3};
     const lh_index hull[] = {0, 1, 1, 2, 2, 3, 3, 0};
     char msg[128];
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 4, hull, 0, NULL, msg, sizeof msg), LH_OK);
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, flipped, 4, hull, 0, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, xy, 2, good, 4, hull, 0, NULL, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, xy, 2, flipped, 4, hull, 0, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "triangle 0 is not counterclockwise with positive area");
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 0, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, xy, 2, good, 3, hull, 0, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "a boundary edge of triangle 1 is not a subsegment");
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 3, hull, 1, NULL, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, xy, 2, good, 3, hull, 1, NULL, msg, sizeof msg), LH_OK);
     /* misuse: a message says which argument */
     const lh_index far_seg[] = {0, 1, 1, 7};
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 2, far_seg, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, xy, 2, good, 2, far_seg, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "subsegment 1: endpoint 7 is not a point (0..3)");
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, NULL, 2, good, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, NULL, 2, good, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "xy is NULL with a count above 0");
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, NULL, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, xy, 2, NULL, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "tris is NULL with a count above 0");
     const lh_allocator half = {NULL, NULL, NULL};
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, xy, 2, good, 0, NULL, 1, &half, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, xy, 2, good, 0, NULL, 1, &half, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "the allocator lacks alloc or free");
     /* a kite whose diagonal is not Delaunay: (0,0) (2,-1) (4,0) (2,1) split 1-3 is
        Delaunay, split 0-2 is not */
     const double kite[] = {0, 0, 2, -0.5, 4, 0, 2, 0.5};
     const lh_index long_diag[] = {0, 1, 2, 0, 2, 3}, short_diag[] = {0, 1, 3, 1, 2, 3};
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, short_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_OK);
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, long_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, kite, 2, short_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, kite, 2, long_diag, 0, NULL, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "an unconstrained edge of triangle 0 is not locally Delaunay");
     const lh_index seg[] = {0, 2}; /* ... unless that diagonal is a subsegment */
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, long_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_OK);
-    LH_EXPECT_EQ_INT(lh_check_trimesh(4, kite, 2, short_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, kite, 2, long_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_cdt_check(4, kite, 2, short_diag, 1, seg, 1, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "subsegment 0 is not an edge of the triangulation");
 }
 
@@ -1229,7 +1229,7 @@ static lh_status check_with(lh_test_state *lh_t_, const lh_allocator *a, const v
 {
     (void)lh_t_;
     const lh_trimesh *m = user;
-    return lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
+    return lh_cdt_check(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
                             lh_trimesh_triangles(m), lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0, a,
                             NULL, 0);
 }

@@ -346,7 +346,7 @@ LH_API void lh_tri_pred_counters(const lh_tri *t, lh_pred_counters *out);
 LH_API void lh_tri_free(lh_tri *t);
 
 /*
- * lh_check_delaunay: exact validity check of a triangulation given as sites and
+ * lh_delaunay_check: exact validity check of a triangulation given as sites and
  * simplices (any simplex order, any vertex order): every simplex has positive volume
  * after orienting it; every facet is shared by at most two simplices; every interior
  * facet is locally Delaunay (the opposite vertex is not strictly inside the other
@@ -359,7 +359,7 @@ LH_API void lh_tri_free(lh_tri *t);
  * bad allocator; LH_ERR_TOO_LARGE, with the reason in msg, for n or count beyond what
  * lh_index and size_t can count (the check's sizes would wrap around).
  */
-LH_API lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
+LH_API lh_status lh_delaunay_check(int d, size_t n, const double *xyz, size_t count,
                                    const lh_index *simplices, const lh_options *opt, char *msg,
                                    size_t msg_size);
 /* The same for a handle, also verifying its neighbour and hull arrays; for a
@@ -884,7 +884,7 @@ LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
  * refinement algorithms for triangular mesh generation"). Exact: every decision is an
  * exact orient_2 or incircle, so every triangle is positively oriented, every segment
  * is a union of edges, and every edge that is not on a segment is locally Delaunay
- * (lh_trimesh_check). Steiner points are constructions, rounded once each: a point
+ * (lh_cdt_check). Steiner points are constructions, rounded once each: a point
  * put on a segment is within an ulp of it, not necessarily exactly on it.
  *
  * Degenerate input, resolved and reported in lh_trimesh_stats: exact duplicate
@@ -984,7 +984,7 @@ LH_API int lh_triangle_scaled_edges(const double a[2], const double b[2], const 
                                     double d[3][2]);
 
 /*
- * lh_check_trimesh: exact check of a 2D triangulation of a domain — points (n, xy),
+ * lh_cdt_check: exact check of a 2D triangulation of a domain — points (n, xy),
  * triangles (3 indices each), subsegments (2 indices each): every triangle
  * counterclockwise with positive area; edges shared by at most two triangles; every subsegment an
  * edge; every edge on the boundary a subsegment (unless boundary_free); every edge
@@ -993,9 +993,9 @@ LH_API int lh_triangle_scaled_edges(const double a[2], const double b[2], const 
  * count, a subsegment endpoint out of range, an allocator lacking alloc or free) or
  * LH_ERR_TOO_LARGE, the argument named in msg; LH_ERR_NOMEM.
  */
-LH_API lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
-                                  size_t seg_count, const lh_index *segs, int boundary_free,
-                                  const lh_allocator *alloc, char *msg, size_t msg_size);
+LH_API lh_status lh_cdt_check(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
+                              size_t seg_count, const lh_index *segs, int boundary_free,
+                              const lh_allocator *alloc, char *msg, size_t msg_size);
 
 #ifdef __cplusplus
 }
