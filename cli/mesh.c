@@ -299,7 +299,7 @@ int lh_cli_mesh(int argc, char **argv)
             lh_cli_trimesh_report(stdout, m, a.opt.min_angle, ok_kind == OUT_VTU || ok_kind == OUT_OFF ? 0 : 1);
         } else if (rc == LH_EXIT_OK && !a.quiet) {
             lh_trimesh_stats s;
-            lh_trimesh_get_stats(m, &s);
+            lh_trimesh_stats_get(m, &s);
             printf("%s: %zu points, %zu triangles (%zu Steiner points), smallest angle %.4g degrees\n", a.output,
                    lh_trimesh_point_count(m), s.triangles, s.steiner_points, s.min_angle);
             if (s.bad_triangles)

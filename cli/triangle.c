@@ -229,7 +229,7 @@ static int run(const sw *o, const char *file)
         if (rc == LH_EXIT_OK && o->V) lh_cli_trimesh_report(stdout, m, opt.min_angle, o->files.base);
         if (rc == LH_EXIT_OK && !o->Q && !o->V) {
             lh_trimesh_stats s;
-            lh_trimesh_get_stats(m, &s);
+            lh_trimesh_stats_get(m, &s);
             printf("%s: %zu points, %zu triangles (%zu Steiner points), smallest angle %.4g degrees, %.3f s\n",
                    outb, lh_trimesh_point_count(m), s.triangles, s.steiner_points, s.min_angle, secs);
             if (s.bad_triangles)

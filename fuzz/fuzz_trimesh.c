@@ -268,8 +268,8 @@ static int same(const lh_trimesh *a, const lh_trimesh *b)
     const size_t np = lh_trimesh_point_count(a), nt = lh_trimesh_triangle_count(a),
                  ns = lh_trimesh_segment_count(a);
     lh_trimesh_stats sa, sb;
-    lh_trimesh_get_stats(a, &sa);
-    lh_trimesh_get_stats(b, &sb);
+    lh_trimesh_stats_get(a, &sa);
+    lh_trimesh_stats_get(b, &sb);
     return np == lh_trimesh_point_count(b) && nt == lh_trimesh_triangle_count(b) &&
            ns == lh_trimesh_segment_count(b) && !memcmp(&sa, &sb, sizeof sa) &&
            !memcmp(lh_trimesh_points(a), lh_trimesh_points(b), 2 * np * sizeof(double)) &&
@@ -437,7 +437,7 @@ static void check_mesh(const input *in, const lh_trimesh *m)
         }
     }
     lh_trimesh_stats st;
-    lh_trimesh_get_stats(m, &st);
+    lh_trimesh_stats_get(m, &st);
     const lh_trimesh_options *o = &in->o;
     if (st.input_vertices != n || st.duplicates_merged != in->dups || st.triangles != nt ||
         st.steiner_points != np - n || st.crossings_split > st.steiner_on_segments ||
@@ -491,7 +491,7 @@ static void check_refined(const input *in, const lh_pslg *g, const lh_trimesh_op
     for (size_t s = 0; s < ns; s++)
         if (par[s] < -1 || par[s] >= (lh_index)g->segment_count) abort();
     lh_trimesh_stats st;
-    lh_trimesh_get_stats(m, &st);
+    lh_trimesh_stats_get(m, &st);
     if (st.input_vertices != n || st.triangles != nt || st.steiner_points != np - n || st.crossings_split ||
         st.steiner_points > o->max_steiner ||
         (st.steiner_limit_reached && st.steiner_points + st.steiner_removed != o->max_steiner) ||
@@ -593,7 +593,7 @@ static void describe(const input *in, lh_status st, const lh_trimesh *m, const c
     fprintf(stderr, "-> %s \"%s\"", lh_status_name(st), msg);
     if (m) {
         lh_trimesh_stats s;
-        lh_trimesh_get_stats(m, &s);
+        lh_trimesh_stats_get(m, &s);
         fprintf(stderr, ": %zu triangles, %zu Steiner (%zu on segments)%s, %zu bad, angles %.3f..%.3f",
                 s.triangles, s.steiner_points, s.steiner_on_segments, s.steiner_limit_reached ? " limit" : "",
                 s.bad_triangles, s.min_angle, s.max_angle);
@@ -645,9 +645,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         input plain = in;
         plain.o.smooth = 0;
         lh_trimesh_stats a, b;
-        lh_trimesh_get_stats(m1, &a);
+        lh_trimesh_stats_get(m1, &a);
         if (run(&plain, &c2, &m2, msg, sizeof msg) != LH_OK) abort();
-        lh_trimesh_get_stats(m2, &b);
+        lh_trimesh_stats_get(m2, &b);
         if (a.min_angle < b.min_angle - 1e-9 || b.smoothing_moves) abort();
         lh_trimesh_free(m2);
     }

@@ -467,7 +467,7 @@ const lh_index *lh_trimesh_segment_markers(const lh_trimesh *m) { return m ? m->
 const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m) { return m ? m->spar : NULL; }
 const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m) { return m ? m->bad : NULL; }
 
-void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out)
+void lh_trimesh_stats_get(const lh_trimesh *m, lh_trimesh_stats *out)
 {
     if (!out) return;
     if (!m) {

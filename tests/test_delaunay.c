@@ -218,14 +218,14 @@ LH_TEST(predicate_counters_report_the_stages)
     LH_ASSERT_EQ_INT(lh_delaunay(3, 64, x, NULL, &t), LH_OK);
     LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
     lh_pred_counters c;
-    lh_tri_pred_counters(t, &c);
+    lh_tri_pred_counters_get(t, &c);
     LH_EXPECT_GT_U64(c.calls, 0);
     LH_EXPECT_EQ_U64(c.filter_exits + c.grid_exits + c.residue_exits + c.exact_exits, c.calls);
     LH_EXPECT_GT_U64(c.residue_exits, 0);
     LH_EXPECT_EQ_U64(c.exact_exits, 0);
     LH_EXPECT_GT_U64(c.zero_results, 0);
     lh_tri_free(t);
-    lh_tri_pred_counters(NULL, &c);
+    lh_tri_pred_counters_get(NULL, &c);
     LH_EXPECT_EQ_U64(c.calls, 0);
 }
 

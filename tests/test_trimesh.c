@@ -47,7 +47,7 @@ static void expect_segments_kept(lh_test_state *lh_t_, const lh_pslg *g, const l
     for (size_t s = 0; s < lh_trimesh_segment_count(m); s++)
         if (par[s] >= 0) hits[par[s]]++;
     lh_trimesh_stats st;
-    lh_trimesh_get_stats(m, &st);
+    lh_trimesh_stats_get(m, &st);
     /* a segment with an endpoint in no triangle lay in a hole or outside: removed */
     char *used = calloc(lh_trimesh_point_count(m) + 1, 1);
     LH_ASSERT_TRUE(used != NULL);
@@ -74,7 +74,7 @@ LH_TEST(cdt_of_triangle_files_is_exactly_valid)
         lh_trimesh *m = mesh_checked(lh_t_, &g, NULL, triangle_files[i]);
         if (m) {
             lh_trimesh_stats st;
-            lh_trimesh_get_stats(m, &st);
+            lh_trimesh_stats_get(m, &st);
             LH_EXPECT_EQ_U64(st.steiner_points, 0);
             LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), g.n);
             expect_segments_kept(lh_t_, &g, m);
@@ -100,7 +100,7 @@ LH_TEST(earcut_polygons_have_n_plus_2h_minus_2_triangles)
         lh_trimesh *m = mesh_checked(lh_t_, &g, NULL, files[i]);
         if (m) {
             lh_trimesh_stats st;
-            lh_trimesh_get_stats(m, &st);
+            lh_trimesh_stats_get(m, &st);
             /* rings: a segment closes each, so segments = vertices per ring; one-point
                rings (earcut's Steiner points) have no segment */
             size_t rings = 0, alone = g.n;
@@ -149,7 +149,7 @@ LH_TEST(quality_bound_met_but_at_small_input_angles)
         double *small = input_angles(&g);
         if (m && small) {
             lh_trimesh_stats st;
-            lh_trimesh_get_stats(m, &st);
+            lh_trimesh_stats_get(m, &st);
             size_t below = 0;
             for (size_t v = 0; v < g.n; v++) below += small[v] < 30;
             if (!below) LH_EXPECT_GE_INT(st.min_angle, 30.0);
@@ -186,7 +186,7 @@ LH_TEST(chews_rule_removes_points_crowding_a_segment)
         lh_trimesh *m = mesh_checked(lh_t_, &g, &o, triangle_files[i]);
         if (m) {
             lh_trimesh_stats st;
-            lh_trimesh_get_stats(m, &st);
+            lh_trimesh_stats_get(m, &st);
             removed += st.steiner_removed;
             const size_t np = lh_trimesh_point_count(m);
             LH_EXPECT_EQ_U64(np, g.n + st.steiner_points);
@@ -231,7 +231,7 @@ static lh_trimesh *mesh_all_delaunay(lh_test_state *lh_t_, const lh_pslg *g, con
                      LH_OK);
     if (msg[0]) LH_NOTE("%s: %s", what, msg);
     lh_trimesh_stats st;
-    lh_trimesh_get_stats(m, &st);
+    lh_trimesh_stats_get(m, &st);
     LH_EXPECT_EQ_U64(st.segments_unsplit, 0);
     expect_segments_kept(lh_t_, g, m);
     return m;
@@ -295,8 +295,8 @@ LH_TEST(smoothing_raises_angles_and_keeps_the_mesh_valid)
     lh_trimesh *b = mesh_checked(lh_t_, &g, &o, "A smoothed");
     if (a && b) {
         lh_trimesh_stats sa, sb;
-        lh_trimesh_get_stats(a, &sa);
-        lh_trimesh_get_stats(b, &sb);
+        lh_trimesh_stats_get(a, &sa);
+        lh_trimesh_stats_get(b, &sb);
         LH_EXPECT_GT_U64(sb.smoothing_moves, 10);
         LH_EXPECT_EQ_U64(sb.triangles, sa.triangles);
         LH_EXPECT_LE_DBL(sa.min_angle, sb.min_angle);
@@ -323,7 +323,7 @@ LH_TEST(area_bound_and_steiner_limit)
     lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "A -q20 -a0.01");
     lh_trimesh_stats st;
     if (m) {
-        lh_trimesh_get_stats(m, &st);
+        lh_trimesh_stats_get(m, &st);
         LH_EXPECT_LE_DBL(st.max_area, 0.01);
         LH_EXPECT_GT_U64(st.triangles, 60);
     }
@@ -331,7 +331,7 @@ LH_TEST(area_bound_and_steiner_limit)
     o.max_steiner = 10;
     m = mesh_checked(lh_t_, &g, &o, "A -S10");
     if (m) {
-        lh_trimesh_get_stats(m, &st);
+        lh_trimesh_stats_get(m, &st);
         LH_EXPECT_EQ_U64(st.steiner_points, 10);
         LH_EXPECT_EQ_INT(st.steiner_limit_reached, 1);
     }
@@ -583,7 +583,7 @@ LH_TEST(crossings_are_split_when_asked)
     lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "X");
     lh_trimesh_stats st;
     if (m) {
-        lh_trimesh_get_stats(m, &st);
+        lh_trimesh_stats_get(m, &st);
         LH_EXPECT_EQ_U64(st.crossings_split, 1);
         LH_EXPECT_EQ_U64(lh_trimesh_point_count(m), 5);
         LH_EXPECT_EQ_U64(lh_trimesh_triangle_count(m), 4);
@@ -602,7 +602,7 @@ LH_TEST(crossings_are_split_when_asked)
         o.convex_hull = 0;
         m = mesh_checked(lh_t_, &g, &o, water[i].file);
         if (m) {
-            lh_trimesh_get_stats(m, &st);
+            lh_trimesh_stats_get(m, &st);
             LH_EXPECT_EQ_U64(st.crossings_split, water[i].crossings);
         }
         lh_trimesh_free(m);
@@ -628,7 +628,7 @@ LH_TEST(an_overlap_follows_a_chain_bent_at_a_crossing)
     lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "repeated segment");
     lh_trimesh_stats st;
     if (m) {
-        lh_trimesh_get_stats(m, &st);
+        lh_trimesh_stats_get(m, &st);
         LH_EXPECT_EQ_U64(st.crossings_split, 1);
         LH_EXPECT_EQ_U64(st.segments_overlapping, 1);
         LH_EXPECT_LE_U64(st.steiner_points, 100);
@@ -662,7 +662,7 @@ LH_TEST(a_small_angle_far_from_the_origin_ends)
     lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "small angle at 10^6");
     lh_trimesh_stats st;
     if (m) {
-        lh_trimesh_get_stats(m, &st);
+        lh_trimesh_stats_get(m, &st);
         LH_EXPECT_EQ_INT(st.steiner_limit_reached, 0);
         LH_EXPECT_LE_U64(st.steiner_points, 2000);
     }
@@ -696,7 +696,7 @@ LH_TEST(conforming_below_the_floor_is_reported)
     lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "conforming at 2^40");
     if (m) {
         lh_trimesh_stats st;
-        lh_trimesh_get_stats(m, &st);
+        lh_trimesh_stats_get(m, &st);
         char msg[256] = "";
         const lh_status conforming = lh_cdt_check(lh_trimesh_point_count(m), lh_trimesh_points(m),
                                                       lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0,
@@ -734,7 +734,7 @@ LH_TEST(a_bent_segment_still_meets_the_vertex_on_it)
     lh_trimesh *m = mesh_checked(lh_t_, &g, &o, "bent ring");
     if (m) {
         lh_trimesh_stats st;
-        lh_trimesh_get_stats(m, &st);
+        lh_trimesh_stats_get(m, &st);
         LH_EXPECT_GT_U64(st.crossings_split, 0);
         /* segment 13's chain goes through vertex 3 */
         const lh_index *par = lh_trimesh_segment_parents(m), *sv = lh_trimesh_segments(m);
@@ -784,7 +784,7 @@ LH_TEST(earcut_degenerate_rings_are_valid_or_refused_clearly)
                 LH_EXPECT_EQ_INT(check(m, cmsg, sizeof cmsg), LH_OK);
                 if (cmsg[0]) LH_NOTE("%s: %s", files[i], cmsg);
                 lh_trimesh_stats ts;
-                lh_trimesh_get_stats(m, &ts);
+                lh_trimesh_stats_get(m, &ts);
                 if (ts.steiner_limit_reached) LH_NOTE("%s run %d: the Steiner budget ran out", files[i], run);
                 LH_EXPECT_EQ_INT(ts.steiner_limit_reached, 0);
                 meshed += run == 1;
@@ -941,7 +941,7 @@ static size_t refine_cover(lh_test_state *lh_t_, const lh_trimesh *old, const lh
     lh_trimesh *m = mesh_checked(lh_t_, &g, o, what);
     if (!m) return 0;
     lh_trimesh_stats st;
-    lh_trimesh_get_stats(m, &st);
+    lh_trimesh_stats_get(m, &st);
     const double before = area2_sum(old), after = area2_sum(m);
     if (fabs(after - before) > 1e-12 * before) LH_NOTE("%s: area %.17g, was %.17g", what, after / 2, before / 2);
     LH_EXPECT_TRUE(fabs(after - before) <= 1e-12 * before);
@@ -1043,7 +1043,7 @@ LH_TEST(degenerate_input_is_resolved_and_reported)
     lh_trimesh *m = mesh_checked(lh_t_, &g, NULL, "degenerate");
     if (m) {
         lh_trimesh_stats st;
-        lh_trimesh_get_stats(m, &st);
+        lh_trimesh_stats_get(m, &st);
         LH_EXPECT_EQ_U64(st.duplicates_merged, 1);
         LH_EXPECT_EQ_U64(st.segments_dropped, 1);
         LH_EXPECT_EQ_U64(st.segments_overlapping, 1);
@@ -1166,7 +1166,7 @@ LH_TEST(hole_seeds_on_free_vertices_carve)
     LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_OK);
     if (m) {
         lh_trimesh_stats s;
-        lh_trimesh_get_stats(m, &s);
+        lh_trimesh_stats_get(m, &s);
         LH_EXPECT_EQ_U64(lh_trimesh_triangle_count(m), 8); /* the ring */
         LH_EXPECT_EQ_U64(s.holes_ignored, 8);
     }

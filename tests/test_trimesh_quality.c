@@ -38,7 +38,7 @@ static lh_trimesh *mesh_valid(lh_test_state *lh_t_, const lh_pslg *g, const lh_t
         LH_NOTE("%s", msg);
         return NULL;
     }
-    lh_trimesh_get_stats(m, st);
+    lh_trimesh_stats_get(m, st);
     const lh_status c = lh_test_check_trimesh(m, msg, sizeof msg);
     if (c != LH_OK) LH_NOTE("check: %s", msg);
     LH_EXPECT_EQ_INT(c, LH_OK);

@@ -342,7 +342,7 @@ LH_API size_t lh_tri_duplicate_count(const lh_tri *t); /* sites merged into an e
 /* How often each predicate stage ran for t (lh_pred_counters): the whole lh_delaunay
  * run (the fixed-dimension engines' inline filters included), then every query and
  * insertion since. All zero for t NULL. */
-LH_API void lh_tri_pred_counters(const lh_tri *t, lh_pred_counters *out);
+LH_API void lh_tri_pred_counters_get(const lh_tri *t, lh_pred_counters *out);
 LH_API void lh_tri_free(lh_tri *t);
 
 /*
@@ -967,7 +967,7 @@ typedef struct lh_trimesh_stats {
                                         else 0 (no budget)                           */
     int steiner_budget_reached;      /* refinement stopped there: bad_triangles are left */
 } lh_trimesh_stats;
-LH_API void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out);
+LH_API void lh_trimesh_stats_get(const lh_trimesh *m, lh_trimesh_stats *out);
 /* The triangles still bad at the end (lh_trimesh_stats.bad_triangles of them). */
 LH_API const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
 
