@@ -1,5 +1,5 @@
 /* mesh.c — `lifthull mesh`: 2D meshing with lifthull's own long options — the
- * computation of `lifthull triangle` (lh_triangulate_pslg: constrained Delaunay
+ * computation of `lifthull triangle` (lh_pslg_triangulate: constrained Delaunay
  * triangulation of a .poly, .node or JSON rings, optionally refined), written in the
  * format -o's extension names, or the quality report on standard output. */
 #include "cli.h"
@@ -284,7 +284,7 @@ int lh_cli_mesh(int argc, char **argv)
     if (a.ignore_holes) in.g.hole_count = 0;
     char msg[512];
     lh_trimesh *m = NULL;
-    lh_status st = lh_triangulate_pslg(&in.g, &a.opt, &m, msg, sizeof msg);
+    lh_status st = lh_pslg_triangulate(&in.g, &a.opt, &m, msg, sizeof msg);
     int rc;
     if (st != LH_OK) {
         lh_cli_pslg_report(&in, st, msg);

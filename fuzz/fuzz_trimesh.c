@@ -1,5 +1,5 @@
 /*
- * fuzz_trimesh.c — libFuzzer target: lh_triangulate_pslg on small fuzzer-chosen PSLGs.
+ * fuzz_trimesh.c — libFuzzer target: lh_pslg_triangulate on small fuzzer-chosen PSLGs.
  * 3..40 vertices on the integer grid -8..8 (so collinear, cocircular and duplicate
  * vertices are common), mapped exactly by (x + offset) * 2^k (offset 0, 1e6 or 2^40:
  * the predicates' exact stages); a ring through the first r vertices and up to 60
@@ -308,7 +308,7 @@ static lh_status run(const input *in, counter *c, lh_trimesh **m, char *msg, siz
     lh_allocator al = {count_alloc, count_free, c};
     lh_trimesh_options o = in->o;
     o.alloc = &al;
-    return lh_triangulate_pslg(&in->g, &o, m, msg, size);
+    return lh_pslg_triangulate(&in->g, &o, m, msg, size);
 }
 
 /* The checks of a successful run (the header's list). */

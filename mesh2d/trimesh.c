@@ -1,5 +1,5 @@
 /*
- * trimesh.c — lh_triangulate_pslg: the 2D meshing pipeline and its result handle.
+ * trimesh.c — lh_pslg_triangulate: the 2D meshing pipeline and its result handle.
  *   1. the Delaunay triangulation of the vertices (lh_delaunay, exact; duplicates
  *      merged there);
  *   2. the segments inserted in input order (cdt_insert.c);
@@ -376,7 +376,7 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     return LH_OK;
 }
 
-lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
+lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
                               lh_trimesh **out, char *msg, size_t msg_size)
 {
     if (msg && msg_size) msg[0] = 0;

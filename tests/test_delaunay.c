@@ -284,16 +284,16 @@ LH_TEST(bad_input_gets_its_status)
     LH_EXPECT_EQ_INT(lh_delaunay(3, 4, x, NULL, &t), LH_ERR_DEGENERATE);
     LH_EXPECT_TRUE(t == NULL);
     int k = 99;
-    LH_EXPECT_EQ_INT(lh_affine_dim(3, 4, x, NULL, &k), LH_OK);
+    LH_EXPECT_EQ_INT(lh_coords_affine_dim(3, 4, x, NULL, &k), LH_OK);
     LH_EXPECT_EQ_INT(k, 2);
     double line[6 * 2] = {0, 0, 1, 1, 2, 2, 3, 3, 5, 5, 8, 8};
     LH_EXPECT_EQ_INT(lh_delaunay(2, 6, line, NULL, &t), LH_ERR_DEGENERATE);
-    LH_EXPECT_EQ_INT(lh_affine_dim(2, 6, line, NULL, &k), LH_OK);
+    LH_EXPECT_EQ_INT(lh_coords_affine_dim(2, 6, line, NULL, &k), LH_OK);
     LH_EXPECT_EQ_INT(k, 1);
     LH_EXPECT_EQ_INT(lh_delaunay(2, 0, x, NULL, &t), LH_ERR_DEGENERATE); /* empty */
     LH_EXPECT_EQ_INT(lh_delaunay(2, 1, x, NULL, &t), LH_ERR_DEGENERATE); /* one site */
     LH_EXPECT_EQ_INT(lh_delaunay(3, 3, x, NULL, &t), LH_ERR_DEGENERATE); /* n < d+1 */
-    LH_EXPECT_EQ_INT(lh_affine_dim(2, 1, x, NULL, &k), LH_OK);
+    LH_EXPECT_EQ_INT(lh_coords_affine_dim(2, 1, x, NULL, &k), LH_OK);
     LH_EXPECT_EQ_INT(k, 0);
     LH_EXPECT_EQ_INT(lh_delaunay(1, 4, x, NULL, &t), LH_ERR_DIMENSION);
     LH_EXPECT_EQ_INT(lh_delaunay(9, 4, x, NULL, &t), LH_ERR_DIMENSION);

@@ -1,4 +1,4 @@
-/* test_trimesh.c — 2D meshing (lifthull.h, "2D meshing"): lh_triangulate_pslg on
+/* test_trimesh.c — 2D meshing (lifthull.h, "2D meshing"): lh_pslg_triangulate on
  * Triangle's files and earcut's polygons, checked exactly by lh_cdt_check (every
  * triangle counterclockwise, subsegments are edges, boundary edges are subsegments,
  * every other edge locally Delaunay); the CDT of a polygon with h holes has n + 2h - 2
@@ -25,7 +25,7 @@ static lh_trimesh *mesh_checked(lh_test_state *lh_t_, const lh_pslg *g, const lh
 {
     lh_trimesh *m = NULL;
     char msg[256] = "", cmsg[256] = "";
-    lh_status st = lh_triangulate_pslg(g, o, &m, msg, sizeof msg);
+    lh_status st = lh_pslg_triangulate(g, o, &m, msg, sizeof msg);
     if (st != LH_OK) {
         LH_NOTE("%s: %s (%s)", what, lh_status_name(st), msg);
         LH_EXPECT_EQ_INT(st, LH_OK);
@@ -456,7 +456,7 @@ static void expect_failure(lh_test_state *lh_t_, const char *text, lh_status wan
     LH_ASSERT_EQ_INT(load_text(text, &g), LH_OK);
     lh_trimesh *m = (lh_trimesh *)&g;
     char msg[256];
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), want);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), want);
     LH_EXPECT_TRUE(m == NULL);
     LH_EXPECT_STREQ(msg, want_msg);
     lh_pslg_free(&g);
@@ -478,33 +478,33 @@ LH_TEST(bad_input_gets_its_error_and_line)
     g.n = 3, g.xy = xy;
     lh_trimesh *m;
     char msg[128];
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_NONFINITE);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_NONFINITE);
     LH_EXPECT_STREQ(msg, "vertex 2: coordinate is NaN or infinite");
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(NULL, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(NULL, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     /* an endpoint out of range (the reader catches it in files; a caller's array here) */
     xy[5] = 1;
     lh_index seg[2] = {0, 3};
     g.segments = seg, g.segment_count = 1;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "segment 0: endpoint 3 is not a vertex (0..2)");
     g.segment_count = 0;
     lh_trimesh_options o;
     lh_trimesh_options_default(&o);
     o.min_angle = 41;
     xy[5] = 1;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "min_angle 41 outside 0..40 degrees");
     /* just past the bound: the message shows the value, not the bound again */
     o.min_angle = 40.0000001;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "min_angle 40.000000100000001 outside 0..40 degrees");
     o.min_angle = NAN;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "min_angle nan outside 0..40 degrees");
     /* a NaN area bound is named as such (it is no angle) */
     o.min_angle = 0;
     o.max_area = NAN;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "max_area is NaN (0 or below: no area bound)");
 }
 
@@ -520,11 +520,11 @@ LH_TEST(an_invalid_mesh_to_refine_is_an_invalid_mesh)
     g.n = 4, g.xy = sq, g.cover_count = 2, g.cover = crossing;
     lh_trimesh *m = NULL;
     char msg[128];
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "the mesh to refine has crossing edges");
     LH_EXPECT_TRUE(m == NULL);
     g.xy = line, g.cover_count = 1, g.cover = flat;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "the mesh to refine has no triangle of positive area");
     LH_EXPECT_TRUE(m == NULL);
 }
@@ -541,7 +541,7 @@ LH_TEST(api_misuse_is_refused_with_a_message)
     g.n = 4, g.xy = xy, g.cover_count = 2;
     lh_trimesh *m = NULL;
     char msg[128];
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "an array of the PSLG is missing");
     LH_EXPECT_TRUE(m == NULL);
     g.cover_count = 0;
@@ -549,23 +549,23 @@ LH_TEST(api_misuse_is_refused_with_a_message)
     lh_trimesh_options o;
     lh_trimesh_options_default(&o);
     o.max_area = NAN;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "max_area is NaN (0 or below: no area bound)");
     o.max_area = 0;
     lh_allocator none = {NULL, NULL, NULL};
     o.alloc = &none;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "the allocator lacks its alloc or free hook");
     lh_index seg[2] = {0, 1};
     g.n = 0, g.segment_count = 1, g.segments = seg;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "segment 0: endpoint 0 is not a vertex (there are none)");
     LH_EXPECT_TRUE(m == NULL);
     /* counts no array can have: refused before any size is computed from them */
     g.n = 4, g.segment_count = 0, g.cover_count = SIZE_MAX, g.cover = seg;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_TOO_LARGE);
     g.cover_count = 0, g.attr_count = INT32_MAX, g.attr = xy, g.n = SIZE_MAX / 8;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_TOO_LARGE);
     LH_EXPECT_TRUE(m == NULL);
 }
 
@@ -598,7 +598,7 @@ LH_TEST(crossings_are_split_when_asked)
     for (size_t i = 0; i < sizeof water / sizeof water[0]; i++) {
         LH_ASSERT_EQ_INT(load(lh_rings_read, water[i].file, &g), LH_OK);
         char msg[256];
-        LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_DEGENERATE);
+        LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_DEGENERATE);
         o.convex_hull = 0;
         m = mesh_checked(lh_t_, &g, &o, water[i].file);
         if (m) {
@@ -779,7 +779,7 @@ LH_TEST(earcut_degenerate_rings_are_valid_or_refused_clearly)
             o.max_steiner = 20000;
             lh_trimesh *m = NULL;
             char msg[256] = "", cmsg[256] = "";
-            lh_status st = lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg);
+            lh_status st = lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg);
             if (st == LH_OK) {
                 LH_EXPECT_EQ_INT(check(m, cmsg, sizeof cmsg), LH_OK);
                 if (cmsg[0]) LH_NOTE("%s: %s", files[i], cmsg);
@@ -908,7 +908,7 @@ LH_TEST(an_existing_mesh_is_refined_with_its_area_bounds)
     lh_trimesh_free(m);
     /* a cover naming a point that does not exist */
     cells.v[0] = (lh_index)pts.n;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_STREQ(msg, "the mesh to refine names a point that does not exist, or has an edge of three triangles");
     lh_cells_free(&cells);
     lh_points_free(&pts);
@@ -1136,7 +1136,7 @@ LH_TEST(a_hole_seed_on_a_segment_is_refused)
         LH_ASSERT_EQ_INT(load_text(text, &g), LH_OK);
         lh_trimesh *m = NULL;
         char msg[128];
-        const lh_status st = lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg);
+        const lh_status st = lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg);
         if (i < 3) {
             LH_EXPECT_EQ_INT(st, LH_ERR_DEGENERATE);
             LH_EXPECT_STREQ(msg, want[i]);
@@ -1163,7 +1163,7 @@ LH_TEST(hole_seeds_on_free_vertices_carve)
     LH_ASSERT_EQ_INT(load_text(text, &g), LH_OK);
     lh_trimesh *m = NULL;
     char msg[128];
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_OK);
     if (m) {
         lh_trimesh_stats s;
         lh_trimesh_stats_get(m, &s);
@@ -1219,7 +1219,7 @@ static lh_status mesh_with(lh_test_state *lh_t_, const lh_allocator *a, const vo
     o.region_attributes = 1;
     o.alloc = a;
     lh_trimesh *m = NULL;
-    lh_status st = lh_triangulate_pslg(user, &o, &m, NULL, 0);
+    lh_status st = lh_pslg_triangulate(user, &o, &m, NULL, 0);
     if (st != LH_OK) LH_EXPECT_TRUE(m == NULL);
     lh_trimesh_free(m);
     return st;

@@ -207,7 +207,7 @@ LH_API int lh_hyperplane_exp(lh_pred *ctx, int d, const double *const *pts, doub
 /* The sign of |q - a| - |q - b| for points q, a, b of R^d (d = 1..8): -1 when a is
  * strictly nearer to q, +1 when b is, 0 when they are exactly as near. Filtered,
  * then exact for every finite double (no perturbation: ties are for the caller). */
-LH_API int lh_compare_distance(lh_pred *ctx, int d, const double *q, const double *a,
+LH_API int lh_distance_compare(lh_pred *ctx, int d, const double *q, const double *a,
                                const double *b);
 
 /* How often each stage ran since creation or the last reset. */
@@ -288,7 +288,7 @@ LH_API void lh_options_default(lh_options *opt);
  * xyz NULL, or an allocator without hooks); LH_ERR_TOO_LARGE (n*d overflows, or more
  * than LH_INDEX_MAX - 1 sites); LH_ERR_NONFINITE (a NaN or infinity: lh_coords_validate
  * names the coordinate); LH_ERR_DEGENERATE (fewer than d+1 distinct sites, or all
- * sites in an affine subspace of dimension < d — lh_affine_dim tells which; with
+ * sites in an affine subspace of dimension < d — lh_coords_affine_dim tells which; with
  * opt->affine_hull only for a single distinct site);
  * LH_ERR_NOMEM. On failure *out is NULL and nothing is leaked.
  */
@@ -299,7 +299,8 @@ LH_API lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_option
 /* The affine dimension spanned by n sites in R^d (0 for one distinct site, -1 for
  * none), computed exactly; opt as lh_delaunay's (only alloc is used; NULL:
  * defaults); LH_ERR_* as lh_delaunay for bad arguments. */
-LH_API lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt, int *dim);
+LH_API lh_status lh_coords_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt,
+                                      int *dim);
 
 /*
  * lh_tri_insert: adds m sites (m*d doubles, copied) to t; they get the indices
@@ -444,7 +445,7 @@ LH_API lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, i
 /*
  * lh_tri_nearest: the site nearest to q (d doubles): a greedy walk along Delaunay
  * edges from a vertex of the simplex lh_tri_locate finds (hint as there), every
- * distance comparison exact (lh_compare_distance). Among sites exactly equally near, the
+ * distance comparison exact (lh_distance_compare). Among sites exactly equally near, the
  * smallest index is returned (all of them are vertices of one Delaunay cell, so a
  * walk over the ties finds it); never a merged duplicate. Returns LH_OK,
  * LH_ERR_INVALID_ARGUMENT (t, q or site NULL; or a furthest-site handle; or, when
@@ -830,7 +831,7 @@ LH_API lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p);
 /* Frees what a reader allocated (not g) and zeroes g; NULL or a zeroed g is a no-op. */
 LH_API void lh_pslg_free(lh_pslg *g);
 
-/* Options of lh_triangulate_pslg; lh_trimesh_options_default sets every default.
+/* Options of lh_pslg_triangulate; lh_trimesh_options_default sets every default.
  * The letters are Triangle's switches for the same thing. */
 typedef struct lh_trimesh_options {
     const lh_allocator *alloc; /* NULL: malloc/free                                   */
@@ -879,7 +880,7 @@ typedef struct lh_trimesh_options {
 LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
 
 /*
- * lh_triangulate_pslg: the constrained Delaunay triangulation (Chew 1989) of a PSLG,
+ * lh_pslg_triangulate: the constrained Delaunay triangulation (Chew 1989) of a PSLG,
  * restricted to its domain, optionally refined (Ruppert 1995; Shewchuk 2002, "Delaunay
  * refinement algorithms for triangular mesh generation"). Exact: every decision is an
  * exact orient_2 or incircle, so every triangle is positively oriented, every segment
@@ -915,7 +916,7 @@ LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
  * from g->first_index + g->item_first_shift).
  */
 typedef struct lh_trimesh lh_trimesh;
-LH_API lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
+LH_API lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
                                      lh_trimesh **out, char *msg, size_t msg_size);
 LH_API void lh_trimesh_free(lh_trimesh *m);
 
