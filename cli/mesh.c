@@ -203,11 +203,11 @@ static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh
     switch (kind) {
     case OUT_VTU: {
         const lh_vtu_options vo = {a->ascii, lh_trimesh_triangle_attrs(m), "region"};
-        ok = (st = lh_write_vtu_opts(out.f, &v, &vo)) == LH_OK;
+        ok = (st = lh_vtu_write(out.f, &v, &vo)) == LH_OK;
         break;
     }
-    case OUT_MSH: ok = (st = lh_write_msh(out.f, &v)) == LH_OK; break;
-    case OUT_OFF: ok = (st = lh_write_off(out.f, &v)) == LH_OK; break;
+    case OUT_MSH: ok = (st = lh_msh_write(out.f, &v)) == LH_OK; break;
+    case OUT_OFF: ok = (st = lh_off_write(out.f, &v)) == LH_OK; break;
     default: {
         char title[256];
         const char *slash = strrchr(a->file, '/');

@@ -708,33 +708,32 @@ typedef struct lh_mesh_view {
  * points or cells LH_ERR_TOO_LARGE. A failed write (fprintf or ferror) gives LH_ERR_IO,
  * with the file holding a prefix of the output. Otherwise LH_OK. Doubles as "%.17g".
  *
- * lh_write_vtu   VTK XML UnstructuredGrid (.vtu), ASCII. d = 1..3 (points padded with
- *                zeros to 3 coordinates, as VTK wants), k = 1..3 (VTK cell types 3
- *                line, 5 triangle, 10 tetra). values: point data; neighbors: cell data
- *                "neighbors" with k+1 components. Indices as Int32 (Int64 past
- *                INT32_MAX points or cells, which only 64-bit indices allow).
- *                lh_write_vtu_opts below writes the same content in binary.
- * lh_write_msh   Gmsh MSH 4.1 ASCII: $MeshFormat "4.1 0 8", $Entities (one entity of
+ * lh_vtu_write   VTK XML UnstructuredGrid (.vtu), binary or ASCII as opt says (below).
+ *                d = 1..3 (points padded with zeros to 3 coordinates, as VTK wants),
+ *                k = 1..3 (VTK cell types 3 line, 5 triangle, 10 tetra). values: point
+ *                data; neighbors: cell data "neighbors" with k+1 components. Indices as
+ *                Int32 (Int64 past INT32_MAX points or cells, which only 64-bit indices
+ *                allow).
+ * lh_msh_write   Gmsh MSH 4.1 ASCII: $MeshFormat "4.1 0 8", $Entities (one entity of
  *                dimension k holding everything, bounding box of the points), $Nodes
  *                and $Elements (element types 1 segment, 2 triangle, 4 tetrahedron),
  *                tags 1-based; values as $NodeData. d = 1..3 (padded to 3), k = 1..3.
- * lh_write_node  Triangle/TetGen .node: "n d attributes 0", then "i x_1..x_d [value]",
+ * lh_node_write  Triangle/TetGen .node: "n d attributes 0", then "i x_1..x_d [value]",
  *                numbered from first_index; values become the one attribute. d = 2..8.
- * lh_write_ele   Triangle/TetGen .ele: "count k+1 0", then "i v_0..v_k", points numbered
+ * lh_ele_write   Triangle/TetGen .ele: "count k+1 0", then "i v_0..v_k", points numbered
  *                from first_index (as in the matching .node). k = 1..8.
- * lh_write_neigh Triangle/TetGen .neigh: "count k+1", then "i n_0..n_k", neighbour j
+ * lh_neigh_write Triangle/TetGen .neigh: "count k+1", then "i n_0..n_k", neighbour j
  *                opposite vertex j as in Triangle, -1 for none whatever first_index is.
  *                Needs neighbors. k = 1..8.
- * lh_write_off   OFF: "OFF", "n count 0", the points padded to 3 coordinates, then
+ * lh_off_write   OFF: "OFF", "n count 0", the points padded to 3 coordinates, then
  *                "3 a b c" per triangle: k = 2 with d = 2 (a triangulation) or d = 3
  *                (a surface, e.g. a 3D convex hull's facets).
  */
-LH_API lh_status lh_write_vtu(FILE *f, const lh_mesh_view *m);
-LH_API lh_status lh_write_msh(FILE *f, const lh_mesh_view *m);
-LH_API lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index);
-LH_API lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index);
-LH_API lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index);
-LH_API lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
+LH_API lh_status lh_msh_write(FILE *f, const lh_mesh_view *m);
+LH_API lh_status lh_node_write(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_ele_write(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_neigh_write(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_off_write(FILE *f, const lh_mesh_view *m);
 
 /*
  * The .vtu writer's choices; a zeroed struct (or NULL) gives the defaults: binary,
@@ -748,13 +747,13 @@ LH_API lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
  * ParaView/VTK and meshio read it. Offsets are Int32 up to INT32_MAX, else Int64.
  */
 typedef struct lh_vtu_options {
-    int ascii;                    /* 1: every array as text (lh_write_vtu's file)          */
+    int ascii;                    /* 1: every array as text                                */
     const double *cell_values;    /* m->count per-cell scalars as cell data, or NULL; NaN
                                      or infinity: LH_ERR_NONFINITE                        */
     const char *cell_values_name; /* its name (as values_name), NULL for "cell_value"      */
 } lh_vtu_options;
-/* lh_write_vtu with choices; checks and statuses as the writers above. */
-LH_API lh_status lh_write_vtu_opts(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
+/* The .vtu writer (above) with its choices, opt NULL for the defaults. */
+LH_API lh_status lh_vtu_write(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
 
 /* ---- 2D meshing: constrained Delaunay triangulation and quality refinement -------- */
 
