@@ -10,8 +10,18 @@
  *     thread"); distinct handles share nothing, there is no global state.
  *   - Failure: functions that can fail return an lh_status; on failure they free
  *     what they built and leave the caller's arrays untouched.
- *   - Freeing NULL is a no-op.
+ *   - Freeing NULL is a no-op; every *_default(NULL) does nothing.
  *   - Points are arrays of doubles; a point in R^k is k consecutive doubles.
+ *   - Names: lh_<noun>_<verb> for what acts on a thing (lh_tri_locate,
+ *     lh_points_read, lh_vtu_write, lh_delaunay_check); lh_<noun>_<property> for
+ *     accessors that only read (lh_tri_simplices, lh_hull_facet_count); a struct is
+ *     filled by lh_<noun>_<struct>_get(handle, &out), zeros for a NULL handle
+ *     (lh_trimesh_stats_get); options by lh_<options>_default(&opt). The predicates
+ *     are named for the predicate (lh_orient, lh_insphere) and the computations that
+ *     make a handle for what they compute (lh_delaunay, lh_convex_hull).
+ *   - Error detail beyond the status: the readers, the checks and the mesher write
+ *     one line to a caller's buffer (char *msg, size_t msg_size; msg may be NULL;
+ *     "" on success); lh_coords_validate names the offending coordinate's index.
  *
  * Coordinate range (the "accepted range"):
  *   Every finite double is accepted, subnormals included: the exact stage of the
