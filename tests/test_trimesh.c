@@ -598,7 +598,7 @@ LH_TEST(crossings_are_split_when_asked)
     for (size_t i = 0; i < sizeof water / sizeof water[0]; i++) {
         LH_ASSERT_EQ_INT(load(lh_rings_read, water[i].file, &g), LH_OK);
         char msg[256];
-        LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_DEGENERATE);
+        LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_CROSSING_SEGMENTS);
         o.convex_hull = 0;
         m = mesh_checked(lh_t_, &g, &o, water[i].file);
         if (m) {
