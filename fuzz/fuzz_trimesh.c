@@ -13,10 +13,11 @@
  *
  * The status must be what the input calls for, decided here exactly on the integer
  * grid: LH_ERR_DEGENERATE with "collinear" exactly when all vertices are collinear or
- * fewer than 3 distinct; else LH_ERR_CROSSING_SEGMENTS, "crosses", when two segments cross (their interiors meet
- * in one point that is no vertex), always without split_crossings and never when none
- * do, the message naming an earlier segment that the later one crosses, with their
- * lines (with split_crossings: two segments, README finding 9); else, with even_odd,
+ * fewer than 3 distinct; else LH_ERR_CROSSING_SEGMENTS, "crosses", when two segments
+ * cross (their interiors meet in one point that is no vertex), always without
+ * split_crossings and never when none do, the message naming an earlier segment that
+ * the later one crosses, with their lines (with split_crossings: two segments, README
+ * finding 9); else, with even_odd,
  * "vertex V ends an odd number of segments" exactly when some vertex does (V the
  * first, duplicates merged); else LH_OK or the empty-domain message (never with the
  * convex hull kept and no hole). Never LH_ERR_INTERNAL, LH_ERR_INVALID_ARGUMENT or

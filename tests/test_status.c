@@ -88,7 +88,8 @@ LH_TEST(defaults_and_frees_accept_null)
 
 int main(int argc, char **argv)
 {
-    static const lh_test_case cases[] = {LH_CASE(status_values_are_pinned), LH_CASE(defaults_and_frees_accept_null),
+    static const lh_test_case cases[] = {LH_CASE(status_values_are_pinned),
+                                         LH_CASE(defaults_and_frees_accept_null),
                                          LH_CASE(status_messages_are_distinct),
                                          LH_CASE(version_matches_header),
                                          LH_CASE(index_width_matches_header)};
