@@ -182,7 +182,7 @@ Timing run_lifthull(int d, size_t n, std::vector<double> &xyz, bool generic, int
     if (st != LH_OK) die("lh_delaunay", lh_status_message(st));
     t.simplices = lh_tri_count(tri);
     sw.stop(t);
-    lh_tri_pred_counters(tri, &t.counters);
+    lh_tri_pred_counters_get(tri, &t.counters);
     t.have_counters = true;
     lh_tri_free(tri);
     return t;

@@ -1,5 +1,5 @@
 /* check.c — `lifthull check POINTS SIMPLICES`: exactly verifies a Delaunay
- * triangulation made by any program (lh_check_delaunay). */
+ * triangulation made by any program (lh_delaunay_check). */
 #include "args.h"
 #include "cli.h"
 
@@ -58,12 +58,12 @@ int lh_cli_check(int argc, char **argv)
                 a.file[1], c.nv, p.d, p.d + 1);
     } else {
         char msg[256];
-        lh_status st = lh_check_delaunay(p.d, p.n, p.xyz, c.count, c.v, NULL, msg, sizeof msg);
+        lh_status st = lh_delaunay_check(p.d, p.n, p.xyz, c.count, c.v, NULL, msg, sizeof msg);
         if (st == LH_OK)
             printf("ok: %zu %s, the Delaunay triangulation of the %zu point%s (exact check)\n", c.count,
                    c.count == 1 ? "simplex" : "simplices", p.n, p.n == 1 ? "" : "s");
         else
-            printf("not Delaunay: %s\n", st == LH_ERR_INTERNAL ? msg : lh_status_message(st));
+            printf("not Delaunay: %s\n", st == LH_ERR_INVALID_MESH ? msg : lh_status_message(st));
         status = st == LH_OK ? lh_cli_finish_output("check") : LH_EXIT_FAIL;
     }
     lh_cells_free(&c);

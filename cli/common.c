@@ -71,7 +71,7 @@ void lh_cli_report_failure(const char *name, int d, size_t n, const double *xyz,
 {
     if (st == LH_ERR_DEGENERATE) {
         int k = -1;
-        lh_affine_dim(d, n, xyz, NULL, &k);
+        lh_coords_affine_dim(d, n, xyz, NULL, &k);
         fprintf(stderr, "%s: the %zu site%s span%s an affine subspace of dimension %d, not %d: "
                 "nothing %d-dimensional to compute%s\n", name, n, n == 1 ? "" : "s", n == 1 ? "s" : "", k, d, d,
                 k >= 1 ? " (lifthull delaunay -a triangulates within that subspace)" : "");

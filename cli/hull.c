@@ -42,7 +42,7 @@ static void facets(FILE *f, const lh_hull *h)
 static int off(FILE *f, const lh_hull *h, const lh_points *p)
 {
     lh_mesh_view m = {p->d, p->n, p->xyz, 2, lh_hull_facet_count(h), lh_hull_facets(h), NULL, NULL, NULL};
-    lh_status st = lh_write_off(f, &m);
+    lh_status st = lh_off_write(f, &m);
     if (st == LH_ERR_DIMENSION) fprintf(stderr, "lifthull hull: an OFF surface needs a 3D hull\n");
     return st == LH_OK;
 }

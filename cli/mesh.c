@@ -1,5 +1,5 @@
 /* mesh.c — `lifthull mesh`: 2D meshing with lifthull's own long options — the
- * computation of `lifthull triangle` (lh_triangulate_pslg: constrained Delaunay
+ * computation of `lifthull triangle` (lh_pslg_triangulate: constrained Delaunay
  * triangulation of a .poly, .node or JSON rings, optionally refined), written in the
  * format -o's extension names, or the quality report on standard output. */
 #include "cli.h"
@@ -203,11 +203,11 @@ static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh
     switch (kind) {
     case OUT_VTU: {
         const lh_vtu_options vo = {a->ascii, lh_trimesh_triangle_attrs(m), "region"};
-        ok = (st = lh_write_vtu_opts(out.f, &v, &vo)) == LH_OK;
+        ok = (st = lh_vtu_write(out.f, &v, &vo)) == LH_OK;
         break;
     }
-    case OUT_MSH: ok = (st = lh_write_msh(out.f, &v)) == LH_OK; break;
-    case OUT_OFF: ok = (st = lh_write_off(out.f, &v)) == LH_OK; break;
+    case OUT_MSH: ok = (st = lh_msh_write(out.f, &v)) == LH_OK; break;
+    case OUT_OFF: ok = (st = lh_off_write(out.f, &v)) == LH_OK; break;
     default: {
         char title[256];
         const char *slash = strrchr(a->file, '/');
@@ -284,7 +284,7 @@ int lh_cli_mesh(int argc, char **argv)
     if (a.ignore_holes) in.g.hole_count = 0;
     char msg[512];
     lh_trimesh *m = NULL;
-    lh_status st = lh_triangulate_pslg(&in.g, &a.opt, &m, msg, sizeof msg);
+    lh_status st = lh_pslg_triangulate(&in.g, &a.opt, &m, msg, sizeof msg);
     int rc;
     if (st != LH_OK) {
         lh_cli_pslg_report(&in, st, msg);
@@ -299,7 +299,7 @@ int lh_cli_mesh(int argc, char **argv)
             lh_cli_trimesh_report(stdout, m, a.opt.min_angle, ok_kind == OUT_VTU || ok_kind == OUT_OFF ? 0 : 1);
         } else if (rc == LH_EXIT_OK && !a.quiet) {
             lh_trimesh_stats s;
-            lh_trimesh_get_stats(m, &s);
+            lh_trimesh_stats_get(m, &s);
             printf("%s: %zu points, %zu triangles (%zu Steiner points), smallest angle %.4g degrees\n", a.output,
                    lh_trimesh_point_count(m), s.triangles, s.steiner_points, s.min_angle);
             if (s.bad_triangles)

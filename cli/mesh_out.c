@@ -28,11 +28,16 @@ typedef lh_status (*writer)(FILE *f, const lh_mesh_view *m, int first_index);
 static lh_status vtu(FILE *f, const lh_mesh_view *m, int first)
 {
     (void)first;
-    return lh_write_vtu_opts(f, m, NULL);
+    return lh_vtu_write(f, m, NULL);
 }
-static lh_status vtu_ascii(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_vtu(f, m); }
-static lh_status msh(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_msh(f, m); }
-static lh_status off(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_write_off(f, m); }
+static lh_status vtu_ascii(FILE *f, const lh_mesh_view *m, int first)
+{
+    (void)first;
+    const lh_vtu_options ascii = {1, NULL, NULL};
+    return lh_vtu_write(f, m, &ascii);
+}
+static lh_status msh(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_msh_write(f, m); }
+static lh_status off(FILE *f, const lh_mesh_view *m, int first) { (void)first; return lh_off_write(f, m); }
 
 /* One file through the whole-or-nothing mechanism. */
 static int one_file(const char *cmd, const lh_cli_args *a, const char *input, const char *path,
@@ -79,7 +84,7 @@ int lh_cli_mesh_out_check(const char *cmd, const lh_cli_args *a, const char *inp
 static int triangle_files(const char *cmd, const lh_cli_args *a, const char *input, const lh_mesh_view *m,
                           lh_cli_progress *prog)
 {
-    static const writer ws[3] = {lh_write_node, lh_write_ele, lh_write_neigh};
+    static const writer ws[3] = {lh_node_write, lh_ele_write, lh_neigh_write};
     char *path[3];
     FILE *f[3] = {0};
     int ok = tri_paths(a->output, path);

@@ -114,7 +114,7 @@ static void put_escaped(FILE *f, const char *s)
 static void legend(FILE *f, const lh_trimesh *m, double bound, const char *title)
 {
     lh_trimesh_stats s;
-    lh_trimesh_get_stats(m, &s);
+    lh_trimesh_stats_get(m, &s);
     const double fs = 200, x0 = 0.02 * CANVAS, row = 300;
     fprintf(f, "<g font-family=\"sans-serif\" font-size=\"%g\" fill=\"#333333\">\n<text x=\"%g\" y=\"%g\">", fs, x0,
             -LEGEND + row);
@@ -200,7 +200,7 @@ int lh_cli_trimesh_svg(FILE *f, const lh_trimesh *m, double min_angle, const cha
     }
     close_paths(f, count);
     lh_trimesh_stats s;
-    lh_trimesh_get_stats(m, &s);
+    lh_trimesh_stats_get(m, &s);
     const lh_index *bad = lh_trimesh_bad_triangles(m);
     count = 0;
     fprintf(f, "<g id=\"bad\" fill=\"none\" stroke=\"#d7191c\" stroke-width=\"%.3g\" stroke-linejoin=\"round\">\n",

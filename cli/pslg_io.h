@@ -31,7 +31,7 @@ int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area);
 /* Triangle's .area (area_read.c): count area bounds, one per triangle of the .ele,
  * from f into area. Returns 1, or 0 after printing the problem (FILE:LINE:COL: ...). */
 int lh_cli_area_read(FILE *f, const char *path, size_t count, double *area);
-/* Prints lh_triangulate_pslg's failure as "FILE:LINE: ..." or "FILE: ...". */
+/* Prints lh_pslg_triangulate's failure as "FILE:LINE: ..." or "FILE: ...". */
 void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg);
 
 /* Triangle's output files and what goes in them (its switches in brackets). */

@@ -171,7 +171,7 @@ static int print_coplanar(FILE *f, const lh_cli_halfspaces *hs, const lh_cli_hre
         const double *q = r->dual + i * d;
         lh_index best = r->idx[r->off[of[i]]];
         for (lh_index k = r->off[of[i]] + 1; k < r->off[of[i] + 1]; k++)
-            if (lh_compare_distance(r->pred, d, q, r->dual + (size_t)r->idx[k] * d,
+            if (lh_distance_compare(r->pred, d, q, r->dual + (size_t)r->idx[k] * d,
                                     r->dual + (size_t)best * d) < 0)
                 best = r->idx[k];
         double s = 0;

@@ -68,9 +68,9 @@ static int print_coplanar(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *m
             const double *q = mo->xyz + i * d;
             lh_index best = v[0];
             for (int k = 1; k < mo->nv; k++)
-                if (lh_compare_distance(mo->pred, d, q, mo->xyz + (size_t)v[k] * d,
+                if (lh_distance_compare(mo->pred, d, q, mo->xyz + (size_t)v[k] * d,
                                         mo->xyz + (size_t)best * d) < 0 ||
-                    (lh_compare_distance(mo->pred, d, q, mo->xyz + (size_t)v[k] * d,
+                    (lh_distance_compare(mo->pred, d, q, mo->xyz + (size_t)v[k] * d,
                                          mo->xyz + (size_t)best * d) == 0 && v[k] < best))
                     best = v[k];
             double s = 0;

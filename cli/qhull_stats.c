@@ -29,7 +29,7 @@ void lh_cli_qstats(FILE *f, const lh_cli_qopts *o, const lh_cli_qmodel *mo)
         return;
     }
     lh_pred_counters c;
-    lh_tri_pred_counters(mo->tri, &c);
+    lh_tri_pred_counters_get(mo->tri, &c);
     fputs("predicate statistics (every answer exact)\n", f);
     counter(f, c.calls, "predicate calls");
     counter(f, c.filter_exits, "decided by the floating-point filter");

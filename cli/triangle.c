@@ -1,7 +1,7 @@
 /* triangle.c — `lifthull triangle`: Shewchuk's Triangle spelled the same way
  * (switches, file names, formats), for scripts and fingers that know it:
  *     lifthull triangle -pq30a0.01 A.poly   ->  A.1.node A.1.ele A.1.poly
- * Computed by lh_triangulate_pslg (exact). Switches Triangle has and lifthull does not
+ * Computed by lh_pslg_triangulate (exact). Switches Triangle has and lifthull does not
  * (yet) are refused by name; switches that choose among Triangle's algorithms or its
  * arithmetic are accepted and change nothing (lifthull is always exact). */
 #include "cli.h"
@@ -218,7 +218,7 @@ static int run(const sw *o, const char *file)
     if (o->S) opt.max_steiner = o->steiner;
     char msg[512];
     const double t0 = lh_cli_seconds();
-    lh_status st = lh_triangulate_pslg(&in.g, &opt, &m, msg, sizeof msg);
+    lh_status st = lh_pslg_triangulate(&in.g, &opt, &m, msg, sizeof msg);
     const double secs = lh_cli_seconds() - t0;
     if (getenv("LIFTHULL_TIMING")) fprintf(stderr, "compute_ms=%.3f\n", 1e3 * secs); /* for bench/ */
     if (st != LH_OK) {
@@ -229,7 +229,7 @@ static int run(const sw *o, const char *file)
         if (rc == LH_EXIT_OK && o->V) lh_cli_trimesh_report(stdout, m, opt.min_angle, o->files.base);
         if (rc == LH_EXIT_OK && !o->Q && !o->V) {
             lh_trimesh_stats s;
-            lh_trimesh_get_stats(m, &s);
+            lh_trimesh_stats_get(m, &s);
             printf("%s: %zu points, %zu triangles (%zu Steiner points), smallest angle %.4g degrees, %.3f s\n",
                    outb, lh_trimesh_point_count(m), s.triangles, s.steiner_points, s.min_angle, secs);
             if (s.bad_triangles)

@@ -87,7 +87,7 @@ void lh_cli_trimesh_budget(FILE *out, const lh_trimesh_stats *s, double min_angl
 void lh_cli_trimesh_report(FILE *out, const lh_trimesh *m, double min_angle, int first)
 {
     lh_trimesh_stats s;
-    lh_trimesh_get_stats(m, &s);
+    lh_trimesh_stats_get(m, &s);
     const size_t nt = lh_trimesh_triangle_count(m);
     const lh_index *t = lh_trimesh_triangles(m);
     const double *xy = lh_trimesh_points(m);

@@ -46,7 +46,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     lh_tri *t = NULL, *g = NULL, *ins = NULL;
     lh_status st = lh_delaunay(d, n, x, &o, &t);
     int dim = -2;
-    lh_affine_dim(d, n, x, NULL, &dim);
+    lh_coords_affine_dim(d, n, x, NULL, &dim);
     if (st == LH_ERR_DEGENERATE) {
         if (dim >= d || (o.affine_hull && dim >= 1)) abort();
         return 0;

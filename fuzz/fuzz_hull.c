@@ -3,7 +3,7 @@
  * small integers (so coplanar, collinear and duplicate sites are common), d = 2..6.
  * Byte 0 picks d, byte 1 the grid (coarse 0..2 or 0..4, or int8 values, or quarters)
  * and the seed; the rest are coordinates. Whatever comes back must be right, exactly:
- *   - LH_OK exactly when the distinct sites span R^d (lh_affine_dim), else
+ *   - LH_OK exactly when the distinct sites span R^d (lh_coords_affine_dim), else
  *     LH_ERR_DEGENERATE with *out NULL;
  *   - lh_hull_duplicate_of maps each site to its first equal site;
  *   - every facet: d distinct site indices, none a merged duplicate, in canonical order
@@ -197,7 +197,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     lh_hull *h = NULL;
     lh_status st = lh_convex_hull(d, n, x, &o, &h);
     int dim = -2;
-    if (lh_affine_dim(d, n, x, NULL, &dim) != LH_OK) abort();
+    if (lh_coords_affine_dim(d, n, x, NULL, &dim) != LH_OK) abort();
     if (st != (dim == d ? LH_OK : LH_ERR_DEGENERATE) || (st != LH_OK) != (h == NULL)) abort();
     if (st != LH_OK) return 0;
     lh_pred *p;

@@ -8,7 +8,7 @@
  *     simplex contains q, hull_facet names a hull facet, distance > 0; the same answer
  *     from another hint;
  *   - lh_tri_nearest: a site that is no merged duplicate, as near as every site
- *     (lh_compare_distance), strictly nearer than every site of smaller index;
+ *     (lh_distance_compare), strictly nearer than every site of smaller index;
  *   - lh_tri_interpolate of two affine functions, all queries in one call: LINEAR and,
  *     for d <= 3, NATURAL reproduce them within 1e-9 relative inside the hull and give
  *     NaN outside (relative to the largest |value| at a site plus the sum of
@@ -112,7 +112,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (lh_tri_nearest(t, qi, hint, &site) != LH_OK || site < 0 || (size_t)site >= n || dup[site] != site)
             abort();
         for (size_t j = 0; j < n; j++) {
-            int c = lh_compare_distance(p, d, qi, x + (size_t)site * d, x + j * d);
+            int c = lh_distance_compare(p, d, qi, x + (size_t)site * d, x + j * d);
             if (c > 0 || (c == 0 && (lh_index)j < site && dup[j] == (lh_index)j)) abort();
         }
         for (int c = 0; c < 2; c++) {

@@ -1,5 +1,5 @@
 /*
- * fuzz_trimesh.c — libFuzzer target: lh_triangulate_pslg on small fuzzer-chosen PSLGs.
+ * fuzz_trimesh.c — libFuzzer target: lh_pslg_triangulate on small fuzzer-chosen PSLGs.
  * 3..40 vertices on the integer grid -8..8 (so collinear, cocircular and duplicate
  * vertices are common), mapped exactly by (x + offset) * 2^k (offset 0, 1e6 or 2^40:
  * the predicates' exact stages); a ring through the first r vertices and up to 60
@@ -13,15 +13,16 @@
  *
  * The status must be what the input calls for, decided here exactly on the integer
  * grid: LH_ERR_DEGENERATE with "collinear" exactly when all vertices are collinear or
- * fewer than 3 distinct; else "crosses" when two segments cross (their interiors meet
- * in one point that is no vertex), always without split_crossings and never when none
- * do, the message naming an earlier segment that the later one crosses, with their
- * lines (with split_crossings: two segments, README finding 9); else, with even_odd,
+ * fewer than 3 distinct; else LH_ERR_CROSSING_SEGMENTS, "crosses", when two segments
+ * cross (their interiors meet in one point that is no vertex), always without
+ * split_crossings and never when none do, the message naming an earlier segment that
+ * the later one crosses, with their lines (with split_crossings: two segments, README
+ * finding 9); else, with even_odd,
  * "vertex V ends an odd number of segments" exactly when some vertex does (V the
  * first, duplicates merged); else LH_OK or the empty-domain message (never with the
  * convex hull kept and no hole). Never LH_ERR_INTERNAL, LH_ERR_INVALID_ARGUMENT or
  * LH_ERR_NOMEM. On LH_OK, with an empty message:
- *   - lh_check_trimesh passes (boundary_free = 0); with conforming alone (no bound,
+ *   - lh_cdt_check passes (boundary_free = 0); with conforming alone (no bound,
  *     crossing split, smoothing move, limit or unsplit subsegment), also with no
  *     subsegments (every edge Delaunay);
  *   - indices in range, neighbours symmetric across the same edge, -1 only on
@@ -268,8 +269,8 @@ static int same(const lh_trimesh *a, const lh_trimesh *b)
     const size_t np = lh_trimesh_point_count(a), nt = lh_trimesh_triangle_count(a),
                  ns = lh_trimesh_segment_count(a);
     lh_trimesh_stats sa, sb;
-    lh_trimesh_get_stats(a, &sa);
-    lh_trimesh_get_stats(b, &sb);
+    lh_trimesh_stats_get(a, &sa);
+    lh_trimesh_stats_get(b, &sb);
     return np == lh_trimesh_point_count(b) && nt == lh_trimesh_triangle_count(b) &&
            ns == lh_trimesh_segment_count(b) && !memcmp(&sa, &sb, sizeof sa) &&
            !memcmp(lh_trimesh_points(a), lh_trimesh_points(b), 2 * np * sizeof(double)) &&
@@ -308,11 +309,11 @@ static lh_status run(const input *in, counter *c, lh_trimesh **m, char *msg, siz
     lh_allocator al = {count_alloc, count_free, c};
     lh_trimesh_options o = in->o;
     o.alloc = &al;
-    return lh_triangulate_pslg(&in->g, &o, m, msg, size);
+    return lh_pslg_triangulate(&in->g, &o, m, msg, size);
 }
 
 /* The checks of a successful run (the header's list). */
-/* lh_check_trimesh passes; indices in range, neighbours symmetric across the same
+/* lh_cdt_check passes; indices in range, neighbours symmetric across the same
  * edge, -1 only on subsegments. */
 static void check_links(const lh_trimesh *m)
 {
@@ -320,9 +321,9 @@ static void check_links(const lh_trimesh *m)
     const double *xy = lh_trimesh_points(m);
     const lh_index *tri = lh_trimesh_triangles(m), *nb = lh_trimesh_neighbors(m), *seg = lh_trimesh_segments(m);
     char msg[256];
-    if (!nt || lh_check_trimesh(np, xy, nt, tri, ns, seg, 0, NULL, msg, sizeof msg) != LH_OK) {
+    if (!nt || lh_cdt_check(np, xy, nt, tri, ns, seg, 0, NULL, msg, sizeof msg) != LH_OK) {
 #ifdef LH_FUZZ_TRIMESH_VERBOSE
-        fprintf(stderr, "lh_check_trimesh: %s\n", msg);
+        fprintf(stderr, "lh_cdt_check: %s\n", msg);
 #endif
         abort();
     }
@@ -437,7 +438,7 @@ static void check_mesh(const input *in, const lh_trimesh *m)
         }
     }
     lh_trimesh_stats st;
-    lh_trimesh_get_stats(m, &st);
+    lh_trimesh_stats_get(m, &st);
     const lh_trimesh_options *o = &in->o;
     if (st.input_vertices != n || st.duplicates_merged != in->dups || st.triangles != nt ||
         st.steiner_points != np - n || st.crossings_split > st.steiner_on_segments ||
@@ -458,7 +459,7 @@ static void check_mesh(const input *in, const lh_trimesh *m)
        split (README finding 10: unit features at 2^40, the resolution floor) */
     if (o->conforming && !st.steiner_limit_reached && !st.segments_unsplit && o->boundary_steiner == 1 &&
         !st.crossings_split && o->min_angle == 0 && o->max_area <= 0 && !o->region_areas && !st.smoothing_moves &&
-        lh_check_trimesh(np, xy, nt, tri, 0, NULL, 1, NULL, msg, sizeof msg) != LH_OK)
+        lh_cdt_check(np, xy, nt, tri, 0, NULL, 1, NULL, msg, sizeof msg) != LH_OK)
         abort();
     if ((o->region_attributes != 0) != (lh_trimesh_triangle_attrs(m) != NULL)) abort();
     const double *pa = lh_trimesh_point_attrs(m);
@@ -491,7 +492,7 @@ static void check_refined(const input *in, const lh_pslg *g, const lh_trimesh_op
     for (size_t s = 0; s < ns; s++)
         if (par[s] < -1 || par[s] >= (lh_index)g->segment_count) abort();
     lh_trimesh_stats st;
-    lh_trimesh_get_stats(m, &st);
+    lh_trimesh_stats_get(m, &st);
     if (st.input_vertices != n || st.triangles != nt || st.steiner_points != np - n || st.crossings_split ||
         st.steiner_points > o->max_steiner ||
         (st.steiner_limit_reached && st.steiner_points + st.steiner_removed != o->max_steiner) ||
@@ -593,7 +594,7 @@ static void describe(const input *in, lh_status st, const lh_trimesh *m, const c
     fprintf(stderr, "-> %s \"%s\"", lh_status_name(st), msg);
     if (m) {
         lh_trimesh_stats s;
-        lh_trimesh_get_stats(m, &s);
+        lh_trimesh_stats_get(m, &s);
         fprintf(stderr, ": %zu triangles, %zu Steiner (%zu on segments)%s, %zu bad, angles %.3f..%.3f",
                 s.triangles, s.steiner_points, s.steiner_on_segments, s.steiner_limit_reached ? " limit" : "",
                 s.bad_triangles, s.min_angle, s.max_angle);
@@ -616,11 +617,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #ifdef LH_FUZZ_TRIMESH_VERBOSE /* -DLH_FUZZ_TRIMESH_VERBOSE: what an input is, and its outcome */
     describe(&in, st, m1, msg);
 #endif
-    if (st == LH_ERR_DEGENERATE) {
+    if (st == LH_ERR_DEGENERATE || st == LH_ERR_CROSSING_SEGMENTS) {
         /* the message says which degeneracy, and it must be the one the input has */
         const int said_collinear = strstr(msg, "collinear") != NULL, said_cross = strstr(msg, "crosses") != NULL,
                   said_open = strstr(msg, "ends an odd number of segments") != NULL;
-        if (!msg[0] || m1 || c1.live) abort();
+        if (!msg[0] || m1 || c1.live || said_cross != (st == LH_ERR_CROSSING_SEGMENTS)) abort();
         /* split_crossings: a crossing is an error only when its rounded point cannot go in */
         if (in.collinear != said_collinear || (!in.collinear && !in.crossing && said_cross) ||
             (!in.collinear && in.crossing && !in.o.split_crossings && !said_cross))
@@ -645,9 +646,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         input plain = in;
         plain.o.smooth = 0;
         lh_trimesh_stats a, b;
-        lh_trimesh_get_stats(m1, &a);
+        lh_trimesh_stats_get(m1, &a);
         if (run(&plain, &c2, &m2, msg, sizeof msg) != LH_OK) abort();
-        lh_trimesh_get_stats(m2, &b);
+        lh_trimesh_stats_get(m2, &b);
         if (a.min_angle < b.min_angle - 1e-9 || b.smoothing_moves) abort();
         lh_trimesh_free(m2);
     }

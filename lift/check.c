@@ -32,6 +32,8 @@ typedef struct chk {
     lh_index *nbr;   /* computed neighbours */
     lh_pred *pred;
     int furthest;    /* furthest-site: opposite vertices inside, not outside */
+    lh_status bad;   /* a failed condition: LH_ERR_INVALID_MESH for the caller's
+                        simplices, LH_ERR_INTERNAL for a handle the library built */
     char *msg;
     size_t msg_size;
 } chk;
@@ -49,7 +51,7 @@ static lh_status fail(chk *c, const char *fmt, ...)
         vsnprintf(c->msg, c->msg_size, fmt, ap);
         va_end(ap);
     }
-    return LH_ERR_INTERNAL;
+    return c->bad;
 }
 
 static const double *site(const chk *c, lh_index v) { return c->xyz + (size_t)v * c->d; }
@@ -390,7 +392,7 @@ static lh_status run_check(chk *c, const lh_index *simplices)
     return st;
 }
 
-lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
+lh_status lh_delaunay_check(int d, size_t n, const double *xyz, size_t count,
                             const lh_index *simplices, const lh_options *opt, char *msg,
                             size_t msg_size)
 {
@@ -406,6 +408,7 @@ lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
     c.n = n;
     c.count = count;
     c.xyz = xyz;
+    c.bad = LH_ERR_INVALID_MESH;
     c.msg = msg;
     c.msg_size = msg_size;
     if (msg && msg_size) msg[0] = 0;
@@ -426,6 +429,7 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
     c.n = t->n;
     c.count = t->count;
     c.xyz = t->xyz;
+    c.bad = LH_ERR_INTERNAL;
     c.msg = msg;
     c.msg_size = msg_size;
     c.furthest = t->furthest;

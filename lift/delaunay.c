@@ -148,7 +148,8 @@ lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_options *opt,
     return LH_OK;
 }
 
-lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt, int *dim)
+lh_status lh_coords_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt,
+                               int *dim)
 {
     if (!dim) return LH_ERR_INVALID_ARGUMENT;
     lh_status st = lh__eng_check_args(d, 1, LH__ENGINE_MAX_DIM, n, xyz, opt);

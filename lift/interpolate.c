@@ -72,7 +72,8 @@ static lh_status natural(lh_tri *t, const double *q, int channels, const double 
 {
     size_t count;
     lh_status st;
-    while ((st = lh_tri_natural_coords(t, q, *hint, b->cap, b->site, b->w, &count)) == LH_ERR_TOO_LARGE) {
+    while ((st = lh_tri_natural_coords(t, q, *hint, b->cap, b->site, b->w, &count)) ==
+           LH_ERR_BUFFER_TOO_SMALL) {
         size_t cap = 2 * count;
         lh__free(&t->alloc, b->site);
         lh__free(&t->alloc, b->w);

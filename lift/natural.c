@@ -223,7 +223,7 @@ static lh_status write_out(const nn_pair *p, size_t m, size_t cap, lh_index *sit
                            double *weights, size_t *count)
 {
     *count = m;
-    if (m > cap) return LH_ERR_TOO_LARGE;
+    if (m > cap) return LH_ERR_BUFFER_TOO_SMALL;
     for (size_t i = 0; i < m; i++) {
         sites[i] = p[i].site;
         weights[i] = p[i].w;
@@ -398,6 +398,6 @@ lh_status lh_tri_natural_coords(lh_tri *t, const double *q, lh_index hint, size_
     size_t m = special_point(t, q, loc.simplex, p);
     if (m) return write_out(p, m, cap, sites, weights, count);
     st = interior(t, q, &loc, cap, sites, weights, count);
-    if (st != LH_OK && st != LH_ERR_TOO_LARGE) *count = 0;
+    if (st != LH_OK && st != LH_ERR_BUFFER_TOO_SMALL) *count = 0;
     return st;
 }

@@ -6,7 +6,7 @@
  * 2004, for 2D; the argument holds in any dimension), so descent ends at a nearest
  * site. Sites exactly as near form the vertex set of one Delaunay cell, whose
  * triangulation connects them: a walk over the ties finds the smallest index.
- * Every comparison is exact (lh_compare_distance).
+ * Every comparison is exact (lh_distance_compare).
  */
 #include "dt.h"
 #include "lh_alloc.h"
@@ -105,7 +105,7 @@ static int scan_star(walk *w, lh_index v, int want, idset *ties, lh_index *best)
         const lh_index *sv = t->simp + (size_t)s * nv, *sn = t->nbr + (size_t)s * nv;
         for (int j = 0; j < nv && *best < 0; j++) {
             if (sv[j] == v) continue;
-            int c = lh_compare_distance(t->pred, d, w->q, t->xyz + (size_t)sv[j] * d, pv);
+            int c = lh_distance_compare(t->pred, d, w->q, t->xyz + (size_t)sv[j] * d, pv);
             if (c == want && (want < 0 || set_add(ties, sv[j]) == 1)) *best = sv[j];
             if (sn[j] < 0) continue;
             int added = set_add(&w->seen, sn[j]);

@@ -138,7 +138,7 @@ const lh_index *lh_tri_vertex_simplex(const lh_tri *t) { return t ? t->vsimp : N
 const lh_index *lh_tri_duplicate_of(const lh_tri *t) { return t ? t->dup : NULL; }
 size_t lh_tri_duplicate_count(const lh_tri *t) { return t ? t->ndup : 0; }
 
-void lh_tri_pred_counters(const lh_tri *t, lh_pred_counters *out)
+void lh_tri_pred_counters_get(const lh_tri *t, lh_pred_counters *out)
 {
     lh_pred_counters_get(t ? t->pred : NULL, out);
 }

@@ -1,5 +1,5 @@
 /*
- * trimesh.c — lh_triangulate_pslg: the 2D meshing pipeline and its result handle.
+ * trimesh.c — lh_pslg_triangulate: the 2D meshing pipeline and its result handle.
  *   1. the Delaunay triangulation of the vertices (lh_delaunay, exact; duplicates
  *      merged there);
  *   2. the segments inserted in input order (cdt_insert.c);
@@ -125,8 +125,9 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri
     const long long base = (long long)g->first_index + g->item_first_shift; /* the segments' */
     lh__m2_problem pb0 = {0, {-1, -1}, -1};
     if (m->cover && (st = lh__cover_segments(m, c, m->cover, &pb0)) != LH_OK) {
-        if (st == LH_ERR_DEGENERATE) say(msg, size, NULL, 0, "the mesh to refine has crossing edges");
-        return st;
+        if (st != LH_ERR_DEGENERATE) return st;
+        say(msg, size, NULL, 0, "the mesh to refine has crossing edges");
+        return LH_ERR_INVALID_MESH;
     }
     for (size_t s = 0; s < g->segment_count; s++) {
         const lh_index a = dup[g->segments[2 * s]], b = dup[g->segments[2 * s + 1]];
@@ -144,7 +145,7 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri
                     base + (long long)s, base + (long long)o, g->segment_line[o]);
             else
                 say(msg, size, NULL, 0, "segment %lld crosses segment %lld", base + (long long)s, base + (long long)o);
-            return st;
+            return LH_ERR_CROSSING_SEGMENTS;
         }
         if (st != LH_OK) return st;
         if (m->ns == before) st_out->segments_overlapping++;
@@ -375,7 +376,7 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     return LH_OK;
 }
 
-lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
+lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
                               lh_trimesh **out, char *msg, size_t msg_size)
 {
     if (msg && msg_size) msg[0] = 0;
@@ -424,6 +425,7 @@ lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
         if (st == LH_ERR_INVALID_ARGUMENT || st == LH_ERR_DEGENERATE)
             say(msg, msg_size, NULL, 0, st == LH_ERR_DEGENERATE ? "the mesh to refine has no triangle of positive area"
                 : "the mesh to refine names a point that does not exist, or has an edge of three triangles");
+        if (st == LH_ERR_INVALID_ARGUMENT || st == LH_ERR_DEGENERATE) st = LH_ERR_INVALID_MESH;
         m.cover = &cover;
     }
     if (st == LH_OK) st = constrain(&m, &c, g, dt, &r->stats, msg, msg_size);
@@ -465,7 +467,7 @@ const lh_index *lh_trimesh_segment_markers(const lh_trimesh *m) { return m ? m->
 const lh_index *lh_trimesh_segment_parents(const lh_trimesh *m) { return m ? m->spar : NULL; }
 const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m) { return m ? m->bad : NULL; }
 
-void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out)
+void lh_trimesh_stats_get(const lh_trimesh *m, lh_trimesh_stats *out)
 {
     if (!out) return;
     if (!m) {

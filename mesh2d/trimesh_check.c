@@ -1,5 +1,5 @@
 /*
- * trimesh_check.c — lh_check_trimesh: the exact validity check of a constrained
+ * trimesh_check.c — lh_cdt_check: the exact validity check of a constrained
  * Delaunay triangulation of a 2D domain. Edges are sorted records (low vertex, high
  * vertex, triangle, position); each decision is an exact orient_2 or incircle.
  */
@@ -34,7 +34,7 @@ static edge *find(edge *e, size_t n, lh_index a, lh_index b)
 static lh_status fail(char *msg, size_t size, const char *what, size_t i)
 {
     if (msg && size) snprintf(msg, size, what, i);
-    return LH_ERR_INTERNAL;
+    return LH_ERR_INVALID_MESH;
 }
 
 /* Fills msg (printf-style) and returns st. */
@@ -92,9 +92,9 @@ static lh_status check(lh_pred *pr, size_t n, const double *xy, size_t nt, const
     return LH_OK;
 }
 
-lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
-                           size_t seg_count, const lh_index *segs, int boundary_free,
-                           const lh_allocator *alloc, char *msg, size_t msg_size)
+lh_status lh_cdt_check(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
+                       size_t seg_count, const lh_index *segs, int boundary_free,
+                       const lh_allocator *alloc, char *msg, size_t msg_size)
 {
     if (msg && msg_size) msg[0] = 0;
     lh_allocator al;

@@ -1,6 +1,6 @@
 /*
  * test_alloc.c — every allocation failing in turn, for the public entry points not
- * covered next to their own tests: lh_affine_dim, lh_check_delaunay, lh_tri_check,
+ * covered next to their own tests: lh_coords_affine_dim, lh_delaunay_check, lh_tri_check,
  * lh_tri_complex, lh_tri_complex_cells, lh_tri_complex_edges, lh_tri_measures,
  * lh_convex_hull of a grid (flat faces: the corners and the rebuilt hull) and
  * lh_hull_measures on it, and lh_tri_locate at a point shared
@@ -35,7 +35,7 @@ static lh_status affine_run(lh_test_state *lh_t_, const lh_allocator *a, const v
     double x[N * 3];
     lh_options o = grid(x, a);
     int k = -2;
-    lh_status st = lh_affine_dim(3, N, x, &o, &k);
+    lh_status st = lh_coords_affine_dim(3, N, x, &o, &k);
     if (st == LH_OK) LH_EXPECT_EQ_INT(k, 3);
     return st;
 }
@@ -49,7 +49,7 @@ static lh_status check_run(lh_test_state *lh_t_, const lh_allocator *a, const vo
     lh_tri *t;
     LH_EXPECT_EQ_INT(lh_delaunay(3, N, x, NULL, &t), LH_OK);
     char msg[200];
-    lh_status st = lh_check_delaunay(3, N, x, lh_tri_count(t), lh_tri_simplices(t), &o, msg, sizeof msg);
+    lh_status st = lh_delaunay_check(3, N, x, lh_tri_count(t), lh_tri_simplices(t), &o, msg, sizeof msg);
     lh_tri_free(t);
     return st;
 }

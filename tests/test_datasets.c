@@ -116,7 +116,7 @@ LH_TEST(all_collinear_is_degenerate)
     lh_tri *t;
     LH_EXPECT_EQ_INT(lh_delaunay(2, 4, line, NULL, &t), LH_ERR_DEGENERATE);
     int k;
-    LH_EXPECT_EQ_INT(lh_affine_dim(2, 4, line, NULL, &k), LH_OK);
+    LH_EXPECT_EQ_INT(lh_coords_affine_dim(2, 4, line, NULL, &k), LH_OK);
     LH_EXPECT_EQ_INT(k, 1);
 }
 

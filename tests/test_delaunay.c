@@ -218,14 +218,14 @@ LH_TEST(predicate_counters_report_the_stages)
     LH_ASSERT_EQ_INT(lh_delaunay(3, 64, x, NULL, &t), LH_OK);
     LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
     lh_pred_counters c;
-    lh_tri_pred_counters(t, &c);
+    lh_tri_pred_counters_get(t, &c);
     LH_EXPECT_GT_U64(c.calls, 0);
     LH_EXPECT_EQ_U64(c.filter_exits + c.grid_exits + c.residue_exits + c.exact_exits, c.calls);
     LH_EXPECT_GT_U64(c.residue_exits, 0);
     LH_EXPECT_EQ_U64(c.exact_exits, 0);
     LH_EXPECT_GT_U64(c.zero_results, 0);
     lh_tri_free(t);
-    lh_tri_pred_counters(NULL, &c);
+    lh_tri_pred_counters_get(NULL, &c);
     LH_EXPECT_EQ_U64(c.calls, 0);
 }
 
@@ -284,16 +284,16 @@ LH_TEST(bad_input_gets_its_status)
     LH_EXPECT_EQ_INT(lh_delaunay(3, 4, x, NULL, &t), LH_ERR_DEGENERATE);
     LH_EXPECT_TRUE(t == NULL);
     int k = 99;
-    LH_EXPECT_EQ_INT(lh_affine_dim(3, 4, x, NULL, &k), LH_OK);
+    LH_EXPECT_EQ_INT(lh_coords_affine_dim(3, 4, x, NULL, &k), LH_OK);
     LH_EXPECT_EQ_INT(k, 2);
     double line[6 * 2] = {0, 0, 1, 1, 2, 2, 3, 3, 5, 5, 8, 8};
     LH_EXPECT_EQ_INT(lh_delaunay(2, 6, line, NULL, &t), LH_ERR_DEGENERATE);
-    LH_EXPECT_EQ_INT(lh_affine_dim(2, 6, line, NULL, &k), LH_OK);
+    LH_EXPECT_EQ_INT(lh_coords_affine_dim(2, 6, line, NULL, &k), LH_OK);
     LH_EXPECT_EQ_INT(k, 1);
     LH_EXPECT_EQ_INT(lh_delaunay(2, 0, x, NULL, &t), LH_ERR_DEGENERATE); /* empty */
     LH_EXPECT_EQ_INT(lh_delaunay(2, 1, x, NULL, &t), LH_ERR_DEGENERATE); /* one site */
     LH_EXPECT_EQ_INT(lh_delaunay(3, 3, x, NULL, &t), LH_ERR_DEGENERATE); /* n < d+1 */
-    LH_EXPECT_EQ_INT(lh_affine_dim(2, 1, x, NULL, &k), LH_OK);
+    LH_EXPECT_EQ_INT(lh_coords_affine_dim(2, 1, x, NULL, &k), LH_OK);
     LH_EXPECT_EQ_INT(k, 0);
     LH_EXPECT_EQ_INT(lh_delaunay(1, 4, x, NULL, &t), LH_ERR_DIMENSION);
     LH_EXPECT_EQ_INT(lh_delaunay(9, 4, x, NULL, &t), LH_ERR_DIMENSION);
@@ -316,16 +316,16 @@ LH_TEST(the_check_rejects_what_is_not_delaunay)
     double x[] = {0, 0, 2, 0, 2, 1, 0, 1.2};
     lh_index good[] = {0, 1, 2, 0, 2, 3}, bad[] = {0, 1, 3, 1, 2, 3}, flat[] = {0, 1, 1};
     char msg[200];
-    lh_status a = lh_check_delaunay(2, 4, x, 2, good, NULL, msg, sizeof msg);
-    lh_status b = lh_check_delaunay(2, 4, x, 2, bad, NULL, msg, sizeof msg);
+    lh_status a = lh_delaunay_check(2, 4, x, 2, good, NULL, msg, sizeof msg);
+    lh_status b = lh_delaunay_check(2, 4, x, 2, bad, NULL, msg, sizeof msg);
     LH_EXPECT_TRUE((a == LH_OK) != (b == LH_OK)); /* exactly one diagonal is Delaunay */
-    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, x, 1, good, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, x, 1, good, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_TRUE(strstr(msg, "site 3") != NULL); /* site 3 unused */
-    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, x, 1, flat, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, x, 1, flat, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_TRUE(strstr(msg, "repeats") != NULL);
     double c[] = {0, 0, 1, 0, 2, 0, 1, 1}; /* a flat triangle along y = 0 */
     lh_index cf[] = {0, 1, 3, 1, 2, 3, 0, 2, 1};
-    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 4, c, 3, cf, NULL, msg, sizeof msg), LH_ERR_INTERNAL);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, c, 3, cf, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
     LH_EXPECT_TRUE(strstr(msg, "flat") != NULL);
 }
 

@@ -217,7 +217,7 @@ LH_TEST(nonfinite_coordinates_everywhere)
         LH_EXPECT_TRUE(t == NULL);
         LH_EXPECT_EQ_INT(lh_convex_hull(2, 4, y, NULL, &h), LH_ERR_NONFINITE);
         LH_EXPECT_TRUE(h == NULL);
-        LH_EXPECT_EQ_INT(lh_affine_dim(2, 4, y, NULL, &k), LH_ERR_NONFINITE);
+        LH_EXPECT_EQ_INT(lh_coords_affine_dim(2, 4, y, NULL, &k), LH_ERR_NONFINITE);
         LH_ASSERT_EQ_INT(lh_delaunay(2, 4, x, NULL, &t), LH_OK);
         lh_location loc;
         lh_index site;
@@ -260,7 +260,7 @@ LH_TEST(a_million_identical_sites)
         LH_EXPECT_EQ_INT(lh_convex_hull(d, n, x, &opt, &h), LH_ERR_DEGENERATE);
         LH_EXPECT_TRUE(h == NULL);
         int k = 7;
-        LH_EXPECT_EQ_INT(lh_affine_dim(d, n, x, NULL, &k), LH_OK);
+        LH_EXPECT_EQ_INT(lh_coords_affine_dim(d, n, x, NULL, &k), LH_OK);
         LH_EXPECT_EQ_INT(k, 0);
         double secs = (double)(clock() - c0) / CLOCKS_PER_SEC;
         LH_EXPECT_LE_DBL(secs, 10.0); /* measured 0.5 s (2D), 0.7 s (3D) for the four calls, Release */
@@ -283,7 +283,7 @@ LH_TEST(all_duplicates_of_one_site)
         opt.affine_hull = 1;
         int k = 7;
         LH_EXPECT_EQ_INT(lh_delaunay(d, 5, x, &opt, &t), LH_ERR_DEGENERATE);
-        LH_EXPECT_EQ_INT(lh_affine_dim(d, 5, x, NULL, &k), LH_OK);
+        LH_EXPECT_EQ_INT(lh_coords_affine_dim(d, 5, x, NULL, &k), LH_OK);
         LH_EXPECT_EQ_INT(k, 0);
     }
 }
@@ -311,7 +311,7 @@ LH_TEST(collinear_and_coplanar_sites)
         int k = 7;
         LH_EXPECT_EQ_INT(lh_delaunay(cases[c].d, cases[c].n, cases[c].x, NULL, &t), LH_ERR_DEGENERATE);
         LH_EXPECT_EQ_INT(lh_convex_hull(cases[c].d, cases[c].n, cases[c].x, NULL, &h), LH_ERR_DEGENERATE);
-        LH_EXPECT_EQ_INT(lh_affine_dim(cases[c].d, cases[c].n, cases[c].x, NULL, &k), LH_OK);
+        LH_EXPECT_EQ_INT(lh_coords_affine_dim(cases[c].d, cases[c].n, cases[c].x, NULL, &k), LH_OK);
         LH_EXPECT_EQ_INT(k, cases[c].k);
         lh_options opt;
         lh_options_default(&opt);
@@ -534,7 +534,7 @@ LH_TEST(the_site_count_limit)
     LH_EXPECT_TRUE(t == NULL);
     LH_EXPECT_EQ_INT(lh_convex_hull(2, n, x, NULL, &h), LH_ERR_TOO_LARGE);
     LH_EXPECT_TRUE(h == NULL);
-    LH_EXPECT_EQ_INT(lh_affine_dim(2, n, x, NULL, &k), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_coords_affine_dim(2, n, x, NULL, &k), LH_ERR_TOO_LARGE);
     const double three[6] = {0, 0, 1, 0, 0, 1};
     LH_ASSERT_EQ_INT(lh_delaunay(2, 3, three, NULL, &t), LH_OK);
     LH_EXPECT_EQ_INT(lh_tri_insert(t, n - 3, x), LH_ERR_TOO_LARGE); /* n - 3 + 3 = LH_INDEX_MAX */
@@ -542,7 +542,7 @@ LH_TEST(the_site_count_limit)
     lh_tri_free(t);
 }
 
-/* lh_check_delaunay with counts no array can have: 2^60 simplices in 3D made a
+/* lh_delaunay_check with counts no array can have: 2^60 simplices in 3D made a
  * 4-byte block ((2^62 + 1) * 4 wraps around) and then wrote past it; now
  * LH_ERR_TOO_LARGE before any allocation. */
 LH_TEST(check_delaunay_refuses_counts_that_wrap)
@@ -555,12 +555,12 @@ LH_TEST(check_delaunay_refuses_counts_that_wrap)
     lh_options_default(&o);
     o.alloc = &a;
     char msg[160];
-    LH_EXPECT_EQ_INT(lh_check_delaunay(3, 4, tet, (size_t)1 << 60, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, 4, tet, (size_t)1 << 60, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
     LH_EXPECT_STREQ(msg, "4 sites and 1152921504606846976 simplices: more than an lh_index or a size_t can count");
-    LH_EXPECT_EQ_INT(lh_check_delaunay(3, SIZE_MAX / 2, tet, 1, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
-    LH_EXPECT_EQ_INT(lh_check_delaunay(2, 3, tet, SIZE_MAX, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, SIZE_MAX / 2, tet, 1, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 3, tet, SIZE_MAX, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
     LH_EXPECT_EQ_U64(p.peak, 0);
-    LH_EXPECT_EQ_INT(lh_check_delaunay(3, 4, tet, 1, simp, &o, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, 4, tet, 1, simp, &o, msg, sizeof msg), LH_OK);
 }
 
 int main(int argc, char **argv)

@@ -314,10 +314,10 @@ LH_TEST(poly_n0_keeps_its_item_numbers)
     static const int seg[] = {0, 1, 1, 2, 1, 9};
     for (int i = 0; i < 6; i++) LH_EXPECT_EQ_INT(g.segments[i], seg[i]);
     lh_trimesh *m = NULL;
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(msg, "5: segment 3: endpoint 9 is not a vertex (0..3)");
     g.segments[1] = 2, g.segments[5] = 3; /* segments 0-2 and 1-3: the diagonals cross */
-    LH_EXPECT_EQ_INT(lh_triangulate_pslg(&g, NULL, &m, msg, sizeof msg), LH_ERR_DEGENERATE);
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_CROSSING_SEGMENTS);
     LH_EXPECT_STREQ(msg, "5: segment 3 crosses segment 1 (line 3)");
     lh_trimesh_free(m);
     lh_pslg_free(&g);

@@ -24,6 +24,13 @@ static lh_mesh_view quad(void)
 
 typedef lh_status (*writer)(FILE *, const lh_mesh_view *);
 
+/* The ASCII .vtu (lh_vtu_write with ascii set). */
+static lh_status vtu_ascii(FILE *f, const lh_mesh_view *m)
+{
+    const lh_vtu_options o = {1, NULL, NULL};
+    return lh_vtu_write(f, m, &o);
+}
+
 /* Runs a writer into a temporary file; *text receives what it wrote (caller frees). */
 static lh_status capture(writer w, lh_status (*wi)(FILE *, const lh_mesh_view *, int), int first,
                          const lh_mesh_view *m, char **text)
@@ -53,7 +60,7 @@ static void expect_output(lh_test_state *lh_t_, writer w,
 LH_TEST(vtu_text)
 {
     lh_mesh_view m = quad();
-    expect_output(lh_t_, lh_write_vtu, NULL, 0, &m,
+    expect_output(lh_t_, vtu_ascii, NULL, 0, &m,
                   "<?xml version=\"1.0\"?>\n"
                   "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                   "  <UnstructuredGrid>\n"
@@ -86,7 +93,7 @@ LH_TEST(vtu_text)
 LH_TEST(msh_text)
 {
     lh_mesh_view m = quad();
-    expect_output(lh_t_, lh_write_msh, NULL, 0, &m,
+    expect_output(lh_t_, lh_msh_write, NULL, 0, &m,
                   "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
                   "$Entities\n0 0 1 0\n1 0 0 0 1 1.5 0 0 0\n$EndEntities\n"
                   "$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n1 1.5 0\n$EndNodes\n"
@@ -98,26 +105,26 @@ LH_TEST(msh_text)
 LH_TEST(triangle_text)
 {
     lh_mesh_view m = quad();
-    expect_output(lh_t_, NULL, lh_write_node, 1, &m,
+    expect_output(lh_t_, NULL, lh_node_write, 1, &m,
                   "4 2 1 0\n1 0 0 0\n2 1 0 0.5\n3 0 1 1\n4 1 1.5 0.10000000000000001\n");
-    expect_output(lh_t_, NULL, lh_write_ele, 1, &m, "2 3 0\n1 1 2 3\n2 2 4 3\n");
-    expect_output(lh_t_, NULL, lh_write_neigh, 1, &m, "2 3\n1 2 -1 -1\n2 -1 1 -1\n");
-    expect_output(lh_t_, NULL, lh_write_ele, 0, &m, "2 3 0\n0 0 1 2\n1 1 3 2\n");
-    expect_output(lh_t_, NULL, lh_write_neigh, 0, &m, "2 3\n0 1 -1 -1\n1 -1 0 -1\n");
+    expect_output(lh_t_, NULL, lh_ele_write, 1, &m, "2 3 0\n1 1 2 3\n2 2 4 3\n");
+    expect_output(lh_t_, NULL, lh_neigh_write, 1, &m, "2 3\n1 2 -1 -1\n2 -1 1 -1\n");
+    expect_output(lh_t_, NULL, lh_ele_write, 0, &m, "2 3 0\n0 0 1 2\n1 1 3 2\n");
+    expect_output(lh_t_, NULL, lh_neigh_write, 0, &m, "2 3\n0 1 -1 -1\n1 -1 0 -1\n");
     m.values = NULL;
-    expect_output(lh_t_, NULL, lh_write_node, 0, &m, "4 2 0 0\n0 0 0\n1 1 0\n2 0 1\n3 1 1.5\n");
+    expect_output(lh_t_, NULL, lh_node_write, 0, &m, "4 2 0 0\n0 0 0\n1 1 0\n2 0 1\n3 1 1.5\n");
 }
 
 LH_TEST(off_text)
 {
     lh_mesh_view m = quad();
-    expect_output(lh_t_, lh_write_off, NULL, 0, &m,
+    expect_output(lh_t_, lh_off_write, NULL, 0, &m,
                   "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1.5 0\n3 0 1 2\n3 1 3 2\n");
     /* A tetrahedron's boundary in 3D. */
     static const double xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
     static const lh_index faces[] = {1, 2, 3, 0, 3, 2, 0, 1, 3, 0, 2, 1};
     lh_mesh_view s = {3, 4, xyz, 2, 4, faces, NULL, NULL, NULL};
-    expect_output(lh_t_, lh_write_off, NULL, 0, &s,
+    expect_output(lh_t_, lh_off_write, NULL, 0, &s,
                   "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 1 2 3\n3 0 3 2\n3 0 1 3\n3 0 2 1\n");
 }
 
@@ -127,21 +134,21 @@ LH_TEST(segments_and_tetrahedra)
     static const lh_index tet[] = {0, 1, 2, 3}, nb[] = {-1, -1, -1, -1};
     lh_mesh_view m = {3, 4, xyz, 3, 1, tet, nb, NULL, NULL};
     char *text;
-    LH_EXPECT_EQ_INT(capture(lh_write_vtu, NULL, 0, &m, &text), LH_OK);
+    LH_EXPECT_EQ_INT(capture(vtu_ascii, NULL, 0, &m, &text), LH_OK);
     LH_EXPECT_TRUE(text && strstr(text, "          10\n") && strstr(text, "          4\n"));
     free(text);
-    LH_EXPECT_EQ_INT(capture(lh_write_msh, NULL, 0, &m, &text), LH_OK);
+    LH_EXPECT_EQ_INT(capture(lh_msh_write, NULL, 0, &m, &text), LH_OK);
     LH_EXPECT_TRUE(text && strstr(text, "$Entities\n0 0 0 1\n1 0 0 0 1 1 1 0 0\n") &&
                    strstr(text, "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n"));
     free(text);
     static const double line[] = {0, 1, 3};
     static const lh_index segs[] = {0, 1, 1, 2};
     lh_mesh_view l = {1, 3, line, 1, 2, segs, NULL, NULL, NULL};
-    LH_EXPECT_EQ_INT(capture(lh_write_msh, NULL, 0, &l, &text), LH_OK);
+    LH_EXPECT_EQ_INT(capture(lh_msh_write, NULL, 0, &l, &text), LH_OK);
     LH_EXPECT_TRUE(text && strstr(text, "$Elements\n1 2 1 2\n1 1 1 2\n1 1 2\n2 2 3\n"));
     LH_EXPECT_TRUE(text && strstr(text, "$Nodes\n1 3 1 3\n1 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n3 0 0\n"));
     free(text);
-    LH_EXPECT_EQ_INT(capture(lh_write_vtu, NULL, 0, &l, &text), LH_OK);
+    LH_EXPECT_EQ_INT(capture(vtu_ascii, NULL, 0, &l, &text), LH_OK);
     LH_EXPECT_TRUE(text && strstr(text, "          3\n          3\n        </DataArray>\n      </Cells>"));
     free(text);
 }
@@ -150,7 +157,7 @@ static lh_status vtu_cells_c(FILE *f, const lh_mesh_view *m)
 {
     static const double cv[] = {0.5, -2};
     const lh_vtu_options o = {0, cv, "c"};
-    return lh_write_vtu_opts(f, m, &o);
+    return lh_vtu_write(f, m, &o);
 }
 
 /* The binary .vtu of two segments with a cell field, byte for byte (on a little-endian
@@ -204,13 +211,13 @@ LH_TEST(vtu_binary)
     /* the cell field is checked as the point field is */
     static const double bad[] = {0, NAN};
     lh_vtu_options o = {0, bad, NULL};
-    LH_EXPECT_EQ_INT(lh_write_vtu_opts(stdout, &l, &o), LH_ERR_NONFINITE);
+    LH_EXPECT_EQ_INT(lh_vtu_write(stdout, &l, &o), LH_ERR_NONFINITE);
     o.cell_values = line, o.cell_values_name = "a<b";
-    LH_EXPECT_EQ_INT(lh_write_vtu_opts(stdout, &l, &o), LH_ERR_INVALID_ARGUMENT);
-    LH_EXPECT_EQ_INT(lh_write_vtu_opts(NULL, &l, NULL), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_vtu_write(stdout, &l, &o), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_vtu_write(NULL, &l, NULL), LH_ERR_INVALID_ARGUMENT);
     FILE *f = fopen("/dev/full", "w");
     if (f) {
-        LH_EXPECT_EQ_INT(lh_write_vtu_opts(f, &l, NULL), LH_ERR_IO);
+        LH_EXPECT_EQ_INT(lh_vtu_write(f, &l, NULL), LH_ERR_IO);
         fclose(f);
     }
 }
@@ -241,9 +248,9 @@ LH_TEST(argument_errors)
     cases[c].m.xyz = nan_xyz, cases[c].which = 1, cases[c++].want = LH_ERR_NONFINITE;
     cases[c].m.values = inf_values, cases[c].which = 3, cases[c++].want = LH_ERR_NONFINITE;
     cases[c].m.cells = NULL, cases[c].which = 2, cases[c++].want = LH_ERR_INVALID_ARGUMENT;
-    static const writer plain[] = {lh_write_vtu, lh_write_msh, lh_write_off};
-    static lh_status (*const numbered[])(FILE *, const lh_mesh_view *, int) = {lh_write_node, lh_write_ele,
-                                                                               lh_write_neigh};
+    static const writer plain[] = {vtu_ascii, lh_msh_write, lh_off_write};
+    static lh_status (*const numbered[])(FILE *, const lh_mesh_view *, int) = {lh_node_write, lh_ele_write,
+                                                                               lh_neigh_write};
     for (size_t i = 0; i < c; i++) {
         char *text;
         int w = cases[i].which;
@@ -256,8 +263,8 @@ LH_TEST(argument_errors)
             return;
         }
     }
-    LH_EXPECT_EQ_INT(lh_write_vtu(NULL, &m), LH_ERR_INVALID_ARGUMENT);
-    LH_EXPECT_EQ_INT(lh_write_off(stdout, NULL), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(vtu_ascii(NULL, &m), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_off_write(stdout, NULL), LH_ERR_INVALID_ARGUMENT);
 }
 
 LH_TEST(write_errors)
@@ -265,21 +272,21 @@ LH_TEST(write_errors)
     lh_mesh_view m = quad();
     FILE *f = fopen(self_path, "rb"); /* writing a read-only stream fails */
     LH_ASSERT_TRUE(f != NULL);
-    LH_EXPECT_EQ_INT(lh_write_vtu(f, &m), LH_ERR_IO);
+    LH_EXPECT_EQ_INT(vtu_ascii(f, &m), LH_ERR_IO);
     clearerr(f);
-    LH_EXPECT_EQ_INT(lh_write_msh(f, &m), LH_ERR_IO);
+    LH_EXPECT_EQ_INT(lh_msh_write(f, &m), LH_ERR_IO);
     clearerr(f);
-    LH_EXPECT_EQ_INT(lh_write_node(f, &m, 1), LH_ERR_IO);
+    LH_EXPECT_EQ_INT(lh_node_write(f, &m, 1), LH_ERR_IO);
     clearerr(f);
-    LH_EXPECT_EQ_INT(lh_write_ele(f, &m, 1), LH_ERR_IO);
+    LH_EXPECT_EQ_INT(lh_ele_write(f, &m, 1), LH_ERR_IO);
     clearerr(f);
-    LH_EXPECT_EQ_INT(lh_write_neigh(f, &m, 1), LH_ERR_IO);
+    LH_EXPECT_EQ_INT(lh_neigh_write(f, &m, 1), LH_ERR_IO);
     clearerr(f);
-    LH_EXPECT_EQ_INT(lh_write_off(f, &m), LH_ERR_IO);
+    LH_EXPECT_EQ_INT(lh_off_write(f, &m), LH_ERR_IO);
     fclose(f);
     f = fopen("/dev/full", "w"); /* buffered writes fail when flushed: ENOSPC */
     if (f) {
-        LH_EXPECT_EQ_INT(lh_write_off(f, &m), LH_ERR_IO);
+        LH_EXPECT_EQ_INT(lh_off_write(f, &m), LH_ERR_IO);
         fclose(f);
     }
 }
@@ -313,7 +320,7 @@ LH_TEST(node_round_trip_is_bit_exact)
     for (int first = 0; first <= 1; first++) {
         FILE *f = tmpfile();
         LH_ASSERT_TRUE(f != NULL);
-        LH_ASSERT_EQ_INT(lh_write_node(f, &m, first), LH_OK);
+        LH_ASSERT_EQ_INT(lh_node_write(f, &m, first), LH_OK);
         rewind(f);
         lh_points p;
         char msg[256];

@@ -283,7 +283,7 @@ LH_TEST(query_outside_and_bad_arguments)
     lh_tri_free(t);
 }
 
-/* The cap: too small gives LH_ERR_TOO_LARGE and the number needed (cap 0 with NULL
+/* The cap: too small gives LH_ERR_BUFFER_TOO_SMALL and the number needed (cap 0 with NULL
  * arrays asks for it); that many then fit. */
 LH_TEST(cap_too_small)
 {
@@ -295,9 +295,9 @@ LH_TEST(cap_too_small)
     lh_index s[CAP];
     double w[CAP];
     size_t need = 0, m = 0;
-    LH_EXPECT_EQ_INT(lh_tri_natural_coords(t, q, -1, 0, NULL, NULL, &need), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_tri_natural_coords(t, q, -1, 0, NULL, NULL, &need), LH_ERR_BUFFER_TOO_SMALL);
     LH_EXPECT_TRUE(need > 4);
-    LH_EXPECT_EQ_INT(lh_tri_natural_coords(t, q, -1, need - 1, s, w, &m), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_tri_natural_coords(t, q, -1, need - 1, s, w, &m), LH_ERR_BUFFER_TOO_SMALL);
     LH_EXPECT_EQ_U64(m, need);
     LH_EXPECT_EQ_INT(lh_tri_natural_coords(t, q, -1, need, s, w, &m), LH_OK);
     LH_EXPECT_EQ_U64(m, need);

@@ -70,11 +70,11 @@ static void few_exact(lh_test_state *lh_t_, int d, size_t n, const double *x, un
     lh_tri *t = NULL;
     LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, &opt, &t), LH_OK);
     char msg[256] = "";
-    LH_EXPECT_EQ_INT(lh_check_delaunay(d, n, x, lh_tri_count(t), lh_tri_simplices(t), NULL, msg,
+    LH_EXPECT_EQ_INT(lh_delaunay_check(d, n, x, lh_tri_count(t), lh_tri_simplices(t), NULL, msg,
                                        sizeof msg),
                      LH_OK);
     lh_pred_counters c;
-    lh_tri_pred_counters(t, &c);
+    lh_tri_pred_counters_get(t, &c);
     LH_NOTE("d %d n %zu: calls %llu, exact %llu, zero %llu", d, n, (unsigned long long)c.calls,
             (unsigned long long)c.exact_exits, (unsigned long long)c.zero_results);
     LH_EXPECT_LE_U64(c.exact_exits * 1000, c.calls * per_mille);

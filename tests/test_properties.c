@@ -169,7 +169,7 @@ static void one_input(lh_test_state *lh_t_, uint64_t seed)
     } else {
         int k;
         LH_EXPECT_EQ_INT(st, LH_ERR_DEGENERATE);
-        LH_EXPECT_EQ_INT(lh_affine_dim(d, n, x, NULL, &k), LH_OK);
+        LH_EXPECT_EQ_INT(lh_coords_affine_dim(d, n, x, NULL, &k), LH_OK);
         LH_EXPECT_LT_INT(k, d);
     }
     if (lh_t_->failures != fails)

@@ -1,4 +1,4 @@
-/* test_trimesh_quality.c — the quality refinement of lh_triangulate_pslg (refine.c):
+/* test_trimesh_quality.c — the quality refinement of lh_pslg_triangulate (refine.c):
  * - every quality decision is scale-free (m2_geom.h): A.poly scaled by 2^k from 2^-600
  *   to 2^600 gives the same mesh, byte for byte once unscaled, meeting the bound and
  *   exactly valid; a 10^-300 radian wedge counts as bad; an area bound applies at
@@ -32,13 +32,13 @@ static lh_trimesh *mesh_valid(lh_test_state *lh_t_, const lh_pslg *g, const lh_t
 {
     lh_trimesh *m = NULL;
     char msg[256] = "";
-    const lh_status s = lh_triangulate_pslg(g, o, &m, msg, sizeof msg);
+    const lh_status s = lh_pslg_triangulate(g, o, &m, msg, sizeof msg);
     LH_EXPECT_EQ_INT(s, LH_OK);
     if (s != LH_OK) {
         LH_NOTE("%s", msg);
         return NULL;
     }
-    lh_trimesh_get_stats(m, st);
+    lh_trimesh_stats_get(m, st);
     const lh_status c = lh_test_check_trimesh(m, msg, sizeof msg);
     if (c != LH_OK) LH_NOTE("check: %s", msg);
     LH_EXPECT_EQ_INT(c, LH_OK);
@@ -103,7 +103,7 @@ LH_TEST(quality_decisions_are_scale_free)
         memcpy(g.xy, xy0, 2 * g.n * sizeof *xy0);
         g.holes[0] = h0[0], g.holes[1] = h0[1];
         o.max_area = area0;
-        LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &ref, msg, sizeof msg), LH_OK);
+        LH_ASSERT_EQ_INT(lh_pslg_triangulate(&g, &o, &ref, msg, sizeof msg), LH_OK);
         for (size_t i = 0; i < LH_COUNT(ks); i++) {
             const int k = ks[i];
             if (area0 > 0 && abs(k) > 500) continue; /* the bound times 2^2k: beyond the doubles */
@@ -241,7 +241,7 @@ LH_TEST(split_segments_are_scale_free)
         o.split_segments = 1;
         lh_trimesh *ref = NULL;
         char msg[256];
-        LH_ASSERT_EQ_INT(lh_triangulate_pslg(&g, &o, &ref, msg, sizeof msg), LH_OK);
+        LH_ASSERT_EQ_INT(lh_pslg_triangulate(&g, &o, &ref, msg, sizeof msg), LH_OK);
         if (!f) LH_EXPECT_EQ_U64(lh_trimesh_point_count(ref), 8);
         for (size_t i = 0; i < LH_COUNT(ks); i++) {
             const int k = ks[i];

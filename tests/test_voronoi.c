@@ -1,6 +1,6 @@
 /*
  * test_voronoi.c — Voronoi vertices (lh_tri_circumcenters), the exact distance
- * comparison (lh_compare_distance), the nearest site (lh_tri_nearest) against brute
+ * comparison (lh_distance_compare), the nearest site (lh_tri_nearest) against brute
  * force, and linear / nearest interpolation (lh_tri_interpolate).
  */
 #include "lh_api_test.h"
@@ -103,22 +103,22 @@ LH_TEST(compare_distance_is_exact)
     lh_pred *ctx;
     LH_ASSERT_EQ_INT(lh_pred_create(NULL, &ctx), LH_OK);
     const double q[2] = {0, 0}, a[2] = {3, 4}, b[2] = {5, 0}, c[2] = {0, 5.000000000000001};
-    LH_EXPECT_EQ_INT(lh_compare_distance(ctx, 2, q, a, b), 0);
-    LH_EXPECT_EQ_INT(lh_compare_distance(ctx, 2, q, a, c), -1);
-    LH_EXPECT_EQ_INT(lh_compare_distance(ctx, 2, q, c, a), 1);
+    LH_EXPECT_EQ_INT(lh_distance_compare(ctx, 2, q, a, b), 0);
+    LH_EXPECT_EQ_INT(lh_distance_compare(ctx, 2, q, a, c), -1);
+    LH_EXPECT_EQ_INT(lh_distance_compare(ctx, 2, q, c, a), 1);
     /* 1 + 2^-52 against 1 at an offset: |q-a|^2 - |q-b|^2 = 2^-52 (2 + 2^-52) - 0,
      * rounding would see 2^-51 exactly; a second coordinate of 2^-60 decides it. */
     const double q1[2] = {1e9, 0}, a1[2] = {1e9 + 1, 0x1p-60}, b1[2] = {1e9 - 1, 0};
-    LH_EXPECT_EQ_INT(lh_compare_distance(ctx, 2, q1, a1, b1), 1);
+    LH_EXPECT_EQ_INT(lh_distance_compare(ctx, 2, q1, a1, b1), 1);
     /* subnormal magnitudes: the filter must hand over to the exact stage */
     const double q2[3] = {0, 0, 0}, a2[3] = {0x1p-1074, 0x1p-1074, 0}, b2[3] = {0, 0, 0x1p-1073};
-    LH_EXPECT_EQ_INT(lh_compare_distance(ctx, 3, q2, a2, b2), -1);
+    LH_EXPECT_EQ_INT(lh_distance_compare(ctx, 3, q2, a2, b2), -1);
     const double a3[3] = {0x1p-1073, 0x1p-1073, 0}, b3[3] = {0, 0x1p-1073, 0x1p-1073};
-    LH_EXPECT_EQ_INT(lh_compare_distance(ctx, 3, q2, a3, b3), 0);
+    LH_EXPECT_EQ_INT(lh_distance_compare(ctx, 3, q2, a3, b3), 0);
     /* huge magnitudes whose squares overflow */
     const double q4[2] = {-1e300, 1e300}, a4[2] = {1e300, 1e300}, b4[2] = {-1e300, -1e300};
-    LH_EXPECT_EQ_INT(lh_compare_distance(ctx, 2, q4, a4, b4), 0);
-    LH_EXPECT_EQ_INT(lh_compare_distance(NULL, 2, q, a, b), 0);
+    LH_EXPECT_EQ_INT(lh_distance_compare(ctx, 2, q4, a4, b4), 0);
+    LH_EXPECT_EQ_INT(lh_distance_compare(NULL, 2, q, a, b), 0);
     lh_pred_free(ctx);
 }
 
@@ -146,7 +146,7 @@ LH_TEST(nearest_matches_brute_force)
                     q[j] = kind == 0 ? p[j] : kind == 1 ? 0.5 * (p[j] + r[j]) : 2.5 * lh_fam_unif() - 1.25;
                 lh_index best = -1, got = -2;
                 for (size_t s = 0; s < n; s++)
-                    if (best < 0 || lh_compare_distance(ctx, d, q, x + s * d, x + (size_t)best * d) < 0)
+                    if (best < 0 || lh_distance_compare(ctx, d, q, x + s * d, x + (size_t)best * d) < 0)
                         best = (lh_index)s;
                 LH_EXPECT_EQ_INT(lh_tri_nearest(t, q, i % 2 ? -1 : 3, &got), LH_OK);
                 if (got != best) LH_NOTE("d=%d %s query %d", d, lh_fam_name[fams[f]], i);

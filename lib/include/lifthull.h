@@ -10,8 +10,18 @@
  *     thread"); distinct handles share nothing, there is no global state.
  *   - Failure: functions that can fail return an lh_status; on failure they free
  *     what they built and leave the caller's arrays untouched.
- *   - Freeing NULL is a no-op.
+ *   - Freeing NULL is a no-op; every *_default(NULL) does nothing.
  *   - Points are arrays of doubles; a point in R^k is k consecutive doubles.
+ *   - Names: lh_<noun>_<verb> for what acts on a thing (lh_tri_locate,
+ *     lh_points_read, lh_vtu_write, lh_delaunay_check); lh_<noun>_<property> for
+ *     accessors that only read (lh_tri_simplices, lh_hull_facet_count); a struct is
+ *     filled by lh_<noun>_<struct>_get(handle, &out), zeros for a NULL handle
+ *     (lh_trimesh_stats_get); options by lh_<options>_default(&opt). The predicates
+ *     are named for the predicate (lh_orient, lh_insphere) and the computations that
+ *     make a handle for what they compute (lh_delaunay, lh_convex_hull).
+ *   - Error detail beyond the status: the readers, the checks and the mesher write
+ *     one line to a caller's buffer (char *msg, size_t msg_size; msg may be NULL;
+ *     "" on success); lh_coords_validate names the offending coordinate's index.
  *
  * Coordinate range (the "accepted range"):
  *   Every finite double is accepted, subnormals included: the exact stage of the
@@ -70,7 +80,10 @@ LH_API const char *lh_version_string(void);
     X(LH_ERR_DEGENERATE, 6, "sites span a lower-dimensional affine subspace")      \
     X(LH_ERR_IO, 7, "input/output error")                                          \
     X(LH_ERR_PARSE, 8, "malformed input")                                          \
-    X(LH_ERR_INTERNAL, 9, "internal consistency check failed")
+    X(LH_ERR_INTERNAL, 9, "internal consistency check failed")                    \
+    X(LH_ERR_INVALID_MESH, 10, "the given triangulation or mesh is not valid")     \
+    X(LH_ERR_BUFFER_TOO_SMALL, 11, "output buffer too small")                      \
+    X(LH_ERR_CROSSING_SEGMENTS, 12, "input segments cross")
 
 typedef enum lh_status {
 #define LH_STATUS_ENUM_(name, value, msg) name = value,
@@ -204,7 +217,7 @@ LH_API int lh_hyperplane_exp(lh_pred *ctx, int d, const double *const *pts, doub
 /* The sign of |q - a| - |q - b| for points q, a, b of R^d (d = 1..8): -1 when a is
  * strictly nearer to q, +1 when b is, 0 when they are exactly as near. Filtered,
  * then exact for every finite double (no perturbation: ties are for the caller). */
-LH_API int lh_compare_distance(lh_pred *ctx, int d, const double *q, const double *a,
+LH_API int lh_distance_compare(lh_pred *ctx, int d, const double *q, const double *a,
                                const double *b);
 
 /* How often each stage ran since creation or the last reset. */
@@ -285,7 +298,7 @@ LH_API void lh_options_default(lh_options *opt);
  * xyz NULL, or an allocator without hooks); LH_ERR_TOO_LARGE (n*d overflows, or more
  * than LH_INDEX_MAX - 1 sites); LH_ERR_NONFINITE (a NaN or infinity: lh_coords_validate
  * names the coordinate); LH_ERR_DEGENERATE (fewer than d+1 distinct sites, or all
- * sites in an affine subspace of dimension < d — lh_affine_dim tells which; with
+ * sites in an affine subspace of dimension < d — lh_coords_affine_dim tells which; with
  * opt->affine_hull only for a single distinct site);
  * LH_ERR_NOMEM. On failure *out is NULL and nothing is leaked.
  */
@@ -296,7 +309,8 @@ LH_API lh_status lh_delaunay(int d, size_t n, const double *xyz, const lh_option
 /* The affine dimension spanned by n sites in R^d (0 for one distinct site, -1 for
  * none), computed exactly; opt as lh_delaunay's (only alloc is used; NULL:
  * defaults); LH_ERR_* as lh_delaunay for bad arguments. */
-LH_API lh_status lh_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt, int *dim);
+LH_API lh_status lh_coords_affine_dim(int d, size_t n, const double *xyz, const lh_options *opt,
+                                      int *dim);
 
 /*
  * lh_tri_insert: adds m sites (m*d doubles, copied) to t; they get the indices
@@ -339,11 +353,11 @@ LH_API size_t lh_tri_duplicate_count(const lh_tri *t); /* sites merged into an e
 /* How often each predicate stage ran for t (lh_pred_counters): the whole lh_delaunay
  * run (the fixed-dimension engines' inline filters included), then every query and
  * insertion since. All zero for t NULL. */
-LH_API void lh_tri_pred_counters(const lh_tri *t, lh_pred_counters *out);
+LH_API void lh_tri_pred_counters_get(const lh_tri *t, lh_pred_counters *out);
 LH_API void lh_tri_free(lh_tri *t);
 
 /*
- * lh_check_delaunay: exact validity check of a triangulation given as sites and
+ * lh_delaunay_check: exact validity check of a triangulation given as sites and
  * simplices (any simplex order, any vertex order): every simplex has positive volume
  * after orienting it; every facet is shared by at most two simplices; every interior
  * facet is locally Delaunay (the opposite vertex is not strictly inside the other
@@ -351,17 +365,18 @@ LH_API void lh_tri_free(lh_tri *t);
  * volume equals the convex hull's, exactly, so they tile it once (local conditions
  * alone admit coverings wound twice); every site is a vertex or an exact duplicate
  * of one. opt: only its allocator is used (NULL: malloc). Returns LH_OK,
- * LH_ERR_NOMEM, or LH_ERR_INTERNAL with a one-line reason in msg (msg may be NULL;
+ * LH_ERR_NOMEM, or LH_ERR_INVALID_MESH with a one-line reason in msg (msg may be NULL;
  * msg_size bytes); LH_ERR_INVALID_ARGUMENT for a NULL array with a nonzero count or a
  * bad allocator; LH_ERR_TOO_LARGE, with the reason in msg, for n or count beyond what
  * lh_index and size_t can count (the check's sizes would wrap around).
  */
-LH_API lh_status lh_check_delaunay(int d, size_t n, const double *xyz, size_t count,
+LH_API lh_status lh_delaunay_check(int d, size_t n, const double *xyz, size_t count,
                                    const lh_index *simplices, const lh_options *opt, char *msg,
                                    size_t msg_size);
 /* The same for a handle, also verifying its neighbour and hull arrays; for a
  * furthest-site triangulation the conditions are reversed (every interior facet
- * locally furthest-site Delaunay; sites that are not vertices inside the hull). */
+ * locally furthest-site Delaunay; sites that are not vertices inside the hull). A
+ * failed condition is the library's fault here: LH_ERR_INTERNAL with the reason. */
 LH_API lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
 
 /*
@@ -440,7 +455,7 @@ LH_API lh_status lh_tri_circumcenter_exp(const lh_tri *t, size_t s, double *c, i
 /*
  * lh_tri_nearest: the site nearest to q (d doubles): a greedy walk along Delaunay
  * edges from a vertex of the simplex lh_tri_locate finds (hint as there), every
- * distance comparison exact (lh_compare_distance). Among sites exactly equally near, the
+ * distance comparison exact (lh_distance_compare). Among sites exactly equally near, the
  * smallest index is returned (all of them are vertices of one Delaunay cell, so a
  * walk over the ties finds it); never a merged duplicate. Returns LH_OK,
  * LH_ERR_INVALID_ARGUMENT (t, q or site NULL; or a furthest-site handle; or, when
@@ -464,7 +479,7 @@ LH_API lh_status lh_tri_nearest(lh_tri *t, const double *q, lh_index hint, lh_in
  * face, the limit is the 2D Sibson coordinates within that face, not computed here).
  * cap may be 0 with sites and weights NULL, to ask for the count. Returns LH_OK;
  * LH_ERR_INVALID_ARGUMENT (NULL arguments, furthest-site handle, or q outside the
- * hull: *count = 0); LH_ERR_DIMENSION (d or k not 2 or 3); LH_ERR_TOO_LARGE (more
+ * hull: *count = 0); LH_ERR_DIMENSION (d or k not 2 or 3); LH_ERR_BUFFER_TOO_SMALL (more
  * than cap natural neighbours: *count is the number needed, nothing written);
  * LH_ERR_NONFINITE; LH_ERR_NOMEM.
  */
@@ -703,33 +718,32 @@ typedef struct lh_mesh_view {
  * points or cells LH_ERR_TOO_LARGE. A failed write (fprintf or ferror) gives LH_ERR_IO,
  * with the file holding a prefix of the output. Otherwise LH_OK. Doubles as "%.17g".
  *
- * lh_write_vtu   VTK XML UnstructuredGrid (.vtu), ASCII. d = 1..3 (points padded with
- *                zeros to 3 coordinates, as VTK wants), k = 1..3 (VTK cell types 3
- *                line, 5 triangle, 10 tetra). values: point data; neighbors: cell data
- *                "neighbors" with k+1 components. Indices as Int32 (Int64 past
- *                INT32_MAX points or cells, which only 64-bit indices allow).
- *                lh_write_vtu_opts below writes the same content in binary.
- * lh_write_msh   Gmsh MSH 4.1 ASCII: $MeshFormat "4.1 0 8", $Entities (one entity of
+ * lh_vtu_write   VTK XML UnstructuredGrid (.vtu), binary or ASCII as opt says (below).
+ *                d = 1..3 (points padded with zeros to 3 coordinates, as VTK wants),
+ *                k = 1..3 (VTK cell types 3 line, 5 triangle, 10 tetra). values: point
+ *                data; neighbors: cell data "neighbors" with k+1 components. Indices as
+ *                Int32 (Int64 past INT32_MAX points or cells, which only 64-bit indices
+ *                allow).
+ * lh_msh_write   Gmsh MSH 4.1 ASCII: $MeshFormat "4.1 0 8", $Entities (one entity of
  *                dimension k holding everything, bounding box of the points), $Nodes
  *                and $Elements (element types 1 segment, 2 triangle, 4 tetrahedron),
  *                tags 1-based; values as $NodeData. d = 1..3 (padded to 3), k = 1..3.
- * lh_write_node  Triangle/TetGen .node: "n d attributes 0", then "i x_1..x_d [value]",
+ * lh_node_write  Triangle/TetGen .node: "n d attributes 0", then "i x_1..x_d [value]",
  *                numbered from first_index; values become the one attribute. d = 2..8.
- * lh_write_ele   Triangle/TetGen .ele: "count k+1 0", then "i v_0..v_k", points numbered
+ * lh_ele_write   Triangle/TetGen .ele: "count k+1 0", then "i v_0..v_k", points numbered
  *                from first_index (as in the matching .node). k = 1..8.
- * lh_write_neigh Triangle/TetGen .neigh: "count k+1", then "i n_0..n_k", neighbour j
+ * lh_neigh_write Triangle/TetGen .neigh: "count k+1", then "i n_0..n_k", neighbour j
  *                opposite vertex j as in Triangle, -1 for none whatever first_index is.
  *                Needs neighbors. k = 1..8.
- * lh_write_off   OFF: "OFF", "n count 0", the points padded to 3 coordinates, then
+ * lh_off_write   OFF: "OFF", "n count 0", the points padded to 3 coordinates, then
  *                "3 a b c" per triangle: k = 2 with d = 2 (a triangulation) or d = 3
  *                (a surface, e.g. a 3D convex hull's facets).
  */
-LH_API lh_status lh_write_vtu(FILE *f, const lh_mesh_view *m);
-LH_API lh_status lh_write_msh(FILE *f, const lh_mesh_view *m);
-LH_API lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index);
-LH_API lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index);
-LH_API lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index);
-LH_API lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
+LH_API lh_status lh_msh_write(FILE *f, const lh_mesh_view *m);
+LH_API lh_status lh_node_write(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_ele_write(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_neigh_write(FILE *f, const lh_mesh_view *m, int first_index);
+LH_API lh_status lh_off_write(FILE *f, const lh_mesh_view *m);
 
 /*
  * The .vtu writer's choices; a zeroed struct (or NULL) gives the defaults: binary,
@@ -743,13 +757,13 @@ LH_API lh_status lh_write_off(FILE *f, const lh_mesh_view *m);
  * ParaView/VTK and meshio read it. Offsets are Int32 up to INT32_MAX, else Int64.
  */
 typedef struct lh_vtu_options {
-    int ascii;                    /* 1: every array as text (lh_write_vtu's file)          */
+    int ascii;                    /* 1: every array as text                                */
     const double *cell_values;    /* m->count per-cell scalars as cell data, or NULL; NaN
                                      or infinity: LH_ERR_NONFINITE                        */
     const char *cell_values_name; /* its name (as values_name), NULL for "cell_value"      */
 } lh_vtu_options;
-/* lh_write_vtu with choices; checks and statuses as the writers above. */
-LH_API lh_status lh_write_vtu_opts(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
+/* The .vtu writer (above) with its choices, opt NULL for the defaults. */
+LH_API lh_status lh_vtu_write(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
 
 /* ---- 2D meshing: constrained Delaunay triangulation and quality refinement -------- */
 
@@ -826,7 +840,7 @@ LH_API lh_status lh_pslg_take_points(lh_pslg *g, lh_points *p);
 /* Frees what a reader allocated (not g) and zeroes g; NULL or a zeroed g is a no-op. */
 LH_API void lh_pslg_free(lh_pslg *g);
 
-/* Options of lh_triangulate_pslg; lh_trimesh_options_default sets every default.
+/* Options of lh_pslg_triangulate; lh_trimesh_options_default sets every default.
  * The letters are Triangle's switches for the same thing. */
 typedef struct lh_trimesh_options {
     const lh_allocator *alloc; /* NULL: malloc/free                                   */
@@ -875,12 +889,12 @@ typedef struct lh_trimesh_options {
 LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
 
 /*
- * lh_triangulate_pslg: the constrained Delaunay triangulation (Chew 1989) of a PSLG,
+ * lh_pslg_triangulate: the constrained Delaunay triangulation (Chew 1989) of a PSLG,
  * restricted to its domain, optionally refined (Ruppert 1995; Shewchuk 2002, "Delaunay
  * refinement algorithms for triangular mesh generation"). Exact: every decision is an
  * exact orient_2 or incircle, so every triangle is positively oriented, every segment
  * is a union of edges, and every edge that is not on a segment is locally Delaunay
- * (lh_trimesh_check). Steiner points are constructions, rounded once each: a point
+ * (lh_cdt_check). Steiner points are constructions, rounded once each: a point
  * put on a segment is within an ulp of it, not necessarily exactly on it.
  *
  * Degenerate input, resolved and reported in lh_trimesh_stats: exact duplicate
@@ -888,8 +902,11 @@ LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
  * zero-length segments (after merging) are dropped; a segment overlapping another
  * shares its edges; a vertex lying on a segment splits it; a hole or region seed
  * outside the domain is ignored; segments that cross get a vertex at the crossing
- * with opt->split_crossings. Errors: segments that cross (LH_ERR_DEGENERATE, naming
- * both; also when split_crossings cannot place the rounded crossing), all vertices
+ * with opt->split_crossings. Errors: segments that cross (LH_ERR_CROSSING_SEGMENTS,
+ * naming both; also when split_crossings cannot place the rounded crossing), a mesh
+ * to refine (cover) naming a point that does not exist, with an edge of three
+ * triangles, crossing edges or no triangle of positive area (LH_ERR_INVALID_MESH),
+ * all vertices
  * collinear or fewer than 3 distinct (LH_ERR_DEGENERATE),
  * a flood from the outside or a hole that removes every triangle (an unclosed
  * boundary: LH_ERR_DEGENERATE), with even_odd a vertex ending an odd number of
@@ -908,7 +925,7 @@ LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
  * from g->first_index + g->item_first_shift).
  */
 typedef struct lh_trimesh lh_trimesh;
-LH_API lh_status lh_triangulate_pslg(const lh_pslg *g, const lh_trimesh_options *opt,
+LH_API lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
                                      lh_trimesh **out, char *msg, size_t msg_size);
 LH_API void lh_trimesh_free(lh_trimesh *m);
 
@@ -960,7 +977,7 @@ typedef struct lh_trimesh_stats {
                                         else 0 (no budget)                           */
     int steiner_budget_reached;      /* refinement stopped there: bad_triangles are left */
 } lh_trimesh_stats;
-LH_API void lh_trimesh_get_stats(const lh_trimesh *m, lh_trimesh_stats *out);
+LH_API void lh_trimesh_stats_get(const lh_trimesh *m, lh_trimesh_stats *out);
 /* The triangles still bad at the end (lh_trimesh_stats.bad_triangles of them). */
 LH_API const lh_index *lh_trimesh_bad_triangles(const lh_trimesh *m);
 
@@ -977,18 +994,18 @@ LH_API int lh_triangle_scaled_edges(const double a[2], const double b[2], const 
                                     double d[3][2]);
 
 /*
- * lh_check_trimesh: exact check of a 2D triangulation of a domain — points (n, xy),
+ * lh_cdt_check: exact check of a 2D triangulation of a domain — points (n, xy),
  * triangles (3 indices each), subsegments (2 indices each): every triangle
  * counterclockwise with positive area; edges shared by at most two triangles; every subsegment an
  * edge; every edge on the boundary a subsegment (unless boundary_free); every edge
  * not a subsegment locally Delaunay (incircle, exact). Returns LH_OK, or
- * LH_ERR_INTERNAL with a reason in msg; LH_ERR_INVALID_ARGUMENT (a NULL array with a
+ * LH_ERR_INVALID_MESH with a reason in msg; LH_ERR_INVALID_ARGUMENT (a NULL array with a
  * count, a subsegment endpoint out of range, an allocator lacking alloc or free) or
  * LH_ERR_TOO_LARGE, the argument named in msg; LH_ERR_NOMEM.
  */
-LH_API lh_status lh_check_trimesh(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
-                                  size_t seg_count, const lh_index *segs, int boundary_free,
-                                  const lh_allocator *alloc, char *msg, size_t msg_size);
+LH_API lh_status lh_cdt_check(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
+                              size_t seg_count, const lh_index *segs, int boundary_free,
+                              const lh_allocator *alloc, char *msg, size_t msg_size);
 
 #ifdef __cplusplus
 }

@@ -64,7 +64,7 @@ static void node_data(lh__out *o, const lh_mesh_view *m)
     lh__outf(o, "$EndNodeData\n");
 }
 
-lh_status lh_write_msh(FILE *f, const lh_mesh_view *m)
+lh_status lh_msh_write(FILE *f, const lh_mesh_view *m)
 {
     lh_status st = lh__view_check(f, m, 1, 3, 1, 3);
     if (st != LH_OK) return st;

@@ -4,7 +4,7 @@
  * triangles: a 2D triangulation (z = 0) or a triangulated surface in 3D. */
 #include "io_internal.h"
 
-lh_status lh_write_off(FILE *f, const lh_mesh_view *m)
+lh_status lh_off_write(FILE *f, const lh_mesh_view *m)
 {
     lh_status st = lh__view_check(f, m, 2, 3, 2, 2);
     if (st != LH_OK) return st;

@@ -6,7 +6,7 @@
  * index). Generalised to any d and k: lifthull's own use of the formats. */
 #include "io_internal.h"
 
-lh_status lh_write_node(FILE *f, const lh_mesh_view *m, int first_index)
+lh_status lh_node_write(FILE *f, const lh_mesh_view *m, int first_index)
 {
     lh_status st = lh__view_check(f, m, LH_DELAUNAY_MIN_DIM, LH_DELAUNAY_MAX_DIM, 0, 8);
     if (st != LH_OK) return st;
@@ -40,7 +40,7 @@ static lh_status rows(FILE *f, const lh_mesh_view *m, const lh_index *a, int fir
     return lh__out_status(&o);
 }
 
-lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index)
+lh_status lh_ele_write(FILE *f, const lh_mesh_view *m, int first_index)
 {
     lh_status st = lh__view_check(f, m, 1, LH_DELAUNAY_MAX_DIM, 1, LH_DELAUNAY_MAX_DIM);
     if (st != LH_OK) return st;
@@ -48,7 +48,7 @@ lh_status lh_write_ele(FILE *f, const lh_mesh_view *m, int first_index)
     return rows(f, m, m->cells, first_index, 1);
 }
 
-lh_status lh_write_neigh(FILE *f, const lh_mesh_view *m, int first_index)
+lh_status lh_neigh_write(FILE *f, const lh_mesh_view *m, int first_index)
 {
     lh_status st = lh__view_check(f, m, 1, LH_DELAUNAY_MAX_DIM, 1, LH_DELAUNAY_MAX_DIM);
     if (st != LH_OK) return st;

@@ -301,7 +301,7 @@ static lh_status check_cell_values(const lh_mesh_view *m, const lh_vtu_options *
     return LH_OK;
 }
 
-lh_status lh_write_vtu_opts(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt)
+lh_status lh_vtu_write(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt)
 {
     const lh_vtu_options none = {0, NULL, NULL};
     if (!opt) opt = &none;
@@ -310,10 +310,4 @@ lh_status lh_write_vtu_opts(FILE *f, const lh_mesh_view *m, const lh_vtu_options
     if (st != LH_OK) return st;
     lh__out o = {f, 0};
     return opt->ascii ? write_ascii(&o, m, opt) : write_binary(&o, m, opt);
-}
-
-lh_status lh_write_vtu(FILE *f, const lh_mesh_view *m)
-{
-    const lh_vtu_options ascii = {1, NULL, NULL};
-    return lh_write_vtu_opts(f, m, &ascii);
 }

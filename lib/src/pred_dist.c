@@ -1,5 +1,5 @@
 /*
- * pred_dist.c — lh_compare_distance: the sign of |q - a|^2 - |q - b|^2, exactly.
+ * pred_dist.c — lh_distance_compare: the sign of |q - a|^2 - |q - b|^2, exactly.
  *
  * Filter: A = sum (q_j - a_j)^2 and B likewise in double. Each term carries at most
  * three roundings and the running sum d - 1 more, so |fl(A) - A| <= gamma_{d+2} A
@@ -65,7 +65,7 @@ static int exact(lh_pred *ctx, int d, const double *q, const double *a, const do
     return lh__bn_sign(&num[3]);
 }
 
-int lh_compare_distance(lh_pred *ctx, int d, const double *q, const double *a, const double *b)
+int lh_distance_compare(lh_pred *ctx, int d, const double *q, const double *a, const double *b)
 {
     if (!ctx || !q || !a || !b || d < 1 || d > LH_ORIENT_MAX_DIM) return 0;
     ctx->count.calls++;

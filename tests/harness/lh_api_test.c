@@ -27,7 +27,7 @@ lh_status lh_test_pslg_text(const char *text, lh_pslg *g)
 
 lh_status lh_test_check_trimesh(const lh_trimesh *m, char *msg, size_t size)
 {
-    return lh_check_trimesh(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
+    return lh_cdt_check(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
                             lh_trimesh_triangles(m), lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0, NULL,
                             msg, size);
 }

@@ -33,7 +33,7 @@ typedef lh_status (*lh_test_pslg_reader)(FILE *, const char *, const lh_allocato
 lh_status lh_test_pslg_file(lh_test_pslg_reader rd, const char *dir, const char *path, lh_pslg *g);
 /* Reads text as a .poly file. */
 lh_status lh_test_pslg_text(const char *text, lh_pslg *g);
-/* lh_check_trimesh of a mesh with its subsegments, boundary edges checked. */
+/* lh_cdt_check of a mesh with its subsegments, boundary edges checked. */
 lh_status lh_test_check_trimesh(const lh_trimesh *m, char *msg, size_t size);
 
 #endif

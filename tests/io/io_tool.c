@@ -41,6 +41,13 @@ static int print_points(const lh_points *p)
 
 typedef lh_status (*writer)(FILE *f, const lh_mesh_view *m);
 
+/* The ASCII .vtu (lh_vtu_write with ascii set). */
+static lh_status vtu_ascii(FILE *f, const lh_mesh_view *m)
+{
+    const lh_vtu_options o = {1, NULL, NULL};
+    return lh_vtu_write(f, m, &o);
+}
+
 /* The binary .vtu, with a cell field "quarter" (cell i: i / 4). */
 static lh_status vtu_binary(FILE *f, const lh_mesh_view *m)
 {
@@ -48,7 +55,7 @@ static lh_status vtu_binary(FILE *f, const lh_mesh_view *m)
     if (!q) return LH_ERR_NOMEM;
     for (size_t i = 0; i < m->count; i++) q[i] = 0.25 * (double)i;
     const lh_vtu_options o = {0, q, "quarter"};
-    lh_status st = lh_write_vtu_opts(f, m, &o);
+    lh_status st = lh_vtu_write(f, m, &o);
     free(q);
     return st;
 }
@@ -82,13 +89,13 @@ static int mesh(const lh_points *p, const char *prefix)
     for (size_t i = 0; i < p->n; i++) values[i] = 0.5 * (double)i;
     lh_mesh_view m = {p->d, p->n, p->xyz, lh_tri_simplex_dim(t), lh_tri_count(t),
                       lh_tri_simplices(t), lh_tri_neighbors(t), values, "half_index"};
-    int bad = write_one(prefix, "vtu", &m, lh_write_vtu, NULL) +
+    int bad = write_one(prefix, "vtu", &m, vtu_ascii, NULL) +
               write_one(prefix, "bin.vtu", &m, vtu_binary, NULL) +
-              write_one(prefix, "msh", &m, lh_write_msh, NULL) +
-              write_one(prefix, "node", &m, NULL, lh_write_node) +
-              write_one(prefix, "ele", &m, NULL, lh_write_ele) +
-              write_one(prefix, "neigh", &m, NULL, lh_write_neigh);
-    if (p->d == 2) bad += write_one(prefix, "off", &m, lh_write_off, NULL);
+              write_one(prefix, "msh", &m, lh_msh_write, NULL) +
+              write_one(prefix, "node", &m, NULL, lh_node_write) +
+              write_one(prefix, "ele", &m, NULL, lh_ele_write) +
+              write_one(prefix, "neigh", &m, NULL, lh_neigh_write);
+    if (p->d == 2) bad += write_one(prefix, "off", &m, lh_off_write, NULL);
     free(values);
     lh_tri_free(t);
     return bad != 0;
