@@ -9,31 +9,11 @@
 
 /* ---- memory --------------------------------------------------------------------- */
 
-/* The largest single allocation, to see that a declared count is not trusted. */
-typedef struct biggest {
-    size_t largest;
-    long live;
-} biggest;
-
-static void *big_alloc(void *user, size_t size)
-{
-    biggest *b = user;
-    if (size > b->largest) b->largest = size;
-    b->live++;
-    return malloc(size);
-}
-
-static void big_free(void *user, void *ptr)
-{
-    biggest *b = user;
-    if (ptr) b->live--;
-    free(ptr);
-}
-
+/* A count far beyond the data must not be allocated up front. */
 LH_TEST(declared_counts_are_not_trusted)
 {
-    biggest b = {0, 0};
-    lh_allocator a = {big_alloc, big_free, &b};
+    lh_test_biggest b;
+    lh_allocator a = lh_test_biggest_allocator(&b);
     char msg[256];
     lh_pslg g;
     LH_EXPECT_EQ_INT(read_text(lh_poly_read, "lie.poly", TEXT("2000000000 2 3 1\n1 0 0 1 2 3 4\n"), &a, &g, msg, sizeof msg),

@@ -230,29 +230,10 @@ LH_TEST(columns_errors)
 }
 
 /* A count far beyond the data must not be allocated up front. */
-typedef struct biggest {
-    size_t largest;
-    long live;
-} biggest;
-
-static void *big_alloc(void *user, size_t size)
-{
-    biggest *b = user;
-    if (size > b->largest) b->largest = size;
-    b->live++;
-    return malloc(size);
-}
-
-static void big_free(void *user, void *ptr)
-{
-    ((biggest *)user)->live--;
-    free(ptr);
-}
-
 LH_TEST(declared_count_is_not_trusted)
 {
-    biggest b = {0, 0};
-    lh_allocator a = {big_alloc, big_free, &b};
+    lh_test_biggest b;
+    lh_allocator a = lh_test_biggest_allocator(&b);
     char msg[256];
     lh_points p;
     LH_EXPECT_EQ_INT(read_text("lie", TEXT("8 2000000000\n0 0 0 0 0 0 0 0\n"), Q, &a, &p, msg, sizeof msg), LH_ERR_PARSE);

@@ -2,6 +2,7 @@
 #include "lh_api_test.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 lh_status lh_test_pslg_file(lh_test_pslg_reader rd, const char *dir, const char *path, lh_pslg *g)
@@ -83,4 +84,26 @@ lh_status lh_test_run_on_thread(lh_test_state *lh_t_, lh_test_alloc_run run, con
     thread_run r = {lh_t_, run, user, LH_ERR_INTERNAL};
     *stack = lh_test_stack_used(run_thread, &r);
     return r.st;
+}
+
+static void *biggest_alloc(void *user, size_t size)
+{
+    lh_test_biggest *b = user;
+    if (size > b->largest) b->largest = size;
+    b->live++;
+    return malloc(size);
+}
+
+static void biggest_free(void *user, void *ptr)
+{
+    lh_test_biggest *b = user;
+    if (ptr) b->live--;
+    free(ptr);
+}
+
+lh_allocator lh_test_biggest_allocator(lh_test_biggest *b)
+{
+    b->largest = 0;
+    b->live = 0;
+    return (lh_allocator){biggest_alloc, biggest_free, b};
 }

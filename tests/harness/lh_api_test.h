@@ -27,6 +27,15 @@ long lh_test_every_failure(lh_test_state *lh_t_, lh_test_alloc_run run, const vo
 lh_status lh_test_run_on_thread(lh_test_state *lh_t_, lh_test_alloc_run run, const void *user,
                                 size_t *stack);
 
+/* An allocator that records the largest single request and the blocks live: to see
+ * that a reader does not allocate from a count it has not read the data for. */
+typedef struct lh_test_biggest {
+    size_t largest;
+    long live;
+} lh_test_biggest;
+/* The allocator over *b (zeroed first). */
+lh_allocator lh_test_biggest_allocator(lh_test_biggest *b);
+
 /* A PSLG reader (lh_poly_read, lh_rings_read, ...). */
 typedef lh_status (*lh_test_pslg_reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, char *, size_t);
 /* Reads dir/path with rd: the reader's status (LH_ERR_IO when it cannot be opened). */
