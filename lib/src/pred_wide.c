@@ -268,24 +268,23 @@ static int binary_exponent(double x)
  * its small rows are formed without rounding and the expansion cancels little. */
 static int pivot(int dim, int rows, const double *const *pts)
 {
-    int best = 0;
-    long best_sum = 0;
+    /* Each pair once: |p_i[c] - p_k[c]| = |p_k[c] - p_i[c]| exactly. */
+    long sum[LH__MAXN + 1] = {0};
     for (int k = 0; k < rows; k++) {
-        long sum = 0;
-        for (int i = 0; i < rows; i++) {
-            if (i == k) continue;
+        for (int i = k + 1; i < rows; i++) {
             double most = 0;
             for (int c = 0; c < dim; c++) {
                 double d = fabs(pts[i][c] - pts[k][c]);
                 if (d > most) most = d;
             }
-            sum += most == 0 ? -1100 : !isfinite(most) ? 1100 : binary_exponent(most);
-        }
-        if (k == 0 || sum < best_sum) {
-            best = k;
-            best_sum = sum;
+            long x = most == 0 ? -1100 : !isfinite(most) ? 1100 : binary_exponent(most);
+            sum[k] += x;
+            sum[i] += x;
         }
     }
+    int best = 0;
+    for (int k = 1; k < rows; k++)
+        if (sum[k] < sum[best]) best = k;
     return best;
 }
 
@@ -323,12 +322,15 @@ static int dw_sign(const lh__subsets *sub, int n, int dim, int lifted, const dou
         for (int c = 0; c < dim; c++) {
             dword diff = two_sum(pts[i][c], -pts[k][c]);
             e[r * n + c] = diff;
+            mag[r * n + c] = diff.hi;
             if (lifted) lift = dw_add(lift, dw_mul(diff, diff));
         }
-        if (lifted) e[r * n + dim] = lift;
+        if (lifted) {
+            e[r * n + dim] = lift;
+            mag[r * n + dim] = lift.hi;
+        }
         r++;
     }
-    for (int i = 0; i < n * n; i++) mag[i] = e[i].hi;
     if (!in_band(n, dim, lifted, mag, 50)) return 0;
     int g = n * (n + 1) / 2 - 1 + dim + 2;
     dword det;
