@@ -73,7 +73,8 @@ cp tests/data/triangle/A.poly "$vgdir/" || fail valgrind-setup
   echo "$vg $t/test_delaunay furthest_site_triangulation output_depends_only_on_the_site_set smallest_inputs duplicates_are_merged_and_reported bad_input_gets_its_status the_check_rejects_what_is_not_delaunay every_allocation_failure_is_survived"
   for x in test_io_read test_cells test_io_write test_complex test_io_poly test_io_poly_errors \
            test_io_rings test_io_pslg_memory; do echo "$vg $t/$x"; done
-  echo "$vg $t/test_trimesh cdt_of_triangle_files_is_exactly_valid quality_bound_met_but_at_small_input_angles bad_input_gets_its_error_and_line the_check_rejects_what_is_not_a_cdt"
+  echo "$vg $t/test_trimesh cdt_of_triangle_files_is_exactly_valid quality_bound_met_but_at_small_input_angles"
+  echo "$vg $t/test_trimesh_errors bad_input_gets_its_error_and_line the_check_rejects_what_is_not_a_cdt"
   for x in delaunay read hull check cells query poly trimesh; do echo "$vg $t/fuzz_${x}_replay fuzz/corpus/$x/*"; done
   echo "$vg $lh delaunay $vgdir/p3.txt -o $vgdir/t3v.txt"
   echo "$vg $lh check $vgdir/p3.txt $vgdir/t3.txt"
