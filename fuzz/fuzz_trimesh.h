@@ -1,7 +1,7 @@
 /* fuzz_trimesh.h — what the files of the fuzz_trimesh target share (fuzz_trimesh.c:
  * the target and its contract): the decoded input (fuzz_trimesh_input.c), the checks
  * of a mesh (fuzz_trimesh_checks.c), the cover stage (fuzz_trimesh_refine.c), and the
- * counting allocator's runs. The short names are macros for lh_fuzz_trimesh_ ones. */
+ * counting allocator's runs. */
 #ifndef LH_FUZZ_TRIMESH_H
 #define LH_FUZZ_TRIMESH_H
 
@@ -11,7 +11,9 @@
 #include <stdint.h>
 
 #define MAXV 40
-#define MAXS (MAXV + 60)/* A counting allocator that fails call number fail_at (0: never). */
+#define MAXS (MAXV + 60)
+
+/* A counting allocator that fails call number fail_at (0: never). */
 typedef struct counter { long live, calls, fail_at, failed; } counter;
 
 typedef struct grid { long long x, y; } grid;
@@ -29,21 +31,8 @@ typedef struct input {
     unsigned fail_pick, cover; /* cover: the byte after the PSLG's (refine_cover) */
 } input;
 
-#define angles lh_fuzz_trimesh_angles
-#define orient lh_fuzz_trimesh_orient
-#define on_segment lh_fuzz_trimesh_on_segment
-#define cross lh_fuzz_trimesh_cross
-#define hull_area2 lh_fuzz_trimesh_hull_area2
-#define decode lh_fuzz_trimesh_decode
-#define same lh_fuzz_trimesh_same
-#define run lh_fuzz_trimesh_run
-#define check_failure lh_fuzz_trimesh_check_failure
-#define check_links lh_fuzz_trimesh_check_links
-#define check_bounds lh_fuzz_trimesh_check_bounds
-#define grid_area2 lh_fuzz_trimesh_grid_area2
-#define check_area lh_fuzz_trimesh_check_area
-#define check_mesh lh_fuzz_trimesh_check_mesh
-#define refine_cover lh_fuzz_trimesh_refine_cover
+/* Shared among the target's files by their plain names: each fuzz target is a
+ * program of its own, whose only other symbols are the library's lh_ ones. */
 
 /* The angle bounds a byte picks (decode, refine_cover). */
 extern const double angles[8];
