@@ -21,13 +21,7 @@ static __int128 val(const lh__bn *a)
 }
 
 static uint64_t rng = 88172645463325252u;
-static uint64_t next(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return rng;
-}
+static uint64_t next(void) { return lh_test_xorshift(&rng); }
 
 LH_TEST(doubles_convert_exactly)
 {

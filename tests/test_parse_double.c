@@ -18,13 +18,7 @@
 #include <string.h>
 
 static uint64_t rng = 0x9E3779B97F4A7C15u;
-static uint64_t next(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return rng;
-}
+static uint64_t next(void) { return lh_test_xorshift(&rng); }
 
 static uint64_t bits_of(double x)
 {

@@ -14,13 +14,7 @@
 #include <stdlib.h>
 
 static uint64_t rng = 0x243F6A8885A308D3u;
-static uint64_t next(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return rng;
-}
+static uint64_t next(void) { return lh_test_xorshift(&rng); }
 
 /* A coordinate drawn as in the reproducer: a few values of each magnitude. */
 static double mixed_value(void)

@@ -12,13 +12,7 @@
 #include <math.h>
 
 static uint64_t rng = 0x9E3779B97F4A7C15u;
-static uint64_t next(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return rng;
-}
+static uint64_t next(void) { return lh_test_xorshift(&rng); }
 
 /* The value of x (below 2^126 in magnitude); checks the representation's invariants. */
 static __int128 value(lh_test_state *lh_t_, const lh__sp *x)

@@ -298,7 +298,6 @@ int lh__minor_sign(lh_pred *ctx, const double *const *pts, int dim, int m,
     }
     exact_buf b;
     int n = fill_minor(ctx, &b, pts, dim, m, rows, cols, scale, &scale);
-    b.work = 0;
     int s = det_sign(&b, &ctx->sub, n, b.ent);
     ctx->exact_work += b.work;
     return s;

@@ -186,3 +186,12 @@ size_t lh_test_stack_used(void *(*fn)(void *), void *arg)
     const size_t base = painted_use(nothing, NULL), used = painted_use(fn, arg);
     return base && used > base ? used - base : 0;
 }
+
+uint64_t lh_test_xorshift(uint64_t *state)
+{
+    uint64_t x = *state;
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    return *state = x;
+}

@@ -38,6 +38,10 @@ typedef struct lh_test_case {
 
 int lh_test_main(const lh_test_case *cases, size_t count, int argc, char **argv);
 
+/* Marsaglia's xorshift64 (13, 7, 17): advances *state (never 0) and returns it. The
+ * tests' small deterministic streams; each test keeps its own state and seed. */
+uint64_t lh_test_xorshift(uint64_t *state);
+
 /* Reporting helpers (used by the macros). Return nonzero when the check passed. */
 int lh_test_check_i64(lh_test_state *t, const char *file, int line, const char *op,
                       const char *ea, const char *eb, long long a, long long b);
