@@ -47,9 +47,7 @@ extern "C" {
 
 /* LH_API marks every function of the API: the shared library exports these and
  * nothing else (it is built with hidden visibility). */
-#if defined(_WIN32) && defined(LH_SHARED_BUILD)
-#define LH_API __declspec(dllexport)
-#elif defined(__GNUC__) || defined(__clang__)
+#if defined(__GNUC__) || defined(__clang__)
 #define LH_API __attribute__((visibility("default")))
 #else
 #define LH_API

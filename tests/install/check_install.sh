@@ -20,7 +20,8 @@ test -f "$tmp/prefix/include/lifthull.h"
 so="$(find "$tmp/prefix" -name 'liblifthull.so.*.*.*' | head -n 1)"
 test -f "$(dirname "$so")/liblifthull.a" || { echo "install: no liblifthull.a beside $so" >&2; exit 1; }
 soname="$(objdump -p "$so" | awk '$1 == "SONAME" { print $2 }')"
-test "$soname" = "liblifthull.so.$(lifthull_ver="$("$tmp/prefix/bin/lifthull" --version | awk '{ print $2 }')"; echo "${lifthull_ver%.*}")" ||
+version="$("$tmp/prefix/bin/lifthull" --version | awk '{ print $2 }')" # MAJOR.MINOR.PATCH
+test "$soname" = "liblifthull.so.${version%.*}" ||
   { echo "install: SONAME $soname" >&2; exit 1; }
 others="$(nm -D --defined-only "$so" | awk '{ print $3 }' | grep -v '^lh_[a-z]' || true)"
 test -z "$others" || { echo "install: liblifthull.so exports more than lh_ functions:" $others >&2; exit 1; }
@@ -36,7 +37,9 @@ for shared in OFF ON; do
   cmake --build "$tmp/cmake-consumer-$shared" >/dev/null
   "$tmp/cmake-consumer-$shared/consumer"
 done
-ldd "$tmp/cmake-consumer-ON/consumer" | grep -q liblifthull.so ||
+# grep without -q reads all of ldd's output: under pipefail, grep -q quitting early
+# would fail the pipeline whenever ldd then died of SIGPIPE
+ldd "$tmp/cmake-consumer-ON/consumer" | grep liblifthull.so >/dev/null ||
   { echo "install: the shared consumer does not load liblifthull.so" >&2; exit 1; }
 
 pcdir="$(dirname "$(find "$tmp/prefix" -name lifthull.pc | head -n 1)")"
