@@ -80,19 +80,10 @@ class Cmp:
         self.diffs.append(what)
 
 
-def main():
-    args = [a for a in sys.argv[1:] if not a.startswith('--')]
-    same = '--same' in sys.argv
-    ref, out = args
-    c = Cmp()
-    rh, rfirst, rpts, rattr, rmark = read_node(ref + '.node')
-    oh, ofirst, opts, oattr, omark = read_node(out + '.node')
-    if (rh[1:] if same is False else rh) != (oh[1:] if same is False else oh):
-        c.bad('.node header %s, Triangle %s' % (' '.join(oh), ' '.join(rh)))
-    if not same and '--o2' not in sys.argv and not 0.8 * len(rpts) <= len(opts) <= 1.25 * len(rpts):
-        c.bad('%d vertices, Triangle %d (not within 0.8..1.25 times)' % (len(opts), len(rpts)))
-    rat = {p: i for i, p in enumerate(rpts)}
-    rsegs = None
+def boundary_segments(c, ref, out, rfirst, ofirst, same):
+    """REF's boundary subsegments with markers, and OUT's (None for a .node input): the .poly
+    files (headers, holes, regions compared), or for a .node input the convex hull, the edges
+    on one triangle of REF only (marker 1)."""
     if os.path.exists(ref + '.poly'):
         rph, rsegs, rholes, rregions = read_poly_out(ref + '.poly', rfirst)
         oph, osegs, oholes, oregions = read_poly_out(out + '.poly', ofirst)
@@ -100,15 +91,22 @@ def main():
             c.bad('.poly header %s, Triangle %s' % (' '.join(oph), ' '.join(rph)))
         if rholes != oholes or rregions != oregions:
             c.bad('.poly holes/regions %s %s, Triangle %s %s' % (oholes, oregions, rholes, rregions))
-    else:
-        # a .node input: the boundary is the convex hull, the edges on one triangle only
-        _, rtris = read_ele(ref + '.ele', rfirst)
-        count = {}
-        for (a, b, d) in (t[:3] for t in rtris):
-            for u, v in ((a, b), (b, d), (d, a)):
-                k = (min(u, v), max(u, v))
-                count[k] = count.get(k, 0) + 1
-        rsegs = [(u, v, 1) for (u, v), n in count.items() if n == 1]
+        return rsegs, osegs
+    _, rtris = read_ele(ref + '.ele', rfirst)
+    count = {}
+    for (a, b, d) in (t[:3] for t in rtris):
+        for u, v in ((a, b), (b, d), (d, a)):
+            k = (min(u, v), max(u, v))
+            count[k] = count.get(k, 0) + 1
+    return [(u, v, 1) for (u, v), n in count.items() if n == 1], None
+
+
+def check_vertices(c, r, o, ofirst, rsegs):
+    """Every vertex of OUT has the marker Triangle's rule gives it, and REF's attributes
+    where REF has the vertex. r, o: read_node's (points, attributes, markers)."""
+    rpts, rattr, rmark = r
+    opts, oattr, omark = o
+    rat = {p: i for i, p in enumerate(rpts)}
 
     def expected_marker(p):
         if p in rat:
@@ -124,41 +122,50 @@ def main():
             c.bad('vertex %d (%.17g, %.17g): marker %d, Triangle %d' % (i + ofirst, p[0], p[1], omark[i], want))
         if p in rat and oattr[i] != rattr[rat[p]]:
             c.bad('vertex %d: attributes %s, Triangle %s' % (i + ofirst, oattr[i], rattr[rat[p]]))
-    if os.path.exists(ref + '.poly'):
-        length = [0.0, 0.0]
-        for (a, b, m) in osegs:
-            pa, pb = opts[a], opts[b]
-            length[0] += math.dist(pa, pb)
-            mid = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)  # on the reference subsegment, ends on its line
-            host = [r for r in rsegs if on_segment(mid, rpts[r[0]], rpts[r[1]])
-                    and on_segment(pa, rpts[r[0]], rpts[r[1]], True) and on_segment(pb, rpts[r[0]], rpts[r[1]], True)]
-            if not host:
-                c.bad('segment %s-%s on no segment of Triangle' % (a + ofirst, b + ofirst))
-            elif m != host[0][2]:
-                c.bad('segment %s-%s: marker %d, Triangle %d' % (a + ofirst, b + ofirst, m, host[0][2]))
-        for (a, b, m) in rsegs:
-            length[1] += math.dist(rpts[a], rpts[b])
-        if abs(length[0] - length[1]) > 1e-9 * length[1]:
-            c.bad('segments: total length %.17g, Triangle %.17g' % tuple(length))
-    if same:
-        if sorted(opts) != sorted(rpts):
-            c.bad('other vertices than Triangle')
-        elif os.path.exists(ref + '.poly'):
-            key = lambda s, pts: (tuple(sorted((pts[s[0]], pts[s[1]]))), s[2])
-            mine, theirs = sorted(key(s, opts) for s in osegs), sorted(key(s, rpts) for s in rsegs)
-            if mine != theirs:
-                c.bad('other segments or segment markers than Triangle: %s, Triangle %s'
-                      % (sorted(set(mine) - set(theirs))[:3], sorted(set(theirs) - set(mine))[:3]))
-        reh, rtris = read_ele(ref + '.ele', rfirst)
-        oeh, otris = read_ele(out + '.ele', ofirst)
-        if reh != oeh:
-            c.bad('.ele header %s, Triangle %s' % (' '.join(oeh), ' '.join(reh)))
-        if not c.diffs and tri_set(otris, opts) != tri_set(rtris, rpts) and not cocircular(rtris, rpts):
-            c.bad('other triangles than Triangle')
-    if '--o2' in sys.argv:
-        quadratic(c, out, ofirst, opts)
-    if '--delaunay' in sys.argv and cocircular(read_ele(out + '.ele', ofirst)[1], opts, strict=True):
-        c.bad('an edge of OUT is not locally Delaunay')
+
+
+def check_segments(c, osegs, opts, ofirst, rsegs, rpts):
+    """Every subsegment of OUT along one of REF with its marker; the same total length."""
+    length = [0.0, 0.0]
+    for (a, b, m) in osegs:
+        pa, pb = opts[a], opts[b]
+        length[0] += math.dist(pa, pb)
+        mid = ((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2)  # on the reference subsegment, ends on its line
+        host = [r for r in rsegs if on_segment(mid, rpts[r[0]], rpts[r[1]])
+                and on_segment(pa, rpts[r[0]], rpts[r[1]], True) and on_segment(pb, rpts[r[0]], rpts[r[1]], True)]
+        if not host:
+            c.bad('segment %s-%s on no segment of Triangle' % (a + ofirst, b + ofirst))
+        elif m != host[0][2]:
+            c.bad('segment %s-%s: marker %d, Triangle %d' % (a + ofirst, b + ofirst, m, host[0][2]))
+    for (a, b, m) in rsegs:
+        length[1] += math.dist(rpts[a], rpts[b])
+    if abs(length[0] - length[1]) > 1e-9 * length[1]:
+        c.bad('segments: total length %.17g, Triangle %.17g' % tuple(length))
+
+
+def check_same(c, ref, out, first, pts, segs):
+    """--same: the same vertices, segments with markers, .ele header and triangles (unless
+    cocircular). first, pts, segs: (REF's, OUT's) each."""
+    rfirst, ofirst = first
+    rpts, opts = pts
+    rsegs, osegs = segs
+    if sorted(opts) != sorted(rpts):
+        c.bad('other vertices than Triangle')
+    elif os.path.exists(ref + '.poly'):
+        key = lambda s, pts: (tuple(sorted((pts[s[0]], pts[s[1]]))), s[2])
+        mine, theirs = sorted(key(s, opts) for s in osegs), sorted(key(s, rpts) for s in rsegs)
+        if mine != theirs:
+            c.bad('other segments or segment markers than Triangle: %s, Triangle %s'
+                  % (sorted(set(mine) - set(theirs))[:3], sorted(set(theirs) - set(mine))[:3]))
+    reh, rtris = read_ele(ref + '.ele', rfirst)
+    oeh, otris = read_ele(out + '.ele', ofirst)
+    if reh != oeh:
+        c.bad('.ele header %s, Triangle %s' % (' '.join(oeh), ' '.join(reh)))
+    if not c.diffs and tri_set(otris, opts) != tri_set(rtris, rpts) and not cocircular(rtris, rpts):
+        c.bad('other triangles than Triangle')
+
+
+def report(c):
     for d in c.diffs[:10]:
         print(d)
     if len(c.diffs) > 10:
@@ -166,6 +173,30 @@ def main():
     if not c.diffs:
         print('ok')
     return 1 if c.diffs else 0
+
+
+def main():
+    args = [a for a in sys.argv[1:] if not a.startswith('--')]
+    same = '--same' in sys.argv
+    ref, out = args
+    c = Cmp()
+    rh, rfirst, rpts, rattr, rmark = read_node(ref + '.node')
+    oh, ofirst, opts, oattr, omark = read_node(out + '.node')
+    if (rh[1:] if same is False else rh) != (oh[1:] if same is False else oh):
+        c.bad('.node header %s, Triangle %s' % (' '.join(oh), ' '.join(rh)))
+    if not same and '--o2' not in sys.argv and not 0.8 * len(rpts) <= len(opts) <= 1.25 * len(rpts):
+        c.bad('%d vertices, Triangle %d (not within 0.8..1.25 times)' % (len(opts), len(rpts)))
+    rsegs, osegs = boundary_segments(c, ref, out, rfirst, ofirst, same)
+    check_vertices(c, (rpts, rattr, rmark), (opts, oattr, omark), ofirst, rsegs)
+    if os.path.exists(ref + '.poly'):
+        check_segments(c, osegs, opts, ofirst, rsegs, rpts)
+    if same:
+        check_same(c, ref, out, (rfirst, ofirst), (rpts, opts), (rsegs, osegs))
+    if '--o2' in sys.argv:
+        quadratic(c, out, ofirst, opts)
+    if '--delaunay' in sys.argv and cocircular(read_ele(out + '.ele', ofirst)[1], opts, strict=True):
+        c.bad('an edge of OUT is not locally Delaunay')
+    return report(c)
 
 
 def quadratic(c, out, first, pts):

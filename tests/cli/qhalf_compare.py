@@ -138,76 +138,102 @@ def outputs(lh):
         ia, ib = both(["i"])
         ka, kb = keys(ia), keys(ib)
         check("qhalf %s i" % name, sorted(map(sorted, ka)) == sorted(map(sorted, kb)))
-        a, b = both(["p"])
-        check("qhalf %s p" % name, a.split()[:2] == b.split()[:2] and same_rows(
-            [tuple(map(float, l.split())) for l in a.strip().split("\n")[2:]],
-            [tuple(map(float, l.split())) for l in b.strip().split("\n")[2:]], 1e-9), a[:80] + " / " + b[:80])
-        a, b = both(["Fn"])
-        na = {ka[g]: frozenset(ka[int(x)] for x in l.split()[1:]) for g, l in enumerate(body(a))}
-        nb = {kb[g]: frozenset(kb[int(x)] for x in l.split()[1:]) for g, l in enumerate(body(b))}
-        check("qhalf %s Fn" % name, na == nb and len(na) == len(ka))
-        a, b = both(["FN"])
-        fa = [frozenset(ka[int(x)] for x in l.split()[1:]) for l in body(a)]
-        fb = [frozenset(kb[int(x)] for x in l.split()[1:]) for l in body(b)]
-        check("qhalf %s FN" % name, fa == fb and a.split()[0] == b.split()[0], a[:80] + " / " + b[:80])
-        a, b = both(["FI"])
-        check("qhalf %s FI" % name, a.split()[0] == b.split()[0] and a.split()[1:] == [str(g) for g in range(len(ka))])
-        a, b = both(["Fm"])
-        ma = {ka[g]: l for g, l in enumerate(body(a))}
-        mb = {kb[g]: l for g, l in enumerate(body(b))}
-        check("qhalf %s Fm" % name, ma == mb, a[:60] + " / " + b[:60])
-        a, b = both(["Fc"])
-        ca = {int(x) for l in body(a) for x in l.split()[1:]}
-        cb = {int(x) for l in body(b) for x in l.split()[1:]}
-        check("qhalf %s Fc" % name, ca == cb and a.split()[0] == b.split()[0], a + " / " + b)
-        a, b = both(["FP"])
-        pa = sorted((int(l.split()[1]), round(float(l.split()[3]), 9)) for l in body(a))
-        pb = sorted((int(l.split()[1]), round(float(l.split()[3]), 9)) for l in body(b))
-        check("qhalf %s FP" % name, pa == pb, a + " / " + b)
-        a, b = both(["Fs", "Fc"])
-        # all but Qhull's count of vertices it deleted while building (none here)
-        fs = lambda out: out.split("\n")[0].split()[:9] + out.split("\n")[0].split()[10:]
-        check("qhalf %s Fs" % name, fs(a) == fs(b) and a.split("\n")[0].split()[9] == "0", a[:60] + " / " + b[:60])
-        a, b = both(["FQ"])
-        # Qhull: the input's comment line, " | ", the command
-        check("qhalf %s FQ" % name, a.strip().replace("lifthull qhalf", "qhalf") == b.strip().lstrip(" |") and
-              a.strip().endswith("lifthull qhalf %s" % " ".join(h + ["FQ"])), a + b)
-        # the dual hull, every facet a simplex: against qhalf Qt
-        r, a, _ = run([lh, "qhalf"] + h + ["o"], text)
-        _, b, _ = run(["qhalf", "Qt"] + h + ["o"], text)
-        la, lb = a.strip().split("\n"), b.strip().split("\n")
-        n = int(la[1].split()[0])
-        pts = lambda ls: [tuple(map(float, l.split())) for l in ls[2:2 + n]]
-        faces = lambda ls: sorted(tuple(sorted(map(int, l.split()[1:]))) for l in ls[2 + n:])
+        indexed_outputs(both, name, ka, kb)
+        summary_outputs(both, name, h)
         general = name != "octahedron"  # the squares' diagonals are Qhull's choice
-        check("qhalf %s o" % name, la[:2] == lb[:2] and same_rows(pts(la), pts(lb), 1e-9) and
-              (not general or faces(la) == faces(lb)), a[:80] + " / " + b[:80])
+        dual_hull_outputs(lh, name, text, h, general)
         d = int(ia and run([lh, "qhalf"] + h + ["Fp"], text)[1].split()[0])
         if d == 3 and general:
-            r, a, _ = run([lh, "qhalf"] + h + ["G"], text)
-            _, b, _ = run(["qhalf", "Qt"] + h + ["G"], text)
-            check("qhalf %s G" % name, r == 0 and qf.same_geom(qf.geom_facets(a), qf.geom_facets(b)) and
-                  len(qf.geom_facets(a)) > 0, a[:80] + " / " + b[:80])
-            for opt in ("m", "FM"):
-                r, a, _ = run([lh, "qhalf"] + h + [opt], text)
-                _, b, _ = run(["qhalf", "Qt"] + h + [opt], text)
-                def shape(out):
-                    res = []
-                    for nums in qf.polygons(out):
-                        res.append(qf.canon_cycle([tuple(nums[i:i + 3]) for i in range(0, len(nums), 3)]))
-                    return sorted(res)
-                check("qhalf %s %s" % (name, opt), r == 0 and shape(a) == shape(b) and shape(a), a[:80] + " / " + b[:80])
+            geomview_outputs(lh, name, text, h)
         if general and d <= 4:
-            for opt in ("f", "FF"):
-                r, a, _ = run([lh, "qhalf"] + h + [opt], text)
-                _, b, _ = run(["qhalf", "Qt"] + h + [opt], text)
-                (va, fa_, _), (vb, fb_, _) = qf.fields(a), qf.fields(b)
-                check("qhalf %s %s" % (name, opt), r == 0 and va == vb and set(fa_) == set(fb_) and fa_,
-                      "%d vs %d facets" % (len(fa_), len(fb_)))
+            facet_list_outputs(lh, name, text, h)
         r, a, e = run([lh, "qhalf"] + h + ["Tv", "Fp"], text)
         check("qhalf %s Tv" % name, r == 0 and "Tv: the exact check passed" in e and a.startswith("%d\n" % d), e)
         r, a, e = run([lh, "qhalf"] + h + ["Ts", "FI"], text)
         check("qhalf %s Ts" % name, r == 0 and "%10d intersection points\n" % len(ka) in e, e)
+
+
+def indexed_outputs(both, name, ka, kb):
+    """p, Fn, FN, FI, Fm, Fc, FP against Qhull's, the intersection points matched by their
+    halfspaces (ka, kb: each side's `i` keys)."""
+    a, b = both(["p"])
+    check("qhalf %s p" % name, a.split()[:2] == b.split()[:2] and same_rows(
+        [tuple(map(float, l.split())) for l in a.strip().split("\n")[2:]],
+        [tuple(map(float, l.split())) for l in b.strip().split("\n")[2:]], 1e-9), a[:80] + " / " + b[:80])
+    a, b = both(["Fn"])
+    na = {ka[g]: frozenset(ka[int(x)] for x in l.split()[1:]) for g, l in enumerate(body(a))}
+    nb = {kb[g]: frozenset(kb[int(x)] for x in l.split()[1:]) for g, l in enumerate(body(b))}
+    check("qhalf %s Fn" % name, na == nb and len(na) == len(ka))
+    a, b = both(["FN"])
+    fa = [frozenset(ka[int(x)] for x in l.split()[1:]) for l in body(a)]
+    fb = [frozenset(kb[int(x)] for x in l.split()[1:]) for l in body(b)]
+    check("qhalf %s FN" % name, fa == fb and a.split()[0] == b.split()[0], a[:80] + " / " + b[:80])
+    a, b = both(["FI"])
+    check("qhalf %s FI" % name, a.split()[0] == b.split()[0] and a.split()[1:] == [str(g) for g in range(len(ka))])
+    a, b = both(["Fm"])
+    ma = {ka[g]: l for g, l in enumerate(body(a))}
+    mb = {kb[g]: l for g, l in enumerate(body(b))}
+    check("qhalf %s Fm" % name, ma == mb, a[:60] + " / " + b[:60])
+    a, b = both(["Fc"])
+    ca = {int(x) for l in body(a) for x in l.split()[1:]}
+    cb = {int(x) for l in body(b) for x in l.split()[1:]}
+    check("qhalf %s Fc" % name, ca == cb and a.split()[0] == b.split()[0], a + " / " + b)
+    a, b = both(["FP"])
+    pa = sorted((int(l.split()[1]), round(float(l.split()[3]), 9)) for l in body(a))
+    pb = sorted((int(l.split()[1]), round(float(l.split()[3]), 9)) for l in body(b))
+    check("qhalf %s FP" % name, pa == pb, a + " / " + b)
+
+
+def summary_outputs(both, name, h):
+    """Fs and FQ against Qhull's."""
+    a, b = both(["Fs", "Fc"])
+    # all but Qhull's count of vertices it deleted while building (none here)
+    fs = lambda out: out.split("\n")[0].split()[:9] + out.split("\n")[0].split()[10:]
+    check("qhalf %s Fs" % name, fs(a) == fs(b) and a.split("\n")[0].split()[9] == "0", a[:60] + " / " + b[:60])
+    a, b = both(["FQ"])
+    # Qhull: the input's comment line, " | ", the command
+    check("qhalf %s FQ" % name, a.strip().replace("lifthull qhalf", "qhalf") == b.strip().lstrip(" |") and
+          a.strip().endswith("lifthull qhalf %s" % " ".join(h + ["FQ"])), a + b)
+
+
+def dual_hull_outputs(lh, name, text, h, general):
+    """o: the dual hull, every facet a simplex: against qhalf Qt (the faces only where
+    Qhull's triangulation is unique: general)."""
+    r, a, _ = run([lh, "qhalf"] + h + ["o"], text)
+    _, b, _ = run(["qhalf", "Qt"] + h + ["o"], text)
+    la, lb = a.strip().split("\n"), b.strip().split("\n")
+    n = int(la[1].split()[0])
+    pts = lambda ls: [tuple(map(float, l.split())) for l in ls[2:2 + n]]
+    faces = lambda ls: sorted(tuple(sorted(map(int, l.split()[1:]))) for l in ls[2 + n:])
+    check("qhalf %s o" % name, la[:2] == lb[:2] and same_rows(pts(la), pts(lb), 1e-9) and
+          (not general or faces(la) == faces(lb)), a[:80] + " / " + b[:80])
+
+
+def geomview_outputs(lh, name, text, h):
+    """3-d: G, m and FM against qhalf Qt, as facet sets and polygons."""
+    r, a, _ = run([lh, "qhalf"] + h + ["G"], text)
+    _, b, _ = run(["qhalf", "Qt"] + h + ["G"], text)
+    check("qhalf %s G" % name, r == 0 and qf.same_geom(qf.geom_facets(a), qf.geom_facets(b)) and
+          len(qf.geom_facets(a)) > 0, a[:80] + " / " + b[:80])
+    for opt in ("m", "FM"):
+        r, a, _ = run([lh, "qhalf"] + h + [opt], text)
+        _, b, _ = run(["qhalf", "Qt"] + h + [opt], text)
+        def shape(out):
+            res = []
+            for nums in qf.polygons(out):
+                res.append(qf.canon_cycle([tuple(nums[i:i + 3]) for i in range(0, len(nums), 3)]))
+            return sorted(res)
+        check("qhalf %s %s" % (name, opt), r == 0 and shape(a) == shape(b) and shape(a), a[:80] + " / " + b[:80])
+
+
+def facet_list_outputs(lh, name, text, h):
+    """f and FF (up to 4-d) against qhalf Qt: the vertices and the facet fields."""
+    for opt in ("f", "FF"):
+        r, a, _ = run([lh, "qhalf"] + h + [opt], text)
+        _, b, _ = run(["qhalf", "Qt"] + h + [opt], text)
+        (va, fa_, _), (vb, fb_, _) = qf.fields(a), qf.fields(b)
+        check("qhalf %s %s" % (name, opt), r == 0 and va == vb and set(fa_) == set(fb_) and fa_,
+              "%d vs %d facets" % (len(fa_), len(fb_)))
 
 
 def cdd(lh):

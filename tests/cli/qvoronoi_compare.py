@@ -16,7 +16,7 @@ import sys
 from fractions import Fraction
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "oracles"))
-from compare_locate import affine_rank  # noqa: E402  (exact, Fractions)
+from locate_geometry import affine_rank  # noqa: E402  (exact, Fractions)
 
 
 def run(cmd, path):

@@ -50,7 +50,7 @@ from fractions import Fraction
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import canon  # noqa: E402  (the shared Qhull-format reader)
-from exact_check import det_int as det  # noqa: E402  (Bareiss, exact)
+from locate_geometry import Tri, dist2, sgn  # noqa: E402  (exact, on integers)
 
 
 class ToolError(Exception):
@@ -85,155 +85,6 @@ def read_points(path):
     return d, [tuple(c[i * d:(i + 1) * d]) for i in range(n)]
 
 
-# ---- exact geometry on integer coordinates ---------------------------------------------------
-
-def sgn(x):
-    return (x > 0) - (x < 0)
-
-
-def orient(pts):
-    """Sign-carrying determinant of (p1 - p0, ..., pd - p0) for d + 1 integer points."""
-    a = pts[0]
-    if len(a) == 2:
-        b, c = pts[1], pts[2]
-        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-    b, c, e = pts[1], pts[2], pts[3]
-    b0, b1, b2 = b[0] - a[0], b[1] - a[1], b[2] - a[2]
-    c0, c1, c2 = c[0] - a[0], c[1] - a[1], c[2] - a[2]
-    e0, e1, e2 = e[0] - a[0], e[1] - a[1], e[2] - a[2]
-    return b0 * (c1 * e2 - c2 * e1) - b1 * (c0 * e2 - c2 * e0) + b2 * (c0 * e1 - c1 * e0)
-
-
-def insphere_zero(simplex_pts, q):
-    """True iff q is exactly on the circumsphere of the simplex."""
-    b = simplex_pts[0]
-    rows = []
-    for p in list(simplex_pts[1:]) + [q]:
-        r = [p[j] - b[j] for j in range(len(b))]
-        rows.append(r + [sum(x * x for x in r)])
-    return det(rows) == 0
-
-
-def affine_rank(pts):
-    if not pts:
-        return -1
-    rows = [[Fraction(p[j] - pts[0][j]) for j in range(len(p))] for p in pts[1:]]
-    rank, col, d = 0, 0, len(pts[0])
-    while rank < len(rows) and col < d:
-        piv = next((r for r in range(rank, len(rows)) if rows[r][col] != 0), None)
-        if piv is None:
-            col += 1
-            continue
-        rows[rank], rows[piv] = rows[piv], rows[rank]
-        for r in range(len(rows)):
-            if r != rank and rows[r][col] != 0:
-                f = rows[r][col] / rows[rank][col]
-                rows[r] = [x - f * y for x, y in zip(rows[r], rows[rank])]
-        rank += 1
-        col += 1
-    return rank
-
-
-def dist2(a, b):
-    return sum((x - y) * (x - y) for x, y in zip(a, b))
-
-
-class Tri:
-    """A simplex list over integer points, with exact containment, facets and Delaunay cells."""
-
-    def __init__(self, d, P, simplices):
-        self.d, self.P, self.S = d, P, [tuple(s) for s in simplices]
-        self.sign = [sgn(orient([P[v] for v in s])) for s in self.S]
-        self.box = []
-        for s in self.S:
-            cs = [P[v] for v in s]
-            self.box.append(([min(c[j] for c in cs) for j in range(d)],
-                             [max(c[j] for c in cs) for j in range(d)]))
-        self.facets = {}
-        for si, s in enumerate(self.S):
-            for i in range(d + 1):
-                self.facets.setdefault(tuple(sorted(s[:i] + s[i + 1:])), []).append((si, s[i]))
-        # The Delaunay cells: union-find across exactly cospherical interior facets.
-        parent = list(range(len(self.S)))
-
-        def find(x):
-            while parent[x] != x:
-                parent[x] = parent[parent[x]]
-                x = parent[x]
-            return x
-        self.ties = 0
-        for f, pair in self.facets.items():
-            if len(pair) == 2:
-                (a, _), (b, ob) = pair
-                if insphere_zero([P[v] for v in self.S[a]], P[ob]):
-                    self.ties += 1
-                    parent[find(a)] = find(b)
-        self.cell_of = [find(i) for i in range(len(self.S))]
-        self.members = {}
-        for i, c in enumerate(self.cell_of):
-            self.members.setdefault(c, []).append(i)
-        self._cell_bfacets = {}
-
-    def hull_facet(self, f):
-        return len(self.facets.get(tuple(sorted(f)), ())) == 1
-
-    def orients(self, si, q):
-        """Signs (relative to the simplex's orientation) of q against each facet of si."""
-        s, P = self.S[si], self.P
-        o = self.sign[si]
-        out = []
-        for i in range(self.d + 1):
-            pts = [P[v] for v in s]
-            pts[i] = q
-            out.append(sgn(orient(pts)) * o)
-        return out
-
-    def raw_orients(self, si, q):
-        s, P = self.S[si], self.P
-        out = []
-        for i in range(self.d + 1):
-            pts = [P[v] for v in s]
-            pts[i] = q
-            out.append(orient(pts))
-        return out
-
-    def containing(self, q):
-        res = []
-        for si, (lo, hi) in enumerate(self.box):
-            if all(lo[j] <= q[j] <= hi[j] for j in range(self.d)):
-                if min(self.orients(si, q)) >= 0:
-                    res.append(si)
-        return res
-
-    def cell_boundary(self, c):
-        if c not in self._cell_bfacets:
-            count = {}
-            for si in self.members[c]:
-                s = self.S[si]
-                for i in range(self.d + 1):
-                    f = tuple(sorted(s[:i] + s[i + 1:]))
-                    count[f] = count.get(f, 0) + 1
-            self._cell_bfacets[c] = [f for f, k in count.items() if k == 1]
-        return self._cell_bfacets[c]
-
-    def minimal_face(self, si, q):
-        """The face F of the Delaunay subdivision with q in its relative interior (q in simplex
-        si): (sorted vertex list, dimension, is_simplex)."""
-        c = self.cell_of[si]
-        P = self.P
-        if len(self.members[c]) == 1:
-            o = self.orients(si, q)
-            fv = sorted(v for v, x in zip(self.S[si], o) if x != 0)
-            return fv, len(fv) - 1, True
-        verts = sorted({v for m in self.members[c] for v in self.S[m]})
-        on = [f for f in self.cell_boundary(c) if orient([P[v] for v in f] + [q]) == 0]
-        fv = [v for v in verts if all(orient([P[u] for u in f] + [P[v]]) == 0 for f in on)]
-        k = affine_rank([P[v] for v in fv])
-        return fv, k, len(fv) == k + 1
-
-
-# ---- one case --------------------------------------------------------------------------------
-
 CGAL_DIM = {"VERTEX": 0, "EDGE": 1, "FACE": 2, "FACET": 2, "CELL": 3}
 KINDS = ("vertex", "edge", "facet", "interior")
 
@@ -250,9 +101,15 @@ def parse_cgal(line):
             int(t[i_near + 1]))
 
 
-def check_case(name, d, sites, queries, general, tools, workdir):
+class CaseAbort(Exception):
+    """A tool's output cannot be checked at all: the case fails with this message alone."""
+
+
+def run_case_tools(name, d, sites, queries, tools, workdir):
+    """Writes the case's files, runs `lifthull delaunay`, `lifthull locate` (in order and in
+    reverse order) and the oracle -> (simplices, lines, reversed lines, oracle lines, sites,
+    queries as read back)."""
     lifthull, oracle = tools
-    t0 = time.time()
     sfile = os.path.join(workdir, name + ".sites.txt")
     qfile = os.path.join(workdir, name + ".queries.txt")
     rfile = os.path.join(workdir, name + ".queries_rev.txt")
@@ -266,147 +123,192 @@ def check_case(name, d, sites, queries, general, tools, workdir):
     # Re-read what was written (both tools read these exact doubles).
     _, sites = read_points(sfile)
     _, queries = read_points(qfile)
-    n, m = len(sites), len(queries)
-    errors = []
+    return simplices, lh, lh_rev, cg, sites, queries
 
-    def err(k, msg):
-        errors.append("query %d (%s): %s" % (k, " ".join(repr(x) for x in queries[k]), msg))
 
-    for what, lines in (("lifthull locate", lh), ("lifthull locate (reversed)", lh_rev),
-                        ("oracle", cg)):
-        if len(lines) != m:
-            return ["%s printed %d lines for %d queries" % (what, len(lines), m)], None
-
+def scale_to_integers(sites, queries):
+    """-> (den, sites * den, queries * den): every coordinate a dyadic rational, den the
+    largest denominator (powers of two: the largest divides all)."""
     den = 1
     for p in sites + queries:
         for x in p:
-            den = max(den, Fraction(x).denominator)  # powers of two: the largest divides all
+            den = max(den, Fraction(x).denominator)
     P = [tuple(int(Fraction(x) * den) for x in p) for p in sites]
     Q = [tuple(int(Fraction(x) * den) for x in p) for p in queries]
-    tri = Tri(d, P, simplices)
-    if general and tri.ties:
-        errors.append("case marked general position, but %d exactly cospherical facets" % tri.ties)
-    if any(s == 0 for s in tri.sign):
-        errors.append("lifthull delaunay has a flat simplex")
+    return den, P, Q
 
-    st = dict(inside=0, outside=0, boundary=0, shared=0, ambiguous=0, ambiguous_differ=0,
-              nearest_ties=0, **{v: 0 for v in KINDS})
-    bary_err = 0.0
-    for k in range(m):
-        q = Q[k]
-        line = lh[k].split()
-        if lh[k] != lh_rev[k]:
-            err(k, "nondeterministic: %r in order, %r in reverse order" % (lh[k], lh_rev[k]))
+
+class QueryChecks:
+    """The checks (a)-(d) of one case's queries, in exact integer arithmetic; errors and the
+    counts (st) accumulate here."""
+
+    def __init__(self, d, P, queries, den, tri):
+        self.d, self.P, self.queries, self.den, self.tri = d, P, queries, den, tri
+        self.errors = []
+        self.st = dict(inside=0, outside=0, boundary=0, shared=0, ambiguous=0,
+                       ambiguous_differ=0, nearest_ties=0, **{v: 0 for v in KINDS})
+        self.bary_err = 0.0
+
+    def err(self, k, msg):
+        self.errors.append("query %d (%s): %s"
+                           % (k, " ".join(repr(x) for x in self.queries[k]), msg))
+
+    def query(self, k, q, lh_line, lh_rev_line, cg_line):
+        line = lh_line.split()
+        if lh_line != lh_rev_line:
+            self.err(k, "nondeterministic: %r in order, %r in reverse order" % (lh_line, lh_rev_line))
         try:
-            ctype, ccell, csub, cnear = parse_cgal(cg[k])
+            ctype, ccell, csub, cnear = parse_cgal(cg_line)
         except ValueError:
-            return ["cannot parse oracle line %r" % cg[k]], None
+            raise CaseAbort("cannot parse oracle line %r" % cg_line)
         try:
             near = int(line[line.index("nearest") + 1])
         except (ValueError, IndexError):
-            err(k, "cannot parse %r" % lh[k])
-            continue
-        # (d) nearest site
+            self.err(k, "cannot parse %r" % lh_line)
+            return
+        best = self.nearest(k, q, near, cnear)
+        inside = self.tri.containing(q)
+        if line[0] == "out":
+            self.outside(k, q, line, inside, ctype, best)
+            return
+        if line[0] != "in" or len(line) != 2 * self.d + 6:
+            self.err(k, "cannot parse %r" % lh_line)
+            return
+        self.inside(k, q, line, inside, ctype, ccell, csub)
+
+    def nearest(self, k, q, near, cnear):
+        """(d) nearest site -> the smallest squared distance."""
+        P, n = self.P, len(self.P)
         d2 = [dist2(q, p) for p in P]
         best = min(d2)
         ties = [i for i in range(n) if d2[i] == best]
         if len(ties) > 1:
-            st["nearest_ties"] += 1
+            self.st["nearest_ties"] += 1
         if not 0 <= near < n or d2[near] != best:
-            err(k, "nearest %d is not a nearest site (%s is)" % (near, ties[0]))
+            self.err(k, "nearest %d is not a nearest site (%s is)" % (near, ties[0]))
         elif near != ties[0]:
-            err(k, "nearest %d is not the smallest index among the ties %s" % (near, ties))
+            self.err(k, "nearest %d is not the smallest index among the ties %s" % (near, ties))
         if not 0 <= cnear < n or d2[cnear] != d2[near]:
-            err(k, "nearest %d and CGAL's %d are not equally near" % (near, cnear))
+            self.err(k, "nearest %d and CGAL's %d are not equally near" % (near, cnear))
+        return best
 
-        inside = tri.containing(q)
-        if line[0] == "out":
-            st["outside"] += 1
-            f = [int(x) for x in line[1:1 + d]]
-            dist = float(line[line.index("distance") + 1])
-            if inside:
-                err(k, "lifthull says out, but simplices %s contain it" % inside[:5])
-            if ctype != "OUTSIDE_CONVEX_HULL":
-                err(k, "lifthull says out, CGAL says %s" % ctype)
-            if not tri.hull_facet(f):
-                err(k, "out: facet %s is not a hull facet" % f)
-            else:
-                # distance to the facet's hyperplane <= D <= distance to the nearest site
-                fp = [[float(Fraction(c, den)) for c in P[v]] for v in f]
-                qf = [float(x) for x in queries[k]]
-                if d == 2:
-                    nrm = [-(fp[1][1] - fp[0][1]), fp[1][0] - fp[0][0]]
-                else:
-                    u = [fp[1][j] - fp[0][j] for j in range(3)]
-                    w = [fp[2][j] - fp[0][j] for j in range(3)]
-                    nrm = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
-                           u[0] * w[1] - u[1] * w[0]]
-                nn = sum(x * x for x in nrm) ** 0.5
-                hd = abs(sum(nrm[j] * (qf[j] - fp[0][j]) for j in range(d))) / nn
-                sd = float(Fraction(best, den * den)) ** 0.5
-                if not (dist > 0 and hd <= dist * (1 + 1e-9) + 1e-300 and dist <= sd * (1 + 1e-9)):
-                    err(k, "out: distance %r not in [%r, %r]" % (dist, hd, sd))
-            continue
-        if line[0] != "in" or len(line) != 2 * d + 6:
-            err(k, "cannot parse %r" % lh[k])
-            continue
-        st["inside"] += 1
+    def outside(self, k, q, line, inside, ctype, best):
+        """(a), (b) for `out f.. distance D nearest N`."""
+        d, tri = self.d, self.tri
+        self.st["outside"] += 1
+        f = [int(x) for x in line[1:1 + d]]
+        dist = float(line[line.index("distance") + 1])
+        if inside:
+            self.err(k, "lifthull says out, but simplices %s contain it" % inside[:5])
+        if ctype != "OUTSIDE_CONVEX_HULL":
+            self.err(k, "lifthull says out, CGAL says %s" % ctype)
+        if not tri.hull_facet(f):
+            self.err(k, "out: facet %s is not a hull facet" % f)
+            return
+        # distance to the facet's hyperplane <= D <= distance to the nearest site
+        fp = [[float(Fraction(c, self.den)) for c in self.P[v]] for v in f]
+        qf = [float(x) for x in self.queries[k]]
+        if d == 2:
+            nrm = [-(fp[1][1] - fp[0][1]), fp[1][0] - fp[0][0]]
+        else:
+            u = [fp[1][j] - fp[0][j] for j in range(3)]
+            w = [fp[2][j] - fp[0][j] for j in range(3)]
+            nrm = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                   u[0] * w[1] - u[1] * w[0]]
+        nn = sum(x * x for x in nrm) ** 0.5
+        hd = abs(sum(nrm[j] * (qf[j] - fp[0][j]) for j in range(d))) / nn
+        sd = float(Fraction(best, self.den * self.den)) ** 0.5
+        if not (dist > 0 and hd <= dist * (1 + 1e-9) + 1e-300 and dist <= sd * (1 + 1e-9)):
+            self.err(k, "out: distance %r not in [%r, %r]" % (dist, hd, sd))
+
+    def inside(self, k, q, line, inside, ctype, ccell, csub):
+        """(a) containment, the smallest index, barycentric coordinates; then (b), (c)."""
+        d, tri = self.d, self.tri
+        self.st["inside"] += 1
         S = int(line[1])
         verts = tuple(int(x) for x in line[2:3 + d])
         bary = [float(x) for x in line[3 + d:4 + 2 * d]]
-        # (a) containment and the smallest index
         if not 0 <= S < len(tri.S) or tri.S[S] != verts:
-            err(k, "simplex %d is not %s in `lifthull delaunay` (it is %s)"
-                % (S, verts, tri.S[S] if 0 <= S < len(tri.S) else "out of range"))
-            continue
+            self.err(k, "simplex %d is not %s in `lifthull delaunay` (it is %s)"
+                     % (S, verts, tri.S[S] if 0 <= S < len(tri.S) else "out of range"))
+            return
         if S not in inside:
-            err(k, "simplex %d %s does not contain the query (orients %s)"
-                % (S, verts, tri.orients(S, q)))
-            continue
+            self.err(k, "simplex %d %s does not contain the query (orients %s)"
+                     % (S, verts, tri.orients(S, q)))
+            return
         if S != min(inside):
-            err(k, "simplex %d, but simplex %d (smallest of %s) also contains it"
-                % (S, min(inside), inside[:8]))
+            self.err(k, "simplex %d, but simplex %d (smallest of %s) also contains it"
+                     % (S, min(inside), inside[:8]))
         if len(inside) > 1:
-            st["shared"] += 1
+            self.st["shared"] += 1
         if any(x == 0 and tri.hull_facet(tri.S[si][:i] + tri.S[si][i + 1:])
                for si in inside for i, x in enumerate(tri.orients(si, q))):
-            st["boundary"] += 1
+            self.st["boundary"] += 1
             if ctype.startswith("OUTSIDE"):
-                err(k, "on the hull boundary: lifthull in, CGAL %s" % ctype)
+                self.err(k, "on the hull boundary: lifthull in, CGAL %s" % ctype)
         raw = tri.raw_orients(S, q)
         tot = sum(raw)
         for b, r in zip(bary, raw):
-            bary_err = max(bary_err, abs(b - float(Fraction(r, tot))))
-        # (b), (c) the location type
+            self.bary_err = max(self.bary_err, abs(b - float(Fraction(r, tot))))
+        self.location(k, q, S, verts, ctype, ccell, csub)
+
+    def location(self, k, q, S, verts, ctype, ccell, csub):
+        """(b), (c) the location type of q in simplex S against CGAL's."""
+        d, tri = self.d, self.tri
         o = tri.orients(S, q)
         lsub = sorted(v for v, x in zip(verts, o) if x != 0)
         lk = len(lsub) - 1
-        st[kind(lk, d)] += 1
+        self.st[kind(lk, d)] += 1
         if ctype.startswith("OUTSIDE") or ctype not in CGAL_DIM:
-            err(k, "lifthull in simplex %d (on a %s), CGAL says %s" % (S, kind(lk, d), ctype))
-            continue
+            self.err(k, "lifthull in simplex %d (on a %s), CGAL says %s" % (S, kind(lk, d), ctype))
+            return
         ck = CGAL_DIM[ctype]
         if len(ccell) == d + 1:  # verify CGAL's own answer exactly
             cs = tuple(ccell)
-            o2 = [sgn(x) for x in Tri(d, P, [cs]).orients(0, q)]
+            o2 = [sgn(x) for x in Tri(d, self.P, [cs]).orients(0, q)]
             if min(o2) < 0 or sorted(v for v, x in zip(cs, o2) if x != 0) != csub:
-                err(k, "oracle inconsistent: %s cell %s sub %s, orients %s"
-                    % (ctype, ccell, csub, o2))
+                self.err(k, "oracle inconsistent: %s cell %s sub %s, orients %s"
+                         % (ctype, ccell, csub, o2))
         fv, fk, simplex = tri.minimal_face(S, q)
         if simplex:
             if not (lk == ck == fk and lsub == csub == fv):
-                err(k, "lifthull: on %s %s (simplex %d); CGAL: %s %s; exact face: %s %s"
-                    % (kind(lk, d), lsub, S, ctype, csub, kind(fk, d), fv))
+                self.err(k, "lifthull: on %s %s (simplex %d); CGAL: %s %s; exact face: %s %s"
+                         % (kind(lk, d), lsub, S, ctype, csub, kind(fk, d), fv))
         else:
-            st["ambiguous"] += 1
+            self.st["ambiguous"] += 1
             if lk != ck or lsub != csub:
-                st["ambiguous_differ"] += 1
+                self.st["ambiguous_differ"] += 1
             if not (set(lsub) <= set(fv) and set(csub) <= set(fv) and lk <= fk and ck <= fk):
-                err(k, "lifthull: on %s %s; CGAL: %s %s; both must lie in the non-simplex "
-                    "Delaunay face %s of dimension %d" % (kind(lk, d), lsub, ctype, csub, fv, fk))
-    if bary_err > 1e-7:
-        errors.append("barycentric coordinates off by up to %.3g" % bary_err)
-    st["bary_err"] = bary_err
+                self.err(k, "lifthull: on %s %s; CGAL: %s %s; both must lie in the non-simplex "
+                         "Delaunay face %s of dimension %d"
+                         % (kind(lk, d), lsub, ctype, csub, fv, fk))
+
+
+def check_case(name, d, sites, queries, general, tools, workdir):
+    t0 = time.time()
+    simplices, lh, lh_rev, cg, sites, queries = run_case_tools(name, d, sites, queries, tools,
+                                                               workdir)
+    n, m = len(sites), len(queries)
+    for what, lines in (("lifthull locate", lh), ("lifthull locate (reversed)", lh_rev),
+                        ("oracle", cg)):
+        if len(lines) != m:
+            return ["%s printed %d lines for %d queries" % (what, len(lines), m)], None
+    den, P, Q = scale_to_integers(sites, queries)
+    tri = Tri(d, P, simplices)
+    qc = QueryChecks(d, P, queries, den, tri)
+    if general and tri.ties:
+        qc.errors.append("case marked general position, but %d exactly cospherical facets" % tri.ties)
+    if any(s == 0 for s in tri.sign):
+        qc.errors.append("lifthull delaunay has a flat simplex")
+    try:
+        for k in range(m):
+            qc.query(k, Q[k], lh[k], lh_rev[k], cg[k])
+    except CaseAbort as e:
+        return [str(e)], None
+    errors, st = qc.errors, qc.st
+    if qc.bary_err > 1e-7:
+        errors.append("barycentric coordinates off by up to %.3g" % qc.bary_err)
+    st["bary_err"] = qc.bary_err
     st["time"] = time.time() - t0
     st["n"], st["m"], st["simplices"], st["ties"] = n, m, len(tri.S), tri.ties
     return errors, st

@@ -62,7 +62,8 @@ def sgn(x):
     return (x > 0) - (x < 0)
 
 
-def main(argv):
+def parse_args(argv):
+    """-> (POINTS, SIMPLICES, limit or None), or None on bad usage."""
     args = argv[1:]
     limit = None
     if "--limit" in args:
@@ -70,33 +71,38 @@ def main(argv):
         limit = int(args[i + 1])
         del args[i:i + 2]
     if len(args) != 2:
-        sys.stderr.write(__doc__)
-        return 2
-    try:
-        d, n, coords = canon.read_qhull_points(args[0])
-        simplices = canon.read_i(args[1])
-    except (canon.CanonError, OSError) as e:
-        sys.stderr.write("exact_check.py: %s\n" % e)
-        return 2
+        return None
+    return args[0], args[1], limit
+
+
+def scaled_points(d, n, coords):
+    """The points as integers: every double is a dyadic rational, scaled by the largest
+    denominator (all powers of two: the largest is a common multiple)."""
     fr = [Fraction(x) for x in coords]
     den = 1
     for f in fr:
-        den = max(den, f.denominator)  # all powers of two: the largest is a common multiple
-    pts = [[int(f * den) for f in fr[i * d:(i + 1) * d]] for i in range(n)]
+        den = max(den, f.denominator)
+    return [[int(f * den) for f in fr[i * d:(i + 1) * d]] for i in range(n)]
 
-    problems = 0
-    for s in simplices:
-        if len(s) != d + 1 or len(set(s)) != d + 1 or min(s) < 0 or max(s) >= n:
-            print("bad simplex %s" % " ".join(map(str, s)))
-            return 1
-    orient = {}
 
-    def orientation(s):
-        if s not in orient:
+class Orientation:
+    """The sign of det(v1 - v0, ..., vd - v0) of a simplex, cached."""
+
+    def __init__(self, pts, d):
+        self.pts, self.d, self.cache = pts, d, {}
+
+    def __call__(self, s):
+        if s not in self.cache:
+            pts, d = self.pts, self.d
             b = pts[s[0]]
-            orient[s] = sgn(det_int([[pts[v][j] - b[j] for j in range(d)] for v in s[1:]]))
-        return orient[s]
+            self.cache[s] = sgn(det_int([[pts[v][j] - b[j] for j in range(d)] for v in s[1:]]))
+        return self.cache[s]
 
+
+def facets_of(simplices, d, orientation):
+    """-> (facet (sorted d-subset) -> [(simplex, opposite vertex)], flat or over-shared count);
+    prints the first ten of each."""
+    problems = 0
     facets = defaultdict(list)
     for s in simplices:
         s = tuple(s)
@@ -109,8 +115,11 @@ def main(argv):
     over = [f for f, v in facets.items() if len(v) > 2]
     for f in over[:10]:
         print("facet %s in %d simplices" % (" ".join(map(str, f)), len(facets[f])))
-    problems += len(over)
+    return facets, problems + len(over)
 
+
+def check_interior(facets, pts, d, orientation, limit):
+    """Every interior facet locally Delaunay -> (checked, cospherical ties, violations)."""
     checked = ties = violations = 0
     for f, pair in facets.items():
         if len(pair) != 2:
@@ -132,9 +141,13 @@ def main(argv):
             if violations <= 10:
                 print("not locally Delaunay: facet %s (vertex %d inside the sphere of %s)"
                       % (" ".join(map(str, f)), q, " ".join(map(str, s))))
-    problems += violations
+    return checked, ties, violations
 
-    # Boundary facets: the normal by cofactors, then one integer dot product per point.
+
+def check_boundary(facets, pts, d, limit):
+    """Every boundary facet a hull facet: the normal by cofactors, then one integer dot
+    product per point -> (checked, facets with a point beyond)."""
+    n = len(pts)
     bchecked = outside = 0
     for f, pair in facets.items():
         if len(pair) != 1:
@@ -161,7 +174,31 @@ def main(argv):
                     print("boundary facet %s is not on the hull: point %d is beyond it"
                           % (" ".join(map(str, f)), i))
                 break
-    problems += outside
+    return bchecked, outside
+
+
+def main(argv):
+    parsed = parse_args(argv)
+    if parsed is None:
+        sys.stderr.write(__doc__)
+        return 2
+    points, simplex_file, limit = parsed
+    try:
+        d, n, coords = canon.read_qhull_points(points)
+        simplices = canon.read_i(simplex_file)
+    except (canon.CanonError, OSError) as e:
+        sys.stderr.write("exact_check.py: %s\n" % e)
+        return 2
+    pts = scaled_points(d, n, coords)
+    for s in simplices:
+        if len(s) != d + 1 or len(set(s)) != d + 1 or min(s) < 0 or max(s) >= n:
+            print("bad simplex %s" % " ".join(map(str, s)))
+            return 1
+    orientation = Orientation(pts, d)
+    facets, problems = facets_of(simplices, d, orientation)
+    checked, ties, violations = check_interior(facets, pts, d, orientation, limit)
+    bchecked, outside = check_boundary(facets, pts, d, limit)
+    problems += violations + outside
     stopped = limit is not None and (checked >= limit or bchecked >= limit)
     print("exact_check: d=%d n=%d simplices=%d checked %d interior facets: %d not locally "
           "Delaunay, %d cospherical ties; %d boundary facets: %d not on the hull; "
