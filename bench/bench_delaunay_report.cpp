@@ -114,7 +114,8 @@ std::string Report::bar(bool applicable, bool pass) {
 void Report::header(const SuiteResults &res) const {
     print_build_facts();
     for (auto &t : res.skipped) std::printf("- **%s: not built** (library not found at configure time)\n", t.c_str());
-    std::printf("- sites uniform in [0,1)^D (mt19937_64, 53-bit doubles); %d interleaved round(s), "
+    std::printf("- sites uniform in [0,1)^D (xoshiro256** of tools/sites.h, 53-bit doubles); "
+                "%d interleaved round(s), "
                 "round r on seed %llu+r, every run a separate process; total %.0f s\n",
                 o.rounds, (unsigned long long)o.seed, res.t_total);
     if (o.quick || o.scale != 1)
