@@ -6,9 +6,10 @@
 
 #include <lifthull.h>
 
+#include "sites.h"
+
 #include <cstddef>
 #include <cstdint>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -59,14 +60,14 @@ struct Session {
     volatile long sink = 0; // checksums end here so no call can be optimized away
 };
 
-// The inputs' random numbers: one stream per row, seeded from the row.
+// The inputs' random numbers: one stream per row, seeded from the row; tools/sites.h's
+// generator (xoshiro256**), shared with the tool, the tests and bench_delaunay.
 struct Rng {
-    std::mt19937_64 g;
-    explicit Rng(uint64_t s) : g(s) {}
-    double u01() { return static_cast<double>(g() >> 11) * 0x1p-53; } // [0,1)
-    double gauss() { return nd(g); }
-    uint64_t bits() { return g(); }
-    std::normal_distribution<double> nd{0.0, 1.0};
+    lht_rng g;
+    explicit Rng(uint64_t s) { lht_rng_seed(&g, s); }
+    double u01() { return lht_rng_unit(&g); } // [0,1), a multiple of 2^-53
+    double gauss() { return lht_rng_normal(&g); }
+    uint64_t bits() { return lht_rng_next(&g); }
 };
 
 // Writes one tuple of the predicate's points (d + 1 for orient, d + 2 for insphere) of
