@@ -62,7 +62,8 @@
 
 #include <string>
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
     if (argc >= 2 && std::string(argv[1]) == "run") return cmd_run(argc - 1, argv + 1);
     if (argc >= 2 && std::string(argv[1]) == "suite") return cmd_suite(argc - 1, argv + 1);
     if (argc == 2 && std::string(argv[1]) == "info") {

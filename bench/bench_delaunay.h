@@ -37,8 +37,9 @@ struct Timing {
     lh_pred_counters counters{};
 };
 
-inline constexpr const char *kAllTools[] = {"lifthull", "lifthull_generic", "lifthull_t2", "cgal_dd",
-                                            "qhull",    "cgal_2",           "cgal_3",      "tetgen"};
+inline constexpr const char *kAllTools[] = {
+    "lifthull", "lifthull_generic", "lifthull_t2", "cgal_dd",
+    "qhull",    "cgal_2",           "cgal_3",      "tetgen"};
 
 double now_s(); // a steady clock, seconds
 double cpu_s(); // this process's user + system CPU seconds
@@ -46,13 +47,17 @@ double cpu_s(); // this process's user + system CPU seconds
 // Times a tool: from construction (the sites in the tool's input form) to stop().
 struct Stopwatch {
     double w0 = now_s(), c0 = cpu_s();
-    void stop(Timing &t) const {
+    void stop(Timing &t) const
+    {
         t.wall = now_s() - w0;
         t.cpu = cpu_s() - c0;
     }
 };
 
-inline void release(std::vector<double> &v) { std::vector<double>().swap(v); }
+inline void release(std::vector<double> &v)
+{
+    std::vector<double>().swap(v);
+}
 [[noreturn]] void die(const char *what, const char *msg); // exit status 3
 
 // The runners, one per library; each frees xyz once its input form is built (lifthull
@@ -122,8 +127,8 @@ struct SuiteResults {
 
 std::string self_exe(); // this executable's path; "" if /proc/self/exe is missing
 // Runs `exe run tool d n seed --timeout T` and parses its line; on failure sets err.
-Sample spawn_run(const std::string &exe, const std::string &tool, int d, size_t n,
-                 uint64_t seed, int timeout, std::string &err);
+Sample spawn_run(const std::string &exe, const std::string &tool, int d, size_t n, uint64_t seed,
+                 int timeout, std::string &err);
 
 // The Markdown report on stdout; returns the exit status (2 if a run failed or the
 // exact tools disagree, else 0).

@@ -12,9 +12,11 @@
 
 #include <vector>
 
-namespace {
+namespace
+{
 
-template <int D> Timing run_cgal_dd_t(size_t n, std::vector<double> &xyz) {
+template <int D> Timing run_cgal_dd_t(size_t n, std::vector<double> &xyz)
+{
     using K = CGAL::Epick_d<CGAL::Dimension_tag<D>>;
     using DT = CGAL::Delaunay_triangulation<K>;
     using P = typename DT::Point;
@@ -34,7 +36,8 @@ template <int D> Timing run_cgal_dd_t(size_t n, std::vector<double> &xyz) {
 
 } // namespace
 
-Timing run_cgal_dd(int d, size_t n, std::vector<double> &xyz) {
+Timing run_cgal_dd(int d, size_t n, std::vector<double> &xyz)
+{
     switch (d) {
     case 2: return run_cgal_dd_t<2>(n, xyz);
     case 3: return run_cgal_dd_t<3>(n, xyz);
@@ -47,7 +50,8 @@ Timing run_cgal_dd(int d, size_t n, std::vector<double> &xyz) {
 
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-Timing run_cgal_2(size_t n, std::vector<double> &xyz) {
+Timing run_cgal_2(size_t n, std::vector<double> &xyz)
+{
     using DT = CGAL::Delaunay_triangulation_2<Epick>;
     std::vector<Epick::Point_2> pts;
     pts.reserve(n);
@@ -63,7 +67,8 @@ Timing run_cgal_2(size_t n, std::vector<double> &xyz) {
     return t; // dt deliberately not destroyed (not measured; the process exits)
 }
 
-Timing run_cgal_3(size_t n, std::vector<double> &xyz) {
+Timing run_cgal_3(size_t n, std::vector<double> &xyz)
+{
     using DT = CGAL::Delaunay_triangulation_3<Epick>;
     std::vector<Epick::Point_3> pts;
     pts.reserve(n);

@@ -14,11 +14,11 @@
 #include <unistd.h>
 
 // The machine and build facts every report starts with: a Markdown list on stdout.
-void print_build_facts() {
+void print_build_facts()
+{
     struct utsname un;
-    std::string kernel = uname(&un) == 0 ? std::string(un.sysname) + " " + un.release + " " +
-                                               un.machine
-                                         : "unknown";
+    std::string kernel =
+        uname(&un) == 0 ? std::string(un.sysname) + " " + un.release + " " + un.machine : "unknown";
     std::printf("- CPU: %s (%ld logical CPUs online), memory %s\n", cpu_model().c_str(),
                 sysconf(_SC_NPROCESSORS_ONLN), mem_total().c_str());
     std::printf("- OS: %s\n", kernel.c_str());

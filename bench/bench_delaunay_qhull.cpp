@@ -12,14 +12,19 @@ extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
 
-const char *qhull_version() { return qh_version; }
+const char *qhull_version()
+{
+    return qh_version;
+}
 
-namespace {
+namespace
+{
 
 // qh_new_qhull's steps (libqhull_r/user_r.c, Qhull 2020.2) with a clock read between the
 // hull (qh_qhull) and qh_prepare_output, which performs the Qt triangulation: qdelaunay's
 // 's' summary reports only the first part. Only POD locals here (setjmp/longjmp).
-int qhull_steps(qhT *qh, int d, int n, coordT *pts, char *cmd, double *t_hull) {
+int qhull_steps(qhT *qh, int d, int n, coordT *pts, char *cmd, double *t_hull)
+{
     qh_zero(qh, stderr);
     qh_meminit(qh, stderr);
     qh_initqhull_start(qh, nullptr, nullptr, stderr);
@@ -40,7 +45,8 @@ int qhull_steps(qhT *qh, int d, int n, coordT *pts, char *cmd, double *t_hull) {
 
 } // namespace
 
-Timing run_qhull(int d, size_t n, std::vector<double> &xyz, const char *qhull_cmd) {
+Timing run_qhull(int d, size_t n, std::vector<double> &xyz, const char *qhull_cmd)
+{
     static qhT qh_qh;
     qhT *qh = &qh_qh;
     QHULL_LIB_CHECK
@@ -52,12 +58,14 @@ Timing run_qhull(int d, size_t n, std::vector<double> &xyz, const char *qhull_cm
         die("qhull", "Qhull failed");
     size_t count = 0;
     facetT *facet;
-    FORALLfacets {
+    FORALLfacets
+    {
         if (!facet->upperdelaunay && !facet->visible) ++count;
     }
     t.simplices = count;
     sw.stop(t);
     t.hull_wall = t_hull - sw.w0;
-    if (!qh->hasTriangulation) std::fprintf(stderr, "qhull: warning: output was not triangulated\n");
+    if (!qh->hasTriangulation)
+        std::fprintf(stderr, "qhull: warning: output was not triangulated\n");
     return t; // qh_freeqhull not called (not measured; the process exits)
 }

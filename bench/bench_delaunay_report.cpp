@@ -10,16 +10,19 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace
+{
 
-double median(std::vector<double> v) {
+double median(std::vector<double> v)
+{
     if (v.empty()) return NAN;
     std::sort(v.begin(), v.end());
     size_t m = v.size() / 2;
     return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
-std::string fmt_n(size_t n) {
+std::string fmt_n(size_t n)
+{
     // 1000000 -> 10^6, 20000 -> 2*10^4, 50000 -> 5*10^4, other -> plain
     size_t m = n;
     int e = 0;
@@ -33,26 +36,35 @@ std::string fmt_n(size_t n) {
     return std::to_string(n);
 }
 
-std::string fmt_s(double s) {
+std::string fmt_s(double s)
+{
     char b[32];
     if (std::isnan(s)) return "—";
-    if (s >= 100) std::snprintf(b, sizeof b, "%.0f", s);
-    else if (s >= 10) std::snprintf(b, sizeof b, "%.1f", s);
-    else if (s >= 0.1) std::snprintf(b, sizeof b, "%.2f", s);
-    else std::snprintf(b, sizeof b, "%.3f", s);
+    if (s >= 100)
+        std::snprintf(b, sizeof b, "%.0f", s);
+    else if (s >= 10)
+        std::snprintf(b, sizeof b, "%.1f", s);
+    else if (s >= 0.1)
+        std::snprintf(b, sizeof b, "%.2f", s);
+    else
+        std::snprintf(b, sizeof b, "%.3f", s);
     return b;
 }
 
-std::string fmt_mib(double kb) {
+std::string fmt_mib(double kb)
+{
     char b[32];
     if (std::isnan(kb)) return "—";
     double m = kb / 1024.0;
-    if (m >= 100) std::snprintf(b, sizeof b, "%.0f", m);
-    else std::snprintf(b, sizeof b, "%.1f", m);
+    if (m >= 100)
+        std::snprintf(b, sizeof b, "%.0f", m);
+    else
+        std::snprintf(b, sizeof b, "%.1f", m);
     return b;
 }
 
-std::string fmt_x(double x) {
+std::string fmt_x(double x)
+{
     char b[32];
     if (std::isnan(x)) return "—";
     std::snprintf(b, sizeof b, "%.2fx", x);
@@ -83,7 +95,8 @@ struct Report {
     void qhull_hull_only();
 };
 
-double Report::med_wall(size_t ci, const std::string &t) const {
+double Report::med_wall(size_t ci, const std::string &t) const
+{
     std::vector<double> v;
     auto it = results[ci].find(t);
     if (it != results[ci].end())
@@ -92,7 +105,8 @@ double Report::med_wall(size_t ci, const std::string &t) const {
     return median(v);
 }
 
-double Report::med_peak(size_t ci, const std::string &t) const {
+double Report::med_peak(size_t ci, const std::string &t) const
+{
     std::vector<double> v;
     auto it = results[ci].find(t);
     if (it != results[ci].end())
@@ -101,34 +115,41 @@ double Report::med_peak(size_t ci, const std::string &t) const {
     return median(v);
 }
 
-bool Report::has(size_t ci, const std::string &t) const {
+bool Report::has(size_t ci, const std::string &t) const
+{
     return std::find(cfg_tools[ci].begin(), cfg_tools[ci].end(), t) != cfg_tools[ci].end();
 }
 
-std::string Report::bar(bool applicable, bool pass) {
+std::string Report::bar(bool applicable, bool pass)
+{
     if (!applicable) return "—";
     (pass ? bar_pass : bar_fail)++;
     return pass ? "PASS" : "**FAIL**";
 }
 
-void Report::header(const SuiteResults &res) const {
+void Report::header(const SuiteResults &res) const
+{
     print_build_facts();
-    for (auto &t : res.skipped) std::printf("- **%s: not built** (library not found at configure time)\n", t.c_str());
+    for (auto &t : res.skipped)
+        std::printf("- **%s: not built** (library not found at configure time)\n", t.c_str());
     std::printf("- sites uniform in [0,1)^D (xoshiro256** of tools/sites.h, 53-bit doubles); "
                 "%d interleaved round(s), "
                 "round r on seed %llu+r, every run a separate process; total %.0f s\n",
                 o.rounds, (unsigned long long)o.seed, res.t_total);
     if (o.quick || o.scale != 1)
         std::printf("- **reduced sizes (N divided by %g): a smoke run, not the criterion's "
-                    "sizes**\n", o.scale);
-    if (o.rounds < 3)
-        std::printf("- **fewer than 3 rounds: not the criterion's protocol**\n");
+                    "sizes**\n",
+                    o.scale);
+    if (o.rounds < 3) std::printf("- **fewer than 3 rounds: not the criterion's protocol**\n");
     std::printf("\n");
 }
 
-void Report::time_table() {
-    std::printf("### Time: median seconds (ratio tool / lifthull; above 1 means lifthull is faster)\n\n");
-    std::printf("| D | N | lifthull | lifthull generic engine | CGAL dD | Qhull Qt | CGAL DT2/DT3 | TetGen | "
+void Report::time_table()
+{
+    std::printf(
+        "### Time: median seconds (ratio tool / lifthull; above 1 means lifthull is faster)\n\n");
+    std::printf("| D | N | lifthull | lifthull generic engine | CGAL dD | Qhull Qt | CGAL DT2/DT3 "
+                "| TetGen | "
                 "CGAL dD >= 2x | Qhull >= 3x | generic: CGAL dD >= 2x |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n");
     for (size_t ci = 0; ci < configs.size(); ++ci) {
@@ -143,10 +164,10 @@ void Report::time_table() {
         std::string spec = c.d == 2 ? cell("cgal_2") : c.d == 3 ? cell("cgal_3") : "—";
         double rdd = med_wall(ci, "cgal_dd") / lh, rq = med_wall(ci, "qhull") / lh;
         double rg = med_wall(ci, "cgal_dd") / med_wall(ci, "lifthull_generic");
-        std::printf("| %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", c.d, fmt_n(c.n).c_str(),
-                    std::isnan(lh) ? "failed" : fmt_s(lh).c_str(), cell("lifthull_generic").c_str(),
-                    cell("cgal_dd").c_str(), cell("qhull").c_str(),
-                    spec.c_str(), cell("tetgen").c_str(),
+        std::printf("| %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", c.d,
+                    fmt_n(c.n).c_str(), std::isnan(lh) ? "failed" : fmt_s(lh).c_str(),
+                    cell("lifthull_generic").c_str(), cell("cgal_dd").c_str(),
+                    cell("qhull").c_str(), spec.c_str(), cell("tetgen").c_str(),
                     bar(has(ci, "cgal_dd"), rdd >= 2.0).c_str(), // NaN (a failure): FAIL
                     bar(has(ci, "qhull"), rq >= 3.0).c_str(),
                     bar(has(ci, "cgal_dd") && has(ci, "lifthull_generic"), rg >= 2.0).c_str());
@@ -155,14 +176,17 @@ void Report::time_table() {
 
 // The speed issue's bars, for lifthull on two threads (lifthull_t2), the machine's
 // cores: wall time, as every other tool's.
-void Report::two_threads() {
+void Report::two_threads()
+{
     bool any_t2 = false;
     for (size_t ci = 0; ci < configs.size(); ++ci) any_t2 |= has(ci, "lifthull_t2");
     if (!any_t2) return;
-    std::printf("\n### Two threads: lifthull_t2 (lh_options.threads = 2) against every tool, median "
-                "wall seconds (ratio tool / lifthull_t2), and the speed issue's bars\n\n");
-    std::printf("| D | N | lifthull 1 thread | lifthull 2 threads | its CPU s | CGAL dD | Qhull Qt | "
-                "CGAL DT2/DT3 | TetGen | speed issue's bars |\n");
+    std::printf(
+        "\n### Two threads: lifthull_t2 (lh_options.threads = 2) against every tool, median "
+        "wall seconds (ratio tool / lifthull_t2), and the speed issue's bars\n\n");
+    std::printf(
+        "| D | N | lifthull 1 thread | lifthull 2 threads | its CPU s | CGAL dD | Qhull Qt | "
+        "CGAL DT2/DT3 | TetGen | speed issue's bars |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     for (size_t ci = 0; ci < configs.size(); ++ci) two_thread_row(ci);
     std::printf("\n(The lifthull 1 thread column's ratio is its time over lifthull_t2's: the "
@@ -172,7 +196,8 @@ void Report::two_threads() {
                 "noise.)\n");
 }
 
-void Report::two_thread_row(size_t ci) {
+void Report::two_thread_row(size_t ci)
+{
     const Config &c = configs[ci];
     if (!has(ci, "lifthull_t2")) return;
     double t2 = med_wall(ci, "lifthull_t2");
@@ -188,12 +213,16 @@ void Report::two_thread_row(size_t ci) {
     std::printf("| %d | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", c.d, fmt_n(c.n).c_str(),
                 cell("lifthull").c_str(), std::isnan(t2) ? "failed" : fmt_s(t2).c_str(),
                 fmt_s(median(cpu)).c_str(), cell("cgal_dd").c_str(), cell("qhull").c_str(),
-                (c.d == 2 ? cell("cgal_2") : c.d == 3 ? cell("cgal_3") : std::string("—")).c_str(),
+                (c.d == 2   ? cell("cgal_2")
+                 : c.d == 3 ? cell("cgal_3")
+                            : std::string("—"))
+                    .c_str(),
                 cell("tetgen").c_str(), bars.empty() ? "—" : bars.c_str());
 }
 
 // 2D: 2.5x CGAL DT2; 3D: 2.5x DT3 and 4x TetGen; 4D, 5D: 5x CGAL dD, 10x Qhull.
-std::string Report::speed_bars(size_t ci, double t2) {
+std::string Report::speed_bars(size_t ci, double t2)
+{
     const Config &c = configs[ci];
     std::string bars;
     auto add = [&](const char *name, const std::string &t, double want) {
@@ -225,8 +254,10 @@ std::string Report::speed_bars(size_t ci, double t2) {
     return bars;
 }
 
-void Report::memory_table() {
-    std::printf("\n### Peak memory: median MiB of the process's maximum RSS (ratio tool / lifthull)\n\n");
+void Report::memory_table()
+{
+    std::printf(
+        "\n### Peak memory: median MiB of the process's maximum RSS (ratio tool / lifthull)\n\n");
     std::printf("| D | N | input only | lifthull | CGAL dD | Qhull Qt | CGAL DT2/DT3 | TetGen | "
                 "below CGAL dD | below Qhull | speed issue: <= 0.7x every CGAL |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---|\n");
@@ -248,14 +279,15 @@ void Report::memory_table() {
         std::string speed_bar = !cgal_any ? "—" : below ? "PASS" : "**FAIL**";
         std::printf("| %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", c.d,
                     fmt_n(c.n).c_str(), fmt_mib(med_peak(ci, "none")).c_str(),
-                    std::isnan(lh) ? "failed" : fmt_mib(lh).c_str(), cell("cgal_dd").c_str(), cell("qhull").c_str(),
-                    spec.c_str(), cell("tetgen").c_str(),
+                    std::isnan(lh) ? "failed" : fmt_mib(lh).c_str(), cell("cgal_dd").c_str(),
+                    cell("qhull").c_str(), spec.c_str(), cell("tetgen").c_str(),
                     bar(has(ci, "cgal_dd"), lh < med_peak(ci, "cgal_dd")).c_str(),
                     bar(has(ci, "qhull"), lh < med_peak(ci, "qhull")).c_str(), speed_bar.c_str());
     }
 }
 
-void Report::bars_line() const {
+void Report::bars_line() const
+{
     std::printf("\nBars (engine issue): lifthull >= 2x faster than CGAL dD and >= 3x faster than "
                 "Qhull Qt at every size, peak memory below both; and the generic engine alone "
                 "(lh_options.generic_engine: the dimension a runtime value) >= 2x faster than "
@@ -265,7 +297,8 @@ void Report::bars_line() const {
                 (o.quick || o.scale != 1) ? " (reduced sizes: not the criterion)" : "");
 }
 
-void Report::details() {
+void Report::details()
+{
     std::printf("\n### Details (per tool: every round)\n\n");
     std::printf("| D | N | tool | median s | min..max s | median CPU s | peak MiB min..max | "
                 "simplices (round 0) | rounds ok |\n");
@@ -301,13 +334,14 @@ void Report::details() {
                         fmt_n(c.n).c_str(), t == "none" ? "(input only)" : t.c_str(),
                         t == "none" ? "—" : fmt_s(median(w)).c_str(),
                         t == "none" ? "—" : range.c_str(),
-                        t == "none" ? "—" : fmt_s(median(cpu)).c_str(), prange.c_str(),
-                        sx.c_str(), ok, v.size());
+                        t == "none" ? "—" : fmt_s(median(cpu)).c_str(), prange.c_str(), sx.c_str(),
+                        ok, v.size());
         }
     }
 }
 
-void Report::qhull_hull_only() {
+void Report::qhull_hull_only()
+{
     bool any = false;
     for (size_t ci = 0; ci < configs.size(); ++ci) {
         std::vector<double> v;
@@ -324,21 +358,23 @@ void Report::qhull_hull_only() {
             any = true;
         }
         double h = median(v);
-        std::printf("| %d | %s | %s | %s | %s |\n", configs[ci].d,
-                    fmt_n(configs[ci].n).c_str(), fmt_s(med_wall(ci, "qhull")).c_str(),
-                    fmt_s(h).c_str(), fmt_x(h / med_wall(ci, "lifthull")).c_str());
+        std::printf("| %d | %s | %s | %s | %s |\n", configs[ci].d, fmt_n(configs[ci].n).c_str(),
+                    fmt_s(med_wall(ci, "qhull")).c_str(), fmt_s(h).c_str(),
+                    fmt_x(h / med_wall(ci, "lifthull")).c_str());
     }
 }
 
 // What the times include, the simplex-count check and the failed runs.
-int report_footer(const SuiteResults &res) {
+int report_footer(const SuiteResults &res)
+{
     std::printf("\nWhat the times include: the timer starts when the sites are in the tool's "
                 "input form and stops when the triangulation is built and its finite simplices "
                 "are counted. lifthull: lh_delaunay (its copy of the input, the triangulation, "
                 "neighbours, hull facets, canonical sorted output). CGAL: range insert (spatial "
                 "sort + incremental insertion); building the vector of CGAL points is not "
                 "timed. Qhull: the steps of qh_new_qhull with `%s` "
-                "(lifting, Qbb scaling, hull, Qt triangulation; no output); counted facets are the lower-Delaunay ones. "
+                "(lifting, Qbb scaling, hull, Qt triangulation; no output); counted facets are the "
+                "lower-Delaunay ones. "
                 "TetGen: tetrahedralize(\"%s\") into a tetgenio (tetrahedra, hull faces and "
                 "the point list copied out); filling the input tetgenio is not timed. No "
                 "destructor is timed. Peak memory: whole-process maximum RSS, including the "
@@ -356,9 +392,11 @@ int report_footer(const SuiteResults &res) {
     if (res.exact_mismatch.empty() && res.inexact_mismatch.empty()) {
         std::printf("all agree.\n");
     } else {
-        std::printf("**%zu disagreement(s)**\n\n", res.exact_mismatch.size() + res.inexact_mismatch.size());
+        std::printf("**%zu disagreement(s)**\n\n",
+                    res.exact_mismatch.size() + res.inexact_mismatch.size());
         for (auto &s : res.exact_mismatch) std::printf("- exact tool: %s\n", s.c_str());
-        for (auto &s : res.inexact_mismatch) std::printf("- warning (Qhull is not exact): %s\n", s.c_str());
+        for (auto &s : res.inexact_mismatch)
+            std::printf("- warning (Qhull is not exact): %s\n", s.c_str());
     }
     if (!res.failures.empty()) {
         std::printf("\n**%zu failed run(s):**\n\n", res.failures.size());
@@ -369,7 +407,8 @@ int report_footer(const SuiteResults &res) {
 
 } // namespace
 
-int suite_report(const SuiteOptions &o, SuiteResults &res) {
+int suite_report(const SuiteOptions &o, SuiteResults &res)
+{
     Report r{o, res.configs, res.cfg_tools, res.results};
     r.header(res);
     r.time_table();

@@ -14,10 +14,12 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-namespace {
+namespace
+{
 
 // Peak resident set of this program image, in KiB (see bench_delaunay.cpp).
-long peak_kb() {
+long peak_kb()
+{
     std::ifstream f("/proc/self/status");
     std::string line;
     while (std::getline(f, line))
@@ -27,7 +29,8 @@ long peak_kb() {
     return ru.ru_maxrss; // kilobytes on Linux
 }
 
-size_t parse_count(const char *s) {
+size_t parse_count(const char *s)
+{
     char *end = nullptr;
     double v = std::strtod(s, &end);
     if (!end || *end || !(v >= 1) || v > 1e10) return 0;
@@ -44,7 +47,8 @@ struct RunArgs {
 
 // argv: run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere|clusters|pgrid].
 // --timeout arms the alarm at once (SIGALRM ends the process). False after a message.
-bool parse_run_args(int argc, char **argv, RunArgs *a) {
+bool parse_run_args(int argc, char **argv, RunArgs *a)
+{
     if (argc < 5) {
         std::fprintf(stderr, "usage: bench_delaunay run TOOL D N SEED [--timeout S] "
                              "[--dist uniform|grid|sphere|clusters|pgrid]\n");
@@ -79,9 +83,10 @@ bool parse_run_args(int argc, char **argv, RunArgs *a) {
     return true;
 }
 
-void print_run_line(const RunArgs &a, const Timing &t, size_t sites) {
-    std::printf("%s %d %zu seconds=%.6f cpu=%.6f simplices=%zu peak_kb=%ld sites=%zu", a.tool.c_str(),
-                a.d, a.n, t.wall, t.cpu, t.simplices, peak_kb(), sites);
+void print_run_line(const RunArgs &a, const Timing &t, size_t sites)
+{
+    std::printf("%s %d %zu seconds=%.6f cpu=%.6f simplices=%zu peak_kb=%ld sites=%zu",
+                a.tool.c_str(), a.d, a.n, t.wall, t.cpu, t.simplices, peak_kb(), sites);
     if (t.hull_wall >= 0) std::printf(" hull_seconds=%.6f", t.hull_wall);
     if (t.have_counters) {
         const lh_pred_counters &k = t.counters;
@@ -89,15 +94,16 @@ void print_run_line(const RunArgs &a, const Timing &t, size_t sites) {
                     " pred_exact=%llu pred_zero=%llu pred_sos_general=%llu",
                     (unsigned long long)k.calls, (unsigned long long)k.filter_exits,
                     (unsigned long long)k.grid_exits, (unsigned long long)k.residue_exits,
-                    (unsigned long long)k.exact_exits,
-                    (unsigned long long)k.zero_results, (unsigned long long)k.sos_general);
+                    (unsigned long long)k.exact_exits, (unsigned long long)k.zero_results,
+                    (unsigned long long)k.sos_general);
     }
     std::printf("\n");
 }
 
 } // namespace
 
-int cmd_run(int argc, char **argv) {
+int cmd_run(int argc, char **argv)
+{
     RunArgs a;
     if (!parse_run_args(argc, argv, &a)) return 1;
     std::vector<double> xyz;

@@ -16,11 +16,13 @@
 
 extern char **environ;
 
-namespace {
+namespace
+{
 
 // Spawns args (args[0] the executable) with its stdout on a pipe, reads it to the end
 // into *out and waits for it. False with err set if it could not run or did not exit 0.
-bool run_child(std::vector<std::string> args, std::string *out, std::string &err) {
+bool run_child(std::vector<std::string> args, std::string *out, std::string &err)
+{
     int fd[2];
     if (pipe(fd) != 0) {
         err = "pipe failed";
@@ -46,8 +48,10 @@ bool run_child(std::vector<std::string> args, std::string *out, std::string &err
     char buf[4096];
     for (;;) {
         ssize_t k = read(fd[0], buf, sizeof buf);
-        if (k > 0) out->append(buf, size_t(k));
-        else if (k == 0 || errno != EINTR) break;
+        if (k > 0)
+            out->append(buf, size_t(k));
+        else if (k == 0 || errno != EINTR)
+            break;
     }
     close(fd[0]);
     int status = 0;
@@ -66,7 +70,8 @@ bool run_child(std::vector<std::string> args, std::string *out, std::string &err
 }
 
 // The value of " key=" in a run line.
-bool line_field(const std::string &out, const char *key, std::string &val) {
+bool line_field(const std::string &out, const char *key, std::string &val)
+{
     std::string k = std::string(" ") + key + "=";
     size_t p = out.find(k);
     if (p == std::string::npos) return false;
@@ -78,7 +83,8 @@ bool line_field(const std::string &out, const char *key, std::string &val) {
 
 } // namespace
 
-std::string self_exe() {
+std::string self_exe()
+{
     char buf[4096];
     ssize_t k = readlink("/proc/self/exe", buf, sizeof buf - 1);
     if (k <= 0) return "";
@@ -86,8 +92,9 @@ std::string self_exe() {
     return buf;
 }
 
-Sample spawn_run(const std::string &exe, const std::string &tool, int d, size_t n,
-                 uint64_t seed, int timeout, std::string &err) {
+Sample spawn_run(const std::string &exe, const std::string &tool, int d, size_t n, uint64_t seed,
+                 int timeout, std::string &err)
+{
     Sample s;
     std::string out;
     if (!run_child({exe, "run", tool, std::to_string(d), std::to_string(n), std::to_string(seed),

@@ -13,9 +13,11 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace
+{
 
-std::vector<std::string> split(const std::string &s) {
+std::vector<std::string> split(const std::string &s)
+{
     std::vector<std::string> v;
     std::stringstream ss(s);
     std::string item;
@@ -26,7 +28,8 @@ std::vector<std::string> split(const std::string &s) {
 
 // Reads the options into *o; false (after the usage or a message) if they are not
 // usable. Exits with status 1 if an option lacks its value.
-bool parse_suite_options(int argc, char **argv, SuiteOptions *out) {
+bool parse_suite_options(int argc, char **argv, SuiteOptions *out)
+{
     SuiteOptions &o = *out;
     bool rounds_given = false;
     for (int i = 1; i < argc; ++i) {
@@ -38,18 +41,22 @@ bool parse_suite_options(int argc, char **argv, SuiteOptions *out) {
             }
             return argv[++i];
         };
-        if (a == "--quick") o.quick = true;
+        if (a == "--quick")
+            o.quick = true;
         else if (a == "--rounds") {
             o.rounds = std::atoi(next());
             rounds_given = true;
-        }
-        else if (a == "--scale") o.scale = std::atof(next());
-        else if (a == "--seed") o.seed = std::strtoull(next(), nullptr, 0);
-        else if (a == "--timeout") o.timeout = std::atoi(next());
+        } else if (a == "--scale")
+            o.scale = std::atof(next());
+        else if (a == "--seed")
+            o.seed = std::strtoull(next(), nullptr, 0);
+        else if (a == "--timeout")
+            o.timeout = std::atoi(next());
         else if (a == "--dims") {
             o.dims.clear();
             for (auto &s : split(next())) o.dims.push_back(std::atoi(s.c_str()));
-        } else if (a == "--tools") o.tools = split(next());
+        } else if (a == "--tools")
+            o.tools = split(next());
         else {
             suite_usage();
             return false;
@@ -67,7 +74,8 @@ bool parse_suite_options(int argc, char **argv, SuiteOptions *out) {
 
 // o.tools: every tool by default; unknown names refused, tools not built moved to
 // *skipped; lifthull required (ratios are relative to it). False after a message.
-bool select_tools(SuiteOptions &o, std::vector<std::string> *skipped) {
+bool select_tools(SuiteOptions &o, std::vector<std::string> *skipped)
+{
     if (o.tools.empty())
         for (const char *t : kAllTools) o.tools.push_back(t);
     for (auto &t : o.tools) {
@@ -80,8 +88,10 @@ bool select_tools(SuiteOptions &o, std::vector<std::string> *skipped) {
     }
     std::vector<std::string> kept;
     for (auto &t : o.tools)
-        if (tool_built(t)) kept.push_back(t);
-        else skipped->push_back(t);
+        if (tool_built(t))
+            kept.push_back(t);
+        else
+            skipped->push_back(t);
     o.tools = kept;
     if (std::find(o.tools.begin(), o.tools.end(), "lifthull") == o.tools.end()) {
         std::fprintf(stderr, "--tools must include lifthull (ratios are relative to it)\n");
@@ -91,7 +101,8 @@ bool select_tools(SuiteOptions &o, std::vector<std::string> *skipped) {
 }
 
 // The criterion's sizes in the dimensions asked for, N divided by the scale.
-std::vector<Config> make_configs(const SuiteOptions &o) {
+std::vector<Config> make_configs(const SuiteOptions &o)
+{
     const Config base[] = {{2, 1000000}, {3, 1000000}, {4, 100000}, {5, 20000}};
     std::vector<Config> configs;
     for (const Config &c : base)
@@ -102,7 +113,8 @@ std::vector<Config> make_configs(const SuiteOptions &o) {
 
 // Round r of configuration ci: every tool once, in an order rotated by r, on the sites of
 // seed o.seed + r; then every tool's simplex count against lifthull's.
-void run_round(const std::string &exe, const SuiteOptions &o, size_t ci, int r, SuiteResults &res) {
+void run_round(const std::string &exe, const SuiteOptions &o, size_t ci, int r, SuiteResults &res)
+{
     const Config &c = res.configs[ci];
     const uint64_t seed = o.seed + uint64_t(r);
     std::vector<std::string> order = res.cfg_tools[ci];
@@ -114,8 +126,8 @@ void run_round(const std::string &exe, const SuiteOptions &o, size_t ci, int r, 
         res.results[ci][t].push_back(s);
         if (!s.ok) {
             char b[512];
-            std::snprintf(b, sizeof b, "D=%d N=%zu round %d %s: %s", c.d, c.n, r,
-                          t.c_str(), err.c_str());
+            std::snprintf(b, sizeof b, "D=%d N=%zu round %d %s: %s", c.d, c.n, r, t.c_str(),
+                          err.c_str());
             res.failures.push_back(b);
             std::fprintf(stderr, "  FAILED %s\n", b);
             continue;
@@ -130,8 +142,9 @@ void run_round(const std::string &exe, const SuiteOptions &o, size_t ci, int r, 
         for (auto &[t, k] : counts) {
             if (k == ref->second) continue;
             char b[256];
-            std::snprintf(b, sizeof b, "D=%d N=%zu seed %llu: %s counted %zu simplices, lifthull %zu",
-                          c.d, c.n, (unsigned long long)seed, t.c_str(), k, ref->second);
+            std::snprintf(b, sizeof b,
+                          "D=%d N=%zu seed %llu: %s counted %zu simplices, lifthull %zu", c.d, c.n,
+                          (unsigned long long)seed, t.c_str(), k, ref->second);
             (tool_exact(t) ? res.exact_mismatch : res.inexact_mismatch).push_back(b);
             std::fprintf(stderr, "  warning: %s\n", b);
         }
@@ -139,12 +152,14 @@ void run_round(const std::string &exe, const SuiteOptions &o, size_t ci, int r, 
 
 } // namespace
 
-void suite_usage() {
+void suite_usage()
+{
     std::fprintf(stderr,
                  "usage: bench_delaunay suite [--quick] [--rounds R] [--dims 2,3,4,5]\n"
                  "                            [--tools lifthull,cgal_dd,...] [--scale K]\n"
                  "                            [--seed S] [--timeout S]\n"
-                 "       bench_delaunay run TOOL D N SEED [--timeout S] [--dist uniform|grid|sphere|clusters|pgrid]\n"
+                 "       bench_delaunay run TOOL D N SEED [--timeout S] [--dist "
+                 "uniform|grid|sphere|clusters|pgrid]\n"
                  "       bench_delaunay info   (machine and build facts)\n"
                  "  sizes: (2,10^6) (3,10^6) (4,10^5) (5,2*10^4); --quick divides N by 20 and\n"
                  "  runs 2 rounds (--scale K divides by K); R interleaved rounds (default 3;\n"
@@ -154,7 +169,8 @@ void suite_usage() {
                  "  always run); --timeout: per child process (default 1800 s, quick 120 s)\n");
 }
 
-int cmd_suite(int argc, char **argv) {
+int cmd_suite(int argc, char **argv)
+{
     SuiteOptions o;
     SuiteResults res;
     if (!parse_suite_options(argc, argv, &o) || !select_tools(o, &res.skipped)) return 1;

@@ -10,7 +10,8 @@
 // TetGen last: its header defines REAL.
 #include <tetgen.h>
 
-Timing run_tetgen(size_t n, std::vector<double> &xyz) {
+Timing run_tetgen(size_t n, std::vector<double> &xyz)
+{
     auto *in = new tetgenio;
     auto *out = new tetgenio;
     in->firstnumber = 0;

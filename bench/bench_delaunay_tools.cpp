@@ -10,24 +10,28 @@
 #include <sys/resource.h>
 #include <sys/time.h>
 
-double now_s() {
+double now_s()
+{
     using clk = std::chrono::steady_clock;
     return std::chrono::duration<double>(clk::now().time_since_epoch()).count();
 }
 
-double cpu_s() {
+double cpu_s()
+{
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     return double(ru.ru_utime.tv_sec) + 1e-6 * double(ru.ru_utime.tv_usec) +
            double(ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_stime.tv_usec);
 }
 
-[[noreturn]] void die(const char *what, const char *msg) {
+[[noreturn]] void die(const char *what, const char *msg)
+{
     std::fprintf(stderr, "bench_delaunay: %s: %s\n", what, msg);
     std::exit(3);
 }
 
-Timing run_lifthull(int d, size_t n, std::vector<double> &xyz, bool generic, int threads) {
+Timing run_lifthull(int d, size_t n, std::vector<double> &xyz, bool generic, int threads)
+{
     lh_options opt;
     lh_options_default(&opt);
     opt.generic_engine = generic; // the runtime-d engine (same output, for comparison)
@@ -45,7 +49,8 @@ Timing run_lifthull(int d, size_t n, std::vector<double> &xyz, bool generic, int
     return t;
 }
 
-bool tool_built(const std::string &tool) {
+bool tool_built(const std::string &tool)
+{
 #ifndef LH_BENCH_HAVE_QHULL
     if (tool == "qhull") return false;
 #endif
@@ -56,7 +61,8 @@ bool tool_built(const std::string &tool) {
     return true;
 }
 
-bool tool_fits(const std::string &tool, int d) {
+bool tool_fits(const std::string &tool, int d)
+{
     if (tool == "lifthull" || tool == "lifthull_generic" || tool == "lifthull_t2")
         return d >= LH_DELAUNAY_MIN_DIM && d <= LH_DELAUNAY_MAX_DIM;
     if (tool == "cgal_dd") return d >= 2 && d <= 6;
@@ -67,22 +73,33 @@ bool tool_fits(const std::string &tool, int d) {
     return false;
 }
 
-bool tool_exact(const std::string &tool) { return tool != "qhull" && tool != "none"; }
+bool tool_exact(const std::string &tool)
+{
+    return tool != "qhull" && tool != "none";
+}
 
-Timing tool_run(const std::string &tool, int d, size_t n, std::vector<double> &xyz, SiteDist dist) {
+Timing tool_run(const std::string &tool, int d, size_t n, std::vector<double> &xyz, SiteDist dist)
+{
     Timing t;
-    if (tool == "lifthull") t = run_lifthull(d, n, xyz, false);
-    else if (tool == "lifthull_generic") t = run_lifthull(d, n, xyz, true);
-    else if (tool == "lifthull_t2") t = run_lifthull(d, n, xyz, false, 2);
-    else if (tool == "cgal_dd") t = run_cgal_dd(d, n, xyz);
-    else if (tool == "cgal_2") t = run_cgal_2(n, xyz);
-    else if (tool == "cgal_3") t = run_cgal_3(n, xyz);
+    if (tool == "lifthull")
+        t = run_lifthull(d, n, xyz, false);
+    else if (tool == "lifthull_generic")
+        t = run_lifthull(d, n, xyz, true);
+    else if (tool == "lifthull_t2")
+        t = run_lifthull(d, n, xyz, false, 2);
+    else if (tool == "cgal_dd")
+        t = run_cgal_dd(d, n, xyz);
+    else if (tool == "cgal_2")
+        t = run_cgal_2(n, xyz);
+    else if (tool == "cgal_3")
+        t = run_cgal_3(n, xyz);
 #ifdef LH_BENCH_HAVE_QHULL
     else if (tool == "qhull")
         t = run_qhull(d, n, xyz, dist == SiteDist::sphere ? kQhullCmdCospherical : kQhullCmd);
 #endif
 #ifdef LH_BENCH_HAVE_TETGEN
-    else if (tool == "tetgen") t = run_tetgen(n, xyz);
+    else if (tool == "tetgen")
+        t = run_tetgen(n, xyz);
 #endif
     else if (tool == "none") {
         volatile double sink = xyz.empty() ? 0.0 : xyz.back();

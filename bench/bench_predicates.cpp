@@ -37,9 +37,11 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace
+{
 
-void usage(const char *argv0) {
+void usage(const char *argv0)
+{
     std::fprintf(stderr,
                  "usage: %s [--log2n L] [--rounds R] [--min-ms M] [--seed S] [--quick]\n"
                  "  --log2n L   pool of 2^L tuples per (predicate, input) (default 16)\n"
@@ -55,7 +57,8 @@ void usage(const char *argv0) {
 
 // Reads the options into *o; false (after the usage) if they are not usable. Exits with
 // status 1 if an option lacks its value.
-bool parse_options(int argc, char **argv, Options *o) {
+bool parse_options(int argc, char **argv, Options *o)
+{
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
         auto next = [&]() -> const char * {
@@ -96,7 +99,8 @@ bool parse_options(int argc, char **argv, Options *o) {
 }
 
 // Every row --only and --input leave, random inputs first, with its bar (0: none).
-std::vector<Row> run_rows(Session &s, lh_pred *ctx) {
+std::vector<Row> run_rows(Session &s, lh_pred *ctx)
+{
     std::vector<Row> rows;
     for (Input in : {Input::random, Input::neardeg}) {
         const bool rnd = in == Input::random;
@@ -105,8 +109,10 @@ std::vector<Row> run_rows(Session &s, lh_pred *ctx) {
         auto want = [&](const char *name) {
             return s.opt.only_pred.empty() || s.opt.only_pred == name;
         };
-        if (want("orient_2")) rows.push_back(run_row(s, ctx, 2, Pred::orient, in, rnd ? 1.3 : 0, false));
-        if (want("orient_3")) rows.push_back(run_row(s, ctx, 3, Pred::orient, in, rnd ? 1.3 : 0, false));
+        if (want("orient_2"))
+            rows.push_back(run_row(s, ctx, 2, Pred::orient, in, rnd ? 1.3 : 0, false));
+        if (want("orient_3"))
+            rows.push_back(run_row(s, ctx, 3, Pred::orient, in, rnd ? 1.3 : 0, false));
         if (want("orient_4")) rows.push_back(run_row(s, ctx, 4, Pred::orient, in, 0, true));
         if (want("insphere_2"))
             rows.push_back(run_row(s, ctx, 2, Pred::insphere, in, rnd ? 1.3 : 0, false));
@@ -120,7 +126,8 @@ std::vector<Row> run_rows(Session &s, lh_pred *ctx) {
 
 } // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
     Session s;
     if (!parse_options(argc, argv, &s.opt)) return 1;
     lh_pred *ctx = nullptr;

@@ -21,8 +21,8 @@ struct Options {
     int rounds = 7;
     double min_ms = 60.0;
     uint64_t seed = 20240611;
-    int max_print = 5; // disagreements printed per row
-    bool ool = true;   // also time CGAL through an out-of-line call (details table)
+    int max_print = 5;                 // disagreements printed per row
+    bool ool = true;                   // also time CGAL through an out-of-line call (details table)
     std::string only_pred, only_input; // empty: all (for profiling one row)
 };
 
@@ -47,7 +47,10 @@ struct Row {
 struct SignFactor {
     int orient[9] = {0};
     int insphere[9] = {0};
-    int &get(Pred p, int d) { return p == Pred::orient ? orient[d] : insphere[d]; }
+    int &get(Pred p, int d)
+    {
+        return p == Pred::orient ? orient[d] : insphere[d];
+    }
 };
 
 // The run: its options, the sign factors fixed so far, and what the report lists after
@@ -64,10 +67,22 @@ struct Session {
 // generator (xoshiro256**), shared with the tool, the tests and bench_delaunay.
 struct Rng {
     lht_rng g;
-    explicit Rng(uint64_t s) { lht_rng_seed(&g, s); }
-    double u01() { return lht_rng_unit(&g); } // [0,1), a multiple of 2^-53
-    double gauss() { return lht_rng_normal(&g); }
-    uint64_t bits() { return lht_rng_next(&g); }
+    explicit Rng(uint64_t s)
+    {
+        lht_rng_seed(&g, s);
+    }
+    double u01()
+    {
+        return lht_rng_unit(&g);
+    } // [0,1), a multiple of 2^-53
+    double gauss()
+    {
+        return lht_rng_normal(&g);
+    }
+    uint64_t bits()
+    {
+        return lht_rng_next(&g);
+    }
 };
 
 // Writes one tuple of the predicate's points (d + 1 for orient, d + 2 for insphere) of

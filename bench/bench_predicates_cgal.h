@@ -21,62 +21,85 @@ using KD4 = CGAL::Epick_d<CGAL::Dimension_tag<4>>;
 template <int D> struct CgalPoint;
 template <> struct CgalPoint<2> {
     using type = K::Point_2;
-    static type make(const double *c) { return type(c[0], c[1]); }
+    static type make(const double *c)
+    {
+        return type(c[0], c[1]);
+    }
 };
 template <> struct CgalPoint<3> {
     using type = K::Point_3;
-    static type make(const double *c) { return type(c[0], c[1], c[2]); }
+    static type make(const double *c)
+    {
+        return type(c[0], c[1], c[2]);
+    }
 };
 template <> struct CgalPoint<4> {
     using type = KD4::Point_d;
-    static type make(const double *c) { return type(c, c + 4); }
+    static type make(const double *c)
+    {
+        return type(c, c + 4);
+    }
 };
 
 template <int D, Pred P> struct CgalPred;
 template <> struct CgalPred<2, Pred::orient> {
     static constexpr const char *name = "Epick Orientation_2";
     K::Orientation_2 f = K().orientation_2_object();
-    int operator()(const K::Point_2 *a) const { return static_cast<int>(f(a[0], a[1], a[2])); }
+    int operator()(const K::Point_2 *a) const
+    {
+        return static_cast<int>(f(a[0], a[1], a[2]));
+    }
 };
 template <> struct CgalPred<3, Pred::orient> {
     static constexpr const char *name = "Epick Orientation_3";
     K::Orientation_3 f = K().orientation_3_object();
-    int operator()(const K::Point_3 *a) const {
+    int operator()(const K::Point_3 *a) const
+    {
         return static_cast<int>(f(a[0], a[1], a[2], a[3]));
     }
 };
 template <> struct CgalPred<4, Pred::orient> {
     static constexpr const char *name = "Epick_d<4> Orientation_d";
     KD4::Orientation_d f = KD4().orientation_d_object();
-    int operator()(const KD4::Point_d *a) const { return static_cast<int>(f(a, a + 5)); }
+    int operator()(const KD4::Point_d *a) const
+    {
+        return static_cast<int>(f(a, a + 5));
+    }
 };
 template <> struct CgalPred<2, Pred::insphere> {
     static constexpr const char *name = "Epick Side_of_oriented_circle_2";
     K::Side_of_oriented_circle_2 f = K().side_of_oriented_circle_2_object();
-    int operator()(const K::Point_2 *a) const {
+    int operator()(const K::Point_2 *a) const
+    {
         return static_cast<int>(f(a[0], a[1], a[2], a[3]));
     }
 };
 template <> struct CgalPred<3, Pred::insphere> {
     static constexpr const char *name = "Epick Side_of_oriented_sphere_3";
     K::Side_of_oriented_sphere_3 f = K().side_of_oriented_sphere_3_object();
-    int operator()(const K::Point_3 *a) const {
+    int operator()(const K::Point_3 *a) const
+    {
         return static_cast<int>(f(a[0], a[1], a[2], a[3], a[4]));
     }
 };
 template <> struct CgalPred<4, Pred::insphere> {
     static constexpr const char *name = "Epick_d<4> Side_of_oriented_sphere_d";
     KD4::Side_of_oriented_sphere_d f = KD4().side_of_oriented_sphere_d_object();
-    int operator()(const KD4::Point_d *a) const {
+    int operator()(const KD4::Point_d *a) const
+    {
         return static_cast<int>(f(a, a + 5, a[5]));
     }
 };
 
 // ---- the timed loops ----------------------------------------------------------------
 
-template <int D, Pred P> constexpr int npts() { return P == Pred::orient ? D + 1 : D + 2; }
+template <int D, Pred P> constexpr int npts()
+{
+    return P == Pred::orient ? D + 1 : D + 2;
+}
 
-template <int D, Pred P> inline int lh_call(lh_pred *ctx, const double *const *pts) {
+template <int D, Pred P> inline int lh_call(lh_pred *ctx, const double *const *pts)
+{
     if constexpr (P == Pred::orient)
         return lh_orient(ctx, D, pts);
     else
@@ -84,7 +107,8 @@ template <int D, Pred P> inline int lh_call(lh_pred *ctx, const double *const *p
 }
 
 // One pass over the pool; returns the sum of signs (checksum).
-template <int D, Pred P> NOINLINE long lh_pass(lh_pred *ctx, const double *c, size_t n) {
+template <int D, Pred P> NOINLINE long lh_pass(lh_pred *ctx, const double *c, size_t n)
+{
     constexpr int NP = npts<D, P>();
     const double *ptrs[NP];
     long acc = 0;
@@ -97,8 +121,8 @@ template <int D, Pred P> NOINLINE long lh_pass(lh_pred *ctx, const double *c, si
 }
 
 template <int D, Pred P>
-NOINLINE long cgal_pass(const CgalPred<D, P> &f, const typename CgalPoint<D>::type *pts,
-                        size_t n) {
+NOINLINE long cgal_pass(const CgalPred<D, P> &f, const typename CgalPoint<D>::type *pts, size_t n)
+{
     constexpr int NP = npts<D, P>();
     long acc = 0;
     for (size_t i = 0; i < n; ++i) acc += f(pts + i * NP);
@@ -108,12 +132,14 @@ NOINLINE long cgal_pass(const CgalPred<D, P> &f, const typename CgalPoint<D>::ty
 // The same CGAL pass, but every predicate call goes through an out-of-line function, as
 // lifthull's calls do (informational: separates call overhead from predicate cost).
 template <int D, Pred P>
-NOINLINE int cgal_call_ool(const CgalPred<D, P> &f, const typename CgalPoint<D>::type *a) {
+NOINLINE int cgal_call_ool(const CgalPred<D, P> &f, const typename CgalPoint<D>::type *a)
+{
     return f(a);
 }
 template <int D, Pred P>
 NOINLINE long cgal_pass_ool(const CgalPred<D, P> &f, const typename CgalPoint<D>::type *pts,
-                            size_t n) {
+                            size_t n)
+{
     constexpr int NP = npts<D, P>();
     long acc = 0;
     for (size_t i = 0; i < n; ++i) acc += cgal_call_ool<D, P>(f, pts + i * NP);
@@ -122,7 +148,8 @@ NOINLINE long cgal_pass_ool(const CgalPred<D, P> &f, const typename CgalPoint<D>
 
 // Sign-recording passes (untimed).
 template <int D, Pred P>
-void lh_signs(lh_pred *ctx, const double *c, size_t n, std::vector<signed char> &out) {
+void lh_signs(lh_pred *ctx, const double *c, size_t n, std::vector<signed char> &out)
+{
     constexpr int NP = npts<D, P>();
     const double *ptrs[NP];
     out.resize(n);
@@ -134,7 +161,8 @@ void lh_signs(lh_pred *ctx, const double *c, size_t n, std::vector<signed char> 
 }
 template <int D, Pred P>
 void cgal_signs(const CgalPred<D, P> &f, const typename CgalPoint<D>::type *pts, size_t n,
-                std::vector<signed char> &out) {
+                std::vector<signed char> &out)
+{
     constexpr int NP = npts<D, P>();
     out.resize(n);
     for (size_t i = 0; i < n; ++i) out[i] = static_cast<signed char>(f(pts + i * NP));

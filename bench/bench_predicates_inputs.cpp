@@ -5,15 +5,16 @@
 
 #include <cmath>
 
-namespace {
+namespace
+{
 
 const double kTwoPi = 6.283185307179586476925286766559;
 
 } // namespace
 
-
 // Writes one tuple of np points of dimension d into out.
-void gen_tuple(Rng &r, Pred p, Input in, int d, double *out) {
+void gen_tuple(Rng &r, Pred p, Input in, int d, double *out)
+{
     const int np = p == Pred::orient ? d + 1 : d + 2;
     if (in == Input::random) {
         for (int i = 0; i < np * d; ++i) out[i] = r.u01();

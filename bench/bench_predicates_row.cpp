@@ -10,14 +10,17 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace
+{
 
-double now_s() {
+double now_s()
+{
     using clk = std::chrono::steady_clock;
     return std::chrono::duration<double>(clk::now().time_since_epoch()).count();
 }
 
-double median(std::vector<double> v) {
+double median(std::vector<double> v)
+{
     std::sort(v.begin(), v.end());
     size_t m = v.size() / 2;
     return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
@@ -33,7 +36,8 @@ template <int D, Pred P> struct Pool {
 };
 
 // The seed depends on the row, so rows are independent of each other's order.
-template <int D, Pred P> void make_pool(const Session &s, Input in, Pool<D, P> &pool) {
+template <int D, Pred P> void make_pool(const Session &s, Input in, Pool<D, P> &pool)
+{
     constexpr int NP = Pool<D, P>::NP;
     const size_t n = pool.n;
     Rng rng(s.opt.seed * 1000003u + static_cast<uint64_t>(D) * 17u +
@@ -47,7 +51,8 @@ template <int D, Pred P> void make_pool(const Session &s, Input in, Pool<D, P> &
 // lifthull's sign pass, with its predicate counters checked against the call count.
 template <int D, Pred P>
 void lh_sign_pass(Session &s, lh_pred *ctx, const Pool<D, P> &pool, Row &row,
-                  std::vector<signed char> &sl) {
+                  std::vector<signed char> &sl)
+{
     const size_t n = pool.n;
     lh_pred_counters_reset(ctx);
     lh_signs<D, P>(ctx, pool.coords.data(), n, sl);
@@ -71,7 +76,8 @@ void lh_sign_pass(Session &s, lh_pred *ctx, const Pool<D, P> &pool, Row &row,
 // The disagreement on tuple i, with its points in %a, for the report.
 template <int D, Pred P>
 std::string describe_disagreement(const Pool<D, P> &pool, const Row &row, size_t i, int sl, int sc,
-                                  int fac) {
+                                  int fac)
+{
     constexpr int NP = Pool<D, P>::NP;
     std::string s;
     char buf[128];
@@ -81,7 +87,8 @@ std::string describe_disagreement(const Pool<D, P> &pool, const Row &row, size_t
     for (int j = 0; j < NP; ++j) {
         s += "    p" + std::to_string(j) + " = (";
         for (int c = 0; c < D; ++c) {
-            std::snprintf(buf, sizeof buf, "%s%a", c ? ", " : "", pool.coords[i * NP * D + j * D + c]);
+            std::snprintf(buf, sizeof buf, "%s%a", c ? ", " : "",
+                          pool.coords[i * NP * D + j * D + c]);
             s += buf;
         }
         s += ")\n";
@@ -91,7 +98,9 @@ std::string describe_disagreement(const Pool<D, P> &pool, const Row &row, size_t
 
 // Both sign passes, the predicate's sign factor (fixed by its first row) and every
 // tuple's signs compared under it.
-template <int D, Pred P> void check_signs(Session &s, lh_pred *ctx, const Pool<D, P> &pool, Row &row) {
+template <int D, Pred P>
+void check_signs(Session &s, lh_pred *ctx, const Pool<D, P> &pool, Row &row)
+{
     const size_t n = pool.n;
     std::vector<signed char> sl, sc;
     lh_sign_pass<D, P>(s, ctx, pool, row, sl);
@@ -120,7 +129,9 @@ template <int D, Pred P> void check_signs(Session &s, lh_pred *ctx, const Pool<D
 
 // Calibrates (one warm pass each: passes per round so a round lasts >= min_ms), then
 // runs the interleaved rounds; the medians give ns per call.
-template <int D, Pred P> void time_rounds(Session &s, lh_pred *ctx, const Pool<D, P> &pool, Row &row) {
+template <int D, Pred P>
+void time_rounds(Session &s, lh_pred *ctx, const Pool<D, P> &pool, Row &row)
+{
     const size_t n = pool.n;
     const double *coords = pool.coords.data();
     const auto *pts = pool.pts.data();
@@ -153,9 +164,18 @@ template <int D, Pred P> void time_rounds(Session &s, lh_pred *ctx, const Pool<D
         if (sum) *sum = acc / reps;
         times.push_back((b - a) * 1e9 / (double(n) * reps));
     };
-    auto round_lh = [&] { round(row.lh_reps, [&] { return lh_pass<D, P>(ctx, coords, n); }, lh_t, &row.lh_sum); };
-    auto round_cg = [&] { round(row.cg_reps, [&] { return cgal_pass<D, P>(cg, pts, n); }, cg_t, &row.cg_sum); };
-    auto round_ool = [&] { round(row.ool_reps, [&] { return cgal_pass_ool<D, P>(cg, pts, n); }, ool_t, nullptr); };
+    auto round_lh = [&] {
+        round(
+            row.lh_reps, [&] { return lh_pass<D, P>(ctx, coords, n); }, lh_t, &row.lh_sum);
+    };
+    auto round_cg = [&] {
+        round(
+            row.cg_reps, [&] { return cgal_pass<D, P>(cg, pts, n); }, cg_t, &row.cg_sum);
+    };
+    auto round_ool = [&] {
+        round(
+            row.ool_reps, [&] { return cgal_pass_ool<D, P>(cg, pts, n); }, ool_t, nullptr);
+    };
     for (int r = 0; r < s.opt.rounds; ++r) {
         if (r % 2 == 0) {
             round_lh();
@@ -175,7 +195,8 @@ template <int D, Pred P> void time_rounds(Session &s, lh_pred *ctx, const Pool<D
     row.cg_max = *std::max_element(cg_t.begin(), cg_t.end());
 }
 
-template <int D, Pred P> Row run_row_t(Session &s, lh_pred *ctx, Input in, double bar, bool extra) {
+template <int D, Pred P> Row run_row_t(Session &s, lh_pred *ctx, Input in, double bar, bool extra)
+{
     Row row;
     row.pred = std::string(P == Pred::orient ? "orient_" : "insphere_") + std::to_string(D);
     row.input = in == Input::random ? "random" : "near-degenerate";
@@ -196,14 +217,18 @@ template <int D, Pred P> Row run_row_t(Session &s, lh_pred *ctx, Input in, doubl
 
 } // namespace
 
-Row run_row(Session &s, lh_pred *ctx, int d, Pred p, Input in, double bar, bool extra) {
+Row run_row(Session &s, lh_pred *ctx, int d, Pred p, Input in, double bar, bool extra)
+{
     const bool o = p == Pred::orient;
     switch (d) {
-    case 2: return o ? run_row_t<2, Pred::orient>(s, ctx, in, bar, extra)
-                     : run_row_t<2, Pred::insphere>(s, ctx, in, bar, extra);
-    case 3: return o ? run_row_t<3, Pred::orient>(s, ctx, in, bar, extra)
-                     : run_row_t<3, Pred::insphere>(s, ctx, in, bar, extra);
-    default: return o ? run_row_t<4, Pred::orient>(s, ctx, in, bar, extra)
-                      : run_row_t<4, Pred::insphere>(s, ctx, in, bar, extra);
+    case 2:
+        return o ? run_row_t<2, Pred::orient>(s, ctx, in, bar, extra)
+                 : run_row_t<2, Pred::insphere>(s, ctx, in, bar, extra);
+    case 3:
+        return o ? run_row_t<3, Pred::orient>(s, ctx, in, bar, extra)
+                 : run_row_t<3, Pred::insphere>(s, ctx, in, bar, extra);
+    default:
+        return o ? run_row_t<4, Pred::orient>(s, ctx, in, bar, extra)
+                 : run_row_t<4, Pred::insphere>(s, ctx, in, bar, extra);
     }
 }
