@@ -25,7 +25,8 @@
 #endif
 
 // The CPU's model name, or "unknown".
-inline std::string cpu_model() {
+inline std::string cpu_model()
+{
     std::ifstream f("/proc/cpuinfo");
     std::string line;
     while (std::getline(f, line))
@@ -41,7 +42,8 @@ inline std::string cpu_model() {
 }
 
 // Total memory as "23.5 GiB", or "unknown".
-inline std::string mem_total() {
+inline std::string mem_total()
+{
     std::ifstream f("/proc/meminfo");
     std::string line;
     while (std::getline(f, line))

@@ -15,17 +15,18 @@ enum class SiteDist { uniform, grid, sphere, clusters, pgrid };
 bool site_dist_parse(const std::string &name, SiteDist *out);
 const char *site_dist_name(SiteDist dist);
 
-// Row-major sites (count*d doubles) of the distribution, the same for every tool:
-//   uniform  n sites uniform in [0,1)^d: multiples of 2^-53 from mt19937_64(seed).
+// Row-major sites (count*d doubles) of the distribution, the same for every tool; the
+// random numbers are tools/sites.h's (xoshiro256**, seeded through splitmix64):
+//   uniform  n sites uniform in [0,1)^d: multiples of 2^-53 (lht_rng_unit, seed).
 //   grid     all k^d points of {0,..,k-1}^d, k = max(2, round(n^(1/d))), so the count
 //            differs from n (10^6 in 2D and 3D exactly); shuffled by seed.
-//   sphere   n distinct points of Z^d on the sphere |x|^2 = N about the origin, a random
-//            subset (seed) of all the lattice points on a sphere chosen per (d, n) to hold
-//            at least n of them: in 2D the Gaussian-integer products of norm N (N a
-//            product of primes 1 mod 4), in 3D the rotations of (0,0,R) by integer
-//            quaternions of norm R (N = R^2), from 4D on every lattice point of |x|^2 = N.
-//            Every coordinate is an integer below 2^53, so exact in a double, and every
-//            site is checked on the sphere in integer arithmetic.
+//   sphere   n distinct points of Z^d on one sphere |x|^2 = M about the origin, chosen
+//            per (d, n) to hold at least n lattice points, a random subset (seed) of
+//            them in random order: tools/sites.h's exactly cospherical sites
+//            (lht_sphere_plan, lht_sphere_pick), as `lifthull points --exact-sphere`
+//            makes them. d <= 8; at most lht_circle_max() sites in 2D and
+//            LHT_EXACT_SPHERE_MAX_3D in 3D. Every coordinate is an integer, exact in a
+//            double.
 //   clusters n sites from 10 Gaussian clusters, standard deviations 10^-6 .. 10^-2, about
 //            centres uniform in [0,1)^d (near-degenerate at every scale between).
 //   pgrid    the grid above with every coordinate x moved to x (1 + 10^-12 u), u uniform in

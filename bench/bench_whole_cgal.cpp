@@ -15,7 +15,8 @@
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-static std::vector<char> slurp(const char *path) {
+static std::vector<char> slurp(const char *path)
+{
     std::vector<char> text;
     FILE *f = std::fopen(path, "rb");
     if (!f) return text;
@@ -29,7 +30,8 @@ static std::vector<char> slurp(const char *path) {
 
 // The numbers of the text after removing '#' comments, parsed with strtod; the rest of
 // the first number's line is a title (Qhull's format: "2 lifthull points ...").
-static std::vector<double> numbers(std::vector<char> &text) {
+static std::vector<double> numbers(std::vector<char> &text)
+{
     for (size_t i = 0; i < text.size(); i++)
         if (text[i] == '#')
             while (i < text.size() && text[i] != '\n' && text[i]) text[i++] = ' ';
@@ -38,7 +40,8 @@ static std::vector<double> numbers(std::vector<char> &text) {
     double d = std::strtod(p, &end);
     if (end == p) return v;
     v.push_back(d);
-    for (p = end; *p && *p != '\n'; p++) {}
+    for (p = end; *p && *p != '\n'; p++) {
+    }
     for (;;) {
         double x = std::strtod(p, &end);
         if (end == p) break;
@@ -48,7 +51,8 @@ static std::vector<double> numbers(std::vector<char> &text) {
     return v;
 }
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
     if (argc != 2) {
         std::fprintf(stderr, "usage: bench_whole_cgal FILE\n");
         return 2;

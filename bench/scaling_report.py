@@ -84,16 +84,16 @@ def _protocol(res, out):
             f"least linear) exceeds {2 * m.get('budget', 0):g} s, is not run at the larger sizes "
             "of that dimension and distribution (\"skipped\" in the tables, reasons at the end); "
             f"a run is killed after {m.get('timeout', 0):g} s.",
-            "- **uniform**: n sites uniform in [0,1)^d (53-bit doubles from mt19937_64).",
+            "- **uniform**: n sites uniform in [0,1)^d (53-bit doubles from xoshiro256**, "
+            "tools/sites.h).",
             "- **integer grid**: all k^d points of {0,..,k-1}^d, k = round(n^(1/d)), in a "
             "seeded random order: the column *n* gives k^d. Every unit square (cube) is "
             "cospherical: maximal degeneracy, resolved exactly by lifthull and CGAL.",
             "- **cospherical**: n distinct integer points exactly on one sphere about the "
             "origin (exact in doubles), a seeded random subset of all the lattice points of "
-            "a sphere chosen to hold at least n: in 2D x^2+y^2 = N with N a product of primes "
-            "1 mod 4 (the Gaussian-integer products of norm N; coordinates reach 2^51 at "
-            "10^6), in 3D the images of (0,0,R) under integer quaternions of norm R "
-            "(|x| = R, about 3R points), in 4D all lattice points of |x|^2 = N. Every "
+            "a sphere |x|^2 = M chosen to hold at least n, in random order: the exactly "
+            "cospherical sites of tools/sites.h (as `lifthull points --exact-sphere`; in 2D M "
+            "a product of primes 1 mod 4, at most 15360 sites; in 3D at most 200000). Every "
             "triangulation of such sites is Delaunay; the exact tools pick one by their "
             "perturbation, so from 3D on simplex counts may differ between tools. Qhull "
             "runs with `Qz` added (it refuses cospherical input under `Qbb` without it).",
