@@ -105,7 +105,8 @@ double lht_rng_normal(lht_rng *r)
  * selection sampling (keep the next candidate with probability still-needed /
  * still-left), streaming, so memory stays small.
  *   d = 2:  M = a product of primes p = 1 mod 4, chosen greedily (gain in points per
- *           factor of M) while M < 2^62; p = pi conj(pi) in the Gaussian integers and
+ *           factor of M) while M < 2^104, so that every coordinate (below 2^52 in
+ *           magnitude) and every partial product is exact; p = pi conj(pi) in the Gaussian integers and
  *           the points are the 4 unit multiples of the products that take
  *           pi^j conj(pi)^(e-j) from each p^e: all r_2(M) = 4 prod (e + 1) of them.
  *   d >= 3: from M0, where the average of r_d (pi^(d/2) / Gamma(d/2) M^(d/2-1)) reaches
@@ -117,23 +118,39 @@ static const int64_t gauss_prime[LHT_GAUSS_PRIMES] = {5,  13,  17,  29,  37,  41
                                                     61, 73,  89,  97,  101, 109, 113,
                                                     137, 149, 157, 173, 181, 193, 197};
 
-/* d = 2: the greedy exponents; 0 when N points need M >= 2^62. */
+/* M < 2^104 kept exactly in two limbs, M = hi 2^52 + lo with lo < 2^52. */
+typedef struct circle_norm {
+    uint64_t hi, lo;
+} circle_norm;
+
+/* 1 and *m times q (q < 2^11) when the product stays below 2^104, else 0 and *m kept. */
+static int circle_norm_mul(circle_norm *m, uint64_t q)
+{
+    const uint64_t mask = (UINT64_C(1) << 52) - 1;
+    uint64_t lo = m->lo * q, hi = m->hi * q + (lo >> 52);
+    if (hi >> 52) return 0;
+    m->hi = hi, m->lo = lo & mask;
+    return 1;
+}
+
+/* d = 2: the greedy exponents; 0 when N points need M >= 2^104. */
 static int plan_circle(lht_sphere *p, uint64_t n)
 {
     uint64_t count = 1; /* prod (e + 1): the points are 4 * count */
-    p->m = 1;
+    circle_norm m = {0, 1};
     while (4 * count < n) {
         int best = -1;
         double best_gain = 0;
         for (int i = 0; i < LHT_GAUSS_PRIMES; i++) {
-            if (p->m > (UINT64_C(1) << 62) / (uint64_t)gauss_prime[i]) continue;
+            circle_norm t = m;
+            if (!circle_norm_mul(&t, (uint64_t)gauss_prime[i])) continue;
             double g = det_log((p->exps[i] + 2.0) / (p->exps[i] + 1.0)) / det_log((double)gauss_prime[i]);
             if (g > best_gain) best = i, best_gain = g;
         }
         if (best < 0) return 0;
         count = count / (uint64_t)(p->exps[best] + 1) * (uint64_t)(p->exps[best] + 2);
         p->exps[best]++;
-        p->m *= (uint64_t)gauss_prime[best];
+        circle_norm_mul(&m, (uint64_t)gauss_prime[best]);
     }
     p->total = 4 * count;
     return 1;
@@ -304,7 +321,7 @@ static void offer_sphere(const lht_sphere *p, picker *k)
     }
 }
 
-/* The most points --exact-sphere gives in 2D (M < 2^62). */
+/* The most points --exact-sphere gives in 2D (M < 2^104). */
 uint64_t lht_circle_max(void)
 {
     lht_sphere p = {.d = 2};

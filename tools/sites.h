@@ -31,9 +31,10 @@ double lht_rng_normal(lht_rng *r);            /* standard normal (polar method) 
  * radius m with total >= n integer points v, |v|^2 = m. */
 typedef struct lht_sphere {
     int d;
-    uint64_t m;                 /* the squared radius                          */
+    uint64_t m;                 /* d >= 3: the squared radius                  */
     uint64_t total;             /* integer points with |v|^2 = m               */
-    int exps[LHT_GAUSS_PRIMES]; /* d = 2: m = prod gauss_prime[i]^exps[i]      */
+    int exps[LHT_GAUSS_PRIMES]; /* d = 2: m = prod gauss_prime[i]^exps[i], below
+                                   2^104 (not stored in m)                     */
     int64_t *tuples;            /* d >= 3: tuple_count sorted tuples, d each    */
     size_t tuple_count, tuple_cap;
 } lht_sphere;
@@ -41,7 +42,7 @@ typedef struct lht_sphere {
 /* 1 planned, 0 no such sphere (2D: n > lht_circle_max(); d >= 3: m would pass 2^50),
  * -1 out of memory; lht_sphere_free releases it in every case. */
 int lht_sphere_plan(lht_sphere *p, int d, uint64_t n);
-/* The most points a 2D plan gives (m < 2^62). */
+/* The most points a 2D plan gives (M < 2^104: 1105920). */
 uint64_t lht_circle_max(void);
 /* n of the plan's points, a uniformly random subset drawn from r, each passed to emit in
  * a fixed order (coordinates are integers, exact in doubles). */

@@ -63,7 +63,8 @@ for d in 2 3 5 8; do
   check int:7 300 -d $d --integer 7 --seed 14
   check any 300 -d $d --clusters 4 --seed 15
 done
-check exact 15360 -d 2 --exact-sphere   # every integer point of its circle
+check exact 15360 -d 2 --exact-sphere
+check exact 100000 -d 2 --exact-sphere   # M about 2^86: past 64 bits
 check exact 20000 -d 3 --exact-sphere
 check int:100 500 -d 3 --ball --integer 100
 check int:5 2000 -d 2 --clusters 3 --integer 5   # tails clamped to [-R, R]
@@ -125,7 +126,7 @@ usage "--integer must be an integer from 1 to 1000000000000000" 10 --integer 0
 usage "more clusters than the 5 points" 5 --clusters 6
 usage "unexpected argument '4'" 3 4
 usage "-f only makes sense with -o" 10 -f
-usage "--exact-sphere in 2D gives at most 15360 points" 15361 -d 2 --exact-sphere
+usage "--exact-sphere in 2D gives at most 1105920 points" 1105921 -d 2 --exact-sphere
 "$lh" points --help > "$tmp/out" 2> "$tmp/err"; c=$?
 if [ $c -eq 0 ] && grep -q "^usage: lifthull points N" "$tmp/out" && grep -q "examples:" "$tmp/out" && [ ! -s "$tmp/err" ]; then ok; else bad "--help: exit $c"; fi
 
