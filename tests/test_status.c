@@ -133,6 +133,7 @@ LH_TEST(reader_error_has_status_message_and_place)
     LH_EXPECT_EQ_U64(e.index, LH_ERROR_NO_INDEX);
     LH_ASSERT_EQ_INT(points_from("2 3\n0 0\n1 0\n0 1\n", &p, &e), LH_OK);
     expect_clear(lh_t_, &e);
+    lh_points_free(&p);
     /* an argument refused before any reading: the status, no message, no place */
     e = stale;
     LH_EXPECT_EQ_INT(lh_points_read(NULL, "x", LH_FORMAT_QHULL, NULL, &p, &e), LH_ERR_INVALID_ARGUMENT);
