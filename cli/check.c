@@ -32,10 +32,10 @@ static int read_cells(const char *file, size_t n, lh_cells *c)
 {
     FILE *f = lh_cli_open_input(file);
     if (!f) return 0;
-    char msg[512];
-    lh_status st = lh_cells_read(f, file, n, NULL, c, msg, sizeof msg);
+    lh_error err;
+    lh_status st = lh_cells_read(f, file, n, NULL, c, &err);
     fclose(f);
-    if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+    if (st != LH_OK) fprintf(stderr, "%s\n", err.message[0] ? err.message : lh_status_message(st));
     return st == LH_OK;
 }
 
@@ -57,13 +57,14 @@ int lh_cli_check(int argc, char **argv)
         fprintf(stderr, "%s: cells of %d points; a triangulation of %d-dimensional points has %d\n",
                 a.file[1], c.nv, p.d, p.d + 1);
     } else {
-        char msg[256];
-        lh_status st = lh_delaunay_check(p.d, p.n, p.xyz, c.count, c.v, NULL, msg, sizeof msg);
+        lh_error err;
+        lh_status st = lh_delaunay_check(p.d, p.n, p.xyz, c.count, c.v, NULL, &err);
         if (st == LH_OK)
             printf("ok: %zu %s, the Delaunay triangulation of the %zu point%s (exact check)\n", c.count,
                    c.count == 1 ? "simplex" : "simplices", p.n, p.n == 1 ? "" : "s");
         else
-            printf("not Delaunay: %s\n", st == LH_ERR_INVALID_MESH ? msg : lh_status_message(st));
+            printf("not Delaunay: %s\n",
+                   st == LH_ERR_INVALID_MESH ? err.message : lh_status_message(st));
         status = st == LH_OK ? lh_cli_finish_output("check") : LH_EXIT_FAIL;
     }
     lh_cells_free(&c);

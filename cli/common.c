@@ -47,12 +47,12 @@ int lh_cli_load_progress(const char *file, lh_format fmt, lh_points *pts, const 
         *name = file;
         if (!(f = lh_cli_open_input(file))) return 0;
     }
-    char msg[512];
+    lh_error err;
     lh_cli_progress_file(prog, "reading", *name, f);
-    lh_status st = lh_points_read(f, *name, fmt, NULL, pts, msg, sizeof msg);
+    lh_status st = lh_points_read(f, *name, fmt, NULL, pts, &err);
     lh_cli_progress_file_done(prog);
     if (f != stdin) fclose(f);
-    if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+    if (st != LH_OK) fprintf(stderr, "%s\n", err.message[0] ? err.message : lh_status_message(st));
     return st == LH_OK;
 }
 

@@ -282,12 +282,12 @@ int lh_cli_mesh(int argc, char **argv)
     free(base);
     if (!loaded) return LH_EXIT_INPUT;
     if (a.ignore_holes) in.g.hole_count = 0;
-    char msg[512];
+    lh_error err;
     lh_trimesh *m = NULL;
-    lh_status st = lh_pslg_triangulate(&in.g, &a.opt, &m, msg, sizeof msg);
+    lh_status st = lh_pslg_triangulate(&in.g, &a.opt, &m, &err);
     int rc;
     if (st != LH_OK) {
-        lh_cli_pslg_report(&in, st, msg);
+        lh_cli_pslg_report(&in, &err);
         rc = st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL ? LH_EXIT_FAIL : LH_EXIT_INPUT;
     } else if (!a.output) {
         lh_cli_trimesh_report(stdout, m, a.opt.min_angle, 1); /* Triangle's numbering */

@@ -32,7 +32,7 @@ int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area);
  * from f into area. Returns 1, or 0 after printing the problem (FILE:LINE:COL: ...). */
 int lh_cli_area_read(FILE *f, const char *path, size_t count, double *area);
 /* Prints lh_pslg_triangulate's failure as "FILE:LINE: ..." or "FILE: ...". */
-void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg);
+void lh_cli_pslg_report(const lh_cli_pslg *in, const lh_error *err);
 
 /* Triangle's output files and what goes in them (its switches in brackets). */
 typedef struct lh_cli_tri_files {

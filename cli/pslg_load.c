@@ -16,10 +16,11 @@ static int attach_node(lh_cli_pslg *in, const char *base)
     lh_points pts;
     memset(&pts, 0, sizeof pts);
     FILE *f = lh_cli_open_input(node);
-    char msg[512];
-    lh_status st = f ? lh_points_read(f, node, LH_FORMAT_NODE, NULL, &pts, msg, sizeof msg) : LH_ERR_IO;
+    lh_error err;
+    lh_status st = f ? lh_points_read(f, node, LH_FORMAT_NODE, NULL, &pts, &err) : LH_ERR_IO;
     if (f) fclose(f);
-    if (f && st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+    if (f && st != LH_OK)
+        fprintf(stderr, "%s\n", err.message[0] ? err.message : lh_status_message(st));
     if (st == LH_OK && pts.d != 2) {
         fprintf(stderr, "%s: the points have %d coordinates, a .poly needs 2\n", node, pts.d);
         st = LH_ERR_DIMENSION;
@@ -34,10 +35,10 @@ static int attach_node(lh_cli_pslg *in, const char *base)
 /* A .node point set: its points become a PSLG without segments. */
 static int load_node(lh_cli_pslg *in, FILE *f)
 {
-    char msg[512];
-    lh_status st = lh_points_read(f, in->path, LH_FORMAT_NODE, NULL, &in->pts, msg, sizeof msg);
+    lh_error err;
+    lh_status st = lh_points_read(f, in->path, LH_FORMAT_NODE, NULL, &in->pts, &err);
     if (st != LH_OK) {
-        fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+        fprintf(stderr, "%s\n", err.message[0] ? err.message : lh_status_message(st));
         return 0;
     }
     if (in->pts.d != 2) {
@@ -60,15 +61,16 @@ int lh_cli_pslg_load(lh_cli_pslg *in, const char *path, const char *base, int ki
     in->kind = kind;
     FILE *f = lh_cli_open_input(path);
     if (!f) return 0;
-    char msg[512];
+    lh_error err;
     lh_status st = LH_OK;
     int ok;
     if (kind == LH_CLI_NODE) {
         ok = load_node(in, f);
     } else {
-        st = kind == LH_CLI_RINGS ? lh_rings_read(f, path, NULL, &in->g, msg, sizeof msg)
-                                  : lh_poly_read(f, path, NULL, &in->g, msg, sizeof msg);
-        if (st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+        st = kind == LH_CLI_RINGS ? lh_rings_read(f, path, NULL, &in->g, &err)
+                                  : lh_poly_read(f, path, NULL, &in->g, &err);
+        if (st != LH_OK)
+            fprintf(stderr, "%s\n", err.message[0] ? err.message : lh_status_message(st));
         ok = st == LH_OK && (kind != LH_CLI_POLY || in->g.n > 0 || attach_node(in, base));
     }
     fclose(f);
@@ -86,12 +88,13 @@ void lh_cli_pslg_free(lh_cli_pslg *in)
     memset(in, 0, sizeof *in);
 }
 
-void lh_cli_pslg_report(const lh_cli_pslg *in, lh_status st, const char *msg)
+void lh_cli_pslg_report(const lh_cli_pslg *in, const lh_error *err)
 {
-    if (msg[0] >= '0' && msg[0] <= '9')
-        fprintf(stderr, "%s:%s\n", in->path, msg);
+    if (err->line) /* the message starts with "LINE: " */
+        fprintf(stderr, "%s:%s\n", in->path, err->message);
     else
-        fprintf(stderr, "%s: %s\n", in->path, msg[0] ? msg : lh_status_message(st));
+        fprintf(stderr, "%s: %s\n", in->path,
+                err->message[0] ? err->message : lh_status_message(err->status));
 }
 
 static int load_area(lh_cli_pslg *in, const char *path)
@@ -111,10 +114,11 @@ int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area)
     char *path = lh_cli_path_ext(base, strlen(base), ".ele");
     if (!path) return 0;
     FILE *f = lh_cli_open_input(path);
-    char msg[512];
-    lh_status st = f ? lh_cells_read(f, path, in->g.n, NULL, &in->ele, msg, sizeof msg) : LH_ERR_IO;
+    lh_error err;
+    lh_status st = f ? lh_cells_read(f, path, in->g.n, NULL, &in->ele, &err) : LH_ERR_IO;
     if (f) fclose(f);
-    if (f && st != LH_OK) fprintf(stderr, "%s\n", msg[0] ? msg : lh_status_message(st));
+    if (f && st != LH_OK)
+        fprintf(stderr, "%s\n", err.message[0] ? err.message : lh_status_message(st));
     if (st == LH_OK && in->ele.nv != 3) {
         fprintf(stderr, "%s: %d points a cell; a triangle mesh has 3\n", path, in->ele.nv);
         st = LH_ERR_PARSE;

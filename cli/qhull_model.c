@@ -224,11 +224,12 @@ int lh_cli_qmodel_build(lh_cli_qmodel *mo, const lh_cli_qopts *o, int d, size_t 
     mo->ngood = mo->m;
     if (st == LH_OK) st = lh_cli_qmodel_incidence(mo);
     if (st == LH_OK && o->verify) {
-        char msg[256];
-        lh_status c = mo->tri ? lh_tri_check(mo->tri, msg, sizeof msg) : LH_OK;
+        lh_error err;
+        lh_status c = mo->tri ? lh_tri_check(mo->tri, &err) : LH_OK;
         fprintf(stderr, "lifthull %s: Tv: %s\n", o->name,
-                !mo->tri ? "the exact check is for Delaunay output (lifthull check); skipped"
-                : c == LH_OK ? "the exact check passed" : msg);
+                !mo->tri     ? "the exact check is for Delaunay output (lifthull check); skipped"
+                : c == LH_OK ? "the exact check passed"
+                             : err.message);
         if (c != LH_OK) st = c;
     }
     if (st == LH_OK) return 1;

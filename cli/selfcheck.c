@@ -169,9 +169,9 @@ static int run_case(lh_pred *ctx, const sc_case *c, const char *file, int line,
                     long *naive_wrong)
 {
     const double *pts[LH_ORIENT_MAX_DIM + 1];
-    size_t bad;
+    lh_error bad;
     if (lh_coords_validate(c->dim, (size_t)c->npts, c->x, &bad) != LH_OK) {
-        fprintf(stderr, "%s:%d: coordinate %zu: %s\n", file, line, bad + 1,
+        fprintf(stderr, "%s:%d: coordinate %zu: %s\n", file, line, bad.index + 1,
                 lh_status_message(LH_ERR_NONFINITE));
         return -1;
     }

@@ -216,13 +216,13 @@ static int run(const sw *o, const char *file)
     opt.boundary_steiner = o->Y == 0 ? 1 : o->Y == 1 ? 0 : -1;
     opt.split_segments = o->s;
     if (o->S) opt.max_steiner = o->steiner;
-    char msg[512];
+    lh_error err;
     const double t0 = lh_cli_seconds();
-    lh_status st = lh_pslg_triangulate(&in.g, &opt, &m, msg, sizeof msg);
+    lh_status st = lh_pslg_triangulate(&in.g, &opt, &m, &err);
     const double secs = lh_cli_seconds() - t0;
     if (getenv("LIFTHULL_TIMING")) fprintf(stderr, "compute_ms=%.3f\n", 1e3 * secs); /* for bench/ */
     if (st != LH_OK) {
-        lh_cli_pslg_report(&in, st, msg);
+        lh_cli_pslg_report(&in, &err);
         rc = st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL ? LH_EXIT_FAIL : LH_EXIT_INPUT;
     } else {
         rc = lh_cli_trimesh_write(m, &in, outb, &o->files, "triangle");

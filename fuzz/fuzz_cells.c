@@ -48,8 +48,8 @@ static void round_trip(const lh_cells *c, size_t n_points, const lh_allocator *a
             fprintf(f, "%" LH_INDEX_PRI "%c", c->v[i * c->nv + k], k + 1 < c->nv ? ' ' : '\n');
     rewind(f);
     lh_cells back;
-    char msg[512];
-    if (lh_cells_read(f, "back", n_points, a, &back, msg, sizeof msg) != LH_OK) abort();
+    lh_error err;
+    if (lh_cells_read(f, "back", n_points, a, &back, &err) != LH_OK) abort();
     fclose(f);
     if (back.count != c->count || back.nv != c->nv || back.first_index != 0 ||
         memcmp(back.v, c->v, c->count * (size_t)c->nv * sizeof *c->v))
@@ -70,15 +70,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     lh_allocator a = {lh_fuzz_count_alloc, lh_fuzz_count_free, &live};
     const char *name = names[(data[0] >> 3) & 3];
     size_t n_points = points[data[0] & 7];
-    char msg[512];
+    lh_error err;
     lh_cells c;
-    lh_status st = lh_cells_read(f, name, n_points, &a, &c, msg, sizeof msg);
+    lh_status st = lh_cells_read(f, name, n_points, &a, &c, &err);
     fclose(f);
     if (st == LH_OK) {
-        check_ok(&c, n_points, msg);
+        check_ok(&c, n_points, err.message);
         if (c.count <= 4096) round_trip(&c, n_points, &a);
     } else {
-        check_failure(st, &c, msg, name);
+        check_failure(st, &c, err.message, name);
     }
     lh_cells_free(&c);
     if (live != 0) abort();

@@ -195,14 +195,15 @@ static int brute_force(lh_pred *p, int d, size_t n, const double *x, const list 
 /* Runs the checker; checks the message contract; returns 1 when accepted. */
 static int run(int d, size_t n, const double *x, const list *l, int with_msg)
 {
-    char msg[256];
-    memset(msg, 'x', sizeof msg);
-    lh_status st = lh_delaunay_check(d, n, x, l->count, l->v, NULL, with_msg ? msg : NULL, with_msg ? sizeof msg : 0);
+    lh_error err;
+    memset(err.message, 'x', sizeof err.message);
+    lh_status st = lh_delaunay_check(d, n, x, l->count, l->v, NULL, with_msg ? &err : NULL);
     if (st != LH_OK && st != LH_ERR_INVALID_MESH) abort();
     if (with_msg) {
-        if ((st == LH_OK) != (msg[0] == 0)) abort();
-        for (const char *c = msg; *c; c++)
-            if (*c < 0x20 || *c > 0x7e || c - msg >= (long)sizeof msg - 1) abort();
+        if (err.status != st || err.line || err.column || err.index != LH_ERROR_NO_INDEX) abort();
+        if ((st == LH_OK) != (err.message[0] == 0)) abort();
+        for (const char *c = err.message; *c; c++)
+            if (*c < 0x20 || *c > 0x7e || c - err.message >= (long)sizeof err.message - 1) abort();
     }
     return st == LH_OK;
 }

@@ -52,7 +52,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     if (st != LH_OK || dim < 1) abort();
-    if (lh_tri_check(t, NULL, 0) != LH_OK) abort();
+    if (lh_tri_check(t, NULL) != LH_OK) abort();
     o.generic_engine = 1;
     if (lh_delaunay(d, n, x, &o, &g) != LH_OK || !same(t, g)) abort();
     o.generic_engine = (flags >> 2) & 1;

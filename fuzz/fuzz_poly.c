@@ -125,8 +125,8 @@ static void round_trip(const lh_pslg *g, const lh_allocator *a)
     write_poly(f, g);
     rewind(f);
     lh_pslg back;
-    char msg[512];
-    if (lh_poly_read(f, "back", a, &back, msg, sizeof msg) != LH_OK) abort();
+    lh_error err;
+    if (lh_poly_read(f, "back", a, &back, &err) != LH_OK) abort();
     fclose(f);
     if (back.n != g->n || back.attr_count != (g->n ? g->attr_count : 0) ||
         back.segment_count != g->segment_count || back.hole_count != g->hole_count ||
@@ -158,8 +158,8 @@ static void take_points(lh_pslg *g, const lh_allocator *a)
     for (long long i = 0; i < m; i++) fprintf(f, "%lld %lld 0.5 %lld\n", i + base, i, -i);
     rewind(f);
     lh_points p;
-    char msg[512];
-    if (lh_points_read(f, "p.node", LH_FORMAT_NODE, a, &p, msg, sizeof msg) != LH_OK) abort();
+    lh_error err;
+    if (lh_points_read(f, "p.node", LH_FORMAT_NODE, a, &p, &err) != LH_OK) abort();
     fclose(f);
     lh_index *before = malloc(2 * g->segment_count * sizeof *before + 1);
     if (!before) abort();
@@ -182,17 +182,17 @@ static void run(const uint8_t *data, size_t size, int rings)
     rewind(f);
     long live = 0;
     lh_allocator a = {lh_fuzz_count_alloc, lh_fuzz_count_free, &live};
-    char msg[512];
+    lh_error err;
     lh_pslg g;
-    lh_status st = rings ? lh_rings_read(f, name, &a, &g, msg, sizeof msg)
-                         : lh_poly_read(f, name, &a, &g, msg, sizeof msg);
+    lh_status st = rings ? lh_rings_read(f, name, &a, &g, &err)
+                         : lh_poly_read(f, name, &a, &g, &err);
     fclose(f);
     if (st == LH_OK) {
-        check_ok(&g, msg, rings);
+        check_ok(&g, err.message, rings);
         round_trip(&g, &a);
         if (!rings && g.n == 0) take_points(&g, &a);
     } else {
-        check_failure(st, &g, msg, name);
+        check_failure(st, &g, err.message, name);
     }
     lh_pslg_free(&g);
     if (live != 0) abort();

@@ -50,12 +50,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     long live = 0;
     lh_allocator a = {lh_fuzz_count_alloc, lh_fuzz_count_free, &live};
     const char *name = names[(data[0] >> 2) & 3];
-    char msg[512];
+    lh_error err;
     lh_points p;
-    lh_status st = lh_points_read(f, name, (lh_format)(data[0] & 3), &a, &p, msg, sizeof msg);
+    lh_status st = lh_points_read(f, name, (lh_format)(data[0] & 3), &a, &p, &err);
     fclose(f);
-    if (st == LH_OK) check_ok(&p, msg);
-    else check_failure(st, &p, msg, name);
+    if (st == LH_OK) check_ok(&p, err.message);
+    else check_failure(st, &p, err.message, name);
     lh_points_free(&p);
     if (live != 0) abort();
     return 0;

@@ -122,7 +122,19 @@ lh_status run(const input *in, counter *c, lh_trimesh **m, char *msg, size_t siz
     lh_allocator al = {count_alloc, count_free, c};
     lh_trimesh_options o = in->o;
     o.alloc = &al;
-    return lh_pslg_triangulate(&in->g, &o, m, msg, size);
+    lh_error err;
+    const lh_status st = lh_pslg_triangulate(&in->g, &o, m, &err);
+    /* the lh_error agrees with the return; a line it names starts the message */
+    char head[32];
+    const int k = snprintf(head, sizeof head, "%zu: ", err.line);
+    if (err.status != st || (err.line && strncmp(err.message, head, (size_t)k) != 0)) abort();
+    if (size) { /* err.message cut to size */
+        size_t len = strlen(err.message);
+        if (len >= size) len = size - 1;
+        memcpy(msg, err.message, len);
+        msg[len] = 0;
+    }
+    return st;
 }
 
 /* A run failing allocation number 1 + fail_pick % calls (calls: the first run's) must

@@ -44,7 +44,9 @@ int cross(const grid *v, size_t n, grid a, grid b, grid c, grid d);
 long long hull_area2(const grid *v, size_t n);
 void decode(const uint8_t *data, size_t size, input *in);
 
-/* fuzz_trimesh.c: a run with the counting allocator, equal meshes, a failing run. */
+/* fuzz_trimesh.c: a run with the counting allocator (msg, size bytes, receives the
+ * lh_error's message; aborts when the lh_error disagrees with the status), equal
+ * meshes, a failing run. */
 lh_status run(const input *in, counter *c, lh_trimesh **m, char *msg, size_t size);
 int same(const lh_trimesh *a, const lh_trimesh *b);
 void check_failure(const input *in, const lh_trimesh *m, long calls);

@@ -15,10 +15,10 @@ void check_links(const lh_trimesh *m)
     const size_t np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m), ns = lh_trimesh_segment_count(m);
     const double *xy = lh_trimesh_points(m);
     const lh_index *tri = lh_trimesh_triangles(m), *nb = lh_trimesh_neighbors(m), *seg = lh_trimesh_segments(m);
-    char msg[256];
-    if (!nt || lh_cdt_check(np, xy, nt, tri, ns, seg, 0, NULL, msg, sizeof msg) != LH_OK) {
+    lh_error err;
+    if (!nt || lh_cdt_check(np, xy, nt, tri, ns, seg, 0, NULL, &err) != LH_OK) {
 #ifdef LH_FUZZ_TRIMESH_VERBOSE
-        fprintf(stderr, "lh_cdt_check: %s\n", msg);
+        fprintf(stderr, "lh_cdt_check: %s\n", err.message);
 #endif
         abort();
     }
@@ -115,7 +115,7 @@ void check_mesh(const input *in, const lh_trimesh *m)
                  ns = lh_trimesh_segment_count(m);
     const double *xy = lh_trimesh_points(m);
     const lh_index *tri = lh_trimesh_triangles(m), *seg = lh_trimesh_segments(m), *par = lh_trimesh_segment_parents(m);
-    char msg[256];
+    lh_error err;
     if (np < n || memcmp(xy, g->xy, 2 * n * sizeof(double))) abort();
     check_links(m);
     /* a merged duplicate (equal to an earlier vertex) is in no triangle */
@@ -154,7 +154,7 @@ void check_mesh(const input *in, const lh_trimesh *m)
        split (README finding 10: unit features at 2^40, the resolution floor) */
     if (o->conforming && !st.steiner_limit_reached && !st.segments_unsplit && o->boundary_steiner == 1 &&
         !st.crossings_split && o->min_angle == 0 && o->max_area <= 0 && !o->region_areas && !st.smoothing_moves &&
-        lh_cdt_check(np, xy, nt, tri, 0, NULL, 1, NULL, msg, sizeof msg) != LH_OK)
+        lh_cdt_check(np, xy, nt, tri, 0, NULL, 1, NULL, &err) != LH_OK)
         abort();
     if ((o->region_attributes != 0) != (lh_trimesh_triangle_attrs(m) != NULL)) abort();
     const double *pa = lh_trimesh_point_attrs(m);

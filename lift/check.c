@@ -13,6 +13,7 @@
  * exactly (check_volume).
  */
 #include "dt.h"
+#include "lh_error.h"
 #include "lh_exact.h"
 #include "lh_sort.h"
 
@@ -34,8 +35,7 @@ typedef struct chk {
     int furthest;    /* furthest-site: opposite vertices inside, not outside */
     lh_status bad;   /* a failed condition: LH_ERR_INVALID_MESH for the caller's
                         simplices, LH_ERR_INTERNAL for a handle the library built */
-    char *msg;
-    size_t msg_size;
+    lh_error *err;   /* the caller's, may be NULL */
 } chk;
 
 static lh_status fail(chk *c, const char *fmt, ...)
@@ -45,10 +45,10 @@ static lh_status fail(chk *c, const char *fmt, ...)
     ;
 static lh_status fail(chk *c, const char *fmt, ...)
 {
-    if (c->msg && c->msg_size) {
+    if (c->err) {
         va_list ap;
         va_start(ap, fmt);
-        vsnprintf(c->msg, c->msg_size, fmt, ap);
+        vsnprintf(c->err->message, sizeof c->err->message, fmt, ap);
         va_end(ap);
     }
     return c->bad;
@@ -375,10 +375,10 @@ static lh_status run_check(chk *c, const lh_index *simplices)
 {
     size_t boundary = 0;
     if (!sizes_fit(c->n, c->count, c->nv)) {
-        if (c->msg && c->msg_size)
-            snprintf(c->msg, c->msg_size, "%zu sites and %zu simplices: more than an lh_index or a size_t can count",
-                     c->n, c->count);
-        return LH_ERR_TOO_LARGE;
+        return lh__error_say(
+            c->err, LH_ERR_TOO_LARGE,
+            "%zu sites and %zu simplices: more than an lh_index or a size_t can count", c->n,
+            c->count);
     }
     c->simp = lh__alloc(&c->alloc, (c->count * c->nv + 1) * sizeof *c->simp);
     if (!c->simp) return LH_ERR_NOMEM;
@@ -392,9 +392,8 @@ static lh_status run_check(chk *c, const lh_index *simplices)
     return st;
 }
 
-lh_status lh_delaunay_check(int d, size_t n, const double *xyz, size_t count,
-                            const lh_index *simplices, const lh_options *opt, char *msg,
-                            size_t msg_size)
+static lh_status delaunay_check(int d, size_t n, const double *xyz, size_t count,
+                                const lh_index *simplices, const lh_options *opt, lh_error *err)
 {
     if (d < LH_DELAUNAY_MIN_DIM || d > LH_DELAUNAY_MAX_DIM) return LH_ERR_DIMENSION;
     if ((!xyz && n) || (!simplices && count)) return LH_ERR_INVALID_ARGUMENT;
@@ -409,15 +408,20 @@ lh_status lh_delaunay_check(int d, size_t n, const double *xyz, size_t count,
     c.count = count;
     c.xyz = xyz;
     c.bad = LH_ERR_INVALID_MESH;
-    c.msg = msg;
-    c.msg_size = msg_size;
-    if (msg && msg_size) msg[0] = 0;
+    c.err = err;
     lh_status st = run_check(&c, simplices);
     chk_release(&c);
     return st;
 }
 
-lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
+lh_status lh_delaunay_check(int d, size_t n, const double *xyz, size_t count,
+                            const lh_index *simplices, const lh_options *opt, lh_error *err)
+{
+    lh__error_clear(err);
+    return lh__error_done(err, delaunay_check(d, n, xyz, count, simplices, opt, err));
+}
+
+static lh_status tri_check(const lh_tri *t, lh_error *err)
 {
     if (!t) return LH_ERR_INVALID_ARGUMENT;
     chk c;
@@ -430,10 +434,8 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
     c.count = t->count;
     c.xyz = t->xyz;
     c.bad = LH_ERR_INTERNAL;
-    c.msg = msg;
-    c.msg_size = msg_size;
+    c.err = err;
     c.furthest = t->furthest;
-    if (msg && msg_size) msg[0] = 0;
     lh_status st = run_check(&c, t->simp);
     for (size_t i = 0; st == LH_OK && c.f.k < c.d && i < t->n; i++) { /* all in one flat */
         const double *p[LH_DELAUNAY_MAX_DIM + 1];
@@ -465,4 +467,10 @@ lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size)
     }
     chk_release(&c);
     return st;
+}
+
+lh_status lh_tri_check(const lh_tri *t, lh_error *err)
+{
+    lh__error_clear(err);
+    return lh__error_done(err, tri_check(t, err));
 }

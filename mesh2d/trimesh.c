@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "lh_error.h"
 #include "m2.h"
 #include "m2_geom.h"
 #include "refine.h"
@@ -34,12 +35,18 @@ void lh_trimesh_options_default(lh_trimesh_options *o)
     o->max_steiner = SIZE_MAX;
 }
 
-/* msg = "LINE: text" when the item has a line, else "text". */
-static void say(char *msg, size_t size, const size_t *lines, size_t item, const char *fmt, ...)
+/* err->message = "LINE: text" and err->line = LINE when the item has a line, else
+ * "text". */
+static void say(lh_error *err, const size_t *lines, size_t item, const char *fmt, ...)
 {
-    if (!msg || !size) return;
+    if (!err) return;
+    char *msg = err->message;
+    const size_t size = sizeof err->message;
     int k = 0;
-    if (lines) k = snprintf(msg, size, "%zu: ", lines[item]);
+    if (lines) {
+        err->line = lines[item];
+        k = snprintf(msg, size, "%zu: ", lines[item]);
+    }
     if (k < 0 || (size_t)k >= size) k = 0;
     va_list ap;
     va_start(ap, fmt);
@@ -50,45 +57,49 @@ static void say(char *msg, size_t size, const size_t *lines, size_t item, const 
 /* Counts the mesh's arithmetic can hold: vertices and old triangles are numbered by
  * lh_index (m2_store.c keeps triangles below LH_INDEX_MAX / 4), and n attr_count
  * doubles must be a size. Larger counts cannot describe arrays that exist. */
-static lh_status check_counts(const lh_pslg *g, char *msg, size_t size)
+static lh_status check_counts(const lh_pslg *g, lh_error *err)
 {
     const size_t most = (size_t)LH_INDEX_MAX / 4;
     if (g->n >= most || g->cover_count >= most || g->segment_count >= most ||
         (g->attr_count > 0 && g->n > SIZE_MAX / 2 / sizeof(double) / (size_t)g->attr_count)) {
-        say(msg, size, NULL, 0, "%zu vertices (%d attributes each), %zu segments, %zu triangles to refine: "
-            "more than an lh_index can number", g->n, g->attr_count, g->segment_count, g->cover_count);
+        say(err, NULL, 0,
+            "%zu vertices (%d attributes each), %zu segments, %zu triangles to refine: "
+            "more than an lh_index can number",
+            g->n, g->attr_count, g->segment_count, g->cover_count);
         return LH_ERR_TOO_LARGE;
     }
     return LH_OK;
 }
 
-static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char *msg, size_t size)
+static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, lh_error *err)
 {
     const long long base = g->first_index, ibase = base + g->item_first_shift;
-    const lh_status counted = check_counts(g, msg, size);
+    const lh_status counted = check_counts(g, err);
     if (counted != LH_OK) return counted;
     if ((g->n && !g->xy) || (g->segment_count && !g->segments) || (g->hole_count && !g->holes) ||
         (g->region_count && !g->regions) || (g->cover_count && !g->cover) || (g->attr_count < 0) ||
         (g->attr_count && g->n && !g->attr)) {
-        say(msg, size, NULL, 0, "an array of the PSLG is missing");
+        say(err, NULL, 0, "an array of the PSLG is missing");
         return LH_ERR_INVALID_ARGUMENT;
     }
     if (o->smooth < 0) {
-        say(msg, size, NULL, 0, "smoothing passes %d below 0", o->smooth);
+        say(err, NULL, 0, "smoothing passes %d below 0", o->smooth);
         return LH_ERR_INVALID_ARGUMENT;
     }
     /* %.17g: every double's digits, so a value just past a bound never prints as the bound */
     if (!(o->min_angle >= 0 && o->min_angle <= LH_TRIMESH_MAX_ANGLE)) {
-        say(msg, size, NULL, 0, "min_angle %.17g outside 0..%g degrees", o->min_angle, LH_TRIMESH_MAX_ANGLE);
+        say(err, NULL, 0, "min_angle %.17g outside 0..%g degrees", o->min_angle,
+            LH_TRIMESH_MAX_ANGLE);
         return LH_ERR_INVALID_ARGUMENT;
     }
     if (isnan(o->max_area)) {
-        say(msg, size, NULL, 0, "max_area is NaN (0 or below: no area bound)");
+        say(err, NULL, 0, "max_area is NaN (0 or below: no area bound)");
         return LH_ERR_INVALID_ARGUMENT;
     }
-    size_t bad;
+    lh_error bad;
     if (lh_coords_validate(2, g->n, g->xy, &bad) == LH_ERR_NONFINITE) {
-        say(msg, size, g->vertex_line, bad / 2, "vertex %lld: coordinate is NaN or infinite", base + (long long)(bad / 2));
+        say(err, g->vertex_line, bad.index / 2, "vertex %lld: coordinate is NaN or infinite",
+            base + (long long)(bad.index / 2));
         return LH_ERR_NONFINITE;
     }
     for (size_t s = 0; s < g->segment_count; s++)
@@ -96,20 +107,25 @@ static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char
             const lh_index v = g->segments[2 * s + j];
             if (v < 0 || (size_t)v >= g->n) {
                 if (g->n)
-                    say(msg, size, g->segment_line, s, "segment %lld: endpoint %lld is not a vertex (%lld..%lld)",
-                        ibase + (long long)s, base + (long long)v, base, base + (long long)g->n - 1);
+                    say(err, g->segment_line, s,
+                        "segment %lld: endpoint %lld is not a vertex (%lld..%lld)",
+                        ibase + (long long)s, base + (long long)v, base,
+                        base + (long long)g->n - 1);
                 else
-                    say(msg, size, g->segment_line, s, "segment %lld: endpoint %lld is not a vertex (there are none)",
+                    say(err, g->segment_line, s,
+                        "segment %lld: endpoint %lld is not a vertex (there are none)",
                         ibase + (long long)s, base + (long long)v);
                 return LH_ERR_INVALID_ARGUMENT;
             }
         }
     if (lh_coords_validate(2, g->hole_count, g->holes, &bad) == LH_ERR_NONFINITE) {
-        say(msg, size, g->hole_line, bad / 2, "hole %lld: coordinate is NaN or infinite", ibase + (long long)(bad / 2));
+        say(err, g->hole_line, bad.index / 2, "hole %lld: coordinate is NaN or infinite",
+            ibase + (long long)(bad.index / 2));
         return LH_ERR_NONFINITE;
     }
     if (lh_coords_validate(4, g->region_count, g->regions, &bad) == LH_ERR_NONFINITE) {
-        say(msg, size, g->region_line, bad / 4, "region %lld: NaN or infinity", ibase + (long long)(bad / 4));
+        say(err, g->region_line, bad.index / 4, "region %lld: NaN or infinity",
+            ibase + (long long)(bad.index / 4));
         return LH_ERR_NONFINITE;
     }
     return LH_OK;
@@ -117,7 +133,7 @@ static lh_status check_input(const lh_pslg *g, const lh_trimesh_options *o, char
 
 /* Steps 1-2: Delaunay of the vertices, then the segments. */
 static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri *dt,
-                           lh_trimesh_stats *st_out, char *msg, size_t size)
+                           lh_trimesh_stats *st_out, lh_error *err)
 {
     const lh_index *dup = lh_tri_duplicate_of(dt);
     lh_status st = lh__m2_from_delaunay(m, dt);
@@ -126,7 +142,7 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri
     lh__m2_problem pb0 = {0, {-1, -1}, -1};
     if (m->cover && (st = lh__cover_segments(m, c, m->cover, &pb0)) != LH_OK) {
         if (st != LH_ERR_DEGENERATE) return st;
-        say(msg, size, NULL, 0, "the mesh to refine has crossing edges");
+        say(err, NULL, 0, "the mesh to refine has crossing edges");
         return LH_ERR_INVALID_MESH;
     }
     for (size_t s = 0; s < g->segment_count; s++) {
@@ -141,10 +157,11 @@ static lh_status constrain(lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g, lh_tri
         if (st == LH_ERR_DEGENERATE && pb.kind == LH__M2_CROSSING) {
             const size_t o = (size_t)pb.seg[1];
             if (g->segment_line)
-                say(msg, size, g->segment_line, s, "segment %lld crosses segment %lld (line %zu)",
+                say(err, g->segment_line, s, "segment %lld crosses segment %lld (line %zu)",
                     base + (long long)s, base + (long long)o, g->segment_line[o]);
             else
-                say(msg, size, NULL, 0, "segment %lld crosses segment %lld", base + (long long)s, base + (long long)o);
+                say(err, NULL, 0, "segment %lld crosses segment %lld", base + (long long)s,
+                    base + (long long)o);
             return LH_ERR_CROSSING_SEGMENTS;
         }
         if (st != LH_OK) return st;
@@ -292,17 +309,18 @@ static lh_status open_ring_vertex(const lh_pslg *g, const lh_index *dup, const l
 /* A hole seed on a segment is refused: which side its flood carves would depend on
  * point location (Triangle carves from the triangle its search finds), so the
  * result would not be a function of the input (docs/meshing.md). */
-static lh_status holes_off_segments(lh__m2 *m, const lh_pslg *g, char *msg, size_t size)
+static lh_status holes_off_segments(lh__m2 *m, const lh_pslg *g, lh_error *err)
 {
     const long long base = (long long)g->first_index + g->item_first_shift;
     for (size_t h = 0; h < g->hole_count && !g->even_odd; h++) {
         const lh_index s = lh__m2_subseg_at(m, g->holes + 2 * h);
         if (s < 0) continue;
         if (m->sp[s] >= 0)
-            say(msg, size, g->hole_line, h, "hole %lld lies on segment %lld", base + (long long)h,
+            say(err, g->hole_line, h, "hole %lld lies on segment %lld", base + (long long)h,
                 base + (long long)m->sp[s]);
         else
-            say(msg, size, g->hole_line, h, "hole %lld lies on the boundary of the mesh to refine", base + (long long)h);
+            say(err, g->hole_line, h, "hole %lld lies on the boundary of the mesh to refine",
+                base + (long long)h);
         return LH_ERR_DEGENERATE;
     }
     return LH_OK;
@@ -310,27 +328,30 @@ static lh_status holes_off_segments(lh__m2 *m, const lh_pslg *g, char *msg, size
 
 /* Steps 3-5 on a constrained triangulation. */
 static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_pslg *g,
-                        const lh_trimesh_options *o, const lh_index *dup, char *msg, size_t size)
+                        const lh_trimesh_options *o, const lh_index *dup, lh_error *err)
 {
     const int keep_hull = o->convex_hull || (g->segment_count == 0 && !g->even_odd);
     lh_index open = -1;
     lh_status st = g->even_odd ? open_ring_vertex(g, dup, &r->al, &open) : LH_OK;
     if (st != LH_OK) return st;
     if (open >= 0) {
-        say(msg, size, g->vertex_line, (size_t)open, "vertex %lld ends an odd number of segments: the even-odd "
-            "rule needs closed rings", (long long)g->first_index + (long long)open);
+        say(err, g->vertex_line, (size_t)open,
+            "vertex %lld ends an odd number of segments: the even-odd "
+            "rule needs closed rings",
+            (long long)g->first_index + (long long)open);
         return LH_ERR_DEGENERATE;
     }
-    if ((st = holes_off_segments(m, g, msg, size)) != LH_OK) return st;
+    if ((st = holes_off_segments(m, g, err)) != LH_OK) return st;
     size_t split = 0, unsplit = 0; /* -s: before the carving, as Triangle splits while inserting */
     if (o->split_segments && !m->cover &&
         (st = lh__m2_split_segments(m, c, o->max_steiner, &split, &unsplit)) != LH_OK)
         return st;
     st = lh__m2_domain(m, c, g, keep_hull, &r->stats.holes_ignored, &r->stats.regions_ignored);
     if (st == LH_ERR_DEGENERATE) {
-        say(msg, size, NULL, 0, g->even_odd ? "no triangle is inside the polygon rings"
-                                            : "the domain is empty: the flood from the outside or a "
-                                              "hole reached every triangle (is the boundary closed?)");
+        say(err, NULL, 0,
+            g->even_odd ? "no triangle is inside the polygon rings"
+                        : "the domain is empty: the flood from the outside or a "
+                          "hole reached every triangle (is the boundary closed?)");
         return st;
     }
     if (st != LH_OK) return st;
@@ -376,10 +397,9 @@ static lh_status finish(lh_trimesh *r, lh__m2 *m, lh__m2_cavity *c, const lh_psl
     return LH_OK;
 }
 
-lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
-                              lh_trimesh **out, char *msg, size_t msg_size)
+static lh_status triangulate(const lh_pslg *g, const lh_trimesh_options *opt, lh_trimesh **out,
+                             lh_error *err)
 {
-    if (msg && msg_size) msg[0] = 0;
     if (!out) return LH_ERR_INVALID_ARGUMENT;
     *out = NULL;
     lh_trimesh_options o;
@@ -387,10 +407,10 @@ lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
     lh_allocator al;
     if (!g) return LH_ERR_INVALID_ARGUMENT;
     if (!lh__allocator_init(&al, o.alloc)) {
-        say(msg, msg_size, NULL, 0, "the allocator lacks its alloc or free hook");
+        say(err, NULL, 0, "the allocator lacks its alloc or free hook");
         return LH_ERR_INVALID_ARGUMENT;
     }
-    lh_status st = check_input(g, &o, msg, msg_size);
+    lh_status st = check_input(g, &o, err);
     if (st != LH_OK) return st;
     lh_options dopt;
     lh_options_default(&dopt);
@@ -398,7 +418,8 @@ lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
     lh_tri *dt = NULL;
     if ((st = lh_delaunay(2, g->n, g->xy, &dopt, &dt)) != LH_OK) {
         if (st == LH_ERR_DEGENERATE)
-            say(msg, msg_size, NULL, 0, "the vertices are all collinear or fewer than 3 distinct: no triangle");
+            say(err, NULL, 0,
+                "the vertices are all collinear or fewer than 3 distinct: no triangle");
         return st;
     }
     lh_trimesh *r = lh__alloc(&al, sizeof *r);
@@ -423,19 +444,22 @@ lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
     if (st == LH_OK && g->cover_count) {
         st = lh__cover_build(&cover, &al, g, lh_tri_duplicate_of(dt));
         if (st == LH_ERR_INVALID_ARGUMENT || st == LH_ERR_DEGENERATE)
-            say(msg, msg_size, NULL, 0, st == LH_ERR_DEGENERATE ? "the mesh to refine has no triangle of positive area"
-                : "the mesh to refine names a point that does not exist, or has an edge of three triangles");
+            say(err, NULL, 0,
+                st == LH_ERR_DEGENERATE ? "the mesh to refine has no triangle of positive area"
+                                        : "the mesh to refine names a point that does not exist, "
+                                          "or has an edge of three triangles");
         if (st == LH_ERR_INVALID_ARGUMENT || st == LH_ERR_DEGENERATE) st = LH_ERR_INVALID_MESH;
         m.cover = &cover;
     }
-    if (st == LH_OK) st = constrain(&m, &c, g, dt, &r->stats, msg, msg_size);
-    if (st == LH_OK) st = finish(r, &m, &c, g, &o, lh_tri_duplicate_of(dt), msg, msg_size);
+    if (st == LH_OK) st = constrain(&m, &c, g, dt, &r->stats, err);
+    if (st == LH_OK) st = finish(r, &m, &c, g, &o, lh_tri_duplicate_of(dt), err);
     lh__m2_cavity_free(&m, &c);
     lh__m2_free(&m);
     lh__cover_free(&cover);
     lh_tri_free(dt);
     if (st != LH_OK) {
-        if (st == LH_ERR_INTERNAL && msg && !msg[0]) say(msg, msg_size, NULL, 0, "internal consistency check failed");
+        if (st == LH_ERR_INTERNAL && err && !err->message[0])
+            say(err, NULL, 0, "internal consistency check failed");
         lh_trimesh_free(r);
         return st;
     }
@@ -476,4 +500,11 @@ void lh_trimesh_stats_get(const lh_trimesh *m, lh_trimesh_stats *out)
     }
     *out = m->stats;
     measure(m, out);
+}
+
+lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt, lh_trimesh **out,
+                              lh_error *err)
+{
+    lh__error_clear(err);
+    return lh__error_done(err, triangulate(g, opt, out, err));
 }

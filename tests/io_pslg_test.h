@@ -11,13 +11,15 @@
 /* Input text with its length, so that NUL bytes can be part of it. */
 #define TEXT(s) s, sizeof(s) - 1
 
-typedef lh_status (*reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, char *, size_t);
+typedef lh_status (*reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, lh_error *);
 
-/* text[0..len) read by rd as the file `name`. */
+/* text[0..len) read by rd as the file `name`; msg (size bytes, may be NULL) receives
+ * the reader's lh_error message. LH_ERR_INTERNAL if the lh_error's status is not the
+ * returned one. */
 lh_status read_text(reader rd, const char *name, const char *text, size_t len,
                     const lh_allocator *a, lh_pslg *g, char *msg, size_t size);
 #ifdef LH_TEST_DATA_DIR
-/* tests/data/path read by rd; LH_ERR_IO when it cannot be opened. */
+/* tests/data/path read by rd, as read_text; LH_ERR_IO when it cannot be opened. */
 lh_status read_file(reader rd, const char *path, const lh_allocator *a, lh_pslg *g,
                     char *msg, size_t size);
 #endif

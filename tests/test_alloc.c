@@ -48,8 +48,8 @@ static lh_status check_run(lh_test_state *lh_t_, const lh_allocator *a, const vo
     lh_options o = grid(x, a);
     lh_tri *t;
     LH_EXPECT_EQ_INT(lh_delaunay(3, N, x, NULL, &t), LH_OK);
-    char msg[200];
-    lh_status st = lh_delaunay_check(3, N, x, lh_tri_count(t), lh_tri_simplices(t), &o, msg, sizeof msg);
+    lh_error err;
+    lh_status st = lh_delaunay_check(3, N, x, lh_tri_count(t), lh_tri_simplices(t), &o, &err);
     lh_tri_free(t);
     return st;
 }
@@ -60,7 +60,7 @@ typedef lh_status (*query_fn)(lh_test_state *lh_t_, lh_tri *t);
 static lh_status q_check(lh_test_state *lh_t_, lh_tri *t)
 {
     (void)lh_t_;
-    return lh_tri_check(t, NULL, 0);
+    return lh_tri_check(t, NULL);
 }
 
 static lh_status q_complex(lh_test_state *lh_t_, lh_tri *t)

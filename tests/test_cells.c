@@ -6,11 +6,11 @@
 #include <string.h>
 
 static lh_status read_text(const char *name, const char *text, size_t n_points, const lh_allocator *a,
-                           lh_cells *c, char *msg, size_t size)
+                           lh_cells *c, lh_error *err)
 {
     FILE *f = lh_test_file(text, strlen(text));
     if (!f) return LH_ERR_IO;
-    lh_status st = lh_cells_read(f, name, n_points, a, c, msg, size);
+    lh_status st = lh_cells_read(f, name, n_points, a, c, err);
     fclose(f);
     return st;
 }
@@ -18,16 +18,16 @@ static lh_status read_text(const char *name, const char *text, size_t n_points, 
 LH_TEST(good_lists)
 {
     lh_cells c;
-    char msg[256];
-    LH_ASSERT_EQ_INT(read_text("i", "2\n0 1 2 \n2 1 3 \n", 4, NULL, &c, msg, sizeof msg), LH_OK);
+    lh_error err;
+    LH_ASSERT_EQ_INT(read_text("i", "2\n0 1 2 \n2 1 3 \n", 4, NULL, &c, &err), LH_OK);
     LH_EXPECT_EQ_INT(c.nv, 3);
     LH_EXPECT_EQ_U64(c.count, 2);
     LH_EXPECT_EQ_INT(c.v[3], 2);
     LH_EXPECT_EQ_INT(c.v[5], 3);
-    LH_EXPECT_STREQ(msg, "");
+    LH_EXPECT_STREQ(err.message, "");
     lh_cells_free(&c);
     /* .ele, 1-based with an attribute, CRLF and a comment: rebased to 0 */
-    LH_ASSERT_EQ_INT(read_text("m.ele", "2 4 1\r\n# tets\r\n1 1 2 3 4 0.5\r\n2 2 3 4 5 7\r\n", 5, NULL, &c, msg, sizeof msg), LH_OK);
+    LH_ASSERT_EQ_INT(read_text("m.ele", "2 4 1\r\n# tets\r\n1 1 2 3 4 0.5\r\n2 2 3 4 5 7\r\n", 5, NULL, &c, &err), LH_OK);
     LH_EXPECT_EQ_INT(c.nv, 4);
     LH_EXPECT_EQ_INT(c.first_index, 1);
     LH_EXPECT_EQ_INT(c.v[0], 0);
@@ -64,18 +64,18 @@ LH_TEST(bad_lists_say_where_and_what)
     };
     for (size_t i = 0; i < LH_COUNT(cases); i++) {
         lh_cells c;
-        char msg[256];
+        lh_error err;
         size_t len = i == LH_COUNT(cases) - 1 ? 10 : strlen(cases[i].text); /* the last: a NUL */
         FILE *f = lh_test_file(cases[i].text, len);
         LH_ASSERT_TRUE(f != NULL);
-        lh_status st = lh_cells_read(f, "c", cases[i].n, NULL, &c, msg, sizeof msg);
+        lh_status st = lh_cells_read(f, "c", cases[i].n, NULL, &c, &err);
         fclose(f);
         LH_EXPECT_EQ_INT(st, cases[i].st);
-        LH_EXPECT_STREQ(msg, cases[i].msg);
+        LH_EXPECT_STREQ(err.message, cases[i].msg);
         LH_EXPECT_TRUE(c.v == NULL && c.count == 0);
     }
     lh_cells c;
-    LH_EXPECT_EQ_INT(lh_cells_read(NULL, "x", 0, NULL, &c, NULL, 0), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_cells_read(NULL, "x", 0, NULL, &c, NULL), LH_ERR_INVALID_ARGUMENT);
 }
 
 static lh_status run(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
@@ -84,10 +84,10 @@ static lh_status run(lh_test_state *lh_t_, const lh_allocator *a, const void *us
     char text[20000] = "600\n";
     for (int i = 0; i < 600; i++) sprintf(text + strlen(text), "%d %d %d\n", i, i + 1, i + 2);
     lh_cells c;
-    char msg[256];
-    lh_status st = read_text("big", text, 700, a, &c, msg, sizeof msg);
+    lh_error err;
+    lh_status st = read_text("big", text, 700, a, &c, &err);
     if (st == LH_OK) LH_EXPECT_EQ_U64(c.count, 600);
-    else LH_EXPECT_TRUE(strstr(msg, "out of memory") != NULL);
+    else LH_EXPECT_TRUE(strstr(err.message, "out of memory") != NULL);
     lh_cells_free(&c);
     return st;
 }

@@ -9,22 +9,27 @@
 LH_TEST(every_finite_double_is_accepted)
 {
     const double x[] = {0.0, -0.0, DBL_MIN, -DBL_MIN, 4.9e-324, DBL_MAX, -DBL_MAX, 1e-300, 1e300, 1.0};
-    size_t bad = 77;
+    lh_error bad = {LH_ERR_NONFINITE, 1, 2, 77, "x"};
     LH_EXPECT_EQ_INT(lh_coords_validate(2, 5, x, &bad), LH_OK);
-    LH_EXPECT_EQ_U64(bad, 77); /* untouched on success */
+    LH_EXPECT_EQ_INT(bad.status, LH_OK); /* reset on success */
+    LH_EXPECT_EQ_U64(bad.index, LH_ERROR_NO_INDEX);
+    LH_EXPECT_STREQ(bad.message, "");
 }
 
 LH_TEST(nan_and_inf_are_rejected_with_their_index)
 {
     double x[6] = {1, 2, 3, 4, 5, 6};
-    size_t bad = 0;
+    lh_error bad;
     x[4] = NAN;
     LH_EXPECT_EQ_INT(lh_coords_validate(3, 2, x, &bad), LH_ERR_NONFINITE);
-    LH_EXPECT_EQ_U64(bad, 4);
+    LH_EXPECT_EQ_INT(bad.status, LH_ERR_NONFINITE);
+    LH_EXPECT_EQ_U64(bad.index, 4);
+    LH_EXPECT_STREQ(bad.message, "xyz[4] is NaN or infinite (point 1, coordinate 1, from 0)");
+    LH_EXPECT_EQ_U64(bad.line, 0);
     x[4] = 5;
     x[1] = -INFINITY;
     LH_EXPECT_EQ_INT(lh_coords_validate(3, 2, x, &bad), LH_ERR_NONFINITE);
-    LH_EXPECT_EQ_U64(bad, 1);
+    LH_EXPECT_EQ_U64(bad.index, 1);
     LH_EXPECT_EQ_INT(lh_coords_validate(3, 2, x, NULL), LH_ERR_NONFINITE);
 }
 

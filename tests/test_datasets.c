@@ -60,11 +60,11 @@ static void check_2d(lh_test_state *lh_t_, const char *name, const double *xy, s
     lh_status st = lh_delaunay(2, n, p, NULL, &t);
     LH_EXPECT_EQ_INT(st, LH_OK);
     if (st == LH_OK) {
-        char msg[256] = "";
-        LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
+        lh_error err;
+        LH_EXPECT_EQ_INT(lh_tri_check(t, &err), LH_OK);
         size_t distinct = n - lh_tri_duplicate_count(t), b = lh_tri_hull_count(t);
         LH_EXPECT_EQ_U64(lh_tri_count(t), 2 * distinct - b - 2);
-        if (LH_FAILED()) LH_NOTE("%s scaled by %g: %s", name, scale, msg);
+        if (LH_FAILED()) LH_NOTE("%s scaled by %g: %s", name, scale, err.message);
         lh_tri_free(t);
     } else {
         LH_NOTE("%s scaled by %g: %s", name, scale, lh_status_message(st));

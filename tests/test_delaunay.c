@@ -43,10 +43,10 @@ static void check_tri(lh_test_state *lh_t_, int d, size_t n, const double *x, co
         LH_NOTE("%s, d=%d n=%zu: %s", what, d, n, lh_status_message(st));
         return;
     }
-    char msg[256];
-    st = lh_tri_check(t, msg, sizeof msg);
+    lh_error err;
+    st = lh_tri_check(t, &err);
     LH_EXPECT_EQ_INT(st, LH_OK);
-    if (st != LH_OK) LH_NOTE("%s, d=%d n=%zu: %s", what, d, n, msg);
+    if (st != LH_OK) LH_NOTE("%s, d=%d n=%zu: %s", what, d, n, err.message);
     LH_EXPECT_GT_U64(lh_tri_count(t), 0);
     expect_canonical_order(lh_t_, t);
     lh_tri_free(t);
@@ -79,7 +79,7 @@ LH_TEST(smallest_inputs)
             size_t want_lo = extra ? 2 : 1, want_hi = extra ? (size_t)d + 1 : 1;
             LH_EXPECT_LE_U64(want_lo, lh_tri_count(t));
             LH_EXPECT_LE_U64(lh_tri_count(t), want_hi);
-            LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+            LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
             lh_tri_free(t);
         }
     }
@@ -182,7 +182,7 @@ static void centre_of_a_circle(lh_test_state *lh_t_, int n)
     LH_ASSERT_EQ_INT(lh_delaunay(2, n, x, NULL, &t), LH_OK);
     LH_EXPECT_EQ_U64(lh_tri_count(t), n - 1);
     for (size_t s = 0; s < lh_tri_count(t); s++) LH_EXPECT_EQ_INT(lh_tri_simplices(t)[3 * s], 0);
-    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
     expect_canonical_order(lh_t_, t);
     lh_options o;
     lh_options_default(&o);
@@ -216,7 +216,7 @@ LH_TEST(predicate_counters_report_the_stages)
     }
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(3, 64, x, NULL, &t), LH_OK);
-    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
     lh_pred_counters c;
     lh_tri_pred_counters_get(t, &c);
     LH_EXPECT_GT_U64(c.calls, 0);
@@ -243,7 +243,7 @@ LH_TEST(duplicates_are_merged_and_reported)
     LH_EXPECT_EQ_INT(lh_tri_vertex_simplex(t)[4], -1);
     LH_EXPECT_EQ_U64(lh_tri_count(t), 2); /* the unit square, split in two */
     LH_EXPECT_EQ_U64(lh_tri_hull_count(t), 4);
-    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
     lh_tri_free(t);
 }
 
@@ -267,7 +267,7 @@ static void crowded_cell(lh_test_state *lh_t_, int copies)
     const lh_index *dup = lh_tri_duplicate_of(t);
     for (int i = 0; i < n; i++) LH_EXPECT_EQ_INT(dup[i], i < 7 ? i : 4 + (i - 4) % 3);
     LH_EXPECT_EQ_U64(lh_tri_count(t), 8); /* 7 vertices, 4 on the hull: 2*7 - 4 - 2 */
-    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
     lh_tri_free(t);
 }
 
@@ -315,18 +315,18 @@ LH_TEST(the_check_rejects_what_is_not_delaunay)
     /* A unit square split along the wrong diagonal of a non-cocircular quad. */
     double x[] = {0, 0, 2, 0, 2, 1, 0, 1.2};
     lh_index good[] = {0, 1, 2, 0, 2, 3}, bad[] = {0, 1, 3, 1, 2, 3}, flat[] = {0, 1, 1};
-    char msg[200];
-    lh_status a = lh_delaunay_check(2, 4, x, 2, good, NULL, msg, sizeof msg);
-    lh_status b = lh_delaunay_check(2, 4, x, 2, bad, NULL, msg, sizeof msg);
+    lh_error err;
+    lh_status a = lh_delaunay_check(2, 4, x, 2, good, NULL, &err);
+    lh_status b = lh_delaunay_check(2, 4, x, 2, bad, NULL, &err);
     LH_EXPECT_TRUE((a == LH_OK) != (b == LH_OK)); /* exactly one diagonal is Delaunay */
-    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, x, 1, good, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
-    LH_EXPECT_TRUE(strstr(msg, "site 3") != NULL); /* site 3 unused */
-    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, x, 1, flat, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
-    LH_EXPECT_TRUE(strstr(msg, "repeats") != NULL);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, x, 1, good, NULL, &err), LH_ERR_INVALID_MESH);
+    LH_EXPECT_TRUE(strstr(err.message, "site 3") != NULL); /* site 3 unused */
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, x, 1, flat, NULL, &err), LH_ERR_INVALID_MESH);
+    LH_EXPECT_TRUE(strstr(err.message, "repeats") != NULL);
     double c[] = {0, 0, 1, 0, 2, 0, 1, 1}; /* a flat triangle along y = 0 */
     lh_index cf[] = {0, 1, 3, 1, 2, 3, 0, 2, 1};
-    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, c, 3, cf, NULL, msg, sizeof msg), LH_ERR_INVALID_MESH);
-    LH_EXPECT_TRUE(strstr(msg, "flat") != NULL);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 4, c, 3, cf, NULL, &err), LH_ERR_INVALID_MESH);
+    LH_EXPECT_TRUE(strstr(err.message, "flat") != NULL);
 }
 
 
@@ -350,7 +350,7 @@ static lh_status delaunay_run(lh_test_state *lh_t_, const lh_allocator *a, const
     st = lh_tri_complex(t, &count, &off, &v);
     lh_location loc;
     if (st == LH_OK) st = lh_tri_locate(t, x, -1, &loc);
-    if (st == LH_OK) st = lh_tri_check(t, NULL, 0); /* through the handle's hooks too */
+    if (st == LH_OK) st = lh_tri_check(t, NULL); /* through the handle's hooks too */
     lh_tri_free(t);
     return st;
 }
@@ -408,9 +408,9 @@ LH_TEST(furthest_site_triangulation)
                 free(x);
                 return;
             }
-            char msg[256] = "";
-            LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
-            if (LH_FAILED()) LH_NOTE("d=%d %s: %s", d, lh_fam_name[fam], msg);
+            lh_error err;
+            LH_EXPECT_EQ_INT(lh_tri_check(t, &err), LH_OK);
+            if (LH_FAILED()) LH_NOTE("d=%d %s: %s", d, lh_fam_name[fam], err.message);
             if (fam == F_CUBE) { /* general position: the vertices are the hull's */
                 lh_hull *h;
                 LH_ASSERT_EQ_INT(lh_convex_hull(d, n, x, NULL, &h), LH_OK);

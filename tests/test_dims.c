@@ -28,7 +28,7 @@ LH_TEST(fixed_dimension_engines_match_the_generic_one)
                 LH_EXPECT_EQ_INT(s1, s2);
                 if (s1 == LH_OK && s2 == LH_OK) {
                     LH_EXPECT_TRUE(lh_test_same_tri(fixed, generic));
-                    LH_EXPECT_EQ_INT(lh_tri_check(fixed, NULL, 0), LH_OK);
+                    LH_EXPECT_EQ_INT(lh_tri_check(fixed, NULL), LH_OK);
                 }
                 if (LH_FAILED()) LH_NOTE("d=%d %s furthest=%d", d, lh_fam_name[fam], furthest);
                 lh_tri_free(fixed);

@@ -47,11 +47,11 @@ static void peak_free(void *user, void *ptr)
 }
 
 
-static lh_status read_text(const char *text, size_t len, lh_points *p, char *msg, size_t size)
+static lh_status read_text(const char *text, size_t len, lh_points *p, lh_error *err)
 {
     FILE *f = lh_test_file(text, len);
     if (!f) return LH_ERR_IO;
-    lh_status st = lh_points_read(f, "h", LH_FORMAT_AUTO, NULL, p, msg, size);
+    lh_status st = lh_points_read(f, "h", LH_FORMAT_AUTO, NULL, p, err);
     fclose(f);
     return st;
 }
@@ -85,9 +85,9 @@ static void expect_scale_invariant(lh_test_state *lh_t_, int d, size_t n, const 
     LH_EXPECT_EQ_INT(lh_convex_hull(d, n, x, NULL, &ha), LH_OK);
     LH_EXPECT_EQ_INT(lh_convex_hull(d, n, y, NULL, &hb), LH_OK);
     if (a && b && ha && hb) {
-        char msg[256] = "";
-        LH_EXPECT_EQ_INT(lh_tri_check(b, msg, sizeof msg), LH_OK);
-        if (LH_FAILED()) LH_NOTE("%s", msg);
+        lh_error err;
+        LH_EXPECT_EQ_INT(lh_tri_check(b, &err), LH_OK);
+        if (LH_FAILED()) LH_NOTE("%s", err.message);
         LH_EXPECT_EQ_U64(lh_tri_count(b), lh_tri_count(a));
         LH_EXPECT_EQ_U64(lh_tri_duplicate_count(b), lh_tri_duplicate_count(a));
         if (lh_tri_count(a) == lh_tri_count(b))
@@ -173,9 +173,9 @@ LH_TEST(largest_and_mixed_magnitudes)
     } sets[] = {{big, 7}, {mixed, 10}};
     for (size_t k = 0; k < LH_COUNT(sets); k++) {
         lh_tri *t;
-        char msg[256] = "";
+        lh_error err;
         LH_ASSERT_EQ_INT(lh_delaunay(2, sets[k].n, sets[k].x, NULL, &t), LH_OK);
-        LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
+        LH_EXPECT_EQ_INT(lh_tri_check(t, &err), LH_OK);
         LH_EXPECT_EQ_U64(lh_tri_count(t), 2 * sets[k].n - 2 - lh_tri_hull_count(t));
         for (size_t i = 0; i < sets[k].n; i++) LH_EXPECT_TRUE(lh_tri_vertex_simplex(t)[i] >= 0);
         lh_tri_free(t);
@@ -183,7 +183,7 @@ LH_TEST(largest_and_mixed_magnitudes)
         LH_ASSERT_EQ_INT(lh_convex_hull(2, sets[k].n, sets[k].x, NULL, &h), LH_OK);
         LH_EXPECT_TRUE(lh_hull_facet_count(h) >= 3);
         lh_hull_free(h);
-        if (LH_FAILED()) LH_NOTE("set %zu: %s", k, msg);
+        if (LH_FAILED()) LH_NOTE("set %zu: %s", k, err.message);
     }
     /* 3D: the corners of the largest cube, its centre and a subnormal site. */
     double cube[10 * 3];
@@ -193,7 +193,7 @@ LH_TEST(largest_and_mixed_magnitudes)
     cube[27] = 5e-324, cube[28] = -5e-324, cube[29] = 1e-310;
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(3, 10, cube, NULL, &t), LH_OK);
-    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
     lh_tri_free(t);
 }
 
@@ -209,10 +209,10 @@ LH_TEST(nonfinite_coordinates_everywhere)
         y[5] = bad[b];
         lh_tri *t = (lh_tri *)y;
         lh_hull *h = (lh_hull *)y;
-        size_t at = 0;
+        lh_error at;
         int k = 7;
         LH_EXPECT_EQ_INT(lh_coords_validate(2, 4, y, &at), LH_ERR_NONFINITE);
-        LH_EXPECT_EQ_U64(at, 5);
+        LH_EXPECT_EQ_U64(at.index, 5);
         LH_EXPECT_EQ_INT(lh_delaunay(2, 4, y, NULL, &t), LH_ERR_NONFINITE);
         LH_EXPECT_TRUE(t == NULL);
         LH_EXPECT_EQ_INT(lh_convex_hull(2, 4, y, NULL, &h), LH_ERR_NONFINITE);
@@ -225,7 +225,7 @@ LH_TEST(nonfinite_coordinates_everywhere)
         LH_EXPECT_EQ_INT(lh_tri_nearest(t, y + 4, -1, &site), LH_ERR_NONFINITE);
         LH_EXPECT_EQ_INT(lh_tri_insert(t, 2, y + 2), LH_ERR_NONFINITE);
         LH_EXPECT_EQ_U64(lh_tri_site_count(t), 4);
-        LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+        LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
         lh_tri_free(t);
     }
 }
@@ -319,7 +319,7 @@ LH_TEST(collinear_and_coplanar_sites)
         LH_ASSERT_EQ_INT(lh_delaunay(cases[c].d, cases[c].n, cases[c].x, &opt, &t), LH_OK);
         LH_EXPECT_EQ_INT(lh_tri_simplex_dim(t), cases[c].k);
         LH_EXPECT_EQ_U64(lh_tri_count(t), cases[c].count);
-        LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+        LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
         lh_tri_free(t);
         if (LH_FAILED()) LH_NOTE("case %zu", c);
     }
@@ -333,7 +333,7 @@ static void expect_count(lh_test_state *lh_t_, int d, size_t n, const double *x,
     lh_tri *t;
     LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
     LH_EXPECT_EQ_U64(lh_tri_count(t), count);
-    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
     size_t cells = 0;
     const lh_index *off, *v;
     LH_EXPECT_EQ_INT(lh_tri_complex(t, &cells, &off, &v), LH_OK);
@@ -383,7 +383,7 @@ LH_TEST(scaled_lattice_spheres_triangulate_alike)
             lh_tri *b = NULL;
             LH_EXPECT_EQ_INT(lh_delaunay(d, n, y, NULL, &b), LH_OK);
             LH_EXPECT_TRUE(b && lh_test_same_tri(a, b));
-            if (b) LH_EXPECT_EQ_INT(lh_tri_check(b, NULL, 0), LH_OK);
+            if (b) LH_EXPECT_EQ_INT(lh_tri_check(b, NULL), LH_OK);
             if (LH_FAILED()) LH_NOTE("d %d, %zu sites, scale %.17g", d, n, scales[s]);
             lh_tri_free(b);
         }
@@ -412,7 +412,7 @@ LH_TEST(sites_and_queries_on_hull_facets)
     lh_tri_free(t);
     LH_ASSERT_EQ_INT(lh_delaunay(3, 5, face, NULL, &t), LH_OK);
     LH_EXPECT_EQ_U64(lh_tri_count(t), 3);
-    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL, 0), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_check(t, NULL), LH_OK);
     lh_tri_free(t);
     lh_hull *h;
     LH_ASSERT_EQ_INT(lh_convex_hull(3, 5, face, NULL, &h), LH_OK);
@@ -430,10 +430,10 @@ LH_TEST(sites_and_queries_on_hull_facets)
 LH_TEST(reader_keeps_extreme_doubles)
 {
     lh_points p;
-    char msg[256];
+    lh_error err;
     LH_ASSERT_EQ_INT(read_text(TEXT("2 4\n5e-324 -1e-999\n1.7976931348623157e308 0x1p-1074\n"
                                     "-0 2.4703282292062328e-324\n1e300 1e-300\n"),
-                               &p, msg, sizeof msg),
+                               &p, &err),
                      LH_OK);
     LH_ASSERT_EQ_U64(p.n, 4);
     const double want[] = {4.9406564584124654e-324, -0.0, DBL_MAX, 4.9406564584124654e-324, -0.0,
@@ -458,8 +458,8 @@ LH_TEST(reader_takes_megabyte_lines)
     for (size_t i = 0; i < n; i++) w += sprintf(w, "%zu %zu ", i % 1000, i / 1000);
     w += sprintf(w, "\r\n");
     lh_points p;
-    char msg[256];
-    lh_status st = read_text(s, (size_t)(w - s), &p, msg, sizeof msg);
+    lh_error err;
+    lh_status st = read_text(s, (size_t)(w - s), &p, &err);
     free(s);
     LH_ASSERT_EQ_INT(st, LH_OK);
     LH_EXPECT_EQ_INT(p.format, LH_FORMAT_QHULL);
@@ -554,13 +554,13 @@ LH_TEST(check_delaunay_refuses_counts_that_wrap)
     lh_options o;
     lh_options_default(&o);
     o.alloc = &a;
-    char msg[160];
-    LH_EXPECT_EQ_INT(lh_delaunay_check(3, 4, tet, (size_t)1 << 60, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
-    LH_EXPECT_STREQ(msg, "4 sites and 1152921504606846976 simplices: more than an lh_index or a size_t can count");
-    LH_EXPECT_EQ_INT(lh_delaunay_check(3, SIZE_MAX / 2, tet, 1, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
-    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 3, tet, SIZE_MAX, simp, &o, msg, sizeof msg), LH_ERR_TOO_LARGE);
+    lh_error err;
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, 4, tet, (size_t)1 << 60, simp, &o, &err), LH_ERR_TOO_LARGE);
+    LH_EXPECT_STREQ(err.message, "4 sites and 1152921504606846976 simplices: more than an lh_index or a size_t can count");
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, SIZE_MAX / 2, tet, 1, simp, &o, &err), LH_ERR_TOO_LARGE);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(2, 3, tet, SIZE_MAX, simp, &o, &err), LH_ERR_TOO_LARGE);
     LH_EXPECT_EQ_U64(p.peak, 0);
-    LH_EXPECT_EQ_INT(lh_delaunay_check(3, 4, tet, 1, simp, &o, msg, sizeof msg), LH_OK);
+    LH_EXPECT_EQ_INT(lh_delaunay_check(3, 4, tet, 1, simp, &o, &err), LH_OK);
 }
 
 int main(int argc, char **argv)

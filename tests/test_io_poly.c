@@ -12,11 +12,11 @@
 #ifdef LH_TEST_DATA_DIR
 static lh_status read_node(const char *path, const lh_allocator *a, lh_points *p)
 {
-    char full[512], msg[256];
+    char full[512];
     snprintf(full, sizeof full, "%s/%s", LH_TEST_DATA_DIR, path);
     FILE *f = fopen(full, "rb");
     if (!f) return LH_ERR_IO;
-    lh_status st = lh_points_read(f, path, LH_FORMAT_NODE, a, p, msg, sizeof msg);
+    lh_status st = lh_points_read(f, path, LH_FORMAT_NODE, a, p, NULL);
     fclose(f);
     return st;
 }
@@ -264,11 +264,10 @@ LH_TEST(poly_n0_take_points)
 /* The .node text (len bytes) read and attached to g (lh_pslg_take_points). */
 static lh_status attach_node_text(lh_pslg *g, const char *text, size_t len)
 {
-    char msg[256];
     lh_points p;
     FILE *f = lh_test_file(text, len);
     if (!f) return LH_ERR_IO;
-    lh_status st = lh_points_read(f, "n.node", LH_FORMAT_NODE, NULL, &p, msg, sizeof msg);
+    lh_status st = lh_points_read(f, "n.node", LH_FORMAT_NODE, NULL, &p, NULL);
     fclose(f);
     if (st == LH_OK) st = lh_pslg_take_points(g, &p);
     lh_points_free(&p);
@@ -314,11 +313,14 @@ LH_TEST(poly_n0_keeps_its_item_numbers)
     static const int seg[] = {0, 1, 1, 2, 1, 9};
     for (int i = 0; i < 6; i++) LH_EXPECT_EQ_INT(g.segments[i], seg[i]);
     lh_trimesh *m = NULL;
-    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
-    LH_EXPECT_STREQ(msg, "5: segment 3: endpoint 9 is not a vertex (0..3)");
+    lh_error err;
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, &err), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(err.message, "5: segment 3: endpoint 9 is not a vertex (0..3)");
+    LH_EXPECT_EQ_U64(err.line, 5);
     g.segments[1] = 2, g.segments[5] = 3; /* segments 0-2 and 1-3: the diagonals cross */
-    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, msg, sizeof msg), LH_ERR_CROSSING_SEGMENTS);
-    LH_EXPECT_STREQ(msg, "5: segment 3 crosses segment 1 (line 3)");
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, NULL, &m, &err), LH_ERR_CROSSING_SEGMENTS);
+    LH_EXPECT_STREQ(err.message, "5: segment 3 crosses segment 1 (line 3)");
+    LH_EXPECT_EQ_U64(err.line, 5);
     lh_trimesh_free(m);
     lh_pslg_free(&g);
 }
@@ -334,11 +336,11 @@ LH_TEST(poly_take_points_arguments)
     LH_ASSERT_EQ_INT(read_text(lh_poly_read, "f.poly", TEXT("1 2\n1 0 0\n0\n0\n"), &a, &full, msg, sizeof msg), LH_OK);
     FILE *f = lh_test_file(TEXT("2 2\n1 0 0\n2 1 1\n"));
     LH_ASSERT_TRUE(f != NULL);
-    LH_ASSERT_EQ_INT(lh_points_read(f, "p.node", LH_FORMAT_NODE, &a, &p, msg, sizeof msg), LH_OK);
+    LH_ASSERT_EQ_INT(lh_points_read(f, "p.node", LH_FORMAT_NODE, &a, &p, NULL), LH_OK);
     fclose(f);
     f = lh_test_file(TEXT("2 3\n1 0 0 0\n2 1 1 1\n"));
     LH_ASSERT_TRUE(f != NULL);
-    LH_ASSERT_EQ_INT(lh_points_read(f, "p3.node", LH_FORMAT_NODE, &a, &p3, msg, sizeof msg), LH_OK);
+    LH_ASSERT_EQ_INT(lh_points_read(f, "p3.node", LH_FORMAT_NODE, &a, &p3, NULL), LH_OK);
     fclose(f);
     LH_EXPECT_EQ_INT(lh_pslg_take_points(NULL, &p), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_EQ_INT(lh_pslg_take_points(&g, NULL), LH_ERR_INVALID_ARGUMENT);

@@ -23,11 +23,11 @@
 
 
 static lh_status read_text(const char *name, const char *text, size_t len, lh_format fmt,
-                           const lh_allocator *a, lh_points *p, char *msg, size_t size)
+                           const lh_allocator *a, lh_points *p, lh_error *err)
 {
     FILE *f = lh_test_file(text, len);
     if (!f) return LH_ERR_IO;
-    lh_status st = lh_points_read(f, name, fmt, a, p, msg, size);
+    lh_status st = lh_points_read(f, name, fmt, a, p, err);
     fclose(f);
     return st;
 }
@@ -43,13 +43,17 @@ typedef struct bad_case {
 
 static void check_bad(lh_test_state *lh_t_, const bad_case *c)
 {
-    char msg[512];
+    lh_error err;
     lh_points p;
     lh_test_counter k = {0, 0, 0};
     lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &k};
-    lh_status st = read_text(c->name, c->text, c->len, c->fmt, &a, &p, msg, sizeof msg);
+    lh_status st = read_text(c->name, c->text, c->len, c->fmt, &a, &p, &err);
     LH_EXPECT_EQ_INT(st, c->status);
-    LH_EXPECT_STREQ(msg, c->msg);
+    LH_EXPECT_EQ_INT(err.status, c->status);
+    LH_EXPECT_STREQ(err.message, c->msg);
+    char place[300]; /* the place in the message is the place in err */
+    snprintf(place, sizeof place, "%s:%zu:%zu: ", c->name ? c->name : "<input>", err.line, err.column);
+    LH_EXPECT_TRUE(err.line > 0 && err.column > 0 && strncmp(c->msg, place, strlen(place)) == 0);
     LH_EXPECT_TRUE(p.xyz == NULL && p.n == 0 && p.d == 0);
     LH_EXPECT_EQ_INT(k.live, 0);
     if (LH_FAILED()) LH_NOTE("case %s", c->name);
@@ -149,20 +153,21 @@ LH_TEST(qhull_coordinate_errors)
 
 LH_TEST(long_tokens)
 {
-    char text[600], msg[512];
+    char text[600];
+    lh_error err;
     memcpy(text, "2 1\n0 ", 6);
     memset(text + 6, '1', 300);
     memcpy(text + 306, "\n", 2);
     lh_points p;
-    LH_EXPECT_EQ_INT(read_text("long", text, strlen(text), Q, NULL, &p, msg, sizeof msg), LH_ERR_PARSE);
-    LH_EXPECT_STREQ(msg, "long:2:3: expected coordinate 2 of point 1 (a number), found a token of more than 255 bytes");
+    LH_EXPECT_EQ_INT(read_text("long", text, strlen(text), Q, NULL, &p, &err), LH_ERR_PARSE);
+    LH_EXPECT_STREQ(err.message, "long:2:3: expected coordinate 2 of point 1 (a number), found a token of more than 255 bytes");
     /* 255 bytes is still a token: a number with many digits. */
     memset(text + 6, '0', 254);
     text[260] = '1';
     memcpy(text + 261, "\n", 2);
-    LH_ASSERT_EQ_INT(read_text("ok", text, strlen(text), Q, NULL, &p, msg, sizeof msg), LH_OK);
+    LH_ASSERT_EQ_INT(read_text("ok", text, strlen(text), Q, NULL, &p, &err), LH_OK);
     LH_EXPECT_EQ_DBL(p.xyz[1], 1.0);
-    LH_EXPECT_STREQ(msg, "");
+    LH_EXPECT_STREQ(err.message, "");
     lh_points_free(&p);
 }
 
@@ -234,14 +239,14 @@ LH_TEST(declared_count_is_not_trusted)
 {
     lh_test_biggest b;
     lh_allocator a = lh_test_biggest_allocator(&b);
-    char msg[256];
+    lh_error err;
     lh_points p;
-    LH_EXPECT_EQ_INT(read_text("lie", TEXT("8 2000000000\n0 0 0 0 0 0 0 0\n"), Q, &a, &p, msg, sizeof msg), LH_ERR_PARSE);
-    LH_EXPECT_STREQ(msg, "lie:3:1: expected coordinate 1 of point 2, found the end of the input (2000000000 points declared)");
+    LH_EXPECT_EQ_INT(read_text("lie", TEXT("8 2000000000\n0 0 0 0 0 0 0 0\n"), Q, &a, &p, &err), LH_ERR_PARSE);
+    LH_EXPECT_STREQ(err.message, "lie:3:1: expected coordinate 1 of point 2, found the end of the input (2000000000 points declared)");
     LH_EXPECT_LE_U64(b.largest, 1u << 20);
     LH_EXPECT_EQ_INT(b.live, 0);
-    LH_EXPECT_EQ_INT(read_text("lie.node", TEXT("2000000000 3 2 1\n1 0 0 0 1 2 3\n"), N, &a, &p, msg, sizeof msg), LH_ERR_PARSE);
-    LH_EXPECT_STREQ(msg, "lie.node:3:1: expected point number 2, found the end of the input (2000000000 points declared)");
+    LH_EXPECT_EQ_INT(read_text("lie.node", TEXT("2000000000 3 2 1\n1 0 0 0 1 2 3\n"), N, &a, &p, &err), LH_ERR_PARSE);
+    LH_EXPECT_STREQ(err.message, "lie.node:3:1: expected point number 2, found the end of the input (2000000000 points declared)");
     LH_EXPECT_LE_U64(b.largest, 1u << 20);
     LH_EXPECT_EQ_INT(b.live, 0);
 }
@@ -269,9 +274,9 @@ LH_TEST(qhull_good)
     };
     for (size_t i = 0; i < LH_COUNT(inputs) && !LH_FAILED(); i++) {
         lh_points p;
-        char msg[256] = "x";
-        LH_EXPECT_EQ_INT(read_text("good", inputs[i], strlen(inputs[i]), A, NULL, &p, msg, sizeof msg), LH_OK);
-        LH_EXPECT_STREQ(msg, "");
+        lh_error err;
+        LH_EXPECT_EQ_INT(read_text("good", inputs[i], strlen(inputs[i]), A, NULL, &p, &err), LH_OK);
+        LH_EXPECT_STREQ(err.message, "");
         LH_EXPECT_EQ_INT(p.format, LH_FORMAT_QHULL);
         LH_EXPECT_TRUE(p.attr == NULL && p.marker == NULL && p.attr_count == 0 && p.first_index == 0);
         expect_points(lh_t_, &p, 2, 3, tri);
@@ -287,8 +292,8 @@ LH_TEST(rbox_file)
     FILE *f = fopen(LH_TEST_DATA_DIR "/io/rbox_10_D3.txt", "rb");
     LH_ASSERT_TRUE(f != NULL);
     lh_points p;
-    char msg[256];
-    lh_status st = lh_points_read(f, "rbox_10_D3.txt", A, NULL, &p, msg, sizeof msg);
+    lh_error err;
+    lh_status st = lh_points_read(f, "rbox_10_D3.txt", A, NULL, &p, &err);
     fclose(f);
     LH_ASSERT_EQ_INT(st, LH_OK);
     LH_EXPECT_EQ_INT(p.format, LH_FORMAT_QHULL);
@@ -309,8 +314,8 @@ LH_TEST(node_good)
     static const double xyz[] = {0, 0, 1, 0, 0, 1}, attr[] = {0.5, 1.5, 2, 3, 4, 5};
     static const lh_index marker[] = {7, -1, 0};
     lh_points p;
-    char msg[256];
-    LH_ASSERT_EQ_INT(read_text("good.node", TEXT(text), A, NULL, &p, msg, sizeof msg), LH_OK);
+    lh_error err;
+    LH_ASSERT_EQ_INT(read_text("good.node", TEXT(text), A, NULL, &p, &err), LH_OK);
     LH_EXPECT_EQ_INT(p.format, LH_FORMAT_NODE);
     LH_EXPECT_EQ_INT(p.first_index, 1);
     expect_points(lh_t_, &p, 2, 3, xyz);
@@ -321,7 +326,7 @@ LH_TEST(node_good)
     lh_points_free(&p);
     /* TetGen style, 0-based, header fields omitted. */
     static const double xyz3[] = {1, 2, 3, 4, 5, 6};
-    LH_ASSERT_EQ_INT(read_text("tet.node", TEXT("2 3\n0 1 2 3\n1 4 5 6"), A, NULL, &p, msg, sizeof msg), LH_OK);
+    LH_ASSERT_EQ_INT(read_text("tet.node", TEXT("2 3\n0 1 2 3\n1 4 5 6"), A, NULL, &p, &err), LH_OK);
     LH_EXPECT_EQ_INT(p.first_index, 0);
     LH_EXPECT_TRUE(p.attr == NULL && p.marker == NULL);
     expect_points(lh_t_, &p, 3, 2, xyz3);
@@ -339,12 +344,12 @@ LH_TEST(columns_good)
     };
     for (size_t i = 0; i < LH_COUNT(inputs) && !LH_FAILED(); i++) {
         lh_points p;
-        char msg[256];
-        LH_EXPECT_EQ_INT(read_text("cols.csv", inputs[i], strlen(inputs[i]), A, NULL, &p, msg, sizeof msg), LH_OK);
+        lh_error err;
+        LH_EXPECT_EQ_INT(read_text("cols.csv", inputs[i], strlen(inputs[i]), A, NULL, &p, &err), LH_OK);
         LH_EXPECT_EQ_INT(p.format, LH_FORMAT_COLUMNS);
         expect_points(lh_t_, &p, 3, 2, xyz);
         lh_points_free(&p);
-        if (LH_FAILED()) LH_NOTE("input %zu: %s", i, msg);
+        if (LH_FAILED()) LH_NOTE("input %zu: %s", i, err.message);
     }
 }
 
@@ -374,12 +379,12 @@ LH_TEST(auto_detection)
     };
     for (size_t i = 0; i < LH_COUNT(cases) && !LH_FAILED(); i++) {
         lh_points p;
-        char msg[256];
-        lh_status st = read_text(cases[i].name, cases[i].text, strlen(cases[i].text), A, NULL, &p, msg, sizeof msg);
+        lh_error err;
+        lh_status st = read_text(cases[i].name, cases[i].text, strlen(cases[i].text), A, NULL, &p, &err);
         LH_EXPECT_EQ_INT(st == LH_OK ? p.format : cases[i].want, cases[i].want);
         LH_EXPECT_TRUE(st == LH_OK || !strcmp(cases[i].text, "") || !strcmp(cases[i].text, "\n# c\n"));
         lh_points_free(&p);
-        if (LH_FAILED()) LH_NOTE("case %zu: %s", i, msg);
+        if (LH_FAILED()) LH_NOTE("case %zu: %s", i, err.message);
     }
 }
 
@@ -411,8 +416,8 @@ LH_TEST(large_inputs)
         char *s = big_input(fmts[k], 3, n, &len);
         LH_ASSERT_TRUE(s != NULL);
         lh_points p;
-        char msg[256];
-        lh_status st = read_text("big", s, len, fmts[k], NULL, &p, msg, sizeof msg);
+        lh_error err;
+        lh_status st = read_text("big", s, len, fmts[k], NULL, &p, &err);
         free(s);
         LH_ASSERT_EQ_INT(st, LH_OK);
         LH_EXPECT_EQ_U64(p.n, n);
@@ -437,11 +442,11 @@ static lh_status run_read(lh_test_state *lh_t_, const lh_allocator *a, const voi
 {
     const alloc_case *c = user;
     lh_points p;
-    char msg[256];
-    lh_status st = read_text("alloc", c->text, c->len, c->fmt, a, &p, msg, sizeof msg);
+    lh_error err;
+    lh_status st = read_text("alloc", c->text, c->len, c->fmt, a, &p, &err);
     if (st == LH_ERR_NOMEM)
-        LH_EXPECT_TRUE(strstr(msg, "alloc:") == msg && (strstr(msg, ": out of memory for point ") ||
-                                                       !strcmp(msg, "alloc:1:1: out of memory for the input buffer")));
+        LH_EXPECT_TRUE(strstr(err.message, "alloc:") == err.message && (strstr(err.message, ": out of memory for point ") ||
+                                                       !strcmp(err.message, "alloc:1:1: out of memory for the input buffer")));
     else LH_EXPECT_EQ_INT(st, LH_OK);
     lh_points_free(&p);
     return st;
@@ -490,28 +495,26 @@ LH_TEST(every_allocation_failure)
 
 LH_TEST(read_error_and_arguments)
 {
-    char msg[256] = "x";
+    lh_error err;
     lh_points p;
     FILE *f = tmpfile();
     LH_ASSERT_TRUE(f != NULL);
     FILE *w = fopen("/dev/null", "w");
     if (w) { /* reading a write-only stream fails with an error, not an end */
-        LH_EXPECT_EQ_INT(lh_points_read(w, "wo", Q, NULL, &p, msg, sizeof msg), LH_ERR_IO);
-        LH_EXPECT_STREQ(msg, "wo:1:1: expected the dimension, found a read error");
+        LH_EXPECT_EQ_INT(lh_points_read(w, "wo", Q, NULL, &p, &err), LH_ERR_IO);
+        LH_EXPECT_STREQ(err.message, "wo:1:1: expected the dimension, found a read error");
         fclose(w);
     }
-    LH_EXPECT_EQ_INT(lh_points_read(NULL, "x", Q, NULL, &p, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
-    LH_EXPECT_EQ_INT(lh_points_read(f, "x", Q, NULL, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
-    LH_EXPECT_EQ_INT(lh_points_read(f, "x", (lh_format)7, NULL, &p, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_points_read(NULL, "x", Q, NULL, &p, &err), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_points_read(f, "x", Q, NULL, NULL, &err), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_points_read(f, "x", (lh_format)7, NULL, &p, &err), LH_ERR_INVALID_ARGUMENT);
     lh_allocator half = {lh_test_counting_alloc, NULL, NULL};
-    LH_EXPECT_EQ_INT(lh_points_read(f, "x", Q, &half, &p, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_points_read(f, "x", Q, &half, &p, &err), LH_ERR_INVALID_ARGUMENT);
     fclose(f);
-    /* No name, no message buffer, a message buffer of one byte. */
-    LH_EXPECT_EQ_INT(read_text(NULL, TEXT("2 -x"), Q, NULL, &p, NULL, 0), LH_ERR_PARSE);
-    LH_EXPECT_EQ_INT(read_text(NULL, TEXT("2 -x"), Q, NULL, &p, msg, 1), LH_ERR_PARSE);
-    LH_EXPECT_STREQ(msg, "");
-    LH_EXPECT_EQ_INT(read_text(NULL, TEXT("2 -x"), Q, NULL, &p, msg, sizeof msg), LH_ERR_PARSE);
-    LH_EXPECT_STREQ(msg, "<input>:1:3: expected the number of points (an integer from 1 to " MAX_POINTS "), found '-x'");
+    /* No name, no lh_error. */
+    LH_EXPECT_EQ_INT(read_text(NULL, TEXT("2 -x"), Q, NULL, &p, NULL), LH_ERR_PARSE);
+    LH_EXPECT_EQ_INT(read_text(NULL, TEXT("2 -x"), Q, NULL, &p, &err), LH_ERR_PARSE);
+    LH_EXPECT_STREQ(err.message, "<input>:1:3: expected the number of points (an integer from 1 to " MAX_POINTS "), found '-x'");
     char max_points[32]; /* MAX_POINTS is LH_READ_MAX_POINTS */
     snprintf(max_points, sizeof max_points, "%" LH_INDEX_PRI, LH_READ_MAX_POINTS);
     LH_EXPECT_STREQ(max_points, MAX_POINTS);

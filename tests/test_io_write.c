@@ -323,8 +323,8 @@ LH_TEST(node_round_trip_is_bit_exact)
         LH_ASSERT_EQ_INT(lh_node_write(f, &m, first), LH_OK);
         rewind(f);
         lh_points p;
-        char msg[256];
-        lh_status st = lh_points_read(f, "round.node", LH_FORMAT_AUTO, NULL, &p, msg, sizeof msg);
+        lh_error err;
+        lh_status st = lh_points_read(f, "round.node", LH_FORMAT_AUTO, NULL, &p, &err);
         fclose(f);
         LH_ASSERT_EQ_INT(st, LH_OK);
         LH_EXPECT_EQ_INT(p.format, LH_FORMAT_NODE);

@@ -37,7 +37,7 @@ static void same_as_one_thread(lh_test_state *lh_t_, int d, int fam, int generic
         if (LH_FAILED()) LH_NOTE("d=%d %s%s threads=%d", d, lh_fam_name[fam], generic ? " generic" : "", threads[i]);
         lh_tri_free(many);
     }
-    if (s1 == LH_OK) LH_EXPECT_EQ_INT(lh_tri_check(one, NULL, 0), LH_OK);
+    if (s1 == LH_OK) LH_EXPECT_EQ_INT(lh_tri_check(one, NULL), LH_OK);
     lh_tri_free(one);
     free(x);
 }

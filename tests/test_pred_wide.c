@@ -63,9 +63,8 @@ static void few_exact(lh_test_state *lh_t_, int d, size_t n, const double *x, un
     lh_options_default(&opt);
     lh_tri *t = NULL;
     LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, &opt, &t), LH_OK);
-    char msg[256] = "";
-    LH_EXPECT_EQ_INT(lh_delaunay_check(d, n, x, lh_tri_count(t), lh_tri_simplices(t), NULL, msg,
-                                       sizeof msg),
+    lh_error err;
+    LH_EXPECT_EQ_INT(lh_delaunay_check(d, n, x, lh_tri_count(t), lh_tri_simplices(t), NULL, &err),
                      LH_OK);
     lh_pred_counters c;
     lh_tri_pred_counters_get(t, &c);

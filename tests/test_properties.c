@@ -158,8 +158,8 @@ static void one_input(lh_test_state *lh_t_, uint64_t seed)
     lh_status st = lh_delaunay(d, n, x, NULL, &t);
     long fails = lh_t_->failures;
     if (st == LH_OK) {
-        char msg[256] = "";
-        LH_EXPECT_EQ_INT(lh_tri_check(t, msg, sizeof msg), LH_OK);
+        lh_error err;
+        LH_EXPECT_EQ_INT(lh_tri_check(t, &err), LH_OK);
         LH_EXPECT_EQ_INT(euler(t), 1);
         check_volume(lh_t_, d, n, x, t);
         for (size_t i = 0; i < n; i++)

@@ -175,12 +175,12 @@ static lh_trimesh *mesh_all_delaunay(lh_test_state *lh_t_, const lh_pslg *g, con
                                      const char *what)
 {
     lh_trimesh *m = mesh_checked(lh_t_, g, o, what);
-    char msg[256] = "";
+    lh_error err;
     if (!m) return NULL;
     LH_EXPECT_EQ_INT(lh_cdt_check(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
-                                      lh_trimesh_triangles(m), 0, NULL, 1, NULL, msg, sizeof msg),
+                                      lh_trimesh_triangles(m), 0, NULL, 1, NULL, &err),
                      LH_OK);
-    if (msg[0]) LH_NOTE("%s: %s", what, msg);
+    if (err.message[0]) LH_NOTE("%s: %s", what, err.message);
     lh_trimesh_stats st;
     lh_trimesh_stats_get(m, &st);
     LH_EXPECT_EQ_U64(st.segments_unsplit, 0);
@@ -198,12 +198,12 @@ LH_TEST(conforming_delaunay_has_every_edge_delaunay)
         o.conforming = 1;
         lh_trimesh *m = mesh_all_delaunay(lh_t_, &g, &o, triangle_files[i]);
         lh_trimesh *cdt = mesh_checked(lh_t_, &g, NULL, "cdt");
-        char msg[256] = "";
+        lh_error err;
         /* the plain CDT of these files is not conforming: the test can fail */
         if (cdt && i == 1) /* la.poly */
             LH_EXPECT_EQ_INT(lh_cdt_check(lh_trimesh_point_count(cdt), lh_trimesh_points(cdt),
                                               lh_trimesh_triangle_count(cdt), lh_trimesh_triangles(cdt), 0, NULL,
-                                              1, NULL, msg, sizeof msg),
+                                              1, NULL, &err),
                              LH_ERR_INVALID_MESH);
         lh_trimesh_free(m);
         lh_trimesh_free(cdt);

@@ -61,12 +61,12 @@ LH_TEST(conforming_below_the_floor_is_reported)
     if (m) {
         lh_trimesh_stats st;
         lh_trimesh_stats_get(m, &st);
-        char msg[256] = "";
+        lh_error err;
         const lh_status conforming = lh_cdt_check(lh_trimesh_point_count(m), lh_trimesh_points(m),
                                                       lh_trimesh_triangle_count(m), lh_trimesh_triangles(m), 0,
-                                                      NULL, 1, NULL, msg, sizeof msg);
+                                                      NULL, 1, NULL, &err);
         LH_EXPECT_GT_U64(st.segments_unsplit, 0);
-        if (conforming != LH_OK) LH_NOTE("not conforming, as reported: %s", msg);
+        if (conforming != LH_OK) LH_NOTE("not conforming, as reported: %s", err.message);
     }
     lh_trimesh_free(m);
 }
@@ -142,22 +142,22 @@ LH_TEST(earcut_degenerate_rings_are_valid_or_refused_clearly)
             o.min_angle = run < 2 ? 0 : run < 4 ? 20 : 30;
             o.max_steiner = 20000;
             lh_trimesh *m = NULL;
-            char msg[256] = "", cmsg[256] = "";
-            lh_status st = lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg);
+            lh_error err, cerr;
+            lh_status st = lh_pslg_triangulate(&g, &o, &m, &err);
             if (st == LH_OK) {
-                LH_EXPECT_EQ_INT(check(m, cmsg, sizeof cmsg), LH_OK);
-                if (cmsg[0]) LH_NOTE("%s: %s", files[i], cmsg);
+                LH_EXPECT_EQ_INT(check(m, &cerr), LH_OK);
+                if (cerr.message[0]) LH_NOTE("%s: %s", files[i], cerr.message);
                 lh_trimesh_stats ts;
                 lh_trimesh_stats_get(m, &ts);
                 if (ts.steiner_limit_reached) LH_NOTE("%s run %d: the Steiner budget ran out", files[i], run);
                 LH_EXPECT_EQ_INT(ts.steiner_limit_reached, 0);
                 meshed += run == 1;
             } else {
-                const int crosses = strstr(msg, "crosses") != NULL;
-                if (st != (crosses ? LH_ERR_CROSSING_SEGMENTS : LH_ERR_DEGENERATE) || !msg[0])
-                    LH_NOTE("%s split %d: %s %s", files[i], split, lh_status_name(st), msg);
+                const int crosses = strstr(err.message, "crosses") != NULL;
+                if (st != (crosses ? LH_ERR_CROSSING_SEGMENTS : LH_ERR_DEGENERATE) || !err.message[0])
+                    LH_NOTE("%s split %d: %s %s", files[i], split, lh_status_name(st), err.message);
                 LH_EXPECT_EQ_INT(st, crosses ? LH_ERR_CROSSING_SEGMENTS : LH_ERR_DEGENERATE);
-                LH_EXPECT_TRUE(msg[0] != 0);
+                LH_EXPECT_TRUE(err.message[0] != 0);
                 if (split) LH_EXPECT_TRUE(!crosses);
             }
             lh_trimesh_free(m);

@@ -31,16 +31,16 @@ static lh_trimesh *mesh_valid(lh_test_state *lh_t_, const lh_pslg *g, const lh_t
                               lh_trimesh_stats *st)
 {
     lh_trimesh *m = NULL;
-    char msg[256] = "";
-    const lh_status s = lh_pslg_triangulate(g, o, &m, msg, sizeof msg);
+    lh_error err;
+    const lh_status s = lh_pslg_triangulate(g, o, &m, &err);
     LH_EXPECT_EQ_INT(s, LH_OK);
     if (s != LH_OK) {
-        LH_NOTE("%s", msg);
+        LH_NOTE("%s", err.message);
         return NULL;
     }
     lh_trimesh_stats_get(m, st);
-    const lh_status c = lh_test_check_trimesh(m, msg, sizeof msg);
-    if (c != LH_OK) LH_NOTE("check: %s", msg);
+    const lh_status c = lh_test_check_trimesh(m, &err);
+    if (c != LH_OK) LH_NOTE("check: %s", err.message);
     LH_EXPECT_EQ_INT(c, LH_OK);
     return m;
 }
@@ -99,11 +99,11 @@ LH_TEST(quality_decisions_are_scale_free)
         o.min_angle = angles[a];
         const double area0 = a == 2 ? 1e-3 : 0;
         lh_trimesh *ref = NULL;
-        char msg[256];
+        lh_error err;
         memcpy(g.xy, xy0, 2 * g.n * sizeof *xy0);
         g.holes[0] = h0[0], g.holes[1] = h0[1];
         o.max_area = area0;
-        LH_ASSERT_EQ_INT(lh_pslg_triangulate(&g, &o, &ref, msg, sizeof msg), LH_OK);
+        LH_ASSERT_EQ_INT(lh_pslg_triangulate(&g, &o, &ref, &err), LH_OK);
         for (size_t i = 0; i < LH_COUNT(ks); i++) {
             const int k = ks[i];
             if (area0 > 0 && abs(k) > 500) continue; /* the bound times 2^2k: beyond the doubles */
@@ -240,8 +240,8 @@ LH_TEST(split_segments_are_scale_free)
         lh_trimesh_options_default(&o);
         o.split_segments = 1;
         lh_trimesh *ref = NULL;
-        char msg[256];
-        LH_ASSERT_EQ_INT(lh_pslg_triangulate(&g, &o, &ref, msg, sizeof msg), LH_OK);
+        lh_error err;
+        LH_ASSERT_EQ_INT(lh_pslg_triangulate(&g, &o, &ref, &err), LH_OK);
         if (!f) LH_EXPECT_EQ_U64(lh_trimesh_point_count(ref), 8);
         for (size_t i = 0; i < LH_COUNT(ks); i++) {
             const int k = ks[i];

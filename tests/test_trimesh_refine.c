@@ -12,18 +12,19 @@
  * new triangle meets the bound of the old one holding its centroid. */
 LH_TEST(an_existing_mesh_is_refined_with_its_area_bounds)
 {
-    char path[512], msg[256];
+    char path[512];
+    lh_error err;
     lh_points pts;
     lh_cells cells;
     snprintf(path, sizeof path, "%s/triangle/bbox.1.node", LH_TEST_DATA_DIR);
     FILE *f = fopen(path, "r");
     LH_ASSERT_TRUE(f != NULL);
-    LH_ASSERT_EQ_INT(lh_points_read(f, "bbox.1.node", LH_FORMAT_NODE, NULL, &pts, msg, sizeof msg), LH_OK);
+    LH_ASSERT_EQ_INT(lh_points_read(f, "bbox.1.node", LH_FORMAT_NODE, NULL, &pts, &err), LH_OK);
     fclose(f);
     snprintf(path, sizeof path, "%s/triangle/bbox.1.ele", LH_TEST_DATA_DIR);
     f = fopen(path, "r");
     LH_ASSERT_TRUE(f != NULL);
-    LH_ASSERT_EQ_INT(lh_cells_read(f, "bbox.1.ele", pts.n, NULL, &cells, msg, sizeof msg), LH_OK);
+    LH_ASSERT_EQ_INT(lh_cells_read(f, "bbox.1.ele", pts.n, NULL, &cells, &err), LH_OK);
     fclose(f);
     LH_ASSERT_EQ_INT(cells.nv, 3);
     double area[12];
@@ -78,8 +79,8 @@ LH_TEST(an_existing_mesh_is_refined_with_its_area_bounds)
     lh_trimesh_free(m);
     /* a cover naming a point that does not exist */
     cells.v[0] = (lh_index)pts.n;
-    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, msg, sizeof msg), LH_ERR_INVALID_MESH);
-    LH_EXPECT_STREQ(msg, "the mesh to refine names a point that does not exist, or has an edge of three triangles");
+    LH_EXPECT_EQ_INT(lh_pslg_triangulate(&g, &o, &m, &err), LH_ERR_INVALID_MESH);
+    LH_EXPECT_STREQ(err.message, "the mesh to refine names a point that does not exist, or has an edge of three triangles");
     lh_cells_free(&cells);
     lh_points_free(&pts);
 }

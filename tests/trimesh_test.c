@@ -8,15 +8,15 @@ lh_trimesh *lh_test_mesh_checked(lh_test_state *lh_t_, const lh_pslg *g, const l
                                  const char *what)
 {
     lh_trimesh *m = NULL;
-    char msg[256] = "", cmsg[256] = "";
-    lh_status st = lh_pslg_triangulate(g, o, &m, msg, sizeof msg);
+    lh_error err, cerr;
+    lh_status st = lh_pslg_triangulate(g, o, &m, &err);
     if (st != LH_OK) {
-        LH_NOTE("%s: %s (%s)", what, lh_status_name(st), msg);
+        LH_NOTE("%s: %s (%s)", what, lh_status_name(st), err.message);
         LH_EXPECT_EQ_INT(st, LH_OK);
         return NULL;
     }
-    st = check(m, cmsg, sizeof cmsg);
-    if (st != LH_OK) LH_NOTE("%s: %s", what, cmsg);
+    st = check(m, &cerr);
+    if (st != LH_OK) LH_NOTE("%s: %s", what, cerr.message);
     LH_EXPECT_EQ_INT(st, LH_OK);
     return m;
 }

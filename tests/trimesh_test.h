@@ -23,9 +23,9 @@ static inline lh_status load(reader rd, const char *path, lh_pslg *g)
     return lh_test_pslg_file(rd, LH_TEST_DATA_DIR, path, g);
 }
 static inline lh_status load_text(const char *text, lh_pslg *g) { return lh_test_pslg_text(text, g); }
-static inline lh_status check(const lh_trimesh *m, char *msg, size_t size)
+static inline lh_status check(const lh_trimesh *m, lh_error *err)
 {
-    return lh_test_check_trimesh(m, msg, size);
+    return lh_test_check_trimesh(m, err);
 }
 static inline lh_trimesh *mesh_checked(lh_test_state *lh_t_, const lh_pslg *g, const lh_trimesh_options *o,
                                        const char *what)

@@ -19,9 +19,13 @@
  *     (lh_trimesh_stats_get); options by lh_<options>_default(&opt). The predicates
  *     are named for the predicate (lh_orient, lh_insphere) and the computations that
  *     make a handle for what they compute (lh_delaunay, lh_convex_hull).
- *   - Error detail beyond the status: the readers, the checks and the mesher write
- *     one line to a caller's buffer (char *msg, size_t msg_size; msg may be NULL;
- *     "" on success); lh_coords_validate names the offending coordinate's index.
+ *   - Error detail beyond the status: the functions that can say more than their
+ *     status (the readers, the checks, the mesher, lh_coords_validate) take an
+ *     lh_error *err as their last parameter. err may be NULL (no detail wanted);
+ *     otherwise it is written in full on every return: err->status is the returned
+ *     status, err->message one line ("" on success), err->line and err->column the
+ *     place in the input (0: none), err->index the item at fault (LH_ERROR_NO_INDEX:
+ *     none). Each function's comment says which fields it fills (see lh_error).
  *
  * Coordinate range (the "accepted range"):
  *   Every finite double is accepted, subnormals included: the exact stage of the
@@ -95,6 +99,29 @@ LH_API const char *lh_status_message(lh_status status);
 /* The enumerator's name, e.g. "LH_ERR_NONFINITE" (static storage, never NULL). */
 LH_API const char *lh_status_name(lh_status status);
 
+/* ---- error detail ---------------------------------------------------------------- */
+
+#define LH_ERROR_MESSAGE_MAX 512       /* bytes of lh_error.message, its NUL included */
+#define LH_ERROR_NO_INDEX ((size_t)-1) /* lh_error.index when no item is at fault    */
+
+/* The detail of a call's outcome, filled by the functions that take an lh_error *err
+ * (NULL: not wanted). On success: status LH_OK, message "", line = column = 0, index
+ * LH_ERROR_NO_INDEX. On failure status is the returned status and the others are
+ * filled as far as the function knows them:
+ *   - message: one line without a line end, cut to LH_ERROR_MESSAGE_MAX - 1 bytes; it
+ *     may be "" where the status says all (then print lh_status_message(status)).
+ *   - line, column: 1-based place in the input (the readers: both; lh_pslg_triangulate:
+ *     the line of the item at fault when the PSLG came from a reader, column 0); 0 when
+ *     there is none.
+ *   - index: lh_coords_validate: the flat index i*d+j of the first coordinate that is
+ *     NaN or infinite; LH_ERROR_NO_INDEX otherwise. */
+typedef struct lh_error {
+    lh_status status;
+    size_t line, column;
+    size_t index;
+    char message[LH_ERROR_MESSAGE_MAX];
+} lh_error;
+
 /* ---- indices ------------------------------------------------------------------- */
 
 /* Site, simplex and cell indices in every array of this API. 32 bits by default
@@ -136,10 +163,10 @@ typedef struct lh_allocator {
 
 /* Checks n points of dimension d (row-major, n*d doubles) against the accepted
  * range documented at the top of this header. Returns LH_OK, LH_ERR_NONFINITE
- * (with *bad_index, if bad_index is not NULL, set to the flat index i*d+j of the
- * first offending coordinate), LH_ERR_INVALID_ARGUMENT (xyz NULL with n > 0, or
- * d < 1) or LH_ERR_TOO_LARGE (n*d overflows size_t). */
-LH_API lh_status lh_coords_validate(int d, size_t n, const double *xyz, size_t *bad_index);
+ * (err->index the flat index i*d+j of the first offending coordinate, the message
+ * naming it), LH_ERR_INVALID_ARGUMENT (xyz NULL with n > 0, or d < 1) or
+ * LH_ERR_TOO_LARGE (n*d overflows size_t). err may be NULL. */
+LH_API lh_status lh_coords_validate(int d, size_t n, const double *xyz, lh_error *err);
 
 /* ---- exact predicates ------------------------------------------------------------ */
 
@@ -363,19 +390,20 @@ LH_API void lh_tri_free(lh_tri *t);
  * volume equals the convex hull's, exactly, so they tile it once (local conditions
  * alone admit coverings wound twice); every site is a vertex or an exact duplicate
  * of one. opt: only its allocator is used (NULL: malloc). Returns LH_OK,
- * LH_ERR_NOMEM, or LH_ERR_INVALID_MESH with a one-line reason in msg (msg may be NULL;
- * msg_size bytes); LH_ERR_INVALID_ARGUMENT for a NULL array with a nonzero count or a
- * bad allocator; LH_ERR_TOO_LARGE, with the reason in msg, for n or count beyond what
- * lh_index and size_t can count (the check's sizes would wrap around).
+ * LH_ERR_NOMEM, or LH_ERR_INVALID_MESH with a one-line reason in err->message (err
+ * may be NULL; no line or index); LH_ERR_INVALID_ARGUMENT for a NULL array with a
+ * nonzero count or a bad allocator; LH_ERR_TOO_LARGE, with the reason in
+ * err->message, for n or count beyond what lh_index and size_t can count (the check's
+ * sizes would wrap around).
  */
 LH_API lh_status lh_delaunay_check(int d, size_t n, const double *xyz, size_t count,
-                                   const lh_index *simplices, const lh_options *opt, char *msg,
-                                   size_t msg_size);
+                                   const lh_index *simplices, const lh_options *opt, lh_error *err);
 /* The same for a handle, also verifying its neighbour and hull arrays; for a
  * furthest-site triangulation the conditions are reversed (every interior facet
  * locally furthest-site Delaunay; sites that are not vertices inside the hull). A
- * failed condition is the library's fault here: LH_ERR_INTERNAL with the reason. */
-LH_API lh_status lh_tri_check(const lh_tri *t, char *msg, size_t msg_size);
+ * failed condition is the library's fault here: LH_ERR_INTERNAL with the reason in
+ * err->message (err may be NULL). */
+LH_API lh_status lh_tri_check(const lh_tri *t, lh_error *err);
 
 /*
  * lh_tri_complex: the Delaunay complex — simplices whose circumspheres coincide
@@ -571,10 +599,10 @@ LH_API lh_status lh_hull_measures(const lh_hull *h, const double *xyz, size_t n,
  * Readers of point files and writers of meshes (lib/src/io_*.c); they use the FILE the
  * caller opened and never print, seek or close it.
  *
- * Diagnostics: a reader that fails leaves ONE line in the caller's msg buffer,
+ * Diagnostics: a reader that fails leaves ONE line in err->message (lh_error),
  *     NAME:LINE:COL: expected WHAT, found WHAT-INSTEAD
- * where LINE and COL (1-based, COL counted in bytes) locate the offending token, or the
- * end of the line or of the input, e.g.
+ * where LINE and COL (1-based, COL counted in bytes; also in err->line and
+ * err->column) locate the offending token, or the end of the line or of the input, e.g.
  *     pts.txt:3:3: expected coordinate 2 of point 1 (a number), found 'abc'
  *     pts.txt:5:1: expected coordinate 1 of point 3, found the end of the input (3 points declared)
  * (a non-finite number reads "pts.txt:4:3: coordinate 2 of point 2 is 'nan': NaN and
@@ -647,8 +675,9 @@ typedef struct lh_points {
  * is QHULL, any other numbers COLUMNS (a two-integer line is COLUMNS after all when the
  * whole input fits in those 4 KiB, has exactly two numbers a line and does not hold
  * the declared d*n coordinates); an empty or unrecognised input is QHULL.
- * alloc may be NULL (malloc/free); msg (msg_size bytes, may be NULL) receives the
- * one-line diagnostic described above, "" on success.
+ * alloc may be NULL (malloc/free); err (may be NULL) receives the one-line
+ * diagnostic "NAME:LINE:COL: expected ..., found ..." in err->message and its place
+ * in err->line and err->column (lh_error).
  * Returns LH_OK with *out filled; or, with *out zeroed (lh_points_free accepts it):
  * LH_ERR_PARSE (malformed text), LH_ERR_DIMENSION (d outside 2..8), LH_ERR_NONFINITE,
  * LH_ERR_TOO_LARGE (a count above LH_READ_MAX_POINTS, or an array size that would
@@ -656,8 +685,7 @@ typedef struct lh_points {
  * out NULL, format unknown, or an allocator without hooks).
  */
 LH_API lh_status lh_points_read(FILE *f, const char *name, lh_format format,
-                                const lh_allocator *alloc, lh_points *out, char *msg,
-                                size_t msg_size);
+                                const lh_allocator *alloc, lh_points *out, lh_error *err);
 /* Frees the arrays of p (not p itself) and zeroes it; NULL or a zeroed p is a no-op. */
 LH_API void lh_points_free(lh_points *p);
 
@@ -682,8 +710,8 @@ typedef struct lh_cells {
  * (one field: 'i'). With n_points > 0 every index must name one of n_points points. Diagnostics and
  * statuses as lh_points_read ("NAME:LINE:COL: expected ..., found ...").
  */
-LH_API lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
-                               lh_cells *out, char *msg, size_t msg_size);
+LH_API lh_status lh_cells_read(FILE *f, const char *name, size_t n_points,
+                               const lh_allocator *alloc, lh_cells *out, lh_error *err);
 /* Frees c's array (not c) and zeroes it; NULL or a zeroed c is a no-op. */
 LH_API void lh_cells_free(lh_cells *c);
 
@@ -827,9 +855,9 @@ typedef struct lh_pslg {
  * even_odd is set.
  */
 LH_API lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
-                              char *msg, size_t msg_size);
+                              lh_error *err);
 LH_API lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
-                               char *msg, size_t msg_size);
+                               lh_error *err);
 /* Moves p's coordinates, attributes and markers into g, which has none (g->n == 0),
  * leaving p zeroed; p must have d = 2 and the same allocator hooks as g. g's segment
  * endpoints are renumbered from p's first_index, which g takes (Triangle numbers them
@@ -916,15 +944,16 @@ LH_API void lh_trimesh_options_default(lh_trimesh_options *opt);
  * (LH_ERR_INVALID_ARGUMENT), NaN or infinity (LH_ERR_NONFINITE), counts no lh_index
  * can number (n, segment_count or cover_count from LH_INDEX_MAX / 4 up:
  * LH_ERR_TOO_LARGE), LH_ERR_NOMEM.
- * msg (msg_size bytes, may be NULL) receives a one-line reason; when the PSLG came
- * from a reader it starts with the line of the item at fault and a colon ("17:
- * segment 3 crosses segment 5 (line 19)"), so "FILE:" + msg names the place. Items are
- * numbered as in the file (vertices from g->first_index, segments, holes and regions
- * from g->first_index + g->item_first_shift).
+ * err (may be NULL) receives a one-line reason in err->message; when the PSLG came
+ * from a reader and the reason names an item with a line, err->line is that line and
+ * the message starts with it and a colon ("17: segment 3 crosses segment 5 (line
+ * 19)"), so "FILE:" + message names the place. Items are numbered as in the file
+ * (vertices from g->first_index, segments, holes and regions from g->first_index +
+ * g->item_first_shift).
  */
 typedef struct lh_trimesh lh_trimesh;
 LH_API lh_status lh_pslg_triangulate(const lh_pslg *g, const lh_trimesh_options *opt,
-                                     lh_trimesh **out, char *msg, size_t msg_size);
+                                     lh_trimesh **out, lh_error *err);
 LH_API void lh_trimesh_free(lh_trimesh *m);
 
 /* Points: the PSLG's vertices first, with their indices (merged duplicates too), then
@@ -997,13 +1026,14 @@ LH_API int lh_triangle_scaled_edges(const double a[2], const double b[2], const 
  * counterclockwise with positive area; edges shared by at most two triangles; every subsegment an
  * edge; every edge on the boundary a subsegment (unless boundary_free); every edge
  * not a subsegment locally Delaunay (incircle, exact). Returns LH_OK, or
- * LH_ERR_INVALID_MESH with a reason in msg; LH_ERR_INVALID_ARGUMENT (a NULL array with a
- * count, a subsegment endpoint out of range, an allocator lacking alloc or free) or
- * LH_ERR_TOO_LARGE, the argument named in msg; LH_ERR_NOMEM.
+ * LH_ERR_INVALID_MESH with a reason in err->message (err may be NULL);
+ * LH_ERR_INVALID_ARGUMENT (a NULL array with a count, a subsegment endpoint out of
+ * range, an allocator lacking alloc or free) or LH_ERR_TOO_LARGE, the argument named
+ * in err->message; LH_ERR_NOMEM.
  */
 LH_API lh_status lh_cdt_check(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
                               size_t seg_count, const lh_index *segs, int boundary_free,
-                              const lh_allocator *alloc, char *msg, size_t msg_size);
+                              const lh_allocator *alloc, lh_error *err);
 
 #ifdef __cplusplus
 }

@@ -156,14 +156,13 @@ static lh_status read_header(cells_ctx *x)
     return LH_OK;
 }
 
-lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
-                        lh_cells *out, char *msg, size_t msg_size)
+static lh_status read_cells(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
+                            lh_cells *out, lh_error *err)
 {
-    if (msg && msg_size) msg[0] = 0;
     if (!out) return LH_ERR_INVALID_ARGUMENT;
     memset(out, 0, sizeof *out);
     if (!f || !lh__allocator_init(&out->alloc_, alloc)) return LH_ERR_INVALID_ARGUMENT;
-    lh__scan *s = lh__scan_open(f, 0, &out->alloc_, name ? name : "<input>", msg, msg_size);
+    lh__scan *s = lh__scan_open(f, 0, &out->alloc_, name ? name : "<input>", err);
     if (!s) {
         lh_cells_free(out);
         return LH_ERR_NOMEM;
@@ -183,4 +182,11 @@ lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_all
     lh__scan_close(s);
     if (st != LH_OK) lh_cells_free(out);
     return st;
+}
+
+lh_status lh_cells_read(FILE *f, const char *name, size_t n_points, const lh_allocator *alloc,
+                        lh_cells *out, lh_error *err)
+{
+    lh__error_clear(err);
+    return lh__error_done(err, read_cells(f, name, n_points, alloc, out, err));
 }

@@ -10,6 +10,7 @@
 #define LH_IO_INTERNAL_H
 
 #include "lh_alloc.h"
+#include "lh_error.h"
 #include "lifthull.h"
 
 #include <stdio.h>
@@ -56,8 +57,7 @@ typedef struct lh__scan {
     size_t line, col;
     size_t cr_col;  /* when c is '\n' right after '\r': the '\r''s column, else 0 */
     const char *name;
-    char *msg;
-    size_t msg_size;
+    lh_error *err;                     /* the caller's, may be NULL */
     lh_allocator al;                   /* what lh__scan_close frees it with */
     unsigned char head[LH__IO_PREFIX]; /* the bytes read ahead: pre points here */
     double attr[LH__READ_MAX_ATTR];    /* the readers' scratch: one item's attributes */
@@ -66,9 +66,9 @@ typedef struct lh__scan {
 /* Starts scanning f on a scanner allocated with al: the first pre_want bytes (at most
  * LH__IO_PREFIX) are read ahead into s->head, s->pre_len of them (a UTF-8 BOM there
  * is skipped). NULL when out of memory, with "NAME:1:1: out of memory for the input
- * buffer" in msg. */
+ * buffer" in err (may be NULL). */
 lh__scan *lh__scan_open(FILE *f, size_t pre_want, const lh_allocator *al, const char *name,
-                        char *msg, size_t msg_size);
+                        lh_error *err);
 /* Frees s (NULL: nothing). */
 void lh__scan_close(lh__scan *s);
 void lh__scan_advance(lh__scan *s);
@@ -83,12 +83,13 @@ int lh__starts_number(int c);
 /* Whether c, outside comments, is a text byte: printable ASCII or a blank. */
 int lh__is_text(int c);
 
-/* Writes "NAME:LINE:COL: expected WHAT, found FOUND[TAIL]" into the message buffer and
- * returns the status: st for a word or the end of the input or line, LH_ERR_IO for a
- * read error, LH_ERR_PARSE for a NUL, a non-text byte or a too long token. */
+/* Writes "NAME:LINE:COL: expected WHAT, found FOUND[TAIL]" into s->err (its message,
+ * line and column) and returns the status: st for a word or the end of the input or
+ * line, LH_ERR_IO for a read error, LH_ERR_PARSE for a NUL, a non-text byte or a too
+ * long token. */
 lh_status lh__expected(lh__scan *s, lh_status st, const lh__token *t, const char *what,
                        const char *tail);
-/* Writes "NAME:LINE:COL: TEXT" at t's position and returns st. */
+/* Writes "NAME:LINE:COL: TEXT" at t's position into s->err and returns st. */
 lh_status lh__fail_at(lh__scan *s, lh_status st, const lh__token *t, const char *text);
 
 /* A word that is a whole number for strtod: 1 and *x (possibly infinite or NaN), else 0. */

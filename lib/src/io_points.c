@@ -97,17 +97,15 @@ lh_status lh__push(lh__scan *s, lh__builder *b, const lh__token *at, const doubl
     return LH_OK;
 }
 
-lh_status lh_points_read(FILE *f, const char *name, lh_format format,
-                         const lh_allocator *alloc, lh_points *out, char *msg,
-                         size_t msg_size)
+static lh_status read_points(FILE *f, const char *name, lh_format format, const lh_allocator *alloc,
+                             lh_points *out, lh_error *err)
 {
-    if (msg && msg_size) msg[0] = 0;
     if (!out) return LH_ERR_INVALID_ARGUMENT;
     memset(out, 0, sizeof *out);
     if (!f || format < LH_FORMAT_AUTO || format > LH_FORMAT_COLUMNS) return LH_ERR_INVALID_ARGUMENT;
     if (!lh__allocator_init(&out->alloc_, alloc)) return LH_ERR_INVALID_ARGUMENT;
     if (!name) name = "<input>";
-    lh__scan *s = lh__scan_open(f, LH__IO_PREFIX, &out->alloc_, name, msg, msg_size);
+    lh__scan *s = lh__scan_open(f, LH__IO_PREFIX, &out->alloc_, name, err);
     if (!s) {
         lh_points_free(out);
         return LH_ERR_NOMEM;
@@ -122,4 +120,11 @@ lh_status lh_points_read(FILE *f, const char *name, lh_format format,
     lh__scan_close(s);
     if (st != LH_OK) lh_points_free(out);
     return st;
+}
+
+lh_status lh_points_read(FILE *f, const char *name, lh_format format, const lh_allocator *alloc,
+                         lh_points *out, lh_error *err)
+{
+    lh__error_clear(err);
+    return lh__error_done(err, read_points(f, name, format, alloc, out, err));
 }

@@ -45,10 +45,8 @@ void lh_pslg_free(lh_pslg *g)
     memset(g, 0, sizeof *g);
 }
 
-lh_status lh__pslg_start(FILE *f, const lh_allocator *alloc, lh_pslg *out, char *msg,
-                         size_t msg_size)
+lh_status lh__pslg_start(FILE *f, const lh_allocator *alloc, lh_pslg *out)
 {
-    if (msg && msg_size) msg[0] = 0;
     if (!out) return LH_ERR_INVALID_ARGUMENT;
     memset(out, 0, sizeof *out);
     if (!f || !lh__allocator_init(&out->alloc_, alloc)) {
@@ -58,10 +56,9 @@ lh_status lh__pslg_start(FILE *f, const lh_allocator *alloc, lh_pslg *out, char 
     return LH_OK;
 }
 
-lh__scan *lh__pslg_scan_open(FILE *f, lh_pslg *out, const char *name, char *msg,
-                             size_t msg_size)
+lh__scan *lh__pslg_scan_open(FILE *f, lh_pslg *out, const char *name, lh_error *err)
 {
-    lh__scan *s = lh__scan_open(f, LH__PSLG_PRE, &out->alloc_, name ? name : "<input>", msg, msg_size);
+    lh__scan *s = lh__scan_open(f, LH__PSLG_PRE, &out->alloc_, name ? name : "<input>", err);
     if (!s) lh_pslg_free(out);
     return s;
 }
@@ -380,12 +377,12 @@ static lh_status read_poly(poly_ctx *x)
     return lh__expected(s, LH_ERR_PARSE, &t, what, NULL);
 }
 
-lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
-                       char *msg, size_t msg_size)
+static lh_status read_poly_file(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
+                                lh_error *err)
 {
-    lh_status st = lh__pslg_start(f, alloc, out, msg, msg_size);
+    lh_status st = lh__pslg_start(f, alloc, out);
     if (st != LH_OK) return st;
-    lh__scan *s = lh__pslg_scan_open(f, out, name, msg, msg_size);
+    lh__scan *s = lh__pslg_scan_open(f, out, name, err);
     if (!s) return LH_ERR_NOMEM;
     poly_ctx x = {s, out, {"vertex", "vertices", 0, 0}, {"segment", "segments", 0, 0},
                   {"hole", "holes", 0, 0}, {"region", "regions", 0, 0}, 0, 0, 0};
@@ -396,4 +393,11 @@ lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_
         return st;
     }
     return LH_OK;
+}
+
+lh_status lh_poly_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
+                       lh_error *err)
+{
+    lh__error_clear(err);
+    return lh__error_done(err, read_poly_file(f, name, alloc, out, err));
 }

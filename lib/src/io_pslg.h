@@ -24,16 +24,14 @@ lh_status lh__pslg_room(lh__scan *s, const lh_allocator *a, const lh__pslg_col *
                         int ncols, size_t count, size_t declared, size_t *cap,
                         const lh__token *at, const char *noun, long long number);
 
-/* The readers' start: msg "", *out zeroed with its allocator hooks. Returns
+/* The readers' start: *out zeroed with its allocator hooks. Returns
  * LH_ERR_INVALID_ARGUMENT for a NULL f or out or hooks without alloc or free. */
-lh_status lh__pslg_start(FILE *f, const lh_allocator *alloc, lh_pslg *out, char *msg,
-                         size_t msg_size);
+lh_status lh__pslg_start(FILE *f, const lh_allocator *alloc, lh_pslg *out);
 
 /* A scanner on f with out's allocator (lh__scan_open): the first LH__PSLG_PRE bytes
  * are read ahead so that a UTF-8 BOM is skipped. NULL when out of memory: then out
- * is freed (lh_pslg_free) and msg says so. */
+ * is freed (lh_pslg_free) and err says so. */
 #define LH__PSLG_PRE 3
-lh__scan *lh__pslg_scan_open(FILE *f, lh_pslg *out, const char *name, char *msg,
-                             size_t msg_size);
+lh__scan *lh__pslg_scan_open(FILE *f, lh_pslg *out, const char *name, lh_error *err);
 
 #endif

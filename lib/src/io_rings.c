@@ -227,12 +227,12 @@ static lh_status read_rings(rings_ctx *x)
     return lh__expected(x->s, LH_ERR_PARSE, &t, what, NULL);
 }
 
-lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
-                        char *msg, size_t msg_size)
+static lh_status read_rings_file(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
+                                 lh_error *err)
 {
-    lh_status st = lh__pslg_start(f, alloc, out, msg, msg_size);
+    lh_status st = lh__pslg_start(f, alloc, out);
     if (st != LH_OK) return st;
-    lh__scan *s = lh__pslg_scan_open(f, out, name, msg, msg_size);
+    lh__scan *s = lh__pslg_scan_open(f, out, name, err);
     if (!s) return LH_ERR_NOMEM;
     rings_ctx x = {s, out, 0, 0};
     st = read_rings(&x);
@@ -243,4 +243,11 @@ lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh
     }
     out->even_odd = 1;
     return LH_OK;
+}
+
+lh_status lh_rings_read(FILE *f, const char *name, const lh_allocator *alloc, lh_pslg *out,
+                        lh_error *err)
+{
+    lh__error_clear(err);
+    return lh__error_done(err, read_rings_file(f, name, alloc, out, err));
 }

@@ -30,11 +30,12 @@ static inline int fetch(lh__scan *s)
 }
 
 lh__scan *lh__scan_open(FILE *f, size_t pre_want, const lh_allocator *al, const char *name,
-                        char *msg, size_t msg_size)
+                        lh_error *err)
 {
     lh__scan *s = lh__alloc(al, sizeof *s);
     if (!s) {
-        if (msg && msg_size) snprintf(msg, msg_size, "%s:1:1: out of memory for the input buffer", name);
+        if (err) err->line = err->column = 1;
+        lh__error_say(err, LH_ERR_NOMEM, "%s:1:1: out of memory for the input buffer", name);
         return NULL;
     }
     memset(s, 0, offsetof(lh__scan, head));
@@ -49,8 +50,7 @@ lh__scan *lh__scan_open(FILE *f, size_t pre_want, const lh_allocator *al, const 
     /* The UTF-8 encoding of U+FEFF, which some editors put first (RFC 3629, 6). */
     if (len >= 3 && s->head[0] == 0xEF && s->head[1] == 0xBB && s->head[2] == 0xBF) s->pre_pos = 3;
     s->name = name;
-    s->msg = msg;
-    s->msg_size = msg_size;
+    s->err = err;
     s->line = 1;
     s->col = 1;
     s->c = fetch(s);
@@ -191,9 +191,10 @@ static void describe(const lh__token *t, char *buf, size_t size)
 
 lh_status lh__fail_at(lh__scan *s, lh_status st, const lh__token *t, const char *text)
 {
-    if (s->msg && s->msg_size)
-        snprintf(s->msg, s->msg_size, "%s:%zu:%zu: %s", s->name, t->line, t->col, text);
-    return st;
+    if (!s->err) return st;
+    s->err->line = t->line;
+    s->err->column = t->col;
+    return lh__error_say(s->err, st, "%s:%zu:%zu: %s", s->name, t->line, t->col, text);
 }
 
 lh_status lh__expected(lh__scan *s, lh_status st, const lh__token *t, const char *what,

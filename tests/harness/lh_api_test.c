@@ -7,11 +7,11 @@
 
 lh_status lh_test_pslg_file(lh_test_pslg_reader rd, const char *dir, const char *path, lh_pslg *g)
 {
-    char full[512], msg[256];
+    char full[512];
     snprintf(full, sizeof full, "%s/%s", dir, path);
     FILE *f = fopen(full, "rb");
     if (!f) return LH_ERR_IO;
-    lh_status st = rd(f, path, NULL, g, msg, sizeof msg);
+    lh_status st = rd(f, path, NULL, g, NULL);
     fclose(f);
     return st;
 }
@@ -20,17 +20,16 @@ lh_status lh_test_pslg_text(const char *text, lh_pslg *g)
 {
     FILE *f = lh_test_file(text, strlen(text));
     if (!f) return LH_ERR_IO;
-    char msg[256];
-    lh_status st = lh_poly_read(f, "t.poly", NULL, g, msg, sizeof msg);
+    lh_status st = lh_poly_read(f, "t.poly", NULL, g, NULL);
     fclose(f);
     return st;
 }
 
-lh_status lh_test_check_trimesh(const lh_trimesh *m, char *msg, size_t size)
+lh_status lh_test_check_trimesh(const lh_trimesh *m, lh_error *err)
 {
     return lh_cdt_check(lh_trimesh_point_count(m), lh_trimesh_points(m), lh_trimesh_triangle_count(m),
                             lh_trimesh_triangles(m), lh_trimesh_segment_count(m), lh_trimesh_segments(m), 0, NULL,
-                            msg, size);
+                            err);
 }
 
 int lh_test_same_tri(const lh_tri *a, const lh_tri *b)

@@ -37,12 +37,12 @@ typedef struct lh_test_biggest {
 lh_allocator lh_test_biggest_allocator(lh_test_biggest *b);
 
 /* A PSLG reader (lh_poly_read, lh_rings_read, ...). */
-typedef lh_status (*lh_test_pslg_reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, char *, size_t);
+typedef lh_status (*lh_test_pslg_reader)(FILE *, const char *, const lh_allocator *, lh_pslg *, lh_error *);
 /* Reads dir/path with rd: the reader's status (LH_ERR_IO when it cannot be opened). */
 lh_status lh_test_pslg_file(lh_test_pslg_reader rd, const char *dir, const char *path, lh_pslg *g);
 /* Reads text as a .poly file. */
 lh_status lh_test_pslg_text(const char *text, lh_pslg *g);
 /* lh_cdt_check of a mesh with its subsegments, boundary edges checked. */
-lh_status lh_test_check_trimesh(const lh_trimesh *m, char *msg, size_t size);
+lh_status lh_test_check_trimesh(const lh_trimesh *m, lh_error *err);
 
 #endif

@@ -14,15 +14,15 @@
 
 static int read_points(const char *file, lh_format fmt, lh_points *p)
 {
-    char msg[512];
+    lh_error err;
     FILE *f = strcmp(file, "-") ? fopen(file, "rb") : stdin;
     if (!f) {
         perror(file);
         return 0;
     }
-    lh_status st = lh_points_read(f, file, fmt, NULL, p, msg, sizeof msg);
+    lh_status st = lh_points_read(f, file, fmt, NULL, p, &err);
     if (f != stdin) fclose(f);
-    if (st != LH_OK) fprintf(stderr, "%s [%s]\n", msg, lh_status_name(st));
+    if (st != LH_OK) fprintf(stderr, "%s [%s]\n", err.message, lh_status_name(st));
     return st == LH_OK;
 }
 
