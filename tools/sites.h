@@ -1,6 +1,6 @@
 /*
  * sites.h — seeded random numbers and exactly cospherical integer sites for the tool
- * (`lifthull points`) and the tests (test_pred_oracle); not part of the library (libc
+ * (`lifthull points`) and the tests (their harness); not part of the library (libc
  * and libm only, compiled into each program that uses it). C, callable from C++
  * (bench/).
  */
