@@ -175,7 +175,6 @@ static void note_points(lh_test_state *lh_t_, const char *label, const double *c
 /* One case under check: its points, the oracle's and the library's answers, and
  * whether (and where) a comparison failed. */
 typedef struct case_check {
-    lh_test_state *t;
     lh_pred *ctx;
     oracle_ws *o;
     rng *r;
@@ -213,18 +212,16 @@ static case_lots draw_lots(case_check *k, const pcase *c)
 }
 
 /* The test's own two oracles must agree. */
-static void check_oracle_ref(case_check *k)
+static void check_oracle_ref(lh_test_state *lh_t_, case_check *k)
 {
-    lh_test_state *lh_t_ = k->t;
     const int oracle = k->oracle, oracle_mpq = oracle_ref_sign(k->o, k->kind, k->D, k->n, k->pts);
     CASE_EQ(k, oracle, oracle_mpq);
     if (k->bad) k->what = "mpq cross-check of the oracle";
 }
 
 /* The plain predicate equals the oracle; counts its exact-stage exits. */
-static void check_plain(case_check *k, fam_stats *fs)
+static void check_plain(lh_test_state *lh_t_, case_check *k, fam_stats *fs)
 {
-    lh_test_state *lh_t_ = k->t;
     lh_pred_counters before, after;
     lh_pred_counters_get(k->ctx, &before);
     const int oracle = k->oracle, lib = lib_plain(k->ctx, k->kind, k->D, k->pts);
@@ -236,9 +233,8 @@ static void check_plain(case_check *k, fam_stats *fs)
 }
 
 /* The SoS variant answers +1 or -1, and the oracle's sign when that is nonzero. */
-static void check_sos_value(case_check *k)
+static void check_sos_value(lh_test_state *lh_t_, case_check *k)
 {
-    lh_test_state *lh_t_ = k->t;
     const int oracle = k->oracle, sos = lib_sos(k->ctx, k->kind, k->D, k->pts);
     k->sos = sos;
     int sos_is_unit = sos == 1 || sos == -1;
@@ -248,9 +244,8 @@ static void check_sos_value(case_check *k)
 }
 
 /* An oracle zero among distinct points: SoS equals the reference perturbation. */
-static void check_sos_reference(case_check *k, fam_stats *fs)
+static void check_sos_reference(lh_test_state *lh_t_, case_check *k, fam_stats *fs)
 {
-    lh_test_state *lh_t_ = k->t;
     /* o->X still holds this case's points (oracle_sign in check_case) */
     fs->sosref_checked++;
     const int sos = k->sos;
@@ -260,9 +255,8 @@ static void check_sos_reference(case_check *k, fam_stats *fs)
 }
 
 /* Exchanging two arguments negates both predicates. */
-static void check_exchange(case_check *k)
+static void check_exchange(lh_test_state *lh_t_, case_check *k)
 {
-    lh_test_state *lh_t_ = k->t;
     const int n = k->n;
     const double *sw[MAXN];
     memcpy(sw, k->pts, sizeof k->pts);
@@ -282,9 +276,8 @@ static void check_exchange(case_check *k)
 }
 
 /* An arbitrary permutation multiplies both predicates by its sign. */
-static void check_permutation(case_check *k)
+static void check_permutation(lh_test_state *lh_t_, case_check *k)
 {
-    lh_test_state *lh_t_ = k->t;
     const int n = k->n;
     const double *pm[MAXN];
     int perm[MAXN], psign = 1;
@@ -317,9 +310,8 @@ static void check_permutation(case_check *k)
 /* Scaling every coordinate by 2^e (exactly) multiplies each column of the perturbed
  * matrix by a positive constant and keeps the lexicographic order: the SoS sign must
  * not change. The exponent is drawn even when an earlier check failed. */
-static void check_scaling(case_check *k)
+static void check_scaling(lh_test_state *lh_t_, case_check *k)
 {
-    lh_test_state *lh_t_ = k->t;
     double moved[MAXN][MAXD];
     const double *mv[MAXN];
     int e = rng_below(k->r, 2) ? rng_int(k->r, 1, 40) : -rng_int(k->r, 1, 40), exact = 1;
@@ -344,9 +336,8 @@ static void check_scaling(case_check *k)
 
 /* orient only: an exact translation is a column operation with the column of ones and
  * changes neither sign. */
-static void check_translation(case_check *k)
+static void check_translation(lh_test_state *lh_t_, case_check *k)
 {
-    lh_test_state *lh_t_ = k->t;
     const int D = k->D;
     double moved[MAXN][MAXD], t[MAXD];
     const double *mv[MAXN];
@@ -381,20 +372,19 @@ static void check_translation(case_check *k)
 
 /* The exchange, permutation, scaling and (orient) translation checks, in that order;
  * the permutation runs even after a failed exchange. */
-static void check_symmetries(case_check *k, fam_stats *fs)
+static void check_symmetries(lh_test_state *lh_t_, case_check *k, fam_stats *fs)
 {
     fs->perm_checked++;
-    check_exchange(k);
-    check_permutation(k);
-    check_scaling(k);
-    if (!k->bad && k->kind == ORIENT) check_translation(k);
+    check_exchange(lh_t_, k);
+    check_permutation(lh_t_, k);
+    check_scaling(lh_t_, k);
+    if (!k->bad && k->kind == ORIENT) check_translation(lh_t_, k);
 }
 
 /* The (n+1)-subset identity with one more point q (a midpoint, a reflection or a
  * one-ulp neighbour of the case's points). */
-static void check_radon(case_check *k, fam_stats *fs)
+static void check_radon(lh_test_state *lh_t_, case_check *k, fam_stats *fs)
 {
-    lh_test_state *lh_t_ = k->t;
     const int D = k->D, n = k->n;
     double q[MAXD];
     int qa = rng_below(k->r, n), qb = rng_below(k->r, n - 1), how = rng_below(k->r, 3);
@@ -437,23 +427,23 @@ static void check_radon(case_check *k, fam_stats *fs)
 static int check_case(lh_test_state *lh_t_, lh_pred *ctx, oracle_ws *o, rng *r,
                       const pcase *c, const run_info *ri, fam_stats *fs)
 {
-    case_check k = {.t = lh_t_, .ctx = ctx, .o = o, .r = r, .kind = c->kind, .D = c->D,
+    case_check k = {.ctx = ctx, .o = o, .r = r, .kind = c->kind, .D = c->D,
                     .n = c->n, .what = ""};
     for (int i = 0; i < k.n; i++) k.pts[i] = c->p[i];
     k.oracle = oracle_sign(o, k.kind, k.D, k.n, k.pts);
     const case_lots lots = draw_lots(&k, c);
-    if (lots.ref) check_oracle_ref(&k);
+    if (lots.ref) check_oracle_ref(lh_t_, &k);
     fs->cases++;
     fs->zeros += k.oracle == 0;
     fs->pos += k.oracle > 0;
     fs->neg += k.oracle < 0;
     if (naive_sign(k.kind, k.D, k.n, k.pts) != k.oracle) fs->naive_wrong++;
-    check_plain(&k, fs);
+    check_plain(lh_t_, &k, fs);
     k.distinct = all_distinct(k.pts, k.n, k.D);
-    if (!k.bad) check_sos_value(&k);
-    if (!k.bad && k.oracle == 0 && k.distinct && lots.sosref) check_sos_reference(&k, fs);
-    if (!k.bad && k.distinct && lots.perm) check_symmetries(&k, fs);
-    if (!k.bad && k.distinct && lots.radon) check_radon(&k, fs);
+    if (!k.bad) check_sos_value(lh_t_, &k);
+    if (!k.bad && k.oracle == 0 && k.distinct && lots.sosref) check_sos_reference(lh_t_, &k, fs);
+    if (!k.bad && k.distinct && lots.perm) check_symmetries(lh_t_, &k, fs);
+    if (!k.bad && k.distinct && lots.radon) check_radon(lh_t_, &k, fs);
     if (k.bad) {
         LH_NOTE("%s_%d failed (%s): test seed %#llx, case %ld, family %s, variant %d, "
                 "oracle %d; rerun with LH_ORACLE_SEED=%#llx LH_ORACLE_CASE=%ld",

@@ -393,8 +393,7 @@ std::string g17(double v) {
   return buf;
 }
 
-void write_triangle_files(const std::string &base, const Pslg &g, CDT &cdt, const std::vector<Vh> &vh) {
-  (void)vh;
+void write_triangle_files(const std::string &base, const Pslg &g, CDT &cdt) {
   // input vertices keep their indices; the mesher's new vertices follow
   Index next = g.pts.size();
   std::vector<std::array<double, 2>> extra;
@@ -516,20 +515,12 @@ int parse_args(int argc, char **argv, Args &a) {
   return -1;
 }
 
-Pslg read_input(const std::string &file) {
-  if (ends_with(file, ".poly")) return read_poly(file);
-  if (ends_with(file, ".json")) return read_rings(file);
-  if (ends_with(file, ".edg")) return read_edg(file);
-  die("FILE must end in .poly, .json or .edg: " + file);
-}
-
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+struct Times { Clock::time_point t0, t1, t2; };  // before and after the construction, the domain
 
-// cdt mode: the domain's triangles as sorted input indices, sorted; t0..t2 bracket
-// the construction and the domain marking.
-int run_cdt(const Args &a, const Pslg &g, CDT &cdt, const std::vector<Vh> &vh, Clock::time_point t0,
-            Clock::time_point t1, Clock::time_point t2) {
+// cdt mode: the domain's triangles as sorted input indices, sorted.
+int run_cdt(const Args &a, const Pslg &g, CDT &cdt, const Times &tm) {
   std::vector<std::array<Index, 3>> tris;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->is_in_domain()) continue;
@@ -545,16 +536,15 @@ int run_cdt(const Args &a, const Pslg &g, CDT &cdt, const std::vector<Vh> &vh, C
   std::fwrite(out.data(), 1, out.size(), stdout);
   if (a.timing)
     std::cerr << "oracle_cgal_cdt: cdt vertices=" << g.pts.size() << " segments=" << g.segs.size()
-              << " triangles=" << tris.size() << " time_cdt=" << seconds(t0, t1)
-              << " s time_domain=" << seconds(t1, t2) << " s\n";
+              << " triangles=" << tris.size() << " time_cdt=" << seconds(tm.t0, tm.t1)
+              << " s time_domain=" << seconds(tm.t1, tm.t2) << " s\n";
   if (!a.poly_out.empty()) write_poly(a.poly_out, g, cdt);
-  if (!a.write_base.empty()) write_triangle_files(a.write_base, g, cdt, vh);
+  if (!a.write_base.empty()) write_triangle_files(a.write_base, g, cdt);
   return 0;
 }
 
 // mesh mode: Delaunay_mesher_2 on the marked domain, then its counts and smallest angle.
-int run_mesh(const Args &a, const Pslg &g, CDT &cdt, const std::vector<Vh> &vh, Clock::time_point t0,
-             Clock::time_point t1, Clock::time_point t2) {
+int run_mesh(const Args &a, const Pslg &g, CDT &cdt, const std::vector<Vh> &vh, const Times &tm) {
   using Criteria = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
   CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(a.bound, a.size));
   mesher.init(true);  // the domain as marked above
@@ -571,15 +561,15 @@ int run_mesh(const Args &a, const Pslg &g, CDT &cdt, const std::vector<Vh> &vh, 
               static_cast<std::size_t>(cdt.number_of_vertices()), n ? amin : 0.0);
   if (a.timing)
     std::cerr << "oracle_cgal_cdt: mesh B=" << a.bound << " S=" << a.size << " triangles=" << n
-              << " time_cdt=" << seconds(t0, t1) << " s time_refine=" << seconds(t2, t3)
-              << " s time_total=" << seconds(t0, t3) << " s\n";
+              << " time_cdt=" << seconds(tm.t0, tm.t1) << " s time_refine=" << seconds(tm.t2, t3)
+              << " s time_total=" << seconds(tm.t0, t3) << " s\n";
   if (!a.write_base.empty()) {
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
       // the mesher's new vertices carry default (or copied) info: mark them unnumbered
       Index i = v->info();
       if (i >= g.pts.size() || vh[i] != Vh(v)) v->info() = kNone;
     }
-    write_triangle_files(a.write_base, g, cdt, vh);
+    write_triangle_files(a.write_base, g, cdt);
   }
   return 0;
 }
@@ -590,19 +580,23 @@ int main(int argc, char **argv) {
   Args a;
   const int status = parse_args(argc, argv, a);
   if (status >= 0) return status;
-  const Pslg g = read_input(a.file);
+  Pslg g;
+  if (ends_with(a.file, ".poly")) g = read_poly(a.file);
+  else if (ends_with(a.file, ".json")) g = read_rings(a.file);
+  else if (ends_with(a.file, ".edg")) g = read_edg(a.file);
+  else die("FILE must end in .poly, .json or .edg: " + a.file);
 
   CDT cdt;
   std::vector<Vh> vh;
-  auto t0 = Clock::now();
+  Times tm{Clock::now(), {}, {}};
   try {
     build(g, cdt, vh, a.convex);
   } catch (const CDT::Intersection_of_constraints_exception &) {
     std::cerr << "oracle_cgal_cdt: two segments cross (CGAL Intersection_of_constraints_exception)\n";
     return 3;
   }
-  auto t1 = Clock::now();
+  tm.t1 = Clock::now();
   mark_domain(g, cdt);
-  auto t2 = Clock::now();
-  return a.mode == "cdt" ? run_cdt(a, g, cdt, vh, t0, t1, t2) : run_mesh(a, g, cdt, vh, t0, t1, t2);
+  tm.t2 = Clock::now();
+  return a.mode == "cdt" ? run_cdt(a, g, cdt, tm) : run_mesh(a, g, cdt, vh, tm);
 }
