@@ -124,8 +124,8 @@ static lh_status seed_split(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_ind
 /* Seed the cavity of a free point: the triangle holding p, reached from start (in
  * a straight line from r->origin when set). Sets r->result to LH__M2_OUTSIDE,
  * LH__M2_BLOCKED or LH__M2_DUPLICATE instead when p is no new interior point. */
-static lh_status seed_free(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index start,
-                           uint32_t e, lh__m2_ins *r)
+static lh_status seed_free(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index start, uint32_t e,
+                           lh__m2_ins *r)
 {
     lh_index blocked;
     const lh_index t = r->origin ? lh__m2_walk_line(m, start, r->origin, p, &blocked)
@@ -150,7 +150,7 @@ static lh_status seed_free(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_inde
 /* Add p as a vertex and fan it over the checked cavity; a split subsegment
  * becomes a-p (split itself) and p-b (a new subsegment). */
 static lh_status add_and_fan(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index split,
-                        uint32_t e, lh__m2_ins *r)
+                             uint32_t e, lh__m2_ins *r)
 {
     lh_status st;
     int bad;
@@ -183,8 +183,7 @@ lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_i
     r->vertex = -1;
     lh__m2_cavity_clear(c);
     const uint32_t e = lh__m2_new_epoch(m);
-    lh_status st = split >= 0 ? seed_split(m, c, p, split, e, r)
-                              : seed_free(m, c, p, start, e, r);
+    lh_status st = split >= 0 ? seed_split(m, c, p, split, e, r) : seed_free(m, c, p, start, e, r);
     if (st != LH_OK || r->result != LH__M2_INSERTED) return st;
     if ((st = grow_cavity(m, c, p, split, e, r)) != LH_OK) return st;
     if (r->enc_count) {

@@ -156,7 +156,8 @@ static void check_fixture(lh_test_state *lh_t_, const fixture *f)
 
 LH_TEST(rings_every_fixture)
 {
-    for (size_t k = 0; k < LH_COUNT(fixtures) && !LH_FAILED(); k++) check_fixture(lh_t_, &fixtures[k]);
+    for (size_t k = 0; k < LH_COUNT(fixtures) && !LH_FAILED(); k++)
+        check_fixture(lh_t_, &fixtures[k]);
 }
 #endif
 
