@@ -62,45 +62,50 @@ long long hull_area2(const grid *v, size_t n)
 
 const double angles[8] = {0, 20, 25, 30, 33, 0, 20, 30};
 
-void decode(const uint8_t *data, size_t size, input *in)
+/* The leading bytes: flags, scale exponent, vertex and segment counts, ring. */
+typedef struct header {
+    unsigned f0, f1, f2, kb, nvb, nsb, ring;
+} header;
+
+static const double areas[4] = {0, 0.5, 2, 8};
+
+/* The options and the frame (scale, offset) the header's bits choose. */
+static void decode_options(const header *h, input *in)
 {
-    src s = {data, size, 0};
-    memset(in, 0, sizeof *in);
-    const unsigned f0 = get(&s), f1 = get(&s), f2 = get(&s), kb = get(&s), nvb = get(&s),
-                   nsb = get(&s), ring = get(&s);
-    in->fail_mode = f0 >> 7;
-    in->fail_pick = get(&s) << 8;
-    in->fail_pick |= get(&s);
-    const int k = (int8_t)kb / 2; /* 2^-64 .. 2^63 */
+    const unsigned f0 = h->f0, f1 = h->f1, f2 = h->f2;
+    const int k = (int8_t)h->kb / 2; /* 2^-64 .. 2^63 */
     const int mode = f2 & 3;
     in->scale = mode & 1 ? ldexp(1.0, k) : 1;
     in->off = mode & 2 ? (f2 & 4 ? 0x1p40 : 1e6) : 0;
-    lh_pslg *g = &in->g;
     lh_trimesh_options *o = &in->o;
     lh_trimesh_options_default(o);
-    g->even_odd = f0 & 1;
+    in->g.even_odd = f0 & 1;
     o->convex_hull = (f0 >> 1) & 1;
     o->conforming = (f0 >> 2) & 1;
-    const int noncrossing = (f0 >> 3) & 1;
     o->min_angle = angles[(f0 >> 4) & 7];
     const int bs = f1 & 3;
     o->boundary_steiner = bs < 2 ? 1 : bs == 2 ? 0 : -1;
     const double unit = in->scale * in->scale; /* areas scale with 4^k */
-    static const double areas[4] = {0, 0.5, 2, 8};
     o->max_area = areas[(f1 >> 2) & 3] * unit;
     const int ms = (f1 >> 4) & 3;
-    o->max_steiner = ms == 1 ? (size_t)(kb & 15) : ms == 2 ? 64 : 5000;
+    o->max_steiner = ms == 1 ? (size_t)(h->kb & 15) : ms == 2 ? 64 : 5000;
     o->region_areas = (f1 >> 6) & 1;
     o->region_attributes = f1 >> 7;
-    o->split_crossings = ring >> 7;
+    o->split_crossings = h->ring >> 7;
     o->smooth = (int)(in->fail_pick >> 14); /* 0..3 passes */
+}
 
-    const size_t n = 3 + nvb % (MAXV - 2);
+/* n vertices on the grid [-8, 8]^2, counting repeats; with an attribute each when
+ * f2's top bit is set. */
+static void decode_vertices(src *s, const header *h, input *in)
+{
+    lh_pslg *g = &in->g;
+    const size_t n = 3 + h->nvb % (MAXV - 2);
     g->n = n;
     g->xy = in->xy;
     for (size_t i = 0; i < n; i++) {
-        in->v[i].x = (long long)(get(&s) % 17) - 8;
-        in->v[i].y = (long long)(get(&s) % 17) - 8;
+        in->v[i].x = (long long)(get(s) % 17) - 8;
+        in->v[i].y = (long long)(get(s) % 17) - 8;
         in->xy[2 * i] = ((double)in->v[i].x + in->off) * in->scale;
         in->xy[2 * i + 1] = ((double)in->v[i].y + in->off) * in->scale;
         in->attr[i] = (double)i;
@@ -110,20 +115,28 @@ void decode(const uint8_t *data, size_t size, input *in)
                 break;
             }
     }
-    if (f2 >> 7) {
+    if (h->f2 >> 7) {
         g->attr_count = 1;
         g->attr = in->attr;
     }
-    /* segments: a ring through the first r vertices, then chosen pairs */
+}
+
+/* Segments: a ring through the first r vertices, then chosen pairs; a pair crossing
+ * an earlier segment is dropped when f0 asks for a noncrossing input. */
+static void decode_segments(src *s, const header *h, input *in)
+{
+    lh_pslg *g = &in->g;
+    const size_t n = g->n;
+    const int noncrossing = (h->f0 >> 3) & 1;
     size_t ns = 0;
-    const size_t r = (ring & 63) < n ? (ring & 63) : n, extra = nsb % 61;
+    const size_t r = (h->ring & 63) < n ? (h->ring & 63) : n, extra = h->nsb % 61;
     for (size_t i = 0; i < r + extra; i++) {
         lh_index a, b;
         if (i < r) {
             a = (lh_index)i, b = (lh_index)((i + 1) % r);
         } else {
-            a = (lh_index)(get(&s) % n);
-            b = (lh_index)(get(&s) % n);
+            a = (lh_index)(get(s) % n);
+            b = (lh_index)(get(s) % n);
         }
         int c = 0;
         for (size_t j = 0; j < ns && !c; j++)
@@ -135,25 +148,42 @@ void decode(const uint8_t *data, size_t size, input *in)
     }
     g->segment_count = ns;
     g->segments = ns ? in->seg : NULL;
-    if (ring & 64) { /* as from a reader: numbered from 1, each segment with its line */
+    if (h->ring & 64) { /* as from a reader: numbered from 1, each segment with its line */
         g->first_index = 1;
         for (size_t i = 0; i < ns; i++) in->seg_line[i] = 100 + 2 * i;
         g->segment_line = ns ? in->seg_line : NULL;
     }
-    g->hole_count = (f2 >> 3) & 3;
+}
+
+/* Hole and region points on the half-integer grid, regions with an attribute and an
+ * area bound (or none). */
+static void decode_holes_regions(src *s, const header *h, input *in)
+{
+    lh_pslg *g = &in->g;
+    const double unit = in->scale * in->scale;
+    g->hole_count = (h->f2 >> 3) & 3;
     g->holes = g->hole_count ? in->holes : NULL;
     for (size_t i = 0; i < 2 * g->hole_count; i++)
-        in->holes[i] = ((double)(get(&s) % 33) / 2 - 8 + in->off) * in->scale;
-    g->region_count = (f2 >> 5) & 3;
+        in->holes[i] = ((double)(get(s) % 33) / 2 - 8 + in->off) * in->scale;
+    g->region_count = (h->f2 >> 5) & 3;
     g->regions = g->region_count ? in->regions : NULL;
     for (size_t i = 0; i < g->region_count; i++) {
         double *q = in->regions + 4 * i;
-        q[0] = ((double)(get(&s) % 33) / 2 - 8 + in->off) * in->scale;
-        q[1] = ((double)(get(&s) % 33) / 2 - 8 + in->off) * in->scale;
-        const unsigned b = get(&s);
+        q[0] = ((double)(get(s) % 33) / 2 - 8 + in->off) * in->scale;
+        q[1] = ((double)(get(s) % 33) / 2 - 8 + in->off) * in->scale;
+        const unsigned b = get(s);
         q[2] = (double)(b >> 2);
         q[3] = areas[b & 3] * unit - (b & 3 ? 0 : 1);
     }
+}
+
+/* What the run must say, from the decoded input: all vertices collinear, the hull
+ * kept, the first vertex of odd segment degree (an open chain), refinement asked. */
+static void derive_facts(input *in)
+{
+    const lh_pslg *g = &in->g;
+    const lh_trimesh_options *o = &in->o;
+    const size_t n = g->n, ns = g->segment_count;
     in->collinear = 1;
     for (size_t i = 2; i < n && in->collinear; i++)
         for (size_t j = 1; j < i && in->collinear; j++)
@@ -173,5 +203,22 @@ void decode(const uint8_t *data, size_t size, input *in)
     for (size_t i = n; i-- > 0;)
         if (odd[i]) in->open = (lh_index)i;
     in->refine = o->min_angle > 0 || o->max_area > 0 || o->region_areas || o->conforming;
+}
+
+void decode(const uint8_t *data, size_t size, input *in)
+{
+    src s = {data, size, 0};
+    memset(in, 0, sizeof *in);
+    header h;
+    h.f0 = get(&s), h.f1 = get(&s), h.f2 = get(&s), h.kb = get(&s), h.nvb = get(&s);
+    h.nsb = get(&s), h.ring = get(&s);
+    in->fail_mode = h.f0 >> 7;
+    in->fail_pick = get(&s) << 8;
+    in->fail_pick |= get(&s);
+    decode_options(&h, in);
+    decode_vertices(&s, &h, in);
+    decode_segments(&s, &h, in);
+    decode_holes_regions(&s, &h, in);
+    derive_facts(in);
     in->cover = get(&s); /* after everything else: the inputs written before it mean the same */
 }

@@ -87,71 +87,73 @@ static lh_status fan(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index pi,
     return LH_OK;
 }
 
-lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index start,
-                              lh_index split, lh__m2_ins *r)
+/* Mark triangle t dead in epoch e and push it on the cavity. */
+static lh_status mark_dead(lh__m2 *m, lh__m2_cavity *c, lh_index t, uint32_t e)
 {
-    r->result = LH__M2_INSERTED;
-    r->enc_count = 0;
-    r->vertex = -1;
-    lh__m2_cavity_clear(c);
-    const uint32_t e = lh__m2_new_epoch(m);
-    lh_status st;
-    if (split >= 0) {
-        int pos;
-        const lh_index t = lh__m2_find_subseg(m, split, &pos);
-        if (t < 0) return LH_ERR_INTERNAL;
-        const lh_index n = m->nb[3 * (size_t)t + pos];
-        /* The two triangles beside the subsegment join the cavity whatever incircle
-         * says, so p must lie in or on both circumcircles: only then are the new edges
-         * from p locally Delaunay (Bowyer-Watson's argument). A rounded split point can
-         * miss: beside a subsegment much shorter than the circle's radius R (below about
-         * sqrt(8 R ulp)) the circle's sagitta is under the rounding, and p rounded to
-         * the far side left an unconstrained edge that was not Delaunay. Refused. */
-        for (int j = 0; j < 2; j++) {
-            const lh_index u = j ? n : t;
-            if (u >= 0 && lh__m2_incircle(m, m->v[3 * (size_t)u], m->v[3 * (size_t)u + 1], m->v[3 * (size_t)u + 2], p) > 0) {
-                r->result = LH__M2_REFUSED;
-                return LH_OK;
-            }
-        }
-        m->mark[t] = e;
-        if ((st = lh__m2_cavity_push_dead(m, c, t)) != LH_OK) return st;
-        if (n >= 0) {
-            m->mark[n] = e;
-            if ((st = lh__m2_cavity_push_dead(m, c, n)) != LH_OK) return st;
-        }
-    } else {
-        lh_index blocked;
-        const lh_index t = r->origin ? lh__m2_walk_line(m, start, r->origin, p, &blocked)
-                                     : lh__m2_locate(m, start, p, 1, &blocked);
-        if (t < 0 || blocked >= 0) {
-            r->result = t < 0 ? LH__M2_OUTSIDE : LH__M2_BLOCKED;
-            r->blocked = blocked;
+    m->mark[t] = e;
+    return lh__m2_cavity_push_dead(m, c, t);
+}
+
+/* Seed the cavity of a point splitting subsegment split: the one or two triangles
+ * beside it, or r->result = LH__M2_REFUSED with the cavity left empty. */
+static lh_status seed_split(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index split,
+                            uint32_t e, lh__m2_ins *r)
+{
+    int pos;
+    const lh_index t = lh__m2_find_subseg(m, split, &pos);
+    if (t < 0) return LH_ERR_INTERNAL;
+    const lh_index n = m->nb[3 * (size_t)t + pos];
+    /* The two triangles beside the subsegment join the cavity whatever incircle
+     * says, so p must lie in or on both circumcircles: only then are the new edges
+     * from p locally Delaunay (Bowyer-Watson's argument). A rounded split point can
+     * miss: beside a subsegment much shorter than the circle's radius R (below about
+     * sqrt(8 R ulp)) the circle's sagitta is under the rounding, and p rounded to
+     * the far side left an unconstrained edge that was not Delaunay. Refused. */
+    for (int j = 0; j < 2; j++) {
+        const lh_index u = j ? n : t;
+        if (u >= 0 && lh__m2_incircle(m, m->v[3 * (size_t)u], m->v[3 * (size_t)u + 1], m->v[3 * (size_t)u + 2], p) > 0) {
+            r->result = LH__M2_REFUSED;
             return LH_OK;
         }
-        const lh_index *v = m->v + 3 * (size_t)t;
-        for (int k = 0; k < 3; k++) {
-            const double *q = lh__m2_pt(m, v[k]);
-            if (q[0] == p[0] && q[1] == p[1]) {
-                r->result = LH__M2_DUPLICATE;
-                r->vertex = v[k];
-                return LH_OK;
-            }
+    }
+    lh_status st = mark_dead(m, c, t, e);
+    if (st == LH_OK && n >= 0) st = mark_dead(m, c, n, e);
+    return st;
+}
+
+/* Seed the cavity of a free point: the triangle holding p, reached from start (in
+ * a straight line from r->origin when set). Sets r->result to LH__M2_OUTSIDE,
+ * LH__M2_BLOCKED or LH__M2_DUPLICATE instead when p is no new interior point. */
+static lh_status seed_free(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index start, uint32_t e,
+                           lh__m2_ins *r)
+{
+    lh_index blocked;
+    const lh_index t = r->origin ? lh__m2_walk_line(m, start, r->origin, p, &blocked)
+                                 : lh__m2_locate(m, start, p, 1, &blocked);
+    if (t < 0 || blocked >= 0) {
+        r->result = t < 0 ? LH__M2_OUTSIDE : LH__M2_BLOCKED;
+        r->blocked = blocked;
+        return LH_OK;
+    }
+    const lh_index *v = m->v + 3 * (size_t)t;
+    for (int k = 0; k < 3; k++) {
+        const double *q = lh__m2_pt(m, v[k]);
+        if (q[0] == p[0] && q[1] == p[1]) {
+            r->result = LH__M2_DUPLICATE;
+            r->vertex = v[k];
+            return LH_OK;
         }
-        m->mark[t] = e;
-        if ((st = lh__m2_cavity_push_dead(m, c, t)) != LH_OK) return st;
     }
-    if ((st = grow_cavity(m, c, p, split, e, r)) != LH_OK) return st;
-    if (r->enc_count) {
-        r->result = LH__M2_ENCROACHES;
-        return LH_OK;
-    }
+    return mark_dead(m, c, t, e);
+}
+
+/* Add p as a vertex and fan it over the checked cavity; a split subsegment
+ * becomes a-p (split itself) and p-b (a new subsegment). */
+static lh_status add_and_fan(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index split,
+                             uint32_t e, lh__m2_ins *r)
+{
+    lh_status st;
     int bad;
-    if ((st = fan(m, c, p, -1, split, NULL, e, &bad)) != LH_OK) return st;
-    if (bad) {
-        r->result = LH__M2_REFUSED;
-        return LH_OK;
-    }
     lh_index pi, half[2] = {-1, -1};
     if ((st = lh__m2_add_point(m, p, &pi)) != LH_OK) return st;
     if (split >= 0) {
@@ -171,4 +173,28 @@ lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_i
     if ((st = lh__m2_cavity_apply_fan(m, c)) != LH_OK) return st;
     r->vertex = pi;
     return LH_OK;
+}
+
+lh_status lh__m2_insert_point(lh__m2 *m, lh__m2_cavity *c, const double *p, lh_index start,
+                              lh_index split, lh__m2_ins *r)
+{
+    r->result = LH__M2_INSERTED;
+    r->enc_count = 0;
+    r->vertex = -1;
+    lh__m2_cavity_clear(c);
+    const uint32_t e = lh__m2_new_epoch(m);
+    lh_status st = split >= 0 ? seed_split(m, c, p, split, e, r) : seed_free(m, c, p, start, e, r);
+    if (st != LH_OK || r->result != LH__M2_INSERTED) return st;
+    if ((st = grow_cavity(m, c, p, split, e, r)) != LH_OK) return st;
+    if (r->enc_count) {
+        r->result = LH__M2_ENCROACHES;
+        return LH_OK;
+    }
+    int bad;
+    if ((st = fan(m, c, p, -1, split, NULL, e, &bad)) != LH_OK) return st;
+    if (bad) {
+        r->result = LH__M2_REFUSED;
+        return LH_OK;
+    }
+    return add_and_fan(m, c, p, split, e, r);
 }

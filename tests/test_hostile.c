@@ -372,14 +372,21 @@ LH_TEST(sites_on_a_common_circumsphere)
 LH_TEST(scaled_lattice_spheres_triangulate_alike)
 {
     static const double scales[] = {3, 13, 29, 41, 71, 101, 10007, 1000003, 0x1p40 + 1};
+    /* 2D: the 48 points of the circle |v|^2 = 5525 (coordinates up to 74), so that the
+     * small scales stay inside the filters' exact range and every scaling is exact */
+    static const size_t count[6] = {0, 0, 48, 300, 300, 300};
     for (int d = 2; d <= 5 && !LH_FAILED(); d++) {
         double x[300 * 5], y[300 * 5];
         lh_fam_seed((uint64_t)(31 * d));
-        const size_t n = lh_fam_make(F_SPHERE_EXACT, d, 300, x);
+        const size_t n = lh_fam_make(F_SPHERE_EXACT, d, count[d], x);
+        LH_ASSERT_EQ_U64(n, count[d]);
         lh_tri *a = NULL;
         LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &a), LH_OK);
         for (size_t s = 0; s < LH_COUNT(scales) && !LH_FAILED(); s++) {
-            for (size_t i = 0; i < n * (size_t)d; i++) y[i] = x[i] * scales[s];
+            for (size_t i = 0; i < n * (size_t)d; i++) {
+                y[i] = x[i] * scales[s];
+                LH_ASSERT_TRUE(fma(x[i], scales[s], -y[i]) == 0); /* the lattice, scaled */
+            }
             lh_tri *b = NULL;
             LH_EXPECT_EQ_INT(lh_delaunay(d, n, y, NULL, &b), LH_OK);
             LH_EXPECT_TRUE(b && lh_test_same_tri(a, b));

@@ -48,102 +48,116 @@ LH_TEST(rings_text_forms)
 #ifdef LH_TEST_DATA_DIR
 /* Every earcut fixture: vertices (closing points dropped), segments and the sums of
  * the coordinates in reading order, from Python's json module (tests/data/polygons). */
+typedef struct fixture {
+    const char *name;
+    size_t rings, n, segments;
+    double sx, sy;
+} fixture;
+
+static const fixture fixtures[] = {
+    {"boxy.json", 5, 64, 64, 216200.0, 178462.0},
+    {"building.json", 1, 15, 15, 10675.0, 1569.0},
+    {"dude.json", 3, 104, 104, 34763.26629, 53996.15154999998},
+    {"earcut.json", 7, 548, 548, 3601019.0, 1326426.0},
+    {"eberly-3.json", 3, 73, 73, 158760.0, 190216.0},
+    {"eberly-6.json", 16, 1402, 1402, 197983.15800000017, -11122.76200000001},
+    {"hilbert.json", 1, 1026, 1026, -15870.0, -15903.0},
+    {"issue34.json", 8, 127, 127, 127500.0, 67876.0},
+    {"issue35.json", 30, 790, 790, 1265526.0, 1036116.0},
+    {"issue52.json", 6, 101, 101, 168534.0, 82940.0},
+    {"rain.json", 8, 2685, 2685, 5586838.0, 5969887.0},
+    {"simplified-us-border.json", 2, 124, 124, 123659.0, 194863.0},
+    {"steiner.json", 5, 8, 4, 370.0, 420.0},
+    {"water-huge.json", 193, 5487, 5476, 19023493.0, 10938068.0},
+    {"water-huge2.json", 443, 5062, 5060, 12288119.0, 9676568.0},
+    {"water-huge3.json", 1444, 12864, 12864, 18694677.0, 17168475.0},
+    {"water.json", 10, 2513, 2513, 7254905.0, 7322617.0},
+    {"water2.json", 8, 1227, 1227, 2891984.0, 2673107.0},
+    {"water3.json", 6, 206, 206, 766315.0, 308642.0},
+    {"water3b.json", 3, 29, 29, 107879.0, 11434.0},
+    {"water4.json", 6, 714, 714, 2487271.0, 2001142.0},
+    {"degenerate/bad-diagonals.json", 1, 11, 11, 3856.0, 46056.0},
+    {"degenerate/bad-hole.json", 4, 44, 44, 37361.0, 124922.0},
+    {"degenerate/collinear-diagonal.json", 1, 24, 24, 82123.0, 44589.0},
+    {"degenerate/degenerate.json", 1, 6, 6, 800.0, 700.0},
+    {"degenerate/empty-square.json", 2, 8, 8, 16000.0, 16000.0},
+    {"degenerate/filtered-bridge-jhl.json", 5, 22, 22, 233.0, 142.0},
+    {"degenerate/hole-touching-outer.json", 2, 79, 79, 175001.0, 127247.0},
+    {"degenerate/hourglass.json", 1, 6, 6, 50.0, 93.0},
+    {"degenerate/infinite-loop-jhl.json", 2, 6, 6, 2.0, 2.0},
+    {"degenerate/issue107.json", 2, 12, 12, 95.96943317089651, 557.4882186580013},
+    {"degenerate/issue111.json", 4, 22, 22, 16195.0, 101707.0},
+    {"degenerate/issue119.json", 5, 16, 16, 210.0, 257.0},
+    {"degenerate/issue131.json", 3, 12, 12, 289.0, -9094.0},
+    {"degenerate/issue142.json", 2, 14, 14, -35.36268519247819, 143.23309136410563},
+    {"degenerate/issue147.json", 4, 30, 30, -32917.0, -16394.0},
+    {"degenerate/issue149.json", 2, 15, 15, 27936.0, 82784.0},
+    {"degenerate/issue16.json", 2, 12, 12, 1897.2143274050613, 827.3919299198315},
+    {"degenerate/issue17.json", 2, 11, 11, 3767198.576654799, 41344807.138701424},
+    {"degenerate/issue186.json", 1, 83, 83, 16800.0, 12500.0},
+    {"degenerate/issue29.json", 2, 40, 40, 9138.291579202047, 2794.6391494437794},
+    {"degenerate/issue45.json", 3, 10, 10, 165.0, 255.0},
+    {"degenerate/issue83.json", 3, 199, 199, 15809.0, 15809.0},
+    {"degenerate/outside-ring.json", 3, 66, 66, 147074.0, 76119.0},
+    {"degenerate/self-tangent-1.json", 3, 23, 23, 74255.0, 77077.0},
+    {"degenerate/self-tangent-2.json", 3, 25, 25, 74182.0, 63195.0},
+    {"degenerate/self-tangent-3.json", 23, 147, 147, 116315.0, 223363.0},
+    {"degenerate/self-tangent-4.json", 273, 2616, 2616, 2092913.0, 9680804.0},
+    {"degenerate/self-touching.json", 3, 122, 122, 19569.424218750006, 1367.7146721307236},
+    {"degenerate/shared-points.json", 1, 10, 10, 41344.0, 9992.0},
+    {"degenerate/touching-holes.json", 8, 49, 49, 183366.0, 102378.0},
+    {"degenerate/touching-holes2.json", 3, 10, 10, 72.0, 135.0},
+    {"degenerate/touching-holes3.json", 27, 82, 82, 803.0, 975.0},
+    {"degenerate/touching-holes4.json", 27, 82, 82, -451.0, 975.0},
+    {"degenerate/touching-holes5.json", 53, 160, 160, 312.0, 1900.0},
+    {"degenerate/touching-holes6.json", 169, 2832, 2832, 3694778.0, 7901096.0},
+    {"degenerate/touching2.json", 2, 9, 9, 645.0, 19249.0},
+    {"degenerate/touching3.json", 3, 15, 15, 18426.0, 13527.0},
+    {"degenerate/touching4.json", 5, 16, 16, 87.0, 84.0},
+};
+
+/* Segments run along rings: each starts where the previous ended (b == a + 1) or
+ * closes a ring (b < a), at most once per ring, on the line of its first vertex. */
+static void check_ring_cycles(lh_test_state *lh_t_, const lh_pslg *g, size_t rings)
+{
+    size_t cycles = 0;
+    for (size_t i = 0; i < g->segment_count; i++) {
+        lh_index a = g->segments[2 * i], b = g->segments[2 * i + 1];
+        LH_EXPECT_TRUE(b == a + 1 || b < a);
+        if (b < a) cycles++;
+        LH_EXPECT_EQ_U64(g->segment_line[i], g->vertex_line[a]);
+    }
+    LH_EXPECT_LE_U64(cycles, rings);
+}
+
+/* One fixture read and checked against its row. */
+static void check_fixture(lh_test_state *lh_t_, const fixture *f)
+{
+    char path[160], msg[256];
+    snprintf(path, sizeof path, "polygons/%s", f->name);
+    lh_pslg g;
+    LH_EXPECT_EQ_INT(read_file(lh_rings_read, path, NULL, &g, msg, sizeof msg), LH_OK);
+    LH_EXPECT_STREQ(msg, "");
+    check_pslg(lh_t_, &g);
+    LH_EXPECT_EQ_U64(g.n, f->n);
+    LH_EXPECT_EQ_U64(g.segment_count, f->segments);
+    double sx = 0, sy = 0;
+    for (size_t i = 0; i < g.n; i++) {
+        sx += g.xy[2 * i];
+        sy += g.xy[2 * i + 1];
+    }
+    LH_EXPECT_EQ_DBL(sx, f->sx);
+    LH_EXPECT_EQ_DBL(sy, f->sy);
+    check_ring_cycles(lh_t_, &g, f->rings);
+    LH_EXPECT_EQ_INT(g.even_odd, 1);
+    lh_pslg_free(&g);
+    if (LH_FAILED()) LH_NOTE("fixture %s: %s", f->name, msg);
+}
+
 LH_TEST(rings_every_fixture)
 {
-    static const struct {
-        const char *name;
-        size_t rings, n, segments;
-        double sx, sy;
-    } files[] = {
-        {"boxy.json", 5, 64, 64, 216200.0, 178462.0},
-        {"building.json", 1, 15, 15, 10675.0, 1569.0},
-        {"dude.json", 3, 104, 104, 34763.26629, 53996.15154999998},
-        {"earcut.json", 7, 548, 548, 3601019.0, 1326426.0},
-        {"eberly-3.json", 3, 73, 73, 158760.0, 190216.0},
-        {"eberly-6.json", 16, 1402, 1402, 197983.15800000017, -11122.76200000001},
-        {"hilbert.json", 1, 1026, 1026, -15870.0, -15903.0},
-        {"issue34.json", 8, 127, 127, 127500.0, 67876.0},
-        {"issue35.json", 30, 790, 790, 1265526.0, 1036116.0},
-        {"issue52.json", 6, 101, 101, 168534.0, 82940.0},
-        {"rain.json", 8, 2685, 2685, 5586838.0, 5969887.0},
-        {"simplified-us-border.json", 2, 124, 124, 123659.0, 194863.0},
-        {"steiner.json", 5, 8, 4, 370.0, 420.0},
-        {"water-huge.json", 193, 5487, 5476, 19023493.0, 10938068.0},
-        {"water-huge2.json", 443, 5062, 5060, 12288119.0, 9676568.0},
-        {"water-huge3.json", 1444, 12864, 12864, 18694677.0, 17168475.0},
-        {"water.json", 10, 2513, 2513, 7254905.0, 7322617.0},
-        {"water2.json", 8, 1227, 1227, 2891984.0, 2673107.0},
-        {"water3.json", 6, 206, 206, 766315.0, 308642.0},
-        {"water3b.json", 3, 29, 29, 107879.0, 11434.0},
-        {"water4.json", 6, 714, 714, 2487271.0, 2001142.0},
-        {"degenerate/bad-diagonals.json", 1, 11, 11, 3856.0, 46056.0},
-        {"degenerate/bad-hole.json", 4, 44, 44, 37361.0, 124922.0},
-        {"degenerate/collinear-diagonal.json", 1, 24, 24, 82123.0, 44589.0},
-        {"degenerate/degenerate.json", 1, 6, 6, 800.0, 700.0},
-        {"degenerate/empty-square.json", 2, 8, 8, 16000.0, 16000.0},
-        {"degenerate/filtered-bridge-jhl.json", 5, 22, 22, 233.0, 142.0},
-        {"degenerate/hole-touching-outer.json", 2, 79, 79, 175001.0, 127247.0},
-        {"degenerate/hourglass.json", 1, 6, 6, 50.0, 93.0},
-        {"degenerate/infinite-loop-jhl.json", 2, 6, 6, 2.0, 2.0},
-        {"degenerate/issue107.json", 2, 12, 12, 95.96943317089651, 557.4882186580013},
-        {"degenerate/issue111.json", 4, 22, 22, 16195.0, 101707.0},
-        {"degenerate/issue119.json", 5, 16, 16, 210.0, 257.0},
-        {"degenerate/issue131.json", 3, 12, 12, 289.0, -9094.0},
-        {"degenerate/issue142.json", 2, 14, 14, -35.36268519247819, 143.23309136410563},
-        {"degenerate/issue147.json", 4, 30, 30, -32917.0, -16394.0},
-        {"degenerate/issue149.json", 2, 15, 15, 27936.0, 82784.0},
-        {"degenerate/issue16.json", 2, 12, 12, 1897.2143274050613, 827.3919299198315},
-        {"degenerate/issue17.json", 2, 11, 11, 3767198.576654799, 41344807.138701424},
-        {"degenerate/issue186.json", 1, 83, 83, 16800.0, 12500.0},
-        {"degenerate/issue29.json", 2, 40, 40, 9138.291579202047, 2794.6391494437794},
-        {"degenerate/issue45.json", 3, 10, 10, 165.0, 255.0},
-        {"degenerate/issue83.json", 3, 199, 199, 15809.0, 15809.0},
-        {"degenerate/outside-ring.json", 3, 66, 66, 147074.0, 76119.0},
-        {"degenerate/self-tangent-1.json", 3, 23, 23, 74255.0, 77077.0},
-        {"degenerate/self-tangent-2.json", 3, 25, 25, 74182.0, 63195.0},
-        {"degenerate/self-tangent-3.json", 23, 147, 147, 116315.0, 223363.0},
-        {"degenerate/self-tangent-4.json", 273, 2616, 2616, 2092913.0, 9680804.0},
-        {"degenerate/self-touching.json", 3, 122, 122, 19569.424218750006, 1367.7146721307236},
-        {"degenerate/shared-points.json", 1, 10, 10, 41344.0, 9992.0},
-        {"degenerate/touching-holes.json", 8, 49, 49, 183366.0, 102378.0},
-        {"degenerate/touching-holes2.json", 3, 10, 10, 72.0, 135.0},
-        {"degenerate/touching-holes3.json", 27, 82, 82, 803.0, 975.0},
-        {"degenerate/touching-holes4.json", 27, 82, 82, -451.0, 975.0},
-        {"degenerate/touching-holes5.json", 53, 160, 160, 312.0, 1900.0},
-        {"degenerate/touching-holes6.json", 169, 2832, 2832, 3694778.0, 7901096.0},
-        {"degenerate/touching2.json", 2, 9, 9, 645.0, 19249.0},
-        {"degenerate/touching3.json", 3, 15, 15, 18426.0, 13527.0},
-        {"degenerate/touching4.json", 5, 16, 16, 87.0, 84.0},
-    };
-    for (size_t k = 0; k < LH_COUNT(files) && !LH_FAILED(); k++) {
-        char path[160], msg[256];
-        snprintf(path, sizeof path, "polygons/%s", files[k].name);
-        lh_pslg g;
-        LH_EXPECT_EQ_INT(read_file(lh_rings_read, path, NULL, &g, msg, sizeof msg), LH_OK);
-        LH_EXPECT_STREQ(msg, "");
-        check_pslg(lh_t_, &g);
-        LH_EXPECT_EQ_U64(g.n, files[k].n);
-        LH_EXPECT_EQ_U64(g.segment_count, files[k].segments);
-        double sx = 0, sy = 0;
-        for (size_t i = 0; i < g.n; i++) {
-            sx += g.xy[2 * i];
-            sy += g.xy[2 * i + 1];
-        }
-        LH_EXPECT_EQ_DBL(sx, files[k].sx);
-        LH_EXPECT_EQ_DBL(sy, files[k].sy);
-        /* Cycles: each segment starts where the previous ended, or a new ring. */
-        size_t cycles = 0;
-        for (size_t i = 0; i < g.segment_count; i++) {
-            lh_index a = g.segments[2 * i], b = g.segments[2 * i + 1];
-            LH_EXPECT_TRUE(b == a + 1 || b < a);
-            if (b < a) cycles++;
-            LH_EXPECT_EQ_U64(g.segment_line[i], g.vertex_line[a]);
-        }
-        LH_EXPECT_LE_U64(cycles, files[k].rings);
-        LH_EXPECT_EQ_INT(g.even_odd, 1);
-        lh_pslg_free(&g);
-        if (LH_FAILED()) LH_NOTE("fixture %s: %s", files[k].name, msg);
-    }
+    for (size_t k = 0; k < LH_COUNT(fixtures) && !LH_FAILED(); k++)
+        check_fixture(lh_t_, &fixtures[k]);
 }
 #endif
 

@@ -24,6 +24,66 @@ static double seg_dist(const double *a, const double *b, const double *q)
     return hypot(a[0] + t * ux - q[0], a[1] + t * uy - q[1]);
 }
 
+/* q located in simplex loc->simplex: q is on the inner side of every facet (exact),
+ * the barycentric coordinates are >= 0 (to rounding), sum to 1 and rebuild q. */
+static void check_inside(lh_test_state *lh_t_, lh_pred *pred, lh_tri *t, const double *x, int d,
+                         const double *q, const lh_location *loc)
+{
+    const int nv = d + 1;
+    const lh_index *v = lh_tri_simplices(t) + (size_t)loc->simplex * nv;
+    const double *p[9];
+    for (int f = 0; f < nv; f++) { /* q on the inner side of every facet */
+        for (int j = 0; j < nv; j++) p[j] = j == f ? q : x + (size_t)v[j] * d;
+        LH_EXPECT_GE_INT(lh_orient(pred, d, p), 0);
+    }
+    double sum = 0;
+    for (int j = 0; j < nv; j++) {
+        sum += loc->bary[j];
+        LH_EXPECT_TRUE(loc->bary[j] > -1e-9);
+    }
+    LH_EXPECT_TRUE(fabs(sum - 1) < 1e-9);
+    for (int c = 0; c < d; c++) {
+        double r = 0;
+        for (int j = 0; j < nv; j++) r += loc->bary[j] * x[(size_t)v[j] * d + c];
+        LH_EXPECT_TRUE(fabs(r - q[c]) < 1e-9);
+    }
+    LH_EXPECT_EQ_INT(loc->hull_facet, -1);
+}
+
+/* q outside the hull: the distance is positive, at most the nearest site's, the
+ * reported point of hull facet loc->hull_facet is at that distance, and in 2D it is
+ * the distance to the nearest hull edge (brute force). */
+static void check_outside(lh_test_state *lh_t_, lh_tri *t, const double *x, size_t n, int d,
+                          const double *q, const lh_location *loc)
+{
+    LH_ASSERT_TRUE(loc->hull_facet >= 0 && (size_t)loc->hull_facet < lh_tri_hull_count(t));
+    LH_EXPECT_TRUE(loc->distance > 0);
+    double nearest_site = INFINITY;
+    for (size_t i = 0; i < n; i++) {
+        double s = 0;
+        for (int c = 0; c < d; c++) s += (x[i * d + c] - q[c]) * (x[i * d + c] - q[c]);
+        if (sqrt(s) < nearest_site) nearest_site = sqrt(s);
+    }
+    LH_EXPECT_LE_DBL(loc->distance, nearest_site + 1e-12);
+    const lh_index *f = lh_tri_hull_facets(t) + (size_t)loc->hull_facet * d;
+    double r2 = 0; /* the reported nearest point is at that distance */
+    for (int c = 0; c < d; c++) {
+        double r = 0;
+        for (int j = 0; j < d; j++) r += loc->bary[j] * x[(size_t)f[j] * d + c];
+        r2 += (r - q[c]) * (r - q[c]);
+    }
+    LH_EXPECT_TRUE(fabs(sqrt(r2) - loc->distance) < 1e-9);
+    if (d == 2) { /* brute force: every hull edge */
+        double best = INFINITY;
+        for (size_t e = 0; e < lh_tri_hull_count(t); e++) {
+            const lh_index *h = lh_tri_hull_facets(t) + 2 * e;
+            double s = seg_dist(x + 2 * h[0], x + 2 * h[1], q);
+            if (s < best) best = s;
+        }
+        LH_EXPECT_TRUE(fabs(best - loc->distance) < 1e-12);
+    }
+}
+
 LH_TEST(queries_inside_outside_and_on_sites)
 {
     lh_pred *pred;
@@ -34,7 +94,6 @@ LH_TEST(queries_inside_outside_and_on_sites)
         for (size_t i = 0; i < n * d; i++) x[i] = unif();
         lh_tri *t;
         LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
-        const int nv = d + 1;
         int inside = 0, outside = 0;
         lh_index hint = -1;
         for (int k = 0; k < 400 && !LH_FAILED(); k++) {
@@ -48,52 +107,10 @@ LH_TEST(queries_inside_outside_and_on_sites)
             if (loc.simplex >= 0) {
                 inside++;
                 hint = loc.simplex;
-                const lh_index *v = lh_tri_simplices(t) + (size_t)loc.simplex * nv;
-                const double *p[9];
-                for (int f = 0; f < nv; f++) { /* q on the inner side of every facet */
-                    for (int j = 0; j < nv; j++) p[j] = j == f ? q : x + (size_t)v[j] * d;
-                    LH_EXPECT_GE_INT(lh_orient(pred, d, p), 0);
-                }
-                double sum = 0;
-                for (int j = 0; j < nv; j++) {
-                    sum += loc.bary[j];
-                    LH_EXPECT_TRUE(loc.bary[j] > -1e-9);
-                }
-                LH_EXPECT_TRUE(fabs(sum - 1) < 1e-9);
-                for (int c = 0; c < d; c++) {
-                    double r = 0;
-                    for (int j = 0; j < nv; j++) r += loc.bary[j] * x[(size_t)v[j] * d + c];
-                    LH_EXPECT_TRUE(fabs(r - q[c]) < 1e-9);
-                }
-                LH_EXPECT_EQ_INT(loc.hull_facet, -1);
+                check_inside(lh_t_, pred, t, x, d, q, &loc);
             } else {
                 outside++;
-                LH_ASSERT_TRUE(loc.hull_facet >= 0 && (size_t)loc.hull_facet < lh_tri_hull_count(t));
-                LH_EXPECT_TRUE(loc.distance > 0);
-                double nearest_site = INFINITY;
-                for (size_t i = 0; i < n; i++) {
-                    double s = 0;
-                    for (int c = 0; c < d; c++) s += (x[i * d + c] - q[c]) * (x[i * d + c] - q[c]);
-                    if (sqrt(s) < nearest_site) nearest_site = sqrt(s);
-                }
-                LH_EXPECT_LE_DBL(loc.distance, nearest_site + 1e-12);
-                const lh_index *f = lh_tri_hull_facets(t) + (size_t)loc.hull_facet * d;
-                double r2 = 0; /* the reported nearest point is at that distance */
-                for (int c = 0; c < d; c++) {
-                    double r = 0;
-                    for (int j = 0; j < d; j++) r += loc.bary[j] * x[(size_t)f[j] * d + c];
-                    r2 += (r - q[c]) * (r - q[c]);
-                }
-                LH_EXPECT_TRUE(fabs(sqrt(r2) - loc.distance) < 1e-9);
-                if (d == 2) { /* brute force: every hull edge */
-                    double best = INFINITY;
-                    for (size_t e = 0; e < lh_tri_hull_count(t); e++) {
-                        const lh_index *h = lh_tri_hull_facets(t) + 2 * e;
-                        double s = seg_dist(x + 2 * h[0], x + 2 * h[1], q);
-                        if (s < best) best = s;
-                    }
-                    LH_EXPECT_TRUE(fabs(best - loc.distance) < 1e-12);
-                }
+                check_outside(lh_t_, t, x, n, d, q, &loc);
             }
         }
         LH_EXPECT_GT_INT(inside, 50);

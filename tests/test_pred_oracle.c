@@ -172,237 +172,361 @@ static void note_points(lh_test_state *lh_t_, const char *label, const double *c
     }
 }
 
+/* One case under check: its points, the oracle's and the library's answers, and
+ * whether (and where) a comparison failed. */
+typedef struct case_check {
+    lh_pred *ctx;
+    oracle_ws *o;
+    rng *r;
+    int kind, D, n;
+    const double *pts[MAXN];
+    int oracle, sos, distinct;
+    int bad;          /* a comparison failed */
+    const char *what; /* the first failing check ("" while none) */
+} case_check;
+
+/* Which extra checks a case gets (drawn in this order from the case's generator). */
+typedef struct case_lots {
+    int ref, perm, radon, sosref;
+} case_lots;
+
 /* A failed comparison inside one case: report it (the harness prints both sides). */
-#define CASE_EQ(a, b)                                                                  \
+#define CASE_EQ(k, a, b)                                                               \
     do {                                                                               \
         if ((a) != (b)) {                                                              \
             LH_EXPECT_EQ_INT(a, b);                                                    \
-            bad = 1;                                                                   \
+            (k)->bad = 1;                                                              \
         }                                                                              \
     } while (0)
+
+static case_lots draw_lots(case_check *k, const pcase *c)
+{
+    const int generic = c->fam != F_NEAR && c->fam != F_DEGEN && k->oracle != 0;
+    const int thin = k->n > 6 ? 1 << (k->n - 6) : 1;
+    case_lots l;
+    l.ref = rng_below(k->r, REF_EVERY) == 0;
+    l.perm = rng_below(k->r, generic ? PERM_GENERIC_EVERY : PERM_DEGEN_EVERY * thin) == 0;
+    l.radon = rng_below(k->r, generic ? RADON_GENERIC_EVERY : RADON_DEGEN_EVERY * thin) == 0;
+    l.sosref = rng_below(k->r, SOSREF_EVERY) == 0;
+    return l;
+}
+
+/* The test's own two oracles must agree. */
+static void check_oracle_ref(lh_test_state *lh_t_, case_check *k)
+{
+    const int oracle = k->oracle, oracle_mpq = oracle_ref_sign(k->o, k->kind, k->D, k->n, k->pts);
+    CASE_EQ(k, oracle, oracle_mpq);
+    if (k->bad) k->what = "mpq cross-check of the oracle";
+}
+
+/* The plain predicate equals the oracle; counts its exact-stage exits. */
+static void check_plain(lh_test_state *lh_t_, case_check *k, fam_stats *fs)
+{
+    lh_pred_counters before, after;
+    lh_pred_counters_get(k->ctx, &before);
+    const int oracle = k->oracle, lib = lib_plain(k->ctx, k->kind, k->D, k->pts);
+    lh_pred_counters_get(k->ctx, &after);
+    fs->exact += after.exact_exits - before.exact_exits + after.residue_exits -
+                 before.residue_exits;
+    CASE_EQ(k, lib, oracle);
+    if (k->bad && !*k->what) k->what = "plain sign";
+}
+
+/* The SoS variant answers +1 or -1, and the oracle's sign when that is nonzero. */
+static void check_sos_value(lh_test_state *lh_t_, case_check *k)
+{
+    const int oracle = k->oracle, sos = lib_sos(k->ctx, k->kind, k->D, k->pts);
+    k->sos = sos;
+    int sos_is_unit = sos == 1 || sos == -1;
+    CASE_EQ(k, sos_is_unit, 1);
+    if (oracle != 0) CASE_EQ(k, sos, oracle);
+    if (k->bad) k->what = "sos value";
+}
+
+/* An oracle zero among distinct points: SoS equals the reference perturbation. */
+static void check_sos_reference(lh_test_state *lh_t_, case_check *k, fam_stats *fs)
+{
+    /* o->X still holds this case's points (oracle_sign in check_case) */
+    fs->sosref_checked++;
+    const int sos = k->sos;
+    int sos_reference = sos_reference_sign(k->o, k->r, k->kind, k->D, k->n, k->pts);
+    CASE_EQ(k, sos, sos_reference);
+    if (k->bad) k->what = "SoS sign against the reference perturbation";
+}
+
+/* Exchanging two arguments negates both predicates. */
+static void check_exchange(lh_test_state *lh_t_, case_check *k)
+{
+    const int n = k->n;
+    const double *sw[MAXN];
+    memcpy(sw, k->pts, sizeof k->pts);
+    int a = rng_below(k->r, n), b = rng_below(k->r, n - 1);
+    if (b >= a) b++;
+    sw[a] = k->pts[b];
+    sw[b] = k->pts[a];
+    int sos_swapped = lib_sos(k->ctx, k->kind, k->D, sw);
+    int lib_swapped = lib_plain(k->ctx, k->kind, k->D, sw);
+    int minus_sos = -k->sos, minus_oracle = -k->oracle;
+    CASE_EQ(k, sos_swapped, minus_sos);
+    CASE_EQ(k, lib_swapped, minus_oracle);
+    if (k->bad) {
+        k->what = "exchange of two arguments";
+        LH_NOTE("exchanged arguments %d and %d", a, b);
+    }
+}
+
+/* An arbitrary permutation multiplies both predicates by its sign. */
+static void check_permutation(lh_test_state *lh_t_, case_check *k)
+{
+    const int n = k->n;
+    const double *pm[MAXN];
+    int perm[MAXN], psign = 1;
+    for (int i = 0; i < n; i++) perm[i] = i;
+    for (int i = n - 1; i > 0; i--) {
+        int j = rng_below(k->r, i + 1);
+        if (j != i) {
+            int t = perm[i];
+            perm[i] = perm[j];
+            perm[j] = t;
+            psign = -psign;
+        }
+    }
+    for (int i = 0; i < n; i++) pm[i] = k->pts[perm[i]];
+    int sos_permuted = lib_sos(k->ctx, k->kind, k->D, pm);
+    int lib_permuted = lib_plain(k->ctx, k->kind, k->D, pm);
+    int psign_sos = psign * k->sos, psign_oracle = psign * k->oracle;
+    CASE_EQ(k, sos_permuted, psign_sos);
+    CASE_EQ(k, lib_permuted, psign_oracle);
+    if (k->bad && !*k->what) {
+        k->what = "permutation of the arguments";
+        char buf[MAXN * 4 + 4];
+        size_t len = 0;
+        for (int i = 0; i < n; i++)
+            len += (size_t)snprintf(buf + len, sizeof buf - len, " %d", perm[i]);
+        LH_NOTE("permutation:%s (sign %d)", buf, psign);
+    }
+}
+
+/* Scaling every coordinate by 2^e (exactly) multiplies each column of the perturbed
+ * matrix by a positive constant and keeps the lexicographic order: the SoS sign must
+ * not change. The exponent is drawn even when an earlier check failed. */
+static void check_scaling(lh_test_state *lh_t_, case_check *k)
+{
+    double moved[MAXN][MAXD];
+    const double *mv[MAXN];
+    int e = rng_below(k->r, 2) ? rng_int(k->r, 1, 40) : -rng_int(k->r, 1, 40), exact = 1;
+    for (int i = 0; i < k->n; i++) {
+        mv[i] = moved[i];
+        for (int j = 0; j < k->D && exact; j++) {
+            moved[i][j] = ldexp(k->pts[i][j], e);
+            exact = isfinite(moved[i][j]) && ldexp(moved[i][j], -e) == k->pts[i][j];
+        }
+    }
+    if (k->bad || !exact) return;
+    int sos_scaled = lib_sos(k->ctx, k->kind, k->D, mv);
+    int lib_scaled = lib_plain(k->ctx, k->kind, k->D, mv);
+    const int sos = k->sos, oracle = k->oracle;
+    CASE_EQ(k, sos_scaled, sos);
+    CASE_EQ(k, lib_scaled, oracle);
+    if (k->bad) {
+        k->what = "scaling by a power of two";
+        LH_NOTE("scaled by 2^%d", e);
+    }
+}
+
+/* orient only: an exact translation is a column operation with the column of ones and
+ * changes neither sign. */
+static void check_translation(lh_test_state *lh_t_, case_check *k)
+{
+    const int D = k->D;
+    double moved[MAXN][MAXD], t[MAXD];
+    const double *mv[MAXN];
+    int from = rng_below(k->r, k->n), exact = 1;
+    for (int j = 0; j < D; j++)
+        t[j] = rng_below(k->r, 2) ? -k->pts[from][j] : (double)rng_int(k->r, -1000, 1000);
+    for (int i = 0; i < k->n; i++) {
+        mv[i] = moved[i];
+        for (int j = 0; j < D && exact; j++) {
+            /* Knuth's two-sum: the rounding error of x + t, exactly. */
+            double x = k->pts[i][j], y = x + t[j], tv = y - x;
+            double err = (x - (y - tv)) + (t[j] - tv);
+            moved[i][j] = y + 0.0;
+            exact = isfinite(y) && err == 0.0;
+        }
+    }
+    if (!exact) return;
+    int sos_translated = lib_sos(k->ctx, k->kind, D, mv);
+    int lib_translated = lib_plain(k->ctx, k->kind, D, mv);
+    const int sos = k->sos, oracle = k->oracle;
+    CASE_EQ(k, sos_translated, sos);
+    CASE_EQ(k, lib_translated, oracle);
+    if (k->bad) {
+        k->what = "exact translation";
+        char buf[MAXD * 32 + 8];
+        size_t len = 0;
+        for (int j = 0; j < D; j++)
+            len += (size_t)snprintf(buf + len, sizeof buf - len, "%s%a", j ? ", " : "", t[j]);
+        LH_NOTE("translated by (%s)", buf);
+    }
+}
+
+/* The exchange, permutation, scaling and (orient) translation checks, in that order;
+ * the permutation runs even after a failed exchange. */
+static void check_symmetries(lh_test_state *lh_t_, case_check *k, fam_stats *fs)
+{
+    fs->perm_checked++;
+    check_exchange(lh_t_, k);
+    check_permutation(lh_t_, k);
+    check_scaling(lh_t_, k);
+    if (!k->bad && k->kind == ORIENT) check_translation(lh_t_, k);
+}
+
+/* The (n+1)-subset identity with one more point q (a midpoint, a reflection or a
+ * one-ulp neighbour of the case's points). */
+static void check_radon(lh_test_state *lh_t_, case_check *k, fam_stats *fs)
+{
+    const int D = k->D, n = k->n;
+    double q[MAXD];
+    int qa = rng_below(k->r, n), qb = rng_below(k->r, n - 1), how = rng_below(k->r, 3);
+    if (qb >= qa) qb++;
+    for (int j = 0; j < D; j++) {
+        if (how == 0) q[j] = 0.5 * k->pts[qa][j] + 0.5 * k->pts[qb][j];
+        else if (how == 1) q[j] = 2.0 * k->pts[qa][j] - k->pts[qb][j];
+        else q[j] = k->pts[qa][j];
+        q[j] += 0.0;
+    }
+    if (how == 2) {
+        int j = rng_below(k->r, D);
+        q[j] = nextafter(q[j], rng_below(k->r, 2) ? INFINITY : -INFINITY);
+    }
+    const double *all[MAXN];
+    memcpy(all, k->pts, sizeof k->pts);
+    all[n] = q;
+    int finite = 1;
+    for (int j = 0; j < D; j++) finite &= isfinite(q[j]) != 0;
+    if (!finite || !all_distinct(all, n + 1, D)) return;
+    fs->radon_checked++;
+    int seen_pos = 0, seen_neg = 0;
+    for (int i = 0; i <= n; i++) {
+        const double *sub[MAXN];
+        for (int l = 0, t = 0; l <= n; l++)
+            if (l != i) sub[t++] = all[l];
+        int s = lib_sos(k->ctx, k->kind, D, sub) * (i % 2 ? -1 : 1);
+        seen_pos |= s > 0;
+        seen_neg |= s < 0;
+    }
+    int mixed_signs = seen_pos && seen_neg;
+    CASE_EQ(k, mixed_signs, 1);
+    if (k->bad) {
+        k->what = "(n+1)-subset identity: all (-1)^i sos_i agree";
+        note_points(lh_t_, "q", (const double *const *)all + n, 1, D);
+    }
+}
 
 /* Runs every check on one case; returns 1 when all passed. */
 static int check_case(lh_test_state *lh_t_, lh_pred *ctx, oracle_ws *o, rng *r,
                       const pcase *c, const run_info *ri, fam_stats *fs)
 {
-    const int kind = c->kind, D = c->D, n = c->n;
-    const double *pts[MAXN];
-    for (int i = 0; i < n; i++) pts[i] = c->p[i];
-    int bad = 0;
-    const char *what = "";
-
-    int oracle = oracle_sign(o, kind, D, n, pts);
-    int generic = c->fam != F_NEAR && c->fam != F_DEGEN && oracle != 0;
-    int do_ref = rng_below(r, REF_EVERY) == 0;
-    int thin = n > 6 ? 1 << (n - 6) : 1;
-    int do_perm = rng_below(r, generic ? PERM_GENERIC_EVERY : PERM_DEGEN_EVERY * thin) == 0;
-    int do_radon =
-        rng_below(r, generic ? RADON_GENERIC_EVERY : RADON_DEGEN_EVERY * thin) == 0;
-    int do_sosref = rng_below(r, SOSREF_EVERY) == 0;
-    if (do_ref) {
-        int oracle_mpq = oracle_ref_sign(o, kind, D, n, pts);
-        CASE_EQ(oracle, oracle_mpq); /* the test's own two oracles must agree */
-        if (bad) what = "mpq cross-check of the oracle";
-    }
+    case_check k = {.ctx = ctx, .o = o, .r = r, .kind = c->kind, .D = c->D,
+                    .n = c->n, .what = ""};
+    for (int i = 0; i < k.n; i++) k.pts[i] = c->p[i];
+    k.oracle = oracle_sign(o, k.kind, k.D, k.n, k.pts);
+    const case_lots lots = draw_lots(&k, c);
+    if (lots.ref) check_oracle_ref(lh_t_, &k);
     fs->cases++;
-    fs->zeros += oracle == 0;
-    fs->pos += oracle > 0;
-    fs->neg += oracle < 0;
-    if (naive_sign(kind, D, n, pts) != oracle) fs->naive_wrong++;
-
-    lh_pred_counters before, after;
-    lh_pred_counters_get(ctx, &before);
-    int lib = lib_plain(ctx, kind, D, pts);
-    lh_pred_counters_get(ctx, &after);
-    fs->exact += after.exact_exits - before.exact_exits + after.residue_exits -
-                 before.residue_exits;
-    CASE_EQ(lib, oracle);
-    if (bad && !*what) what = "plain sign";
-
-    int sos = 0, distinct = all_distinct(pts, n, D);
-    if (!bad) {
-        sos = lib_sos(ctx, kind, D, pts);
-        int sos_is_unit = sos == 1 || sos == -1;
-        CASE_EQ(sos_is_unit, 1);
-        if (oracle != 0) CASE_EQ(sos, oracle);
-        if (bad) what = "sos value";
-    }
-    if (!bad && oracle == 0 && distinct && do_sosref) {
-        /* o->X still holds this case's points (oracle_sign above) */
-        fs->sosref_checked++;
-        int sos_reference = sos_reference_sign(o, r, kind, D, n, pts);
-        CASE_EQ(sos, sos_reference);
-        if (bad) what = "SoS sign against the reference perturbation";
-    }
-
-    /* Exchange of two arguments, then an arbitrary permutation: both predicates
-     * follow the permutation's sign. */
-    if (!bad && distinct && do_perm) {
-        fs->perm_checked++;
-        const double *sw[MAXN];
-        memcpy(sw, pts, sizeof pts);
-        int a = rng_below(r, n), b = rng_below(r, n - 1);
-        if (b >= a) b++;
-        sw[a] = pts[b];
-        sw[b] = pts[a];
-        int sos_swapped = lib_sos(ctx, kind, D, sw);
-        int lib_swapped = lib_plain(ctx, kind, D, sw);
-        int minus_sos = -sos, minus_oracle = -oracle;
-        CASE_EQ(sos_swapped, minus_sos);
-        CASE_EQ(lib_swapped, minus_oracle);
-        if (bad) {
-            what = "exchange of two arguments";
-            LH_NOTE("exchanged arguments %d and %d", a, b);
-        }
-
-        const double *pm[MAXN];
-        int perm[MAXN], psign = 1;
-        for (int i = 0; i < n; i++) perm[i] = i;
-        for (int i = n - 1; i > 0; i--) {
-            int j = rng_below(r, i + 1);
-            if (j != i) {
-                int t = perm[i];
-                perm[i] = perm[j];
-                perm[j] = t;
-                psign = -psign;
-            }
-        }
-        for (int i = 0; i < n; i++) pm[i] = pts[perm[i]];
-        int sos_permuted = lib_sos(ctx, kind, D, pm);
-        int lib_permuted = lib_plain(ctx, kind, D, pm);
-        int psign_sos = psign * sos, psign_oracle = psign * oracle;
-        CASE_EQ(sos_permuted, psign_sos);
-        CASE_EQ(lib_permuted, psign_oracle);
-        if (bad && !*what) {
-            what = "permutation of the arguments";
-            char buf[MAXN * 4 + 4];
-            size_t len = 0;
-            for (int i = 0; i < n; i++)
-                len += (size_t)snprintf(buf + len, sizeof buf - len, " %d", perm[i]);
-            LH_NOTE("permutation:%s (sign %d)", buf, psign);
-        }
-
-        /* Scaling every coordinate by 2^e (exactly) multiplies each column of the
-         * perturbed matrix by a positive constant and keeps the lexicographic order:
-         * the SoS sign must not change. For orient, so must an exact translation,
-         * a column operation with the column of ones. */
-        double moved[MAXN][MAXD];
-        const double *mv[MAXN];
-        int e = rng_below(r, 2) ? rng_int(r, 1, 40) : -rng_int(r, 1, 40), exact = 1;
-        for (int i = 0; i < n; i++) {
-            mv[i] = moved[i];
-            for (int j = 0; j < D && exact; j++) {
-                moved[i][j] = ldexp(pts[i][j], e);
-                exact = isfinite(moved[i][j]) && ldexp(moved[i][j], -e) == pts[i][j];
-            }
-        }
-        if (!bad && exact) {
-            int sos_scaled = lib_sos(ctx, kind, D, mv);
-            int lib_scaled = lib_plain(ctx, kind, D, mv);
-            CASE_EQ(sos_scaled, sos);
-            CASE_EQ(lib_scaled, oracle);
-            if (bad) {
-                what = "scaling by a power of two";
-                LH_NOTE("scaled by 2^%d", e);
-            }
-        }
-        if (!bad && kind == ORIENT) {
-            double t[MAXD];
-            int from = rng_below(r, n);
-            for (int j = 0; j < D; j++)
-                t[j] = rng_below(r, 2) ? -pts[from][j] : (double)rng_int(r, -1000, 1000);
-            exact = 1;
-            for (int i = 0; i < n; i++)
-                for (int j = 0; j < D && exact; j++) {
-                    /* Knuth's two-sum: the rounding error of x + t, exactly. */
-                    double x = pts[i][j], y = x + t[j], tv = y - x;
-                    double err = (x - (y - tv)) + (t[j] - tv);
-                    moved[i][j] = y + 0.0;
-                    exact = isfinite(y) && err == 0.0;
-                }
-            if (exact) {
-                int sos_translated = lib_sos(ctx, kind, D, mv);
-                int lib_translated = lib_plain(ctx, kind, D, mv);
-                CASE_EQ(sos_translated, sos);
-                CASE_EQ(lib_translated, oracle);
-                if (bad) {
-                    what = "exact translation";
-                    char buf[MAXD * 32 + 8];
-                    size_t len = 0;
-                    for (int j = 0; j < D; j++)
-                        len += (size_t)snprintf(buf + len, sizeof buf - len, "%s%a",
-                                                j ? ", " : "", t[j]);
-                    LH_NOTE("translated by (%s)", buf);
-                }
-            }
-        }
-    }
-
-    /* The (n+1)-subset identity with one more point q (a midpoint, a reflection or a
-     * one-ulp neighbour of the case's points). */
-    if (!bad && distinct && do_radon) {
-        double q[MAXD];
-        int qa = rng_below(r, n), qb = rng_below(r, n - 1), how = rng_below(r, 3);
-        if (qb >= qa) qb++;
-        for (int j = 0; j < D; j++) {
-            if (how == 0) q[j] = 0.5 * pts[qa][j] + 0.5 * pts[qb][j];
-            else if (how == 1) q[j] = 2.0 * pts[qa][j] - pts[qb][j];
-            else q[j] = pts[qa][j];
-            q[j] += 0.0;
-        }
-        if (how == 2) {
-            int j = rng_below(r, D);
-            q[j] = nextafter(q[j], rng_below(r, 2) ? INFINITY : -INFINITY);
-        }
-        const double *all[MAXN];
-        memcpy(all, pts, sizeof pts);
-        all[n] = q;
-        int finite = 1;
-        for (int j = 0; j < D; j++) finite &= isfinite(q[j]) != 0;
-        if (finite && all_distinct(all, n + 1, D)) {
-            fs->radon_checked++;
-            int seen_pos = 0, seen_neg = 0;
-            for (int i = 0; i <= n; i++) {
-                const double *sub[MAXN];
-                for (int l = 0, t = 0; l <= n; l++)
-                    if (l != i) sub[t++] = all[l];
-                int s = lib_sos(ctx, kind, D, sub) * (i % 2 ? -1 : 1);
-                seen_pos |= s > 0;
-                seen_neg |= s < 0;
-            }
-            int mixed_signs = seen_pos && seen_neg;
-            CASE_EQ(mixed_signs, 1);
-            if (bad) {
-                what = "(n+1)-subset identity: all (-1)^i sos_i agree";
-                note_points(lh_t_, "q", (const double *const *)all + n, 1, D);
-            }
-        }
-    }
-    if (bad) {
+    fs->zeros += k.oracle == 0;
+    fs->pos += k.oracle > 0;
+    fs->neg += k.oracle < 0;
+    if (naive_sign(k.kind, k.D, k.n, k.pts) != k.oracle) fs->naive_wrong++;
+    check_plain(lh_t_, &k, fs);
+    k.distinct = all_distinct(k.pts, k.n, k.D);
+    if (!k.bad) check_sos_value(lh_t_, &k);
+    if (!k.bad && k.oracle == 0 && k.distinct && lots.sosref) check_sos_reference(lh_t_, &k, fs);
+    if (!k.bad && k.distinct && lots.perm) check_symmetries(lh_t_, &k, fs);
+    if (!k.bad && k.distinct && lots.radon) check_radon(lh_t_, &k, fs);
+    if (k.bad) {
         LH_NOTE("%s_%d failed (%s): test seed %#llx, case %ld, family %s, variant %d, "
                 "oracle %d; rerun with LH_ORACLE_SEED=%#llx LH_ORACLE_CASE=%ld",
-                ri->pred, D, what, (unsigned long long)ri->seed, ri->index,
-                fam_name[c->fam], c->var, oracle, (unsigned long long)ri->base_seed,
+                ri->pred, k.D, k.what, (unsigned long long)ri->seed, ri->index,
+                fam_name[c->fam], c->var, k.oracle, (unsigned long long)ri->base_seed,
                 ri->index);
-        note_points(lh_t_, "p", pts, n, D);
+        note_points(lh_t_, "p", k.pts, k.n, k.D);
     }
-    return !bad;
+    return !k.bad;
+}
+
+/* The number of cases to run, [*first, return): LH_TEST_SCALE * 10^5 (at least 1000),
+ * or the one case LH_ORACLE_CASE names. */
+static long case_range(long *first)
+{
+    long cases = (long)(100000.0 * test_scale() + 0.5);
+    if (cases < 1000) cases = 1000;
+    *first = 0;
+    const char *only = getenv("LH_ORACLE_CASE"); /* rerun one case */
+    if (only && *only) {
+        *first = strtol(only, NULL, 10);
+        cases = *first + 1;
+    }
+    return cases;
+}
+
+/* One summary line on stdout: the counts of the run and of each family. */
+static void print_summary(lh_pred *ctx, const char *pred, int D, long done, uint64_t seed,
+                          double t0, const fam_stats *fs)
+{
+    lh_pred_counters cnt;
+    lh_pred_counters_get(ctx, &cnt);
+    long zeros = 0;
+    for (int f = 0; f < F_COUNT; f++) zeros += fs[f].zeros;
+    uint64_t answered = cnt.filter_exits + cnt.residue_exits + cnt.exact_exits;
+    double exact_fraction = answered ? (double)cnt.exact_exits / (double)answered : 0.0;
+    char fam_buf[F_COUNT * 96];
+    size_t len = 0;
+    for (int f = 0; f < F_COUNT; f++)
+        len += (size_t)snprintf(fam_buf + len, sizeof fam_buf - len,
+                                " | %s n=%ld z=%ld x=%llu w=%ld s=%ld r=%ld e=%ld", fam_name[f],
+                                fs[f].cases, fs[f].zeros, (unsigned long long)fs[f].exact,
+                                fs[f].naive_wrong, fs[f].perm_checked, fs[f].radon_checked,
+                                fs[f].sosref_checked);
+    printf("oracle %s_%d: cases=%ld oracle_zeros=%ld exact_fraction=%.4f (calls=%llu "
+           "filter=%llu residue=%llu exact=%llu zero=%llu sos_fast=%llu sos_general=%llu) time=%.2fs "
+           "seed=%#llx%s\n",
+           pred, D, done, zeros, exact_fraction, (unsigned long long)cnt.calls,
+           (unsigned long long)cnt.filter_exits, (unsigned long long)cnt.residue_exits,
+           (unsigned long long)cnt.exact_exits, (unsigned long long)cnt.zero_results, (unsigned long long)cnt.sos_fast,
+           (unsigned long long)cnt.sos_general, now_seconds() - t0,
+           (unsigned long long)seed, fam_buf);
+    fflush(stdout);
+}
+
+/* The families hit the regimes they are meant to hit. */
+static void check_coverage(lh_test_state *lh_t_, int kind, int D, const fam_stats *fs)
+{
+    LH_EXPECT_GT_INT(fs[F_DEGEN].zeros, 0);
+    LH_EXPECT_GT_INT(fs[F_NEAR].zeros, 0);
+    LH_EXPECT_GT_INT(fs[F_NEAR].pos, 0);
+    LH_EXPECT_GT_INT(fs[F_NEAR].neg, 0);
+    /* ...and needed exact arithmetic (residues or the exact stage). orient_1 is exempt: the sign of p_1 - p_0 is
+     * a comparison of two doubles, which floating point gets right every time. */
+    if (!(kind == ORIENT && D == 1)) {
+        LH_EXPECT_GT_U64(fs[F_NEAR].exact, 0);
+        LH_EXPECT_GT_U64(fs[F_BIG].exact, 0);
+        LH_EXPECT_GT_U64(fs[F_TINY].exact, 0);
+    }
+    LH_EXPECT_GT_INT(fs[F_DEGEN].perm_checked + fs[F_NEAR].perm_checked, 0);
+    LH_EXPECT_GT_INT(fs[F_DEGEN].radon_checked + fs[F_NEAR].radon_checked, 0);
+    /* In R^1 exact zeros need repeated points, outside the SoS precondition. */
+    if (D > 1) LH_EXPECT_GT_INT(fs[F_DEGEN].sosref_checked + fs[F_NEAR].sosref_checked, 0);
 }
 
 static void run_oracle(lh_test_state *lh_t_, int kind, int D)
 {
     const char *pred = kind == ORIENT ? "orient" : "insphere";
     double t0 = now_seconds();
-    long cases = (long)(100000.0 * test_scale() + 0.5);
-    if (cases < 1000) cases = 1000;
+    long first;
+    const long cases = case_range(&first);
     const uint64_t base_seed = test_seed();
     const uint64_t seed = base_seed ^ ((uint64_t)(kind * 16 + D) * 0x2545f4914f6cdd1du);
-    long first = 0;
-    const char *only = getenv("LH_ORACLE_CASE"); /* rerun one case */
-    if (only && *only) {
-        first = strtol(only, NULL, 10);
-        cases = first + 1;
-    }
 
     lh_pred *ctx = NULL;
     LH_ASSERT_EQ_INT(lh_pred_create(NULL, &ctx), LH_OK);
@@ -432,49 +556,8 @@ static void run_oracle(lh_test_state *lh_t_, int kind, int D)
             break;
         }
     }
-
-    lh_pred_counters cnt;
-    lh_pred_counters_get(ctx, &cnt);
-    long zeros = 0;
-    for (int f = 0; f < F_COUNT; f++) zeros += fs[f].zeros;
-    uint64_t answered = cnt.filter_exits + cnt.residue_exits + cnt.exact_exits;
-    double exact_fraction = answered ? (double)cnt.exact_exits / (double)answered : 0.0;
-    char fam_buf[F_COUNT * 96];
-    size_t len = 0;
-    for (int f = 0; f < F_COUNT; f++)
-        len += (size_t)snprintf(fam_buf + len, sizeof fam_buf - len,
-                                " | %s n=%ld z=%ld x=%llu w=%ld s=%ld r=%ld e=%ld", fam_name[f],
-                                fs[f].cases, fs[f].zeros, (unsigned long long)fs[f].exact,
-                                fs[f].naive_wrong, fs[f].perm_checked, fs[f].radon_checked,
-                                fs[f].sosref_checked);
-    printf("oracle %s_%d: cases=%ld oracle_zeros=%ld exact_fraction=%.4f (calls=%llu "
-           "filter=%llu residue=%llu exact=%llu zero=%llu sos_fast=%llu sos_general=%llu) time=%.2fs "
-           "seed=%#llx%s\n",
-           pred, D, done, zeros, exact_fraction, (unsigned long long)cnt.calls,
-           (unsigned long long)cnt.filter_exits, (unsigned long long)cnt.residue_exits,
-           (unsigned long long)cnt.exact_exits, (unsigned long long)cnt.zero_results, (unsigned long long)cnt.sos_fast,
-           (unsigned long long)cnt.sos_general, now_seconds() - t0,
-           (unsigned long long)seed, fam_buf);
-    fflush(stdout);
-
-    if (bad_cases == 0 && first == 0) {
-        /* The families hit the regimes they are meant to hit. */
-        LH_EXPECT_GT_INT(fs[F_DEGEN].zeros, 0);
-        LH_EXPECT_GT_INT(fs[F_NEAR].zeros, 0);
-        LH_EXPECT_GT_INT(fs[F_NEAR].pos, 0);
-        LH_EXPECT_GT_INT(fs[F_NEAR].neg, 0);
-        /* ...and needed exact arithmetic (residues or the exact stage). orient_1 is exempt: the sign of p_1 - p_0 is
-         * a comparison of two doubles, which floating point gets right every time. */
-        if (!(kind == ORIENT && D == 1)) {
-            LH_EXPECT_GT_U64(fs[F_NEAR].exact, 0);
-            LH_EXPECT_GT_U64(fs[F_BIG].exact, 0);
-            LH_EXPECT_GT_U64(fs[F_TINY].exact, 0);
-        }
-        LH_EXPECT_GT_INT(fs[F_DEGEN].perm_checked + fs[F_NEAR].perm_checked, 0);
-        LH_EXPECT_GT_INT(fs[F_DEGEN].radon_checked + fs[F_NEAR].radon_checked, 0);
-        /* In R^1 exact zeros need repeated points, outside the SoS precondition. */
-        if (D > 1) LH_EXPECT_GT_INT(fs[F_DEGEN].sosref_checked + fs[F_NEAR].sosref_checked, 0);
-    }
+    print_summary(ctx, pred, D, done, seed, t0, fs);
+    if (bad_cases == 0 && first == 0) check_coverage(lh_t_, kind, D, fs);
     oracle_free(o);
     lh_pred_free(ctx);
 }

@@ -1,8 +1,8 @@
 /*
  * sites.h — seeded random numbers and exactly cospherical integer sites for the tool
- * (`lifthull points`) and the tests (test_pred_oracle); not part of the library (libc
- * and libm only, compiled into each program that uses it). C, callable from C++
- * (bench/).
+ * (`lifthull points`), the tests (their harness) and the benchmarks (bench_sites.cpp);
+ * not part of the library (libc and libm only, compiled into each program that uses
+ * it). C, callable from C++.
  */
 #ifndef LH_TOOLS_SITES_H
 #define LH_TOOLS_SITES_H

@@ -2,67 +2,64 @@
 #include "lh_families.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static uint64_t rng_state; /* test programs are single-threaded */
+#include "sites.h"
 
-void lh_fam_seed(uint64_t seed) { rng_state = seed; }
+/* Test programs are single-threaded. Unseeded, the generator starts as seed 0 does
+ * (xoshiro's all-zero state would give zeros forever). */
+static lht_rng rng;
+static int seeded;
 
-uint64_t lh_fam_rnd(void)
+void lh_fam_seed(uint64_t seed)
 {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return z ^ (z >> 31);
+    lht_rng_seed(&rng, seed);
+    seeded = 1;
 }
-double lh_fam_unif(void) { return (double)(lh_fam_rnd() >> 11) * 0x1p-53; } /* [0,1) */
 
-static double gauss(void)
+static lht_rng *gen(void)
 {
-    double u = lh_fam_unif() + 0x1p-60, v = lh_fam_unif();
-    return sqrt(-2 * log(u)) * cos(6.283185307179586 * v);
+    if (!seeded) lh_fam_seed(0);
+    return &rng;
 }
+
+uint64_t lh_fam_rnd(void) { return lht_rng_next(gen()); }
+double lh_fam_unif(void) { return lht_rng_unit(gen()); }
 
 const char *const lh_fam_name[F_COUNT] = {
     "uniform cube", "uniform ball", "gaussian clusters", "exactly cospherical",
     "integer grid", "grid + 1e-12", "within 1e-10 of a hyperplane", "5% duplicates",
     "offset 1e9, unit spread", "spread 1e-9", "mixed 1e-8..1e8"};
 
-/* Exactly cospherical: n points drawn at random from the points of Z^d with
- * |x|^2 = r2 (r2 chosen so that there are many). */
+typedef struct sink {
+    double *x;
+    size_t count;
+} sink;
+
+static void take_site(void *ctx, int d, const double *p)
+{
+    sink *k = ctx;
+    memcpy(k->x + k->count++ * (size_t)d, p, (size_t)d * sizeof *p);
+}
+
+/* Exactly cospherical: n integer points of one sphere centred at the origin, a random
+ * subset of all its lattice points (tools/sites.h). In 2D at most lht_circle_max()
+ * points (the whole of that circle); 0 when no sphere of sites.h has n. */
 static size_t sphere_points(int d, size_t n, double *x)
 {
-    static const int r2_for_dim[9] = {0, 0, 5525, 425, 50, 18, 12, 10, 8};
-    int r2 = r2_for_dim[d], r = (int)sqrt((double)r2);
-    size_t m = 0, cap = 50000;
-    double *all = malloc(cap * d * sizeof *all);
-    int c[8];
-    for (int j = 0; j < d; j++) c[j] = -r;
-    for (;;) {
-        int s = 0;
-        for (int j = 0; j < d; j++) s += c[j] * c[j];
-        if (s == r2 && m < cap) {
-            for (int j = 0; j < d; j++) all[m * d + j] = c[j];
-            m++;
-        }
-        int j = 0;
-        while (j < d && c[j] == r) c[j++] = -r;
-        if (j == d) break;
-        c[j]++;
+    if (d == 2 && n > lht_circle_max()) n = (size_t)lht_circle_max();
+    lht_sphere plan;
+    const int ok = lht_sphere_plan(&plan, d, n);
+    if (ok < 0) {
+        fprintf(stderr, "lh_families: out of memory planning %zu sphere points\n", n);
+        abort();
     }
-    size_t take = m < n ? m : n;
-    for (size_t i = 0; i < take; i++) { /* partial Fisher-Yates */
-        size_t k = i + lh_fam_rnd() % (m - i);
-        for (int j = 0; j < d; j++) {
-            double t = all[k * d + j];
-            all[k * d + j] = all[i * d + j];
-            all[i * d + j] = t;
-        }
-    }
-    memcpy(x, all, take * d * sizeof *x);
-    free(all);
-    return take;
+    sink k = {x, 0};
+    if (ok) lht_sphere_pick(&plan, gen(), n, take_site, &k);
+    lht_sphere_free(&plan);
+    return k.count;
 }
 
 size_t lh_fam_make(int fam, int d, size_t n, double *x)
@@ -83,7 +80,7 @@ size_t lh_fam_make(int fam, int d, size_t n, double *x)
             break;
         }
         case F_CLUSTERS:
-            for (int j = 0; j < d; j++) p[j] = (double)(i % 5) * 10 + gauss();
+            for (int j = 0; j < d; j++) p[j] = (double)(i % 5) * 10 + lht_rng_normal(gen());
             break;
         case F_GRID:
         case F_GRID_JITTER: {

@@ -393,8 +393,7 @@ std::string g17(double v) {
   return buf;
 }
 
-void write_triangle_files(const std::string &base, const Pslg &g, CDT &cdt, const std::vector<Vh> &vh) {
-  (void)vh;
+void write_triangle_files(const std::string &base, const Pslg &g, CDT &cdt) {
   // input vertices keep their indices; the mesher's new vertices follow
   Index next = g.pts.size();
   std::vector<std::array<double, 2>> extra;
@@ -482,83 +481,75 @@ void usage() {
                "        prints the triangle and vertex counts and the smallest angle\n";
 }
 
-}  // namespace
-
-int main(int argc, char **argv) {
-  if (argc < 2) { usage(); return 1; }
-  std::string mode = argv[1];
-  if (mode == "-h" || mode == "--help") { usage(); return 0; }
-  if (mode != "cdt" && mode != "mesh") { usage(); return 1; }
+// The command line: the mode, its options and the input file.
+struct Args {
+  std::string mode;
   bool convex = false, timing = false;
   double size = 0, bound = 0.125;
   std::string write_base, poly_out, file;
+};
+
+// Parses argv into a; returns -1 to go on, else the exit status (usage printed).
+int parse_args(int argc, char **argv, Args &a) {
+  if (argc < 2) { usage(); return 1; }
+  a.mode = argv[1];
+  if (a.mode == "-h" || a.mode == "--help") { usage(); return 0; }
+  if (a.mode != "cdt" && a.mode != "mesh") { usage(); return 1; }
   for (int i = 2; i < argc; ++i) {
-    std::string a = argv[i];
+    std::string arg = argv[i];
     auto value = [&]() -> std::string {
       if (i + 1 >= argc) { usage(); std::exit(1); }
       return argv[++i];
     };
-    if (a == "--convex") convex = true;
-    else if (a == "--time") timing = true;
-    else if (a == "--write") write_base = value();
-    else if (a == "--poly") poly_out = value();
-    else if (a == "--size") size = std::atof(value().c_str());
-    else if (a == "--bound") bound = std::atof(value().c_str());
-    else if (a.size() > 1 && a[0] == '-') { usage(); return 1; }
-    else if (file.empty()) file = a;
+    if (arg == "--convex") a.convex = true;
+    else if (arg == "--time") a.timing = true;
+    else if (arg == "--write") a.write_base = value();
+    else if (arg == "--poly") a.poly_out = value();
+    else if (arg == "--size") a.size = std::atof(value().c_str());
+    else if (arg == "--bound") a.bound = std::atof(value().c_str());
+    else if (arg.size() > 1 && arg[0] == '-') { usage(); return 1; }
+    else if (a.file.empty()) a.file = arg;
     else { usage(); return 1; }
   }
-  if (file.empty()) { usage(); return 1; }
+  if (a.file.empty()) { usage(); return 1; }
+  return -1;
+}
 
-  Pslg g;
-  if (ends_with(file, ".poly")) g = read_poly(file);
-  else if (ends_with(file, ".json")) g = read_rings(file);
-  else if (ends_with(file, ".edg")) g = read_edg(file);
-  else die("FILE must end in .poly, .json or .edg: " + file);
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+struct Times { Clock::time_point t0, t1, t2; };  // before and after the construction, the domain
 
-  CDT cdt;
-  std::vector<Vh> vh;
-  auto t0 = std::chrono::steady_clock::now();
-  try {
-    build(g, cdt, vh, convex);
-  } catch (const CDT::Intersection_of_constraints_exception &) {
-    std::cerr << "oracle_cgal_cdt: two segments cross (CGAL Intersection_of_constraints_exception)\n";
-    return 3;
+// cdt mode: the domain's triangles as sorted input indices, sorted.
+int run_cdt(const Args &a, const Pslg &g, CDT &cdt, const Times &tm) {
+  std::vector<std::array<Index, 3>> tris;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->is_in_domain()) continue;
+    std::array<Index, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+    std::sort(t.begin(), t.end());
+    tris.push_back(t);
   }
-  auto t1 = std::chrono::steady_clock::now();
-  mark_domain(g, cdt);
-  auto t2 = std::chrono::steady_clock::now();
+  std::sort(tris.begin(), tris.end());
+  std::string out;
+  out.reserve(tris.size() * 24);
+  for (const auto &t : tris)
+    out += std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  if (a.timing)
+    std::cerr << "oracle_cgal_cdt: cdt vertices=" << g.pts.size() << " segments=" << g.segs.size()
+              << " triangles=" << tris.size() << " time_cdt=" << seconds(tm.t0, tm.t1)
+              << " s time_domain=" << seconds(tm.t1, tm.t2) << " s\n";
+  if (!a.poly_out.empty()) write_poly(a.poly_out, g, cdt);
+  if (!a.write_base.empty()) write_triangle_files(a.write_base, g, cdt);
+  return 0;
+}
 
-  if (mode == "cdt") {
-    std::vector<std::array<Index, 3>> tris;
-    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-      if (!f->is_in_domain()) continue;
-      std::array<Index, 3> t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-      std::sort(t.begin(), t.end());
-      tris.push_back(t);
-    }
-    std::sort(tris.begin(), tris.end());
-    std::string out;
-    out.reserve(tris.size() * 24);
-    for (const auto &t : tris)
-      out += std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
-    std::fwrite(out.data(), 1, out.size(), stdout);
-    if (timing)
-      std::cerr << "oracle_cgal_cdt: cdt vertices=" << g.pts.size() << " segments=" << g.segs.size()
-                << " triangles=" << tris.size() << " time_cdt="
-                << std::chrono::duration<double>(t1 - t0).count() << " s time_domain="
-                << std::chrono::duration<double>(t2 - t1).count() << " s\n";
-    if (!poly_out.empty()) write_poly(poly_out, g, cdt);
-    if (!write_base.empty()) write_triangle_files(write_base, g, cdt, vh);
-    return 0;
-  }
-
-  // mesh
+// mesh mode: Delaunay_mesher_2 on the marked domain, then its counts and smallest angle.
+int run_mesh(const Args &a, const Pslg &g, CDT &cdt, const std::vector<Vh> &vh, const Times &tm) {
   using Criteria = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
-  CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(bound, size));
+  CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(a.bound, a.size));
   mesher.init(true);  // the domain as marked above
   mesher.refine_mesh();
-  auto t3 = std::chrono::steady_clock::now();
+  auto t3 = Clock::now();
   std::size_t n = 0;
   double amin = 180;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
@@ -568,18 +559,44 @@ int main(int argc, char **argv) {
   }
   std::printf("triangles %zu\nvertices %zu\nmin_angle %.6f\n", n,
               static_cast<std::size_t>(cdt.number_of_vertices()), n ? amin : 0.0);
-  if (timing)
-    std::cerr << "oracle_cgal_cdt: mesh B=" << bound << " S=" << size << " triangles=" << n
-              << " time_cdt=" << std::chrono::duration<double>(t1 - t0).count()
-              << " s time_refine=" << std::chrono::duration<double>(t3 - t2).count()
-              << " s time_total=" << std::chrono::duration<double>(t3 - t0).count() << " s\n";
-  if (!write_base.empty()) {
+  if (a.timing)
+    std::cerr << "oracle_cgal_cdt: mesh B=" << a.bound << " S=" << a.size << " triangles=" << n
+              << " time_cdt=" << seconds(tm.t0, tm.t1) << " s time_refine=" << seconds(tm.t2, t3)
+              << " s time_total=" << seconds(tm.t0, t3) << " s\n";
+  if (!a.write_base.empty()) {
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
       // the mesher's new vertices carry default (or copied) info: mark them unnumbered
       Index i = v->info();
       if (i >= g.pts.size() || vh[i] != Vh(v)) v->info() = kNone;
     }
-    write_triangle_files(write_base, g, cdt, vh);
+    write_triangle_files(a.write_base, g, cdt);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  Args a;
+  const int status = parse_args(argc, argv, a);
+  if (status >= 0) return status;
+  Pslg g;
+  if (ends_with(a.file, ".poly")) g = read_poly(a.file);
+  else if (ends_with(a.file, ".json")) g = read_rings(a.file);
+  else if (ends_with(a.file, ".edg")) g = read_edg(a.file);
+  else die("FILE must end in .poly, .json or .edg: " + a.file);
+
+  CDT cdt;
+  std::vector<Vh> vh;
+  Times tm{Clock::now(), {}, {}};
+  try {
+    build(g, cdt, vh, a.convex);
+  } catch (const CDT::Intersection_of_constraints_exception &) {
+    std::cerr << "oracle_cgal_cdt: two segments cross (CGAL Intersection_of_constraints_exception)\n";
+    return 3;
+  }
+  tm.t1 = Clock::now();
+  mark_domain(g, cdt);
+  tm.t2 = Clock::now();
+  return a.mode == "cdt" ? run_cdt(a, g, cdt, tm) : run_mesh(a, g, cdt, vh, tm);
 }
