@@ -3,20 +3,13 @@
  * the facets are exactly the Delaunay triangulation's hull facets; on degenerate
  * input the vertices are exactly the corners and the facets do not depend on the
  * input order or the seed; bad inputs. */
+#include "lh_families.h"
 #include "lh_test.h"
 #include "lifthull.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-static uint64_t rng_state;
-static double unif(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
-}
 
 /* Exact: all sites on the inner side of (or on) every facet, every facet non-flat
  * (some site strictly inside its hyperplane's inner side), every ridge shared by
@@ -74,8 +67,8 @@ LH_TEST(hull_is_exactly_convex_and_closed)
         for (int grid = 0; grid <= 1 && !LH_FAILED(); grid++) {
             size_t n = sizes[d];
             double *x = malloc(n * d * sizeof *x);
-            rng_state = (uint64_t)(d * 10 + grid);
-            for (size_t i = 0; i < n * d; i++) x[i] = grid ? (double)(int)(3 * unif()) : unif();
+            lh_fam_seed((uint64_t)(d * 10 + grid));
+            for (size_t i = 0; i < n * d; i++) x[i] = grid ? (double)(int)(3 * lh_fam_unif()) : lh_fam_unif();
             lh_hull *h;
             lh_status st = lh_convex_hull(d, n, x, NULL, &h);
             LH_EXPECT_EQ_INT(st, LH_OK);
@@ -94,8 +87,8 @@ LH_TEST(general_position_hull_equals_delaunay_hull)
     for (int d = 2; d <= 5 && !LH_FAILED(); d++) {
         size_t n = d == 2 ? 2000 : d == 3 ? 1000 : d == 4 ? 300 : 120;
         double *x = malloc(n * d * sizeof *x);
-        rng_state = (uint64_t)(77 + d);
-        for (size_t i = 0; i < n * d; i++) x[i] = unif();
+        lh_fam_seed((uint64_t)(77 + d));
+        for (size_t i = 0; i < n * d; i++) x[i] = lh_fam_unif();
         lh_hull *h;
         lh_tri *t;
         LH_ASSERT_EQ_INT(lh_convex_hull(d, n, x, NULL, &h), LH_OK);
@@ -182,12 +175,12 @@ LH_TEST(vertices_are_corners_whatever_the_order)
         for (int kind = 0; kind < 3 && !LH_FAILED(); kind++) {
             size_t n = d == 2 ? 120 : d == 3 ? 90 : d == 4 ? 60 : 40;
             double *x = malloc(n * d * sizeof *x);
-            rng_state = (uint64_t)(1000 + 10 * d + kind);
+            lh_fam_seed((uint64_t)(1000 + 10 * d + kind));
             for (size_t i = 0; i < n; i++)
                 for (int j = 0; j < d; j++) {
                     double *c = x + i * d + j;
-                    if (kind == 0) *c = (double)(int)(3 * unif()); /* {0,1,2}^d */
-                    else *c = (double)(int)(64 * unif()) / 64; /* dyadic, in [0, 1) */
+                    if (kind == 0) *c = (double)(int)(3 * lh_fam_unif()); /* {0,1,2}^d */
+                    else *c = (double)(int)(64 * lh_fam_unif()) / 64; /* dyadic, in [0, 1) */
                     if (kind == 1 && j == (int)(i % d)) *c = (double)(i / d % 2); /* on a face of the unit cube */
                     if (kind == 2 && j == (int)(i % d) && i % 5) *c = 1; /* on a face through (1,..,1) */
                 }
@@ -213,7 +206,7 @@ LH_TEST(vertices_are_corners_whatever_the_order)
                 lh_index *perm = malloc(n * sizeof *perm);
                 for (size_t i = 0; i < n; i++) perm[i] = how == 0 ? (lh_index)(n - 1 - i) : (lh_index)i;
                 for (size_t i = n; how == 1 && i > 1; i--) {
-                    size_t j = (size_t)(unif() * (double)i);
+                    size_t j = (size_t)(lh_fam_unif() * (double)i);
                     lh_index t = perm[i - 1];
                     perm[i - 1] = perm[j];
                     perm[j] = t;

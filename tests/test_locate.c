@@ -1,20 +1,13 @@
 /* test_locate.c — lh_tri_locate: inside, the simplex really contains q (exact) and
  * the barycentric coordinates rebuild q; outside, the distance is the distance to the
  * hull (brute force over hull edges in 2D, bounded by the nearest vertex elsewhere). */
+#include "lh_families.h"
 #include "lh_test.h"
 #include "lifthull.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-static uint64_t rng_state = 3;
-static double unif(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
-}
 
 static double seg_dist(const double *a, const double *b, const double *q)
 {
@@ -88,10 +81,11 @@ LH_TEST(queries_inside_outside_and_on_sites)
 {
     lh_pred *pred;
     LH_ASSERT_EQ_INT(lh_pred_create(NULL, &pred), LH_OK);
+    lh_fam_seed(3);
     for (int d = 2; d <= 5 && !LH_FAILED(); d++) {
         size_t n = d == 2 ? 500 : d == 3 ? 300 : 100;
         double *x = malloc(n * d * sizeof *x);
-        for (size_t i = 0; i < n * d; i++) x[i] = unif();
+        for (size_t i = 0; i < n * d; i++) x[i] = lh_fam_unif();
         lh_tri *t;
         LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &t), LH_OK);
         int inside = 0, outside = 0;
@@ -101,7 +95,7 @@ LH_TEST(queries_inside_outside_and_on_sites)
             if (k % 4 == 3) /* a site: on the triangulation's vertices */
                 for (int j = 0; j < d; j++) q[j] = x[(size_t)(k % n) * d + j];
             else
-                for (int j = 0; j < d; j++) q[j] = 1.4 * unif() - 0.2;
+                for (int j = 0; j < d; j++) q[j] = 1.4 * lh_fam_unif() - 0.2;
             lh_location loc;
             LH_ASSERT_EQ_INT(lh_tri_locate(t, q, hint, &loc), LH_OK);
             if (loc.simplex >= 0) {
@@ -144,7 +138,7 @@ LH_TEST(points_on_shared_faces_get_the_smallest_simplex)
         const int nv = d + 1;
         for (int k = 0; k < 200 && !LH_FAILED(); k++) {
             double q[8];
-            for (int j = 0; j < d; j++) q[j] = 0.5 * (double)(rng_state = rng_state * 6364136223846793005u + 1442695040888963407u, (rng_state >> 33) % (2 * side - 1));
+            for (int j = 0; j < d; j++) q[j] = 0.5 * (double)(lh_fam_rnd() % (uint64_t)(2 * side - 1));
             lh_index want = -1;
             for (size_t c = 0; c < lh_tri_count(t) && want < 0; c++) {
                 const lh_index *v = lh_tri_simplices(t) + c * nv;

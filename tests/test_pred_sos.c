@@ -8,19 +8,12 @@
  * integer coordinates, a quarter of them in a common hyperplane, so degeneracies of
  * every kind are frequent. (orient_1 and insphere_1 of distinct points are never
  * zero: their perturbation only shows for equal points.) */
+#include "lh_families.h"
 #include "lh_test.h"
 #include "pred_internal.h"
 
 #include <string.h>
 
-static uint64_t rng_state = 0x9E3779B97F4A7C15u;
-static uint64_t rnd(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return z ^ (z >> 31);
-}
 
 static int more_significant(const double *const *p, int dim, int a, int b)
 {
@@ -92,7 +85,7 @@ static void random_points(double x[][8], int n, int dim, int span)
     for (int i = 0; i < n; i++) {
         int fresh;
         do {
-            for (int j = 0; j < dim; j++) x[i][j] = (double)(rnd() % (uint64_t)span);
+            for (int j = 0; j < dim; j++) x[i][j] = (double)(lh_fam_rnd() % (uint64_t)span);
             fresh = 1;
             for (int k = 0; k < i && fresh; k++) fresh = memcmp(x[i], x[k], sizeof(double) * (size_t)dim) != 0;
         } while (!fresh);
@@ -164,14 +157,14 @@ static void check_antisymmetry(lh_test_state *lh_t_, int lifted, int maxdim)
         for (int t = 0; t < 300 && !LH_FAILED(); t++) {
             double x[LH__MAXN][8];
             const double *p[LH__MAXN], *q[LH__MAXN];
-            random_points(x, n, dim, 2 + (int)(rnd() % 2));
+            random_points(x, n, dim, 2 + (int)(lh_fam_rnd() % 2));
             for (int i = 0; i < n; i++) p[i] = x[i];
             int s = perturbed(ctx, lifted, dim, p);
             LH_EXPECT_TRUE(s == 1 || s == -1);
             int perm[LH__MAXN], sign = 1;
             for (int i = 0; i < n; i++) perm[i] = i;
             for (int i = n - 1; i > 0; i--) { /* Fisher-Yates, counting exchanges */
-                int j = (int)(rnd() % (uint64_t)(i + 1));
+                int j = (int)(lh_fam_rnd() % (uint64_t)(i + 1));
                 if (j != i) {
                     int tmp = perm[i];
                     perm[i] = perm[j];
