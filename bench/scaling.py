@@ -33,14 +33,14 @@ import scaling_report  # noqa: E402
 # where a decade is the whole range; 7D and 8D stop at 10^3 (Delaunay's size grows fast
 # with d: 8D, 10^3 uniform sites give millions of simplices). The degenerate families
 # run in 2D-4D; cospherical sizes stay within tools/sites.h's generator (2D: 1105920
-# sites, 3D: 200000).
+# sites, 3D: 10^7).
 FULL = {
     "uniform": {2: [10**3, 10**4, 10**5, 10**6], 3: [10**3, 10**4, 10**5, 10**6],
                 4: [10**3, 10**4, 10**5], 5: [10**3, 10**4, 2 * 10**4, 10**5],
                 6: [10**3, 3000, 10**4], 7: [100, 300, 1000], 8: [100, 300, 1000]},
     "grid": {2: [10**3, 10**4, 10**5, 10**6], 3: [10**3, 10**4, 10**5, 10**6],
              4: [10**3, 10**4, 10**5]},
-    "sphere": {2: [10**3, 10**4, 10**5, 10**6], 3: [10**3, 10**4, 10**5], 4: [10**3, 10**4, 10**5]},
+    "sphere": {2: [10**3, 10**4, 10**5, 10**6], 3: [10**3, 10**4, 10**5, 10**6], 4: [10**3, 10**4, 10**5]},
 }
 # --quick: a smoke run of the whole pipeline in about a minute; its times mean little.
 QUICK = {

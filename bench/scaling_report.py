@@ -93,7 +93,7 @@ def _protocol(res, out):
             "origin (exact in doubles), a seeded random subset of all the lattice points of "
             "a sphere |x|^2 = M chosen to hold at least n, in random order: the exactly "
             "cospherical sites of tools/sites.h (as `lifthull points --exact-sphere`; in 2D M "
-            "a product of primes 1 mod 4, at most 1105920 sites; in 3D at most 200000). Every "
+            "a product of primes 1 mod 4, at most 1105920 sites; in 3D at most 10^7). Every "
             "triangulation of such sites is Delaunay; the exact tools pick one by their "
             "perturbation, so from 3D on simplex counts may differ between tools. Qhull "
             "runs with `Qz` added (it refuses cospherical input under `Qbb` without it).",

@@ -21,6 +21,8 @@
  */
 #include "sites.h"
 
+#include "squares3.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -156,14 +158,6 @@ static int plan_circle(lht_sphere *p, uint64_t n)
     return 1;
 }
 
-static uint64_t isqrt_u64(uint64_t v) /* v < 2^53 */
-{
-    uint64_t s = (uint64_t)sqrt((double)v);
-    while (s * s > v) s--;
-    while ((s + 1) * (s + 1) <= v) s++;
-    return s;
-}
-
 /* Distinct signed permutations of a sorted tuple: d! / prod(run length!) * 2^nonzeros. */
 static uint64_t signed_perms(const int64_t *a, int d)
 {
@@ -192,11 +186,19 @@ static int push_tuple(lht_sphere *p, const int64_t *a)
     return 0;
 }
 
-/* Sorted tuples a[pos..d-1] >= lo with squares summing to rem; -1 out of memory. */
+static int take_triple(void *ctx, const int64_t t[3])
+{
+    lht_sphere *p = ctx;
+    p->total += signed_perms(t, 3);
+    return push_tuple(p, t);
+}
+
+/* Sorted tuples a[pos..d-1] >= lo with squares summing to rem; -1 out of memory
+ * (d >= 4; in 3D lht_squares3_each finds them in about sqrt(m) steps, not m). */
 static int find_tuples(lht_sphere *p, int64_t *a, int pos, int64_t lo, uint64_t rem)
 {
     if (pos == p->d - 1) {
-        uint64_t s = isqrt_u64(rem);
+        uint64_t s = lht_isqrt(rem);
         if (s * s != rem || (int64_t)s < lo) return 0;
         a[pos] = (int64_t)s;
         p->total += signed_perms(a, p->d);
@@ -228,7 +230,8 @@ static int plan_sphere(lht_sphere *p, uint64_t n)
         if (p->d == 3 && (m % 8 == 7 || m % 4 == 0)) continue; /* none, or 2x those of m/4 */
         p->tuple_count = 0;
         p->total = 0;
-        if (find_tuples(p, a, 0, 0, m) != 0) return -1;
+        if ((p->d == 3 ? lht_squares3_each(m, take_triple, p) : find_tuples(p, a, 0, 0, m)) != 0)
+            return -1;
         if (p->total >= n) {
             p->m = m;
             return 1;
@@ -273,7 +276,7 @@ static void offer_circle(const lht_sphere *p, picker *k)
     int j[LHT_GAUSS_PRIMES] = {0};
     for (int i = 0; i < LHT_GAUSS_PRIMES; i++) /* p = a^2 + b^2, a > b > 0 */
         for (int64_t b = 1; b * b * 2 < gauss_prime[i]; b++) {
-            int64_t a = (int64_t)isqrt_u64((uint64_t)(gauss_prime[i] - b * b));
+            int64_t a = (int64_t)lht_isqrt((uint64_t)(gauss_prime[i] - b * b));
             if (a * a + b * b == gauss_prime[i]) root[i][0] = a, root[i][1] = b;
         }
     for (;;) {

@@ -14,7 +14,7 @@
 extern "C" {
 #endif
 
-enum { LHT_MAX_DIM = 8, LHT_GAUSS_PRIMES = 21, LHT_EXACT_SPHERE_MAX_3D = 200000 };
+enum { LHT_MAX_DIM = 8, LHT_GAUSS_PRIMES = 21, LHT_EXACT_SPHERE_MAX_3D = 10000000 };
 
 /* xoshiro256**: the state is never all zero (splitmix64 outputs). */
 typedef struct lht_rng {

@@ -66,6 +66,7 @@ done
 check exact 15360 -d 2 --exact-sphere
 check exact 100000 -d 2 --exact-sphere   # M about 2^86: past 64 bits
 check exact 20000 -d 3 --exact-sphere
+check exact 100000 -d 3 --exact-sphere --seed 4
 check int:100 500 -d 3 --ball --integer 100
 check int:5 2000 -d 2 --clusters 3 --integer 5   # tails clamped to [-R, R]
 check int:1000000000000000 50 -d 2 --sphere --integer 1000000000000000
@@ -127,6 +128,7 @@ usage "more clusters than the 5 points" 5 --clusters 6
 usage "unexpected argument '4'" 3 4
 usage "-f only makes sense with -o" 10 -f
 usage "--exact-sphere in 2D gives at most 1105920 points" 1105921 -d 2 --exact-sphere
+usage "--exact-sphere in 3D gives at most 10000000 points" 10000001 -d 3 --exact-sphere
 "$lh" points --help > "$tmp/out" 2> "$tmp/err"; c=$?
 if [ $c -eq 0 ] && grep -q "^usage: lifthull points N" "$tmp/out" && grep -q "examples:" "$tmp/out" && [ ! -s "$tmp/err" ]; then ok; else bad "--help: exit $c"; fi
 
