@@ -261,13 +261,6 @@ static void pick(picker *k, const int64_t *v)
     k->left--;
 }
 
-static void gauss_mul(int64_t *z, int64_t re, int64_t im)
-{
-    int64_t a = z[0];
-    z[0] = a * re - z[1] * im;
-    z[1] = a * im + z[1] * re;
-}
-
 /* d = 2: every point of the circle, choice by choice (a mixed-radix counter j[i] in
  * 0..exps[i]), through the picker. */
 static void offer_circle(const lht_sphere *p, picker *k)
@@ -275,14 +268,11 @@ static void offer_circle(const lht_sphere *p, picker *k)
     int64_t root[LHT_GAUSS_PRIMES][2];
     int j[LHT_GAUSS_PRIMES] = {0};
     for (int i = 0; i < LHT_GAUSS_PRIMES; i++) /* p = a^2 + b^2, a > b > 0 */
-        for (int64_t b = 1; b * b * 2 < gauss_prime[i]; b++) {
-            int64_t a = (int64_t)lht_isqrt((uint64_t)(gauss_prime[i] - b * b));
-            if (a * a + b * b == gauss_prime[i]) root[i][0] = a, root[i][1] = b;
-        }
+        lht_gauss_split((uint64_t)gauss_prime[i], root[i]);
     for (;;) {
         int64_t z[2] = {1, 0};
         for (int i = 0; i < LHT_GAUSS_PRIMES; i++)
-            for (int t = 0; t < p->exps[i]; t++) gauss_mul(z, root[i][0], t < j[i] ? root[i][1] : -root[i][1]);
+            for (int t = 0; t < p->exps[i]; t++) lht_gauss_mul(z, root[i][0], t < j[i] ? root[i][1] : -root[i][1]);
         int64_t units[4][2] = {{z[0], z[1]}, {-z[1], z[0]}, {-z[0], -z[1]}, {z[1], -z[0]}};
         for (int u = 0; u < 4; u++) pick(k, units[u]);
         int i = 0;

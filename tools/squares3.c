@@ -73,18 +73,24 @@ static uint64_t sqrt_mod(uint64_t x, uint64_t p)
     return r;
 }
 
-/* pi = u + vi with u^2 + v^2 = p, for a prime p = 1 mod 4; -2 if that fails (p not
- * such a prime: unreachable, checked so that a defect cannot go unseen). */
-static int gauss_prime(uint64_t p, int64_t pi[2])
+void lht_gauss_mul(int64_t z[2], int64_t re, int64_t im)
+{
+    int64_t x = z[0];
+    z[0] = x * re - z[1] * im;
+    z[1] = x * im + z[1] * re;
+}
+
+/* Checked, so that a defect (p not such a prime) cannot go unseen. */
+int lht_gauss_split(uint64_t p, int64_t pi[2])
 {
     uint64_t r0 = p, r1 = sqrt_mod(p - 1, p), sp = lht_isqrt(p);
     while (r1 > sp) {
         uint64_t r2 = r0 % r1;
         r0 = r1, r1 = r2;
     }
-    pi[0] = (int64_t)r1;
-    pi[1] = (int64_t)lht_isqrt(p - r1 * r1);
-    return (uint64_t)(pi[0] * pi[0] + pi[1] * pi[1]) == p ? 0 : -2;
+    const int64_t u = (int64_t)r1, v = (int64_t)lht_isqrt(p - r1 * r1);
+    pi[0] = u > v ? u : v, pi[1] = u > v ? v : u;
+    return (uint64_t)(u * u + v * v) == p && u != v ? 0 : -2;
 }
 
 typedef struct factor {
@@ -166,12 +172,9 @@ static int spread(sq3 *s, size_t *n, const int64_t pi[2], uint32_t g)
     if (reserve_z(s, *n * (g + 1)) != 0) return -1;
     for (uint32_t j = g + 1; j-- > 0;) /* j = 0 last: it overwrites the sources */
         for (size_t i = 0; i < *n; i++) {
-            int64_t x = s->z[2 * i], y = s->z[2 * i + 1];
-            for (uint32_t t = 0; t < g; t++) {
-                int64_t v = t < j ? pi[1] : -pi[1], x2 = x * pi[0] - y * v;
-                y = x * v + y * pi[0], x = x2;
-            }
-            s->z[2 * (j * *n + i)] = x, s->z[2 * (j * *n + i) + 1] = y;
+            int64_t z[2] = {s->z[2 * i], s->z[2 * i + 1]};
+            for (uint32_t t = 0; t < g; t++) lht_gauss_mul(z, pi[0], t < j ? pi[1] : -pi[1]);
+            s->z[2 * (j * *n + i)] = z[0], s->z[2 * (j * *n + i) + 1] = z[1];
         }
     *n *= g + 1;
     return 0;
@@ -190,12 +193,10 @@ static int pairs(sq3 *s, size_t a, size_t *n)
     int64_t base[2] = {1, 0}, pi[2];
     for (uint32_t i = s->head[a]; i != NONE; i = s->f[i].next) {
         const factor *f = &s->f[i];
+        if (f->p % 4 == 1) continue; /* spread below */
         if (f->p % 4 == 3 && f->e % 2) return 1;
-        for (uint32_t t = 0; f->p % 4 != 1 && t < (f->p == 2 ? f->e : f->e / 2); t++) {
-            int64_t x = base[0], y = base[1];
-            if (f->p == 2) base[0] = x - y, base[1] = x + y; /* times 1 + i */
-            else base[0] = x * (int64_t)f->p, base[1] = y * (int64_t)f->p;
-        }
+        for (uint32_t t = 0; t < (f->p == 2 ? f->e : f->e / 2); t++)
+            lht_gauss_mul(base, f->p == 2 ? 1 : (int64_t)f->p, f->p == 2 ? 1 : 0); /* 1 + i, or q */
     }
     if (s->rest[a] % 4 == 3) return 1;
     if (reserve_z(s, 4) != 0) return -1;
@@ -203,11 +204,11 @@ static int pairs(sq3 *s, size_t a, size_t *n)
     s->z[0] = base[0], s->z[1] = base[1];
     for (uint32_t i = s->head[a]; i != NONE; i = s->f[i].next)
         if (s->f[i].p % 4 == 1) {
-            if (gauss_prime(s->f[i].p, pi) != 0) return -2;
+            if (lht_gauss_split(s->f[i].p, pi) != 0) return -2;
             if (spread(s, n, pi, s->f[i].e) != 0) return -1;
         }
     if (s->rest[a] > 1) {
-        if (gauss_prime(s->rest[a], pi) != 0) return -2;
+        if (lht_gauss_split(s->rest[a], pi) != 0) return -2;
         if (spread(s, n, pi, 1) != 0) return -1;
     }
     size_t kept = 0;
