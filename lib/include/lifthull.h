@@ -85,7 +85,9 @@ LH_API const char *lh_version_string(void);
     X(LH_ERR_INTERNAL, 9, "internal consistency check failed")                    \
     X(LH_ERR_INVALID_MESH, 10, "the given triangulation or mesh is not valid")     \
     X(LH_ERR_BUFFER_TOO_SMALL, 11, "output buffer too small")                      \
-    X(LH_ERR_CROSSING_SEGMENTS, 12, "input segments cross")
+    X(LH_ERR_CROSSING_SEGMENTS, 12, "input segments cross")                        \
+    X(LH_ERR_INTERSECTING_FACETS, 13, "input facets intersect")                    \
+    X(LH_ERR_STEINER_LIMIT, 14, "Steiner point limit reached before recovery ended")
 
 typedef enum lh_status {
 #define LH_STATUS_ENUM_(name, value, msg) name = value,
@@ -1034,6 +1036,201 @@ LH_API int lh_triangle_scaled_edges(const double a[2], const double b[2], const 
 LH_API lh_status lh_cdt_check(size_t n, const double *xy, size_t tri_count, const lh_index *tris,
                               size_t seg_count, const lh_index *segs, int boundary_free,
                               const lh_allocator *alloc, lh_error *err);
+
+/* ---- piecewise linear complexes: the input of 3D meshing ------------------------ */
+
+/*
+ * A piecewise linear complex (PLC) in R^3, TetGen's input: points; facets, each a set
+ * of polygons lying in one plane (the first usually its outer boundary, the others
+ * holes' boundaries, slits — 2 vertices — or lone points — 1 vertex) with hole points
+ * in the facet's plane that carve holes out of it; free segments; hole points and
+ * region points with an attribute and a volume bound. Arrays are flat, offsets-style:
+ * facet f's polygons are facet_first[f] .. facet_first[f+1]-1, polygon p's vertices
+ * polygon_vertices[polygon_first[p] .. polygon_first[p+1]-1]. The readers allocate
+ * every array (lh_plc_free releases them); a program building its own lh_plc zeroes
+ * it and points the arrays at its own memory (never passed to lh_plc_free).
+ */
+typedef struct lh_plc {
+    size_t n;                    /* points                                              */
+    double *xyz;                 /* 3n coordinates                                      */
+    int attr_count;              /* attributes per point (.node, .poly); 0 otherwise    */
+    double *attr;                /* n*attr_count, or NULL                               */
+    lh_index *point_marker;      /* n boundary markers, or NULL                         */
+    size_t facet_count;
+    lh_index *facet_first;       /* facet_count + 1 offsets into the polygons           */
+    lh_index *facet_marker;      /* facet_count markers, or NULL                        */
+    size_t polygon_count;
+    lh_index *polygon_first;     /* polygon_count + 1 offsets into polygon_vertices     */
+    lh_index *polygon_vertices;  /* 0-based point indices                               */
+    lh_index *facet_hole_first;  /* facet_count + 1 offsets into facet_holes, or NULL   */
+    double *facet_holes;         /* 3 per hole point of a facet                         */
+    size_t segment_count;        /* free segments (Medit Edges, OBJ l): 2 indices each  */
+    lh_index *segments;
+    lh_index *segment_marker;    /* segment_count markers, or NULL                      */
+    size_t hole_count;
+    double *holes;               /* 3 per hole point (x y z)                            */
+    size_t region_count;
+    double *regions;             /* 5 per region: x y z attribute max_volume (<= 0: no
+                                    bound)                                              */
+    int first_index;             /* readers: the file's first point number (0 or 1)    */
+    /* readers only (NULL otherwise): the 1-based line (binary formats: the record
+       number) each item was read from, for diagnostics */
+    size_t *point_line, *facet_line, *segment_line, *hole_line, *region_line;
+    lh_allocator alloc_;         /* private: the hooks that allocated the arrays        */
+} lh_plc;
+
+/* Formats lh_plc_read reads. */
+typedef enum lh_plc_format {
+    LH_PLC_AUTO = 0,  /* by the name's extension, else by the content's first bytes     */
+    LH_PLC_POLY = 1,  /* TetGen .poly (3D): nodes, facets, holes, regions              */
+    LH_PLC_SMESH = 2, /* TetGen .smesh: as .poly, facets as one polygon each            */
+    LH_PLC_NODE = 3,  /* TetGen .node: points only (a Delaunay tetrahedralization)      */
+    LH_PLC_OFF = 4,   /* Geomview OFF                                                   */
+    LH_PLC_PLY = 5,   /* Stanford PLY, ascii and binary (little and big endian)         */
+    LH_PLC_STL = 6,   /* STL, ascii and binary; coincident corners merged exactly       */
+    LH_PLC_MEDIT = 7, /* Medit .mesh (ascii): Vertices, Triangles, Quadrilaterals, Edges */
+    LH_PLC_OBJ = 8    /* Wavefront .obj: v, f (v, v/t, v/t/n, v//n; negative indices), l */
+} lh_plc_format;
+
+/* The format's name: "auto", "poly", "smesh", "node", "off", "ply", "stl", "medit",
+ * "obj" (static storage; "unknown" otherwise). */
+LH_API const char *lh_plc_format_name(lh_plc_format format);
+
+/*
+ * lh_plc_read: a PLC from f (read to its end, one pass). name is for diagnostics and
+ * LH_PLC_AUTO (NULL: "<input>"). Diagnostics as lh_points_read: one line
+ * "NAME:LINE:COL: expected ..., found ..." in err->message (binary formats name the
+ * record: "NAME: triangle 17: ..."). Every index is range checked; a polygon of no
+ * vertex, a facet without a polygon of 3 or more vertices, NaN or infinity are errors.
+ * A .poly whose node count is 0 takes its points from the .node of the same name:
+ * then out->n is 0 and the caller attaches them (lh_plc_take_points).
+ * Returns LH_OK with *out filled, or with *out zeroed: LH_ERR_PARSE, LH_ERR_NONFINITE,
+ * LH_ERR_TOO_LARGE, LH_ERR_NOMEM, LH_ERR_IO, LH_ERR_INVALID_ARGUMENT.
+ */
+LH_API lh_status lh_plc_read(FILE *f, const char *name, lh_plc_format format,
+                             const lh_allocator *alloc, lh_plc *out, lh_error *err);
+/* Moves p's coordinates (d = 3), attributes and markers into g (g->n == 0), leaving p
+ * zeroed; g's indices are renumbered from p's first_index. LH_OK or
+ * LH_ERR_INVALID_ARGUMENT. */
+LH_API lh_status lh_plc_take_points(lh_plc *g, lh_points *p);
+/* Frees what a reader allocated (not g) and zeroes g; NULL or a zeroed g is a no-op. */
+LH_API void lh_plc_free(lh_plc *g);
+
+/*
+ * lh_plc_intersections: the pairs of facets of g that intersect other than in what
+ * they share — TetGen's -d. Exact: facets are triangulated in their planes (as
+ * lh_tetrahedralize does) and every pair of triangles from different facets is tested
+ * with exact orient3d; two facets sharing a vertex or an edge intersect when they
+ * meet elsewhere too, or overlap in a plane. Writes at most cap pairs (facet indices,
+ * the smaller first, pairs sorted) into pairs (2*cap lh_index; may be NULL when cap is
+ * 0) and the number of intersecting pairs into *count.
+ * Returns LH_OK, LH_ERR_INVALID_ARGUMENT, LH_ERR_NONFINITE, LH_ERR_NOMEM.
+ */
+LH_API lh_status lh_plc_intersections(const lh_plc *g, const lh_allocator *alloc, size_t cap,
+                                      lh_index *pairs, size_t *count, lh_error *err);
+
+/* ---- tetrahedral meshes of PLCs --------------------------------------------------- */
+
+/* Options of lh_tetrahedralize; lh_tetmesh_options_default sets every default. The
+ * letters are TetGen's switches for the same thing. */
+typedef struct lh_tetmesh_options {
+    const lh_allocator *alloc; /* NULL: malloc/free                                   */
+    int convex_hull;           /* -c: keep every tetrahedron of the convex hull (holes
+                                  still carved) (default 0)                          */
+    int boundary_steiner;      /* 1: Steiner points may go on segments and facets
+                                  (default); 0 (-Y): interior Steiner points only    */
+    size_t max_steiner;        /* -S: at most this many Steiner points; more needed is
+                                  LH_ERR_STEINER_LIMIT (default SIZE_MAX)            */
+    int region_attributes;     /* -A: each tetrahedron carries its region's attribute,
+                                  regions without one numbered (default 0)           */
+    int check_intersections;   /* 1: facets that intersect are LH_ERR_INTERSECTING_
+                                  FACETS naming the first pairs (default 1)         */
+    int threads;               /* as lh_options.threads (default 1)                 */
+} lh_tetmesh_options;
+LH_API void lh_tetmesh_options_default(lh_tetmesh_options *opt);
+
+/*
+ * lh_tetrahedralize: a tetrahedralization of the PLC's domain in which every facet is
+ * a union of triangles and every segment (facet edges included) a union of edges
+ * (docs/meshing3d.md). Exact: every decision is an exact predicate; Steiner points are
+ * constructions rounded once each, so one put on a segment or a facet is within an
+ * ulp of it, not necessarily exactly on it (lh_tetmesh_stats counts those that are
+ * not). Holes are carved by flood fill from the hole points and from outside (unless
+ * convex_hull); regions are labelled by flood fill from the region points.
+ * Returns LH_OK and *out; else *out NULL and err->message names the fault:
+ * LH_ERR_INVALID_ARGUMENT (an index out of range, a NULL array with a count, an
+ * option out of range), LH_ERR_NONFINITE, LH_ERR_DEGENERATE (all points coplanar, or
+ * every tetrahedron carved away), LH_ERR_INTERSECTING_FACETS, LH_ERR_STEINER_LIMIT,
+ * LH_ERR_TOO_LARGE, LH_ERR_NOMEM.
+ */
+typedef struct lh_tetmesh lh_tetmesh;
+LH_API lh_status lh_tetrahedralize(const lh_plc *g, const lh_tetmesh_options *opt,
+                                   lh_tetmesh **out, lh_error *err);
+LH_API void lh_tetmesh_free(lh_tetmesh *m);
+
+/* Points: the PLC's first (merged duplicates too, in no tetrahedron), then the Steiner
+ * points; markers: a point's own, else its facet's or segment's, else 0. */
+LH_API size_t lh_tetmesh_point_count(const lh_tetmesh *m);
+LH_API const double *lh_tetmesh_points(const lh_tetmesh *m);          /* 3 per point  */
+LH_API const lh_index *lh_tetmesh_point_markers(const lh_tetmesh *m); /* 1 per point  */
+/* Tetrahedra, positively oriented (orient_3 > 0, as lh_orient defines it); neighbour
+ * k opposite vertex k, -1 for none. */
+LH_API size_t lh_tetmesh_tet_count(const lh_tetmesh *m);
+LH_API const lh_index *lh_tetmesh_tets(const lh_tetmesh *m);
+LH_API const lh_index *lh_tetmesh_neighbors(const lh_tetmesh *m);
+LH_API const double *lh_tetmesh_tet_attrs(const lh_tetmesh *m); /* -A: 1 per tet; or NULL */
+/* Subfaces: the triangles on facets and on the domain's boundary, 3 points each,
+ * ordered so that (a, b, c, apex) is positively oriented for the apex of the first
+ * tetrahedron beside it: the normal (b-a) x (c-a) points into it (on the domain's
+ * boundary: into the domain); with their facet's marker (1 on the convex hull where
+ * no facet is) and facet index (-1: none). */
+LH_API size_t lh_tetmesh_face_count(const lh_tetmesh *m);
+LH_API const lh_index *lh_tetmesh_faces(const lh_tetmesh *m);
+LH_API const lh_index *lh_tetmesh_face_markers(const lh_tetmesh *m);
+LH_API const lh_index *lh_tetmesh_face_parents(const lh_tetmesh *m);
+/* Subsegments: the edges on segments and facet edges, 2 points each, with their
+ * marker and parent segment index (segments numbered: the PLC's free segments, then
+ * the facets' polygon edges in order of appearance, each once). */
+LH_API size_t lh_tetmesh_edge_count(const lh_tetmesh *m);
+LH_API const lh_index *lh_tetmesh_edges(const lh_tetmesh *m);
+LH_API const lh_index *lh_tetmesh_edge_markers(const lh_tetmesh *m);
+LH_API const lh_index *lh_tetmesh_edge_parents(const lh_tetmesh *m);
+
+typedef struct lh_tetmesh_stats {
+    size_t input_points, duplicates_merged;
+    size_t steiner_points;       /* all Steiner points                                 */
+    size_t steiner_on_segments, steiner_on_facets, steiner_interior;
+    size_t steiner_off_exact;    /* on a segment or facet up to rounding only: not
+                                    exactly on its line or plane                      */
+    size_t facets_nonplanar;     /* facets whose points are not exactly coplanar        */
+    size_t tets, faces, edges, regions;
+    size_t holes_ignored, regions_ignored; /* seeds outside the domain or on a facet  */
+    double min_dihedral, max_radius_edge; /* degrees; circumradius / shortest edge   */
+} lh_tetmesh_stats;
+LH_API void lh_tetmesh_stats_get(const lh_tetmesh *m, lh_tetmesh_stats *out);
+
+/*
+ * lh_tetmesh_check: exact check of a tetrahedral mesh made by any program — n points,
+ * tets (4 indices each), subfaces (3 each), subsegments (2 each): every tetrahedron
+ * positively oriented with nonzero volume; every triangle in at most two tetrahedra,
+ * which lie on its two sides; around every interior edge the tetrahedra turn once
+ * (the mesh covers its domain once: no overlap); every subface a face of the mesh and
+ * every boundary face a subface (unless boundary_free); every subsegment an edge.
+ * With g (may be NULL) also conformity to the PLC: every facet is the union of the
+ * subfaces whose parent it is (face_parents, one per subface; NULL: subfaces are
+ * matched to facets by exact coplanarity), and every segment a union of subsegments;
+ * points that make a facet's or segment's union true only up to rounding (a Steiner
+ * point not exactly in its plane or on its line) are counted in *off_exact (may be
+ * NULL) instead of failing it.
+ * Returns LH_OK; LH_ERR_INVALID_MESH with the first fault in err->message;
+ * LH_ERR_INVALID_ARGUMENT; LH_ERR_NOMEM.
+ */
+LH_API lh_status lh_tetmesh_check(size_t n, const double *xyz, size_t tet_count,
+                                  const lh_index *tets, size_t face_count,
+                                  const lh_index *faces, const lh_index *face_parents,
+                                  size_t edge_count, const lh_index *edges,
+                                  int boundary_free, const lh_plc *g, size_t *off_exact,
+                                  const lh_allocator *alloc, lh_error *err);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,208 @@
+/*
+ * plc_build.c — the lh_plc builder the readers share (io_plc.h), lh_plc_free and
+ * lh_plc_take_points.
+ */
+#include "io_plc.h"
+
+#include <stdint.h>
+#include <string.h>
+
+void lh_plc_free(lh_plc *g)
+{
+    if (!g) return;
+    if (g->alloc_.free) {
+        void *arrays[] = {g->xyz,           g->attr,          g->point_marker,
+                          g->facet_first,   g->facet_marker,  g->polygon_first,
+                          g->polygon_vertices, g->facet_hole_first, g->facet_holes,
+                          g->segments,      g->segment_marker, g->holes,
+                          g->regions,       g->point_line,    g->facet_line,
+                          g->segment_line,  g->hole_line,     g->region_line};
+        for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++)
+            lh__free(&g->alloc_, arrays[i]);
+    }
+    memset(g, 0, sizeof *g);
+}
+
+lh_status lh__plc_build_init(lh__plc_build *b, lh_plc *g, const lh_allocator *alloc)
+{
+    memset(b, 0, sizeof *b);
+    if (!g) return LH_ERR_INVALID_ARGUMENT;
+    memset(g, 0, sizeof *g);
+    if (!lh__allocator_init(&g->alloc_, alloc)) {
+        memset(g, 0, sizeof *g);
+        return LH_ERR_INVALID_ARGUMENT;
+    }
+    b->g = g;
+    return LH_OK;
+}
+
+void lh__plc_build_fail(lh__plc_build *b)
+{
+    if (b->g) lh_plc_free(b->g);
+    memset(b, 0, sizeof *b);
+}
+
+/* Makes room for `need` elements of `size` bytes in *arr (capacity *cap, doubling). */
+static lh_status grow(lh__plc_build *b, void **arr, size_t *cap, size_t need, size_t size)
+{
+    if (need <= *cap) return LH_OK;
+    size_t c = *cap ? *cap : 16;
+    while (c < need) {
+        if (c > SIZE_MAX / 2) return LH_ERR_TOO_LARGE;
+        c *= 2;
+    }
+    if (c > SIZE_MAX / size || c > (size_t)LH_INDEX_MAX) return LH_ERR_TOO_LARGE;
+    void *p = lh__alloc(&b->g->alloc_, c * size);
+    if (!p) return LH_ERR_NOMEM;
+    if (*arr) {
+        memcpy(p, *arr, *cap * size);
+        lh__free(&b->g->alloc_, *arr);
+    }
+    *arr = p;
+    *cap = c;
+    return LH_OK;
+}
+
+/* grow() for several parallel arrays sharing one count and capacity. */
+#define GROW(b, arr, capv, need, size)                                                 \
+    grow((b), (void **)&(arr), &(capv), (need), (size))
+
+lh_status lh__plc_point(lh__plc_build *b, const double xyz[3], const double *attr,
+                        lh_index marker, size_t line)
+{
+    lh_plc *g = b->g;
+    size_t n = g->n, cap = b->cap_points, k = (size_t)g->attr_count;
+    lh_status st;
+    size_t c;
+    c = cap; if ((st = GROW(b, g->xyz, c, n + 1, 3 * sizeof(double)))) return st;
+    c = cap; if ((st = GROW(b, g->point_marker, c, n + 1, sizeof(lh_index)))) return st;
+    c = cap; if ((st = GROW(b, g->point_line, c, n + 1, sizeof(size_t)))) return st;
+    if (k) {
+        if (k > SIZE_MAX / sizeof(double) / 4) return LH_ERR_TOO_LARGE;
+        c = cap; if ((st = GROW(b, g->attr, c, n + 1, k * sizeof(double)))) return st;
+        memcpy(g->attr + n * k, attr, k * sizeof(double));
+    }
+    b->cap_points = c;
+    memcpy(g->xyz + 3 * n, xyz, 3 * sizeof(double));
+    g->point_marker[n] = marker;
+    g->point_line[n] = line;
+    g->n = n + 1;
+    return LH_OK;
+}
+
+lh_status lh__plc_facet(lh__plc_build *b, lh_index marker, size_t line)
+{
+    lh_plc *g = b->g;
+    size_t f = g->facet_count, cap = b->cap_facets, c;
+    lh_status st;
+    /* facet_first and facet_hole_first get one slot more, for the closing offset. */
+    c = cap; if ((st = GROW(b, g->facet_first, c, f + 2, sizeof(lh_index)))) return st;
+    c = cap; if ((st = GROW(b, g->facet_hole_first, c, f + 2, sizeof(lh_index)))) return st;
+    c = cap; if ((st = GROW(b, g->facet_marker, c, f + 2, sizeof(lh_index)))) return st;
+    c = cap; if ((st = GROW(b, g->facet_line, c, f + 2, sizeof(size_t)))) return st;
+    b->cap_facets = c;
+    g->facet_first[f] = (lh_index)g->polygon_count;
+    g->facet_hole_first[f] = (lh_index)b->facet_holes;
+    g->facet_marker[f] = marker;
+    g->facet_line[f] = line;
+    g->facet_count = f + 1;
+    b->facet_open = 1;
+    return LH_OK;
+}
+
+lh_status lh__plc_polygon(lh__plc_build *b, const lh_index *v, size_t k)
+{
+    lh_plc *g = b->g;
+    if (!b->facet_open || k == 0) return LH_ERR_INVALID_ARGUMENT;
+    size_t p = g->polygon_count;
+    lh_status st;
+    if ((st = GROW(b, g->polygon_first, b->cap_polygons, p + 2, sizeof(lh_index)))) return st;
+    if (b->vertices > SIZE_MAX - k) return LH_ERR_TOO_LARGE;
+    if ((st = GROW(b, g->polygon_vertices, b->cap_vertices, b->vertices + k, sizeof(lh_index))))
+        return st;
+    g->polygon_first[p] = (lh_index)b->vertices;
+    memcpy(g->polygon_vertices + b->vertices, v, k * sizeof(lh_index));
+    b->vertices += k;
+    g->polygon_count = p + 1;
+    return LH_OK;
+}
+
+lh_status lh__plc_facet_hole(lh__plc_build *b, const double xyz[3])
+{
+    if (!b->facet_open) return LH_ERR_INVALID_ARGUMENT;
+    lh_status st = GROW(b, b->g->facet_holes, b->cap_facet_holes, b->facet_holes + 1,
+                        3 * sizeof(double));
+    if (st) return st;
+    memcpy(b->g->facet_holes + 3 * b->facet_holes, xyz, 3 * sizeof(double));
+    b->facet_holes++;
+    return LH_OK;
+}
+
+lh_status lh__plc_segment(lh__plc_build *b, lh_index p, lh_index q, lh_index marker,
+                          size_t line)
+{
+    lh_plc *g = b->g;
+    size_t s = g->segment_count, cap = b->cap_segments, c;
+    lh_status st;
+    c = cap; if ((st = GROW(b, g->segments, c, s + 1, 2 * sizeof(lh_index)))) return st;
+    c = cap; if ((st = GROW(b, g->segment_marker, c, s + 1, sizeof(lh_index)))) return st;
+    c = cap; if ((st = GROW(b, g->segment_line, c, s + 1, sizeof(size_t)))) return st;
+    b->cap_segments = c;
+    g->segments[2 * s] = p;
+    g->segments[2 * s + 1] = q;
+    g->segment_marker[s] = marker;
+    g->segment_line[s] = line;
+    g->segment_count = s + 1;
+    return LH_OK;
+}
+
+lh_status lh__plc_hole(lh__plc_build *b, const double xyz[3], size_t line)
+{
+    lh_plc *g = b->g;
+    size_t h = g->hole_count, cap = b->cap_holes, c;
+    lh_status st;
+    c = cap; if ((st = GROW(b, g->holes, c, h + 1, 3 * sizeof(double)))) return st;
+    c = cap; if ((st = GROW(b, g->hole_line, c, h + 1, sizeof(size_t)))) return st;
+    b->cap_holes = c;
+    memcpy(g->holes + 3 * h, xyz, 3 * sizeof(double));
+    g->hole_line[h] = line;
+    g->hole_count = h + 1;
+    return LH_OK;
+}
+
+lh_status lh__plc_region(lh__plc_build *b, const double r[5], size_t line)
+{
+    lh_plc *g = b->g;
+    size_t k = g->region_count, cap = b->cap_regions, c;
+    lh_status st;
+    c = cap; if ((st = GROW(b, g->regions, c, k + 1, 5 * sizeof(double)))) return st;
+    c = cap; if ((st = GROW(b, g->region_line, c, k + 1, sizeof(size_t)))) return st;
+    b->cap_regions = c;
+    memcpy(g->regions + 5 * k, r, 5 * sizeof(double));
+    g->region_line[k] = line;
+    g->region_count = k + 1;
+    return LH_OK;
+}
+
+/* One lh_index array of a single element, for an offsets array with no item yet. */
+static lh_status offsets_empty(lh__plc_build *b, lh_index **arr)
+{
+    if (*arr) return LH_OK;
+    *arr = lh__alloc(&b->g->alloc_, sizeof(lh_index));
+    return *arr ? LH_OK : LH_ERR_NOMEM;
+}
+
+lh_status lh__plc_build_done(lh__plc_build *b)
+{
+    lh_plc *g = b->g;
+    lh_status st;
+    /* lh__plc_facet and lh__plc_polygon keep a slot for the closing offset. */
+    if ((st = offsets_empty(b, &g->facet_first)) || (st = offsets_empty(b, &g->facet_hole_first)) ||
+        (st = offsets_empty(b, &g->polygon_first)))
+        return st;
+    g->facet_first[g->facet_count] = (lh_index)g->polygon_count;
+    g->facet_hole_first[g->facet_count] = (lh_index)b->facet_holes;
+    g->polygon_first[g->polygon_count] = (lh_index)b->vertices;
+    b->facet_open = 0;
+    return LH_OK;
+}
