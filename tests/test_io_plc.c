@@ -1,0 +1,301 @@
+/* test_io_plc.c — lh_plc_read's text readers (OFF, TetGen .poly/.smesh/.node, Medit
+ * .mesh, Wavefront .obj): exact contents of small inputs, one real file a format
+ * (tests/data/plc/, tests/data/SOURCES.md) and every diagnostic of hostile inputs
+ * (truncated files, indices out of range, facets of < 3 vertices, NaN, counts larger
+ * than the data, garbage) exactly; every allocation failure reported and freed. */
+#include "lh_api_test.h"
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#define TEXT(s) s, sizeof(s) - 1
+
+/* ---- helpers ---------------------------------------------------------------------- */
+
+static lh_status read_text(const char *name, lh_plc_format fmt, const char *text, size_t len,
+                           const lh_allocator *a, lh_plc *g, lh_error *err)
+{
+    const lh_error io = {LH_ERR_IO, 0, 0, LH_ERROR_NO_INDEX, ""};
+    *err = io;
+    FILE *f = lh_test_file(text, len);
+    if (!f) return LH_ERR_IO;
+    lh_status st = lh_plc_read(f, name, fmt, a, g, err);
+    fclose(f);
+    return st;
+}
+
+static void put(char *buf, size_t size, const char *fmt, ...)
+{
+    size_t used = strlen(buf);
+    if (used + 1 >= size) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf + used, size - used, fmt, ap);
+    va_end(ap);
+}
+
+/* g as text: "p x y z [attr..] mM;" a point, "f mM @LINE: a b c / d e [h x y z];" a
+ * facet (its polygons, 0-based, and hole points), "s a b mM;", "h x y z;", "r x y z a v;";
+ * "first F" at the end. */
+static void dump(const lh_plc *g, char *buf, size_t size)
+{
+    buf[0] = 0;
+    for (size_t i = 0; i < g->n; i++) {
+        put(buf, size, "p %g %g %g", g->xyz[3 * i], g->xyz[3 * i + 1], g->xyz[3 * i + 2]);
+        for (int j = 0; j < g->attr_count; j++) put(buf, size, " %g", g->attr[i * (size_t)g->attr_count + j]);
+        put(buf, size, " m%d;", g->point_marker ? (int)g->point_marker[i] : 0);
+    }
+    for (size_t f = 0; f < g->facet_count; f++) {
+        put(buf, size, "f m%d @%zu:", g->facet_marker ? (int)g->facet_marker[f] : 0,
+            g->facet_line ? g->facet_line[f] : 0);
+        for (lh_index p = g->facet_first[f]; p < g->facet_first[f + 1]; p++) {
+            if (p > g->facet_first[f]) put(buf, size, " /");
+            for (lh_index v = g->polygon_first[p]; v < g->polygon_first[p + 1]; v++)
+                put(buf, size, " %d", (int)g->polygon_vertices[v]);
+        }
+        for (lh_index h = g->facet_hole_first[f]; h < g->facet_hole_first[f + 1]; h++)
+            put(buf, size, " [h %g %g %g]", g->facet_holes[3 * h], g->facet_holes[3 * h + 1],
+                g->facet_holes[3 * h + 2]);
+        put(buf, size, ";");
+    }
+    for (size_t i = 0; i < g->segment_count; i++)
+        put(buf, size, "s %d %d m%d;", (int)g->segments[2 * i], (int)g->segments[2 * i + 1],
+            g->segment_marker ? (int)g->segment_marker[i] : 0);
+    for (size_t i = 0; i < g->hole_count; i++)
+        put(buf, size, "h %g %g %g;", g->holes[3 * i], g->holes[3 * i + 1], g->holes[3 * i + 2]);
+    for (size_t i = 0; i < g->region_count; i++)
+        put(buf, size, "r %g %g %g %g %g;", g->regions[5 * i], g->regions[5 * i + 1],
+            g->regions[5 * i + 2], g->regions[5 * i + 3], g->regions[5 * i + 4]);
+    put(buf, size, "first %d", g->first_index);
+}
+
+/* The invariants of every reader's output. */
+static void check_plc(lh_test_state *lh_t_, const lh_plc *g)
+{
+    LH_EXPECT_TRUE((g->n > 0) == (g->xyz != NULL));
+    LH_EXPECT_TRUE(g->facet_first && g->polygon_first && g->facet_hole_first);
+    LH_EXPECT_TRUE(g->first_index == 0 || g->first_index == 1);
+    for (size_t i = 0; i < 3 * g->n; i++) LH_EXPECT_TRUE(isfinite(g->xyz[i]));
+    LH_EXPECT_EQ_INT(g->facet_first[0], 0);
+    for (size_t f = 0; f < g->facet_count; f++) {
+        int big = 0;
+        LH_EXPECT_TRUE(g->facet_first[f] < g->facet_first[f + 1]);
+        for (lh_index p = g->facet_first[f]; p < g->facet_first[f + 1]; p++) {
+            lh_index k = g->polygon_first[p + 1] - g->polygon_first[p];
+            LH_EXPECT_TRUE(k >= 1);
+            big |= k >= 3;
+        }
+        LH_EXPECT_TRUE(big);
+    }
+    LH_EXPECT_EQ_U64(g->facet_first[g->facet_count], g->polygon_count);
+    size_t nv = (size_t)g->polygon_first[g->polygon_count];
+    for (size_t i = 0; g->n && i < nv; i++)
+        LH_EXPECT_TRUE(g->polygon_vertices[i] >= 0 && (size_t)g->polygon_vertices[i] < g->n);
+    for (size_t i = 0; g->n && i < 2 * g->segment_count; i++)
+        LH_EXPECT_TRUE(g->segments[i] >= 0 && (size_t)g->segments[i] < g->n);
+}
+
+/* text read as `name` in format fmt must give `want` (dump()). */
+static void expect_plc(lh_test_state *lh_t_, const char *name, lh_plc_format fmt, const char *text,
+                       size_t len, const char *want)
+{
+    lh_test_counter k = {0, 0, 0};
+    lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &k};
+    lh_plc g;
+    lh_error err;
+    char got[4096];
+    LH_EXPECT_EQ_INT(read_text(name, fmt, text, len, &a, &g, &err), LH_OK);
+    LH_EXPECT_STREQ(err.message, "");
+    if (LH_FAILED()) return;
+    check_plc(lh_t_, &g);
+    dump(&g, got, sizeof got);
+    LH_EXPECT_STREQ(got, want);
+    lh_plc_free(&g);
+    LH_EXPECT_EQ_INT(k.live, 0);
+    if (LH_FAILED()) LH_NOTE("input %s", name);
+}
+
+typedef struct bad_case {
+    const char *name;
+    lh_plc_format fmt;
+    const char *text;
+    size_t len;
+    lh_status status;
+    const char *msg;
+} bad_case;
+
+/* Each case must fail with its status and exact message, hand back a zeroed lh_plc
+ * and leave nothing allocated. */
+static void check_bad(lh_test_state *lh_t_, const bad_case *cases, size_t count)
+{
+    for (size_t i = 0; i < count && !LH_FAILED(); i++) {
+        const bad_case *c = &cases[i];
+        if (sizeof(lh_index) != 4 && strstr(c->msg, "2147483646")) continue;
+        lh_test_counter k = {0, 0, 0};
+        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &k};
+        lh_plc g, zero;
+        lh_error err;
+        memset(&zero, 0, sizeof zero);
+        LH_EXPECT_EQ_INT(read_text(c->name, c->fmt, c->text, c->len, &a, &g, &err), c->status);
+        LH_EXPECT_EQ_INT(err.status, c->status);
+        LH_EXPECT_STREQ(err.message, c->msg);
+        char place[300];
+        snprintf(place, sizeof place, "%s:%zu:%zu: ", c->name, err.line, err.column);
+        LH_EXPECT_TRUE(err.line > 0 && err.column > 0 && strncmp(c->msg, place, strlen(place)) == 0);
+        LH_EXPECT_TRUE(memcmp(&g, &zero, sizeof g) == 0);
+        LH_EXPECT_EQ_INT(k.live, 0);
+        if (LH_FAILED()) LH_NOTE("case %s", c->name);
+    }
+}
+
+typedef struct alloc_input {
+    const char *name;
+    lh_plc_format fmt;
+    const char *text;
+} alloc_input;
+
+static lh_status read_with(lh_test_state *lh_t_, const lh_allocator *a, const void *user)
+{
+    const alloc_input *in = user;
+    lh_plc g;
+    lh_error err;
+    lh_status st = read_text(in->name, in->fmt, in->text, strlen(in->text), a, &g, &err);
+    if (st == LH_OK) lh_plc_free(&g);
+    else LH_EXPECT_TRUE(g.xyz == NULL && g.facet_first == NULL && g.alloc_.alloc == NULL);
+    return st;
+}
+
+#ifdef LH_TEST_DATA_DIR
+/* tests/data/plc/NAME read (format from its name): its counts. */
+static void expect_file(lh_test_state *lh_t_, const char *name, size_t n, size_t facets,
+                        size_t polygons, size_t vertices, size_t segments)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/plc/%s", LH_TEST_DATA_DIR, name);
+    FILE *f = fopen(path, "rb");
+    LH_ASSERT_TRUE(f != NULL);
+    lh_plc g;
+    lh_error err;
+    lh_status st = lh_plc_read(f, name, LH_PLC_AUTO, NULL, &g, &err);
+    fclose(f);
+    LH_EXPECT_EQ_INT(st, LH_OK);
+    LH_EXPECT_STREQ(err.message, "");
+    if (LH_FAILED()) return;
+    check_plc(lh_t_, &g);
+    LH_EXPECT_EQ_U64(g.n, n);
+    LH_EXPECT_EQ_U64(g.facet_count, facets);
+    LH_EXPECT_EQ_U64(g.polygon_count, polygons);
+    LH_EXPECT_EQ_U64(g.polygon_first[g.polygon_count], vertices);
+    LH_EXPECT_EQ_U64(g.segment_count, segments);
+    lh_plc_free(&g);
+}
+#endif
+
+/* ---- OFF ------------------------------------------------------------------------- */
+
+#define OFF_TET "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+#define TET_POINTS "p 0 0 0 m0;p 1 0 0 m0;p 0 1 0 m0;p 0 0 1 m0;"
+
+LH_TEST(off_reads)
+{
+    expect_plc(lh_t_, "tet.off", LH_PLC_OFF, TEXT(OFF_TET),
+               TET_POINTS "f m0 @7: 0 2 1;f m0 @8: 0 1 3;f m0 @9: 0 3 2;f m0 @10: 1 2 3;first 0");
+    /* no keyword, counts on the keyword's line, comments, blank lines, a quad and a
+       face colour, no edge count */
+    expect_plc(lh_t_, "q.off", LH_PLC_AUTO,
+               TEXT("# a square pyramid\n4 2\n\n0 0 0\n1 0 0\n1 1 0 # corner\n0 1 0\n4 0 1 2 3 1 0 0\n3 0 1 2\n"),
+               "p 0 0 0 m0;p 1 0 0 m0;p 1 1 0 m0;p 0 1 0 m0;f m0 @8: 0 1 2 3;f m0 @9: 0 1 2;first 0");
+    expect_plc(lh_t_, "k.off", LH_PLC_OFF, TEXT("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2"),
+               "p 0 0 0 m0;p 1 0 0 m0;p 0 1 0 m0;f m0 @5: 0 1 2;first 0");
+    /* prefixed keywords: vertex normals and colours ignored */
+    expect_plc(lh_t_, "c.off", LH_PLC_OFF,
+               TEXT("CNOFF\n3 1 0\n0 0 0 0 0 1 1 0 0 1\n1 0 0 0 0 1 0 1 0 1\n0 1 0 0 0 1 0 0 1 1\n3 0 1 2\n"),
+               "p 0 0 0 m0;p 1 0 0 m0;p 0 1 0 m0;f m0 @6: 0 1 2;first 0");
+    expect_plc(lh_t_, "p.off", LH_PLC_OFF, TEXT("OFF\n2 0 0\n0 0 0\n1 2 3\n"), "p 0 0 0 m0;p 1 2 3 m0;first 0");
+    expect_plc(lh_t_, "crlf.off", LH_PLC_OFF, TEXT("OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 2 1 0\r\n"),
+               "p 0 0 0 m0;p 1 0 0 m0;p 0 1 0 m0;f m0 @6: 2 1 0;first 0");
+}
+
+#define OFF3 "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n"
+
+LH_TEST(off_errors)
+{
+    static const bad_case cases[] = {
+        {"empty.off", LH_PLC_OFF, TEXT(""), LH_ERR_PARSE, "empty.off:1:1: expected the number of vertices, found the end of the input"},
+        {"kw.off", LH_PLC_OFF, TEXT("PLY\n"), LH_ERR_PARSE,
+         "kw.off:1:1: expected the OFF header ('OFF', 'COFF', 'NOFF', 'CNOFF', 'STOFF'...) or the number of vertices, found 'PLY'"},
+        {"4d.off", LH_PLC_OFF, TEXT("4OFF\n1 0 0\n0 0 0 0\n"), LH_ERR_PARSE,
+         "4d.off:1:1: expected the OFF header ('OFF', 'COFF', 'NOFF', 'CNOFF', 'STOFF'...) or the number of vertices, found '4OFF'"},
+        {"bin.off", LH_PLC_OFF, TEXT("OFF BINARY\n"), LH_ERR_PARSE, "bin.off:1:5: binary OFF is not read: write it as text"},
+        {"nv.off", LH_PLC_OFF, TEXT("OFF\n0 0 0\n"), LH_ERR_PARSE,
+         "nv.off:2:1: expected the number of vertices (an integer from 1 to 2147483646), found '0'"},
+        {"big.off", LH_PLC_OFF, TEXT("OFF\n3000000000 1 0\n"), LH_ERR_TOO_LARGE,
+         "big.off:2:1: expected the number of vertices (an integer from 1 to 2147483646), found '3000000000'"},
+        {"nf.off", LH_PLC_OFF, TEXT("OFF\n3\n"), LH_ERR_PARSE, "nf.off:2:2: expected the number of faces, found the end of the line"},
+        {"ne.off", LH_PLC_OFF, TEXT("OFF\n3 1 x\n"), LH_ERR_PARSE,
+         "ne.off:2:5: expected the number of edges (an integer from 0) or the end of the line, found 'x'"},
+        {"h4.off", LH_PLC_OFF, TEXT("OFF\n3 1 0 0\n"), LH_ERR_PARSE,
+         "h4.off:2:7: expected the end of the line after the counts (vertices, faces, edges), found '0'"},
+        {"short.off", LH_PLC_OFF, TEXT("OFF\n3 1 0\n0 0 0\n1 0 0\n"), LH_ERR_PARSE,
+         "short.off:5:1: expected coordinate 1 of vertex 2, found the end of the input (3 vertices declared)"},
+        {"y.off", LH_PLC_OFF, TEXT("OFF\n3 1 0\n0 0\n"), LH_ERR_PARSE, "y.off:3:4: expected coordinate 3 of vertex 0, found the end of the line"},
+        {"nan.off", LH_PLC_OFF, TEXT("OFF\n3 1 0\n0 nan 0\n"), LH_ERR_NONFINITE,
+         "nan.off:3:3: coordinate 2 of vertex 0 is 'nan': NaN and infinities are not points"},
+        {"inf.off", LH_PLC_OFF, TEXT("OFF\n3 1 0\n0 0 1e999\n"), LH_ERR_NONFINITE,
+         "inf.off:3:5: coordinate 3 of vertex 0 is '1e999', which overflows a double"},
+        {"col.off", LH_PLC_OFF, TEXT("OFF\n3 1 0\n0 0 0 1\n"), LH_ERR_PARSE,
+         "col.off:3:7: expected the end of the line after vertex 0, found '1'"},
+        {"nofaces.off", LH_PLC_OFF, TEXT(OFF3), LH_ERR_PARSE,
+         "nofaces.off:6:1: expected the number of vertices of face 0, found the end of the input (1 faces declared)"},
+        {"k2.off", LH_PLC_OFF, TEXT(OFF3 "2 0 1\n"), LH_ERR_PARSE,
+         "k2.off:6:1: expected the number of vertices of face 0 (an integer from 3 to 2147483646), found '2'"},
+        {"kx.off", LH_PLC_OFF, TEXT(OFF3 "three 0 1 2\n"), LH_ERR_PARSE,
+         "kx.off:6:1: expected the number of vertices of face 0 (an integer from 3 to 2147483646), found 'three'"},
+        {"range.off", LH_PLC_OFF, TEXT(OFF3 "3 0 1 3\n"), LH_ERR_PARSE,
+         "range.off:6:7: expected vertex 3 of face 0 (a vertex number from 0 to 2), found '3'"},
+        {"neg.off", LH_PLC_OFF, TEXT(OFF3 "3 0 -1 2\n"), LH_ERR_PARSE,
+         "neg.off:6:5: expected vertex 2 of face 0 (a vertex number from 0 to 2), found '-1'"},
+        {"cut.off", LH_PLC_OFF, TEXT(OFF3 "4 0 1 2\n"), LH_ERR_PARSE,
+         "cut.off:6:8: expected vertex 4 of face 0 (a vertex number from 0 to 2), found the end of the line"},
+        {"junk.off", LH_PLC_OFF, TEXT(OFF3 "3 0 1 2 red\n"), LH_ERR_PARSE,
+         "junk.off:6:9: expected the end of the line after face 0 (or its colour: up to 4 numbers), found 'red'"},
+        {"more.off", LH_PLC_OFF, TEXT(OFF3 "3 0 1 2\n3 0 1 2\n"), LH_ERR_PARSE,
+         "more.off:7:1: expected the end of the input after 1 face, found '3'"},
+        {"nul.off", LH_PLC_OFF, TEXT(OFF3 "3 0 1\0 2\n"), LH_ERR_PARSE,
+         "nul.off:6:6: expected vertex 3 of face 0 (a vertex number from 0 to 2), found a NUL byte"},
+    };
+    check_bad(lh_t_, cases, LH_COUNT(cases));
+}
+
+/* ---- every format ----------------------------------------------------------------- */
+
+LH_TEST(every_allocation_failure)
+{
+    static const alloc_input inputs[] = {
+        {"tet.off", LH_PLC_OFF, OFF_TET},
+    };
+    for (size_t i = 0; i < LH_COUNT(inputs) && !LH_FAILED(); i++)
+        LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, read_with, &inputs[i]), 3);
+}
+
+#ifdef LH_TEST_DATA_DIR
+LH_TEST(real_files)
+{
+    expect_file(lh_t_, "star.off", 14, 24, 24, 72, 0);
+}
+#endif
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(off_reads), LH_CASE(off_errors), LH_CASE(every_allocation_failure),
+#ifdef LH_TEST_DATA_DIR
+        LH_CASE(real_files),
+#endif
+    };
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
