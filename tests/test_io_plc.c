@@ -165,6 +165,7 @@ static lh_status read_with(lh_test_state *lh_t_, const lh_allocator *a, const vo
     lh_error err;
     lh_status st = read_text(in->name, in->fmt, in->text, strlen(in->text), a, &g, &err);
     if (st == LH_OK) lh_plc_free(&g);
+    else if (st != LH_ERR_NOMEM) LH_NOTE("%s", err.message);
     else LH_EXPECT_TRUE(g.xyz == NULL && g.facet_first == NULL && g.alloc_.alloc == NULL);
     return st;
 }
@@ -271,12 +272,144 @@ LH_TEST(off_errors)
     check_bad(lh_t_, cases, LH_COUNT(cases));
 }
 
+/* ---- TetGen .poly, .smesh, .node --------------------------------------------------- */
+
+/* A unit cube's points, 1-based, one attribute and markers. */
+#define CUBE_NODES "8 3 1 1\n1 0 0 0 10 1\n2 1 0 0 20 1\n3 1 1 0 30 1\n4 0 1 0 40 1\n" \
+                   "5 0 0 1 50 2\n6 1 0 1 60 2\n7 1 1 1 70 2\n8 0 1 1 80 2\n"
+#define CUBE_POINTS "p 0 0 0 10 m1;p 1 0 0 20 m1;p 1 1 0 30 m1;p 0 1 0 40 m1;" \
+                    "p 0 0 1 50 m2;p 1 0 1 60 m2;p 1 1 1 70 m2;p 0 1 1 80 m2;"
+
+LH_TEST(poly_reads)
+{
+    /* the bottom facet has a slit, a lone point (the centre... of nothing: point 7)
+       and a hole point; markers on some facets only; a hole, two regions */
+    expect_plc(lh_t_, "cube.poly", LH_PLC_AUTO,
+               TEXT(CUBE_NODES "# facets\n6 1\n3 1 5\n4 1 2 3 4\n2 1 3\n1 7\n1 0.5 0.5 0\n"
+                    "1\n4 5 6 7 8\n1 0 3\n4 1 2 6 5\n1 0 4 # marker 4\n4 2 3 7 6\n1\n4 3 4 8 7\n1\n4 4 1 5 8\n"
+                    "1\n1 0.5 0.5 0.5\n2\n1 0.1 0.1 0.1 7 0.25\n2 0.2 0.2 0.2 -3\n"),
+               CUBE_POINTS "f m5 @12: 0 1 2 3 / 0 2 / 6 [h 0.5 0.5 0];f m0 @17: 4 5 6 7;f m3 @19: 0 1 5 4;"
+                           "f m4 @21: 1 2 6 5;f m0 @23: 2 3 7 6;f m0 @25: 3 0 4 7;"
+                           "h 0.5 0.5 0.5;r 0.1 0.1 0.1 7 0.25;r 0.2 0.2 0.2 -3 -1;first 1");
+    /* no hole nor region section, 0-based, default header fields */
+    expect_plc(lh_t_, "t.poly", LH_PLC_POLY, TEXT("3\n0 0 0 0\n1 1 0 0\n2 0 1 0\n1\n1\n3 0 1 2\n"),
+               "p 0 0 0 m0;p 1 0 0 m0;p 0 1 0 m0;f m0 @6: 0 1 2;first 0");
+    expect_plc(lh_t_, "cube.smesh", LH_PLC_AUTO,
+               TEXT(CUBE_NODES "6 1\n4 1 2 3 4 5\n4 5 6 7 8 6\n4 1 2 6 5\n4 2 3 7 6 0\n4 3 4 8 7 -1\n4 4 1 5 8 9\n0\n0\n"),
+               CUBE_POINTS "f m5 @11: 0 1 2 3;f m6 @12: 4 5 6 7;f m0 @13: 0 1 5 4;f m0 @14: 1 2 6 5;"
+                           "f m-1 @15: 2 3 7 6;f m9 @16: 3 0 4 7;first 1");
+    expect_plc(lh_t_, "p.node", LH_PLC_AUTO, TEXT("2 3 0 1\n0 1 2 3 -4\n1 4 5 6 7\n"),
+               "p 1 2 3 m-4;p 4 5 6 m7;first 0");
+}
+
+/* A .poly without points takes a .node's, numbered from the .node's first number. */
+LH_TEST(poly_take_points)
+{
+    lh_plc g;
+    lh_points p;
+    lh_error err;
+    char got[1024];
+    LH_ASSERT_EQ_INT(read_text("n0.smesh", LH_PLC_SMESH, TEXT("0 3 0 0\n1 0\n3 1 2 3\n0\n"), NULL, &g, &err), LH_OK);
+    LH_EXPECT_EQ_U64(g.n, 0);
+    FILE *f = lh_test_file(TEXT("3 3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"));
+    LH_ASSERT_TRUE(f != NULL);
+    LH_ASSERT_EQ_INT(lh_points_read(f, "n0.node", LH_FORMAT_NODE, NULL, &p, &err), LH_OK);
+    fclose(f);
+    LH_ASSERT_EQ_INT(lh_plc_take_points(&g, &p), LH_OK);
+    dump(&g, got, sizeof got);
+    LH_EXPECT_STREQ(got, "p 0 0 0 m0;p 1 0 0 m0;p 0 1 0 m0;f m0 @3: 0 1 2;first 1");
+    lh_plc_free(&g);
+}
+
+#define POLY3 "3 3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
+
+LH_TEST(poly_errors)
+{
+    static const bad_case cases[] = {
+        {"empty.poly", LH_PLC_POLY, TEXT(""), LH_ERR_PARSE, "empty.poly:1:1: expected the number of points, found the end of the input"},
+        {"d2.poly", LH_PLC_POLY, TEXT("3 2\n"), LH_ERR_DIMENSION, "d2.poly:1:3: expected the dimension (3: a .poly file is 3D), found '2'"},
+        {"d2.node", LH_PLC_NODE, TEXT("3 2\n"), LH_ERR_DIMENSION, "d2.node:1:3: expected the dimension (3: a .node file is 3D), found '2'"},
+        {"n0.node", LH_PLC_NODE, TEXT("0 3\n"), LH_ERR_PARSE,
+         "n0.node:1:1: expected the number of points (an integer from 1 to 2147483646), found '0'"},
+        {"hdr.smesh", LH_PLC_SMESH, TEXT("3 3 0 0 0\n"), LH_ERR_PARSE,
+         "hdr.smesh:1:9: expected the end of the header line (points, dimension, attributes, markers), found '0'"},
+        {"first.poly", LH_PLC_POLY, TEXT("3 3\n2 0 0 0\n"), LH_ERR_PARSE, "first.poly:2:1: expected the first point's number (0 or 1), found '2'"},
+        {"gap.poly", LH_PLC_POLY, TEXT("3 3\n1 0 0 0\n3 0 0 0\n"), LH_ERR_PARSE,
+         "gap.poly:3:1: expected point number 2 (numbers are consecutive), found '3'"},
+        {"cut.node", LH_PLC_NODE, TEXT("3 3\n1 0 0 0\n2 1 0 0\n"), LH_ERR_PARSE,
+         "cut.node:4:1: expected point number 3, found the end of the input (3 points declared)"},
+        {"z.poly", LH_PLC_POLY, TEXT("3 3\n1 0 0\n"), LH_ERR_PARSE, "z.poly:2:6: expected coordinate 3 of point 1, found the end of the line"},
+        {"nan.poly", LH_PLC_POLY, TEXT("3 3\n1 0 NaN 0\n"), LH_ERR_NONFINITE,
+         "nan.poly:2:5: coordinate 2 of point 1 is 'NaN': NaN and infinities are not points"},
+        {"mk.node", LH_PLC_NODE, TEXT("1 3 0 1\n1 0 0 0 x\n"), LH_ERR_PARSE,
+         "mk.node:2:9: expected the boundary marker of point 1 (an integer), found 'x'"},
+        {"more.node", LH_PLC_NODE, TEXT("1 3\n1 0 0 0\n2 0 0 0\n"), LH_ERR_PARSE,
+         "more.node:3:1: expected the end of the input after 1 point, found '2'"},
+        {"nofacets.poly", LH_PLC_POLY, TEXT(POLY3), LH_ERR_PARSE,
+         "nofacets.poly:5:1: expected the number of facets, found the end of the input"},
+        {"fm.poly", LH_PLC_POLY, TEXT(POLY3 "1 2\n"), LH_ERR_PARSE,
+         "fm.poly:5:3: expected the number of facet boundary markers (0 or 1), found '2'"},
+        {"few.poly", LH_PLC_POLY, TEXT(POLY3 "2 0\n1\n3 1 2 3\n"), LH_ERR_PARSE,
+         "few.poly:8:1: expected the number of polygons of facet 2, found the end of the input (2 facets declared)"},
+        {"p0.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n0\n"), LH_ERR_PARSE,
+         "p0.poly:6:1: expected the number of polygons of facet 1 (an integer from 1 to 2147483646), found '0'"},
+        {"k0.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n1\n0\n"), LH_ERR_PARSE,
+         "k0.poly:7:1: expected the number of vertices of polygon 1 of facet 1 (an integer from 1 to 2147483646), found '0'"},
+        {"slit.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n2\n2 1 2\n1 3\n"), LH_ERR_PARSE,
+         "slit.poly:6:1: facet 1 has no polygon of 3 or more vertices"},
+        {"range.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n1\n3 1 2 4\n"), LH_ERR_PARSE,
+         "range.poly:7:7: expected vertex 3 of polygon 1 of facet 1 (a vertex number from 1 to 3), found '4'"},
+        {"zero.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n1\n3 0 1 2\n"), LH_ERR_PARSE,
+         "zero.poly:7:3: expected vertex 1 of polygon 1 of facet 1 (a vertex number from 1 to 3), found '0'"},
+        {"kcut.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n1\n4 1 2 3\n"), LH_ERR_PARSE,
+         "kcut.poly:7:8: expected vertex 4 of polygon 1 of facet 1 (a vertex number from 1 to 3), found the end of the line"},
+        {"ptail.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n1\n3 1 2 3 4\n"), LH_ERR_PARSE,
+         "ptail.poly:7:9: expected the end of the line after polygon 1 of facet 1, found '4'"},
+        {"polys.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n2\n3 1 2 3\n"), LH_ERR_PARSE,
+         "polys.poly:8:1: expected the number of vertices of polygon 2 of facet 1, found the end of the input (2 polygons declared)"},
+        {"fmk.poly", LH_PLC_POLY, TEXT(POLY3 "1 1\n1 0 b\n3 1 2 3\n"), LH_ERR_PARSE,
+         "fmk.poly:6:5: expected the boundary marker of facet 1 (an integer), found 'b'"},
+        {"ftail.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n1 0 7\n3 1 2 3\n"), LH_ERR_PARSE,
+         "ftail.poly:6:5: expected the end of the line after facet 1, found '7'"},
+        {"fh.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n1 1\n3 1 2 3\n1 0 inf 0\n"), LH_ERR_NONFINITE,
+         "fh.poly:8:5: coordinate 2 of hole point 1 of facet 1 is 'inf': NaN and infinities are not points"},
+        {"fhcut.poly", LH_PLC_POLY, TEXT(POLY3 "1 0\n1 2\n3 1 2 3\n1 0 0 0\n"), LH_ERR_PARSE,
+         "fhcut.poly:9:1: expected the number of hole point 2 of facet 1, found the end of the input (2 hole points declared)"},
+        {"k2.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n2 1 2\n"), LH_ERR_PARSE,
+         "k2.smesh:6:1: expected the number of vertices of facet 1 (an integer from 3 to 2147483646), found '2'"},
+        {"sr.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n3 1 2 -3\n"), LH_ERR_PARSE,
+         "sr.smesh:6:7: expected vertex 3 of facet 1 (a vertex number from 1 to 3), found '-3'"},
+        {"sm.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 1\n3 1 2 3 1.5\n"), LH_ERR_PARSE,
+         "sm.smesh:6:9: expected the boundary marker of facet 1 (an integer), found '1.5'"},
+        {"sfew.smesh", LH_PLC_SMESH, TEXT(POLY3 "3 0\n3 1 2 3\n"), LH_ERR_PARSE,
+         "sfew.smesh:7:1: expected the number of vertices of facet 2, found the end of the input (3 facets declared)"},
+        {"hx.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n3 1 2 3\nholes\n"), LH_ERR_PARSE,
+         "hx.smesh:7:1: expected the number of holes (an integer from 0 to 2147483646), found 'holes'"},
+        {"hcut.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n3 1 2 3\n2\n1 0 0 0\n"), LH_ERR_PARSE,
+         "hcut.smesh:9:1: expected the number of hole 2, found the end of the input (2 holes declared)"},
+        {"hn.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n3 1 2 3\n1\nh 0 0 0\n"), LH_ERR_PARSE,
+         "hn.smesh:8:1: expected the number of hole 1 (an integer), found 'h'"},
+        {"ra.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n3 1 2 3\n0\n1\n1 0 0 0\n"), LH_ERR_PARSE,
+         "ra.smesh:9:8: expected the attribute of region 1, found the end of the line"},
+        {"rv.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n3 1 2 3\n0\n1\n1 0 0 0 1 nan\n"), LH_ERR_NONFINITE,
+         "rv.smesh:9:11: the maximum volume of region 1 is 'nan': NaN and infinities are not accepted"},
+        {"rt.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n3 1 2 3\n0\n1\n1 0 0 0 1 2 3\n"), LH_ERR_PARSE,
+         "rt.smesh:9:13: expected the end of the line after region 1, found '3'"},
+        {"tail.smesh", LH_PLC_SMESH, TEXT(POLY3 "1 0\n3 1 2 3\n0\n0\n0\n"), LH_ERR_PARSE,
+         "tail.smesh:9:1: expected the end of the input after 0 regions, found '0'"},
+    };
+    check_bad(lh_t_, cases, LH_COUNT(cases));
+}
+
 /* ---- every format ----------------------------------------------------------------- */
 
 LH_TEST(every_allocation_failure)
 {
     static const alloc_input inputs[] = {
         {"tet.off", LH_PLC_OFF, OFF_TET},
+        {"cube.poly", LH_PLC_POLY, CUBE_NODES "2 1\n3 1 1\n4 1 2 3 4\n2 1 3\n1 7\n1 0.5 0.5 0\n1\n4 5 6 7 8\n"
+                                 "1\n1 0.5 0.5 0.5\n1\n1 0.1 0.1 0.1 7 0.25\n"},
+        {"cube.smesh", LH_PLC_SMESH, CUBE_NODES "2 1\n4 1 2 3 4 5\n4 5 6 7 8 6\n0\n"},
     };
     for (size_t i = 0; i < LH_COUNT(inputs) && !LH_FAILED(); i++)
         LH_EXPECT_GT_INT(lh_test_every_failure(lh_t_, read_with, &inputs[i]), 3);
@@ -286,13 +419,15 @@ LH_TEST(every_allocation_failure)
 LH_TEST(real_files)
 {
     expect_file(lh_t_, "star.off", 14, 24, 24, 72, 0);
+    expect_file(lh_t_, "spike-1-7.smesh", 8, 8, 8, 28, 0);
 }
 #endif
 
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
-        LH_CASE(off_reads), LH_CASE(off_errors), LH_CASE(every_allocation_failure),
+        LH_CASE(off_reads), LH_CASE(off_errors), LH_CASE(poly_reads), LH_CASE(poly_take_points),
+        LH_CASE(poly_errors), LH_CASE(every_allocation_failure),
 #ifdef LH_TEST_DATA_DIR
         LH_CASE(real_files),
 #endif

@@ -70,6 +70,18 @@ lh_status lh__plc_numbers(lh__scan *s, int from, int count, const char *field, c
     return LH_OK;
 }
 
+lh_status lh__plc_integer(lh__scan *s, const lh__token *t, const char *what, lh_index *m)
+{
+    long long v;
+    if (lh__word_integer(t, &v) && v >= -(long long)LH_INDEX_MAX - 1 && v <= (long long)LH_INDEX_MAX) {
+        *m = (lh_index)v;
+        return LH_OK;
+    }
+    char w[200];
+    snprintf(w, sizeof w, "%s (an integer)", what);
+    return lh__expected(s, LH_ERR_PARSE, t, w, NULL);
+}
+
 lh_status lh__plc_line_end(lh__scan *s, const char *item)
 {
     lh__token t;

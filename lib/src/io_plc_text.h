@@ -34,6 +34,9 @@ lh_status lh__plc_vertex(lh__scan *s, const lh__token *t, int base, size_t n,
  * `from`); noun for lh__nonfinite ("points", "accepted"). */
 lh_status lh__plc_numbers(lh__scan *s, int from, int count, const char *field, const char *item,
                           const char *noun, double *x);
+/* Token t as an integer that fits an lh_index (a marker, a reference) into *m:
+ * "expected WHAT (an integer), found ...". */
+lh_status lh__plc_integer(lh__scan *s, const lh__token *t, const char *what, lh_index *m);
 /* The end of the line or of the input next: "expected the end of the line after
  * ITEM, found ...". */
 lh_status lh__plc_line_end(lh__scan *s, const char *item);
