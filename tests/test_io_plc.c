@@ -401,6 +401,65 @@ LH_TEST(poly_errors)
     check_bad(lh_t_, cases, LH_COUNT(cases));
 }
 
+/* ---- Medit .mesh ------------------------------------------------------------------- */
+
+#define MESH_HEAD "MeshVersionFormatted 2\nDimension 3\n"
+#define MESH_V4 MESH_HEAD "Vertices\n4\n0 0 0 1\n1 0 0 2\n0 1 0 3\n0 0 1 4\n"
+
+LH_TEST(medit_reads)
+{
+    expect_plc(lh_t_, "t.mesh", LH_PLC_AUTO,
+               TEXT("MeshVersionFormatted 1\n\nDimension\n3\n# points\nVertices 4\n0 0 0 1\n1 0 0 2\n0 1 0 3\n0 0 1 4\n"
+                    "Triangles\n2\n1 3 2 7\n1 2 4 8\nTetrahedra\n1\n1 2 3 4 0\nQuadrilaterals\n1\n1 2 3 4 -5\n"
+                    "Corners\n2\n1\n2\nEdges\n1\n3 4 9\nTriangles\n1\n2 3 4 0\nEnd\n"),
+               "p 0 0 0 m1;p 1 0 0 m2;p 0 1 0 m3;p 0 0 1 m4;f m7 @13: 0 2 1;f m8 @14: 0 1 3;f m-5 @20: 0 1 2 3;"
+               "f m0 @30: 1 2 3;s 2 3 m9;first 1");
+    expect_plc(lh_t_, "noend.mesh", LH_PLC_MEDIT, TEXT(MESH_V4), "p 0 0 0 m1;p 1 0 0 m2;p 0 1 0 m3;p 0 0 1 m4;first 1");
+}
+
+LH_TEST(medit_errors)
+{
+    static const bad_case cases[] = {
+        {"e.mesh", LH_PLC_MEDIT, TEXT(""), LH_ERR_PARSE, "e.mesh:1:1: expected 'MeshVersionFormatted', found the end of the input"},
+        {"lc.mesh", LH_PLC_MEDIT, TEXT("meshversionformatted 1\n"), LH_ERR_PARSE,
+         "lc.mesh:1:1: expected 'MeshVersionFormatted', found 'meshversionformatted'"},
+        {"v9.mesh", LH_PLC_MEDIT, TEXT("MeshVersionFormatted 9\n"), LH_ERR_PARSE,
+         "v9.mesh:1:22: expected the mesh version (an integer from 1 to 4), found '9'"},
+        {"d2.mesh", LH_PLC_MEDIT, TEXT("MeshVersionFormatted 1\nDimension 2\n"), LH_ERR_DIMENSION,
+         "d2.mesh:2:11: expected the dimension (3: a PLC is 3D), found '2'"},
+        {"nov.mesh", LH_PLC_MEDIT, TEXT(MESH_HEAD "End\n"), LH_ERR_PARSE, "nov.mesh:3:1: expected the Vertices section, found 'End'"},
+        {"v0.mesh", LH_PLC_MEDIT, TEXT(MESH_HEAD "Vertices 0\n"), LH_ERR_PARSE,
+         "v0.mesh:3:10: a mesh needs vertices: Vertices 0"},
+        {"tb.mesh", LH_PLC_MEDIT, TEXT(MESH_HEAD "Triangles 1\n1 2 3 0\n"), LH_ERR_PARSE, "tb.mesh:3:1: Triangles before Vertices"},
+        {"vv.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "Vertices 0\n"), LH_ERR_PARSE, "vv.mesh:9:1: a second Vertices section"},
+        {"vcut.mesh", LH_PLC_MEDIT, TEXT(MESH_HEAD "Vertices\n3\n0 0 0 0\n"), LH_ERR_PARSE,
+         "vcut.mesh:6:1: expected coordinate 1 of vertex 2, found the end of the input (3 Vertices declared)"},
+        {"vnan.mesh", LH_PLC_MEDIT, TEXT(MESH_HEAD "Vertices\n1\n0 -nan 0 0\n"), LH_ERR_NONFINITE,
+         "vnan.mesh:5:3: coordinate 2 of vertex 1 is '-nan': NaN and infinities are not points"},
+        {"vref.mesh", LH_PLC_MEDIT, TEXT(MESH_HEAD "Vertices\n1\n0 0 0\n"), LH_ERR_PARSE,
+         "vref.mesh:5:6: expected the reference of vertex 1 (an integer), found the end of the line"},
+        {"trange.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "Triangles\n1\n1 2 5 0\n"), LH_ERR_PARSE,
+         "trange.mesh:11:5: expected vertex 3 of triangle 1 (a vertex number from 1 to 4), found '5'"},
+        {"t0.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "Triangles\n1\n0 1 2 0\n"), LH_ERR_PARSE,
+         "t0.mesh:11:1: expected vertex 1 of triangle 1 (a vertex number from 1 to 4), found '0'"},
+        {"tcut.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "Triangles\n2\n1 2 3 0\n"), LH_ERR_PARSE,
+         "tcut.mesh:12:1: expected vertex 1 of triangle 2, found the end of the input (2 Triangles declared)"},
+        {"t2.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "Triangles\n1\n1 2\n"), LH_ERR_PARSE,
+         "t2.mesh:11:4: expected vertex 3 of triangle 1 (a vertex number from 1 to 4), found the end of the line"},
+        {"tx.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "Triangles\n1\n1 2 3 0 0\n"), LH_ERR_PARSE,
+         "tx.mesh:11:9: expected the end of the line after triangle 1, found '0'"},
+        {"ecount.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "Edges\nmany\n"), LH_ERR_PARSE,
+         "ecount.mesh:10:1: expected the number of Edges (an integer from 0 to 2147483646), found 'many'"},
+        {"skip.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "Tetrahedra\n2\n1 2 3 4 0\n"), LH_ERR_PARSE,
+         "skip.mesh:12:1: expected line 2 of Tetrahedra, found the end of the input (2 Tetrahedra declared)"},
+        {"kw.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "7\n"), LH_ERR_PARSE,
+         "kw.mesh:9:1: expected a keyword (Vertices, Triangles, Quadrilaterals, Edges, ..., End), found '7'"},
+        {"after.mesh", LH_PLC_MEDIT, TEXT(MESH_V4 "End\nVertices\n"), LH_ERR_PARSE,
+         "after.mesh:10:1: expected the end of the input after End, found 'Vertices'"},
+    };
+    check_bad(lh_t_, cases, LH_COUNT(cases));
+}
+
 /* ---- every format ----------------------------------------------------------------- */
 
 LH_TEST(every_allocation_failure)
@@ -409,6 +468,7 @@ LH_TEST(every_allocation_failure)
         {"tet.off", LH_PLC_OFF, OFF_TET},
         {"cube.poly", LH_PLC_POLY, CUBE_NODES "2 1\n3 1 1\n4 1 2 3 4\n2 1 3\n1 7\n1 0.5 0.5 0\n1\n4 5 6 7 8\n"
                                  "1\n1 0.5 0.5 0.5\n1\n1 0.1 0.1 0.1 7 0.25\n"},
+        {"t.mesh", LH_PLC_MEDIT, MESH_V4 "Triangles 1\n1 2 3 0\nEdges 1\n1 4 0\nQuadrilaterals 1\n1 2 3 4 0\n"},
         {"cube.smesh", LH_PLC_SMESH, CUBE_NODES "2 1\n4 1 2 3 4 5\n4 5 6 7 8 6\n0\n"},
     };
     for (size_t i = 0; i < LH_COUNT(inputs) && !LH_FAILED(); i++)
@@ -420,6 +480,7 @@ LH_TEST(real_files)
 {
     expect_file(lh_t_, "star.off", 14, 24, 24, 72, 0);
     expect_file(lh_t_, "spike-1-7.smesh", 8, 8, 8, 28, 0);
+    expect_file(lh_t_, "star.1.mesh", 14, 48, 48, 144, 36);
 }
 #endif
 
@@ -427,7 +488,7 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(off_reads), LH_CASE(off_errors), LH_CASE(poly_reads), LH_CASE(poly_take_points),
-        LH_CASE(poly_errors), LH_CASE(every_allocation_failure),
+        LH_CASE(poly_errors), LH_CASE(medit_reads), LH_CASE(medit_errors), LH_CASE(every_allocation_failure),
 #ifdef LH_TEST_DATA_DIR
         LH_CASE(real_files),
 #endif
