@@ -460,6 +460,60 @@ LH_TEST(medit_errors)
     check_bad(lh_t_, cases, LH_COUNT(cases));
 }
 
+/* ---- Wavefront .obj ------------------------------------------------------------------ */
+
+#define OBJ_V4 "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+
+LH_TEST(obj_reads)
+{
+    expect_plc(lh_t_, "t.obj", LH_PLC_AUTO,
+               TEXT("# comment\nmtllib t.mtl\no tet\nv 0 0 0\nv 1 0 0 1.0\nv 0 1 0 0.5 0.5 0.5\nvt 0 0\nvn 0 0 1\n"
+                    "g side\ns off\nusemtl red\nf 1 3 2\nf 1/1 2/1 -1/1\nv 0 0 1 # late\nf 1//1 4//1 3//1\n"
+                    "f -3/1/1 -2/1/1 -1/1/1\nl 1 2 3\nl -1 1\n"),
+               "p 0 0 0 m0;p 1 0 0 m0;p 0 1 0 m0;p 0 0 1 m0;f m0 @12: 0 2 1;f m0 @13: 0 1 2;f m0 @15: 0 3 2;"
+               "f m0 @16: 1 2 3;s 0 1 m0;s 1 2 m0;s 3 0 m0;first 1");
+    expect_plc(lh_t_, "quad.obj", LH_PLC_OBJ, TEXT("v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nf 1 2 3 4"),
+               "p 0 0 0 m0;p 1 0 0 m0;p 1 1 0 m0;p 0 1 0 m0;f m0 @5: 0 1 2 3;first 1");
+}
+
+LH_TEST(obj_errors)
+{
+    static const bad_case cases[] = {
+        {"e.obj", LH_PLC_OBJ, TEXT("# nothing\n"), LH_ERR_PARSE, "e.obj:2:1: expected a vertex ('v x y z'), found the end of the input"},
+        {"kw.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "x 1 2 3\n"), LH_ERR_PARSE,
+         "kw.obj:5:1: expected an OBJ statement (v, f, l, vt, vn, g, o, s, usemtl, mtllib, ...), found 'x'"},
+        {"bin.obj", LH_PLC_OBJ, TEXT("v 0 0 0\n\x01\x02"), LH_ERR_PARSE,
+         "bin.obj:2:1: expected an OBJ statement (v, f, l, vt, vn, g, o, s, usemtl, mtllib, ...), found a non-text byte 0x01"},
+        {"vz.obj", LH_PLC_OBJ, TEXT("v 0 0\n"), LH_ERR_PARSE, "vz.obj:1:6: expected coordinate 3 of vertex 1, found the end of the line"},
+        {"vnan.obj", LH_PLC_OBJ, TEXT("v 0 0 nan\n"), LH_ERR_NONFINITE,
+         "vnan.obj:1:7: coordinate 3 of vertex 1 is 'nan': NaN and infinities are not points"},
+        {"vx.obj", LH_PLC_OBJ, TEXT("v 0 0 0 1 2 3 4 5\n"), LH_ERR_PARSE,
+         "vx.obj:1:17: expected the end of the line after vertex 1, found '5'"},
+        {"vy.obj", LH_PLC_OBJ, TEXT("v 0 0 0 w\n"), LH_ERR_PARSE,
+         "vy.obj:1:9: expected the end of the line after vertex 1, found 'w'"},
+        {"f2.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f 1 2\n"), LH_ERR_PARSE, "f2.obj:5:1: face 1 has 2 vertices: a facet needs 3 or more"},
+        {"f0v.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f\n"), LH_ERR_PARSE, "f0v.obj:5:1: face 1 has 0 vertices: a facet needs 3 or more"},
+        {"l1.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "l 1\n"), LH_ERR_PARSE, "l1.obj:5:1: polyline 1 has 1 vertex: a polyline needs 2 or more"},
+        {"f5.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f 1 2 5\n"), LH_ERR_PARSE,
+         "f5.obj:5:7: expected vertex 3 of face 1 (a vertex number from 1 to 4 or from -4 to -1), found '5'"},
+        {"f0.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f 0 1 2\n"), LH_ERR_PARSE,
+         "f0.obj:5:3: expected vertex 1 of face 1 (a vertex number from 1 to 4 or from -4 to -1), found '0'"},
+        {"fneg.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f 1 2 -5\n"), LH_ERR_PARSE,
+         "fneg.obj:5:7: expected vertex 3 of face 1 (a vertex number from 1 to 4 or from -4 to -1), found '-5'"},
+        {"early.obj", LH_PLC_OBJ, TEXT("f 1 2 3\n"), LH_ERR_PARSE,
+         "early.obj:1:3: expected vertex 1 of face 1 (a vertex number; no vertex is defined yet), found '1'"},
+        {"slash.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f 1/ 2 3\n"), LH_ERR_PARSE,
+         "slash.obj:5:3: expected vertex 1 of face 1 (a vertex number from 1 to 4 or from -4 to -1), found '1/'"},
+        {"s3.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f 1 2/1/1/1 3\n"), LH_ERR_PARSE,
+         "s3.obj:5:5: expected vertex 2 of face 1 (a vertex number from 1 to 4 or from -4 to -1), found '2/1/1/1'"},
+        {"st.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f 1 2/a 3\n"), LH_ERR_PARSE,
+         "st.obj:5:5: expected vertex 2 of face 1 (a vertex number from 1 to 4 or from -4 to -1), found '2/a'"},
+        {"fx.obj", LH_PLC_OBJ, TEXT(OBJ_V4 "f 1 2 3 4.5\n"), LH_ERR_PARSE,
+         "fx.obj:5:9: expected vertex 4 of face 1 (a vertex number from 1 to 4 or from -4 to -1), found '4.5'"},
+    };
+    check_bad(lh_t_, cases, LH_COUNT(cases));
+}
+
 /* ---- every format ----------------------------------------------------------------- */
 
 LH_TEST(every_allocation_failure)
@@ -469,6 +523,7 @@ LH_TEST(every_allocation_failure)
         {"cube.poly", LH_PLC_POLY, CUBE_NODES "2 1\n3 1 1\n4 1 2 3 4\n2 1 3\n1 7\n1 0.5 0.5 0\n1\n4 5 6 7 8\n"
                                  "1\n1 0.5 0.5 0.5\n1\n1 0.1 0.1 0.1 7 0.25\n"},
         {"t.mesh", LH_PLC_MEDIT, MESH_V4 "Triangles 1\n1 2 3 0\nEdges 1\n1 4 0\nQuadrilaterals 1\n1 2 3 4 0\n"},
+        {"t.obj", LH_PLC_OBJ, OBJ_V4 "f 1 2 3 4\nl 1 2 3\nf -1 -2 -3\n"},
         {"cube.smesh", LH_PLC_SMESH, CUBE_NODES "2 1\n4 1 2 3 4 5\n4 5 6 7 8 6\n0\n"},
     };
     for (size_t i = 0; i < LH_COUNT(inputs) && !LH_FAILED(); i++)
@@ -481,6 +536,7 @@ LH_TEST(real_files)
     expect_file(lh_t_, "star.off", 14, 24, 24, 72, 0);
     expect_file(lh_t_, "spike-1-7.smesh", 8, 8, 8, 28, 0);
     expect_file(lh_t_, "star.1.mesh", 14, 48, 48, 144, 36);
+    expect_file(lh_t_, "star.obj", 14, 24, 24, 72, 0);
 }
 #endif
 
@@ -488,7 +544,8 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(off_reads), LH_CASE(off_errors), LH_CASE(poly_reads), LH_CASE(poly_take_points),
-        LH_CASE(poly_errors), LH_CASE(medit_reads), LH_CASE(medit_errors), LH_CASE(every_allocation_failure),
+        LH_CASE(poly_errors), LH_CASE(medit_reads), LH_CASE(medit_errors),
+        LH_CASE(obj_reads), LH_CASE(obj_errors), LH_CASE(every_allocation_failure),
 #ifdef LH_TEST_DATA_DIR
         LH_CASE(real_files),
 #endif

@@ -9,4 +9,3 @@ static lh_status not_yet(lh__scan *s, const char *what)
 
 lh_status lh__plc_read_ply(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, "PLY"); }
 lh_status lh__plc_read_stl(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, "STL"); }
-lh_status lh__plc_read_obj(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, "OBJ"); }
