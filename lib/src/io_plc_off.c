@@ -87,7 +87,7 @@ static lh_status read_vertex(lh__scan *s, lh__plc_build *b, size_t i, size_t nv,
     double xyz[3];
     lh__token t;
     snprintf(item, sizeof item, "vertex %zu", i);
-    snprintf(tail, sizeof tail, " (%zu vertices declared)", nv);
+    snprintf(tail, sizeof tail, " (%zu vert%s declared)", nv, nv == 1 ? "ex" : "ices");
     lh__scan_next(s, 1, &t);
     char what[80];
     snprintf(what, sizeof what, "coordinate 1 of %s", item);
@@ -110,7 +110,7 @@ static lh_status read_face(lh__scan *s, lh__plc_build *b, lh__plc_ring *r, size_
     if (at.kind == LH__TOK_EOF) {
         char tail[64];
         snprintf(what, sizeof what, "the number of vertices of %s", item);
-        snprintf(tail, sizeof tail, " (%zu faces declared)", nf);
+        snprintf(tail, sizeof tail, " (%zu face%s declared)", nf, nf == 1 ? "" : "s");
         return lh__expected(s, LH_ERR_PARSE, &at, what, tail);
     }
     snprintf(what, sizeof what, "the number of vertices of %s", item);

@@ -166,8 +166,8 @@ static lh_status item_start(lh__scan *s, lh__token *t, const char *what, size_t 
 {
     lh__scan_next(s, 1, t);
     if (t->kind != LH__TOK_EOF) return LH_OK;
-    char tail[80];
-    snprintf(tail, sizeof tail, " (%zu %s declared)", declared, many);
+    char tail[80]; /* many is a regular plural: one is many less its 's' */
+    snprintf(tail, sizeof tail, " (%zu %.*s declared)", declared, (int)(strlen(many) - (declared == 1)), many);
     return lh__expected(s, LH_ERR_PARSE, t, what, tail);
 }
 
