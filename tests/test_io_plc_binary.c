@@ -152,12 +152,22 @@ static const char ply_header[] = "property float x\nproperty double y\nproperty 
                                  "property uchar flags\nproperty list uchar int vertex_indices\n"
                                  "end_header\n";
 
-static void ply_binary(bytes *o, int big)
+/* s with its line ends as CRLF when crlf. */
+static void put_lines(bytes *o, const char *s, int crlf)
+{
+    for (; *s; s++) {
+        if (*s == '\n' && crlf) o->b[o->n++] = '\r';
+        o->b[o->n++] = (unsigned char)*s;
+    }
+}
+
+/* The tetrahedron as binary PLY; a CRLF header when crlf (Windows' line ends). */
+static void ply_binary(bytes *o, int big, int crlf)
 {
     o->n = 0;
-    put_str(o, big ? "ply\nformat binary_big_endian 1.0\n" : "ply\nformat binary_little_endian 1.0\n");
-    put_str(o, "comment a tetrahedron\nelement vertex 4\n");
-    put_str(o, ply_header);
+    put_lines(o, big ? "ply\nformat binary_big_endian 1.0\n" : "ply\nformat binary_little_endian 1.0\n", crlf);
+    put_lines(o, "comment a tetrahedron\nelement vertex 4\n", crlf);
+    put_lines(o, ply_header, crlf);
     for (int i = 0; i < 4; i++) {
         put_f32(o, (float)ply_xyz[3 * i], big);
         put_f64(o, ply_xyz[3 * i + 1], big);
@@ -206,7 +216,7 @@ LH_TEST(ply_binary_both_orders)
             bytes o;
             lh_plc g;
             char msg[300];
-            ply_binary(&o, big);
+            ply_binary(&o, big, pipe_it); /* through the pipe: a CRLF header */
             /* no name: the content says PLY */
             LH_ASSERT_EQ_INT(rd(NULL, o.b, o.n, pipe_it, &g, msg), LH_OK);
             LH_EXPECT_STREQ(msg, "");
@@ -399,18 +409,19 @@ LH_TEST(stl_binary)
 {
     static const size_t pline[] = {1, 1, 1, 2}, fline[] = {1, 2, 3};
     /* a plain header; one starting "solid" (told by the length); one starting "solid"
-       longer than the 4 KiB read ahead (told by its bytes), in a file and a pipe */
-    static const char *const headers[] = {"binary STL", "solid t", "solid t"};
-    for (int h = 0; h < 3; h++) {
+       longer than the 4 KiB read ahead (told by its bytes), in a file and a pipe; one
+       with a line like OBJ's "v x y z" (no name: the NULs say STL) */
+    static const char *const headers[] = {"binary STL", "solid t", "solid t", "STL\nv 1 2 3\n"};
+    for (int h = 0; h < 4; h++) {
         for (int pipe_it = 0; pipe_it < 2; pipe_it++) {
             bytes o;
             lh_plc g;
             char msg[300];
             size_t triangles = h == 2 ? 99 : 3;
             stl_write(&o, headers[h], triangles);
-            LH_ASSERT_EQ_INT(rd(h ? "t.stl" : NULL, o.b, o.n, pipe_it, &g, msg), LH_OK);
+            LH_ASSERT_EQ_INT(rd(h == 1 || h == 2 ? "t.stl" : NULL, o.b, o.n, pipe_it, &g, msg), LH_OK);
             LH_EXPECT_STREQ(msg, "");
-            if (h < 2) check_plc(lh_t_, &g, 4, stl_xyz, 3, stl_size, stl_v, pline, fline);
+            if (h != 2) check_plc(lh_t_, &g, 4, stl_xyz, 3, stl_size, stl_v, pline, fline);
             LH_EXPECT_EQ_U64(g.n, 4);
             LH_EXPECT_EQ_U64(g.facet_count, triangles);
             LH_EXPECT_EQ_U64(g.facet_line[triangles - 1], triangles);
