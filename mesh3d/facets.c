@@ -27,7 +27,8 @@
  *     points is refused, and so are edges that cross in it.
  *
  * No Steiner point is added (boundary_steiner = -1, no refinement): every triangle's
- * corners are PLC points. Triangles are oriented as the first ring turns in the
+ * corners are PLC points. A quad (one ring of 4, no hole) is split along its valid
+ * diagonal directly, the Delaunay one when both are valid. Triangles are oriented as the first ring turns in the
  * projection, decided exactly by orient_2 at its lexicographically smallest vertex (a
  * strictly convex corner of a simple ring), so a closed surface whose rings are
  * consistently oriented gets consistently oriented triangles.
@@ -36,6 +37,8 @@
 
 #include "lh_alloc.h"
 #include "lh_error.h"
+#include "lh_exact.h"
+#include "lh_filter.gen.h"
 #include "lh_sort.h"
 
 #include <stdarg.h>
@@ -197,21 +200,22 @@ static lh_status emit(facet_work *w, size_t f, lh_index a, lh_index b, lh_index 
 
 /* ---- geometry -------------------------------------------------------------------- */
 
-/* orient_2 of a, b, c projected along axis k (the other axes in cyclic order). */
-static int orient2_along(lh_pred *pred, int k, const double *a, const double *b,
-                         const double *c)
+int lh__orient2_along(lh_pred *pred, int k, const double *a, const double *b, const double *c)
 {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     const double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pc[2] = {c[i], c[j]};
     const double *p[3] = {pa, pb, pc};
-    return lh_orient(pred, 2, p);
+    double det = 0, err = -1;
+    int s;
+    if (lh__orient_filter_2(p, &s, &det, &err)) return s; /* lh_filter.gen.h */
+    return lh__orient_unfiltered(pred, 2, p, det, err);
 }
 
 /* a, b, c lie on one line of R^3 (or coincide): every coordinate projection is. */
 static int collinear3(lh_pred *pred, const double *a, const double *b, const double *c)
 {
     for (int k = 0; k < 3; k++)
-        if (orient2_along(pred, k, a, b, c)) return 0;
+        if (lh__orient2_along(pred, k, a, b, c)) return 0;
     return 1;
 }
 
@@ -240,7 +244,7 @@ static int drop_axis(lh_pred *pred, const double nrm[3], const double *a, const 
     int k = -1;
     for (int pass = 0; pass < 2 && k < 0; pass++)
         for (int i = 0; i < 3; i++) {
-            if (pass == 0 && !orient2_along(pred, i, a, b, c)) continue;
+            if (pass == 0 && !lh__orient2_along(pred, i, a, b, c)) continue;
             if (k < 0 || absd(nrm[i]) > absd(nrm[k])) k = i;
         }
     return k;
@@ -261,6 +265,15 @@ static int ring_turn(facet_work *w, const lh_index *ring, size_t m, double nrm_k
                           w->xy + 2 * w->loc[ring[(best + 1) % m]]};
     const int s = lh_orient(w->pred, 2, p);
     return s ? s : (nrm_k < 0 ? -1 : 1);
+}
+
+/* Points a and b of g in lexicographic order of coordinates. */
+static int cmp_point(const lh_plc *g, lh_index a, lh_index b)
+{
+    const double *p = pt(g, a), *q = pt(g, b);
+    for (int k = 0; k < 3; k++)
+        if (p[k] != q[k]) return p[k] < q[k] ? -1 : 1;
+    return 0;
 }
 
 static int cmp_xy(const void *ctx, lh_index a, lh_index b)
@@ -291,6 +304,43 @@ static lh_status projection_injective(facet_work *w, size_t f, lh_error *err)
 }
 
 /* ---- one facet ------------------------------------------------------------------- */
+
+/* PLC point v's projection (v in the current facet). */
+static const double *xy_of(const facet_work *w, lh_index v) { return w->xy + 2 * w->loc[v]; }
+
+/* The diagonal from ring corner d to d + 2 splits the quad into two triangles that
+ * turn as the ring (sign s) does. */
+static int diagonal_ok(facet_work *w, const lh_index *r, int d, int s)
+{
+    const double *p[4];
+    for (int i = 0; i < 4; i++) p[i] = xy_of(w, r[(d + i) % 4]);
+    const double *t0[3] = {p[0], p[1], p[2]}, *t1[3] = {p[0], p[2], p[3]};
+    return lh_orient(w->pred, 2, t0) == s && lh_orient(w->pred, 2, t1) == s;
+}
+
+/* A quad facet (one ring of 4 distinct points, no hole) triangulated directly: its
+ * constrained Delaunay triangulation is the valid diagonal, the Delaunay one when
+ * both are (on a circle: the one at the corner of least coordinates, so the choice
+ * does not depend on where the ring starts).
+ * s: the ring's turn. Returns 0 when the quad is not simple in the projection (the
+ * general path then says why), else 1 with *st. */
+static int quad(facet_work *w, size_t f, const lh_index *r, int s, lh_status *st)
+{
+    const int ok0 = diagonal_ok(w, r, 0, s), ok1 = diagonal_ok(w, r, 1, s);
+    if (!ok0 && !ok1) return 0;
+    int d = ok0 ? 0 : 1;
+    if (ok0 && ok1) {
+        const double *p[4] = {xy_of(w, r[0]), xy_of(w, r[1]), xy_of(w, r[2]), xy_of(w, r[3])};
+        const int in = lh_insphere(w->pred, 2, p) * s; /* < 0: r[3] inside circle r[0..2] */
+        size_t low = 0;
+        for (size_t i = 1; i < 4; i++)
+            if (cmp_point(w->g, r[i], r[low]) < 0) low = i;
+        d = in < 0 ? 1 : in > 0 ? 0 : (int)(low % 2);
+    }
+    *st = emit(w, f, r[d], r[d + 1], r[(d + 2) % 4]);
+    if (*st == LH_OK) *st = emit(w, f, r[d], r[(d + 2) % 4], r[(d + 3) % 4]);
+    return 1;
+}
 
 /* Local number of PLC point v, numbering it when new. */
 static lh_index local(facet_work *w, lh_index v)
@@ -385,6 +435,10 @@ static lh_status facet_project(facet_work *w, size_t f, lh_index ring0, lh_error
         }
     lh_status st = planar ? LH_OK : projection_injective(w, f, err);
     if (st != LH_OK) return st;
+    const size_t polygons = (size_t)(g->facet_first[f + 1] - g->facet_first[f]);
+    const int turn = ring_turn(w, ring, m, nrm[k]);
+    if (polygons == 1 && m == 4 && w->nid == 4 && !w->nhole && quad(w, f, ring, turn, &st))
+        return st;
     lh_pslg p;
     memset(&p, 0, sizeof p);
     p.n = w->nid, p.xy = w->xy;
@@ -398,7 +452,6 @@ static lh_status facet_project(facet_work *w, size_t f, lh_index ring0, lh_error
     lh_error e;
     st = lh_pslg_triangulate(&p, &o, &tm, &e);
     if (st != LH_OK) return pslg_failure(w, f, st, &e, err);
-    const int turn = ring_turn(w, ring, m, nrm[k]);
     const size_t tc = lh_trimesh_triangle_count(tm);
     const lh_index *t = lh_trimesh_triangles(tm);
     if (lh_trimesh_point_count(tm) != w->nid) st = LH_ERR_INTERNAL; /* no Steiner point */

@@ -17,8 +17,9 @@ typedef struct lh__facet_tris {
 } lh__facet_tris;
 
 /*
- * Triangulates every facet of g: a facet that is one triangle passes through; any
- * other is projected to the coordinate plane that drops the largest component of its
+ * Triangulates every facet of g: a facet that is one triangle passes through; a
+ * quad takes its valid diagonal (the Delaunay one when both are); any other is
+ * projected to the coordinate plane that drops the largest component of its
  * first ring's Newell normal and triangulated there by lh_pslg_triangulate (ring and
  * slit edges as segments, the facet's hole points carving holes, no Steiner point),
  * each triangle oriented as the first ring turns in that projection — so a closed
@@ -38,6 +39,11 @@ typedef struct lh__facet_tris {
 /* al: NULL for malloc/free. */
 lh_status lh__facets_triangulate(const lh_plc *g, const lh_allocator *al, lh__facet_tris *out,
                                  lh_error *err);
+/* orient_2 of points a, b, c of R^3 projected along axis k (0..2) to the plane of
+ * the other two axes, taken in cyclic order (k+1, k+2): > 0 when a, b, c turn
+ * positively about +k. */
+int lh__orient2_along(lh_pred *pred, int k, const double *a, const double *b, const double *c);
+
 /* Frees out's arrays (allocated with al) and zeroes it; a zeroed out is a no-op. */
 void lh__facet_tris_free(const lh_allocator *al, lh__facet_tris *out);
 

@@ -82,6 +82,55 @@ LH_TEST(quads_follow_their_rings)
     lh__facet_tris_free(NULL, &t);
 }
 
+/* The sorted corners of facet f's triangles, for comparing triangulations. */
+static void tri_set(const lh__facet_tris *t, lh_index f, lh_index out[6])
+{
+    size_t n = 0;
+    for (size_t i = 0; i < t->count; i++) {
+        if (t->facet[i] != f || n == 2) continue;
+        lh_index *v = out + 3 * n++;
+        for (int k = 0; k < 3; k++) v[k] = t->tri[3 * i + k];
+        for (int a = 0; a < 3; a++) /* three elements: bubble */
+            for (int b = 0; b + 1 < 3; b++)
+                if (v[b] > v[b + 1]) { const lh_index x = v[b]; v[b] = v[b + 1], v[b + 1] = x; }
+    }
+    if (n == 2 && (out[0] > out[3] || (out[0] == out[3] && out[1] > out[4])))
+        for (int k = 0; k < 3; k++) { const lh_index x = out[k]; out[k] = out[k + 3], out[k + 3] = x; }
+}
+
+/* Quads: the only valid diagonal of a dart, the Delaunay one of a convex quad; for a
+ * square (both on one circle) the same one wherever the ring starts; a quad with
+ * two corners at one place goes the general way (its duplicate merged). */
+LH_TEST(quad_diagonals)
+{
+    tplc b;
+    tplc_init(&b);
+    tplc_point(&b, 0, 0, 0), tplc_point(&b, 4, 0, 0), tplc_point(&b, 1, 1, 0), tplc_point(&b, 0, 4, 0);
+    tplc_point(&b, 0, 0, 1), tplc_point(&b, 10, 1, 1), tplc_point(&b, 11, 2, 1), tplc_point(&b, 1, 10, 1);
+    tplc_point(&b, 0, 0, 2), tplc_point(&b, 1, 0, 2), tplc_point(&b, 1, 1, 2), tplc_point(&b, 0, 1, 2);
+    tplc_point(&b, 1, 0, 2);
+    tplc_face(&b, 4, (lh_index[]){1, 2, 3, 0}); /* a dart: reflex at 2 */
+    tplc_face(&b, 4, (lh_index[]){4, 5, 6, 7}); /* at 5 and 7: 141 + 57 > 180 degrees, so 5-7 */
+    for (int r = 0; r < 4; r++)
+        tplc_face(&b, 4, (lh_index[]){8 + r % 4, 8 + (r + 1) % 4, 8 + (r + 2) % 4, 8 + (r + 3) % 4});
+    tplc_face(&b, 4, (lh_index[]){8, 9, 12, 10}); /* 9 and 12 coincide */
+    lh__facet_tris t;
+    LH_ASSERT_EQ_INT(lh__facets_triangulate(&b.g, NULL, &t, NULL), LH_OK);
+    lh_index s[6], r[6];
+    tri_set(&t, 0, s);
+    static const lh_index dart[6] = {0, 1, 2, 0, 2, 3}, convex[6] = {4, 5, 7, 5, 6, 7};
+    for (int k = 0; k < 6; k++) LH_EXPECT_EQ_INT(s[k], dart[k]);
+    tri_set(&t, 1, s);
+    for (int k = 0; k < 6; k++) LH_EXPECT_EQ_INT(s[k], convex[k]);
+    tri_set(&t, 2, s);
+    for (lh_index f = 3; f < 6; f++) {
+        tri_set(&t, f, r);
+        for (int k = 0; k < 6; k++) LH_EXPECT_EQ_INT(r[k], s[k]);
+    }
+    expect_facet(lh_t_, &b.g, &t, 6, 1, 0.5, up);
+    lh__facet_tris_free(NULL, &t);
+}
+
 LH_TEST(nonconvex_pentagon)
 {
     tplc b;
@@ -299,6 +348,7 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(triangle_passes_through), LH_CASE(quads_follow_their_rings),
+        LH_CASE(quad_diagonals),
         LH_CASE(nonconvex_pentagon),      LH_CASE(hole_ring_and_hole_point),
         LH_CASE(slit_and_lone_point),     LH_CASE(nonplanar_quad),
         LH_CASE(vertical_facets),         LH_CASE(refusals),
