@@ -310,7 +310,7 @@ static void list_segments(pchk *k, prec *tmp)
         const size_t len = poly_len(g, p);
         for (size_t i = 0; len >= 2 && i < (len == 2 ? 1 : len); i++) {
             const lh_index a = poly_v(g, p)[i], b = poly_v(g, p)[(i + 1) % len];
-            if (a != b) tmp[m++] = (prec){a < b ? a : b, a < b ? b : a, (lh_index)m};
+            if (a != b) tmp[m] = (prec){a < b ? a : b, a < b ? b : a, (lh_index)m}, m++;
         }
     }
     qsort(tmp, m, sizeof *tmp, prec_cmp);
@@ -318,7 +318,7 @@ static void list_segments(pchk *k, prec *tmp)
     for (size_t i = 0; i < m; i++)
         if (i == 0 || tmp[i].a != tmp[i - 1].a || tmp[i].b != tmp[i - 1].b) tmp[u++] = tmp[i];
     qsort(tmp, u, sizeof *tmp, prec_pos_cmp);
-    memcpy(k->seg, g->segments, 2 * g->segment_count * sizeof *k->seg);
+    if (g->segment_count) memcpy(k->seg, g->segments, 2 * g->segment_count * sizeof *k->seg);
     k->ns = g->segment_count;
     for (size_t i = 0; i < u; i++, k->ns++) {
         k->seg[2 * k->ns] = tmp[i].a;
