@@ -17,10 +17,12 @@
  * a hole of F is filled and an equal area elsewhere left bare — a fault that (a)
  * and (b) cannot see; docs/meshing3d.md, "Checking a mesh").
  * Points not exactly in F's plane (or on a segment's line) are accepted when they
- * are Steiner points (index >= g->n) and counted once each in off_exact.
+ * are Steiner points (index >= g->n) within rounding's reach of it (reach()), and
+ * counted once each in off_exact.
  */
 #include "check.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -326,6 +328,49 @@ static void list_segments(pchk *k, prec *tmp)
     }
 }
 
+/* Rounding's reach: a Steiner point counts as on a line or plane up to rounding when
+ * it is within 64 machine epsilons of the largest coordinate involved (a rounded
+ * construction is within an ulp; text output at 16 digits within a few). The only
+ * tolerance of the check, and it decides only which points are counted in
+ * off_exact; a point beyond it is a fault. Evaluated in floating point: the
+ * distance's own error is far below the margin. */
+static double reach(const double *const *p, int m)
+{
+    double big = 0;
+    for (int i = 0; i < m; i++)
+        for (int j = 0; j < 3; j++) big = fabs(p[i][j]) > big ? fabs(p[i][j]) : big;
+    return 64 * DBL_EPSILON * big;
+}
+
+static void cross(const double *a, const double *b, const double *c, double *out)
+{
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                 w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    out[0] = u[1] * w[2] - u[2] * w[1], out[1] = u[2] * w[0] - u[0] * w[2];
+    out[2] = u[0] * w[1] - u[1] * w[0];
+}
+
+static double norm(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/* Whether x is within rounding's reach of the line a b. */
+static int near_line(const double *a, const double *b, const double *x)
+{
+    const double *p[3] = {a, b, x}, d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    double c[3];
+    cross(a, b, x, c);
+    return norm(c) <= reach(p, 3) * norm(d);
+}
+
+/* Whether x is within rounding's reach of the plane a b c. */
+static int near_plane(const double *a, const double *b, const double *c, const double *x)
+{
+    const double *p[4] = {a, b, c, x};
+    double n[3];
+    cross(a, b, c, n);
+    const double h = n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2]);
+    return fabs(h) <= reach(p, 4) * norm(n);
+}
+
 static void mark_off(pchk *k, lh_index v)
 {
     if (!k->c->off[v]) k->c->off[v] = 1, k->c->off_count++;
@@ -351,7 +396,7 @@ static const hrec *next_on(pchk *k, const hrec *h, size_t nh, lh_index a, lh_ind
         const double *x = lh__tchk_pt(k->c, h[i].to);
         if (!strictly_between(cur, x[axis], pb[axis])) continue;
         const int is_off = !collinear(k, pa, pb, x);
-        if (is_off && (size_t)h[i].to < k->g->n) continue;
+        if (is_off && ((size_t)h[i].to < k->g->n || !near_line(pa, pb, x))) continue;
         if (!best || is_off < best_off ||
             (is_off == best_off &&
              strictly_between(cur, x[axis], lh__tchk_pt(k->c, best->to)[axis])))
@@ -501,6 +546,9 @@ static lh_status facet_area(pchk *k, size_t f)
             const lh_index v = k->c->faces[3 * s + j];
             if (orient3i(k, pl[0], pl[1], pl[2], v) == 0) continue;
             if ((size_t)v < k->g->n) return not_covered(k, f, "an input point off its plane", s);
+            if (!near_plane(lh__tchk_pt(k->c, pl[0]), lh__tchk_pt(k->c, pl[1]),
+                            lh__tchk_pt(k->c, pl[2]), lh__tchk_pt(k->c, v)))
+                return not_covered(k, f, "a Steiner point off its plane beyond rounding", s);
             mark_off(k, v);
         }
         double q[3][2];

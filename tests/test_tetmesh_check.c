@@ -419,6 +419,53 @@ LH_TEST(rounded_steiner_point_counted)
     m.g.n = 5;
     expect_msg(lh_t_, &m, NULL, 1, &m.g,
                "segment 0 (0 1) is not covered: its chain of subsegments from 0 stops at 0");
+    /* a Steiner point 0.01 off the line is beyond rounding: a fault */
+    m.g.n = 4;
+    m.xyz[12] += 0.01;
+    expect_msg(lh_t_, &m, NULL, 1, &m.g,
+               "segment 0 (0 1) is not covered: its chain of subsegments from 0 stops at 0");
+}
+
+/* The square facet z = 0 split at a Steiner point 5 near its centre, under a
+ * pyramid (apex 4): counted when the point is off the plane by rounding only, a
+ * fault when further. */
+LH_TEST(facet_steiner_point)
+{
+    for (int c = 0; c < 3; c++) {
+        tm m;
+        memset(&m, 0, sizeof m);
+        const double z = c == 0 ? 0 : c == 1 ? 1e-17 : 1e-3;
+        const double p[6][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}, {0.5, 0.5, z}};
+        memcpy(m.xyz, p, sizeof p);
+        m.n = 6;
+        for (lh_index i = 0; i < 4; i++) {
+            add_tet(&m, i, (i + 1) % 4, 5, 4);
+            lh_index *f = m.faces + 3 * m.nf;
+            f[0] = i, f[1] = (i + 1) % 4, f[2] = 5;
+            m.par[m.nf++] = 0;
+            m.edges[2 * m.ne] = i, m.edges[2 * m.ne++ + 1] = (i + 1) % 4;
+        }
+        const lh_index sq[4] = {0, 1, 2, 3};
+        m.g.n = 4, m.g.xyz = m.xyz;
+        m.g.facet_first = m.facet_first, m.g.polygon_first = m.polygon_first;
+        m.g.polygon_vertices = m.polygon_vertices;
+        add_facet(&m, sq, 4);
+        size_t off = 9;
+        lh_error err;
+        for (int par = 0; par < (c == 0 ? 2 : 1); par++) { /* by containment: exact only */
+            LH_EXPECT_EQ_INT(run(&m, par ? NULL : m.par, 1, &m.g, &off, &err),
+                             c == 2 ? LH_ERR_INVALID_MESH : LH_OK);
+            LH_EXPECT_EQ_U64(off, c == 1 ? 1 : 0);
+        }
+        if (c == 2)
+            LH_EXPECT_STREQ(err.message, "facet 0 is not covered: a Steiner point off its plane "
+                                         "beyond rounding (subface 0 (0 1 5))");
+        /* a missing quarter */
+        m.nf--;
+        if (c == 0)
+            expect_msg(lh_t_, &m, m.par, 1, &m.g,
+                       "facet 0 is not covered: its 3 subfaces' area is smaller than the facet's");
+    }
 }
 
 LH_TEST(delaunay_meshes_pass)
@@ -514,7 +561,7 @@ int main(int argc, char **argv)
     static const lh_test_case cases[] = {
         LH_CASE(boxes_pass), LH_CASE(tet_faults), LH_CASE(overlapping_tets),
         LH_CASE(edge_winding), LH_CASE(subface_and_subsegment_faults), LH_CASE(conformity_faults),
-        LH_CASE(facet_border_fault), LH_CASE(rounded_steiner_point_counted),
+        LH_CASE(facet_border_fault), LH_CASE(rounded_steiner_point_counted), LH_CASE(facet_steiner_point),
         LH_CASE(delaunay_meshes_pass), LH_CASE(arguments), LH_CASE(allocation_failures)};
     int rc = lh_test_main(cases, LH_COUNT(cases), argc, argv);
     lh_pred_free(pred());
