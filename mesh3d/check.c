@@ -57,26 +57,41 @@ static int erec_cmp(const void *x, const void *y)
     return p->c < q->c ? -1 : p->c > q->c;
 }
 
+/* Sorts count records of size bytes whose first member is an lh_index point number
+ * (0..n-1): a counting sort by it into a scratch copy, then cmp within each point's
+ * bucket (a few dozen records: the full sort by cmp took half the check's time). */
+static lh_status bucket_sort(const lh__tchk *c, void *rec, size_t count, size_t size,
+                             int (*cmp)(const void *, const void *))
+{
+    size_t *pos = lh__alloc(&c->al, (c->n + 1) * sizeof *pos);
+    unsigned char *tmp = lh__alloc(&c->al, count * size + 1), *r = rec;
+    if (!pos || !tmp) {
+        lh__free(&c->al, pos);
+        lh__free(&c->al, tmp);
+        return LH_ERR_NOMEM;
+    }
+    memset(pos, 0, (c->n + 1) * sizeof *pos);
+    lh_index key;
+    for (size_t i = 0; i < count; i++) memcpy(&key, r + i * size, sizeof key), pos[key + 1]++;
+    for (size_t v = 1; v <= c->n; v++) pos[v] += pos[v - 1];
+    for (size_t i = 0; i < count; i++) {
+        memcpy(&key, r + i * size, sizeof key);
+        memcpy(tmp + pos[key]++ * size, r + i * size, size);
+    }
+    memcpy(r, tmp, count * size);
+    for (size_t v = 0, start = 0; v < c->n; start = pos[v++])
+        qsort(r + start * size, pos[v] - start, size, cmp);
+    lh__free(&c->al, pos);
+    lh__free(&c->al, tmp);
+    return LH_OK;
+}
+
 static void sort3(lh_index *v)
 {
     lh_index t;
     if (v[0] > v[1]) t = v[0], v[0] = v[1], v[1] = t;
     if (v[1] > v[2]) t = v[1], v[1] = v[2], v[2] = t;
     if (v[0] > v[1]) t = v[0], v[0] = v[1], v[1] = t;
-}
-
-/* 1 when (w0 w1 w2 w3), a permutation of the tet's points, is an even permutation
- * of them: it then has the tet's orientation. */
-static int even_perm(const lh_index *tet, lh_index w0, lh_index w1, lh_index w2, lh_index w3)
-{
-    const lh_index w[4] = {w0, w1, w2, w3};
-    int pos[4], inv = 0;
-    for (int i = 0; i < 4; i++)
-        for (int k = 0; k < 4; k++)
-            if (tet[k] == w[i]) pos[i] = k;
-    for (int i = 0; i < 4; i++)
-        for (int k = i + 1; k < 4; k++) inv += pos[i] > pos[k];
-    return inv % 2 == 0;
 }
 
 static int orient4(lh__tchk *c, lh_index a, lh_index b, lh_index x, lh_index y)
@@ -107,20 +122,29 @@ static lh_status check_tets(lh__tchk *c)
     return LH_OK;
 }
 
-static void fill_faces(const lh__tchk *c, frec *f)
+/* Inversions of a triple: 0 or 2 for an even order, 1 or 3 for an odd one. */
+static int inversions3(const lh_index *v)
+{
+    return (v[0] > v[1]) + (v[0] > v[2]) + (v[1] > v[2]);
+}
+
+/* Face k of a positive tet, ordered so that vertex k lies on its positive side:
+ * (v_a, v_b, v_c, v_k) is an even permutation of (v_0, v_1, v_2, v_3). */
+static const int face_of[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+
+static lh_status fill_faces(const lh__tchk *c, frec *f)
 {
     for (size_t t = 0; t < c->nt; t++) {
         const lh_index *v = c->tets + 4 * t;
         for (int k = 0; k < 4; k++) {
             frec *r = f + 4 * t + k;
-            for (int i = 0, j = 0; i < 4; i++)
-                if (i != k) r->v[j++] = v[i];
+            for (int i = 0; i < 3; i++) r->v[i] = v[face_of[k][i]];
+            r->side = inversions3(r->v) % 2 == 0; /* sorting keeps the orientation */
             sort3(r->v);
             r->t = (lh_index)t;
-            r->side = even_perm(v, r->v[0], r->v[1], r->v[2], v[k]);
         }
     }
-    qsort(f, 4 * c->nt, sizeof *f, frec_cmp);
+    return bucket_sort(c, f, 4 * c->nt, sizeof *f, frec_cmp);
 }
 
 static int same_tet(const lh__tchk *c, lh_index s, lh_index t)
@@ -206,7 +230,7 @@ static lh_status check_subfaces(lh__tchk *c, const frec *f, lh_index *sub)
 
 static lh_status check_faces(lh__tchk *c, frec *f, lh_index *sub)
 {
-    fill_faces(c, f);
+    if (fill_faces(c, f)) return LH_ERR_NOMEM;
     const size_t nr = 4 * c->nt;
     for (size_t i = 0; i < nr;) {
         size_t j = i + 1;
@@ -228,21 +252,24 @@ static lh_status check_faces(lh__tchk *c, frec *f, lh_index *sub)
     return st;
 }
 
-static void fill_edges(const lh__tchk *c, erec *e)
+/* Edge (i j) of a tet and its other two corners (x y), with the parity of the
+ * permutation (i j x y) of (0 1 2 3): odd ones swap x and y to keep (i j x y) positive. */
+static const int edge_of[6][5] = {{0, 1, 2, 3, 0}, {0, 2, 1, 3, 1}, {0, 3, 1, 2, 0},
+                                  {1, 2, 0, 3, 0}, {1, 3, 0, 2, 1}, {2, 3, 0, 1, 0}};
+
+static lh_status fill_edges(const lh__tchk *c, erec *e)
 {
-    static const int pair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
     for (size_t t = 0; t < c->nt; t++) {
         const lh_index *v = c->tets + 4 * t;
         for (int k = 0; k < 6; k++) {
-            lh_index a = v[pair[k][0]], b = v[pair[k][1]], x = -1, y = -1;
+            const int *q = edge_of[k];
+            lh_index a = v[q[0]], b = v[q[1]], x = v[q[2]], y = v[q[3]];
+            const int odd = q[4] ^ (a > b); /* a > b: the swap below is one more */
             if (a > b) { const lh_index s = a; a = b; b = s; }
-            for (int i = 0; i < 4; i++)
-                if (i != pair[k][0] && i != pair[k][1]) { if (x < 0) x = v[i]; else y = v[i]; }
-            const int even = even_perm(v, a, b, x, y);
-            e[6 * t + k] = (erec){a, b, even ? x : y, even ? y : x, (lh_index)t, 0};
+            e[6 * t + k] = (erec){a, b, odd ? y : x, odd ? x : y, (lh_index)t, 0};
         }
     }
-    qsort(e, 6 * c->nt, sizeof *e, erec_cmp);
+    return bucket_sort(c, e, 6 * c->nt, sizeof *e, erec_cmp);
 }
 
 /* The record of the group e[0..k) (sorted by c) whose c is x, or NULL. */
@@ -337,7 +364,7 @@ static lh_status check_subsegments(lh__tchk *c, const erec *e)
 
 static lh_status check_edges(lh__tchk *c, erec *e)
 {
-    fill_edges(c, e);
+    if (fill_edges(c, e)) return LH_ERR_NOMEM;
     const size_t nr = 6 * c->nt;
     for (size_t i = 0; i < nr;) {
         size_t j = i + 1;
