@@ -403,7 +403,7 @@ static lh_status check_args(size_t n, const double *xyz, size_t tet_count, const
                              : tet_count && !tets    ? "tets"
                              : face_count && !faces  ? "faces"
                                                      : "edges");
-    const size_t most = SIZE_MAX / 64 / sizeof(lh_index);
+    const size_t most = SIZE_MAX / 512; /* above the records' bytes per tet, face, edge */
     if (n > SIZE_MAX / 3 / sizeof(double) || tet_count > most || face_count > most ||
         edge_count > most)
         return lh__error_say(err, LH_ERR_INVALID_ARGUMENT,

@@ -101,6 +101,10 @@ static lh_status check_g(lh__tchk *c)
         (!offsets_ok(g->facet_hole_first, g->facet_count, SIZE_MAX) ||
          (g->facet_hole_first[g->facet_count] && !g->facet_holes)))
         return bad_plc(c, "facet hole offsets, facets:", g->facet_count);
+    for (size_t i = 0; g->facet_count && g->facet_hole_first &&
+                       i < 3 * (size_t)g->facet_hole_first[g->facet_count]; i++)
+        if (g->facet_holes[i] - g->facet_holes[i] != 0)
+            return bad_plc(c, "facet hole point not finite:", i / 3);
     for (size_t s = 0; c->parents && s < c->nf; s++)
         if (c->parents[s] < -1 || (c->parents[s] >= 0 && (size_t)c->parents[s] >= g->facet_count))
             return lh__error_say(c->err, LH_ERR_INVALID_MESH,

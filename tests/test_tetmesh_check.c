@@ -468,6 +468,44 @@ LH_TEST(facet_steiner_point)
     }
 }
 
+/* A square facet with a square hole (a hole point in it), its annulus in 8 subfaces
+ * coned to an apex above the hole: the area is the annulus's; without the hole point
+ * the inner square is a mere constraint and the annulus is short of the facet. */
+LH_TEST(facet_with_hole)
+{
+    tm m;
+    memset(&m, 0, sizeof m);
+    const double p[9][3] = {{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {0, 3, 0}, {1, 1, 0},
+                            {2, 1, 0}, {2, 2, 0}, {1, 2, 0}, {1.5, 1.5, 1}};
+    memcpy(m.xyz, p, sizeof p);
+    m.n = 9;
+    for (lh_index k = 0; k < 4; k++) {
+        const lh_index o0 = k, o1 = (k + 1) % 4, i0 = 4 + k, i1 = 4 + (k + 1) % 4;
+        const lh_index tri[2][3] = {{o0, o1, i1}, {o0, i1, i0}};
+        for (int j = 0; j < 2; j++) {
+            add_tet(&m, tri[j][0], tri[j][1], tri[j][2], 8);
+            memcpy(m.faces + 3 * m.nf, tri[j], sizeof tri[j]);
+            m.par[m.nf++] = 0;
+        }
+        m.edges[2 * m.ne] = o0, m.edges[2 * m.ne++ + 1] = o1;
+        m.edges[2 * m.ne] = i0, m.edges[2 * m.ne++ + 1] = i1;
+    }
+    for (lh_index i = 0; i < 8; i++) m.polygon_vertices[i] = i;
+    m.facet_first[1] = 2, m.polygon_first[1] = 4, m.polygon_first[2] = 8;
+    lh_index hole_first[2] = {0, 1};
+    double hole[3] = {1.5, 1.5, 0};
+    lh_plc *g = &m.g;
+    g->n = 8, g->xyz = m.xyz, g->facet_count = 1, g->polygon_count = 2;
+    g->facet_first = m.facet_first, g->polygon_first = m.polygon_first;
+    g->polygon_vertices = m.polygon_vertices;
+    g->facet_hole_first = hole_first, g->facet_holes = hole;
+    expect_ok(lh_t_, &m, m.par, 1, g);
+    expect_ok(lh_t_, &m, NULL, 1, g);
+    g->facet_hole_first = NULL;
+    expect_msg(lh_t_, &m, m.par, 1, g,
+               "facet 0 is not covered: its 8 subfaces' area is smaller than the facet's");
+}
+
 LH_TEST(delaunay_meshes_pass)
 {
     uint64_t s = 0x9e3779b97f4a7c15u;
@@ -562,6 +600,7 @@ int main(int argc, char **argv)
         LH_CASE(boxes_pass), LH_CASE(tet_faults), LH_CASE(overlapping_tets),
         LH_CASE(edge_winding), LH_CASE(subface_and_subsegment_faults), LH_CASE(conformity_faults),
         LH_CASE(facet_border_fault), LH_CASE(rounded_steiner_point_counted), LH_CASE(facet_steiner_point),
+        LH_CASE(facet_with_hole),
         LH_CASE(delaunay_meshes_pass), LH_CASE(arguments), LH_CASE(allocation_failures)};
     int rc = lh_test_main(cases, LH_COUNT(cases), argc, argv);
     lh_pred_free(pred());
