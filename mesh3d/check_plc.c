@@ -18,7 +18,8 @@
  * and (b) cannot see; docs/meshing3d.md, "Checking a mesh").
  * Points not exactly in F's plane (or on a segment's line) are accepted when they
  * are Steiner points (index >= g->n) within rounding's reach of it (reach()), and
- * counted once each in off_exact.
+ * counted once each in off_exact; a facet with such a point among its subfaces'
+ * is held to (b) only, since rounding moves its area.
  */
 #include "check.h"
 
@@ -544,8 +545,13 @@ static lh_status facet_area(pchk *k, size_t f)
     const lh_index *pl = k->plane + 3 * f, *list = k->flist + k->ffirst[f];
     const size_t cnt = k->ffirst[f + 1] - k->ffirst[f];
     const int axis = k->axis[f];
+    /* No subface at all: the facet lies outside the mesh (between a hole and the
+       outside, as TetGen's example.poly's windows), which a facet may. */
+    if (cnt == 0) return LH_OK;
+    int rounded = 0; /* a subface has a point off its line or plane up to rounding */
     for (size_t i = 0; i < cnt; i++) {
         const size_t s = (size_t)list[i];
+        for (int j = 0; j < 3; j++) rounded |= k->c->off[k->c->faces[3 * s + j]] != 0;
         for (int j = 0; k->planar[f] && j < 3; j++) {
             const lh_index v = k->c->faces[3 * s + j];
             if (orient3i(k, pl[0], pl[1], pl[2], v) == 0) continue;
@@ -554,13 +560,19 @@ static lh_status facet_area(pchk *k, size_t f)
                             lh__tchk_pt(k->c, pl[2]), lh__tchk_pt(k->c, v)))
                 return not_covered(k, f, "a Steiner point off its plane beyond rounding", s);
             mark_off(k, v);
+            rounded = 1;
         }
         double q[3][2];
         face_proj(k, s, axis, q);
         const double *p[3] = {q[0], q[1], q[2]};
-        const int o = lh_orient(k->c->pr, 2, p);
-        if (o == 0) return not_covered(k, f, "a subface without area in its plane", s);
-        lh__detsum_add(k->c->pr, k->sum, p, o < 0);
+        if (lh_orient(k->c->pr, 2, p) == 0) return not_covered(k, f, "a subface without area in its plane", s);
+    }
+    if (rounded) return LH_OK; /* (b) only: rounding moved the area */
+    for (size_t i = 0; i < cnt; i++) {
+        double q[3][2];
+        face_proj(k, (size_t)list[i], axis, q);
+        const double *p[3] = {q[0], q[1], q[2]};
+        lh__detsum_add(k->c->pr, k->sum, p, lh_orient(k->c->pr, 2, p) < 0);
     }
     const lh_plc *g = k->g;
     for (size_t pg = (size_t)g->facet_first[f]; pg < (size_t)g->facet_first[f + 1]; pg++) {
