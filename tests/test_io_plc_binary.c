@@ -405,6 +405,37 @@ LH_TEST(stl_ascii)
     }
 }
 
+/* An ascii STL longer than the 4 KiB read ahead whose name is 120 bytes of UTF-8: still
+ * ascii (bytes above 0x7e count only after the first line). */
+LH_TEST(stl_ascii_long_utf8_name)
+{
+    bytes o;
+    lh_plc g;
+    char msg[300];
+    o.n = 0;
+    put_str(&o, "solid ");
+    for (int i = 0; i < 60; i++) put_str(&o, "\xc3\xa9"); /* U+00E9 */
+    put_str(&o, "\n");
+    for (int t = 0; t < 60; t++) {
+        char line[200];
+        put_str(&o, "facet normal 0 0 1\n outer loop\n");
+        for (int k = 0; k < 3; k++) {
+            snprintf(line, sizeof line, "  vertex %.17g %.17g %.17g\n", (double)stl_c[t % 3][3 * k],
+                     (double)stl_c[t % 3][3 * k + 1], (double)stl_c[t % 3][3 * k + 2]);
+            put_str(&o, line);
+        }
+        put_str(&o, " endloop\nendfacet\n");
+    }
+    put_str(&o, "endsolid\n");
+    LH_ASSERT_TRUE(o.n > 4096);
+    LH_ASSERT_EQ_INT(rd("long.stl", o.b, o.n, 1, &g, msg), LH_OK);
+    LH_EXPECT_STREQ(msg, "");
+    LH_EXPECT_EQ_U64(g.n, 4);
+    LH_EXPECT_EQ_U64(g.facet_count, 60);
+    for (size_t i = 0; i < 12; i++) LH_EXPECT_EQ_DBL(g.xyz[i], stl_xyz[i]);
+    lh_plc_free(&g);
+}
+
 LH_TEST(stl_binary)
 {
     static const size_t pline[] = {1, 1, 1, 2}, fline[] = {1, 2, 3};
@@ -542,7 +573,7 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(ply_ascii),        LH_CASE(ply_binary_both_orders), LH_CASE(ply_ascii_errors),
-        LH_CASE(ply_binary_errors), LH_CASE(stl_ascii),             LH_CASE(stl_binary),
+        LH_CASE(ply_binary_errors), LH_CASE(stl_ascii),             LH_CASE(stl_ascii_long_utf8_name), LH_CASE(stl_binary),
         LH_CASE(stl_ascii_errors), LH_CASE(stl_binary_errors),      LH_CASE(sphere_files)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }
