@@ -54,8 +54,8 @@ lh_status lh__plc_record_fail(lh__scan *s, lh_status st, const lh__token *t, con
     if (!t) return lh__error_say(s->err, st, "%s: %s %zu: %s", s->name, what, n, text);
     s->err->line = t->line;
     s->err->column = t->col;
-    return lh__error_say(s->err, st, "%s:%zu:%zu: %s %zu: %s", s->name, t->line, t->col, what,
-                         n, text);
+    return lh__error_say(s->err, st, "%s:%zu:%zu: %s %zu: %s", s->name, t->line, t->col, what, n,
+                         text);
 }
 
 lh_status lh__plc_record_end(lh__scan *s, const lh__token *t, const char *what, size_t n,

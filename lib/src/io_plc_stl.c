@@ -25,10 +25,11 @@
  * STL repeats each corner in every triangle: corners with the same coordinates (as
  * doubles; -0.0 and 0.0 are one, kept as 0.0) are merged exactly, with a hash table,
  * into one point, numbered in the order of first appearance; each triangle is a facet
- * of one polygon (marker 0). A triangle with two equal corners is kept as read: it is the mesher's to
- * report. Triangles are numbered from 1 in messages ("NAME:LINE:COL: ..." in ascii,
- * "NAME: triangle 5: ..." in binary); point_line and facet_line hold the line (ascii)
- * or the triangle's number (binary). A file of no triangle is an error.
+ * of one polygon (marker 0). A triangle with two equal corners is kept as read: it is
+ * the mesher's to report. Triangles are numbered from 1 in messages ("NAME:LINE:COL:
+ * ..." in ascii, "NAME: triangle 5: ..." in binary); point_line and facet_line hold
+ * the line (ascii) or the triangle's number (binary). A file of no triangle is an
+ * error.
  */
 #include "io_plc.h"
 
@@ -204,9 +205,11 @@ static lh_status read_binary(stl *r, size_t bom)
         return s->read_error ? lh__error_say(s->err, LH_ERR_IO, "%s: read error", s->name)
                              : lh__error_say(s->err, LH_ERR_PARSE,
                                              "%s: the input ends inside the 84-byte header of a "
-                                             "binary STL file", s->name);
+                                             "binary STL file",
+                                             s->name);
     size_t count = (size_t)lh__plc_unpack(rec, 4, 0);
-    if (count == 0) return lh__error_say(s->err, LH_ERR_PARSE, "%s: no triangle in the file", s->name);
+    if (count == 0)
+        return lh__error_say(s->err, LH_ERR_PARSE, "%s: no triangle in the file", s->name);
     for (size_t n = 1; n <= count; n++) {
         double c[9];
         if (!lh__plc_bytes(s, rec, 50))
@@ -216,7 +219,8 @@ static lh_status read_binary(stl *r, size_t bom)
             if (!isfinite(c[i]))
                 return lh__plc_record_fail(s, LH_ERR_NONFINITE, NULL, "triangle", n,
                                            "%c of corner %d is %g: NaN and infinities are not "
-                                           "points", "xyz"[i % 3], i / 3 + 1, c[i]);
+                                           "points",
+                                           "xyz"[i % 3], i / 3 + 1, c[i]);
         }
         lh_status st = triangle(r, c, n, n, NULL);
         if (st != LH_OK) return st;
