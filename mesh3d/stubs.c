@@ -2,14 +2,6 @@
  * own file). */
 #include "t3.h"
 
-lh_status lh_plc_intersections(const lh_plc *g, const lh_allocator *alloc, size_t cap,
-                               lh_index *pairs, size_t *count, lh_error *err)
-{
-    (void)g; (void)alloc; (void)cap; (void)pairs;
-    if (count) *count = 0;
-    return lh__error_say(err, LH_ERR_INVALID_ARGUMENT, "lh_plc_intersections: not written yet");
-}
-
 lh_status lh_tetmesh_check(size_t n, const double *xyz, size_t tet_count, const lh_index *tets,
                            size_t face_count, const lh_index *faces, const lh_index *face_parents,
                            size_t edge_count, const lh_index *edges, int boundary_free,
