@@ -5,6 +5,10 @@
  * 1. Every facet is triangulated in its plane (facets.h), with no new point.
  * 2. Points of equal coordinates are one point: each gets the smallest index among
  *    its equals, so that triangles sharing a corner are recognised by index.
+ * 2b. Identical triangles (the same three corners) form a group, represented by its
+ *    first: members of a group all overlap one another, and meet a triangle exactly
+ *    when their representative does, so only representatives are compared (10^6
+ *    copies of one triangle cost one test, not 5 10^11).
  * 3. Candidate pairs from a uniform grid over the triangles' bounding boxes, cells
  *    as large as the mean box's largest side: an entry (cell, triangle) for each
  *    cell a box overlaps, radix-sorted by cell, so only occupied cells cost memory
@@ -14,7 +18,10 @@
  * 4. Each pair of triangles of different facets whose boxes overlap is tested exactly
  *    (intersect.h): they intersect when they meet other than in the corners they
  *    share. Triangles of one facet are never compared.
- * 5. The facet pairs of intersecting triangles are sorted and made unique.
+ * 5. The facet pairs of intersecting triangles are sorted and made unique. When every
+ *    facet is one triangle (surface formats), facet pairs are triangle pairs, all
+ *    distinct: they are counted from the groups' sizes and only the first `cap` are
+ *    listed, facet by facet, so copies cost time in what is written only.
  */
 #include "facets.h"
 #include "intersect.h"
@@ -32,15 +39,20 @@ typedef struct isect {
     const lh_allocator *al;
     lh_pred *pred;
     lh__facet_tris ft;
-    lh_index *rep;          /* g->n: the smallest index of a point of equal coordinates */
-    double *box;            /* 6 per triangle: min x y z, max x y z                     */
-    size_t *clo;            /* 3 per triangle: the cell of its box's min corner          */
-    double lo[3], h;        /* the grid's origin and cell size                         */
-    size_t dim[3];          /* cells along each axis                                   */
-    size_t nent;            /* entries: (cell, triangle) for each cell a box overlaps   */
-    uint64_t *key;          /* nent cell numbers, sorted                                */
-    lh_index *item;         /* nent triangles, in the order of key                      */
-    lh_index *pairs;        /* 2 per facet pair found (with repeats until step 5)      */
+    lh_index *rep;    /* g->n: the smallest index of a point of equal coordinates */
+    double *box;      /* 6 per triangle: min x y z, max x y z                     */
+    size_t *clo;      /* 3 per triangle: the cell of its box's min corner          */
+    double lo[3], h;  /* the grid's origin and cell size                         */
+    size_t dim[3];    /* cells along each axis                                   */
+    size_t nent;      /* entries: (cell, triangle) for each cell a box overlaps   */
+    uint64_t *key;    /* nent cell numbers, sorted                                */
+    lh_index *item;   /* nent triangles, in the order of key                      */
+    size_t ng;        /* groups of identical triangles                           */
+    lh_index *gid;    /* per triangle: its group                                 */
+    lh_index *gmem;   /* the triangles by group, ascending within one            */
+    lh_index *gfirst; /* ng + 1 offsets into gmem; a group's first: its
+                               representative                                       */
+    lh_index *pairs;  /* 2 per pair found: groups (step 4), then facets (step 5) */
     size_t npairs, pairs_cap;
 } isect;
 
@@ -52,6 +64,9 @@ static void isect_free(isect *s)
     lh__free(s->al, s->clo);
     lh__free(s->al, s->key);
     lh__free(s->al, s->item);
+    lh__free(s->al, s->gid);
+    lh__free(s->al, s->gmem);
+    lh__free(s->al, s->gfirst);
     lh__free(s->al, s->pairs);
     lh_pred_free(s->pred);
 }
@@ -83,13 +98,57 @@ static lh_status merge_equal_points(isect *s)
     for (size_t i = 0; i < n; i++) s->rep[i] = (lh_index)i;
     lh__sort_idx(s->rep, tmp, n, cmp_point, s->g->xyz); /* stable: equals by index */
     for (size_t i = 0, j; i < n; i = j) {
-        for (j = i + 1; j < n && !cmp_point(s->g->xyz, s->rep[i], s->rep[j]); j++) {}
+        for (j = i + 1; j < n && !cmp_point(s->g->xyz, s->rep[i], s->rep[j]); j++) {
+        }
         for (size_t k = i; k < j; k++) tmp[s->rep[k]] = s->rep[i];
     }
     lh__free(s->al, s->rep);
     s->rep = tmp;
     for (size_t t = 0; t < 3 * s->ft.count; t++) s->ft.tri[t] = s->rep[s->ft.tri[t]];
     return LH_OK;
+}
+
+/* Step 2b: groups of triangles with the same corners (sorted triples compared). */
+static lh_status group_identical(isect *s)
+{
+    const size_t tc = s->ft.count;
+    lh_index *key = alloc_n(s->al, 3 * tc, sizeof(lh_index)),
+             *tmp = alloc_n(s->al, tc, sizeof(lh_index));
+    s->gid = alloc_n(s->al, tc, sizeof(lh_index));
+    s->gmem = alloc_n(s->al, tc, sizeof(lh_index));
+    s->gfirst = alloc_n(s->al, tc + 1, sizeof(lh_index));
+    lh_status st = key && tmp && s->gid && s->gmem && s->gfirst ? LH_OK : LH_ERR_NOMEM;
+    for (size_t t = 0; t < tc && st == LH_OK; t++) {
+        lh_index *k = key + 3 * t, x;
+        memcpy(k, s->ft.tri + 3 * t, 3 * sizeof(lh_index));
+        if (k[0] > k[1]) x = k[0], k[0] = k[1], k[1] = x;
+        if (k[1] > k[2]) x = k[1], k[1] = k[2], k[2] = x;
+        if (k[0] > k[1]) x = k[0], k[0] = k[1], k[1] = x;
+        s->gmem[t] = (lh_index)t;
+    }
+    if (st == LH_OK) {
+        const lh__rows rows = {key, 3, 3};
+        lh__sort_idx(s->gmem, tmp, tc, lh__rows_cmp, &rows); /* stable: ascending in a group */
+        s->ng = 0;
+        for (size_t i = 0; i < tc; i++) {
+            if (!i || lh__rows_cmp(&rows, s->gmem[i - 1], s->gmem[i]))
+                s->gfirst[s->ng++] = (lh_index)i;
+            s->gid[s->gmem[i]] = (lh_index)(s->ng - 1);
+        }
+        s->gfirst[s->ng] = (lh_index)tc;
+    }
+    lh__free(s->al, key), lh__free(s->al, tmp);
+    return st;
+}
+
+static size_t group_size(const isect *s, lh_index g)
+{
+    return (size_t)(s->gfirst[g + 1] - s->gfirst[g]);
+}
+
+static int is_representative(const isect *s, size_t t)
+{
+    return s->gmem[s->gfirst[s->gid[t]]] == (lh_index)t;
 }
 
 /* ---- step 3: the grid ------------------------------------------------------------- */
@@ -154,12 +213,13 @@ static uint64_t cell_key(const isect *s, size_t x, size_t y, size_t z)
     return ((uint64_t)x * s->dim[1] + y) * s->dim[2] + z;
 }
 
-/* Counts (fill 0; stopping past limit) or lists (fill 1) each triangle in every cell
- * its box overlaps; records the first of them in clo. */
+/* Counts (fill 0; stopping past limit) or lists (fill 1) each representative in
+ * every cell its box overlaps; records the first of them in clo. */
 static void grid_pass(isect *s, int fill, size_t limit)
 {
     size_t e = 0;
     for (size_t t = 0; t < s->ft.count; t++) {
+        if (!is_representative(s, t)) continue;
         size_t *lo = s->clo + 3 * t, hi[3];
         cell_range(s, t, lo, hi);
         if (!fill) {
@@ -287,21 +347,24 @@ static lh_status add_pair(isect *s, lh_index f, lh_index h)
     return LH_OK;
 }
 
-/* The pairs of the cell whose entries are e0 .. e1-1, tested here. */
+/* The pairs of the cell whose entries are e0 .. e1-1 tested here; the groups of
+ * those that meet recorded. Representatives of one facet are compared when a group
+ * has other members (their facets may differ). */
 static lh_status scan_cell(isect *s, size_t e0, size_t e1)
 {
     const uint64_t key = s->key[e0];
-    const size_t cell[3] = {(size_t)(key / s->dim[2] / s->dim[1]), (size_t)(key / s->dim[2] % s->dim[1]),
-                            (size_t)(key % s->dim[2])};
+    const size_t cell[3] = {(size_t)(key / s->dim[2] / s->dim[1]),
+                            (size_t)(key / s->dim[2] % s->dim[1]), (size_t)(key % s->dim[2])};
     for (size_t i = e0; i < e1; i++) {
         const size_t t = (size_t)s->item[i];
         for (size_t j = i + 1; j < e1; j++) {
             const size_t u = (size_t)s->item[j];
-            const lh_index f = s->ft.facet[t], h = s->ft.facet[u];
-            if (f == h || !boxes_overlap(s->box + 6 * t, s->box + 6 * u) ||
+            const int alone = group_size(s, s->gid[t]) == 1 && group_size(s, s->gid[u]) == 1;
+            if ((alone && s->ft.facet[t] == s->ft.facet[u]) ||
+                !boxes_overlap(s->box + 6 * t, s->box + 6 * u) ||
                 !first_common_cell(s, t, u, cell) || !triangles_meet(s, t, u))
                 continue;
-            lh_status st = add_pair(s, f, h);
+            lh_status st = add_pair(s, s->gid[t], s->gid[u]);
             if (st != LH_OK) return st;
         }
     }
@@ -311,15 +374,15 @@ static lh_status scan_cell(isect *s, size_t e0, size_t e1)
 static lh_status scan(isect *s)
 {
     for (size_t e0 = 0, e1; e0 < s->nent; e0 = e1) {
-        for (e1 = e0 + 1; e1 < s->nent && s->key[e1] == s->key[e0]; e1++) {}
+        for (e1 = e0 + 1; e1 < s->nent && s->key[e1] == s->key[e0]; e1++) {
+        }
         lh_status st = scan_cell(s, e0, e1);
         if (st != LH_OK) return st;
     }
     return LH_OK;
 }
 
-/* ---- step 5: unique pairs --------------------------------------------------------- */
-
+/* Sorts s->pairs and drops repeats; *count their number. */
 static lh_status unique_pairs(isect *s, size_t *count)
 {
     const size_t n = s->npairs;
@@ -344,6 +407,96 @@ static lh_status unique_pairs(isect *s, size_t *count)
     return LH_OK;
 }
 
+/* ---- step 5: facet pairs ------------------------------------------------------ */
+
+/* Facet pairs of the members of groups a and b (a == b: of one group), facets
+ * differing. */
+static lh_status add_member_pairs(isect *s, lh_index a, lh_index b)
+{
+    for (lh_index i = s->gfirst[a]; i < s->gfirst[a + 1]; i++)
+        for (lh_index j = a == b ? i + 1 : s->gfirst[b]; j < s->gfirst[b + 1]; j++) {
+            const lh_index f = s->ft.facet[s->gmem[i]], h = s->ft.facet[s->gmem[j]];
+            lh_status st = f == h ? LH_OK : add_pair(s, f, h);
+            if (st != LH_OK) return st;
+        }
+    return LH_OK;
+}
+
+/* The general case: the group pairs expanded to facet pairs, sorted, unique. */
+static lh_status facet_pairs(isect *s, size_t *count)
+{
+    lh_index *gp = s->pairs;
+    const size_t ngp = s->npairs;
+    s->pairs = NULL, s->npairs = s->pairs_cap = 0;
+    lh_status st = LH_OK;
+    for (size_t g = 0; g < s->ng && st == LH_OK; g++)
+        if (group_size(s, (lh_index)g) > 1) st = add_member_pairs(s, (lh_index)g, (lh_index)g);
+    for (size_t i = 0; i < ngp && st == LH_OK; i++)
+        st = add_member_pairs(s, gp[2 * i], gp[2 * i + 1]);
+    lh__free(s->al, gp);
+    return st == LH_OK ? unique_pairs(s, count) : st;
+}
+
+static int cmp_value(const void *ctx, lh_index a, lh_index b)
+{
+    (void)ctx;
+    return (a > b) - (a < b);
+}
+
+/* Every facet one triangle (triangle t is facet t): the pairs are the members of
+ * each group among themselves and of each meeting group pair, all distinct, so
+ * counted from the sizes; the first cap written facet by facet, each facet's
+ * partners (greater than it) sorted. adj: the meeting groups of each group (CSR). */
+static lh_status triangle_pairs(isect *s, const lh_index *adj_first, const lh_index *adj,
+                                size_t cap, lh_index *out, size_t *count)
+{
+    size_t n = 0, w = 0;
+    for (size_t g = 0; g < s->ng; g++)
+        n += group_size(s, (lh_index)g) * (group_size(s, (lh_index)g) - 1) / 2;
+    for (size_t i = 0; i < s->npairs; i++)
+        n += group_size(s, s->pairs[2 * i]) * group_size(s, s->pairs[2 * i + 1]);
+    *count = n;
+    lh_index *buf = alloc_n(s->al, s->ft.count, sizeof(lh_index)),
+             *tmp = alloc_n(s->al, s->ft.count, sizeof(lh_index));
+    if (!buf || !tmp) {
+        lh__free(s->al, buf), lh__free(s->al, tmp);
+        return LH_ERR_NOMEM;
+    }
+    for (size_t f = 0; f < s->ft.count && w < cap && w < n; f++) {
+        const lh_index g = s->gid[f];
+        size_t m = 0;
+        for (lh_index a = adj_first[g] - 1; a < adj_first[g + 1]; a++) { /* -1: g itself */
+            const lh_index h = a < adj_first[g] ? g : adj[a];
+            for (lh_index i = s->gfirst[h]; i < s->gfirst[h + 1]; i++)
+                if ((size_t)s->gmem[i] > f) buf[m++] = s->gmem[i];
+        }
+        lh__sort_idx(buf, tmp, m, cmp_value, NULL);
+        for (size_t i = 0; i < m && w < cap; i++, w++)
+            out[2 * w] = (lh_index)f, out[2 * w + 1] = buf[i];
+    }
+    lh__free(s->al, buf), lh__free(s->al, tmp);
+    return LH_OK;
+}
+
+/* The meeting group pairs as adjacency lists, then triangle_pairs. */
+static lh_status triangle_pairs_adj(isect *s, size_t cap, lh_index *out, size_t *count)
+{
+    lh_index *first = alloc_n(s->al, s->ng + 1, sizeof(lh_index));
+    lh_index *adj = alloc_n(s->al, 2 * s->npairs, sizeof(lh_index));
+    lh_status st = first && adj ? LH_OK : LH_ERR_NOMEM;
+    if (st == LH_OK) {
+        memset(first, 0, (s->ng + 1) * sizeof(lh_index));
+        for (size_t i = 0; i < 2 * s->npairs; i++) first[s->pairs[i] + 1]++;
+        for (size_t g = 0; g < s->ng; g++) first[g + 1] += first[g];
+        for (size_t i = 0; i < 2 * s->npairs; i++) adj[first[s->pairs[i]]++] = s->pairs[i ^ 1];
+        memmove(first + 1, first, s->ng * sizeof(lh_index)); /* back to the starts */
+        first[0] = 0;
+        st = triangle_pairs(s, first, adj, cap, out, count);
+    }
+    lh__free(s->al, first), lh__free(s->al, adj);
+    return st;
+}
+
 lh_status lh_plc_intersections(const lh_plc *g, const lh_allocator *alloc, size_t cap,
                                lh_index *pairs, size_t *count, lh_error *err)
 {
@@ -359,14 +512,16 @@ lh_status lh_plc_intersections(const lh_plc *g, const lh_allocator *alloc, size_
     if (st == LH_OK) st = lh_pred_create(&al, &s.pred);
     if (st == LH_OK) st = merge_equal_points(&s);
     if (st == LH_OK && s.ft.count > 1) {
-        st = grid_build(&s);
+        const int one_each = s.ft.count == g->facet_count; /* every facet one triangle */
+        st = group_identical(&s);
+        if (st == LH_OK) st = grid_build(&s);
         if (st == LH_OK) st = scan(&s);
-        if (st == LH_OK) st = unique_pairs(&s, count);
-    }
-    if (st == LH_OK) {
+        if (st == LH_OK && one_each) st = triangle_pairs_adj(&s, cap, pairs, count);
+        if (st == LH_OK && !one_each) st = facet_pairs(&s, count);
         const size_t w = *count < cap ? *count : cap;
-        if (w) memcpy(pairs, s.pairs, 2 * w * sizeof(lh_index));
+        if (st == LH_OK && !one_each && w) memcpy(pairs, s.pairs, 2 * w * sizeof(lh_index));
     }
+    if (st != LH_OK) *count = 0;
     isect_free(&s);
     return lh__error_done(err, st);
 }

@@ -128,8 +128,7 @@ static int disjoint_meet(lh_pred *pr, const pt3 a[3], const pt3 b[3])
     if (!sb[0] && !sb[1] && !sb[2]) return tri_tri2(pr, flat_axis(pr, a), a, b);
     if (one_side(pr, b, a, 0, sa)) return 0;
     for (int i = 0; i < 3; i++)
-        if (seg_tri(pr, a[i], a[(i + 1) % 3], b) || seg_tri(pr, b[i], b[(i + 1) % 3], a))
-            return 1;
+        if (seg_tri(pr, a[i], a[(i + 1) % 3], b) || seg_tri(pr, b[i], b[(i + 1) % 3], a)) return 1;
     return 0;
 }
 

@@ -113,8 +113,9 @@ LH_TEST(cubes_sharing_an_edge)
     LH_EXPECT_GT_U64(n, 0);
     for (size_t i = 0; i < n && i < 8; i++) {
         LH_EXPECT_TRUE(got[2 * i] < 6 && got[2 * i + 1] >= 6);
-        if (i) LH_EXPECT_TRUE(got[2 * i - 2] < got[2 * i] ||
-                              (got[2 * i - 2] == got[2 * i] && got[2 * i - 1] < got[2 * i + 1]));
+        if (i)
+            LH_EXPECT_TRUE(got[2 * i - 2] < got[2 * i] ||
+                           (got[2 * i - 2] == got[2 * i] && got[2 * i - 1] < got[2 * i + 1]));
     }
     LH_EXPECT_EQ_INT(got[0], 0);
 }
@@ -155,7 +156,8 @@ LH_TEST(pairs_unique_sorted_and_capped)
                              {0, 0, 0.5, 4, 0, 0.5, 4, 4, 0.5, 0, 4, 0.5}};
     for (int f = 3; f >= 0; f--) { /* facet 0 is q[3] */
         lh_index v[4];
-        for (int i = 0; i < 4; i++) v[i] = tplc_point(&b, q[f][3 * i], q[f][3 * i + 1], q[f][3 * i + 2]);
+        for (int i = 0; i < 4; i++)
+            v[i] = tplc_point(&b, q[f][3 * i], q[f][3 * i + 1], q[f][3 * i + 2]);
         tplc_face(&b, 4, v);
     }
     lh_index got[16];
@@ -172,6 +174,34 @@ LH_TEST(pairs_unique_sorted_and_capped)
     LH_EXPECT_EQ_U64(count, 5);
 }
 
+/* 1000 copies of one triangle (facets 0..999) and one triangle crossing it: every
+ * pair intersects, counted without testing each; the first pairs listed. */
+LH_TEST(identical_copies)
+{
+    static tplc b;
+    tplc_init(&b);
+    tplc_point(&b, 0, 0, 0), tplc_point(&b, 4, 0, 0), tplc_point(&b, 0, 4, 0);
+    for (int i = 0; i < 1000; i++) tplc_face(&b, 3, (lh_index[]){i % 3, (i + 1) % 3, (i + 2) % 3});
+    tri(&b, (double[]){1, 1, -1, 1, 1, 1, 3, -1, 0});
+    lh_index got[16];
+    LH_EXPECT_EQ_U64(pairs_of(lh_t_, &b, got), 1000 * 999 / 2 + 1000);
+    for (int i = 0; i < 8; i++)
+        LH_EXPECT_EQ_INT(got[2 * i], 0), LH_EXPECT_EQ_INT(got[2 * i + 1], i + 1);
+    size_t count = 0;
+    lh_index last[2 * 1001];
+    LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, NULL, 1001, last, &count, NULL), LH_OK);
+    LH_EXPECT_EQ_INT(last[2 * 999], 0), LH_EXPECT_EQ_INT(last[2 * 999 + 1], 1000);
+    LH_EXPECT_EQ_INT(last[2 * 1000], 1), LH_EXPECT_EQ_INT(last[2 * 1000 + 1], 2);
+    /* 30 copies of a quad facet (two triangles each): each pair once */
+    tplc_init(&b);
+    tplc_point(&b, 0, 0, 0), tplc_point(&b, 4, 0, 0), tplc_point(&b, 4, 4, 0),
+        tplc_point(&b, 0, 4, 0);
+    for (int i = 0; i < 30; i++) tplc_face(&b, 4, (lh_index[]){0, 1, 2, 3});
+    LH_EXPECT_EQ_U64(pairs_of(lh_t_, &b, got), 30 * 29 / 2);
+    for (int i = 0; i < 8; i++)
+        LH_EXPECT_EQ_INT(got[2 * i], 0), LH_EXPECT_EQ_INT(got[2 * i + 1], i + 1);
+}
+
 LH_TEST(refusals)
 {
     tplc b;
@@ -184,11 +214,15 @@ LH_TEST(refusals)
     LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, NULL, 1, p, &count, &err), LH_ERR_DEGENERATE);
     LH_EXPECT_STREQ(err.message, "facet 1: its points are all collinear (zero area)");
     LH_EXPECT_EQ_U64(count, 0);
-    LH_EXPECT_EQ_INT(lh_plc_intersections(NULL, NULL, 0, NULL, &count, &err), LH_ERR_INVALID_ARGUMENT);
-    LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, NULL, 0, NULL, NULL, &err), LH_ERR_INVALID_ARGUMENT);
-    LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, NULL, 1, NULL, &count, &err), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_plc_intersections(NULL, NULL, 0, NULL, &count, &err),
+                     LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, NULL, 0, NULL, NULL, &err),
+                     LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, NULL, 1, NULL, &count, &err),
+                     LH_ERR_INVALID_ARGUMENT);
     lh_allocator bad = {NULL, NULL, NULL};
-    LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, &bad, 0, NULL, &count, &err), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, &bad, 0, NULL, &count, &err),
+                     LH_ERR_INVALID_ARGUMENT);
     b.xyz[0] = INFINITY;
     LH_EXPECT_EQ_INT(lh_plc_intersections(&b.g, NULL, 0, NULL, &count, &err), LH_ERR_NONFINITE);
     tplc_init(&b); /* no facet, or one: nothing to intersect */
@@ -244,7 +278,8 @@ static size_t brute_force(lh_pred *pr, const tplc *b, lh_index *out)
                 if (!ua[i]) x[na++] = a[i];
                 if (!used[i]) y[nc++] = c[i];
             }
-            if (lh__tri_tri_meet(pr, x, y, shared)) out[2 * m] = (lh_index)f, out[2 * m + 1] = (lh_index)h, m++;
+            if (lh__tri_tri_meet(pr, x, y, shared))
+                out[2 * m] = (lh_index)f, out[2 * m + 1] = (lh_index)h, m++;
         }
     return m;
 }
@@ -328,11 +363,12 @@ LH_TEST(allocation_failures)
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
-        LH_CASE(crossing_and_disjoint),   LH_CASE(shared_corners_only),
-        LH_CASE(vertex_inside_or_on_edge), LH_CASE(cubes_sharing_an_edge),
-        LH_CASE(schonhardt_prism),        LH_CASE(pairs_unique_sorted_and_capped),
-        LH_CASE(refusals),                LH_CASE(grid_agrees_with_all_pairs),
-        LH_CASE(triangle_test_symmetric), LH_CASE(allocation_failures),
+        LH_CASE(crossing_and_disjoint),      LH_CASE(shared_corners_only),
+        LH_CASE(vertex_inside_or_on_edge),   LH_CASE(cubes_sharing_an_edge),
+        LH_CASE(schonhardt_prism),           LH_CASE(pairs_unique_sorted_and_capped),
+        LH_CASE(identical_copies),           LH_CASE(refusals),
+        LH_CASE(grid_agrees_with_all_pairs), LH_CASE(triangle_test_symmetric),
+        LH_CASE(allocation_failures),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -29,7 +29,10 @@ static uint64_t next()
     return state;
 }
 
-static K::Point_3 pt(const double *p) { return K::Point_3(p[0], p[1], p[2]); }
+static K::Point_3 pt(const double *p)
+{
+    return K::Point_3(p[0], p[1], p[2]);
+}
 
 // CGAL's verdict: the intersection is more than the s corners shared (sh).
 static int expected(const double A[3][3], const double B[3][3], int s, const double *sh[2])
@@ -91,8 +94,8 @@ int main(int argc, char **argv)
                 std::printf("mismatch (shared %d): lifthull %d, CGAL %d; A %g %g %g, %g %g %g, "
                             "%g %g %g; B %g %g %g, %g %g %g, %g %g %g\n",
                             s, got, want, A[0][0], A[0][1], A[0][2], A[1][0], A[1][1], A[1][2],
-                            A[2][0], A[2][1], A[2][2], B[0][0], B[0][1], B[0][2], B[1][0],
-                            B[1][1], B[1][2], B[2][0], B[2][1], B[2][2]);
+                            A[2][0], A[2][1], A[2][2], B[0][0], B[0][1], B[0][2], B[1][0], B[1][1],
+                            B[1][2], B[2][0], B[2][1], B[2][2]);
         }
         std::printf("lattice %d: shared 0: %ld pairs (%ld intersect), 1: %ld (%ld), 2: %ld (%ld), "
                     "3: %ld\n",
