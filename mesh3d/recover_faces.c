@@ -195,8 +195,8 @@ static lh_status face_records(t3_ctx *c, size_t k, patch_scan *ps, size_t *count
         for (lh_index q = c->star_first[v]; q < c->star_first[v + 1]; q++) {
             const lh_index *t = s + 4 * (size_t)c->star[q];
             for (int o = 0; o < 4; o++) { /* the face opposite corner o, from its
-                                             smallest point */
-                lh_index f[4], w = 0, ok = 1;
+                                             smallest point v, once per tet */
+                lh_index f[4], w = 0, ok = t[o] != v;
                 for (int j = 0; j < 4; j++)
                     if (j != o) f[w++] = t[j], ok &= c->stamp[t[j]] >= 1 && t[j] >= v;
                 if (!ok) continue;
