@@ -6,6 +6,7 @@
 #include "lh_test.h"
 #include "lifthull.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -338,11 +339,45 @@ LH_TEST(a_million_copies_of_one_triangle)
     free(v), free(ff), free(pf);
 }
 
+/* Scaled by 2^200 or 2^-200 (exact), a model meshes to the scaled mesh: the same
+ * tets as sets, every coordinate times the factor. */
+LH_TEST(scale_does_not_matter)
+{
+    static const char *const files[] = {"mesh3d/u.off", "mesh3d/schonhardt.off", "mesh3d/mpi.off"};
+    for (size_t i = 0; i < LH_COUNT(files); i++) {
+        lh_plc g;
+        LH_ASSERT_TRUE(read_plc(files[i], &g));
+        lh_tetmesh *a = NULL;
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &a, NULL), LH_OK);
+        for (int e = -200; a && e <= 200; e += 400) {
+            for (size_t j = 0; j < 3 * g.n; j++) g.xyz[j] = ldexp(g.xyz[j], e);
+            lh_tetmesh *b = NULL;
+            LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &b, NULL), LH_OK);
+            for (size_t j = 0; j < 3 * g.n; j++) g.xyz[j] = ldexp(g.xyz[j], -e);
+            if (!b) continue;
+            size_t nt = lh_tetmesh_tet_count(a), np = lh_tetmesh_point_count(a);
+            LH_EXPECT_EQ_U64(lh_tetmesh_tet_count(b), nt);
+            LH_EXPECT_EQ_U64(lh_tetmesh_point_count(b), np);
+            if (lh_tetmesh_tet_count(b) == nt && lh_tetmesh_point_count(b) == np) {
+                double *x = (double *)lh_tetmesh_points(b); /* scaled back in place */
+                for (size_t j = 0; j < 3 * np; j++) x[j] = ldexp(x[j], -e);
+                double *ka = tet_keys(a), *kb = tet_keys(b);
+                LH_EXPECT_TRUE(memcmp(ka, kb, 12 * nt * sizeof(double)) == 0);
+                free(ka), free(kb);
+            }
+            lh_tetmesh_free(b);
+        }
+        lh_tetmesh_free(a);
+        lh_plc_free(&g);
+    }
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(models_mesh_and_conform), LH_CASE(output_does_not_depend_on_order),
         LH_CASE(bad_inputs_get_their_error), LH_CASE(steiner_limits),
-        LH_CASE(bad_plcs_get_their_error), LH_CASE(a_million_copies_of_one_triangle)};
+        LH_CASE(bad_plcs_get_their_error), LH_CASE(a_million_copies_of_one_triangle),
+        LH_CASE(scale_does_not_matter)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }
