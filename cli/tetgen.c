@@ -1,0 +1,381 @@
+/* tetgen.c — `lifthull tetgen`: Si's TetGen spelled the same way (switches, file
+ * names, formats), for scripts and fingers that know it:
+ *     lifthull tetgen -pA box.poly   ->  box.1.node box.1.ele box.1.face
+ * Computed by lh_tetrahedralize (exact). TetGen's switches whose meaning lifthull does
+ * not have yet are refused by name; those that choose TetGen's arithmetic or
+ * tolerances are accepted and change nothing (lifthull is always exact). */
+#include "cli.h"
+#include "outfile.h"
+#include "tetgen_io.h"
+
+#include <ctype.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct tsw {
+    int p, Y, c, A, f, e, n, k, g, z, B, N, E, F, I, Q, V, d, C, S;
+    int q, a; /* the quality switches, refused for now (their numbers kept) */
+    double ratio, angle, volume;
+    size_t steiner, d_limit;
+} tsw;
+
+static const char *const usage_text =
+    "usage: lifthull tetgen [-pYcAfenkgzBNEFIQVdSC] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
+    "\n"
+    "TetGen's command line (H. Si), computed exactly by lifthull: the same switches,\n"
+    "input and output files. FILE.poly / .smesh (TetGen's piecewise linear complexes),\n"
+    "a surface (.off, .ply, .stl ascii or binary, Medit .mesh, Wavefront .obj), or\n"
+    "FILE.node (points). Output: FILE.1.node, FILE.1.ele, FILE.1.face — from FILE.1.*\n"
+    "come FILE.2.* — replacing earlier outputs, never the input; all files or none.\n"
+    "\n"
+    "  -p      tetrahedralize the PLC: every facet a union of faces, every segment a\n"
+    "          union of edges (without -p: the Delaunay tetrahedralization of the points)\n"
+    "  -Y      no Steiner points on the boundary (segments and facets)\n"
+    "  -c      keep the convex hull (do not carve from the outside; holes still are)\n"
+    "  -A      region attributes: each tetrahedron gets its region's, in FILE.1.ele\n"
+    "  -S[N]   at most N Steiner points (more needed: an error)\n"
+    "  -f      FILE.1.face lists every face (default: the boundary and facet faces)\n"
+    "  -e      write FILE.1.edge: every edge, with its segment's marker (0: none)\n"
+    "  -n      write FILE.1.neigh;  -k FILE.1.vtk (legacy VTK);  -g FILE.1.mesh (Medit)\n"
+    "  -z      number everything from 0 (default: as the input, usually 1)\n"
+    "  -B      no boundary markers;  -N no .node;  -E no .ele;  -F no .face or .edge\n"
+    "  -I      no iteration number in the output names (FILE.node ...)\n"
+    "  -d[N]   list the pairs of facets that intersect (the first N), do not mesh;\n"
+    "          exit status 1 when there is one\n"
+    "  -C      check the mesh exactly (lh_tetmesh_check) and print the verdict\n"
+    "  -Q      quiet; -V statistics (Steiner points by kind, those off their facet by\n"
+    "          rounding, smallest dihedral angle, largest radius-edge ratio)\n"
+    "  -T[x] -X -M   TetGen's tolerance, arithmetic and facet merging: accepted, nothing\n"
+    "          changes (lifthull is exact and never merges facets)\n"
+    "not implemented yet (refused): -q -a (quality refinement), -r -m -O -R -i -w -v -o2 -J\n"
+    "\n"
+    "examples:\n"
+    "  lifthull tetgen -pA box.poly     # box.1.node box.1.ele box.1.face\n"
+    "  lifthull tetgen -pYk part.off    # no boundary Steiner points; part.1.vtk too\n"
+    "  lifthull tetgen -d cow.ply       # the facets that intersect\n"
+    "  lifthull tetgen points.node      # Delaunay tetrahedralization\n"
+    "\n"
+    "exit codes: 0 success, 1 failure (or -d found intersections, -C an invalid mesh),\n"
+    "2 usage error, 3 bad input\n";
+
+/* A number right after a switch letter: digits, '.', and an exponent. */
+static int number_after(const char *s, int *j, double *out)
+{
+    const char *p = s + *j + 1;
+    if (!isdigit((unsigned char)*p) && *p != '.') return 0;
+    char *end;
+    *out = strtod(p, &end);
+    *j += (int)(end - p);
+    return 1;
+}
+
+/* A count after s[*j] (none: `none`); beyond size_t: SIZE_MAX. */
+static size_t count_after(const char *s, int *j, size_t none)
+{
+    double x;
+    return !number_after(s, j, &x) ? none : x >= (double)SIZE_MAX ? SIZE_MAX : (size_t)x;
+}
+
+static int refuse(char c, const char *what)
+{
+    fprintf(stderr, "lifthull tetgen: -%c (%s) is not implemented yet (see lifthull tetgen --help)\n", c, what);
+    return 0;
+}
+
+static int parse_switches(const char *s, tsw *o)
+{
+    for (int j = 1; s[j]; j++) {
+        double x;
+        switch (s[j]) {
+        case 'p': o->p = 1; break;
+        case 'Y': o->Y = 1; break;
+        case 'c': o->c = 1; break;
+        case 'A': o->A = 1; break;
+        case 'f': o->f = 1; break;
+        case 'e': o->e = 1; break;
+        case 'n': o->n = 1; break;
+        case 'k': o->k = 1; break;
+        case 'g': o->g = 1; break;
+        case 'z': o->z = 1; break;
+        case 'B': o->B = 1; break;
+        case 'N': o->N = 1; break;
+        case 'E': o->E = 1; break;
+        case 'F': o->F = 1; break;
+        case 'I': o->I = 1; break;
+        case 'Q': o->Q = 1; break;
+        case 'V': o->V++; break;
+        case 'C': o->C = 1; break;
+        case 'd': o->d = 1, o->d_limit = count_after(s, &j, 0); break;
+        case 'S':
+            if (s[j + 1] == '-' || s[j + 1] == '+') {
+                fprintf(stderr, "lifthull tetgen: -S takes a count of Steiner points (0 or more), not '%s'\n",
+                        s + j + 1);
+                return 0;
+            }
+            o->S = 1, o->steiner = count_after(s, &j, 0);
+            break;
+        case 'q': /* -q[ratio][/angle] */
+            o->q = 1;
+            if (number_after(s, &j, &x)) o->ratio = x;
+            if (s[j + 1] == '/') j++, o->angle = number_after(s, &j, &x) ? x : 0;
+            break;
+        case 'a':
+            o->a = 1;
+            if (number_after(s, &j, &x)) o->volume = x;
+            break;
+        case 'T': number_after(s, &j, &x); break; /* exact coplanarity: no tolerance */
+        case 'X': case 'M': break;
+        case 'O': /* -O[level][/scheme]: mesh optimisation */
+            number_after(s, &j, &x);
+            if (s[j + 1] == '/') j++, number_after(s, &j, &x);
+            return refuse('O', "mesh optimisation");
+        case 'r': return refuse('r', "refining a mesh");
+        case 'm': return refuse('m', "a sizing function");
+        case 'R': return refuse('R', "mesh coarsening");
+        case 'i': return refuse('i', "inserting points");
+        case 'w': return refuse('w', "weighted Delaunay");
+        case 'v': return refuse('v', "the Voronoi diagram");
+        case 'J': return refuse('J', "keeping unused points");
+        case 'o':
+            if (s[j + 1] == '2') return refuse('o', "quadratic elements, -o2");
+            fprintf(stderr, "lifthull tetgen: -o must be -o2 (quadratic elements), not '%s'\n", s);
+            return 0;
+        default:
+            fprintf(stderr, "lifthull tetgen: unknown switch '%c' in '%s' (see --help)\n", s[j], s);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* The output base: BASE.1, or BASE.(k+1) when BASE ends in .k (TetGen's rule, as
+ * Triangle's); BASE itself with -I. */
+static char *out_base(const char *base, size_t n, int no_number)
+{
+    char *o = malloc(n + 24);
+    if (!o) return NULL;
+    size_t d = n;
+    while (d > 0 && isdigit((unsigned char)base[d - 1])) d--;
+    if (no_number) {
+        memcpy(o, base, n), o[n] = 0;
+    } else if (d < n && d > 1 && base[d - 1] == '.' && n - d < 18) {
+        memcpy(o, base, d);
+        snprintf(o + d, 24, "%lld", atoll(base + d) + 1);
+    } else {
+        memcpy(o, base, n);
+        snprintf(o + n, 24, ".1");
+    }
+    return o;
+}
+
+enum { F_NODE, F_ELE, F_FACE, F_EDGE, F_NEIGH, F_VTK, F_MESH, F_COUNT };
+static const char *const file_ext[F_COUNT] = {".node", ".ele", ".face", ".edge", ".neigh", ".vtk", ".mesh"};
+
+static void wanted(const tsw *o, int want[F_COUNT])
+{
+    want[F_NODE] = !o->N;
+    want[F_ELE] = !o->E;
+    want[F_FACE] = !o->F;
+    want[F_EDGE] = o->e && !o->F;
+    want[F_NEIGH] = o->n;
+    want[F_VTK] = o->k;
+    want[F_MESH] = o->g;
+}
+
+/* Medit references from the region attributes: whole numbers only. */
+static lh_index *medit_refs(const lh_tetmesh *m)
+{
+    const double *a = lh_tetmesh_tet_attrs(m);
+    const size_t nt = lh_tetmesh_tet_count(m);
+    lh_index *r = a ? malloc((nt ? nt : 1) * sizeof *r) : NULL;
+    for (size_t i = 0; r && i < nt; i++) {
+        if (!(a[i] == (double)(lh_index)a[i])) {
+            fprintf(stderr, "lifthull tetgen: region attribute %.17g is not a whole number: Medit "
+                            "references are integers\n", a[i]);
+            free(r);
+            return NULL;
+        }
+        r[i] = (lh_index)a[i];
+    }
+    return r;
+}
+
+typedef struct outputs {
+    const tsw *o;
+    const lh_cli_plc *in;
+    const lh_tetmesh *m;
+    int first;
+    lh_cli_items faces, edges;
+} outputs;
+
+static lh_status write_file(const outputs *w, int which, FILE *f)
+{
+    const lh_tetmesh *m = w->m;
+    const int markers = !w->o->B;
+    const size_t np = lh_tetmesh_point_count(m);
+    lh_mesh_view v = {3, np, lh_tetmesh_points(m), 3, lh_tetmesh_tet_count(m), lh_tetmesh_tets(m),
+                      lh_tetmesh_neighbors(m), NULL, NULL};
+    switch (which) {
+    case F_NODE:
+        return lh_node_marker_write(f, &v, markers && w->in->g.point_marker ? lh_tetmesh_point_markers(m) : NULL,
+                                    w->first);
+    case F_ELE: return lh_ele_attr_write(f, &v, w->o->A ? lh_tetmesh_tet_attrs(m) : NULL, w->first);
+    case F_NEIGH: return lh_neigh_write(f, &v, w->first);
+    case F_VTK: return lh_vtk_write(f, &v, w->o->A ? lh_tetmesh_tet_attrs(m) : NULL, NULL);
+    case F_FACE:
+        v.k = 2;
+        if (w->o->f) {
+            v.count = w->faces.n, v.cells = w->faces.v, v.neighbors = NULL;
+            return lh_face_write(f, &v, markers ? w->faces.mark : NULL, w->first);
+        }
+        v.count = lh_tetmesh_face_count(m), v.cells = lh_tetmesh_faces(m), v.neighbors = NULL;
+        return lh_face_write(f, &v, markers && w->o->p ? lh_tetmesh_face_markers(m) : NULL, w->first);
+    case F_EDGE:
+        v.k = 1, v.count = w->edges.n, v.cells = w->edges.v, v.neighbors = NULL;
+        return lh_edge_write(f, &v, markers ? w->edges.mark : NULL, w->first);
+    default: {
+        lh_index *refs = w->o->A ? medit_refs(m) : NULL;
+        if (w->o->A && lh_tetmesh_tet_attrs(m) && !refs) return LH_ERR_INVALID_ARGUMENT;
+        const lh_medit_refs r = {markers ? lh_tetmesh_point_markers(m) : NULL, refs, lh_tetmesh_face_count(m),
+                                 lh_tetmesh_faces(m), markers ? lh_tetmesh_face_markers(m) : NULL};
+        lh_status st = lh_medit_write(f, &v, &r);
+        free(refs);
+        return st;
+    }
+    }
+}
+
+/* Every file wanted, into one output set: all or none. */
+static int write_all(outputs *w, char *path[F_COUNT])
+{
+    lh_cli_outset set;
+    lh_cli_outset_init(&set, "tetgen", 1, w->in->path);
+    int ok = (!w->o->f || lh_cli_items_build(&w->faces, w->m, 2)) &&
+             (!(w->o->e && !w->o->F) || lh_cli_items_build(&w->edges, w->m, 1));
+    if (!ok) fprintf(stderr, "lifthull tetgen: out of memory\n");
+    for (int i = 0; i < F_COUNT && ok; i++) {
+        if (!path[i]) continue;
+        FILE *f = lh_cli_outset_add(&set, path[i]);
+        lh_status st = f ? write_file(w, i, f) : LH_ERR_IO;
+        if (f && st != LH_OK && st != LH_ERR_IO)
+            fprintf(stderr, "lifthull tetgen: %s: %s\n", path[i], lh_status_message(st));
+        ok = st == LH_OK;
+    }
+    lh_cli_items_free(&w->faces);
+    lh_cli_items_free(&w->edges);
+    return lh_cli_outset_close(&set, ok);
+}
+
+static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *path[F_COUNT])
+{
+    lh_tetmesh_options opt;
+    lh_tetmesh_options_default(&opt);
+    opt.convex_hull = o->c;
+    opt.boundary_steiner = !o->Y;
+    opt.region_attributes = o->A;
+    if (o->S) opt.max_steiner = o->steiner;
+    lh_error err;
+    lh_tetmesh *m = NULL;
+    const double t0 = lh_cli_seconds();
+    lh_status st = lh_tetrahedralize(&in->g, &opt, &m, &err);
+    const double secs = lh_cli_seconds() - t0;
+    if (getenv("LIFTHULL_TIMING")) fprintf(stderr, "compute_ms=%.3f\n", 1e3 * secs); /* for bench/ */
+    if (st != LH_OK) {
+        lh_cli_plc_report(in, "tetgen", &err);
+        return lh_cli_plc_exit(st);
+    }
+    outputs w = {o, in, m, o->z ? 0 : in->g.first_index, {0, NULL, NULL}, {0, NULL, NULL}};
+    int rc = write_all(&w, path);
+    if (rc == LH_EXIT_OK && !o->Q) lh_cli_tetmesh_summary(stdout, outb, m, secs);
+    if (rc == LH_EXIT_OK && o->V) lh_cli_tetmesh_stats(stdout, in, m);
+    if (rc == LH_EXIT_OK && o->C && !lh_cli_tetmesh_verify(stdout, m, in, "tetgen")) rc = LH_EXIT_FAIL;
+    lh_tetmesh_free(m);
+    if (rc == LH_EXIT_OK) rc = lh_cli_finish_output("tetgen");
+    return rc;
+}
+
+/* The input: FILE as named, or without a known extension FILE.node (with -p
+ * FILE.poly, else FILE.smesh when that exists), as TetGen looks for it. */
+static char *input_path(const char *file, int p, size_t *stem)
+{
+    if (lh_cli_plc_path(file, stem)) return lh_cli_path_ext(file, strlen(file), "");
+    *stem = strlen(file);
+    char *path = lh_cli_path_ext(file, *stem, p ? ".poly" : ".node");
+    if (path && p) {
+        FILE *f = fopen(path, "r");
+        if (f) fclose(f);
+        else free(path), path = lh_cli_path_ext(file, *stem, ".smesh");
+    }
+    return path;
+}
+
+static int run(const tsw *o, const char *file)
+{
+    size_t stem;
+    char *in_path = input_path(file, o->p, &stem), *outb = in_path ? out_base(in_path, stem, o->I) : NULL;
+    char *path[F_COUNT] = {0};
+    int want[F_COUNT], rc = LH_EXIT_FAIL;
+    wanted(o, want);
+    if (!in_path || !outb || (!o->d && !lh_cli_paths(outb, strlen(outb), file_ext, want, F_COUNT, path))) {
+        fprintf(stderr, "lifthull tetgen: out of memory\n");
+        goto done;
+    }
+    /* every output file is checked before the input is read */
+    for (int i = 0; i < F_COUNT; i++)
+        if (path[i] && !lh_cli_out_check("tetgen", path[i], 1, in_path)) goto done;
+    lh_cli_plc in;
+    if (!lh_cli_plc_load(&in, "tetgen", in_path)) {
+        rc = LH_EXIT_INPUT;
+        goto done;
+    }
+    for (int i = 0; i < F_COUNT; i++)
+        if (path[i] && lh_cli_same_file(path[i], in.node_path)) {
+            fprintf(stderr, "lifthull tetgen: '%s' is an input file; it is not overwritten\n", path[i]);
+            lh_cli_plc_free(&in);
+            goto done;
+        }
+    if (o->d) {
+        const int r = lh_cli_plc_intersections(stdout, &in, "tetgen", o->d_limit, o->z ? 0 : 1);
+        rc = r < 0 ? LH_EXIT_INPUT : r ? LH_EXIT_FAIL : lh_cli_finish_output("tetgen");
+    } else {
+        if (!o->p) lh_cli_plc_points_only(&in);
+        rc = mesh_and_write(o, &in, outb, path);
+    }
+    lh_cli_plc_free(&in);
+done:
+    lh_cli_paths_free(path, F_COUNT);
+    free(in_path);
+    free(outb);
+    return rc;
+}
+
+int lh_cli_tetgen(int argc, char **argv)
+{
+    tsw o;
+    memset(&o, 0, sizeof o);
+    const char *file = NULL;
+    for (int i = 0; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage_text, stdout);
+            return LH_EXIT_OK;
+        }
+        if (argv[i][0] == '-' && argv[i][1]) {
+            if (!parse_switches(argv[i], &o)) return LH_EXIT_USAGE;
+        } else if (file) {
+            fprintf(stderr, "lifthull tetgen: one input file, not '%s' and '%s'\n", file, argv[i]);
+            return LH_EXIT_USAGE;
+        } else {
+            file = argv[i];
+        }
+    }
+    if (!file) {
+        fputs(usage_text, stderr);
+        return LH_EXIT_USAGE;
+    }
+    if (o.q || o.a) {
+        fprintf(stderr, "lifthull tetgen: quality refinement (-q/-a) is not implemented yet\n");
+        return LH_EXIT_USAGE;
+    }
+    return run(&o, file);
+}
