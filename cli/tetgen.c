@@ -51,10 +51,8 @@ static const char *const usage_text =
     "not implemented yet (refused): -q -a (quality refinement), -r -m -O -R -i -w -v -o2 -J\n"
     "\n"
     "examples:\n"
-    "  lifthull tetgen -pA box.poly     # box.1.node box.1.ele box.1.face\n"
-    "  lifthull tetgen -pYk part.off    # no boundary Steiner points; part.1.vtk too\n"
-    "  lifthull tetgen -d cow.ply       # the facets that intersect\n"
-    "  lifthull tetgen points.node      # Delaunay tetrahedralization\n"
+    "  lifthull tetgen examples/cube.node        # Delaunay: examples/cube.1.node .ele .face\n"
+    "  lifthull tetgen -fenkV examples/cube.node # every face and edge, .neigh, .vtk, statistics\n"
     "\n"
     "exit codes: 0 success, 1 failure (or -d found intersections, -C an invalid mesh),\n"
     "2 usage error, 3 bad input\n";
@@ -183,24 +181,6 @@ static void wanted(const tsw *o, int want[F_COUNT])
     want[F_MESH] = o->g;
 }
 
-/* Medit references from the region attributes: whole numbers only. */
-static lh_index *medit_refs(const lh_tetmesh *m)
-{
-    const double *a = lh_tetmesh_tet_attrs(m);
-    const size_t nt = lh_tetmesh_tet_count(m);
-    lh_index *r = a ? malloc((nt ? nt : 1) * sizeof *r) : NULL;
-    for (size_t i = 0; r && i < nt; i++) {
-        if (!(a[i] == (double)(lh_index)a[i])) {
-            fprintf(stderr, "lifthull tetgen: region attribute %.17g is not a whole number: Medit "
-                            "references are integers\n", a[i]);
-            free(r);
-            return NULL;
-        }
-        r[i] = (lh_index)a[i];
-    }
-    return r;
-}
-
 typedef struct outputs {
     const tsw *o;
     const lh_cli_plc *in;
@@ -234,15 +214,7 @@ static lh_status write_file(const outputs *w, int which, FILE *f)
     case F_EDGE:
         v.k = 1, v.count = w->edges.n, v.cells = w->edges.v, v.neighbors = NULL;
         return lh_edge_write(f, &v, markers ? w->edges.mark : NULL, w->first);
-    default: {
-        lh_index *refs = w->o->A ? medit_refs(m) : NULL;
-        if (w->o->A && lh_tetmesh_tet_attrs(m) && !refs) return LH_ERR_INVALID_ARGUMENT;
-        const lh_medit_refs r = {markers ? lh_tetmesh_point_markers(m) : NULL, refs, lh_tetmesh_face_count(m),
-                                 lh_tetmesh_faces(m), markers ? lh_tetmesh_face_markers(m) : NULL};
-        lh_status st = lh_medit_write(f, &v, &r);
-        free(refs);
-        return st;
-    }
+    default: return lh_cli_tetmesh_medit(f, m, markers, w->o->A, "tetgen");
     }
 }
 

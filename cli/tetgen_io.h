@@ -59,6 +59,23 @@ void lh_cli_items_free(lh_cli_items *it);
 void lh_cli_tetmesh_summary(FILE *out, const char *name, const lh_tetmesh *m, double secs);
 void lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m);
 
+/* The Medit .mesh of m (lh_medit_write): point and face markers as references
+ * (with markers), the region attributes as the tetrahedra's (with attrs; whole
+ * numbers only, else LH_ERR_INVALID_ARGUMENT after a message). */
+lh_status lh_cli_tetmesh_medit(FILE *f, const lh_tetmesh *m, int markers, int attrs, const char *cmd);
+
+/* `lifthull mesh` with a 3D input (mesh3.c), its options parsed by mesh.c. */
+typedef struct lh_cli_mesh3_args {
+    const char *file, *output;
+    int force, quiet, ascii, check, report;
+    lh_tetmesh_options opt;
+} lh_cli_mesh3_args;
+int lh_cli_mesh3(const lh_cli_mesh3_args *a);
+/* Whether FILE is a 3D meshing input: a .poly or .node whose header says 3
+ * coordinates (a .poly without points: BASE.node's), or another extension
+ * lh_cli_plc_path knows. */
+int lh_cli_plc_is_3d(const char *path);
+
 /* An SVG picture of m's boundary faces (mesh_svg3.c), coloured by facet marker,
  * seen along a fixed oblique direction, far faces painted first; a legend headed by
  * title. Returns 0, or -1 on a write error or out of memory. */

@@ -189,7 +189,7 @@ int lh_cli_tetmesh_verify(FILE *out, const lh_tetmesh *m, const lh_cli_plc *in, 
         fprintf(out, "check: the mesh is NOT valid: %s\n", err.message[0] ? err.message : lh_status_message(st));
         return 0;
     }
-    fprintf(stderr, "lifthull %s: -C: %s\n", cmd, err.message[0] ? err.message : lh_status_message(st));
+    fprintf(stderr, "lifthull %s: the check could not run: %s\n", cmd, err.message[0] ? err.message : lh_status_message(st));
     return 0;
 }
 
