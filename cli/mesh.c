@@ -204,21 +204,24 @@ static int ext_index(const char *name, const char *const *exts, int n, size_t *s
 enum { OUT_VTU, OUT_MSH, OUT_OFF, OUT_NODE, OUT_ELE, OUT_SVG, OUT_COUNT };
 static const char *const out_ext[OUT_COUNT] = {".vtu", ".msh", ".off", ".node", ".ele", ".svg"};
 
+double *lh_cli_mesh_markers(const char *output, const char *node_path, const lh_index *pm, size_t np)
+{
+    if (lh_cli_same_file(output, node_path)) {
+        fprintf(stderr, "lifthull mesh: '%s' is an input file; it is not overwritten\n", output);
+        return NULL;
+    }
+    double *marker = malloc((np ? np : 1) * sizeof *marker);
+    if (!marker) fprintf(stderr, "lifthull mesh: out of memory\n");
+    for (size_t p = 0; marker && p < np; p++) marker[p] = (double)pm[p];
+    return marker;
+}
+
 /* One file (.vtu .msh .off .svg) through the whole-or-nothing mechanism. */
 static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind)
 {
     const size_t np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m);
-    if (lh_cli_same_file(a->output, in->node_path)) {
-        fprintf(stderr, "lifthull mesh: '%s' is an input file; it is not overwritten\n", a->output);
-        return LH_EXIT_FAIL;
-    }
-    double *marker = malloc((np ? np : 1) * sizeof *marker);
-    if (!marker) {
-        fprintf(stderr, "lifthull mesh: out of memory\n");
-        return LH_EXIT_FAIL;
-    }
-    const lh_index *pm = lh_trimesh_point_markers(m);
-    for (size_t p = 0; p < np; p++) marker[p] = (double)pm[p];
+    double *marker = lh_cli_mesh_markers(a->output, in->node_path, lh_trimesh_point_markers(m), np);
+    if (!marker) return LH_EXIT_FAIL;
     lh_mesh_view v = {2, np, lh_trimesh_points(m), 2, nt, lh_trimesh_triangles(m), lh_trimesh_neighbors(m),
                       kind == OUT_OFF ? NULL : marker, "marker"};
     lh_cli_out out;

@@ -84,17 +84,8 @@ static int out_kind(const char *name)
 static int write_mesh(const lh_cli_mesh3_args *a, const lh_cli_plc *in, const lh_tetmesh *m, int kind)
 {
     const size_t np = lh_tetmesh_point_count(m);
-    if (lh_cli_same_file(a->output, in->node_path)) {
-        fprintf(stderr, "lifthull mesh: '%s' is an input file; it is not overwritten\n", a->output);
-        return LH_EXIT_FAIL;
-    }
-    double *marker = malloc((np ? np : 1) * sizeof *marker);
-    if (!marker) {
-        fprintf(stderr, "lifthull mesh: out of memory\n");
-        return LH_EXIT_FAIL;
-    }
-    const lh_index *pm = lh_tetmesh_point_markers(m);
-    for (size_t p = 0; p < np; p++) marker[p] = (double)pm[p];
+    double *marker = lh_cli_mesh_markers(a->output, in->node_path, lh_tetmesh_point_markers(m), np);
+    if (!marker) return LH_EXIT_FAIL;
     const lh_mesh_view v = {3, np, lh_tetmesh_points(m), 3, lh_tetmesh_tet_count(m), lh_tetmesh_tets(m),
                             lh_tetmesh_neighbors(m), marker, "marker"};
     lh_cli_out out;

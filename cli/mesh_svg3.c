@@ -121,15 +121,6 @@ static void put(FILE *f, const camera *c, const double *p, const char *cmd)
     fprintf(f, "%s%lld %lld", cmd, llround((u - c->u0) * c->scale), llround((c->v1 - v) * c->scale));
 }
 
-static void put_escaped(FILE *f, const char *s)
-{
-    for (; *s; s++) {
-        if (*s == '&') fputs("&amp;", f);
-        else if (*s == '<') fputs("&lt;", f);
-        else if (*s == '>') fputs("&gt;", f);
-        else if ((unsigned char)*s >= 0x20) putc(*s, f);
-    }
-}
 
 /* The title with the counts, and a swatch per marker (the first PALETTE). */
 static void legend(FILE *f, const lh_tetmesh *m, const lh_index *mk, size_t nf, const char *title)
@@ -137,7 +128,7 @@ static void legend(FILE *f, const lh_tetmesh *m, const lh_index *mk, size_t nf, 
     const double fs = 200, x0 = 0.02 * CANVAS, row = 300;
     fprintf(f, "<g font-family=\"sans-serif\" font-size=\"%g\" fill=\"#333333\">\n<text x=\"%g\" y=\"%g\">", fs, x0,
             -LEGEND + row);
-    put_escaped(f, title);
+    lh_cli_svg_escaped(f, title);
     fprintf(f, ": %zu points, %zu tetrahedra, %zu boundary faces</text>\n", lh_tetmesh_point_count(m),
             lh_tetmesh_tet_count(m), nf);
     fprintf(f, "<text x=\"%g\" y=\"%g\">by facet marker</text>\n", x0, -LEGEND + 2 * row);
@@ -179,13 +170,7 @@ int lh_cli_tetmesh_svg(FILE *f, const lh_tetmesh *m, const char *title)
     qsort(order, nf, sizeof *order, farther_first);
     const double W = ceil(fmax(c.width, MIN_WIDTH)), H = ceil(c.height);
     const double line = fmin(fmax(0.15 * sqrt(c.width * c.height / (double)(nf ? nf : 1)), 0.5), 8);
-    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-               "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 %g %.0f %.0f\" width=\"%.0f\" height=\"%.0f\">\n",
-            -LEGEND, W, H + LEGEND, ceil(W / 10), ceil((H + LEGEND) / 10));
-    fputs("<title>", f);
-    put_escaped(f, title);
-    fputs("</title>\n", f);
-    fprintf(f, "<rect x=\"0\" y=\"%g\" width=\"%.0f\" height=\"%.0f\" fill=\"#ffffff\"/>\n", -LEGEND, W, H + LEGEND);
+    lh_cli_svg_begin(f, W, H, LEGEND, title);
     legend(f, m, mk, nf, title);
     fprintf(f, "<g id=\"faces\" stroke=\"#303030\" stroke-width=\"%.3g\" stroke-linejoin=\"round\">\n", line);
     for (size_t j = 0; j < nf; j++) {

@@ -6,10 +6,9 @@
  * tolerances are accepted and change nothing (lifthull is always exact). */
 #include "cli.h"
 #include "outfile.h"
+#include "switches.h"
 #include "tetgen_io.h"
 
-#include <ctype.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -57,32 +56,15 @@ static const char *const usage_text =
     "exit codes: 0 success, 1 failure (or -d found intersections, -C an invalid mesh),\n"
     "2 usage error, 3 bad input\n";
 
-/* A number right after a switch letter: digits, '.', and an exponent. */
-static int number_after(const char *s, int *j, double *out)
-{
-    const char *p = s + *j + 1;
-    if (!isdigit((unsigned char)*p) && *p != '.') return 0;
-    char *end;
-    *out = strtod(p, &end);
-    *j += (int)(end - p);
-    return 1;
-}
-
-/* A count after s[*j] (none: `none`); beyond size_t: SIZE_MAX. */
-static size_t count_after(const char *s, int *j, size_t none)
-{
-    double x;
-    return !number_after(s, j, &x) ? none : x >= (double)SIZE_MAX ? SIZE_MAX : (size_t)x;
-}
-
 static int refuse(char c, const char *what)
 {
     fprintf(stderr, "lifthull tetgen: -%c (%s) is not implemented yet (see lifthull tetgen --help)\n", c, what);
     return 0;
 }
 
-static int parse_switches(const char *s, tsw *o)
+static int parse_switches(const char *s, void *opt)
 {
+    tsw *o = opt;
     for (int j = 1; s[j]; j++) {
         double x;
         switch (s[j]) {
@@ -104,29 +86,29 @@ static int parse_switches(const char *s, tsw *o)
         case 'Q': o->Q = 1; break;
         case 'V': o->V++; break;
         case 'C': o->C = 1; break;
-        case 'd': o->d = 1, o->d_limit = count_after(s, &j, 0); break;
+        case 'd': o->d = 1, o->d_limit = lh_cli_switch_count(s, &j, 0); break;
         case 'S':
             if (s[j + 1] == '-' || s[j + 1] == '+') {
                 fprintf(stderr, "lifthull tetgen: -S takes a count of Steiner points (0 or more), not '%s'\n",
                         s + j + 1);
                 return 0;
             }
-            o->S = 1, o->steiner = count_after(s, &j, 0);
+            o->S = 1, o->steiner = lh_cli_switch_count(s, &j, 0);
             break;
         case 'q': /* -q[ratio][/angle] */
             o->q = 1;
-            if (number_after(s, &j, &x)) o->ratio = x;
-            if (s[j + 1] == '/') j++, o->angle = number_after(s, &j, &x) ? x : 0;
+            if (lh_cli_switch_number(s, &j, &x)) o->ratio = x;
+            if (s[j + 1] == '/') j++, o->angle = lh_cli_switch_number(s, &j, &x) ? x : 0;
             break;
         case 'a':
             o->a = 1;
-            if (number_after(s, &j, &x)) o->volume = x;
+            if (lh_cli_switch_number(s, &j, &x)) o->volume = x;
             break;
-        case 'T': number_after(s, &j, &x); break; /* exact coplanarity: no tolerance */
+        case 'T': lh_cli_switch_number(s, &j, &x); break; /* exact coplanarity: no tolerance */
         case 'X': case 'M': break;
         case 'O': /* -O[level][/scheme]: mesh optimisation */
-            number_after(s, &j, &x);
-            if (s[j + 1] == '/') j++, number_after(s, &j, &x);
+            lh_cli_switch_number(s, &j, &x);
+            if (s[j + 1] == '/') j++, lh_cli_switch_number(s, &j, &x);
             return refuse('O', "mesh optimisation");
         case 'r': return refuse('r', "refining a mesh");
         case 'm': return refuse('m', "a sizing function");
@@ -145,26 +127,6 @@ static int parse_switches(const char *s, tsw *o)
         }
     }
     return 1;
-}
-
-/* The output base: BASE.1, or BASE.(k+1) when BASE ends in .k (TetGen's rule, as
- * Triangle's); BASE itself with -I. */
-static char *out_base(const char *base, size_t n, int no_number)
-{
-    char *o = malloc(n + 24);
-    if (!o) return NULL;
-    size_t d = n;
-    while (d > 0 && isdigit((unsigned char)base[d - 1])) d--;
-    if (no_number) {
-        memcpy(o, base, n), o[n] = 0;
-    } else if (d < n && d > 1 && base[d - 1] == '.' && n - d < 18) {
-        memcpy(o, base, d);
-        snprintf(o + d, 24, "%lld", atoll(base + d) + 1);
-    } else {
-        memcpy(o, base, n);
-        snprintf(o + n, 24, ".1");
-    }
-    return o;
 }
 
 enum { F_NODE, F_ELE, F_FACE, F_EDGE, F_NEIGH, F_VTK, F_MESH, F_COUNT };
@@ -285,7 +247,7 @@ static char *input_path(const char *file, int p, size_t *stem)
 static int run(const tsw *o, const char *file)
 {
     size_t stem;
-    char *in_path = input_path(file, o->p, &stem), *outb = in_path ? out_base(in_path, stem, o->I) : NULL;
+    char *in_path = input_path(file, o->p, &stem), *outb = in_path ? lh_cli_out_base(in_path, stem, o->I) : NULL;
     char *path[F_COUNT] = {0};
     int want[F_COUNT], rc = LH_EXIT_FAIL;
     wanted(o, want);
@@ -326,25 +288,9 @@ int lh_cli_tetgen(int argc, char **argv)
 {
     tsw o;
     memset(&o, 0, sizeof o);
-    const char *file = NULL;
-    for (int i = 0; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            fputs(usage_text, stdout);
-            return LH_EXIT_OK;
-        }
-        if (argv[i][0] == '-' && argv[i][1]) {
-            if (!parse_switches(argv[i], &o)) return LH_EXIT_USAGE;
-        } else if (file) {
-            fprintf(stderr, "lifthull tetgen: one input file, not '%s' and '%s'\n", file, argv[i]);
-            return LH_EXIT_USAGE;
-        } else {
-            file = argv[i];
-        }
-    }
-    if (!file) {
-        fputs(usage_text, stderr);
-        return LH_EXIT_USAGE;
-    }
+    const char *file;
+    const int r = lh_cli_switch_args(argc, argv, "tetgen", usage_text, parse_switches, &o, &file);
+    if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     if (o.q || o.a) {
         fprintf(stderr, "lifthull tetgen: quality refinement (-q/-a) is not implemented yet\n");
         return LH_EXIT_USAGE;

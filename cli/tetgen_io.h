@@ -71,6 +71,10 @@ typedef struct lh_cli_mesh3_args {
     lh_tetmesh_options opt;
 } lh_cli_mesh3_args;
 int lh_cli_mesh3(const lh_cli_mesh3_args *a);
+/* For `mesh -o OUTPUT` (mesh.c): the np point markers pm as doubles (a point field),
+ * malloc'ed; NULL after a message when out of memory or when OUTPUT is node_path,
+ * an input. */
+double *lh_cli_mesh_markers(const char *output, const char *node_path, const lh_index *pm, size_t np);
 /* Whether FILE is a 3D meshing input: a .poly or .node whose header says 3
  * coordinates (a .poly without points: BASE.node's), or another extension
  * lh_cli_plc_path knows. */
