@@ -45,9 +45,10 @@ static const char *const usage_text =
     "  -C      check the mesh exactly (lh_tetmesh_check) and print the verdict\n"
     "  -Q      quiet; -V statistics (Steiner points by kind, those off their facet by\n"
     "          rounding, smallest dihedral angle, largest radius-edge ratio)\n"
-    "  -T[x] -X -M   TetGen's tolerance, arithmetic and facet merging: accepted, nothing\n"
-    "          changes (lifthull is exact and never merges facets)\n"
-    "not implemented yet (refused): -q -a (quality refinement), -r -m -O -R -i -w -v -o2 -J\n"
+    "  -T[x] -X -M -J   TetGen's tolerance, arithmetic, facet merging and keeping unused\n"
+    "          points: accepted, nothing changes (lifthull is exact, never merges facets\n"
+    "          and keeps every input point in the .node, in a tetrahedron or not)\n"
+    "not implemented yet (refused): -q -a (quality refinement), -r -m -O -R -i -w -v -o2\n"
     "\n"
     "examples:\n"
     "  lifthull tetgen examples/cube.node        # Delaunay: examples/cube.1.node .ele .face\n"
@@ -105,7 +106,7 @@ static int parse_switches(const char *s, void *opt)
             if (lh_cli_switch_number(s, &j, &x)) o->volume = x;
             break;
         case 'T': lh_cli_switch_number(s, &j, &x); break; /* exact coplanarity: no tolerance */
-        case 'X': case 'M': break;
+        case 'X': case 'M': case 'J': break;
         case 'O': /* -O[level][/scheme]: mesh optimisation */
             lh_cli_switch_number(s, &j, &x);
             if (s[j + 1] == '/') j++, lh_cli_switch_number(s, &j, &x);
@@ -116,7 +117,6 @@ static int parse_switches(const char *s, void *opt)
         case 'i': return refuse('i', "inserting points");
         case 'w': return refuse('w', "weighted Delaunay");
         case 'v': return refuse('v', "the Voronoi diagram");
-        case 'J': return refuse('J', "keeping unused points");
         case 'o':
             if (s[j + 1] == '2') return refuse('o', "quadratic elements, -o2");
             fprintf(stderr, "lifthull tetgen: -o must be -o2 (quadratic elements), not '%s'\n", s);
