@@ -107,10 +107,7 @@ static int parse_switches(const char *s, void *opt)
             break;
         case 'T': lh_cli_switch_number(s, &j, &x); break; /* exact coplanarity: no tolerance */
         case 'X': case 'M': case 'J': break;
-        case 'O': /* -O[level][/scheme]: mesh optimisation */
-            lh_cli_switch_number(s, &j, &x);
-            if (s[j + 1] == '/') j++, lh_cli_switch_number(s, &j, &x);
-            return refuse('O', "mesh optimisation");
+        case 'O': return refuse('O', "mesh optimisation");
         case 'r': return refuse('r', "refining a mesh");
         case 'm': return refuse('m', "a sizing function");
         case 'R': return refuse('R', "mesh coarsening");
