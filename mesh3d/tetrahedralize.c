@@ -1,44 +1,85 @@
 /*
- * tetrahedralize.c — lh_tetrahedralize: the pipeline (docs/meshing3d.md).
- * For now: the Delaunay tetrahedralization of the PLC's points, its hull faces as the
- * subfaces (boundary recovery lands next).
+ * tetrahedralize.c — lh_tetrahedralize, the pipeline (docs/meshing3d.md): check the
+ * PLC; the Delaunay tetrahedralization of its points; facets triangulated in their
+ * planes; boundary recovery (recover.h); carving and regions (carve.c); the mesh.
  */
-#include "t3.h"
+#include "carve.h"
+#include "facets.h"
 
 #include <string.h>
 
-static lh_status copy_points(lh_tetmesh *m, const lh_plc *g)
+static void ctx_free(t3_ctx *c)
 {
-    lh_status st;
-    m->n = g->n;
-    if ((st = lh__tetmesh_array(m, (void **)&m->xyz, 3 * g->n, sizeof(double)))) return st;
-    if ((st = lh__tetmesh_array(m, (void **)&m->point_marker, g->n, sizeof(lh_index)))) return st;
-    memcpy(m->xyz, g->xyz, 3 * g->n * sizeof(double));
-    for (size_t i = 0; i < g->n; i++) m->point_marker[i] = g->point_marker ? g->point_marker[i] : 0;
+    void *arrays[] = {c->xyz,         c->tri,        c->tri_facet,  c->tri_seg,
+                      c->seg,         c->seg_key,    c->patch_first, c->patch_tri,
+                      c->patch_facet, c->patch_axis, c->pnode,      c->pnode_first,
+                      c->node,        c->node_first, c->new_xyz,    c->new_node,
+                      c->star_first,  c->star,       c->stamp,      c->vbuf,
+                      c->fbuf,        c->ebuf};
+    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
+    lh_tri_free(c->dt);
+    lh_pred_free(c->pred);
+}
+
+/* The Delaunay tetrahedralization of the PLC's points, and c's copy of them. */
+static lh_status start(t3_ctx *c)
+{
+    const lh_plc *g = c->g;
+    lh_options dopt;
+    lh_options_default(&dopt);
+    dopt.alloc = c->opt->alloc;
+    dopt.threads = c->opt->threads;
+    lh_status st = lh_pred_create(c->opt->alloc, &c->pred);
+    if (st != LH_OK) return lh__t3_say(c, st, 0, "out of memory");
+    st = lh_delaunay(3, g->n, g->xyz, &dopt, &c->dt);
+    if (st == LH_ERR_DEGENERATE)
+        return lh__t3_say(c, st, 0, "the points are coplanar, or fewer than 4 distinct: no volume to mesh");
+    if (st != LH_OK) return lh__t3_say(c, st, 0, "%s", lh_status_message(st));
+    c->dup = lh_tri_duplicate_of(c->dt);
+    c->n = c->n_input = g->n;
+    c->n_cap = 2 * g->n + 16;
+    c->xyz = lh__alloc(&c->al, 3 * c->n_cap * sizeof(double));
+    if (!c->xyz) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    memcpy(c->xyz, g->xyz, 3 * g->n * sizeof(double));
     return LH_OK;
 }
 
-static lh_status copy_tets(lh_tetmesh *m, const lh_tri *t)
+static lh_status constraints(t3_ctx *c, size_t *nonplanar)
 {
-    lh_status st;
-    size_t c = lh_tri_count(t), h = lh_tri_hull_count(t);
-    const lh_index *hull = lh_tri_hull_facets(t);
-    m->tet_count = c;
-    if ((st = lh__tetmesh_array(m, (void **)&m->tets, 4 * c, sizeof(lh_index)))) return st;
-    if ((st = lh__tetmesh_array(m, (void **)&m->nbr, 4 * c, sizeof(lh_index)))) return st;
-    memcpy(m->tets, lh_tri_simplices(t), 4 * c * sizeof(lh_index));
-    memcpy(m->nbr, lh_tri_neighbors(t), 4 * c * sizeof(lh_index));
-    m->face_count = h;
-    if ((st = lh__tetmesh_array(m, (void **)&m->faces, 3 * h, sizeof(lh_index)))) return st;
-    if ((st = lh__tetmesh_array(m, (void **)&m->face_marker, h, sizeof(lh_index)))) return st;
-    if ((st = lh__tetmesh_array(m, (void **)&m->face_parent, h, sizeof(lh_index)))) return st;
-    for (size_t i = 0; i < h; i++) { /* outward hull facets, reversed: normals point in */
-        m->faces[3 * i] = hull[3 * i];
-        m->faces[3 * i + 1] = hull[3 * i + 2];
-        m->faces[3 * i + 2] = hull[3 * i + 1];
-        m->face_marker[i] = 1;
-        m->face_parent[i] = -1;
+    lh__facet_tris ft;
+    lh_status st = lh__facets_triangulate(c->g, &c->al, &ft, c->err);
+    if (st != LH_OK) return st;
+    *nonplanar = ft.nonplanar;
+    st = lh__t3_constraints(c, &ft);
+    lh__facet_tris_free(&c->al, &ft);
+    if (st != LH_OK) return st;
+    c->node_first = lh__alloc(&c->al, (c->seg_count + 1) * sizeof(lh_index)); /* no nodes yet */
+    if (!c->node_first) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    memset(c->node_first, 0, (c->seg_count + 1) * sizeof(lh_index));
+    return lh__t3_stars(c);
+}
+
+static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
+{
+    size_t nonplanar = 0;
+    lh_status st = lh__t3_plc_check(c);
+    if (st == LH_OK) st = start(c);
+    if (st == LH_OK) st = constraints(c, &nonplanar);
+    if (st == LH_OK) st = lh__t3_recover(c);
+    t3_domain d;
+    memset(&d, 0, sizeof d);
+    if (st == LH_OK) st = lh__t3_walls(c, &d);
+    if (st == LH_OK) st = lh__t3_carve(c, &d);
+    lh_tetmesh *m = NULL;
+    if (st == LH_OK && !(m = lh__tetmesh_new(&c->al))) st = lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    if (st == LH_OK) st = lh__t3_output(c, &d, m);
+    lh__t3_domain_free(c, &d);
+    if (st != LH_OK) {
+        lh_tetmesh_free(m);
+        return st;
     }
+    m->stats.facets_nonplanar = nonplanar;
+    *out = m;
     return LH_OK;
 }
 
@@ -50,31 +91,12 @@ lh_status lh_tetrahedralize(const lh_plc *g, const lh_tetmesh_options *opt, lh_t
     lh_tetmesh_options defaults;
     lh_tetmesh_options_default(&defaults);
     if (!opt) opt = &defaults;
-    lh_allocator al;
-    if (!g || !out || !lh__allocator_init(&al, opt->alloc) || (g->n && !g->xyz))
+    t3_ctx c;
+    memset(&c, 0, sizeof c);
+    c.err = err, c.g = g, c.opt = opt;
+    if (!g || !out || !lh__allocator_init(&c.al, opt->alloc))
         return lh__error_done(err, LH_ERR_INVALID_ARGUMENT);
-    lh_options dopt;
-    lh_options_default(&dopt);
-    dopt.alloc = opt->alloc;
-    dopt.threads = opt->threads;
-    lh_tri *t = NULL;
-    lh_status st = lh_delaunay(3, g->n, g->xyz, &dopt, &t);
-    if (st != LH_OK) return lh__error_done(err, st);
-    lh_tetmesh *m = lh__tetmesh_new(&al);
-    if (!m) st = LH_ERR_NOMEM;
-    if (st == LH_OK) st = copy_points(m, g);
-    if (st == LH_OK) st = copy_tets(m, t);
-    if (st == LH_OK) {
-        m->stats.input_points = g->n;
-        m->stats.duplicates_merged = lh_tri_duplicate_count(t);
-        m->stats.tets = m->tet_count;
-        m->stats.faces = m->face_count;
-    }
-    lh_tri_free(t);
-    if (st != LH_OK) {
-        lh_tetmesh_free(m);
-        return lh__error_done(err, st);
-    }
-    *out = m;
-    return lh__error_done(err, LH_OK);
+    lh_status st = mesh(&c, out);
+    ctx_free(&c);
+    return lh__error_done(err, st);
 }

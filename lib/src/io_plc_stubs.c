@@ -7,14 +7,5 @@ static lh_status not_yet(lh__scan *s, const char *what)
     return lh__error_say(s->err, LH_ERR_PARSE, "%s: %s files are not read yet", s->name, what);
 }
 
-lh_status lh__plc_read_poly(lh__scan *s, lh__plc_build *b, int smesh)
-{
-    (void)b;
-    return not_yet(s, smesh ? ".smesh" : ".poly");
-}
-lh_status lh__plc_read_node(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, ".node"); }
-lh_status lh__plc_read_off(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, "OFF"); }
 lh_status lh__plc_read_ply(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, "PLY"); }
 lh_status lh__plc_read_stl(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, "STL"); }
-lh_status lh__plc_read_medit(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, "Medit"); }
-lh_status lh__plc_read_obj(lh__scan *s, lh__plc_build *b) { (void)b; return not_yet(s, "OBJ"); }

@@ -1,0 +1,169 @@
+/*
+ * carve.c — the domain: the recovered facet triangles' faces are walls; tetrahedra
+ * reachable from the convex hull without crossing a wall are outside (unless
+ * convex_hull), those reachable from a hole point are holes, and each region point
+ * labels the tetrahedra it reaches (flood fill, as TetGen; Si 2015, sec. 4.4).
+ */
+#include "carve.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static int cmp_wall(const void *x, const void *y)
+{
+    const lh_index *a = x, *b = y;
+    for (int k = 0; k < 3; k++)
+        if (a[k] != b[k]) return a[k] < b[k] ? -1 : 1;
+    return 0;
+}
+
+/* Walls: every recovered patch's faces, as sorted triples with the facet (4
+ * indices a wall), sorted, each face once (the first triangle's facet). */
+lh_status lh__t3_walls(t3_ctx *c, t3_domain *d)
+{
+    size_t cap = 0, w = 0;
+    lh_index *walls = NULL;
+    for (size_t k = 0; k < c->patch_count; k++) {
+        const lh_index *f;
+        size_t nf;
+        lh_status st = lh__t3_patch_cover(c, k, &f, &nf);
+        if (st == LH_OK && w + nf > cap) {
+            size_t nc = 2 * (w + nf) + 64;
+            lh_index *x = lh__alloc(&c->al, 4 * nc * sizeof(lh_index));
+            if (!x) st = lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+            else {
+                if (w) memcpy(x, walls, 4 * w * sizeof(lh_index));
+                lh__free(&c->al, walls);
+                walls = x, cap = nc;
+            }
+        }
+        if (st != LH_OK) {
+            lh__free(&c->al, walls);
+            return st;
+        }
+        for (size_t i = 0; i < nf; i++, w++) {
+            memcpy(walls + 4 * w, f + 3 * i, 3 * sizeof(lh_index));
+            walls[4 * w + 3] = c->patch_facet[k];
+        }
+    }
+    if (w) qsort(walls, w, 4 * sizeof(lh_index), cmp_wall); /* equal faces: facet order */
+    size_t u = 0;
+    for (size_t i = 0; i < w; i++)
+        if (u == 0 || cmp_wall(walls + 4 * (u - 1), walls + 4 * i) != 0)
+            memmove(walls + 4 * u++, walls + 4 * i, 4 * sizeof(lh_index));
+    d->walls = walls;
+    d->wall_count = u;
+    return LH_OK;
+}
+
+/* The facet of tet t's face opposite corner j, or -1 when that face is no wall. */
+lh_index lh__t3_wall_of(const t3_ctx *c, const t3_domain *d, size_t t, int j)
+{
+    const lh_index *s = lh_tri_simplices(c->dt) + 4 * t;
+    lh_index key[4], w = 0;
+    for (int k = 0; k < 4; k++)
+        if (k != j) key[w++] = s[k];
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2 - a; b++)
+            if (key[b] > key[b + 1]) { lh_index x = key[b]; key[b] = key[b + 1]; key[b + 1] = x; }
+    size_t lo = 0, hi = d->wall_count;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        int r = cmp_wall(d->walls + 4 * mid, key);
+        if (r == 0) return d->walls[4 * mid + 3];
+        if (r < 0) lo = mid + 1;
+        else hi = mid;
+    }
+    return -1;
+}
+
+/* Floods from tet `seed` across faces that are not walls, giving unlabelled tets
+ * `label`; the stack holds tet_count entries. */
+static void flood(const t3_ctx *c, t3_domain *d, lh_index seed, lh_index label)
+{
+    const lh_index *nbr = lh_tri_neighbors(c->dt);
+    if (d->label[seed] != T3_FREE) return;
+    size_t top = 0;
+    d->label[seed] = label;
+    d->stack[top++] = seed;
+    while (top) {
+        lh_index t = d->stack[--top];
+        for (int j = 0; j < 4; j++) {
+            lh_index u = nbr[4 * (size_t)t + j];
+            if (u < 0 || d->label[u] != T3_FREE || lh__t3_wall_of(c, d, (size_t)t, j) >= 0)
+                continue;
+            d->label[u] = label;
+            d->stack[top++] = u;
+        }
+    }
+}
+
+/* The tetrahedron holding point q, -1 outside the hull; *wall = the facet of a wall
+ * q lies on (a face of that tet with orient 0), else -1. */
+static lh_index locate(t3_ctx *c, const t3_domain *d, const double *q, lh_index *wall)
+{
+    lh_location loc;
+    *wall = -1;
+    if (lh_tri_locate(c->dt, q, -1, &loc) != LH_OK || loc.simplex < 0) return -1;
+    const lh_index *s = lh_tri_simplices(c->dt) + 4 * (size_t)loc.simplex;
+    for (int j = 0; j < 4; j++) {
+        const double *p[4];
+        int w = 0;
+        for (int k = 0; k < 4; k++)
+            if (k != j) p[w++] = c->xyz + 3 * (size_t)s[k];
+        p[3] = q;
+        if (lh_orient(c->pred, 3, p) == 0) {
+            lh_index f = lh__t3_wall_of(c, d, (size_t)loc.simplex, j);
+            if (f >= 0) *wall = f;
+        }
+    }
+    return loc.simplex;
+}
+
+static lh_status seed_fail(t3_ctx *c, const char *what, size_t i, const size_t *lines,
+                           lh_index facet)
+{
+    size_t line = lines ? lines[i] : 0;
+    return lh__t3_say(c, LH_ERR_DEGENERATE, line, "%s %zu lies on facet %ld: which side it seeds is undefined",
+                      what, i + (size_t)c->g->first_index, (long)facet + c->g->first_index);
+}
+
+lh_status lh__t3_carve(t3_ctx *c, t3_domain *d)
+{
+    const lh_plc *g = c->g;
+    size_t count = lh_tri_count(c->dt);
+    const lh_index *nbr = lh_tri_neighbors(c->dt);
+    d->label = lh__alloc(&c->al, (count + 1) * sizeof(lh_index));
+    d->stack = lh__alloc(&c->al, (count + 1) * sizeof(lh_index));
+    if (!d->label || !d->stack) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    for (size_t t = 0; t < count; t++) d->label[t] = T3_FREE;
+    for (size_t h = 0; h < g->hole_count; h++) {
+        lh_index wall, t = locate(c, d, g->holes + 3 * h, &wall);
+        if (wall >= 0) return seed_fail(c, "hole", h, g->hole_line, wall);
+        if (t < 0) d->holes_ignored++;
+        else flood(c, d, t, T3_OUT);
+    }
+    for (size_t t = 0; !c->opt->convex_hull && t < count; t++)
+        for (int j = 0; j < 4; j++)
+            if (nbr[4 * t + j] < 0 && lh__t3_wall_of(c, d, t, j) < 0) flood(c, d, (lh_index)t, T3_OUT);
+    for (size_t r = 0; r < g->region_count; r++) {
+        lh_index wall, t = locate(c, d, g->regions + 5 * r, &wall);
+        if (wall >= 0) return seed_fail(c, "region", r, g->region_line, wall);
+        if (t < 0 || d->label[t] != T3_FREE) d->regions_ignored++;
+        else flood(c, d, t, (lh_index)r);
+    }
+    for (size_t t = 0; t < count; t++) d->kept += d->label[t] != T3_OUT;
+    if (d->kept == 0)
+        return lh__t3_say(c, LH_ERR_DEGENERATE, 0,
+                          "every tetrahedron was carved away: the facets enclose no volume "
+                          "that a hole point does not empty");
+    return LH_OK;
+}
+
+void lh__t3_domain_free(t3_ctx *c, t3_domain *d)
+{
+    lh__free(&c->al, d->walls);
+    lh__free(&c->al, d->label);
+    lh__free(&c->al, d->stack);
+    memset(d, 0, sizeof *d);
+}

@@ -1,0 +1,117 @@
+/*
+ * recover.c — the rounds of boundary recovery (recover.h): split the subsegments
+ * that are not edges; when none is left, the triangles that are not unions of faces;
+ * insert; repeat until every constraint is in the mesh.
+ */
+#include "recover.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+lh_status lh__t3_say(t3_ctx *c, lh_status st, size_t line, const char *fmt, ...)
+{
+    if (!c->err) return st;
+    char text[LH_ERROR_MESSAGE_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    if (line) {
+        c->err->line = line;
+        return lh__error_say(c->err, st, "%zu: %s", line, text);
+    }
+    return lh__error_say(c->err, st, "%s", text);
+}
+
+lh_status lh__t3_room(t3_ctx *c, lh_index **buf, size_t *cap, size_t need)
+{
+    if (need <= *cap) return LH_OK;
+    size_t k = 2 * need + 16;
+    lh_index *x = lh__alloc(&c->al, k * sizeof(lh_index));
+    if (!x) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    if (*cap) memcpy(x, *buf, *cap * sizeof(lh_index));
+    lh__free(&c->al, *buf);
+    *buf = x, *cap = k;
+    return LH_OK;
+}
+
+/* Queues a split of every subsegment that is not an edge of the mesh. */
+static lh_status split_edges(t3_ctx *c)
+{
+    for (size_t s = 0; s < c->seg_count; s++) {
+        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
+        lh_status st = lh__t3_room(c, &c->vbuf, &c->vcap, cl);
+        if (st != LH_OK) return st;
+        lh__t3_chain(c, (lh_index)s, c->vbuf, c->vcap);
+        /* splits are queued, not done: the chain stays as it is this round */
+        for (size_t i = 0; i + 1 < cl; i++) {
+            if (lh__t3_has_edge(c, c->vbuf[i], c->vbuf[i + 1])) continue;
+            if ((st = lh__t3_split(c, (lh_index)s, i)) != LH_OK) return st;
+        }
+    }
+    return LH_OK;
+}
+
+static lh_status split_faces(t3_ctx *c)
+{
+    for (size_t k = 0; k < c->patch_count; k++) {
+        int ok;
+        lh_status st = lh__t3_patch_check(c, k, 1, &ok);
+        if (st != LH_OK) return st;
+    }
+    return LH_OK;
+}
+
+/* Rounds of splitting before recovery gives up: each round halves the subsegments it
+ * splits, so an input it would end on needs far fewer. */
+#define T3_MAX_ROUNDS 400
+
+/* The Steiner points allowed: the caller's bound, else a budget from the input's size
+ * that no input this mesher ends on comes near (docs/meshing3d.md). */
+static size_t budget(const t3_ctx *c)
+{
+    if (c->opt->max_steiner != (size_t)-1) return c->opt->max_steiner;
+    return 20 * (c->n_input + c->tri_count) + 100000;
+}
+
+/* The error when rounds run out: the facets (up to 5) still not recovered. */
+static lh_status stalled(t3_ctx *c)
+{
+    char list[160] = "";
+    size_t len = 0, bad = 0;
+    for (size_t k = 0; k < c->patch_count; k++) {
+        int ok;
+        lh_status st = lh__t3_patch_check(c, k, 0, &ok);
+        if (st != LH_OK) return st;
+        if (ok) continue;
+        if (bad++ < 5 && len < sizeof list - 24)
+            len += (size_t)snprintf(list + len, sizeof list - len, "%s%ld", bad > 1 ? ", " : "",
+                                    (long)c->patch_facet[k] + c->g->first_index);
+    }
+    return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
+                      "boundary recovery did not end in %d rounds (%zu Steiner points): "
+                      "%zu facets still missing, e.g. %s%s",
+                      T3_MAX_ROUNDS, c->steiner, bad, list, bad > 5 ? ", ..." : "");
+}
+
+lh_status lh__t3_recover(t3_ctx *c)
+{
+    for (;;) {
+        if (c->rounds == T3_MAX_ROUNDS) return stalled(c);
+        lh_status st = split_edges(c);
+        if (st == LH_OK && c->new_count == 0) st = split_faces(c);
+        if (st != LH_OK) return st;
+        if (c->new_count == 0) return LH_OK;
+        if (!c->opt->boundary_steiner)
+            return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
+                              "-Y: recovering the boundary needs Steiner points on it, and "
+                              "interior Steiner points alone are not implemented yet");
+        if (c->steiner + c->new_count > budget(c))
+            return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
+                              "boundary recovery needs more than %zu Steiner points (-S)",
+                              budget(c));
+        c->rounds++;
+        if ((st = lh__t3_commit(c)) != LH_OK) return st;
+    }
+}

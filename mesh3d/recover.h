@@ -1,0 +1,148 @@
+/*
+ * recover.h — boundary recovery by conforming Delaunay splitting (docs/meshing3d.md).
+ *
+ * The constraints are the facets' triangles (facets triangulated in their planes) and
+ * segments: every edge of those triangles once, and the PLC's free segments. The mesh
+ * is always the Delaunay tetrahedralization of the points so far (lift/: lh_delaunay,
+ * then lh_tri_insert), exact and unique under the lifted perturbation, so every stage
+ * works on a valid tetrahedralization. Rounds alternate:
+ *   - a subsegment (two consecutive points of a segment's chain) that is not an edge
+ *     is split: at a point of the mesh lying exactly on it, else at a new point —
+ *     its midpoint, or, next to an input vertex, the point at a power-of-two distance
+ *     from that vertex between a third and two thirds of the subsegment (Shewchuk's
+ *     concentric shells, "Tetrahedral mesh generation by Delaunay refinement", SoCG
+ *     1998, sec. 3.2: splits near a small input angle stop);
+ *   - when every subsegment is an edge, a triangle whose points (corners and the
+ *     chains of its edges) are not the vertices of a set of mesh faces forming a disk
+ *     bounded by its chains has its longest uncovered subsegment split.
+ * A conforming Delaunay tetrahedralization results (Murphy, Mount, Gable 2001;
+ * Cohen-Steiner, Colin de Verdière, Yvinec 2004 prove such splitting ends for any
+ * PLC; this version does not protect every acute facet angle, and caps Steiner points
+ * instead). Each round's split points depend only on the mesh and the constraints
+ * (segments run from the point first in coordinates), so the result does not depend
+ * on input order.
+ */
+#ifndef LH_RECOVER_H
+#define LH_RECOVER_H
+
+#include "t3.h"
+
+/* A segment: the straight line between input points a and b, split into a chain. */
+typedef struct t3_seg {
+    lh_index a, b;       /* endpoints, a before b in coordinates (lexicographic)      */
+    lh_index parent;     /* output segment number (PLC segments, facet ring edges);
+                            -1 for a diagonal a facet's triangulation made            */
+    lh_index marker;     /* the segment's marker, else its first facet's             */
+    lh_index facet;      /* a facet it lies on, -1 for a free segment                */
+} t3_seg;
+
+/* A point of a chain: point p at parameter t of segment seg (a + t (b - a)); in the
+ * queue of new points, seg < 0 means a point inside patch -1 - seg. */
+typedef struct t3_node {
+    lh_index seg, p;
+    double t;
+} t3_node;
+
+typedef struct t3_ctx {
+    lh_allocator al;
+    lh_error *err;
+    const lh_plc *g;
+    const lh_tetmesh_options *opt;
+    lh_pred *pred;
+    lh_tri *dt;             /* the Delaunay tetrahedralization of every point so far  */
+    size_t n_input;         /* points of the PLC                                      */
+    size_t n, n_cap;        /* points so far: the PLC's, then the Steiner points      */
+    double *xyz;            /* 3n                                                      */
+    const lh_index *dup;    /* lh_tri_duplicate_of (valid until the next insertion)   */
+    /* constraints */
+    size_t tri_count;
+    lh_index *tri;          /* 3 per facet triangle, representative point indices     */
+    lh_index *tri_facet;    /* the facet of each                                      */
+    lh_index *tri_seg;      /* 3 per triangle: edge k (corner k to k+1)'s segment, -1
+                               for a diagonal inside a planar facet (no constraint)    */
+    size_t seg_count;
+    t3_seg *seg;
+    lh_index *seg_key;      /* 3 per segment: its endpoints (smaller index first) and
+                               its number, sorted: edge to segment lookup             */
+    /* patches: what must be a union of mesh faces — a planar facet whole, or one
+       triangle of a facet that is not planar */
+    size_t patch_count;
+    lh_index *patch_first;  /* patch_count + 1 offsets into patch_tri                 */
+    lh_index *patch_tri;    /* triangle indices                                        */
+    lh_index *patch_facet;  /* the facet of each patch                                 */
+    signed char *patch_axis;/* +-(1 + the coordinate dropped to project the patch to
+                               2D), signed as the patch's normal along it             */
+    /* Steiner points inside patches: pnode sorted by patch (seg holds the patch) */
+    size_t pnode_count, pnode_cap;
+    t3_node *pnode;
+    lh_index *pnode_first;  /* patch_count + 1                                        */
+    /* chains: nodes sorted by (seg, t); chain of segment s: node_first[s] .. [s+1] */
+    size_t node_count, node_cap;
+    t3_node *node;
+    lh_index *node_first;   /* seg_count + 1                                          */
+    /* the round's new points */
+    size_t new_count, new_cap;
+    double *new_xyz;        /* 3 per new point                                        */
+    t3_node *new_node;      /* where each goes (p < 0 until numbered)                 */
+    /* stars: the tetrahedra around each vertex, rebuilt after each insertion */
+    lh_index *star_first;   /* n + 1                                                   */
+    lh_index *star;
+    lh_index *stamp;        /* per point, -1 or a mark (recover_faces.c)              */
+    size_t stamp_cap;
+    lh_index *vbuf, *fbuf, *ebuf; /* scratch: points, faces, edges                    */
+    size_t vcap, fcap, ecap;
+    size_t steiner;         /* Steiner points inserted                                */
+    size_t rounds;
+} t3_ctx;
+
+/* recover.c: err->message = "LINE: " (when line > 0) + the formatted text; returns st. */
+lh_status lh__t3_say(t3_ctx *c, lh_status st, size_t line, const char *fmt, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+/* Room for need indices in *buf (capacity *cap), its contents kept. */
+lh_status lh__t3_room(t3_ctx *c, lh_index **buf, size_t *cap, size_t need);
+/* The rounds, until every constraint is in the mesh. */
+lh_status lh__t3_recover(t3_ctx *c);
+
+/* plc_check.c: the PLC's arrays, indices and coordinates. */
+lh_status lh__t3_plc_check(t3_ctx *c);
+
+/* recover_setup.c: the triangles (on representative points, checked, without
+ * repeats) and the segments: the triangles' edges and the PLC's segments. */
+struct lh__facet_tris;
+lh_status lh__t3_constraints(t3_ctx *c, const struct lh__facet_tris *ft);
+/* Exact: p, q, r on one line. */
+int lh__t3_collinear(lh_pred *pred, const double *p, const double *q, const double *r);
+
+/* recover_star.c: the stars of the current mesh; edge and face membership. */
+lh_status lh__t3_stars(t3_ctx *c);
+int lh__t3_has_edge(const t3_ctx *c, lh_index p, lh_index q);
+int lh__t3_has_face(const t3_ctx *c, lh_index a, lh_index b, lh_index d);
+
+/* recover_split.c: queues a split of subsegment (i, i+1) of segment s's chain. */
+lh_status lh__t3_split(t3_ctx *c, lh_index s, size_t i);
+/* The chain of segment s as point indices: a, its nodes' points in order, b; written
+ * into buf as far as cap allows; returns the chain's length. */
+size_t lh__t3_chain(const t3_ctx *c, lh_index s, lh_index *buf, size_t cap);
+/* Inserts the queued split points, merges them into the chains, rebuilds the stars. */
+lh_status lh__t3_commit(t3_ctx *c);
+/* Sorts the chains' nodes (by segment, then parameter) and rebuilds node_first. */
+lh_status lh__t3_chains_sort(t3_ctx *c);
+
+/* Queues new point x (p < 0) or existing point p for segment seg at parameter t, or
+ * (seg < 0) inside patch -1 - seg. */
+lh_status lh__t3_queue(t3_ctx *c, lh_index seg, double t, lh_index p, const double x[3]);
+/* The segment of edge p q, or -1. */
+lh_index lh__t3_seg_of(const t3_ctx *c, lh_index p, lh_index q);
+
+/* recover_faces.c: *ok = 1 if patch k is a union of mesh faces; else *ok = 0 and,
+ * when split is set, a split queued: its longest uncovered subsegment, else a point
+ * inside it where its faces stop short. */
+lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int split, int *ok);
+/* The faces covering patch k (once lh__t3_patch_check said ok), as sorted triples:
+ * *faces points into scratch valid until the next call. */
+lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t *count);
+
+#endif
