@@ -127,10 +127,12 @@ int lh_cli_mesh3(const lh_cli_mesh3_args *a)
     if (a->output && !lh_cli_out_check("mesh", a->output, a->force, a->file)) return LH_EXIT_FAIL;
     lh_cli_plc in;
     if (!lh_cli_plc_load(&in, "mesh", a->file)) return LH_EXIT_INPUT;
+    lh_tetmesh_options opt = a->opt;
+    if (lh_cli_plc_is_points(&in)) opt.convex_hull = 1; /* nothing bounds a point set but its hull */
     lh_error err;
     lh_tetmesh *m = NULL;
     const double t0 = lh_cli_seconds();
-    lh_status st = lh_tetrahedralize(&in.g, &a->opt, &m, &err);
+    lh_status st = lh_tetrahedralize(&in.g, &opt, &m, &err);
     const double secs = lh_cli_seconds() - t0;
     int rc;
     if (st != LH_OK) {

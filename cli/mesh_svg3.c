@@ -139,6 +139,12 @@ static void legend(FILE *f, const lh_tetmesh *m, const lh_index *mk, size_t nf, 
         for (int j = 0; j < n; j++) dup |= seen[j] == mk[i];
         if (!dup) seen[n++] = mk[i];
     }
+    for (int i = 1; i < n; i++) /* ascending */
+        for (int j = i; j > 0 && seen[j - 1] > seen[j]; j--) {
+            const lh_index t = seen[j];
+            seen[j] = seen[j - 1];
+            seen[j - 1] = t;
+        }
     for (int j = 0; j < n; j++) {
         char c[8];
         colour(seen[j], 1, c);

@@ -140,6 +140,15 @@ static void wanted(const tsw *o, int want[F_COUNT])
     want[F_MESH] = o->g;
 }
 
+/* Whether some point has a nonzero marker: the .node's marker column, else none. */
+static int any_marker(const lh_tetmesh *m)
+{
+    const lh_index *pm = lh_tetmesh_point_markers(m);
+    for (size_t i = 0; i < lh_tetmesh_point_count(m); i++)
+        if (pm[i]) return 1;
+    return 0;
+}
+
 typedef struct outputs {
     const tsw *o;
     const lh_cli_plc *in;
@@ -157,11 +166,11 @@ static lh_status write_file(const outputs *w, int which, FILE *f)
                       lh_tetmesh_neighbors(m), NULL, NULL};
     switch (which) {
     case F_NODE:
-        return lh_node_marker_write(f, &v, markers && w->in->g.point_marker ? lh_tetmesh_point_markers(m) : NULL,
+        return lh_node_marker_write(f, &v, markers && any_marker(m) ? lh_tetmesh_point_markers(m) : NULL,
                                     w->first);
-    case F_ELE: return lh_ele_attr_write(f, &v, w->o->A ? lh_tetmesh_tet_attrs(m) : NULL, w->first);
+    case F_ELE: return lh_ele_attr_write(f, &v, w->o->A && w->o->p ? lh_tetmesh_tet_attrs(m) : NULL, w->first);
     case F_NEIGH: return lh_neigh_write(f, &v, w->first);
-    case F_VTK: return lh_vtk_write(f, &v, w->o->A ? lh_tetmesh_tet_attrs(m) : NULL, NULL);
+    case F_VTK: return lh_vtk_write(f, &v, w->o->A && w->o->p ? lh_tetmesh_tet_attrs(m) : NULL, NULL);
     case F_FACE:
         v.k = 2;
         if (w->o->f) {
@@ -173,7 +182,7 @@ static lh_status write_file(const outputs *w, int which, FILE *f)
     case F_EDGE:
         v.k = 1, v.count = w->edges.n, v.cells = w->edges.v, v.neighbors = NULL;
         return lh_edge_write(f, &v, markers ? w->edges.mark : NULL, w->first);
-    default: return lh_cli_tetmesh_medit(f, m, markers, w->o->A, "tetgen");
+    default: return lh_cli_tetmesh_medit(f, m, markers, w->o->A && w->o->p, "tetgen");
     }
 }
 
@@ -202,9 +211,9 @@ static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *
 {
     lh_tetmesh_options opt;
     lh_tetmesh_options_default(&opt);
-    opt.convex_hull = o->c;
+    opt.convex_hull = o->c || lh_cli_plc_is_points(in); /* nothing bounds a point set but its hull */
     opt.boundary_steiner = !o->Y;
-    opt.region_attributes = o->A;
+    opt.region_attributes = o->A && o->p; /* regions are a PLC's: TetGen's -A needs -p */
     if (o->S) opt.max_steiner = o->steiner;
     lh_error err;
     lh_tetmesh *m = NULL;

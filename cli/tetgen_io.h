@@ -28,6 +28,9 @@ int lh_cli_plc_path(const char *path, size_t *stem);
  * standard error. */
 int lh_cli_plc_load(lh_cli_plc *in, const char *cmd, const char *path);
 void lh_cli_plc_free(lh_cli_plc *in);
+/* Whether the input is points only (no facet, no segment): its mesh is the
+ * Delaunay tetrahedralization of their convex hull. */
+int lh_cli_plc_is_points(const lh_cli_plc *in);
 /* Leaves only the points (TetGen without -p: a Delaunay tetrahedralization). */
 void lh_cli_plc_points_only(lh_cli_plc *in);
 /* Prints lh_tetrahedralize's (or another call's) failure: "lifthull CMD: FILE:..." */

@@ -116,6 +116,8 @@ void lh_cli_plc_free(lh_cli_plc *in)
     memset(in, 0, sizeof *in);
 }
 
+int lh_cli_plc_is_points(const lh_cli_plc *in) { return !in->g.facet_count && !in->g.segment_count; }
+
 void lh_cli_plc_points_only(lh_cli_plc *in)
 {
     lh_plc *g = &in->g;
@@ -209,7 +211,7 @@ void lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m)
     fprintf(out, "Statistics:\n\n");
     fprintf(out, "  Input points: %zu (%zu duplicates merged)\n", s.input_points, s.duplicates_merged);
     fprintf(out, "  Input facets: %zu (%zu not exactly planar)\n", g->facet_count, s.facets_nonplanar);
-    fprintf(out, "  Input segments: %zu\n  Input holes: %zu (%zu ignored)\n", g->segment_count, g->hole_count,
+    fprintf(out, "  Input free segments: %zu\n  Input holes: %zu (%zu ignored)\n", g->segment_count, g->hole_count,
             s.holes_ignored);
     fprintf(out, "  Input regions: %zu (%zu ignored)\n\n", g->region_count, s.regions_ignored);
     fprintf(out, "  Mesh points: %zu\n  Mesh tetrahedra: %zu\n", lh_tetmesh_point_count(m), s.tets);

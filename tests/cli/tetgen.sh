@@ -137,6 +137,45 @@ expect "coplanar points" 3 '^lifthull tetgen: plane\.node: ' '' -- "$lh" tetgen 
 absent bad.1.node flat.1.node plane.1.node plane.1.ele
 cd ..
 
+# a PLC: box.poly (the unit cube, facets marked 1..6, one region of attribute 7)
+fresh box.poly
+expect "-pA box.poly" 0 '' '^box\.1: 8 points, 6 tetrahedra, 12 boundary faces \(0 Steiner points\)' -- \
+  "$lh" tetgen -pAe box.poly
+same "-pA .ele header" "$(line box.1.ele 1)" "6 4 1"
+same "-pA attributes" "$(awk 'NR > 1 { print $6 }' box.1.ele | sort -u)" "7"
+same "-p .face header" "$(line box.1.face 1)" "12 1"
+same "-p face markers" "$(awk 'NR > 1 { print $5 }' box.1.face | sort | uniq -c | tr -s ' ' | tr '\n' '/')" \
+  " 2 1/ 2 2/ 2 3/ 2 4/ 2 5/ 2 6/"
+same "-pe edges on segments" "$(awk 'NR > 1 && $4 != 0' box.1.edge | wc -l | tr -d ' ')" "12"
+read -r vol least < <(volume box.1.node box.1.ele)
+same "-p volume" "$vol" "6"
+# without -p: the points only, no markers on .face, no attributes
+expect "box.poly without -p" 0 '' '' -- "$lh" tetgen -AQ box.poly
+same "no -p .face header" "$(line box.1.face 1)" "12 0"
+same "no -p .ele header" "$(line box.1.ele 1)" "6 4 0"
+# a .poly without points takes BASE.node's; -I then would write over that input
+grep -v '^#' box.poly | awk 'NR == 1 { print "0 3 0 0"; next } NR > 9' > hollow.poly
+grep -v '^#' box.poly | sed -n 1,9p > hollow.node
+expect "hollow.poly + hollow.node" 0 '' '' -- "$lh" tetgen -pAQ hollow.poly
+same "hollow = box" "$(cmp -s hollow.1.ele box.1.ele || true; awk 'NR > 1' hollow.1.face | md5sum)" \
+  "$(cmp -s hollow.1.ele box.1.ele || true; "$lh" tetgen -pAQ box.poly; awk 'NR > 1' box.1.face | md5sum)"
+expect "-pI over the .node" 1 "^lifthull tetgen: 'hollow\.node' is an input file; it is not overwritten$" '' -- \
+  "$lh" tetgen -pIQ hollow.poly
+absent hollow.ele hollow.face
+# bad .poly: the reader's FILE:LINE:COL
+printf '8 3 0 0\n1 0 0 0\n' > bad.poly
+expect "truncated .poly" 3 '^lifthull tetgen: bad\.poly:[0-9]+:[0-9]+: ' '' -- "$lh" tetgen -p bad.poly
+absent bad.1.node
+cd ..
+
+# an OFF surface: numbered from 0 as the file; -I names without the iteration number
+fresh cube.off
+expect "-pI cube.off" 0 '' '^cube: 8 points' -- "$lh" tetgen -pI cube.off
+exists cube.node cube.ele cube.face
+same "OFF numbered from 0" "$(line cube.node 2)" "0 0 0 0"
+same "OFF .face header" "$(line cube.face 1)" "12 1"
+cd ..
+
 # -d and -C on a point set. TO UPDATE when lh_plc_intersections and lh_tetmesh_check
 # land (mesh3d/stubs.c): either the stub's "not written yet" or the real verdict.
 either() { # NAME CODE1 REGEX1 CODE2 REGEX2 -- COMMAND: stdout+stderr match one pair
@@ -149,6 +188,16 @@ fresh cube.node
 either "-d points" 3 '^lifthull tetgen: cube\.node: lh_plc_intersections: not written yet$' \
   0 '^cube\.node: no facets intersect \(0 facets\)$' -- "$lh" tetgen -d cube.node
 absent cube.1.node cube.1.ele cube.1.face
+either "-pC box.poly" 1 '^lifthull tetgen: the check could not run: lh_tetmesh_check: not written yet$' \
+  0 '^check: the mesh is valid and conforms to the input \(exact; 0 Steiner points' -- \
+  "$lh" tetgen -pQC "$data/box.poly"
+# two crossing triangles: -d lists the pair and meshes nothing; -p refuses the input
+cp "$data/crossing.off" .
+either "-d crossing" 3 '^lifthull tetgen: crossing\.off: lh_plc_intersections: not written yet$' \
+  1 '^crossing\.off: 1 pair of facets intersect$' -- "$lh" tetgen -d crossing.off
+absent crossing.1.node crossing.1.ele crossing.1.face
+expect "-p crossing" 3 '^lifthull tetgen: crossing\.off: ' '' -- "$lh" tetgen -p crossing.off
+absent crossing.1.node crossing.1.ele crossing.1.face
 either "-C points" 1 '^lifthull tetgen: the check could not run: lh_tetmesh_check: not written yet$' \
   0 '^check: the mesh is valid \(exact; 0 Steiner points' -- "$lh" tetgen -QC cube.node
 cd ..

@@ -43,6 +43,26 @@ if { [ $rc -eq 1 ] && matches out.txt 'the check could not run: lh_tetmesh_check
    { [ $rc -eq 0 ] && matches out.txt '^check: the mesh is valid'; }; then ok; else bad "--check: $rc $(cat out.txt)"; fi
 cd ..
 
+# a PLC: a .poly with 3 coordinates is 3D; the Medit file carries the facet markers and,
+# with --region-attributes, the region attribute; the picture one colour per marker
+fresh box.poly cube.off
+expect "box.poly -o .mesh" 0 '' '^b\.mesh: 8 points, 6 tetrahedra, 12 boundary faces' -- \
+  "$lh" mesh box.poly --region-attributes -o b.mesh
+same "facet markers" "$(sed -n '/^Triangles/,/^Tetrahedra/p' b.mesh | awk 'NF == 4 { print $4 }' | sort -u | tr '\n' ' ')" \
+  "1 2 3 4 5 6 "
+same "region references" "$(sed -n '/^Tetrahedra/,/^End/p' b.mesh | awk 'NF == 5 { print $5 }' | sort -u)" "7"
+expect "box.poly -o .vtu" 0 '' '' -- "$lh" mesh box.poly --region-attributes --ascii -o b.vtu -q
+matches b.vtu 'Name="region"' && ok || bad ".vtu without the region field"
+expect "box.poly -o .svg" 0 '' '' -- "$lh" mesh box.poly -o b.svg -q
+same "svg legend markers" "$(grep -o '<text x="[0-9.]*" y="[-0-9.]*">[0-9]</text>' b.svg | sed 's/.*>\([0-9]\)<.*/\1/' | tr '\n' ' ')" \
+  "1 2 3 4 5 6 "
+same "svg colours" "$(grep -o '^<path d="[^"]*" fill="#[0-9a-f]*"' b.svg | sed 's/.*fill=//' | sort -u | wc -l | tr -d ' ')" "6"
+expect "cube.off -o .msh" 0 '' '^c\.msh: 8 points, 6 tetrahedra' -- "$lh" mesh cube.off -o c.msh
+expect "--no-boundary-steiner --max-steiner 0 --convex-hull" 0 '' '' -- \
+  "$lh" mesh cube.off --no-boundary-steiner --max-steiner 0 --convex-hull -o d.msh -q
+same "options: same mesh" "$(cmp -s c.msh d.msh && echo same)" "same"
+cd ..
+
 # refused for 3D input: 2D refinement options and 2D formats (exit 2, nothing written)
 fresh cube.node
 for o in "--min-angle 20" --quality "--max-area 1" --conforming --ignore-holes "--smooth 2"; do
