@@ -184,13 +184,13 @@ either() { # NAME CODE1 REGEX1 CODE2 REGEX2 -- COMMAND: stdout+stderr match one 
   if { [ $got -eq "$c1" ] && matches out.txt "$r1"; } || { [ $got -eq "$c2" ] && matches out.txt "$r2"; }; then ok
   else bad "$name: exit $got: $(head -c 300 out.txt)"; fi
 }
-fresh cube.node
+fresh cube.node box.poly
 either "-d points" 3 '^lifthull tetgen: cube\.node: lh_plc_intersections: not written yet$' \
   0 '^cube\.node: no facets intersect \(0 facets\)$' -- "$lh" tetgen -d cube.node
 absent cube.1.node cube.1.ele cube.1.face
 either "-pC box.poly" 1 '^lifthull tetgen: the check could not run: lh_tetmesh_check: not written yet$' \
   0 '^check: the mesh is valid and conforms to the input \(exact; 0 Steiner points' -- \
-  "$lh" tetgen -pQC "$data/box.poly"
+  "$lh" tetgen -pQC box.poly
 # two crossing triangles: -d lists the pair and meshes nothing; -p refuses the input
 cp "$data/crossing.off" .
 either "-d crossing" 3 '^lifthull tetgen: crossing\.off: lh_plc_intersections: not written yet$' \
