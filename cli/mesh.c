@@ -81,7 +81,7 @@ static const char help[] =
     "  lifthull mesh examples/A.poly --min-angle 30 --max-area 0.01 -o A.vtu -f\n"
     "  lifthull mesh examples/A.poly --quality -o A.svg -f\n"
     "  lifthull mesh examples/lake.json --min-angle 25 -o lake.node -f  # and .ele .poly\n"
-    "  lifthull mesh examples/cube.node -o cube.svg -f    # 3D: the boundary, pictured\n"
+    "  lifthull mesh examples/box.poly -o box.svg -f      # 3D: the boundary, pictured\n"
     "\n"
     "exit codes: 0 done (triangles below the bounds are reported, not an error), 1 out\n"
     "of memory or an output file could not be written, 2 usage, 3 bad input file\n"

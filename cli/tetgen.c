@@ -51,6 +51,7 @@ static const char *const usage_text =
     "not implemented yet (refused): -q -a (quality refinement), -r -m -O -R -i -w -v -o2\n"
     "\n"
     "examples:\n"
+    "  lifthull tetgen -pA examples/box.poly     # examples/box.1.node .ele .face\n"
     "  lifthull tetgen examples/cube.node        # Delaunay: examples/cube.1.node .ele .face\n"
     "  lifthull tetgen -fenkV examples/cube.node # every face and edge, .neigh, .vtk, statistics\n"
     "\n"
