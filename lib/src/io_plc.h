@@ -13,6 +13,8 @@
 
 #include "io_internal.h"
 
+#include <stdint.h>
+
 typedef struct lh__plc_build {
     lh_plc *g;
     size_t cap_points, cap_facets, cap_polygons, cap_vertices, cap_facet_holes;
@@ -52,6 +54,29 @@ lh_status lh__plc_read_ply(lh__scan *s, lh__plc_build *b);
 lh_status lh__plc_read_stl(lh__scan *s, lh__plc_build *b);
 lh_status lh__plc_read_medit(lh__scan *s, lh__plc_build *b);
 lh_status lh__plc_read_obj(lh__scan *s, lh__plc_build *b);
+
+/* Binary records (io_plc_bin.c). Copies the next k bytes of s into buf: 1, or 0 when
+ * the input ends first (s->read_error tells a read error). */
+int lh__plc_bytes(lh__scan *s, unsigned char *buf, size_t k);
+/* buf[0..k) (k <= 8) as an unsigned integer in the given byte order. */
+uint64_t lh__plc_unpack(const unsigned char *buf, size_t k, int big_endian);
+/* The float32 of IEEE 754 bits (the low 32 of bits) as a double. */
+double lh__plc_float32(uint64_t bits);
+/* Writes "NAME:LINE:COL: WHAT N: TEXT" (at t; t NULL, a binary record: "NAME: WHAT N:
+ * TEXT") into s->err and returns st. */
+lh_status lh__plc_record_fail(lh__scan *s, lh_status st, const lh__token *t, const char *what,
+                              size_t n, const char *fmt, ...)
+#if defined(__GNUC__) || defined(__clang__)
+    __attribute__((format(printf, 6, 7)))
+#endif
+    ;
+/* The input ended inside record N: "...: WHAT N: the input ends (D PLURAL declared)"
+ * (LH_ERR_PARSE), or "read error" (LH_ERR_IO). */
+lh_status lh__plc_record_end(lh__scan *s, const lh__token *t, const char *what, size_t n,
+                             size_t declared, const char *plural);
+/* A builder failure st (LH_ERR_NOMEM, LH_ERR_TOO_LARGE) named after record N. */
+lh_status lh__plc_record_built(lh__scan *s, lh_status st, const lh__token *t, const char *what,
+                               size_t n);
 
 /* The format of name's extension (case-insensitive), else of the first bytes
  * head[0..len); LH_PLC_OFF when nothing tells. */

@@ -36,14 +36,13 @@ lh_plc_format lh__plc_detect(const char *name, const unsigned char *head, size_t
     for (size_t i = 0; name && i < sizeof by_ext / sizeof by_ext[0]; i++)
         if (ends_with(name, by_ext[i].ext)) return by_ext[i].f;
     if (starts_with(head, len, "ply")) return LH_PLC_PLY;
-    if (starts_with(head, len, "solid") || len >= 84) {
-        /* ASCII STL starts "solid"; so may a binary one's 80-byte header: then the
-           facet count after it must match the length, which the reader checks. */
-        if (starts_with(head, len, "solid")) return LH_PLC_STL;
-    }
+    /* ASCII STL starts "solid", and so may a binary one's 80-byte header: the reader
+       tells them apart (io_plc_stl.c). */
+    if (starts_with(head, len, "solid")) return LH_PLC_STL;
     if (starts_with(head, len, "MeshVersionFormatted")) return LH_PLC_MEDIT;
+    /* Binary STL (any header): its count and records hold NULs, which no text has. */
+    if (memchr(head, 0, len)) return LH_PLC_STL;
     for (size_t i = 0; i + 1 < len; i++) {
-        if (head[i] == 0) return LH_PLC_STL; /* binary: a NUL in the first bytes */
         if ((i == 0 || head[i - 1] == '\n') && (head[i] == 'v' || head[i] == 'f') &&
             (head[i + 1] == ' ' || head[i + 1] == '\t'))
             return LH_PLC_OBJ;

@@ -1,0 +1,751 @@
+/*
+ * check_plc.c — lh_tetmesh_check's conformity half: every segment of the PLC (free
+ * segments, then the facets' polygon edges, each once) is a chain of subsegments
+ * from one endpoint to the other, and every facet is the union of its subfaces.
+ *
+ * A facet F is the union of its subfaces S_F when, in F's plane projected to the
+ * coordinate plane of F's normal's largest component (an affine bijection of the
+ * plane, so areas keep their ratios and containment its answers):
+ *  (a) every subface has nonzero area there and the sum of |area| over S_F equals
+ *      the area of F (outer polygon, plus polygons outside it, minus the polygons
+ *      around a hole point of F), exactly (sums of 2x2 determinants, lh__detsum);
+ *  (b) every edge in exactly one subface of S_F is a subsegment of one of F's
+ *      polygon edges, and no edge is in three.
+ * By (b) the number of subfaces covering a point changes only across F's polygon
+ * edges, so it is constant on each piece of F; by (a) it is 1 on F (a piece with 0
+ * would need one with 2 or more, whose boundary edges (b) forbids inside F unless
+ * a hole of F is filled and an equal area elsewhere left bare — a fault that (a)
+ * and (b) cannot see; docs/meshing3d.md, "Checking a mesh").
+ * Points not exactly in F's plane (or on a segment's line) are accepted when they
+ * are Steiner points (index >= g->n) within rounding's reach of it (reach()), and
+ * counted once each in off_exact.
+ */
+#include "check.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct hrec { lh_index from, to, sub; } hrec;
+typedef struct prec { lh_index a, b, pos; } prec;
+
+typedef struct pchk {
+    lh__tchk *c;
+    const lh_plc *g;
+    size_t ns;          /* segments                                                */
+    lh_index *seg;      /* 2 per segment                                            */
+    hrec *h;            /* 2 per subsegment, sorted by (from, to)                   */
+    lh_index *seg_of;   /* per subsegment: the first segment whose chain has it     */
+    lh_index *pt_seg;   /* per point: the first segment whose chain passes it, -1   */
+    lh_index *plane;    /* 3 per facet: first three non-collinear points, or -1     */
+    int *axis;          /* per facet: the coordinate its projection drops           */
+    unsigned char *planar;
+    signed char *eps;   /* per polygon: +1 area, -1 hole, 0 neither                 */
+    lh_index *par;      /* per subface: its facet or -1                             */
+    size_t *ffirst;     /* facet_count + 1 offsets into flist                       */
+    lh_index *flist;    /* subfaces by facet                                        */
+    prec *pe;           /* scratch: a facet's subface edges (3 per subface)         */
+    prec *re;           /* scratch: a facet's polygon edges                         */
+    lh__detsum *sum, *s2, *s1;
+} pchk;
+
+static size_t poly_len(const lh_plc *g, size_t p)
+{
+    return (size_t)(g->polygon_first[p + 1] - g->polygon_first[p]);
+}
+static const lh_index *poly_v(const lh_plc *g, size_t p)
+{
+    return g->polygon_vertices + g->polygon_first[p];
+}
+
+/* ---- the PLC's own consistency --------------------------------------------------- */
+
+static lh_status bad_plc(lh__tchk *c, const char *what, size_t i)
+{
+    return lh__error_say(c->err, LH_ERR_INVALID_ARGUMENT, "the PLC is malformed: %s %zu", what,
+                         i);
+}
+
+static int offsets_ok(const lh_index *first, size_t count, size_t total)
+{
+    if (first[0] < 0) return 0;
+    for (size_t i = 0; i < count; i++)
+        if (first[i + 1] < first[i]) return 0;
+    return (size_t)first[count] <= total;
+}
+
+static lh_status check_g(lh__tchk *c)
+{
+    const lh_plc *g = c->g;
+    if (g->n > c->n)
+        return lh__error_say(c->err, LH_ERR_INVALID_ARGUMENT,
+                             "the mesh has %zu points, fewer than the PLC's %zu", c->n, g->n);
+    for (size_t i = 0; g->xyz && i < 3 * g->n; i++)
+        if (g->xyz[i] != c->xyz[i])
+            return lh__error_say(c->err, LH_ERR_INVALID_ARGUMENT,
+                                 "the PLC's point %zu is not the mesh's point %zu", i / 3, i / 3);
+    if (g->facet_count && (!g->facet_first || !g->polygon_first || !g->polygon_vertices))
+        return bad_plc(c, "facet arrays NULL with facets:", g->facet_count);
+    if (g->facet_count && (!offsets_ok(g->facet_first, g->facet_count, g->polygon_count) ||
+                           !offsets_ok(g->polygon_first, g->polygon_count, SIZE_MAX)))
+        return bad_plc(c, "offsets out of order, facets:", g->facet_count);
+    for (size_t i = 0; g->facet_count && i < (size_t)g->polygon_first[g->polygon_count]; i++)
+        if (g->polygon_vertices[i] < 0 || (size_t)g->polygon_vertices[i] >= g->n)
+            return bad_plc(c, "polygon vertex out of range at", i);
+    if (g->segment_count && !g->segments) return bad_plc(c, "segments NULL:", g->segment_count);
+    for (size_t i = 0; i < 2 * g->segment_count; i++)
+        if (g->segments[i] < 0 || (size_t)g->segments[i] >= g->n)
+            return bad_plc(c, "segment endpoint out of range, segment", i / 2);
+    if (g->facet_count && g->facet_hole_first &&
+        (!offsets_ok(g->facet_hole_first, g->facet_count, SIZE_MAX) ||
+         (g->facet_hole_first[g->facet_count] && !g->facet_holes)))
+        return bad_plc(c, "facet hole offsets, facets:", g->facet_count);
+    for (size_t i = 0; g->facet_count && g->facet_hole_first &&
+                       i < 3 * (size_t)g->facet_hole_first[g->facet_count]; i++)
+        if (g->facet_holes[i] - g->facet_holes[i] != 0)
+            return bad_plc(c, "facet hole point not finite:", i / 3);
+    for (size_t s = 0; c->parents && s < c->nf; s++)
+        if (c->parents[s] < -1 || (c->parents[s] >= 0 && (size_t)c->parents[s] >= g->facet_count))
+            return lh__error_say(c->err, LH_ERR_INVALID_MESH,
+                                 "subface %zu has parent %lld, not a facet (0..%zu) or -1", s,
+                                 (long long)c->parents[s], g->facet_count ? g->facet_count - 1 : 0);
+    return LH_OK;
+}
+
+/* ---- exact helpers --------------------------------------------------------------- */
+
+/* p projected: the two coordinates other than axis. */
+static void proj(const double *p, int axis, double *q)
+{
+    q[0] = p[axis == 0 ? 1 : 0];
+    q[1] = p[axis == 2 ? 1 : 2];
+}
+
+static int orient3i(pchk *k, lh_index a, lh_index b, lh_index x, lh_index y)
+{
+    const double *p[4] = {lh__tchk_pt(k->c, a), lh__tchk_pt(k->c, b), lh__tchk_pt(k->c, x),
+                          lh__tchk_pt(k->c, y)};
+    return lh_orient(k->c->pr, 3, p);
+}
+
+/* Whether the points a, b, x of R^3 are collinear: every coordinate projection is. */
+static int collinear(pchk *k, const double *a, const double *b, const double *x)
+{
+    for (int axis = 0; axis < 3; axis++) {
+        double q[3][2];
+        proj(a, axis, q[0]), proj(b, axis, q[1]), proj(x, axis, q[2]);
+        const double *p[3] = {q[0], q[1], q[2]};
+        if (lh_orient(k->c->pr, 2, p) != 0) return 0;
+    }
+    return 1;
+}
+
+/* sign of sum_i orient_2(u, v, q_i), i < m (m = 1, or 3 for a triangle's centroid,
+ * orient_2 being affine in its last point): added into a zero scratch sum, read,
+ * taken away again (exactly zero after). */
+static int orient2_sum(pchk *k, const double *u, const double *v, const double (*q)[2], int m)
+{
+    const double *p[3] = {u, v, q[0]};
+    if (m == 1) return lh_orient(k->c->pr, 2, p);
+    for (int i = 0; i < m; i++) p[2] = q[i], lh__detsum_add(k->c->pr, k->s2, p, 0);
+    const int s = lh__detsum_sign(k->s2);
+    for (int i = 0; i < m; i++) p[2] = q[i], lh__detsum_add(k->c->pr, k->s2, p, 1);
+    return s;
+}
+
+/* sign of sum_i (q_i[j] - u[j]), i < m (the mean's coordinate j against u's). */
+static int coord_sum(pchk *k, const double (*q)[2], int m, const double *u, int j)
+{
+    if (m == 1) return (q[0][j] > u[j]) - (q[0][j] < u[j]);
+    const double *p[2] = {u + j, NULL};
+    for (int i = 0; i < m; i++) p[1] = q[i] + j, lh__detsum_add(k->c->pr, k->s1, p, 0);
+    const int s = lh__detsum_sign(k->s1);
+    for (int i = 0; i < m; i++) p[1] = q[i] + j, lh__detsum_add(k->c->pr, k->s1, p, 1);
+    return s;
+}
+
+/* The mean of q[0..m) against polygon p projected along axis: 1 strictly inside,
+ * 0 on its boundary, -1 outside (crossing number, every test exact). */
+static int in_ring(pchk *k, size_t p, int axis, const double (*q)[2], int m)
+{
+    const size_t len = poly_len(k->g, p);
+    const lh_index *v = poly_v(k->g, p);
+    int inside = 0;
+    for (size_t i = 0; i < len; i++) {
+        double u[2], w[2];
+        proj(lh__tchk_pt(k->c, v[i]), axis, u);
+        proj(lh__tchk_pt(k->c, v[(i + 1) % len]), axis, w);
+        const int cu = coord_sum(k, q, m, u, 1), cw = coord_sum(k, q, m, w, 1);
+        const int xu = coord_sum(k, q, m, u, 0), xw = coord_sum(k, q, m, w, 0);
+        const int s = cu * cw <= 0 ? orient2_sum(k, u, w, q, m) : 1;
+        if (s == 0 && xu * xw <= 0) return 0;
+        if ((cu < 0) != (cw < 0) && (cw < 0 ? s > 0 : s < 0)) inside ^= 1;
+    }
+    return inside ? 1 : -1;
+}
+
+/* Whether the mean of q[0..m) lies in facet f's closed region: in or on an area
+ * polygon and strictly inside no hole polygon. */
+static int in_facet(pchk *k, size_t f, const double (*q)[2], int m)
+{
+    int in = 0;
+    for (size_t p = (size_t)k->g->facet_first[f]; p < (size_t)k->g->facet_first[f + 1]; p++) {
+        if (k->eps[p] == 0) continue;
+        const int r = in_ring(k, p, k->axis[f], q, m);
+        if (k->eps[p] < 0 && r > 0) return 0;
+        if (k->eps[p] > 0 && r >= 0) in = 1;
+    }
+    return in;
+}
+
+/* ---- facets: planes, projections, polygon roles ------------------------------------ */
+
+static void facet_plane(pchk *k, size_t f)
+{
+    const lh_plc *g = k->g;
+    lh_index *pl = k->plane + 3 * f;
+    pl[0] = pl[1] = pl[2] = -1;
+    for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
+        for (size_t i = 0; i < poly_len(g, p); i++) {
+            const lh_index v = poly_v(g, p)[i];
+            const double *x = lh__tchk_pt(k->c, v);
+            if (pl[0] < 0) pl[0] = v;
+            else if (pl[1] < 0 && memcmp(x, lh__tchk_pt(k->c, pl[0]), 3 * sizeof *x)) pl[1] = v;
+            else if (pl[1] >= 0 && pl[2] < 0 &&
+                     !collinear(k, lh__tchk_pt(k->c, pl[0]), lh__tchk_pt(k->c, pl[1]), x))
+                pl[2] = v;
+        }
+}
+
+/* The axis of the largest normal component whose projection is not degenerate. */
+static int facet_axis(pchk *k, const lh_index *pl)
+{
+    const double *a = lh__tchk_pt(k->c, pl[0]), *b = lh__tchk_pt(k->c, pl[1]),
+                 *d = lh__tchk_pt(k->c, pl[2]);
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                 w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+    double nrm[3] = {fabs(u[1] * w[2] - u[2] * w[1]), fabs(u[2] * w[0] - u[0] * w[2]),
+                     fabs(u[0] * w[1] - u[1] * w[0])};
+    for (int tries = 0; tries < 3; tries++) {
+        int best = 0;
+        for (int i = 1; i < 3; i++)
+            if (nrm[i] > nrm[best]) best = i;
+        double q[3][2];
+        proj(a, best, q[0]), proj(b, best, q[1]), proj(d, best, q[2]);
+        const double *p[3] = {q[0], q[1], q[2]};
+        if (lh_orient(k->c->pr, 2, p) != 0) return best;
+        nrm[best] = -1;
+    }
+    return 0; /* not reached: three non-collinear points project well somewhere */
+}
+
+/* eps: the first polygon of 3 or more points is the outer one (+1); another is a
+ * hole (-1) around a hole point of the facet, a separate piece (+1) with a point
+ * outside the outer one, else a constraint inside the facet (0). */
+static void facet_roles(pchk *k, size_t f)
+{
+    const lh_plc *g = k->g;
+    const size_t p0 = (size_t)g->facet_first[f], p1 = (size_t)g->facet_first[f + 1];
+    size_t outer = p1;
+    for (size_t p = p0; p < p1; p++) {
+        k->eps[p] = 0;
+        if (poly_len(g, p) < 3) continue;
+        if (outer == p1) { outer = p, k->eps[p] = 1; continue; }
+        if (k->plane[3 * f] < 0) continue;
+        for (size_t h = g->facet_hole_first ? (size_t)g->facet_hole_first[f] : 0;
+             g->facet_hole_first && h < (size_t)g->facet_hole_first[f + 1]; h++) {
+            double q[1][2];
+            proj(g->facet_holes + 3 * h, k->axis[f], q[0]);
+            if (in_ring(k, p, k->axis[f], (const double(*)[2])q, 1) > 0) k->eps[p] = -1;
+        }
+        for (size_t i = 0; k->eps[p] == 0 && i < poly_len(g, p); i++) {
+            double q[1][2];
+            proj(lh__tchk_pt(k->c, poly_v(g, p)[i]), k->axis[f], q[0]);
+            if (in_ring(k, outer, k->axis[f], (const double(*)[2])q, 1) < 0) k->eps[p] = 1;
+        }
+    }
+}
+
+static void prepare_facets(pchk *k)
+{
+    const lh_plc *g = k->g;
+    for (size_t f = 0; f < g->facet_count; f++) {
+        facet_plane(k, f);
+        lh_index *pl = k->plane + 3 * f;
+        k->planar[f] = pl[2] >= 0;
+        k->axis[f] = pl[2] >= 0 ? facet_axis(k, pl) : 0;
+        for (size_t p = (size_t)g->facet_first[f]; k->planar[f] && p < (size_t)g->facet_first[f + 1]; p++)
+            for (size_t i = 0; i < poly_len(g, p); i++)
+                if (orient3i(k, pl[0], pl[1], pl[2], poly_v(g, p)[i]) != 0) k->planar[f] = 0;
+        if (pl[2] < 0) pl[0] = -1;
+        facet_roles(k, f);
+    }
+}
+
+/* ---- segments -------------------------------------------------------------------- */
+
+static int prec_cmp(const void *x, const void *y)
+{
+    const prec *p = x, *q = y;
+    if (p->a != q->a) return p->a < q->a ? -1 : 1;
+    if (p->b != q->b) return p->b < q->b ? -1 : 1;
+    return p->pos < q->pos ? -1 : p->pos > q->pos;
+}
+
+static int prec_pos_cmp(const void *x, const void *y)
+{
+    const prec *p = x, *q = y;
+    return p->pos < q->pos ? -1 : p->pos > q->pos;
+}
+
+static int hrec_cmp(const void *x, const void *y)
+{
+    const hrec *p = x, *q = y;
+    if (p->from != q->from) return p->from < q->from ? -1 : 1;
+    return p->to < q->to ? -1 : p->to > q->to;
+}
+
+/* The free segments, then the polygon edges (2-vertex polygons: one) in order of
+ * first appearance, each once. tmp holds one record per polygon vertex. */
+static void list_segments(pchk *k, prec *tmp)
+{
+    const lh_plc *g = k->g;
+    size_t m = 0;
+    for (size_t p = 0; g->facet_count && p < g->polygon_count; p++) {
+        const size_t len = poly_len(g, p);
+        for (size_t i = 0; len >= 2 && i < (len == 2 ? 1 : len); i++) {
+            const lh_index a = poly_v(g, p)[i], b = poly_v(g, p)[(i + 1) % len];
+            if (a != b) tmp[m] = (prec){a < b ? a : b, a < b ? b : a, (lh_index)m}, m++;
+        }
+    }
+    qsort(tmp, m, sizeof *tmp, prec_cmp);
+    size_t u = 0;
+    for (size_t i = 0; i < m; i++)
+        if (i == 0 || tmp[i].a != tmp[i - 1].a || tmp[i].b != tmp[i - 1].b) tmp[u++] = tmp[i];
+    qsort(tmp, u, sizeof *tmp, prec_pos_cmp);
+    if (g->segment_count) memcpy(k->seg, g->segments, 2 * g->segment_count * sizeof *k->seg);
+    k->ns = g->segment_count;
+    for (size_t i = 0; i < u; i++, k->ns++) {
+        k->seg[2 * k->ns] = tmp[i].a;
+        k->seg[2 * k->ns + 1] = tmp[i].b;
+    }
+}
+
+/* Rounding's reach: a Steiner point counts as on a line or plane up to rounding when
+ * it is within 64 machine epsilons of the largest coordinate involved (a rounded
+ * construction is within an ulp; text output at 16 digits within a few). The only
+ * tolerance of the check, and it decides only which points are counted in
+ * off_exact; a point beyond it is a fault. Evaluated in floating point: the
+ * distance's own error is far below the margin. */
+static double reach(const double *const *p, int m)
+{
+    double big = 0;
+    for (int i = 0; i < m; i++)
+        for (int j = 0; j < 3; j++) big = fabs(p[i][j]) > big ? fabs(p[i][j]) : big;
+    return 64 * DBL_EPSILON * big;
+}
+
+static void cross(const double *a, const double *b, const double *c, double *out)
+{
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                 w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    out[0] = u[1] * w[2] - u[2] * w[1], out[1] = u[2] * w[0] - u[0] * w[2];
+    out[2] = u[0] * w[1] - u[1] * w[0];
+}
+
+static double norm(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/* Whether x is within rounding's reach of the line a b. */
+static int near_line(const double *a, const double *b, const double *x)
+{
+    const double *p[3] = {a, b, x}, d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    double c[3];
+    cross(a, b, x, c);
+    return norm(c) <= reach(p, 3) * norm(d);
+}
+
+/* Whether x is within rounding's reach of the plane a b c. */
+static int near_plane(const double *a, const double *b, const double *c, const double *x)
+{
+    const double *p[4] = {a, b, c, x};
+    double n[3];
+    cross(a, b, c, n);
+    const double h = n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2]);
+    return fabs(h) <= reach(p, 4) * norm(n);
+}
+
+static void mark_off(pchk *k, lh_index v)
+{
+    if (!k->c->off[v]) k->c->off[v] = 1, k->c->off_count++;
+}
+
+static int strictly_between(double p, double x, double q)
+{
+    return (p < x && x < q) || (q < x && x < p);
+}
+
+/* The next point of segment s's chain from cur: b itself, else the nearest point
+ * exactly on the line a b strictly between cur and b along the axis, else the
+ * nearest Steiner point so between (*off set). -1 for none. */
+static const hrec *next_on(pchk *k, const hrec *h, size_t nh, lh_index a, lh_index b, int axis,
+                           int *off)
+{
+    const hrec *best = NULL;
+    int best_off = 1;
+    const double *pa = lh__tchk_pt(k->c, a), *pb = lh__tchk_pt(k->c, b);
+    const double cur = lh__tchk_pt(k->c, h->from)[axis];
+    for (size_t i = 0; i < nh && h[i].from == h->from; i++) {
+        if (h[i].to == b) { *off = 0; return h + i; }
+        const double *x = lh__tchk_pt(k->c, h[i].to);
+        if (!strictly_between(cur, x[axis], pb[axis])) continue;
+        const int is_off = !collinear(k, pa, pb, x);
+        if (is_off && ((size_t)h[i].to < k->g->n || !near_line(pa, pb, x))) continue;
+        if (!best || is_off < best_off ||
+            (is_off == best_off &&
+             strictly_between(cur, x[axis], lh__tchk_pt(k->c, best->to)[axis])))
+            best = h + i, best_off = is_off;
+    }
+    *off = best_off;
+    return best;
+}
+
+static lh_status walk_segment(pchk *k, size_t s)
+{
+    const lh_index a = k->seg[2 * s], b = k->seg[2 * s + 1];
+    const double *pa = lh__tchk_pt(k->c, a), *pb = lh__tchk_pt(k->c, b);
+    int axis = 0;
+    for (int i = 1; i < 3; i++)
+        if (fabs(pb[i] - pa[i]) > fabs(pb[axis] - pa[axis])) axis = i;
+    if (pa[axis] == pb[axis]) return LH_OK; /* coincident endpoints: no length */
+    const size_t nh = 2 * k->c->ne;
+    lh_index cur = a;
+    while (cur != b) {
+        const hrec key = {cur, -1, 0};
+        size_t lo = 0, hi = nh;
+        while (lo < hi) {
+            const size_t mid = lo + (hi - lo) / 2;
+            if (hrec_cmp(k->h + mid, &key) < 0) lo = mid + 1;
+            else hi = mid;
+        }
+        int off = 0;
+        const hrec *nx = lo < nh && k->h[lo].from == cur ? next_on(k, k->h + lo, nh - lo, a, b,
+                                                                   axis, &off) : NULL;
+        if (!nx)
+            return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
+                                 "segment %zu (%lld %lld) is not covered: its chain of "
+                                 "subsegments from %lld stops at %lld", s, (long long)a,
+                                 (long long)b, (long long)a, (long long)cur);
+        if (off) mark_off(k, nx->to);
+        if (k->seg_of[nx->sub] < 0) k->seg_of[nx->sub] = (lh_index)s;
+        if (nx->to != b && k->pt_seg[nx->to] < 0) k->pt_seg[nx->to] = (lh_index)s;
+        cur = nx->to;
+    }
+    return LH_OK;
+}
+
+static lh_status check_segments(pchk *k)
+{
+    const size_t ne = k->c->ne;
+    for (size_t s = 0; s < ne; s++) {
+        const lh_index a = k->c->edges[2 * s], b = k->c->edges[2 * s + 1];
+        k->h[2 * s] = (hrec){a, b, (lh_index)s};
+        k->h[2 * s + 1] = (hrec){b, a, (lh_index)s};
+        k->seg_of[s] = -1;
+    }
+    qsort(k->h, 2 * ne, sizeof *k->h, hrec_cmp);
+    for (size_t i = 0; i < k->c->n; i++) k->pt_seg[i] = -1;
+    for (size_t s = 0; s < k->ns; s++) {
+        const lh_status st = walk_segment(k, s);
+        if (st) return st;
+    }
+    return LH_OK;
+}
+
+/* ---- facets ---------------------------------------------------------------------- */
+
+static void face_proj(pchk *k, size_t s, int axis, double (*q)[2])
+{
+    for (int i = 0; i < 3; i++) proj(lh__tchk_pt(k->c, k->c->faces[3 * s + i]), axis, q[i]);
+}
+
+/* Whether subface s lies in facet f: its points in f's plane, they and its
+ * centroid in f's closed region. */
+static int facet_has(pchk *k, size_t f, size_t s)
+{
+    const lh_index *pl = k->plane + 3 * f, *v = k->c->faces + 3 * s;
+    if (pl[0] < 0 || !k->planar[f]) return 0;
+    for (int i = 0; i < 3; i++)
+        if (orient3i(k, pl[0], pl[1], pl[2], v[i]) != 0) return 0;
+    double q[3][2];
+    face_proj(k, s, k->axis[f], q);
+    for (int i = 0; i < 3; i++)
+        if (!in_facet(k, f, (const double(*)[2])q + i, 1)) return 0;
+    return in_facet(k, f, (const double(*)[2])q, 3);
+}
+
+/* Subfaces to facets by containment: first the facets at their PLC points, then all. */
+static lh_status assign_parents(pchk *k)
+{
+    const lh_plc *g = k->g;
+    const size_t nv = g->facet_count ? (size_t)g->polygon_first[g->polygon_count] : 0;
+    size_t *first = lh__alloc(&k->c->al, (g->n + 2) * sizeof *first);
+    lh_index *inc = lh__alloc(&k->c->al, (nv + 1) * sizeof *inc);
+    if (!first || !inc) {
+        lh__free(&k->c->al, first), lh__free(&k->c->al, inc);
+        return LH_ERR_NOMEM;
+    }
+    memset(first, 0, (g->n + 2) * sizeof *first);
+    for (size_t f = 0; f < g->facet_count; f++)
+        for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
+            for (size_t i = 0; i < poly_len(g, p); i++) first[poly_v(g, p)[i] + 2]++;
+    for (size_t v = 0; v < g->n; v++) first[v + 2] += first[v + 1];
+    for (size_t f = 0; f < g->facet_count; f++)
+        for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
+            for (size_t i = 0; i < poly_len(g, p); i++) inc[first[poly_v(g, p)[i] + 1]++] = (lh_index)f;
+    for (size_t s = 0; s < k->c->nf; s++) {
+        k->par[s] = -1;
+        for (int i = 0; i < 3 && k->par[s] < 0; i++) {
+            const lh_index v = k->c->faces[3 * s + i];
+            for (size_t j = (size_t)v < g->n ? first[v] : 0;
+                 (size_t)v < g->n && j < first[v + 1] && k->par[s] < 0; j++)
+                if (facet_has(k, (size_t)inc[j], s)) k->par[s] = inc[j];
+        }
+        for (size_t f = 0; k->par[s] < 0 && f < g->facet_count; f++)
+            if (facet_has(k, f, s)) k->par[s] = (lh_index)f;
+    }
+    lh__free(&k->c->al, first);
+    lh__free(&k->c->al, inc);
+    return LH_OK;
+}
+
+static void group_by_facet(pchk *k)
+{
+    const size_t nfac = k->g->facet_count;
+    memset(k->ffirst, 0, (nfac + 2) * sizeof *k->ffirst);
+    for (size_t s = 0; s < k->c->nf; s++)
+        if (k->par[s] >= 0) k->ffirst[k->par[s] + 2]++;
+    for (size_t f = 0; f < nfac; f++) k->ffirst[f + 2] += k->ffirst[f + 1];
+    for (size_t s = 0; s < k->c->nf; s++)
+        if (k->par[s] >= 0) k->flist[k->ffirst[k->par[s] + 1]++] = (lh_index)s;
+}
+
+static lh_status not_covered(pchk *k, size_t f, const char *why, size_t s)
+{
+    const lh_index *v = k->c->faces + 3 * s;
+    return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
+                         "facet %zu is not covered: %s (subface %zu (%lld %lld %lld))", f, why,
+                         s, (long long)v[0], (long long)v[1], (long long)v[2]);
+}
+
+/* (a): the subfaces' |area| minus the facet's, exactly; off-plane points. */
+static lh_status facet_area(pchk *k, size_t f)
+{
+    const lh_index *pl = k->plane + 3 * f, *list = k->flist + k->ffirst[f];
+    const size_t cnt = k->ffirst[f + 1] - k->ffirst[f];
+    const int axis = k->axis[f];
+    for (size_t i = 0; i < cnt; i++) {
+        const size_t s = (size_t)list[i];
+        for (int j = 0; k->planar[f] && j < 3; j++) {
+            const lh_index v = k->c->faces[3 * s + j];
+            if (orient3i(k, pl[0], pl[1], pl[2], v) == 0) continue;
+            if ((size_t)v < k->g->n) return not_covered(k, f, "an input point off its plane", s);
+            if (!near_plane(lh__tchk_pt(k->c, pl[0]), lh__tchk_pt(k->c, pl[1]),
+                            lh__tchk_pt(k->c, pl[2]), lh__tchk_pt(k->c, v)))
+                return not_covered(k, f, "a Steiner point off its plane beyond rounding", s);
+            mark_off(k, v);
+        }
+        double q[3][2];
+        face_proj(k, s, axis, q);
+        const double *p[3] = {q[0], q[1], q[2]};
+        const int o = lh_orient(k->c->pr, 2, p);
+        if (o == 0) return not_covered(k, f, "a subface without area in its plane", s);
+        lh__detsum_add(k->c->pr, k->sum, p, o < 0);
+    }
+    const lh_plc *g = k->g;
+    for (size_t pg = (size_t)g->facet_first[f]; pg < (size_t)g->facet_first[f + 1]; pg++) {
+        if (k->eps[pg] == 0) continue;
+        const size_t len = poly_len(g, pg);
+        double q[3][2];
+        const double *p[3] = {q[0], q[1], q[2]};
+        int sign = 0;
+        for (int pass = 0; pass < 3; pass++) {
+            for (size_t i = 1; i + 1 < len; i++) {
+                proj(lh__tchk_pt(k->c, poly_v(g, pg)[0]), axis, q[0]);
+                proj(lh__tchk_pt(k->c, poly_v(g, pg)[i]), axis, q[1]);
+                proj(lh__tchk_pt(k->c, poly_v(g, pg)[i + 1]), axis, q[2]);
+                if (pass < 2) lh__detsum_add(k->c->pr, k->s2, p, pass == 1);
+                else lh__detsum_add(k->c->pr, k->sum, p, k->eps[pg] * sign > 0);
+            }
+            if (pass == 0) sign = lh__detsum_sign(k->s2);
+        }
+    }
+    const int d = lh__detsum_sign(k->sum);
+    if (d != 0)
+        return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
+                             "facet %zu is not covered: its %zu subfaces' area is %s than the "
+                             "facet's", f, cnt, d > 0 ? "larger" : "smaller");
+    return LH_OK;
+}
+
+/* The polygon edges (3 vertices or more) of facet f, sorted, into k->re. */
+static size_t ring_edges(pchk *k, size_t f)
+{
+    const lh_plc *g = k->g;
+    size_t m = 0;
+    for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
+        for (size_t i = 0, len = poly_len(g, p); len >= 3 && i < len; i++) {
+            const lh_index a = poly_v(g, p)[i], b = poly_v(g, p)[(i + 1) % len];
+            k->re[m++] = (prec){a < b ? a : b, a < b ? b : a, 0};
+        }
+    qsort(k->re, m, sizeof *k->re, prec_cmp);
+    return m;
+}
+
+static int same_seg(const pchk *k, lh_index s, lh_index u, lh_index v)
+{
+    const lh_index a = k->seg[2 * s], b = k->seg[2 * s + 1];
+    return (a == u && b == v) || (a == v && b == u);
+}
+
+/* Whether point p lies on polygon edge u v: an endpoint, exactly on the open
+ * segment, or a Steiner point that the chain of segment u v passes. */
+static int on_edge(pchk *k, lh_index u, lh_index v, lh_index p)
+{
+    if (p == u || p == v) return 1;
+    const double *pu = lh__tchk_pt(k->c, u), *pv = lh__tchk_pt(k->c, v), *x = lh__tchk_pt(k->c, p);
+    int axis = 0;
+    for (int i = 1; i < 3; i++)
+        if (fabs(pv[i] - pu[i]) > fabs(pv[axis] - pu[axis])) axis = i;
+    if (strictly_between(pu[axis], x[axis], pv[axis]) && collinear(k, pu, pv, x)) return 1;
+    return (size_t)p >= k->g->n && k->pt_seg[p] >= 0 && same_seg(k, k->pt_seg[p], u, v);
+}
+
+/* Whether subsegment a b lies on a polygon edge of the facet (k->re, nre sorted):
+ * first the segment whose chain took it, then every polygon edge. */
+static int on_polygon_edge(pchk *k, size_t nre, lh_index a, lh_index b)
+{
+    const hrec key = {a, b, 0};
+    const hrec *h = bsearch(&key, k->h, 2 * k->c->ne, sizeof *k->h, hrec_cmp);
+    if (!h) return 0;
+    const lh_index s = k->seg_of[h->sub];
+    if (s >= 0) {
+        const lh_index u = k->seg[2 * s], v = k->seg[2 * s + 1];
+        const prec rk = {u < v ? u : v, u < v ? v : u, 0};
+        if (bsearch(&rk, k->re, nre, sizeof *k->re, prec_cmp)) return 1;
+    }
+    for (size_t i = 0; i < nre; i++)
+        if (on_edge(k, k->re[i].a, k->re[i].b, a) && on_edge(k, k->re[i].a, k->re[i].b, b))
+            return 1;
+    return 0;
+}
+
+/* (b): every edge in one subface of f lies on a polygon edge of f. */
+static lh_status facet_edges(pchk *k, size_t f)
+{
+    const lh_index *list = k->flist + k->ffirst[f];
+    const size_t cnt = k->ffirst[f + 1] - k->ffirst[f], nre = ring_edges(k, f);
+    for (size_t i = 0; i < cnt; i++)
+        for (int j = 0; j < 3; j++) {
+            const lh_index *v = k->c->faces + 3 * (size_t)list[i];
+            const lh_index a = v[j], b = v[(j + 1) % 3];
+            k->pe[3 * i + j] = (prec){a < b ? a : b, a < b ? b : a, list[i]};
+        }
+    qsort(k->pe, 3 * cnt, sizeof *k->pe, prec_cmp);
+    for (size_t i = 0; i < 3 * cnt;) {
+        size_t j = i + 1;
+        while (j < 3 * cnt && k->pe[j].a == k->pe[i].a && k->pe[j].b == k->pe[i].b) j++;
+        const prec *e = k->pe + i;
+        if (j - i > 2)
+            return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
+                                 "facet %zu: edge (%lld %lld) is in %zu of its subfaces", f,
+                                 (long long)e->a, (long long)e->b, j - i);
+        if (j - i == 1 && !on_polygon_edge(k, nre, e->a, e->b))
+            return not_covered(k, f, "an edge on the subfaces' border lies on no polygon edge "
+                                     "of the facet", (size_t)e->pos);
+        i = j;
+    }
+    return LH_OK;
+}
+
+static lh_status check_facets(pchk *k)
+{
+    prepare_facets(k);
+    lh_status st = LH_OK;
+    if (k->c->parents) memcpy(k->par, k->c->parents, k->c->nf * sizeof *k->par);
+    else st = assign_parents(k);
+    if (st) return st;
+    group_by_facet(k);
+    for (size_t f = 0; f < k->g->facet_count; f++) {
+        if (k->plane[3 * f] < 0) {
+            if (k->ffirst[f + 1] > k->ffirst[f])
+                return not_covered(k, f, "the facet has no area but has subfaces",
+                                   (size_t)k->flist[k->ffirst[f]]);
+            continue;
+        }
+        if ((st = facet_area(k, f)) || (st = facet_edges(k, f))) return st;
+    }
+    return LH_OK;
+}
+
+/* ---- entry ----------------------------------------------------------------------- */
+
+static int coords_scale(const lh__tchk *c)
+{
+    int scale = 0, any = 0;
+    for (size_t i = 0; i < 3 * c->n; i++)
+        if (c->xyz[i] != 0) {
+            const int e = lh__dbl_low_exp(c->xyz[i]);
+            scale = any && scale < e ? scale : e;
+            any = 1;
+        }
+    return scale;
+}
+
+static void pchk_free(pchk *k)
+{
+    const lh_allocator *al = &k->c->al;
+    lh__free(al, k->seg), lh__free(al, k->h), lh__free(al, k->seg_of), lh__free(al, k->pt_seg);
+    lh__free(al, k->plane), lh__free(al, k->axis), lh__free(al, k->planar);
+    lh__free(al, k->eps), lh__free(al, k->par), lh__free(al, k->ffirst);
+    lh__free(al, k->flist), lh__free(al, k->pe), lh__free(al, k->re);
+    lh__detsum_free(k->sum), lh__detsum_free(k->s2), lh__detsum_free(k->s1);
+}
+
+lh_status lh__tchk_plc(lh__tchk *c)
+{
+    lh_status st = check_g(c);
+    if (st) return st;
+    const lh_plc *g = c->g;
+    const lh_allocator *al = &c->al;
+    const size_t nv = g->facet_count ? (size_t)g->polygon_first[g->polygon_count] : 0;
+    const size_t nfac = g->facet_count, np = g->facet_count ? g->polygon_count : 0;
+    pchk k = {.c = c, .g = g};
+    k.seg = lh__alloc(al, (2 * (g->segment_count + nv) + 1) * sizeof *k.seg);
+    k.h = lh__alloc(al, (2 * c->ne + 1) * sizeof *k.h);
+    k.seg_of = lh__alloc(al, (c->ne + 1) * sizeof *k.seg_of);
+    k.pt_seg = lh__alloc(al, (c->n + 1) * sizeof *k.pt_seg);
+    k.plane = lh__alloc(al, (3 * nfac + 1) * sizeof *k.plane);
+    k.axis = lh__alloc(al, (nfac + 1) * sizeof *k.axis);
+    k.planar = lh__alloc(al, nfac + 1);
+    k.eps = lh__alloc(al, np + 1);
+    k.par = lh__alloc(al, (c->nf + 1) * sizeof *k.par);
+    k.ffirst = lh__alloc(al, (nfac + 2) * sizeof *k.ffirst);
+    k.flist = lh__alloc(al, (c->nf + 1) * sizeof *k.flist);
+    k.pe = lh__alloc(al, (3 * c->nf + 1) * sizeof *k.pe);
+    k.re = lh__alloc(al, (nv + 1) * sizeof *k.re);
+    const int scale = coords_scale(c);
+    st = k.seg && k.h && k.seg_of && k.pt_seg && k.plane && k.axis && k.planar && k.eps && k.par &&
+                 k.ffirst && k.flist && k.pe && k.re ? LH_OK : LH_ERR_NOMEM;
+    if (st == LH_OK) st = lh__detsum_create(al, 2, scale, &k.sum);
+    if (st == LH_OK) st = lh__detsum_create(al, 2, scale, &k.s2);
+    if (st == LH_OK) st = lh__detsum_create(al, 1, scale, &k.s1);
+    prec *tmp = st == LH_OK ? lh__alloc(al, (nv + 1) * sizeof *tmp) : NULL;
+    if (st == LH_OK && !tmp) st = LH_ERR_NOMEM;
+    if (st == LH_OK) list_segments(&k, tmp);
+    lh__free(al, tmp);
+    if (st == LH_OK) st = check_segments(&k);
+    if (st == LH_OK) st = check_facets(&k);
+    pchk_free(&k);
+    return st;
+}
