@@ -176,8 +176,8 @@ same "OFF numbered from 0" "$(line cube.node 2)" "0 0 0 0"
 same "OFF .face header" "$(line cube.face 1)" "12 1"
 cd ..
 
-# -d and -C on a point set. TO UPDATE when lh_plc_intersections and lh_tetmesh_check
-# land (mesh3d/stubs.c): either the stub's "not written yet" or the real verdict.
+# -d and -C. -d: TO UPDATE when lh_plc_intersections lands (mesh3d/stubs.c): either the
+# stub's "not written yet" or the real listing.
 either() { # NAME CODE1 REGEX1 CODE2 REGEX2 -- COMMAND: stdout+stderr match one pair
   local name="$1" c1="$2" r1="$3" c2="$4" r2="$5"; shift 6
   "$@" > out.txt 2>&1; local got=$?
@@ -188,8 +188,7 @@ fresh cube.node box.poly
 either "-d points" 3 '^lifthull tetgen: cube\.node: lh_plc_intersections: not written yet$' \
   0 '^cube\.node: no facets intersect \(0 facets\)$' -- "$lh" tetgen -d cube.node
 absent cube.1.node cube.1.ele cube.1.face
-either "-pC box.poly" 1 '^lifthull tetgen: the check could not run: lh_tetmesh_check: not written yet$' \
-  0 '^check: the mesh is valid and conforms to the input \(exact; 0 Steiner points' -- \
+expect "-pC box.poly" 0 '' '^check: the mesh is valid and conforms to the input \(exact; 0 Steiner points' -- \
   "$lh" tetgen -pQC box.poly
 # two crossing triangles: -d lists the pair and meshes nothing; -p refuses the input
 cp "$data/crossing.off" .
@@ -198,8 +197,7 @@ either "-d crossing" 3 '^lifthull tetgen: crossing\.off: lh_plc_intersections: n
 absent crossing.1.node crossing.1.ele crossing.1.face
 expect "-p crossing" 3 '^lifthull tetgen: crossing\.off: ' '' -- "$lh" tetgen -p crossing.off
 absent crossing.1.node crossing.1.ele crossing.1.face
-either "-C points" 1 '^lifthull tetgen: the check could not run: lh_tetmesh_check: not written yet$' \
-  0 '^check: the mesh is valid \(exact; 0 Steiner points' -- "$lh" tetgen -QC cube.node
+expect "-C points" 0 '' '^check: the mesh is valid \(exact; 0 Steiner points' -- "$lh" tetgen -QC cube.node
 cd ..
 
 # outputs all or none: a target that is a directory stops everything before the input
