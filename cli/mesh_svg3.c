@@ -123,14 +123,20 @@ static void put(FILE *f, const camera *c, const double *p, const char *cmd)
 
 
 /* The title with the counts, and a swatch per marker (the first PALETTE). */
-static void legend(FILE *f, const lh_tetmesh *m, const lh_index *mk, size_t nf, const char *title)
+static void legend(FILE *f, const lh_tetmesh *m, const lh_index *mk, size_t nf, const char *title, double width)
 {
     const double fs = 200, x0 = 0.02 * CANVAS, row = 300;
-    fprintf(f, "<g font-family=\"sans-serif\" font-size=\"%g\" fill=\"#333333\">\n<text x=\"%g\" y=\"%g\">", fs, x0,
+    char counts[160];
+    snprintf(counts, sizeof counts, ": %zu points, %zu tetrahedra, %zu boundary faces", lh_tetmesh_point_count(m),
+             lh_tetmesh_tet_count(m), nf);
+    /* a line longer than the picture (0.62 em a character, sans-serif) gets a smaller font */
+    const double room = width - 2 * x0, wide = 0.62 * fs * (double)(strlen(title) + strlen(counts));
+    fprintf(f, "<g font-family=\"sans-serif\" font-size=\"%g\" fill=\"#333333\">\n<text x=\"%g\" y=\"%g\"", fs, x0,
             -LEGEND + row);
+    if (wide > room) fprintf(f, " font-size=\"%.0f\"", fs * room / wide);
+    fputc('>', f);
     lh_cli_svg_escaped(f, title);
-    fprintf(f, ": %zu points, %zu tetrahedra, %zu boundary faces</text>\n", lh_tetmesh_point_count(m),
-            lh_tetmesh_tet_count(m), nf);
+    fprintf(f, "%s</text>\n", counts);
     fprintf(f, "<text x=\"%g\" y=\"%g\">by facet marker</text>\n", x0, -LEGEND + 2 * row);
     lh_index seen[PALETTE];
     int n = 0;
@@ -177,7 +183,7 @@ int lh_cli_tetmesh_svg(FILE *f, const lh_tetmesh *m, const char *title)
     const double W = ceil(fmax(c.width, MIN_WIDTH)), H = ceil(c.height);
     const double line = fmin(fmax(0.15 * sqrt(c.width * c.height / (double)(nf ? nf : 1)), 0.5), 8);
     lh_cli_svg_begin(f, W, H, LEGEND, title);
-    legend(f, m, mk, nf, title);
+    legend(f, m, mk, nf, title, W);
     fprintf(f, "<g id=\"faces\" stroke=\"#303030\" stroke-width=\"%.3g\" stroke-linejoin=\"round\">\n", line);
     for (size_t j = 0; j < nf; j++) {
         const size_t i = order[j].i;
