@@ -4,6 +4,7 @@
  * Computed by lh_tetrahedralize (exact). TetGen's switches whose meaning lifthull does
  * not have yet are refused by name; those that choose TetGen's arithmetic or
  * tolerances are accepted and change nothing (lifthull is always exact). */
+#define _POSIX_C_SOURCE 200809L /* access */
 #include "cli.h"
 #include "outfile.h"
 #include "switches.h"
@@ -11,6 +12,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 typedef struct tsw {
     int p, Y, c, A, f, e, n, k, g, z, B, N, E, F, I, Q, V, d, C, S;
@@ -237,17 +239,18 @@ static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *
 }
 
 /* The input: FILE as named, or without a known extension FILE.node (with -p
- * FILE.poly, else FILE.smesh when that exists), as TetGen looks for it. */
+ * FILE.poly, or FILE.smesh when only that exists), as TetGen looks for it. */
 static char *input_path(const char *file, int p, size_t *stem)
 {
     if (lh_cli_plc_path(file, stem)) return lh_cli_path_ext(file, strlen(file), "");
     *stem = strlen(file);
     char *path = lh_cli_path_ext(file, *stem, p ? ".poly" : ".node");
-    if (path && p) {
-        FILE *f = fopen(path, "r");
-        if (f) fclose(f);
-        else free(path), path = lh_cli_path_ext(file, *stem, ".smesh");
+    char *smesh = path && p ? lh_cli_path_ext(file, *stem, ".smesh") : NULL;
+    if (smesh && access(path, F_OK) != 0 && access(smesh, F_OK) == 0) { /* else FILE.poly, named if missing */
+        free(path);
+        return smesh;
     }
+    free(smesh);
     return path;
 }
 

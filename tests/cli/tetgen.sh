@@ -166,6 +166,11 @@ absent hollow.ele hollow.face
 printf '8 3 0 0\n1 0 0 0\n' > bad.poly
 expect "truncated .poly" 3 '^lifthull tetgen: bad\.poly:[0-9]+:[0-9]+: ' '' -- "$lh" tetgen -p bad.poly
 absent bad.1.node
+# -p FILE without an extension: FILE.poly, or FILE.smesh when only that exists
+{ grep -v '^#' box.poly | sed -n 1,9p; echo "6 1"
+  printf '4 1 2 3 4 1\n4 5 6 7 8 2\n4 1 2 6 5 3\n4 2 3 7 6 4\n4 3 4 8 7 5\n4 4 1 5 8 6\n0\n0\n'; } > only.smesh
+expect "-p only (.smesh)" 0 '' '^only\.1: 8 points, 6 tetrahedra' -- "$lh" tetgen -p only
+expect "-p none" 3 '^lifthull tetgen: none\.poly: No such file or directory$' '' -- "$lh" tetgen -p none
 cd ..
 
 # an OFF surface: numbered from 0 as the file; -I names without the iteration number
