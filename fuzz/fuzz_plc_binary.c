@@ -124,8 +124,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fclose(f);
     if (st == LH_OK) {
         int kind = reader(pick, data + 1, size - 1);
-        if (kind >= 0) check_ok(&g, err.message, kind);
-        else if (err.message[0]) abort(); /* another format's reader: not this target's */
+        if (kind >= 0)
+            check_ok(&g, err.message, kind);
+        else if (err.message[0])
+            abort(); /* another format's reader: not this target's */
     } else {
         check_failure(st, &g, err.message, names[pick]);
     }

@@ -1,7 +1,7 @@
 /*
  * carve.c — the domain: the recovered facet triangles' faces are walls; tetrahedra
  * reachable from the convex hull without crossing a wall are outside (unless
- * convex_hull), those reachable from a hole point are holes, and each region point
+ * convex_hull, or the PLC has no facet), those reachable from a hole point are holes, and each region point
  * labels the tetrahedra it reaches (flood fill, as TetGen; Si 2015, sec. 4.4).
  */
 #include "carve.h"
@@ -143,7 +143,9 @@ lh_status lh__t3_carve(t3_ctx *c, t3_domain *d)
         if (t < 0) d->holes_ignored++;
         else flood(c, d, t, T3_OUT);
     }
-    for (size_t t = 0; !c->opt->convex_hull && t < count; t++)
+    /* without facets nothing bounds a domain: the convex hull is it (TetGen without -p) */
+    int hull = c->opt->convex_hull || g->facet_count == 0;
+    for (size_t t = 0; !hull && t < count; t++)
         for (int j = 0; j < 4; j++)
             if (nbr[4 * t + j] < 0 && lh__t3_wall_of(c, d, t, j) < 0) flood(c, d, (lh_index)t, T3_OUT);
     for (size_t r = 0; r < g->region_count; r++) {

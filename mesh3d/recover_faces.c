@@ -148,13 +148,12 @@ static int along_chain(const t3_ctx *c, const lh_index *f, int k)
     return 0;
 }
 
-/* Whether face f lies in patch k: not along a chain, and always for a patch of one
- * triangle (its points are on the triangle); else its centroid is in one of the
- * patch's triangles. */
+/* Whether face f lies in patch k: not along a chain, and its centroid in one of the
+ * patch's triangles (rounded Steiner points can make faces on the patch's points
+ * that stick out of it). */
 static int face_in_patch(t3_ctx *c, size_t k, const lh_index *f)
 {
     if (along_chain(c, f, 3)) return 0;
-    if (c->patch_first[k + 1] - c->patch_first[k] == 1) return 1;
     double g[3];
     for (int a = 0; a < 3; a++)
         g[a] = (c->xyz[3 * (size_t)f[0] + a] + c->xyz[3 * (size_t)f[1] + a] +

@@ -75,7 +75,7 @@ static lh_status rd(const char *name, const void *data, size_t len, int pipe_it,
 /* ---- writing binary files ------------------------------------------------------------ */
 
 typedef struct bytes {
-    unsigned char b[16384];
+    unsigned char b[65536];
     size_t n;
 } bytes;
 
@@ -340,6 +340,7 @@ LH_TEST(ply_binary_errors)
             ply_small(&o, big, cases[i].vertices, "char");
             put_uint(&o, (uint64_t)cases[i].count, 1, big);
             for (int j = 0; j < cases[i].count; j++) put_uint(&o, (uint64_t)cases[i].list[j], 4, big);
+            o.b[o.n] = 0; /* the extra byte, if any */
             o.n += (size_t)cases[i].extra - (size_t)cases[i].cut;
             LH_EXPECT_EQ_INT(rd(cases[i].name, o.b, o.n, big, &g, msg), cases[i].status);
             LH_EXPECT_STREQ(msg, cases[i].msg);
@@ -403,6 +404,37 @@ LH_TEST(stl_ascii)
         lh_plc_free(&g);
         LH_EXPECT_EQ_INT(mem.live, 0);
     }
+}
+
+/* An ascii STL longer than the 4 KiB read ahead whose name is 120 bytes of UTF-8: still
+ * ascii (bytes above 0x7e count only after the first line). */
+LH_TEST(stl_ascii_long_utf8_name)
+{
+    bytes o;
+    lh_plc g;
+    char msg[300];
+    o.n = 0;
+    put_str(&o, "solid ");
+    for (int i = 0; i < 60; i++) put_str(&o, "\xc3\xa9"); /* U+00E9 */
+    put_str(&o, "\n");
+    for (int t = 0; t < 60; t++) {
+        char line[200];
+        put_str(&o, "facet normal 0 0 1\n outer loop\n");
+        for (int k = 0; k < 3; k++) {
+            snprintf(line, sizeof line, "  vertex %.17g %.17g %.17g\n", (double)stl_c[t % 3][3 * k],
+                     (double)stl_c[t % 3][3 * k + 1], (double)stl_c[t % 3][3 * k + 2]);
+            put_str(&o, line);
+        }
+        put_str(&o, " endloop\nendfacet\n");
+    }
+    put_str(&o, "endsolid\n");
+    LH_ASSERT_TRUE(o.n > 4096);
+    LH_ASSERT_EQ_INT(rd("long.stl", o.b, o.n, 1, &g, msg), LH_OK);
+    LH_EXPECT_STREQ(msg, "");
+    LH_EXPECT_EQ_U64(g.n, 4);
+    LH_EXPECT_EQ_U64(g.facet_count, 60);
+    for (size_t i = 0; i < 12; i++) LH_EXPECT_EQ_DBL(g.xyz[i], stl_xyz[i]);
+    lh_plc_free(&g);
 }
 
 LH_TEST(stl_binary)
@@ -493,6 +525,67 @@ LH_TEST(stl_binary_errors)
     LH_EXPECT_EQ_INT(mem.live, 0);
 }
 
+/* ---- allocation failures ------------------------------------------------------------- */
+
+/* data read with the k-th allocation failing, for k = 1, 2, ... until the read succeeds:
+ * each failure LH_ERR_NOMEM with a message and nothing left allocated. Returns the
+ * number of allocations a success makes. */
+static long fail_each_allocation(lh_test_state *lh_t_, const char *name, const void *data,
+                                 size_t len)
+{
+    for (long k = 1; k < 1000; k++) {
+        lh_test_counter c = {0, k, 0};
+        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
+        lh_error err;
+        lh_plc g;
+        FILE *f = lh_test_file(data, len);
+        if (!f) return 0;
+        lh_status st = lh_plc_read(f, name, LH_PLC_AUTO, &a, &g, &err);
+        fclose(f);
+        lh_plc_free(&g);
+        LH_EXPECT_EQ_INT(c.live, 0);
+        if (st == LH_OK) return k;
+        LH_EXPECT_EQ_INT(st, LH_ERR_NOMEM);
+        LH_EXPECT_TRUE(strstr(err.message, "out of memory") != NULL);
+        if (LH_FAILED()) return 0;
+    }
+    return 0;
+}
+
+/* A 25 x 25 grid of points (676, more than half the merging table's first 1024 slots:
+ * it grows) as a binary STL of 1152 triangles. */
+static void stl_grid(bytes *o)
+{
+    o->n = 80;
+    memset(o->b, ' ', 80);
+    put_uint(o, 2 * 24 * 24, 4, 0);
+    for (int i = 0; i < 24; i++) {
+        for (int j = 0; j < 24; j++) {
+            float q[4][3] = {{i, j, 0}, {i + 1, j, 0}, {i, j + 1, 0}, {i + 1, j + 1, 1}};
+            static const int t[2][3] = {{0, 1, 2}, {1, 3, 2}};
+            for (int h = 0; h < 2; h++) {
+                for (int k = 0; k < 3; k++) put_f32(o, 0, 0);
+                for (int k = 0; k < 9; k++) put_f32(o, q[t[h][k / 3]][k % 3], 0);
+                put_uint(o, 0, 2, 0);
+            }
+        }
+    }
+}
+
+LH_TEST(allocation_failures_free_everything)
+{
+    static bytes o;
+    static const char ply[] = PLY_TETRA "3 0 1 2\n";
+    static const char stl[] = STL_HEAD "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
+                                       "endfacet\nendsolid\n";
+    LH_EXPECT_GT_INT(fail_each_allocation(lh_t_, "a.ply", TEXT(ply)), 5);
+    LH_EXPECT_GT_INT(fail_each_allocation(lh_t_, "a.stl", TEXT(stl)), 5);
+    ply_binary(&o, 1, 0);
+    LH_EXPECT_GT_INT(fail_each_allocation(lh_t_, "b.ply", o.b, o.n), 5);
+    stl_grid(&o);
+    LH_EXPECT_GT_INT(fail_each_allocation(lh_t_, "b.stl", o.b, o.n), 20);
+}
+
 /* ---- real files ---------------------------------------------------------------------- */
 
 static lh_status read_data(const char *path, lh_plc *g, char *msg)
@@ -542,7 +635,7 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(ply_ascii),        LH_CASE(ply_binary_both_orders), LH_CASE(ply_ascii_errors),
-        LH_CASE(ply_binary_errors), LH_CASE(stl_ascii),             LH_CASE(stl_binary),
-        LH_CASE(stl_ascii_errors), LH_CASE(stl_binary_errors),      LH_CASE(sphere_files)};
+        LH_CASE(ply_binary_errors), LH_CASE(stl_ascii),             LH_CASE(stl_ascii_long_utf8_name), LH_CASE(stl_binary),
+        LH_CASE(stl_ascii_errors), LH_CASE(stl_binary_errors), LH_CASE(allocation_failures_free_everything),      LH_CASE(sphere_files)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -5,11 +5,23 @@
 #include <stdarg.h>
 #include <string.h>
 
+/* The scanner's invariant (io_internal.h): s->c, then pre[pre_pos..pre_len), then
+ * block[block_pos..block_len), then the FILE. Once the read-ahead is used up the bytes
+ * after s->c are taken from the block at once; lines and columns mean nothing in binary
+ * records, so they are not kept. */
 int lh__plc_bytes(lh__scan *s, unsigned char *buf, size_t k)
 {
-    for (size_t i = 0; i < k; i++) {
+    size_t i = 0;
+    while (i < k) {
         if (s->c == EOF) return 0;
-        buf[i] = (unsigned char)s->c;
+        buf[i++] = (unsigned char)s->c;
+        if (s->pre_pos == s->pre_len) {
+            size_t m = s->block_len - s->block_pos;
+            if (m > k - i) m = k - i;
+            memcpy(buf + i, s->block + s->block_pos, m);
+            s->block_pos += m;
+            i += m;
+        }
         lh__scan_advance(s);
     }
     return 1;
@@ -42,8 +54,8 @@ lh_status lh__plc_record_fail(lh__scan *s, lh_status st, const lh__token *t, con
     if (!t) return lh__error_say(s->err, st, "%s: %s %zu: %s", s->name, what, n, text);
     s->err->line = t->line;
     s->err->column = t->col;
-    return lh__error_say(s->err, st, "%s:%zu:%zu: %s %zu: %s", s->name, t->line, t->col, what,
-                         n, text);
+    return lh__error_say(s->err, st, "%s:%zu:%zu: %s %zu: %s", s->name, t->line, t->col, what, n,
+                         text);
 }
 
 lh_status lh__plc_record_end(lh__scan *s, const lh__token *t, const char *what, size_t n,

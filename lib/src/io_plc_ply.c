@@ -3,7 +3,7 @@
  *
  *     ply
  *     format ascii 1.0 | binary_little_endian 1.0 | binary_big_endian 1.0
- *     comment ... | obj_info ...               (header lines, anywhere after format)
+ *     comment ... | obj_info ...               (header lines, anywhere after ply)
  *     element vertex N                         N from 1 to LH_READ_MAX_POINTS
  *     property TYPE x, property TYPE y, property TYPE z   (any order, each once)
  *     element face M                           (optional: no face, only points)
@@ -16,7 +16,8 @@
  * order and have other properties (skipped: by their sizes in binary files, lists
  * included). The body holds each element's records in header order: ascii one record
  * a line (blank lines ignored), binary each value packed in its type's size and the
- * file's byte order, a list as its count then its items, nothing after the last.
+ * file's byte order, a list as its count then its items, nothing after the last; an
+ * ascii value of an integer type is written as an integer.
  * Each face of k >= 3 vertices is one facet of one polygon (marker 0); a face of fewer
  * vertices is an error, and so is an index outside 0..N-1 or a coordinate that is NaN
  * or infinite. Records are numbered from 0 in messages, as faces number vertices
@@ -31,9 +32,9 @@
 #include <string.h>
 
 enum { T_I8 = 1, T_U8, T_I16, T_U16, T_I32, T_U32, T_F32, T_F64 };
-enum { R_SKIP, R_X, R_Y, R_Z, R_INDICES };         /* a property's role */
-enum { E_OTHER, E_VERTEX, E_FACE };                /* an element's kind */
-enum { F_ASCII, F_LITTLE, F_BIG };                 /* the body's format */
+enum { R_SKIP, R_X, R_Y, R_Z, R_INDICES }; /* a property's role */
+enum { E_OTHER, E_VERTEX, E_FACE };        /* an element's kind */
+enum { F_ASCII, F_LITTLE, F_BIG };         /* the body's format */
 
 #define MAX_ELEMENTS 32
 #define MAX_PROPERTIES 256
@@ -57,19 +58,21 @@ typedef struct ply {
     size_t elems;
     ply_prop prop[MAX_PROPERTIES];
     size_t props;
-    size_t nv;           /* declared vertices */
-    lh__token t, at;     /* the last token; the record's first (ascii) */
-    lh_index *idx;       /* a face's vertex indices (capacity cap) */
+    size_t nv;       /* declared vertices */
+    lh__token t, at; /* the last token; the record's first (ascii) */
+    lh_index *idx;   /* a face's vertex indices (capacity cap) */
     size_t cap, k;
 } ply;
 
 static int type_of(const char *w)
 {
-    static const struct { const char *name; int type; } types[] = {
-        {"char", T_I8},   {"int8", T_I8},     {"uchar", T_U8},   {"uint8", T_U8},
-        {"short", T_I16}, {"int16", T_I16},   {"ushort", T_U16}, {"uint16", T_U16},
-        {"int", T_I32},   {"int32", T_I32},   {"uint", T_U32},   {"uint32", T_U32},
-        {"float", T_F32}, {"float32", T_F32}, {"double", T_F64}, {"float64", T_F64}};
+    static const struct {
+        const char *name;
+        int type;
+    } types[] = {{"char", T_I8},   {"int8", T_I8},     {"uchar", T_U8},   {"uint8", T_U8},
+                 {"short", T_I16}, {"int16", T_I16},   {"ushort", T_U16}, {"uint16", T_U16},
+                 {"int", T_I32},   {"int32", T_I32},   {"uint", T_U32},   {"uint32", T_U32},
+                 {"float", T_F32}, {"float32", T_F32}, {"double", T_F64}, {"float64", T_F64}};
     for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
         if (strcmp(w, types[i].name) == 0) return types[i].type;
     return 0;
@@ -137,8 +140,8 @@ static lh_status element_count(ply *r, ply_elem *e)
         e->count = (size_t)v;
         return LH_OK;
     }
-    snprintf(what, sizeof what, "the number of %.20s elements (an integer from 0 to %lld)",
-             e->name, hi);
+    snprintf(what, sizeof what, "the number of %.20s elements (an integer from 0 to %lld)", e->name,
+             hi);
     return lh__expected(r->s, v > hi && r->t.kind == LH__TOK_WORD ? LH_ERR_TOO_LARGE : LH_ERR_PARSE,
                         &r->t, what, NULL);
 }
@@ -187,8 +190,10 @@ static lh_status property_role(ply *r, const ply_elem *e, ply_prop *p, const lh_
         (is_word(&r->t, "vertex_indices") || is_word(&r->t, "vertex_index")))
         p->role = R_INDICES;
     if (e->kind == E_FACE && p->role == R_INDICES && p->type >= T_F32)
-        return lh__fail_at(r->s, LH_ERR_PARSE, at, "the vertex indices' type is not an integer type");
-    if (e->kind == E_VERTEX && p->list && r->t.text[0] && strchr("xyz", r->t.text[0]) && !r->t.text[1])
+        return lh__fail_at(r->s, LH_ERR_PARSE, at,
+                           "the vertex indices' type is not an integer type");
+    if (e->kind == E_VERTEX && p->list && r->t.text[0] && strchr("xyz", r->t.text[0]) &&
+        !r->t.text[1])
         return lh__fail_at(r->s, LH_ERR_PARSE, &r->t, "a coordinate is a list");
     for (size_t j = e->first; p->role != R_SKIP && j < r->props; j++)
         if (r->prop[j].role == p->role)
@@ -198,7 +203,8 @@ static lh_status property_role(ply *r, const ply_elem *e, ply_prop *p, const lh_
 
 static lh_status read_property(ply *r)
 {
-    if (r->elems == 0) return lh__fail_at(r->s, LH_ERR_PARSE, &r->t, "a property before any element");
+    if (r->elems == 0)
+        return lh__fail_at(r->s, LH_ERR_PARSE, &r->t, "a property before any element");
     if (r->props == MAX_PROPERTIES)
         return lh__fail_at(r->s, LH_ERR_PARSE, &r->t, "more than 256 properties");
     ply_elem *e = &r->elem[r->elems - 1];
@@ -233,7 +239,7 @@ static lh_status header_complete(ply *r)
         face |= e->kind == E_FACE;
         for (size_t j = e->first; j < e->first + e->props; j++) have[r->prop[j].role] = 1;
     }
-    const char *missing = !vertex ? "the header declares no vertex element"
+    const char *missing = !vertex      ? "the header declares no vertex element"
                           : !have[R_X] ? "the vertex element has no property x"
                           : !have[R_Y] ? "the vertex element has no property y"
                           : !have[R_Z] ? "the vertex element has no property z"
@@ -248,10 +254,14 @@ static lh_status read_header(ply *r)
     lh_status st = read_format(r);
     while (st == LH_OK) {
         lh__scan_next(r->s, 1, &r->t);
-        if (is_word(&r->t, "comment") || is_word(&r->t, "obj_info")) lh__scan_skip_line(r->s);
-        else if (is_word(&r->t, "element")) st = read_element(r);
-        else if (is_word(&r->t, "property")) st = read_property(r);
-        else if (is_word(&r->t, "end_header")) break;
+        if (is_word(&r->t, "comment") || is_word(&r->t, "obj_info"))
+            lh__scan_skip_line(r->s);
+        else if (is_word(&r->t, "element"))
+            st = read_element(r);
+        else if (is_word(&r->t, "property"))
+            st = read_property(r);
+        else if (is_word(&r->t, "end_header"))
+            break;
         else
             st = lh__expected(r->s, LH_ERR_PARSE, &r->t,
                               "a header line (element, property, comment, end_header)", NULL);
@@ -279,10 +289,13 @@ static lh_status value(ply *r, const ply_elem *e, size_t rec, const ply_prop *p,
         if (!lh__plc_bytes(r->s, buf, k))
             return lh__plc_record_end(r->s, NULL, e->name, rec, e->count,
                                       e->kind == E_VERTEX ? "vertices"
-                                      : e->kind == E_FACE ? "faces" : "records");
+                                      : e->kind == E_FACE ? "faces"
+                                                          : "records");
         uint64_t u = lh__plc_unpack(buf, k, r->format == F_BIG);
-        if (type == T_F32) *x = lh__plc_float32(u);
-        else if (type == T_F64) memcpy(x, &u, sizeof *x);
+        if (type == T_F32)
+            *x = lh__plc_float32(u);
+        else if (type == T_F64)
+            memcpy(x, &u, sizeof *x);
         else {
             /* two's complement: the top bit of a signed type weighs -2^(8k-1) */
             int sign = (type == T_I8 || type == T_I16 || type == T_I32) && u >> (8 * k - 1);
@@ -301,7 +314,8 @@ static lh_status value(ply *r, const ply_elem *e, size_t rec, const ply_prop *p,
     if (type >= T_F32 && lh__word_double(&r->t, x)) return LH_OK;
     char what[120], tail[64];
     if (item < 0 && p->list)
-        snprintf(what, sizeof what, "the length of %s of %s %zu (an integer)", p->name, e->name, rec);
+        snprintf(what, sizeof what, "the length of %s of %s %zu (an integer)", p->name, e->name,
+                 rec);
     else if (item < 0)
         snprintf(what, sizeof what, "%s of %s %zu (%s)", p->name, e->name, rec,
                  type < T_F32 ? "an integer" : "a number");
@@ -309,11 +323,11 @@ static lh_status value(ply *r, const ply_elem *e, size_t rec, const ply_prop *p,
         snprintf(what, sizeof what, "%s[%lld] of %s %zu (%s)", p->name, item, e->name, rec,
                  type < T_F32 ? "an integer" : "a number");
     snprintf(tail, sizeof tail, " (element %s %zu in the header)", e->name, e->count);
-    return lh__expected(r->s, LH_ERR_PARSE, &r->t, what,
-                        r->t.kind == LH__TOK_EOF ? tail : NULL);
+    return lh__expected(r->s, LH_ERR_PARSE, &r->t, what, r->t.kind == LH__TOK_EOF ? tail : NULL);
 }
 
-static const lh__token *at(const ply *r, const lh__token *t)
+/* Where a record's fault is: the token (ascii), none (binary: the record names it). */
+static const lh__token *where(const ply *r, const lh__token *t)
 {
     return r->format == F_ASCII ? t : NULL;
 }
@@ -322,14 +336,14 @@ static const lh__token *at(const ply *r, const lh__token *t)
 static lh_status face_index(ply *r, const ply_elem *e, size_t rec, long long v)
 {
     if (v < 0 || (unsigned long long)v >= r->nv)
-        return lh__plc_record_fail(r->s, LH_ERR_PARSE, at(r, &r->t), e->name, rec,
-                                   "vertex index %lld is out of range (%zu vertices, numbered from 0)",
-                                   v, r->nv);
-    if (r->k == r->cap) {
+        return lh__plc_record_fail(
+            r->s, LH_ERR_PARSE, where(r, &r->t), e->name, rec,
+            "vertex index %lld is out of range (%zu vertices, numbered from 0)", v, r->nv);
+    if (r->k == r->cap) { /* doubling: as long as the indices read so far */
         size_t cap = r->cap ? 2 * r->cap : 16;
-        lh_index *idx = cap <= (size_t)LH_INDEX_MAX ? lh__alloc(&r->b->g->alloc_, cap * sizeof *idx) : NULL;
-        if (!idx) return lh__plc_record_built(r->s, cap <= (size_t)LH_INDEX_MAX ? LH_ERR_NOMEM : LH_ERR_TOO_LARGE,
-                                              at(r, &r->t), e->name, rec);
+        lh_status st = cap > (size_t)LH_INDEX_MAX ? LH_ERR_TOO_LARGE : LH_ERR_NOMEM;
+        lh_index *idx = st == LH_ERR_NOMEM ? lh__alloc(&r->b->g->alloc_, cap * sizeof *idx) : NULL;
+        if (!idx) return lh__plc_record_built(r->s, st, where(r, &r->t), e->name, rec);
         if (r->k) memcpy(idx, r->idx, r->k * sizeof *idx);
         lh__free(&r->b->g->alloc_, r->idx);
         r->idx = idx;
@@ -347,7 +361,7 @@ static lh_status list(ply *r, const ply_elem *e, size_t rec, const ply_prop *p)
     lh_status st = value(r, e, rec, p, p->count_type, -1, &x, &len);
     if (st != LH_OK) return st;
     if (len < 0)
-        return lh__plc_record_fail(r->s, LH_ERR_PARSE, at(r, &r->t), e->name, rec,
+        return lh__plc_record_fail(r->s, LH_ERR_PARSE, where(r, &r->t), e->name, rec,
                                    "the length of %s is %lld", p->name, len);
     for (long long i = 0; i < len; i++) {
         if ((st = value(r, e, rec, p, p->type, i, &x, &v)) != LH_OK) return st;
@@ -379,12 +393,12 @@ static lh_status add_record(ply *r, const ply_elem *e, size_t rec, const double 
     if (e->kind == E_VERTEX) st = lh__plc_point(r->b, xyz, NULL, 0, line);
     if (e->kind == E_FACE) {
         if (r->k < 3)
-            return lh__plc_record_fail(r->s, LH_ERR_PARSE, at(r, &r->at), e->name, rec,
+            return lh__plc_record_fail(r->s, LH_ERR_PARSE, where(r, &r->at), e->name, rec,
                                        "%zu vertices (a facet has at least 3)", r->k);
         st = lh__plc_facet(r->b, 0, line);
         if (st == LH_OK) st = lh__plc_polygon(r->b, r->idx, r->k);
     }
-    return lh__plc_record_built(r->s, st, at(r, &r->at), e->name, rec);
+    return lh__plc_record_built(r->s, st, where(r, &r->at), e->name, rec);
 }
 
 static lh_status read_record(ply *r, const ply_elem *e, size_t rec)
@@ -396,9 +410,12 @@ static lh_status read_record(ply *r, const ply_elem *e, size_t rec)
     r->at.kind = LH__TOK_EOF; /* no value read yet */
     for (size_t j = e->first; st == LH_OK && j < e->first + e->props; j++) {
         const ply_prop *p = &r->prop[j];
-        if (p->list) st = list(r, e, rec, p);
-        else if (p->role != R_SKIP) st = coordinate(r, e, rec, p, &xyz[p->role - R_X]);
-        else st = value(r, e, rec, p, p->type, -1, &x, &v);
+        if (p->list)
+            st = list(r, e, rec, p);
+        else if (p->role != R_SKIP)
+            st = coordinate(r, e, rec, p, &xyz[p->role - R_X]);
+        else
+            st = value(r, e, rec, p, p->type, -1, &x, &v);
     }
     if (st == LH_OK && r->format == F_ASCII) {
         lh__scan_next(r->s, 0, &r->t);
@@ -444,9 +461,12 @@ static lh_status read_body(ply *r)
     if (r->format == F_ASCII) {
         lh__scan_next(r->s, 1, &r->t);
         if (r->t.kind == LH__TOK_EOF) return LH_OK;
-        return lh__expected(r->s, LH_ERR_PARSE, &r->t, "the end of the input after the last element", NULL);
+        return lh__expected(r->s, LH_ERR_PARSE, &r->t,
+                            "the end of the input after the last element", NULL);
     }
-    if (r->s->c == EOF) return r->s->read_error ? lh__error_say(r->s->err, LH_ERR_IO, "%s: read error", r->s->name) : LH_OK;
+    if (r->s->c == EOF)
+        return r->s->read_error ? lh__error_say(r->s->err, LH_ERR_IO, "%s: read error", r->s->name)
+                                : LH_OK;
     return lh__error_say(r->s->err, LH_ERR_PARSE, "%s: the input goes on after the last element",
                          r->s->name);
 }

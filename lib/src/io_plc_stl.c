@@ -17,17 +17,19 @@
  *
  * A file is binary unless it starts "solid" (in any case, after a UTF-8 BOM). One that
  * does is binary still when its length is known (it is shorter than the 4 KiB the
- * scanner reads ahead, so a pipe works too) and is 84 + 50 * count bytes, or when a
- * byte after its first line (or after byte 80) is not text: an ascii STL never has one,
- * a binary one has NULs in its count and attributes and in the float bits.
+ * scanner reads ahead, so a pipe works too) and is 84 + 50 * count bytes, or when
+ * those bytes hold a NUL or, after the first line (the name may be UTF-8), a byte that
+ * is not text: an ascii STL has neither, a binary one has NULs in its count and
+ * attributes and bytes above 0x7e in its floats.
  *
  * STL repeats each corner in every triangle: corners with the same coordinates (as
- * doubles; -0.0 and 0.0 are one) are merged exactly, with a hash table, into one point,
- * numbered in the order of first appearance; each triangle is a facet of one polygon
- * (marker 0). A triangle with two equal corners is kept as read: it is the mesher's to
- * report. Triangles are numbered from 1 in messages ("NAME:LINE:COL: ..." in ascii,
- * "NAME: triangle 5: ..." in binary); point_line and facet_line hold the line (ascii)
- * or the triangle's number (binary). A file of no triangle is an error.
+ * doubles; -0.0 and 0.0 are one, kept as 0.0) are merged exactly, with a hash table,
+ * into one point, numbered in the order of first appearance; each triangle is a facet
+ * of one polygon (marker 0). A triangle with two equal corners is kept as read: it is
+ * the mesher's to report. Triangles are numbered from 1 in messages ("NAME:LINE:COL:
+ * ..." in ascii, "NAME: triangle 5: ..." in binary); point_line and facet_line hold
+ * the line (ascii) or the triangle's number (binary). A file of no triangle is an
+ * error.
  */
 #include "io_plc.h"
 
@@ -203,9 +205,11 @@ static lh_status read_binary(stl *r, size_t bom)
         return s->read_error ? lh__error_say(s->err, LH_ERR_IO, "%s: read error", s->name)
                              : lh__error_say(s->err, LH_ERR_PARSE,
                                              "%s: the input ends inside the 84-byte header of a "
-                                             "binary STL file", s->name);
+                                             "binary STL file",
+                                             s->name);
     size_t count = (size_t)lh__plc_unpack(rec, 4, 0);
-    if (count == 0) return lh__error_say(s->err, LH_ERR_PARSE, "%s: no triangle in the file", s->name);
+    if (count == 0)
+        return lh__error_say(s->err, LH_ERR_PARSE, "%s: no triangle in the file", s->name);
     for (size_t n = 1; n <= count; n++) {
         double c[9];
         if (!lh__plc_bytes(s, rec, 50))
@@ -215,7 +219,8 @@ static lh_status read_binary(stl *r, size_t bom)
             if (!isfinite(c[i]))
                 return lh__plc_record_fail(s, LH_ERR_NONFINITE, NULL, "triangle", n,
                                            "%c of corner %d is %g: NaN and infinities are not "
-                                           "points", "xyz"[i % 3], i / 3 + 1, c[i]);
+                                           "points",
+                                           "xyz"[i % 3], i / 3 + 1, c[i]);
         }
         lh_status st = triangle(r, c, n, n, NULL);
         if (st != LH_OK) return st;
@@ -235,11 +240,10 @@ static int is_binary(const lh__scan *s, size_t bom)
     if (s->pre_len < LH__IO_PREFIX && s->pre_len >= 84 &&
         s->pre_len - 84 == 50 * lh__plc_unpack(s->pre + 80, 4, 0))
         return 1;
-    int first_line = 1;
-    for (size_t i = 0; i < len; i++) {
-        if (!first_line && !lh__is_text(p[i])) return 1;
-        if (p[i] == '\n' || i + bom >= 80) first_line = 0;
-    }
+    if (memchr(p, 0, len)) return 1;
+    const unsigned char *eol = memchr(p, '\n', len);
+    for (size_t i = eol ? (size_t)(eol - p) : len; i < len; i++)
+        if (!lh__is_text(p[i])) return 1;
     return 0;
 }
 
