@@ -203,7 +203,7 @@ fresh cube.node box.poly crossing.off cube.off
 expect "-d points" 0 '' '^cube\.node: no facets intersect \(0 facets\)$' -- "$lh" tetgen -d cube.node
 expect "-d cube.off" 0 '' '^cube\.off: no facets intersect \(6 facets\)$' -- "$lh" tetgen -d cube.off
 expect "-d crossing" 1 '' '^crossing\.off: 1 pair of facets intersect$' -- "$lh" tetgen -d crossing.off
-same "-d listing" "$(cat out.txt)" "crossing.off: facet 1 (line 9) and facet 2 (line 10) intersect
+same "-d listing" "$(cat out.txt)" "crossing.off: facet 0 (line 9) and facet 1 (line 10) intersect
 crossing.off: 1 pair of facets intersect"
 expect "-dz crossing" 1 '' '^crossing\.off: facet 0 \(line 9\) and facet 1 \(line 10\) intersect$' -- \
   "$lh" tetgen -dz crossing.off
@@ -212,7 +212,7 @@ absent crossing.1.node crossing.1.ele crossing.1.face cube.1.node
 printf 'OFF\n9 3 0\n0 0 0\n4 0 0\n0 4 0\n1 1 -1\n1 1 1\n1.5 1.5 -1\n2 0.5 -1\n2 0.5 1\n2.5 0.2 -1\n3 0 1 2\n3 3 4 5\n3 6 7 8\n' > walls.off
 expect "-d1 walls" 1 '' '^walls\.off: 2 pairs of facets intersect; the first 1 is listed$' -- "$lh" tetgen -d1 walls.off
 same "-d1 one pair listed" "$(grep -c ' intersect$' out.txt)" "1"
-expect "-d walls" 1 '' '^walls\.off: facet 1 \(line 12\) and facet 3 \(line 14\) intersect$' -- "$lh" tetgen -d walls.off
+expect "-d walls" 1 '' '^walls\.off: facet 0 \(line 12\) and facet 2 \(line 14\) intersect$' -- "$lh" tetgen -d walls.off
 # -p refuses intersecting facets, naming them; nothing written
 expect "-p crossing" 3 '^lifthull tetgen: crossing\.off: 1 pair of facets intersect: 0 and 1' '' -- \
   "$lh" tetgen -p crossing.off
