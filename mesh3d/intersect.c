@@ -31,6 +31,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The state of one call: triangles, their boxes, the grid, the pairs found. */
@@ -54,6 +55,9 @@ typedef struct isect {
                                representative                                       */
     lh_index *pairs;  /* 2 per pair found: groups (step 4), then facets (step 5) */
     size_t npairs, pairs_cap;
+    lh_index *ring;   /* 3 per polygon edge (slits too): its representative points,
+                         smaller first, and its facet; sorted                       */
+    size_t nring;
 } isect;
 
 static void isect_free(isect *s)
@@ -68,6 +72,7 @@ static void isect_free(isect *s)
     lh__free(s->al, s->gmem);
     lh__free(s->al, s->gfirst);
     lh__free(s->al, s->pairs);
+    lh__free(s->al, s->ring);
     lh_pred_free(s->pred);
 }
 
@@ -106,6 +111,42 @@ static lh_status merge_equal_points(isect *s)
     s->rep = tmp;
     for (size_t t = 0; t < 3 * s->ft.count; t++) s->ft.tri[t] = s->rep[s->ft.tri[t]];
     return LH_OK;
+}
+
+static int cmp_ring(const void *x, const void *y)
+{
+    const lh_index *a = x, *b = y;
+    for (int k = 0; k < 3; k++)
+        if (a[k] != b[k]) return a[k] < b[k] ? -1 : 1;
+    return 0;
+}
+
+/* Step 2a: every facet's polygon edges (ring edges and slits), on representatives. */
+static lh_status ring_edges(isect *s)
+{
+    const lh_plc *g = s->g;
+    size_t m = g->facet_count ? (size_t)g->polygon_first[g->polygon_count] : 0;
+    s->ring = alloc_n(s->al, 3 * m + 3, sizeof(lh_index));
+    if (!s->ring) return LH_ERR_NOMEM;
+    for (size_t f = 0; f < g->facet_count; f++)
+        for (lh_index p = g->facet_first[f]; p < g->facet_first[f + 1]; p++) {
+            const lh_index *v = g->polygon_vertices + g->polygon_first[p];
+            size_t len = (size_t)(g->polygon_first[p + 1] - g->polygon_first[p]);
+            for (size_t i = 0; len >= 2 && i < (len == 2 ? 1 : len); i++) {
+                lh_index a = s->rep[v[i]], b = s->rep[v[(i + 1) % len]];
+                lh_index *r = s->ring + 3 * s->nring++;
+                r[0] = a < b ? a : b, r[1] = a < b ? b : a, r[2] = (lh_index)f;
+            }
+        }
+    if (s->nring) qsort(s->ring, s->nring, 3 * sizeof(lh_index), cmp_ring);
+    return LH_OK;
+}
+
+/* Whether p q (representatives) is a polygon edge of facet f. */
+static int is_ring_edge(const isect *s, lh_index p, lh_index q, lh_index f)
+{
+    lh_index key[3] = {p < q ? p : q, p < q ? q : p, f};
+    return bsearch(key, s->ring, s->nring, 3 * sizeof(lh_index), cmp_ring) != NULL;
 }
 
 /* Step 2b: groups of triangles with the same corners (sorted triples compared). */
@@ -323,6 +364,11 @@ static int triangles_meet(const isect *s, size_t t, size_t u)
     }
     for (int j = 0, nb = shared; j < 3; j++)
         if (!used[j]) ib[nb++] = j;
+    /* A shared edge inside either facet (no polygon edge of it): that facet meets the
+       other along a line inside it, which a PLC does not allow. */
+    if (shared == 2 && (!is_ring_edge(s, vt[ia[0]], vt[ia[1]], s->ft.facet[t]) ||
+                        !is_ring_edge(s, vt[ia[0]], vt[ia[1]], s->ft.facet[u])))
+        return 1;
     const double *a[3], *b[3];
     for (int i = 0; i < 3; i++) {
         a[i] = s->g->xyz + 3 * (size_t)vt[ia[i]];
@@ -511,6 +557,7 @@ lh_status lh_plc_intersections(const lh_plc *g, const lh_allocator *alloc, size_
     lh_status st = lh__facets_triangulate(g, &al, &s.ft, err);
     if (st == LH_OK) st = lh_pred_create(&al, &s.pred);
     if (st == LH_OK) st = merge_equal_points(&s);
+    if (st == LH_OK) st = ring_edges(&s);
     if (st == LH_OK && s.ft.count > 1) {
         const int one_each = s.ft.count == g->facet_count; /* every facet one triangle */
         st = group_identical(&s);
