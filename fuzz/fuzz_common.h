@@ -7,20 +7,20 @@
 #include <string.h>
 
 /* user points at a long: live blocks. */
-static void *lh_fuzz_count_alloc(void *user, size_t size)
+static inline void *lh_fuzz_count_alloc(void *user, size_t size)
 {
     ++*(long *)user;
     return malloc(size);
 }
 
-static void lh_fuzz_count_free(void *user, void *ptr)
+static inline void lh_fuzz_count_free(void *user, void *ptr)
 {
     --*(long *)user;
     free(ptr);
 }
 
 /* msg is "NAME:LINE:COL: " (LINE, COL positive) then printable bytes only; else abort. */
-static void lh_fuzz_check_message(const char *msg, const char *name)
+static inline void lh_fuzz_check_message(const char *msg, const char *name)
 {
     size_t len = strlen(name);
     if (strncmp(msg, name, len) || msg[len] != ':') abort();

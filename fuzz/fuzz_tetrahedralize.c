@@ -1,0 +1,138 @@
+/*
+ * fuzz_tetrahedralize.c — libFuzzer target: lh_tetrahedralize and the recovery on
+ * small PLCs decoded from the bytes, then lh_tetmesh_check on what it returns.
+ *   byte 0: options — bit 0 convex_hull, bit 1 skip the intersection test (then the
+ *           facets may cross and recovery must still end), bit 2 coordinates as int8
+ *           (else a 0..3 grid: coplanar, cocircular, cospherical, duplicate points),
+ *           bits 3-4 the scale 2^0, 2^200, 2^-200 or 2^40, bit 5 region attributes;
+ *   byte 1: points, 4 + (byte % 21);
+ *   then 3 bytes a point; then facets, each a byte k (3 + k % 3 corners) and k point
+ *   numbers (mod n), up to 24; then up to 2 hole points (3 bytes each, grid/2).
+ * It must never crash or leak, and:
+ *   - LH_OK: the mesh passes lh_tetmesh_check against the PLC (valid, conforming up to
+ *     rounded Steiner points) — or without it, still a valid mesh whose subfaces and
+ *     subsegments are its faces and edges, when the facets intersect and the test was
+ *     skipped (the PLC is not one: conformity is undefined) or a hole point is given
+ *     (it may carve facets and segments away whole, which the check cannot tell from
+ *     missing ones); its point count is the PLC's plus the Steiner points;
+ *   - a failure is a documented status with a one-line printable message.
+ * Anything else aborts. Build as the other targets (fuzz/README.md).
+ */
+#include "fuzz_common.h"
+#include "lifthull.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+#define MAXN 24
+#define MAXF 24
+
+typedef struct input {
+    double xyz[3 * MAXN], holes[6];
+    lh_index ff[MAXF + 1], pf[MAXF + 1], pv[5 * MAXF];
+    lh_plc g;
+    lh_tetmesh_options opt;
+} input;
+
+static double coord(uint8_t b, int int8, int e)
+{
+    double x = int8 ? (double)(int8_t)b : (double)(b % 4);
+    return ldexp(x, e);
+}
+
+/* The PLC and options the bytes say; 0 when too short. */
+static int decode(const uint8_t *d, size_t size, input *in)
+{
+    static const int scales[4] = {0, 200, -200, 40};
+    if (size < 2 + 12) return 0;
+    memset(in, 0, sizeof *in);
+    lh_tetmesh_options_default(&in->opt);
+    in->opt.convex_hull = d[0] & 1;
+    in->opt.check_intersections = !(d[0] & 2);
+    in->opt.region_attributes = (d[0] >> 5) & 1;
+    in->opt.max_steiner = 4000;
+    int int8 = (d[0] >> 2) & 1, e = scales[(d[0] >> 3) & 3];
+    size_t n = 4 + d[1] % 21, at = 2;
+    if (size < at + 3 * n) return 0;
+    for (size_t i = 0; i < 3 * n; i++) in->xyz[i] = coord(d[at++], int8, e);
+    size_t f = 0, v = 0;
+    while (f < MAXF && at < size) {
+        size_t k = 3 + d[at] % 3;
+        if (at + 1 + k > size) break;
+        at++;
+        in->ff[f] = (lh_index)f, in->pf[f] = (lh_index)v;
+        for (size_t j = 0; j < k; j++) in->pv[v++] = (lh_index)(d[at++] % n);
+        f++;
+        if (at < size && d[at] == 0xff) { /* holes follow */
+            at++;
+            break;
+        }
+    }
+    in->ff[f] = (lh_index)f, in->pf[f] = (lh_index)v;
+    size_t h = 0;
+    while (h < 2 && at + 3 <= size) {
+        for (int j = 0; j < 3; j++) in->holes[3 * h + j] = ldexp(coord(d[at++], int8, e), -1);
+        h++;
+    }
+    lh_plc *g = &in->g;
+    g->n = n, g->xyz = in->xyz;
+    g->facet_count = g->polygon_count = f;
+    g->facet_first = in->ff, g->polygon_first = in->pf, g->polygon_vertices = in->pv;
+    g->hole_count = h, g->holes = in->holes;
+    return 1;
+}
+
+static int documented(lh_status st)
+{
+    return st == LH_ERR_INVALID_ARGUMENT || st == LH_ERR_DEGENERATE ||
+           st == LH_ERR_INTERSECTING_FACETS || st == LH_ERR_STEINER_LIMIT ||
+           st == LH_ERR_CROSSING_SEGMENTS;
+}
+
+static void printable(const char *msg)
+{
+    if (!msg[0]) abort();
+    for (const char *k = msg; *k; k++)
+        if (*k < 0x20 || *k > 0x7e) abort();
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static input in;
+    if (!decode(data, size, &in)) return 0;
+    long live = 0;
+    lh_allocator al = {lh_fuzz_count_alloc, lh_fuzz_count_free, &live};
+    in.opt.alloc = &al;
+    lh_tetmesh *m = NULL;
+    lh_error err;
+    lh_status st = lh_tetrahedralize(&in.g, &in.opt, &m, &err);
+    if (st == LH_OK) {
+        lh_tetmesh_stats s;
+        lh_tetmesh_stats_get(m, &s);
+        if (lh_tetmesh_point_count(m) != in.g.n + s.steiner_points) abort();
+        size_t off = 0, pairs = 0;
+        lh_error cerr;
+        if (!in.opt.check_intersections &&
+            lh_plc_intersections(&in.g, NULL, 0, NULL, &pairs, &cerr) != LH_OK)
+            abort();
+        lh_status ck = lh_tetmesh_check(
+            lh_tetmesh_point_count(m), lh_tetmesh_points(m), lh_tetmesh_tet_count(m),
+            lh_tetmesh_tets(m), lh_tetmesh_face_count(m), lh_tetmesh_faces(m),
+            lh_tetmesh_face_parents(m), lh_tetmesh_edge_count(m), lh_tetmesh_edges(m),
+            in.opt.convex_hull || in.g.facet_count == 0,
+            pairs || in.g.hole_count ? NULL : &in.g, &off, NULL, &cerr);
+        if (ck != LH_OK) {
+            fprintf(stderr, "fuzz_tetrahedralize: the mesh fails its check: %s\n", cerr.message);
+            abort();
+        }
+    } else {
+        if (m || !documented(st)) abort();
+        printable(err.message);
+    }
+    lh_tetmesh_free(m);
+    if (live != 0) abort();
+    return 0;
+}
