@@ -362,8 +362,28 @@ static lh_status split(t3_ctx *c, size_t k, const patch_scan *ps, const verdict 
     return lh__t3_say(c, LH_ERR_INTERNAL, 0, "patch %zu has no segment to split", k);
 }
 
+/* The common case: a patch of one triangle, no point on its edges or inside it. Its
+ * face, sorted, into *f; 0 when the patch is not that simple. */
+static int plain_triangle(const t3_ctx *c, size_t k, lh_index f[3])
+{
+    if (c->patch_first[k + 1] - c->patch_first[k] != 1 || c->pnode_first[k + 1] != c->pnode_first[k])
+        return 0;
+    const size_t t = (size_t)c->patch_tri[c->patch_first[k]];
+    for (int j = 0; j < 3; j++) {
+        lh_index s = c->tri_seg[3 * t + j];
+        if (s < 0 || c->node_first[s + 1] != c->node_first[s]) return 0;
+        f[j] = c->tri[3 * t + j];
+    }
+    if (f[0] > f[1]) { lh_index x = f[0]; f[0] = f[1]; f[1] = x; }
+    if (f[1] > f[2]) { lh_index x = f[1]; f[1] = f[2]; f[2] = x; }
+    if (f[0] > f[1]) { lh_index x = f[0]; f[0] = f[1]; f[1] = x; }
+    return 1;
+}
+
 lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int want_split, int *ok)
 {
+    lh_index f[3];
+    if (plain_triangle(c, k, f) && lh__t3_has_face(c, f[0], f[1], f[2])) return *ok = 1, LH_OK;
     patch_scan ps;
     memset(&ps, 0, sizeof ps);
     lh_status st = gather(c, k, &ps);
@@ -384,6 +404,14 @@ lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int want_split, int *ok)
 
 lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t *count)
 {
+    lh_index f[3];
+    if (plain_triangle(c, k, f) && lh__t3_has_face(c, f[0], f[1], f[2])) {
+        lh_status st = lh__t3_room(c, &c->fbuf, &c->fcap, 3);
+        if (st == LH_OK) memcpy(c->fbuf, f, sizeof f);
+        *faces = c->fbuf;
+        *count = st == LH_OK;
+        return st;
+    }
     patch_scan ps;
     memset(&ps, 0, sizeof ps);
     lh_status st = gather(c, k, &ps);
