@@ -84,6 +84,25 @@ LH_TEST(vertex_inside_or_on_edge)
     LH_EXPECT_EQ_U64(two(lh_t_, base, (double[]){2, 0, 0, 2, -1, 0, 3, -1, 0}), 1);
 }
 
+/* A triangle hinged on a square's diagonal: the square's triangulation has that
+ * diagonal as an edge, so the two share a triangle edge, but it is no polygon edge of
+ * the square: they meet along a line inside it. Hinged on the square's side instead:
+ * no intersection. */
+LH_TEST(hinged_on_a_diagonal)
+{
+    for (int side = 0; side < 2; side++) {
+        tplc b;
+        tplc_init(&b);
+        lh_index q[4], a = tplc_point(&b, 0, 0, 0), c = tplc_point(&b, 1, 0, 0);
+        q[0] = a, q[1] = c, q[2] = tplc_point(&b, 1, 1, 0), q[3] = tplc_point(&b, 0, 1, 0);
+        tplc_face(&b, 4, q);
+        lh_index top = tplc_point(&b, 0.5, 0.5, 1);
+        tplc_face(&b, 3, (lh_index[]){side ? a : q[0], side ? c : q[2], top});
+        lh_index got[16];
+        LH_EXPECT_EQ_U64(pairs_of(lh_t_, &b, got), side ? 0 : 1);
+    }
+}
+
 /* Unit cubes [0,1]^3 and [1,2] x [1,2] x [0,1] share the edge x = y = 1: a valid
  * non-manifold PLC, no intersection; quads triangulated as facets. */
 static void cube(tplc *b, double x, double y)
@@ -364,7 +383,8 @@ int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(crossing_and_disjoint),      LH_CASE(shared_corners_only),
-        LH_CASE(vertex_inside_or_on_edge),   LH_CASE(cubes_sharing_an_edge),
+        LH_CASE(vertex_inside_or_on_edge),   LH_CASE(hinged_on_a_diagonal),
+        LH_CASE(cubes_sharing_an_edge),
         LH_CASE(schonhardt_prism),           LH_CASE(pairs_unique_sorted_and_capped),
         LH_CASE(identical_copies),           LH_CASE(refusals),
         LH_CASE(grid_agrees_with_all_pairs), LH_CASE(triangle_test_symmetric),
