@@ -18,6 +18,7 @@ int lh_cli_qvoronoi(int argc, char **argv);
 int lh_cli_qconvex(int argc, char **argv);
 int lh_cli_qhalf(int argc, char **argv);
 int lh_cli_triangle(int argc, char **argv);
+int lh_cli_tetgen(int argc, char **argv);
 int lh_cli_mesh(int argc, char **argv);
 
 /* Shared by the commands that read points (common.c). */

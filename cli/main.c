@@ -25,7 +25,8 @@ static const command commands[] = {
     {"qconvex", lh_cli_qconvex, "Qhull's qconvex, exact: same options and formats (i o n Fn FN ...)"},
     {"qhalf", lh_cli_qhalf, "Qhull's qhalf: halfspace intersection by the exact hull of the dual points"},
     {"triangle", lh_cli_triangle, "Triangle's 2D meshing, exact: same switches and files (-pq30a0.1 A.poly)"},
-    {"mesh", lh_cli_mesh, "2D quality meshing of a .poly, .node or polygon rings (VTK, Gmsh, Triangle, SVG)"},
+    {"tetgen", lh_cli_tetgen, "TetGen's 3D meshing, exact: same switches and files (-pYA box.poly)"},
+    {"mesh", lh_cli_mesh, "2D and 3D meshing of a .poly, .off, .node ... (VTK, Gmsh, Medit, Triangle, SVG)"},
     {"selfcheck", lh_cli_selfcheck, "check the exact predicates on near-degenerate cases"},
 };
 enum { n_commands = sizeof commands / sizeof commands[0] };

@@ -1,10 +1,12 @@
 /* mesh.c — `lifthull mesh`: 2D meshing with lifthull's own long options — the
  * computation of `lifthull triangle` (lh_pslg_triangulate: constrained Delaunay
  * triangulation of a .poly, .node or JSON rings, optionally refined), written in the
- * format -o's extension names, or the quality report on standard output. */
+ * format -o's extension names, or the quality report on standard output. A 3D input
+ * goes to mesh3.c (lh_tetrahedralize, as `lifthull tetgen`). */
 #include "cli.h"
 #include "outfile.h"
 #include "pslg_io.h"
+#include "tetgen_io.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +14,7 @@
 
 static const char help[] =
     "usage: lifthull mesh [OPTIONS] FILE[.poly|.node|.json] [-o OUT [-f]]\n"
+    "       lifthull mesh [OPTIONS] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj] [-o OUT [-f]]\n"
     "\n"
     "The constrained Delaunay triangulation of a planar straight-line graph (Triangle's\n"
     "FILE.poly; a .poly without vertices takes FILE.node's), of a point set (FILE.node)\n"
@@ -45,6 +48,7 @@ static const char help[] =
     "  --no-boundary-steiner  no Steiner points on boundary segments (Triangle's -Y)\n"
     "  --no-segment-steiner   no Steiner points on any segment (Triangle's -YY)\n"
     "  --max-steiner N        at most N Steiner points\n"
+    "  --check                verify the mesh exactly and print the verdict (3D)\n"
     "  --ignore-holes         ignore the .poly's holes\n"
     "  --smooth N             N passes of smoothing after refinement: free Steiner\n"
     "                         points move to raise the smallest angle around them\n"
@@ -53,14 +57,31 @@ static const char help[] =
     "  --report               print the quality report as well as writing -o\n"
     "  -o OUT                 write OUT; an existing file needs -f\n"
     "  -f                     -o may replace existing files\n"
-    "  -q                     no summary line after writing -o\n"
+    "  -q, --quiet            no summary line after writing -o\n"
     "  --ascii                a .vtu as text (default: binary, base64 inline)\n"
+    "\n"
+    "3D input (a .poly or .node with 3 coordinates, .smesh, .off, .ply, .stl, Medit\n"
+    "  .mesh, .obj): the tetrahedralization of the piecewise linear complex, every\n"
+    "  facet a union of faces, every segment a union of edges (`lifthull tetgen -p`);\n"
+    "  a .node: the Delaunay tetrahedralization. Without -o the statistics; -o OUT:\n"
+    "  .vtu   VTK: tetrahedra, neighbours, point data 'marker', cell data 'region'\n"
+    "         with --region-attributes; binary (--ascii: text)\n"
+    "  .msh   Gmsh 4.1 (markers as node data)\n"
+    "  .mesh  Medit: vertices, boundary triangles with their facet markers and\n"
+    "         tetrahedra with their region attributes as references\n"
+    "  .svg   a picture: the boundary faces coloured by facet marker, seen from an\n"
+    "         oblique direction\n"
+    "  options: --convex-hull, --no-boundary-steiner (no Steiner points on segments\n"
+    "  or facets), --max-steiner N, --region-attributes (or --attributes), --check\n"
+    "  (lh_tetmesh_check's verdict on the mesh: exit 1 when invalid), --report,\n"
+    "  --quiet (-q), -o, -f, --ascii; the 2D refinement options are refused.\n"
     "\n"
     "examples:\n"
     "  lifthull mesh examples/A.poly --min-angle 30       # the quality report\n"
     "  lifthull mesh examples/A.poly --min-angle 30 --max-area 0.01 -o A.vtu -f\n"
     "  lifthull mesh examples/A.poly --quality -o A.svg -f\n"
     "  lifthull mesh examples/lake.json --min-angle 25 -o lake.node -f  # and .ele .poly\n"
+    "  lifthull mesh examples/box.poly -o box.svg -f      # 3D: the boundary, pictured\n"
     "\n"
     "exit codes: 0 done (triangles below the bounds are reported, not an error), 1 out\n"
     "of memory or an output file could not be written, 2 usage, 3 bad input file\n"
@@ -69,7 +90,8 @@ static const char help[] =
 typedef struct mesh_args {
     lh_trimesh_options opt;
     const char *file, *output;
-    int force, quiet, report, ignore_holes, quality, angle_given, ascii;
+    int force, quiet, report, ignore_holes, quality, angle_given, ascii, check;
+    const char *only2d; /* the first option of 2D meshing only, or NULL */
 } mesh_args;
 
 static int usage_error(const char *what, const char *arg)
@@ -119,14 +141,20 @@ static int parse(mesh_args *a, int argc, char **argv)
                 v = argv[++i];
             }
         double x;
+        static const char *const only2d[] = {"--min-angle", "--quality", "--max-area", "--region-areas",
+                                             "--conforming", "--split-crossings", "--no-segment-steiner",
+                                             "--ignore-holes", "--smooth"};
+        for (size_t k = 0; k < sizeof only2d / sizeof only2d[0] && !a->only2d; k++)
+            if (!strcmp(s, only2d[k])) a->only2d = only2d[k];
         if (!strcmp(s, "-o")) a->output = v;
         else if (!strcmp(s, "-f")) a->force = 1;
-        else if (!strcmp(s, "-q")) a->quiet = 1;
+        else if (!strcmp(s, "-q") || !strcmp(s, "--quiet")) a->quiet = 1;
+        else if (!strcmp(s, "--check")) a->check = 1;
         else if (!strcmp(s, "--report")) a->report = 1;
         else if (!strcmp(s, "--ascii")) a->ascii = 1;
         else if (!strcmp(s, "--quality")) a->quality = 1;
         else if (!strcmp(s, "--region-areas")) a->opt.region_areas = 1;
-        else if (!strcmp(s, "--attributes")) a->opt.region_attributes = 1;
+        else if (!strcmp(s, "--attributes") || !strcmp(s, "--region-attributes")) a->opt.region_attributes = 1;
         else if (!strcmp(s, "--convex-hull")) a->opt.convex_hull = 1;
         else if (!strcmp(s, "--conforming")) a->opt.conforming = 1;
         else if (!strcmp(s, "--split-crossings")) a->opt.split_crossings = 1;
@@ -176,21 +204,24 @@ static int ext_index(const char *name, const char *const *exts, int n, size_t *s
 enum { OUT_VTU, OUT_MSH, OUT_OFF, OUT_NODE, OUT_ELE, OUT_SVG, OUT_COUNT };
 static const char *const out_ext[OUT_COUNT] = {".vtu", ".msh", ".off", ".node", ".ele", ".svg"};
 
+double *lh_cli_mesh_markers(const char *output, const char *node_path, const lh_index *pm, size_t np)
+{
+    if (lh_cli_same_file(output, node_path)) {
+        fprintf(stderr, "lifthull mesh: '%s' is an input file; it is not overwritten\n", output);
+        return NULL;
+    }
+    double *marker = malloc((np ? np : 1) * sizeof *marker);
+    if (!marker) fprintf(stderr, "lifthull mesh: out of memory\n");
+    for (size_t p = 0; marker && p < np; p++) marker[p] = (double)pm[p];
+    return marker;
+}
+
 /* One file (.vtu .msh .off .svg) through the whole-or-nothing mechanism. */
 static int write_one(const mesh_args *a, const lh_cli_pslg *in, const lh_trimesh *m, int kind)
 {
     const size_t np = lh_trimesh_point_count(m), nt = lh_trimesh_triangle_count(m);
-    if (lh_cli_same_file(a->output, in->node_path)) {
-        fprintf(stderr, "lifthull mesh: '%s' is an input file; it is not overwritten\n", a->output);
-        return LH_EXIT_FAIL;
-    }
-    double *marker = malloc((np ? np : 1) * sizeof *marker);
-    if (!marker) {
-        fprintf(stderr, "lifthull mesh: out of memory\n");
-        return LH_EXIT_FAIL;
-    }
-    const lh_index *pm = lh_trimesh_point_markers(m);
-    for (size_t p = 0; p < np; p++) marker[p] = (double)pm[p];
+    double *marker = lh_cli_mesh_markers(a->output, in->node_path, lh_trimesh_point_markers(m), np);
+    if (!marker) return LH_EXIT_FAIL;
     lh_mesh_view v = {2, np, lh_trimesh_points(m), 2, nt, lh_trimesh_triangles(m), lh_trimesh_neighbors(m),
                       kind == OUT_OFF ? NULL : marker, "marker"};
     lh_cli_out out;
@@ -247,17 +278,39 @@ static int write_output(const mesh_args *a, const lh_cli_pslg *in, const lh_trim
     return triangle_files(a, in, in->kind, m, stem);
 }
 
+/* A 3D input: the options that apply, to mesh3.c. */
+static int mesh3(const mesh_args *a)
+{
+    if (a->only2d) {
+        usage_error("2D meshing only, not implemented for 3D input yet:", a->only2d);
+        return LH_EXIT_USAGE;
+    }
+    lh_cli_mesh3_args m = {a->file, a->output, a->force, a->quiet, a->ascii, a->check, a->report, {0}};
+    lh_tetmesh_options_default(&m.opt);
+    m.opt.convex_hull = a->opt.convex_hull;
+    m.opt.boundary_steiner = a->opt.boundary_steiner > 0;
+    m.opt.max_steiner = a->opt.max_steiner;
+    m.opt.region_attributes = a->opt.region_attributes;
+    return lh_cli_mesh3(&m);
+}
+
 int lh_cli_mesh(int argc, char **argv)
 {
     mesh_args a;
     int r = parse(&a, argc, argv);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
+    if (lh_cli_plc_is_3d(a.file)) return mesh3(&a);
+    if (a.check) {
+        usage_error("not implemented for 2D input yet (lifthull check verifies a triangulation):", "--check");
+        return LH_EXIT_USAGE;
+    }
     static const char *const in_ext[] = {".poly", ".node", ".json"};
     static const int in_kind[] = {LH_CLI_POLY, LH_CLI_NODE, LH_CLI_RINGS};
     size_t stem, out_stem = 0;
     const int ik = ext_index(a.file, in_ext, 3, &stem);
     if (ik < 0) {
-        usage_error("the input's name must end in .poly, .node or .json:", a.file);
+        usage_error("the input's name must end in .poly, .node or .json (2D), or .poly, .smesh, .node, "
+                    ".off, .ply, .stl, .mesh or .obj (3D):", a.file);
         return LH_EXIT_USAGE;
     }
     const int ok_kind = a.output ? ext_index(a.output, out_ext, OUT_COUNT, &out_stem) : -1;

@@ -99,7 +99,7 @@ static void colour(int b, char *out)
     snprintf(out, 8, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
 }
 
-static void put_escaped(FILE *f, const char *s)
+void lh_cli_svg_escaped(FILE *f, const char *s)
 {
     for (; *s; s++) {
         if (*s == '&') fputs("&amp;", f);
@@ -107,6 +107,18 @@ static void put_escaped(FILE *f, const char *s)
         else if (*s == '>') fputs("&gt;", f);
         else if ((unsigned char)*s >= 0x20) putc(*s, f);
     }
+}
+
+void lh_cli_svg_begin(FILE *f, double width, double height, double legend, const char *title)
+{
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 %g %.0f %.0f\" width=\"%.0f\" height=\"%.0f\">\n",
+            -legend, width, height + legend, ceil(width / 10), ceil((height + legend) / 10));
+    fputs("<title>", f);
+    lh_cli_svg_escaped(f, title);
+    fputs("</title>\n", f);
+    fprintf(f, "<rect x=\"0\" y=\"%g\" width=\"%.0f\" height=\"%.0f\" fill=\"#ffffff\"/>\n", -legend, width,
+            height + legend);
 }
 
 /* Three rows: the title and counts; the smallest angle and the bad triangles; the
@@ -118,7 +130,7 @@ static void legend(FILE *f, const lh_trimesh *m, double bound, const char *title
     const double fs = 200, x0 = 0.02 * CANVAS, row = 300;
     fprintf(f, "<g font-family=\"sans-serif\" font-size=\"%g\" fill=\"#333333\">\n<text x=\"%g\" y=\"%g\">", fs, x0,
             -LEGEND + row);
-    put_escaped(f, title);
+    lh_cli_svg_escaped(f, title);
     fprintf(f, ": %zu points, %zu triangles</text>\n", lh_trimesh_point_count(m), s.triangles);
     fprintf(f, "<text x=\"%g\" y=\"%g\">smallest angle %.4g&#176;", x0, -LEGEND + 2 * row, s.min_angle);
     if (s.bad_triangles)
@@ -157,13 +169,7 @@ int lh_cli_trimesh_svg(FILE *f, const lh_trimesh *m, double min_angle, const cha
     }
     const view v = fit(m);
     const double W = ceil(fmax(v.width, MIN_WIDTH)), H = ceil(v.height);
-    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-               "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 %g %.0f %.0f\" width=\"%.0f\" height=\"%.0f\">\n",
-            -LEGEND, W, H + LEGEND, ceil(W / 10), ceil((H + LEGEND) / 10));
-    fputs("<title>", f);
-    put_escaped(f, title);
-    fputs("</title>\n", f);
-    fprintf(f, "<rect x=\"0\" y=\"%g\" width=\"%.0f\" height=\"%.0f\" fill=\"#ffffff\"/>\n", -LEGEND, W, H + LEGEND);
+    lh_cli_svg_begin(f, W, H, LEGEND, title);
     legend(f, m, min_angle, title);
     /* the triangles, one group per colour */
     for (int b = 0; b <= BINS; b++) {

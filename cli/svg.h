@@ -43,4 +43,10 @@ int lh_cli_svg_write(FILE *f, const lh_cli_svg *s);
  * unit (svg.c, mesh_svg.c). */
 int lh_cli_svg_shift(const double lo[2], const double hi[2]);
 
+/* For the mesh pictures (mesh_svg.c, mesh_svg3.c): s as XML text (& < > escaped,
+ * control bytes left out); the document's start: the viewBox 0 -legend .. width x
+ * height + legend (a tenth of it in pixels), the title, a white background. */
+void lh_cli_svg_escaped(FILE *f, const char *s);
+void lh_cli_svg_begin(FILE *f, double width, double height, double legend, const char *title);
+
 #endif

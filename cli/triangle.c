@@ -7,9 +7,8 @@
 #include "cli.h"
 #include "outfile.h"
 #include "pslg_io.h"
+#include "switches.h"
 
-#include <ctype.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -63,17 +62,6 @@ static const char *const usage_text =
     "\n"
     "exit codes: 0 success, 1 failure, 2 usage error, 3 bad input\n";
 
-/* A number right after a switch letter: digits, '.', and an exponent. */
-static int number_after(const char *s, int *j, double *out)
-{
-    const char *p = s + *j + 1;
-    if (!isdigit((unsigned char)*p) && *p != '.') return 0;
-    char *end;
-    *out = strtod(p, &end);
-    *j += (int)(end - p);
-    return 1;
-}
-
 /* -S's count after s[*j]: none is 0, as Triangle; a number is rounded down, and one
  * that no size_t holds (1e30, 1e400: strtod's HUGE_VAL) means no limit, the budget
  * unbounded rather than wrapped around. A sign is refused (0 returned, after a
@@ -85,21 +73,21 @@ static int steiner_after(const char *s, int *j, size_t *out)
         fprintf(stderr, "lifthull triangle: -S takes a count of Steiner points (0 or more), not '%s'\n", s + *j + 1);
         return 0;
     }
-    double x;
-    *out = !number_after(s, j, &x) ? 0 : x >= (double)SIZE_MAX ? SIZE_MAX : (size_t)x;
+    *out = lh_cli_switch_count(s, j, 0);
     return 1;
 }
 
-static int parse_switches(const char *s, sw *o)
+static int parse_switches(const char *s, void *opt)
 {
+    sw *o = opt;
     for (int j = 1; s[j]; j++) {
         double x;
         switch (s[j]) {
         case 'p': o->p = 1; break;
         case 'r': o->r = 1; break;
-        case 'q': o->q = 1; o->angle = number_after(s, &j, &x) ? x : 20; break;
+        case 'q': o->q = 1; o->angle = lh_cli_switch_number(s, &j, &x) ? x : 20; break;
         case 'a':
-            if (number_after(s, &j, &x)) o->area = x; else o->a_regions = 1;
+            if (lh_cli_switch_number(s, &j, &x)) o->area = x; else o->a_regions = 1;
             break;
         case 'A': o->A = 1; break;
         case 'c': o->c = 1; break;
@@ -165,29 +153,10 @@ static char *base_of(const char *file, int p, int *kind)
     return b;
 }
 
-/* The output base: BASE.1, or BASE.(k+1) when BASE ends in .k (Triangle's rule). */
-static char *out_base(const char *base, int no_number)
-{
-    const size_t n = strlen(base);
-    char *o = malloc(n + 24);
-    if (!o) return NULL;
-    size_t d = n;
-    while (d > 0 && isdigit((unsigned char)base[d - 1])) d--;
-    if (no_number) {
-        strcpy(o, base);
-    } else if (d < n && d > 1 && base[d - 1] == '.' && n - d < 18) {
-        memcpy(o, base, d);
-        snprintf(o + d, 24, "%lld", atoll(base + d) + 1);
-    } else {
-        snprintf(o, n + 24, "%s.1", base);
-    }
-    return o;
-}
-
 static int run(const sw *o, const char *file)
 {
     int kind, rc = LH_EXIT_FAIL;
-    char *base = base_of(file, o->p, &kind), *outb = base ? out_base(base, o->I) : NULL, *path = NULL;
+    char *base = base_of(file, o->p, &kind), *outb = base ? lh_cli_out_base(base, strlen(base), o->I) : NULL, *path = NULL;
     lh_cli_pslg in;
     lh_trimesh *m = NULL;
     if (!base || !outb) goto done;
@@ -254,25 +223,9 @@ int lh_cli_triangle(int argc, char **argv)
     sw o;
     memset(&o, 0, sizeof o);
     o.files = (lh_cli_tri_files){1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0};
-    const char *file = NULL;
-    for (int i = 0; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            fputs(usage_text, stdout);
-            return LH_EXIT_OK;
-        }
-        if (argv[i][0] == '-' && argv[i][1]) {
-            if (!parse_switches(argv[i], &o)) return LH_EXIT_USAGE;
-        } else if (file) {
-            fprintf(stderr, "lifthull triangle: one input file, not '%s' and '%s'\n", file, argv[i]);
-            return LH_EXIT_USAGE;
-        } else {
-            file = argv[i];
-        }
-    }
-    if (!file) {
-        fputs(usage_text, stderr);
-        return LH_EXIT_USAGE;
-    }
+    const char *file;
+    const int r = lh_cli_switch_args(argc, argv, "triangle", usage_text, parse_switches, &o, &file);
+    if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     if (o.q && !(o.angle >= 0 && o.angle <= LH_TRIMESH_MAX_ANGLE)) {
         fprintf(stderr, "lifthull triangle: -q%.17g: the angle bound must be 0..%g degrees\n", o.angle,
                 LH_TRIMESH_MAX_ANGLE);

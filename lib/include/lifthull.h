@@ -793,6 +793,51 @@ typedef struct lh_vtu_options {
 /* The .vtu writer (above) with its choices, opt NULL for the defaults. */
 LH_API lh_status lh_vtu_write(FILE *f, const lh_mesh_view *m, const lh_vtu_options *opt);
 
+/*
+ * Writers of a tetrahedral mesh's files as TetGen writes them (lifthull tetgen), with
+ * the checks and statuses of the writers above; a NULL marker or attribute array
+ * leaves its column out (the header says so). Points are numbered from first_index
+ * (0 or 1), as in the matching .node.
+ * lh_node_marker_write  .node: "n d attributes markers" (values: the one attribute),
+ *                       then "i x_1..x_d [value] [marker]". d = 2..8.
+ * lh_ele_attr_write     .ele: "count k+1 0|1", then "i v_0..v_k [attribute]" with
+ *                       attrs[i] (a region attribute; NaN or infinity:
+ *                       LH_ERR_NONFINITE). k = 1..8.
+ * lh_face_write         .face: "count 0|1", then "i a b c [marker]" (k = 2).
+ * lh_edge_write         .edge: "count 0|1", then "i a b [marker]" (k = 1).
+ * lh_vtk_write          legacy VTK ASCII (DataFile Version 2.0) UNSTRUCTURED_GRID as
+ *                       TetGen's -k: POINTS (padded to 3 coordinates), CELLS with
+ *                       0-based indices, CELL_TYPES (3 line, 5 triangle, 10 tetra),
+ *                       then values as POINT_DATA and cell_values (m->count, or NULL)
+ *                       as CELL_DATA SCALARS named cell_values_name (NULL:
+ *                       "cell_scalars"), of type int when every value is a whole number
+ *                       an int holds, else double. d = 1..3, k = 1..3.
+ * lh_medit_write        Medit .mesh ASCII: MeshVersionFormatted 1, Dimension d,
+ *                       Vertices, then refs' faces (k-simplices of m->k vertices:
+ *                       Triangles of a tetrahedral mesh, Edges of a triangle mesh)
+ *                       and m's cells (Tetrahedra, Triangles or Edges), every item
+ *                       numbered from 1 with its integer reference (0 where refs
+ *                       gives none), End. d = 2..3, k = 1..3.
+ */
+typedef struct lh_medit_refs {
+    const lh_index *point_refs; /* m->n references, or NULL                             */
+    const lh_index *cell_refs;  /* m->count references, or NULL                         */
+    size_t face_count;          /* boundary faces written before the cells (k >= 2)     */
+    const lh_index *faces;      /* face_count * m->k point indices                      */
+    const lh_index *face_refs;  /* face_count references, or NULL                       */
+} lh_medit_refs;
+LH_API lh_status lh_node_marker_write(FILE *f, const lh_mesh_view *m, const lh_index *markers,
+                                      int first_index);
+LH_API lh_status lh_ele_attr_write(FILE *f, const lh_mesh_view *m, const double *attrs,
+                                   int first_index);
+LH_API lh_status lh_face_write(FILE *f, const lh_mesh_view *m, const lh_index *markers,
+                               int first_index);
+LH_API lh_status lh_edge_write(FILE *f, const lh_mesh_view *m, const lh_index *markers,
+                               int first_index);
+LH_API lh_status lh_vtk_write(FILE *f, const lh_mesh_view *m, const double *cell_values,
+                              const char *cell_values_name);
+LH_API lh_status lh_medit_write(FILE *f, const lh_mesh_view *m, const lh_medit_refs *refs);
+
 /* ---- 2D meshing: constrained Delaunay triangulation and quality refinement -------- */
 
 /*

@@ -192,7 +192,7 @@ expect "angle range" 2 "--min-angle takes a number from 0 to 40, not '45'" '' --
 expect "angle text" 2 "--min-angle takes a number from 0 to 40, not 'abc'" '' -- "$lh" mesh A.poly --min-angle abc
 expect "steiner count" 2 "--max-steiner takes a whole number" '' -- "$lh" mesh A.poly --max-steiner -1
 expect "two files" 2 "one input file only, not also 'B\.poly'" '' -- "$lh" mesh A.poly B.poly
-expect "input name" 2 "must end in \.poly, \.node or \.json: 'A\.txt'" '' -- "$lh" mesh A.txt
+expect "input name" 2 "must end in \.poly, \.node or \.json \(2D\), or \.poly, \.smesh, \.node, \.off, \.ply, \.stl, \.mesh or \.obj \(3D\): 'A\.txt'" '' -- "$lh" mesh A.txt
 expect "output name" 2 "-o: the name must end in \.vtu, \.msh, \.off, \.node, \.ele or \.svg: 'A\.txt'" '' -- "$lh" mesh A.poly -o A.txt
 expect "missing file" 3 "^nosuch\.poly: No such file or directory" '' -- "$lh" mesh nosuch.poly
 printf '# two segments that cross\n4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 2\n2 3 4\n0\n' > cross.poly

@@ -1,0 +1,91 @@
+/* tetgen_io.h — 3D meshing input and output for the `tetgen` and `mesh` commands:
+ * loading a PLC (tetgen_load.c), the mesh's faces and edges as TetGen numbers them
+ * (tetgen_items.c), and the SVG picture of the boundary (mesh_svg3.c). */
+#ifndef LH_CLI_TETGEN_IO_H
+#define LH_CLI_TETGEN_IO_H
+
+#include "lifthull.h"
+
+#include <stdio.h>
+
+/* A 3D meshing input. */
+typedef struct lh_cli_plc {
+    lh_plc g;          /* the PLC (for a .node: pointing into pts)              */
+    lh_points pts;     /* a .node's points                                      */
+    int read;          /* g was filled by lh_plc_read (lh_plc_free releases it) */
+    const char *path;  /* the file read                                         */
+    char *node_path;   /* BASE.node when the .poly had no points (read too, so
+                          never written), or NULL                               */
+} lh_cli_plc;
+
+/* The input extensions 3D meshing reads, by lh_plc_read (".node" by lh_points_read):
+ * whether path ends in one (its length into *stem). */
+int lh_cli_plc_path(const char *path, size_t *stem);
+
+/* Reads path (a .node with lh_points_read: a point set; anything else with
+ * lh_plc_read, a .poly without points taking BASE.node's, BASE = path without its
+ * extension). Returns 1, or 0 after printing "lifthull CMD: FILE:LINE:COL: ..." on
+ * standard error. */
+int lh_cli_plc_load(lh_cli_plc *in, const char *cmd, const char *path);
+void lh_cli_plc_free(lh_cli_plc *in);
+/* Whether the input is points only (no facet, no segment): its mesh is the
+ * Delaunay tetrahedralization of their convex hull. */
+int lh_cli_plc_is_points(const lh_cli_plc *in);
+/* Leaves only the points (TetGen without -p: a Delaunay tetrahedralization). */
+void lh_cli_plc_points_only(lh_cli_plc *in);
+/* Prints lh_tetrahedralize's (or another call's) failure: "lifthull CMD: FILE:..." */
+void lh_cli_plc_report(const lh_cli_plc *in, const char *cmd, const lh_error *err);
+/* Exit code for a failed meshing call: 1 out of memory or internal, 3 the input. */
+int lh_cli_plc_exit(lh_status st);
+
+/* -d: lists the pairs of facets that intersect (the first `limit`, 0: all) on out,
+ * facets numbered from `first`. Returns 0 none, 1 some, -1 after printing a
+ * failure. */
+int lh_cli_plc_intersections(FILE *out, const lh_cli_plc *in, const char *cmd, size_t limit, int first);
+
+/* -C: lh_tetmesh_check of m against the input; prints the verdict on out. Returns
+ * 1 valid, 0 not (or the check failed; printed). */
+int lh_cli_tetmesh_verify(FILE *out, const lh_tetmesh *m, const lh_cli_plc *in, const char *cmd);
+
+/* The mesh's faces or edges, every one once, in TetGen's order (tetrahedron by
+ * tetrahedron): v (k+1 per item), mark (the subface's or subsegment's marker, 0 for
+ * others). */
+typedef struct lh_cli_items {
+    size_t n;
+    lh_index *v, *mark;
+} lh_cli_items;
+/* k = 2: every face; k = 1: every edge. Returns 1, or 0 out of memory (it freed). */
+int lh_cli_items_build(lh_cli_items *it, const lh_tetmesh *m, int k);
+void lh_cli_items_free(lh_cli_items *it);
+
+/* The one-line summary and -V's statistics of a mesh. */
+void lh_cli_tetmesh_summary(FILE *out, const char *name, const lh_tetmesh *m, double secs);
+void lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m);
+
+/* The Medit .mesh of m (lh_medit_write): point and face markers as references
+ * (with markers), the region attributes as the tetrahedra's (with attrs; whole
+ * numbers only, else LH_ERR_INVALID_ARGUMENT after a message). */
+lh_status lh_cli_tetmesh_medit(FILE *f, const lh_tetmesh *m, int markers, int attrs, const char *cmd);
+
+/* `lifthull mesh` with a 3D input (mesh3.c), its options parsed by mesh.c. */
+typedef struct lh_cli_mesh3_args {
+    const char *file, *output;
+    int force, quiet, ascii, check, report;
+    lh_tetmesh_options opt;
+} lh_cli_mesh3_args;
+int lh_cli_mesh3(const lh_cli_mesh3_args *a);
+/* For `mesh -o OUTPUT` (mesh.c): the np point markers pm as doubles (a point field),
+ * malloc'ed; NULL after a message when out of memory or when OUTPUT is node_path,
+ * an input. */
+double *lh_cli_mesh_markers(const char *output, const char *node_path, const lh_index *pm, size_t np);
+/* Whether FILE is a 3D meshing input: a .poly or .node whose header says 3
+ * coordinates (a .poly without points: BASE.node's), or another extension
+ * lh_cli_plc_path knows. */
+int lh_cli_plc_is_3d(const char *path);
+
+/* An SVG picture of m's boundary faces (mesh_svg3.c), coloured by facet marker,
+ * seen along a fixed oblique direction, far faces painted first; a legend headed by
+ * title. Returns 0, or -1 on a write error or out of memory. */
+int lh_cli_tetmesh_svg(FILE *f, const lh_tetmesh *m, const char *title);
+
+#endif
