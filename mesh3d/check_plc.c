@@ -22,6 +22,7 @@
  * is held to (b) only, since rounding moves its area.
  */
 #include "check.h"
+#include "lh_sort.h"
 
 #include <float.h>
 #include <math.h>
@@ -724,10 +725,67 @@ static void pchk_free(pchk *k)
     lh__detsum_free(k->sum), lh__detsum_free(k->s2), lh__detsum_free(k->s1);
 }
 
+static lh_status check_merged(lh__tchk *c);
+
+static int cmp_coords(const void *ctx, lh_index a, lh_index b)
+{
+    const double *x = (const double *)ctx + 3 * (size_t)a, *y = (const double *)ctx + 3 * (size_t)b;
+    for (int k = 0; k < 3; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
+
+/* The PLC with every point index replaced by the first point of equal coordinates
+ * (the PLC's points are the mesh's first g->n, checked by check_g)
+ * (a mesher merges exact duplicates, as lh_delaunay does): *copy shares g's arrays
+ * but polygon_vertices and segments, allocated into *pv and *sv. */
+static lh_status merge_duplicates(lh__tchk *c, lh_plc *copy, lh_index **pv, lh_index **sv)
+{
+    const lh_plc *g = c->g;
+    const lh_allocator *al = &c->al;
+    const size_t n = g->n, nv = g->facet_count ? (size_t)g->polygon_first[g->polygon_count] : 0;
+    lh_index *idx = lh__alloc(al, (2 * n + 1) * sizeof *idx), *rep = lh__alloc(al, (n + 1) * sizeof *rep);
+    *pv = lh__alloc(al, (nv + 1) * sizeof **pv);
+    *sv = lh__alloc(al, (2 * g->segment_count + 1) * sizeof **sv);
+    lh_status st = idx && rep && *pv && *sv ? LH_OK : LH_ERR_NOMEM;
+    if (st == LH_OK) {
+        for (size_t i = 0; i < n; i++) idx[i] = (lh_index)i;
+        lh__sort_idx(idx, idx + n, n, cmp_coords, c->xyz); /* stable: the first first */
+        for (size_t i = 0; i < n; i++)
+            rep[idx[i]] = i && !cmp_coords(c->xyz, idx[i - 1], idx[i]) ? rep[idx[i - 1]] : idx[i];
+        for (size_t i = 0; i < nv; i++) (*pv)[i] = rep[g->polygon_vertices[i]];
+        for (size_t i = 0; i < 2 * g->segment_count; i++) (*sv)[i] = rep[g->segments[i]];
+        *copy = *g;
+        copy->polygon_vertices = *pv;
+        copy->segments = *sv;
+    }
+    lh__free(al, idx);
+    lh__free(al, rep);
+    return st;
+}
+
 lh_status lh__tchk_plc(lh__tchk *c)
 {
     lh_status st = check_g(c);
     if (st) return st;
+    lh_plc merged;
+    lh_index *pv = NULL, *sv = NULL;
+    const lh_plc *given = c->g;
+    st = merge_duplicates(c, &merged, &pv, &sv);
+    if (st == LH_OK) {
+        c->g = &merged;
+        st = check_merged(c);
+        c->g = given;
+    }
+    lh__free(&c->al, pv);
+    lh__free(&c->al, sv);
+    return st;
+}
+
+/* lh__tchk_plc on the PLC with its duplicate points merged. */
+static lh_status check_merged(lh__tchk *c)
+{
+    lh_status st;
     const lh_plc *g = c->g;
     const lh_allocator *al = &c->al;
     const size_t nv = g->facet_count ? (size_t)g->polygon_first[g->polygon_count] : 0;

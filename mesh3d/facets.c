@@ -28,10 +28,11 @@
  *
  * No Steiner point is added (boundary_steiner = -1, no refinement): every triangle's
  * corners are PLC points. A quad (one ring of 4, no hole) is split along its valid
- * diagonal directly, the Delaunay one when both are valid. Triangles are oriented as the first ring turns in the
- * projection, decided exactly by orient_2 at its lexicographically smallest vertex (a
- * strictly convex corner of a simple ring), so a closed surface whose rings are
- * consistently oriented gets consistently oriented triangles.
+ * diagonal directly, the Delaunay one when both are valid. Triangles are oriented as
+ * the first ring turns in the projection, decided exactly by orient_2 at its
+ * lexicographically smallest vertex (a strictly convex corner of a simple ring), so a
+ * closed surface whose rings are consistently oriented gets consistently oriented
+ * triangles.
  */
 #include "facets.h"
 
@@ -50,31 +51,34 @@ typedef struct facet_work {
     const lh_plc *g;
     const lh_allocator *al;
     lh_pred *pred;
-    lh_index *loc;     /* g->n: a point's local number in the current facet, -1: none */
-    lh_index *ids;     /* local number -> PLC point                                   */
-    lh_index *order;   /* local numbers sorted by projection (non-planar facets)      */
-    lh_index *tmp;     /* the sort's scratch                                          */
-    lh_index *seg;     /* 2 per edge: local numbers                                   */
-    double *xy;        /* 2 per local point: the projection                           */
-    double *hole;      /* 2 per hole point of the facet: the projection               */
+    lh_index *loc;   /* g->n: a point's local number in the current facet, -1: none */
+    lh_index *ids;   /* local number -> PLC point                                   */
+    lh_index *order; /* local numbers sorted by projection (non-planar facets)      */
+    lh_index *tmp;   /* the sort's scratch                                          */
+    lh_index *seg;   /* 2 per edge: local numbers                                   */
+    double *xy;      /* 2 per local point: the projection                           */
+    double *hole;    /* 2 per hole point of the facet: the projection               */
     size_t cap, hole_cap;
     size_t nid, nseg, nhole;
     size_t out_cap;
     lh__facet_tris *out;
 } facet_work;
 
-static const double *pt(const lh_plc *g, lh_index i) { return g->xyz + 3 * (size_t)i; }
+static const double *pt(const lh_plc *g, lh_index i)
+{
+    return g->xyz + 3 * (size_t)i;
+}
 
 /* Writes "facet F (line L): MESSAGE" (without the line when g has none) into err,
  * with err->line and err->index set. Returns st. */
-static lh_status facet_say(lh_error *err, const lh_plc *g, size_t f, lh_status st,
-                           const char *fmt, ...)
+static lh_status facet_say(lh_error *err, const lh_plc *g, size_t f, lh_status st, const char *fmt,
+                           ...)
 #if defined(__GNUC__) || defined(__clang__)
     __attribute__((format(printf, 5, 6)))
 #endif
     ;
-static lh_status facet_say(lh_error *err, const lh_plc *g, size_t f, lh_status st,
-                           const char *fmt, ...)
+static lh_status facet_say(lh_error *err, const lh_plc *g, size_t f, lh_status st, const char *fmt,
+                           ...)
 {
     if (!err) return st;
     char msg[LH_ERROR_MESSAGE_MAX];
@@ -108,7 +112,8 @@ static lh_status validate(const lh_plc *g, lh_error *err)
     if (g->n && !g->xyz)
         return lh__error_say(err, LH_ERR_INVALID_ARGUMENT, "the PLC has no point array");
     if (g->n >= (size_t)LH_INDEX_MAX)
-        return lh__error_say(err, LH_ERR_TOO_LARGE, "%zu points: more than an index can number", g->n);
+        return lh__error_say(err, LH_ERR_TOO_LARGE, "%zu points: more than an index can number",
+                             g->n);
     lh_status st = lh_coords_validate(3, g->n, g->xyz, err);
     if (st != LH_OK) return st;
     if (!g->facet_count) return LH_OK;
@@ -125,7 +130,8 @@ static lh_status validate(const lh_plc *g, lh_error *err)
                                  (long long)g->polygon_vertices[i], g->n ? g->n - 1 : 0);
     if (!g->facet_hole_first) return LH_OK;
     if (!offsets_ok(g->facet_hole_first, g->facet_count, SIZE_MAX))
-        return lh__error_say(err, LH_ERR_INVALID_ARGUMENT, "the PLC's facet hole offsets are inconsistent");
+        return lh__error_say(err, LH_ERR_INVALID_ARGUMENT,
+                             "the PLC's facet hole offsets are inconsistent");
     const size_t nh = (size_t)g->facet_hole_first[g->facet_count];
     if (nh && !g->facet_holes)
         return lh__error_say(err, LH_ERR_INVALID_ARGUMENT, "the PLC has no facet hole array");
@@ -234,7 +240,10 @@ static void newell(const lh_plc *g, const lh_index *ring, size_t m, double nrm[3
     }
 }
 
-static double absd(double x) { return x < 0 ? -x : x; }
+static double absd(double x)
+{
+    return x < 0 ? -x : x;
+}
 
 /* The axis to drop: Newell's largest component, unless the projection along it
  * flattens the non-collinear a, b, c; then the largest among those that do not. */
@@ -261,8 +270,7 @@ static int ring_turn(facet_work *w, const lh_index *ring, size_t m, double nrm_k
         if (p[0] < q[0] || (p[0] == q[0] && p[1] < q[1])) best = i;
     }
     const double *p[3] = {w->xy + 2 * w->loc[ring[(best + m - 1) % m]],
-                          w->xy + 2 * w->loc[ring[best]],
-                          w->xy + 2 * w->loc[ring[(best + 1) % m]]};
+                          w->xy + 2 * w->loc[ring[best]], w->xy + 2 * w->loc[ring[(best + 1) % m]]};
     const int s = lh_orient(w->pred, 2, p);
     return s ? s : (nrm_k < 0 ? -1 : 1);
 }
@@ -298,7 +306,8 @@ static lh_status projection_injective(facet_work *w, size_t f, lh_error *err)
         return facet_say(err, w->g, f, LH_ERR_DEGENERATE,
                          "not planar, and its projection to a coordinate plane merges "
                          "points %lld and %lld",
-                         base + (long long)w->ids[a < b ? a : b], base + (long long)w->ids[a < b ? b : a]);
+                         base + (long long)w->ids[a < b ? a : b],
+                         base + (long long)w->ids[a < b ? b : a]);
     }
     return LH_OK;
 }
@@ -306,7 +315,10 @@ static lh_status projection_injective(facet_work *w, size_t f, lh_error *err)
 /* ---- one facet ------------------------------------------------------------------- */
 
 /* PLC point v's projection (v in the current facet). */
-static const double *xy_of(const facet_work *w, lh_index v) { return w->xy + 2 * w->loc[v]; }
+static const double *xy_of(const facet_work *w, lh_index v)
+{
+    return w->xy + 2 * w->loc[v];
+}
 
 /* The diagonal from ring corner d to d + 2 splits the quad into two triangles that
  * turn as the ring (sign s) does. */
@@ -386,8 +398,8 @@ static lh_status pslg_failure(facet_work *w, size_t f, lh_status st, const lh_er
 {
     long long s, t, a, b, c, d;
     if (st == LH_ERR_CROSSING_SEGMENTS &&
-        sscanf(e->message, "segment %lld crosses segment %lld", &s, &t) == 2 && s >= 0 &&
-        t >= 0 && (size_t)s < w->nseg && (size_t)t < w->nseg) {
+        sscanf(e->message, "segment %lld crosses segment %lld", &s, &t) == 2 && s >= 0 && t >= 0 &&
+        (size_t)s < w->nseg && (size_t)t < w->nseg) {
         seg_points(w, s < t ? s : t, &a, &b);
         seg_points(w, s < t ? t : s, &c, &d);
         return facet_say(err, w->g, f, st,
@@ -411,7 +423,8 @@ static lh_status facet_project(facet_work *w, size_t f, lh_index ring0, lh_error
             c = p;
         }
     }
-    if (!c) return facet_say(err, g, f, LH_ERR_DEGENERATE, "its points are all collinear (zero area)");
+    if (!c)
+        return facet_say(err, g, f, LH_ERR_DEGENERATE, "its points are all collinear (zero area)");
     int planar = 1;
     for (size_t i = 0; i < w->nid && planar; i++) {
         const double *p[4] = {a, b, c, pt(g, w->ids[i])};
@@ -470,9 +483,8 @@ static lh_status facet_one(facet_work *w, size_t f, lh_error *err)
     const lh_index p0 = g->facet_first[f];
     if (g->facet_first[f + 1] == p0)
         return facet_say(err, g, f, LH_ERR_DEGENERATE, "no polygon of 3 or more vertices");
-    const size_t holes = g->facet_hole_first
-                             ? (size_t)(g->facet_hole_first[f + 1] - g->facet_hole_first[f])
-                             : 0;
+    const size_t holes =
+        g->facet_hole_first ? (size_t)(g->facet_hole_first[f + 1] - g->facet_hole_first[f]) : 0;
     const size_t need = (size_t)(g->polygon_first[g->facet_first[f + 1]] - g->polygon_first[p0]);
     if (g->facet_first[f + 1] - p0 == 1 && need == 3 && !holes) {
         const lh_index *v = g->polygon_vertices + g->polygon_first[p0];
@@ -485,8 +497,10 @@ static lh_status facet_one(facet_work *w, size_t f, lh_error *err)
     if (st != LH_OK) return st;
     lh_index ring0;
     collect(w, f, &ring0);
-    if (ring0 < 0) st = facet_say(err, g, f, LH_ERR_DEGENERATE, "no polygon of 3 or more vertices");
-    else st = facet_project(w, f, ring0, err);
+    if (ring0 < 0)
+        st = facet_say(err, g, f, LH_ERR_DEGENERATE, "no polygon of 3 or more vertices");
+    else
+        st = facet_project(w, f, ring0, err);
     for (size_t i = 0; i < w->nid; i++) w->loc[w->ids[i]] = -1;
     return st;
 }
@@ -506,8 +520,10 @@ lh_status lh__facets_triangulate(const lh_plc *g, const lh_allocator *al, lh__fa
     st = lh_pred_create(al, &w.pred);
     if (st == LH_OK && g->n) {
         w.loc = lh__alloc(w.al, g->n * sizeof(lh_index));
-        if (!w.loc) st = LH_ERR_NOMEM;
-        else for (size_t i = 0; i < g->n; i++) w.loc[i] = -1;
+        if (!w.loc)
+            st = LH_ERR_NOMEM;
+        else
+            for (size_t i = 0; i < g->n; i++) w.loc[i] = -1;
     }
     for (size_t f = 0; f < g->facet_count && st == LH_OK; f++) st = facet_one(&w, f, err);
     work_free(&w);

@@ -148,13 +148,12 @@ static int along_chain(const t3_ctx *c, const lh_index *f, int k)
     return 0;
 }
 
-/* Whether face f lies in patch k: not along a chain, and always for a patch of one
- * triangle (its points are on the triangle); else its centroid is in one of the
- * patch's triangles. */
+/* Whether face f lies in patch k: not along a chain, and its centroid in one of the
+ * patch's triangles (rounded Steiner points can make faces on the patch's points
+ * that stick out of it). */
 static int face_in_patch(t3_ctx *c, size_t k, const lh_index *f)
 {
     if (along_chain(c, f, 3)) return 0;
-    if (c->patch_first[k + 1] - c->patch_first[k] == 1) return 1;
     double g[3];
     for (int a = 0; a < 3; a++)
         g[a] = (c->xyz[3 * (size_t)f[0] + a] + c->xyz[3 * (size_t)f[1] + a] +
@@ -196,8 +195,8 @@ static lh_status face_records(t3_ctx *c, size_t k, patch_scan *ps, size_t *count
         for (lh_index q = c->star_first[v]; q < c->star_first[v + 1]; q++) {
             const lh_index *t = s + 4 * (size_t)c->star[q];
             for (int o = 0; o < 4; o++) { /* the face opposite corner o, from its
-                                             smallest point */
-                lh_index f[4], w = 0, ok = 1;
+                                             smallest point v, once per tet */
+                lh_index f[4], w = 0, ok = t[o] != v;
                 for (int j = 0; j < 4; j++)
                     if (j != o) f[w++] = t[j], ok &= c->stamp[t[j]] >= 1 && t[j] >= v;
                 if (!ok) continue;

@@ -1,11 +1,13 @@
 /*
  * tetrahedralize.c — lh_tetrahedralize, the pipeline (docs/meshing3d.md): check the
- * PLC; the Delaunay tetrahedralization of its points; facets triangulated in their
+ * PLC and that its facets do not intersect; the Delaunay tetrahedralization of its
+ * points; facets triangulated in their
  * planes; boundary recovery (recover.h); carving and regions (carve.c); the mesh.
  */
 #include "carve.h"
 #include "facets.h"
 
+#include <stdio.h>
 #include <string.h>
 
 static void ctx_free(t3_ctx *c)
@@ -44,6 +46,27 @@ static lh_status start(t3_ctx *c)
     return LH_OK;
 }
 
+/* The facet pairs that intersect, when opt->check_intersections: an error naming
+ * the first few (lh_plc_intersections lists them all). */
+static lh_status intersections(t3_ctx *c)
+{
+    enum { SHOWN = 8 };
+    lh_index pairs[2 * SHOWN];
+    size_t count = 0;
+    if (!c->opt->check_intersections || c->g->facet_count < 2) return LH_OK;
+    lh_status st = lh_plc_intersections(c->g, c->opt->alloc, SHOWN, pairs, &count, c->err);
+    if (st != LH_OK || count == 0) return st;
+    char list[256] = "";
+    size_t len = 0, shown = count < SHOWN ? count : SHOWN;
+    long base = c->g->first_index;
+    for (size_t i = 0; i < shown && len < sizeof list; i++)
+        len += (size_t)snprintf(list + len, sizeof list - len, "%s%ld and %ld", i ? ", " : "",
+                                (long)pairs[2 * i] + base, (long)pairs[2 * i + 1] + base);
+    return lh__t3_say(c, LH_ERR_INTERSECTING_FACETS, 0,
+                      "%zu pair%s of facets intersect: %s%s (-d lists them)", count,
+                      count == 1 ? "" : "s", list, count > shown ? ", ..." : "");
+}
+
 static lh_status constraints(t3_ctx *c, size_t *nonplanar)
 {
     lh__facet_tris ft;
@@ -63,6 +86,7 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
 {
     size_t nonplanar = 0;
     lh_status st = lh__t3_plc_check(c);
+    if (st == LH_OK) st = intersections(c);
     if (st == LH_OK) st = start(c);
     if (st == LH_OK) st = constraints(c, &nonplanar);
     if (st == LH_OK) st = lh__t3_recover(c);

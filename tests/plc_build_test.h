@@ -10,7 +10,7 @@
 typedef struct tplc {
     lh_plc g;
     double xyz[3 * 256];
-    lh_index ff[129], pf[257], pv[1024], hf[129];
+    lh_index ff[2049], pf[2049], pv[8192], hf[2049];
     double fh[3 * 64];
     size_t nh;
 } tplc;

@@ -20,8 +20,8 @@ static void cross(const double *a, const double *b, const double *c, double n[3]
 
 /* Facet f of t has `count` triangles of total area `area` (to 1e-12), each with a
  * normal on the side of `dir`. */
-static void expect_facet(lh_test_state *lh_t_, const lh_plc *g, const lh__facet_tris *t,
-                         lh_index f, size_t count, double area, const double dir[3])
+static void expect_facet(lh_test_state *lh_t_, const lh_plc *g, const lh__facet_tris *t, lh_index f,
+                         size_t count, double area, const double dir[3])
 {
     size_t c = 0;
     double sum = 0;
@@ -92,10 +92,16 @@ static void tri_set(const lh__facet_tris *t, lh_index f, lh_index out[6])
         for (int k = 0; k < 3; k++) v[k] = t->tri[3 * i + k];
         for (int a = 0; a < 3; a++) /* three elements: bubble */
             for (int b = 0; b + 1 < 3; b++)
-                if (v[b] > v[b + 1]) { const lh_index x = v[b]; v[b] = v[b + 1], v[b + 1] = x; }
+                if (v[b] > v[b + 1]) {
+                    const lh_index x = v[b];
+                    v[b] = v[b + 1], v[b + 1] = x;
+                }
     }
     if (n == 2 && (out[0] > out[3] || (out[0] == out[3] && out[1] > out[4])))
-        for (int k = 0; k < 3; k++) { const lh_index x = out[k]; out[k] = out[k + 3], out[k + 3] = x; }
+        for (int k = 0; k < 3; k++) {
+            const lh_index x = out[k];
+            out[k] = out[k + 3], out[k + 3] = x;
+        }
 }
 
 /* Quads: the only valid diagonal of a dart, the Delaunay one of a convex quad; for a
@@ -105,14 +111,18 @@ LH_TEST(quad_diagonals)
 {
     tplc b;
     tplc_init(&b);
-    tplc_point(&b, 0, 0, 0), tplc_point(&b, 4, 0, 0), tplc_point(&b, 1, 1, 0), tplc_point(&b, 0, 4, 0);
-    tplc_point(&b, 0, 0, 1), tplc_point(&b, 10, 1, 1), tplc_point(&b, 11, 2, 1), tplc_point(&b, 1, 10, 1);
-    tplc_point(&b, 0, 0, 2), tplc_point(&b, 1, 0, 2), tplc_point(&b, 1, 1, 2), tplc_point(&b, 0, 1, 2);
+    tplc_point(&b, 0, 0, 0), tplc_point(&b, 4, 0, 0), tplc_point(&b, 1, 1, 0),
+        tplc_point(&b, 0, 4, 0);
+    tplc_point(&b, 0, 0, 1), tplc_point(&b, 10, 1, 1), tplc_point(&b, 11, 2, 1),
+        tplc_point(&b, 1, 10, 1);
+    tplc_point(&b, 0, 0, 2), tplc_point(&b, 1, 0, 2), tplc_point(&b, 1, 1, 2),
+        tplc_point(&b, 0, 1, 2);
     tplc_point(&b, 1, 0, 2);
     tplc_face(&b, 4, (lh_index[]){1, 2, 3, 0}); /* a dart: reflex at 2 */
     tplc_face(&b, 4, (lh_index[]){4, 5, 6, 7}); /* at 5 and 7: 141 + 57 > 180 degrees, so 5-7 */
     for (int r = 0; r < 4; r++)
-        tplc_face(&b, 4, (lh_index[]){8 + r % 4, 8 + (r + 1) % 4, 8 + (r + 2) % 4, 8 + (r + 3) % 4});
+        tplc_face(&b, 4,
+                  (lh_index[]){8 + r % 4, 8 + (r + 1) % 4, 8 + (r + 2) % 4, 8 + (r + 3) % 4});
     tplc_face(&b, 4, (lh_index[]){8, 9, 12, 10}); /* 9 and 12 coincide */
     lh__facet_tris t;
     LH_ASSERT_EQ_INT(lh__facets_triangulate(&b.g, NULL, &t, NULL), LH_OK);
@@ -205,7 +215,8 @@ LH_TEST(nonplanar_quad)
 {
     tplc b;
     tplc_init(&b);
-    tplc_point(&b, 0, 0, 0), tplc_point(&b, 1, 0, 0), tplc_point(&b, 1, 1, 1e-3), tplc_point(&b, 0, 1, 0);
+    tplc_point(&b, 0, 0, 0), tplc_point(&b, 1, 0, 0), tplc_point(&b, 1, 1, 1e-3),
+        tplc_point(&b, 0, 1, 0);
     tplc_face(&b, 4, (lh_index[]){0, 1, 2, 3});
     tplc_face(&b, 4, (lh_index[]){1, 0, 3, 2});
     lh__facet_tris t;
@@ -214,7 +225,8 @@ LH_TEST(nonplanar_quad)
     LH_EXPECT_EQ_U64(t.count, 4);
     for (size_t i = 0; i < t.count; i++) {
         double n[3];
-        cross(b.xyz + 3 * t.tri[3 * i], b.xyz + 3 * t.tri[3 * i + 1], b.xyz + 3 * t.tri[3 * i + 2], n);
+        cross(b.xyz + 3 * t.tri[3 * i], b.xyz + 3 * t.tri[3 * i + 1], b.xyz + 3 * t.tri[3 * i + 2],
+              n);
         LH_EXPECT_TRUE(t.facet[i] == 0 ? n[2] > 0 : n[2] < 0);
     }
     lh__facet_tris_free(NULL, &t);
@@ -268,14 +280,18 @@ LH_TEST(refusals)
 {
     tplc b;
     tplc_init(&b);
-    tplc_point(&b, 0, 0, 0), tplc_point(&b, 1, 1, 1), tplc_point(&b, 2, 2, 2), tplc_point(&b, 3, 3, 3);
+    tplc_point(&b, 0, 0, 0), tplc_point(&b, 1, 1, 1), tplc_point(&b, 2, 2, 2),
+        tplc_point(&b, 3, 3, 3);
     tplc_face(&b, 3, (lh_index[]){0, 1, 2});
-    expect_refusal(lh_t_, &b, LH_ERR_DEGENERATE, "facet 0: its points are all collinear (zero area)",
+    expect_refusal(lh_t_, &b, LH_ERR_DEGENERATE,
+                   "facet 0: its points are all collinear (zero area)",
                    "facet 0 (line 7): its points are all collinear (zero area)");
     tplc_init(&b);
-    tplc_point(&b, 0, 0, 0), tplc_point(&b, 1, 1, 1), tplc_point(&b, 2, 2, 2), tplc_point(&b, 3, 3, 3);
+    tplc_point(&b, 0, 0, 0), tplc_point(&b, 1, 1, 1), tplc_point(&b, 2, 2, 2),
+        tplc_point(&b, 3, 3, 3);
     tplc_face(&b, 4, (lh_index[]){0, 1, 3, 2});
-    expect_refusal(lh_t_, &b, LH_ERR_DEGENERATE, "facet 0: its points are all collinear (zero area)",
+    expect_refusal(lh_t_, &b, LH_ERR_DEGENERATE,
+                   "facet 0: its points are all collinear (zero area)",
                    "facet 0 (line 7): its points are all collinear (zero area)");
     tplc_init(&b);
     square(&b, 1);
@@ -314,7 +330,8 @@ LH_TEST(refusals)
     lh__facet_tris t;
     lh_error err;
     LH_EXPECT_EQ_INT(run(&b, &t, &err), LH_ERR_DEGENERATE);
-    LH_EXPECT_TRUE(strncmp(err.message, "facet 0: in the facet's plane: the domain is empty", 50) == 0);
+    LH_EXPECT_TRUE(strncmp(err.message, "facet 0: in the facet's plane: the domain is empty", 50) ==
+                   0);
     b.pv[1] = 4; /* out of range */
     LH_EXPECT_EQ_INT(run(&b, &t, &err), LH_ERR_INVALID_ARGUMENT);
     LH_EXPECT_STREQ(err.message, "polygon vertex 1: point 4 is not a point (0..3)");
@@ -347,11 +364,15 @@ LH_TEST(allocation_failures)
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
-        LH_CASE(triangle_passes_through), LH_CASE(quads_follow_their_rings),
+        LH_CASE(triangle_passes_through),
+        LH_CASE(quads_follow_their_rings),
         LH_CASE(quad_diagonals),
-        LH_CASE(nonconvex_pentagon),      LH_CASE(hole_ring_and_hole_point),
-        LH_CASE(slit_and_lone_point),     LH_CASE(nonplanar_quad),
-        LH_CASE(vertical_facets),         LH_CASE(refusals),
+        LH_CASE(nonconvex_pentagon),
+        LH_CASE(hole_ring_and_hole_point),
+        LH_CASE(slit_and_lone_point),
+        LH_CASE(nonplanar_quad),
+        LH_CASE(vertical_facets),
+        LH_CASE(refusals),
         LH_CASE(allocation_failures),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);

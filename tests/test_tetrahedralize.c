@@ -1,0 +1,348 @@
+/* test_tetrahedralize.c — lh_tetrahedralize (lifthull.h, "tetrahedral meshes of
+ * PLCs") on the models of tests/data/mesh3d, tetgen and plc: each meshed and found
+ * valid and conforming by lh_tetmesh_check, Steiner points within what the mesher
+ * reaches today (TetGen's counts beside them, BASELINE.md); the same mesh, as a set,
+ * whatever the order of points and facets; and the exact error of each bad input. */
+#include "lh_test.h"
+#include "lifthull.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int read_plc(const char *rel, lh_plc *g)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", LH_TEST_DATA_DIR, rel);
+    FILE *f = fopen(path, "rb");
+    if (!f) return 0;
+    lh_error err;
+    lh_status st = lh_plc_read(f, path, LH_PLC_AUTO, NULL, g, &err);
+    fclose(f);
+    if (st != LH_OK) fprintf(stderr, "%s\n", err.message);
+    return st == LH_OK;
+}
+
+/* lh_tetmesh_check of m against g. */
+static lh_status check(const lh_tetmesh *m, const lh_plc *g, int hull, lh_error *err)
+{
+    size_t off = 0;
+    return lh_tetmesh_check(lh_tetmesh_point_count(m), lh_tetmesh_points(m),
+                            lh_tetmesh_tet_count(m), lh_tetmesh_tets(m), lh_tetmesh_face_count(m),
+                            lh_tetmesh_faces(m), lh_tetmesh_face_parents(m),
+                            lh_tetmesh_edge_count(m), lh_tetmesh_edges(m), hull, g, &off, NULL,
+                            err);
+}
+
+typedef struct model {
+    const char *file;
+    size_t steiner_max; /* what this mesher needs today (splitting only)           */
+    size_t tetgen;      /* TetGen 1.5 -p's Steiner points (BASELINE.md)             */
+} model;
+
+LH_TEST(models_mesh_and_conform)
+{
+    static const model models[] = {
+        {"mesh3d/schonhardt.off", 3, 3},   {"tetgen/star.off", 0, 0},
+        {"tetgen/cubes.off", 6, 0},        {"tetgen/wedge-5.smesh", 0, 0},
+        {"plc/spike-1-7.smesh", 0, 0},     {"mesh3d/slit-1.smesh", 0, 0},
+        {"mesh3d/spike-1-10.smesh", 0, 0}, {"mesh3d/wedge-1.smesh", 0, 0},
+        {"mesh3d/step.off", 0, 0},         {"mesh3d/hole.off", 4, 4},
+        {"mesh3d/blob-closed.off", 8, 4},  {"mesh3d/eight.off", 82, 69},
+        {"mesh3d/u.off", 183, 172},        {"mesh3d/pipe.off", 260, 0},
+        {"mesh3d/part.off", 1168, 21},     {"mesh3d/joint.off", 2106, 92},
+        {"mesh3d/double-torus-example.off", 56, 2},
+        {"plc_bin/sphere.stl", 0, 0},      {"plc_bin/sphere.ply", 0, 0},
+    };
+    for (size_t i = 0; i < LH_COUNT(models); i++) {
+        lh_plc g;
+        LH_ASSERT_TRUE(read_plc(models[i].file, &g));
+        lh_tetmesh *m = NULL;
+        lh_error err;
+        lh_status st = lh_tetrahedralize(&g, NULL, &m, &err);
+        if (st != LH_OK) fprintf(stderr, "%s: %s\n", models[i].file, err.message);
+        LH_EXPECT_EQ_INT(st, LH_OK);
+        if (m) {
+            lh_tetmesh_stats s;
+            lh_tetmesh_stats_get(m, &s);
+            st = check(m, &g, 0, &err);
+            if (st != LH_OK) fprintf(stderr, "%s: %s\n", models[i].file, err.message);
+            LH_EXPECT_EQ_INT(st, LH_OK);
+            LH_EXPECT_LE_U64(s.steiner_points, models[i].steiner_max);
+            LH_EXPECT_EQ_U64(s.steiner_points, s.steiner_on_segments + s.steiner_on_facets);
+            LH_EXPECT_GT_U64(s.tets, 0);
+            LH_EXPECT_EQ_U64(lh_tetmesh_point_count(m), g.n + s.steiner_points);
+        }
+        lh_tetmesh_free(m);
+        lh_plc_free(&g);
+    }
+}
+
+/* A copy of g with point i renumbered perm[i], the facets in reverse order and each
+ * polygon starting at its second point; arrays malloc'ed (free_copy). */
+static void permuted(const lh_plc *g, const lh_index *perm, lh_plc *h)
+{
+    memset(h, 0, sizeof *h);
+    h->n = g->n;
+    h->xyz = malloc(3 * g->n * sizeof(double));
+    for (size_t i = 0; i < g->n; i++) memcpy(h->xyz + 3 * perm[i], g->xyz + 3 * i, 3 * sizeof(double));
+    size_t nf = g->facet_count, np = g->polygon_count, nv = (size_t)g->polygon_first[np];
+    h->facet_count = nf, h->polygon_count = np;
+    h->facet_first = malloc((nf + 1) * sizeof(lh_index));
+    h->polygon_first = malloc((np + 1) * sizeof(lh_index));
+    h->polygon_vertices = malloc((nv + 1) * sizeof(lh_index));
+    size_t p = 0, v = 0;
+    for (size_t k = 0; k < nf; k++) {
+        size_t f = nf - 1 - k;
+        h->facet_first[k] = (lh_index)p;
+        for (lh_index q = g->facet_first[f]; q < g->facet_first[f + 1]; q++, p++) {
+            size_t len = (size_t)(g->polygon_first[q + 1] - g->polygon_first[q]);
+            h->polygon_first[p] = (lh_index)v;
+            for (size_t j = 0; j < len; j++)
+                h->polygon_vertices[v++] = perm[g->polygon_vertices[g->polygon_first[q] + (lh_index)((j + 1) % len)]];
+        }
+    }
+    h->facet_first[nf] = (lh_index)p;
+    h->polygon_first[np] = (lh_index)v;
+}
+
+static void free_copy(lh_plc *h)
+{
+    free(h->xyz), free(h->facet_first), free(h->polygon_first), free(h->polygon_vertices);
+}
+
+static int cmp_key(const void *a, const void *b)
+{
+    const double *x = a, *y = b;
+    for (int k = 0; k < 12; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
+
+static int cmp3(const void *a, const void *b)
+{
+    const double *x = a, *y = b;
+    for (int k = 0; k < 3; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
+
+/* The tets of m as a sorted list of keys: each tet's 4 points' coordinates, the
+ * points sorted; 12 doubles a tet. */
+static double *tet_keys(const lh_tetmesh *m)
+{
+    size_t nt = lh_tetmesh_tet_count(m);
+    const lh_index *t = lh_tetmesh_tets(m);
+    const double *x = lh_tetmesh_points(m);
+    double *k = malloc((12 * nt + 1) * sizeof(double));
+    for (size_t i = 0; i < nt; i++) {
+        for (int j = 0; j < 4; j++) memcpy(k + 12 * i + 3 * j, x + 3 * t[4 * i + j], 3 * sizeof(double));
+        qsort(k + 12 * i, 4, 3 * sizeof(double), cmp3);
+    }
+    qsort(k, nt, 12 * sizeof(double), cmp_key);
+    return k;
+}
+
+LH_TEST(output_does_not_depend_on_order)
+{
+    static const char *const files[] = {"mesh3d/u.off", "mesh3d/schonhardt.off",
+                                        "mesh3d/double-torus-example.off", "mesh3d/hole.off"};
+    for (size_t i = 0; i < LH_COUNT(files); i++) {
+        lh_plc g, h;
+        LH_ASSERT_TRUE(read_plc(files[i], &g));
+        lh_index *perm = malloc(g.n * sizeof(lh_index));
+        uint64_t rng = 0x9e3779b97f4a7c15u + i;
+        for (size_t j = 0; j < g.n; j++) perm[j] = (lh_index)j;
+        for (size_t j = g.n; j > 1; j--) { /* Fisher-Yates */
+            size_t r = (size_t)(lh_test_xorshift(&rng) % j);
+            lh_index x = perm[j - 1];
+            perm[j - 1] = perm[r];
+            perm[r] = x;
+        }
+        permuted(&g, perm, &h);
+        lh_tetmesh *a = NULL, *b = NULL;
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &a, NULL), LH_OK);
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&h, NULL, &b, NULL), LH_OK);
+        if (a && b) {
+            size_t nt = lh_tetmesh_tet_count(a);
+            LH_EXPECT_EQ_U64(lh_tetmesh_tet_count(b), nt);
+            LH_EXPECT_EQ_U64(lh_tetmesh_point_count(b), lh_tetmesh_point_count(a));
+            if (lh_tetmesh_tet_count(b) == nt) {
+                double *ka = tet_keys(a), *kb = tet_keys(b);
+                int same = memcmp(ka, kb, 12 * nt * sizeof(double)) == 0;
+                if (!same) fprintf(stderr, "%s: the tets differ as sets\n", files[i]);
+                LH_EXPECT_TRUE(same);
+                free(ka), free(kb);
+            }
+        }
+        lh_tetmesh_free(a), lh_tetmesh_free(b);
+        free_copy(&h);
+        free(perm);
+        lh_plc_free(&g);
+    }
+}
+
+/* lh_tetrahedralize on the PLC read from text (name gives the format): its status,
+ * and err's message in msg. */
+static lh_status mesh_text(const char *name, const char *text, const lh_tetmesh_options *opt,
+                           char *msg, size_t cap)
+{
+    FILE *f = lh_test_file(text, strlen(text));
+    lh_plc g;
+    lh_error err;
+    lh_status st = lh_plc_read(f, name, LH_PLC_AUTO, NULL, &g, &err);
+    fclose(f);
+    lh_tetmesh *m = NULL;
+    if (st == LH_OK) st = lh_tetrahedralize(&g, opt, &m, &err);
+    if (st == LH_OK) st = check(m, &g, opt && opt->convex_hull, &err);
+    snprintf(msg, cap, "%s", st == LH_OK ? "" : err.message);
+    lh_tetmesh_free(m);
+    lh_plc_free(&g);
+    return st;
+}
+
+static const char cube_smesh[] = "8 3 0 0\n"
+                                 "1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
+                                 "5 0 0 1\n6 1 0 1\n7 1 1 1\n8 0 1 1\n"
+                                 "6 0\n4 1 4 3 2\n4 5 6 7 8\n4 1 2 6 5\n"
+                                 "4 2 3 7 6\n4 3 4 8 7\n4 4 1 5 8\n";
+
+LH_TEST(bad_inputs_get_their_error)
+{
+    char msg[LH_ERROR_MESSAGE_MAX], text[1024];
+    snprintf(text, sizeof text, "%s1\n1 0.5 0.5 0\n0\n", cube_smesh);
+    LH_EXPECT_EQ_INT(mesh_text("c.smesh", text, NULL, msg, sizeof msg), LH_ERR_DEGENERATE);
+    LH_EXPECT_STREQ(msg, "18: hole 1 lies on facet 1: which side it seeds is undefined");
+    snprintf(text, sizeof text, "%s1\n1 0.5 0.5 0.5\n0\n", cube_smesh);
+    LH_EXPECT_EQ_INT(mesh_text("c.smesh", text, NULL, msg, sizeof msg), LH_ERR_DEGENERATE);
+    LH_EXPECT_STREQ(msg, "every tetrahedron was carved away: the facets enclose no volume "
+                         "that a hole point does not empty");
+    /* a zero-area facet: three points of one line */
+    LH_EXPECT_EQ_INT(mesh_text("z.off",
+                               "OFF\n5 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2 0 0\n"
+                               "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n3 0 1 4\n",
+                               NULL, msg, sizeof msg),
+                     LH_ERR_DEGENERATE);
+    LH_EXPECT_STREQ(msg, "facet 4 (line 12): its points are all collinear (zero area)");
+    /* a point given twice: one vertex, the faces on either copy */
+    LH_EXPECT_EQ_INT(mesh_text("d.off",
+                               "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 0 0\n"
+                               "3 0 2 1\n3 4 1 3\n3 1 2 3\n3 0 3 2\n",
+                               NULL, msg, sizeof msg),
+                     LH_OK);
+    /* one facet of a tetrahedron a million times: one wall, nothing enclosed */
+    LH_EXPECT_EQ_INT(mesh_text("t.off",
+                               "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n",
+                               NULL, msg, sizeof msg),
+                     LH_ERR_DEGENERATE);
+}
+
+/* A PLC over points xyz (n) with m facets, each one polygon of k points from v. */
+static void plc_of(lh_plc *g, size_t n, double *xyz, size_t m, size_t k, lh_index *v,
+                   lh_index *facet_first, lh_index *polygon_first)
+{
+    memset(g, 0, sizeof *g);
+    g->n = n, g->xyz = xyz;
+    g->facet_count = g->polygon_count = m;
+    g->facet_first = facet_first, g->polygon_first = polygon_first, g->polygon_vertices = v;
+    for (size_t i = 0; i <= m; i++) facet_first[i] = (lh_index)i, polygon_first[i] = (lh_index)(k * i);
+}
+
+static lh_status mesh_plc(const lh_plc *g, const lh_tetmesh_options *opt, char *msg, size_t cap)
+{
+    lh_tetmesh *m = NULL;
+    lh_error err;
+    lh_status st = lh_tetrahedralize(g, opt, &m, &err);
+    if (st == LH_OK) st = check(m, g, opt && opt->convex_hull, &err);
+    snprintf(msg, cap, "%s", st == LH_OK ? "" : err.message);
+    lh_tetmesh_free(m);
+    return st;
+}
+
+/* Schonhardt's prism: needs Steiner points; -Y and -S say why not. */
+LH_TEST(steiner_limits)
+{
+    lh_plc g;
+    LH_ASSERT_TRUE(read_plc("mesh3d/schonhardt.off", &g));
+    lh_tetmesh_options o;
+    char msg[LH_ERROR_MESSAGE_MAX];
+    lh_tetmesh_options_default(&o);
+    o.boundary_steiner = 0;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, &o, msg, sizeof msg), LH_ERR_STEINER_LIMIT);
+    LH_EXPECT_STREQ(msg, "-Y: recovering the boundary needs Steiner points on it, and interior "
+                         "Steiner points alone are not implemented yet");
+    lh_tetmesh_options_default(&o);
+    o.max_steiner = 2;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, &o, msg, sizeof msg), LH_ERR_STEINER_LIMIT);
+    LH_EXPECT_STREQ(msg, "boundary recovery needs more than 2 Steiner points (-S)");
+    o.max_steiner = 3;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, &o, msg, sizeof msg), LH_OK);
+    lh_plc_free(&g);
+}
+
+LH_TEST(bad_plcs_get_their_error)
+{
+    double xyz[15] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    lh_index v[12] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2}, ff[5], pf[5];
+    char msg[LH_ERROR_MESSAGE_MAX];
+    lh_plc g;
+    plc_of(&g, 4, xyz, 4, 3, v, ff, pf);
+    LH_EXPECT_EQ_INT(mesh_plc(&g, NULL, msg, sizeof msg), LH_OK);
+    v[4] = 9;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "facet 1: point 9 does not exist (4 points)");
+    v[4] = 1;
+    pf[1] = 2; /* facet 0: a polygon of 2 points */
+    LH_EXPECT_EQ_INT(mesh_plc(&g, NULL, msg, sizeof msg), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(msg, "facet 0 has no polygon of 3 or more points");
+    pf[1] = 3;
+    xyz[4] = 0.0 / 0.0;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, NULL, msg, sizeof msg), LH_ERR_NONFINITE);
+    LH_EXPECT_STREQ(msg, "point 1: a coordinate is NaN or infinite");
+    xyz[4] = 0;
+    /* no facet: the convex hull, its faces the subfaces */
+    g.facet_count = 0;
+    g.n = 5;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, NULL, msg, sizeof msg), LH_OK);
+    /* coplanar points */
+    xyz[11] = 0, xyz[14] = 0;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, NULL, msg, sizeof msg), LH_ERR_DEGENERATE);
+    LH_EXPECT_STREQ(msg, "the points are coplanar, or fewer than 4 distinct: no volume to mesh");
+}
+
+/* One triangle given as a million facets: the same triangle in two facets is an
+ * intersection (counted, not listed); told to skip that test, the copies mesh as
+ * one (-c keeps the tetrahedron; without it nothing is enclosed). */
+LH_TEST(a_million_copies_of_one_triangle)
+{
+    enum { M = 1000000 };
+    double xyz[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    lh_index *v = malloc(3 * (size_t)M * sizeof(lh_index));
+    lh_index *ff = malloc((M + 1) * sizeof(lh_index)), *pf = malloc((M + 1) * sizeof(lh_index));
+    LH_ASSERT_TRUE(v && ff && pf);
+    for (size_t i = 0; i < M; i++) v[3 * i] = 0, v[3 * i + 1] = 2, v[3 * i + 2] = 1;
+    lh_plc g;
+    plc_of(&g, 4, xyz, M, 3, v, ff, pf);
+    char msg[LH_ERROR_MESSAGE_MAX];
+    lh_tetmesh_options o;
+    lh_tetmesh_options_default(&o);
+    LH_EXPECT_EQ_INT(mesh_plc(&g, &o, msg, sizeof msg), LH_ERR_INTERSECTING_FACETS);
+    LH_EXPECT_STREQ(msg, "499999500000 pairs of facets intersect: 0 and 1, 0 and 2, 0 and 3, "
+                         "0 and 4, 0 and 5, 0 and 6, 0 and 7, 0 and 8, ... (-d lists them)");
+    o.check_intersections = 0;
+    o.convex_hull = 1;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, &o, msg, sizeof msg), LH_OK);
+    o.convex_hull = 0;
+    LH_EXPECT_EQ_INT(mesh_plc(&g, &o, msg, sizeof msg), LH_ERR_DEGENERATE);
+    free(v), free(ff), free(pf);
+}
+
+int main(int argc, char **argv)
+{
+    static const lh_test_case cases[] = {
+        LH_CASE(models_mesh_and_conform), LH_CASE(output_does_not_depend_on_order),
+        LH_CASE(bad_inputs_get_their_error), LH_CASE(steiner_limits),
+        LH_CASE(bad_plcs_get_their_error), LH_CASE(a_million_copies_of_one_triangle)};
+    return lh_test_main(cases, LH_COUNT(cases), argc, argv);
+}
