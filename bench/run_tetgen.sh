@@ -187,6 +187,69 @@ cpu="$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null ||
 tgver="$(dpkg-query -W -f '${Version}' tetgen 2>/dev/null || echo unknown)"
 mem="$(awk '/MemTotal/ { printf "%.1f GiB", $2 / 1048576 }' /proc/meminfo 2>/dev/null || true)"
 
+# the tables first (they count the bars met), then the report around them
+tables="$work/tables.md"
+tbar=0 mbar=0 nbar=0 sbar=0 nsbar=0 fails=0
+{
+  echo "| input | input points | lifthull s | TetGen s | time ratio | lifthull CPU s | TetGen CPU s | lifthull peak MiB | TetGen peak MiB | memory ratio | the issue's bars (time, memory) |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  for i in "${!files[@]}"; do
+    lsec="$(median "${secs[lifthull.$i]}")" tsec="$(median "${secs[tetgen.$i]}")"
+    lk="$(median "${kbs[lifthull.$i]}")" tk="$(median "${kbs[tetgen.$i]}")"
+    lm="$(awk -v k="$lk" 'BEGIN { if (k == "-") print "-"; else printf "%.1f", k / 1024 }')"
+    tm="$(awk -v k="$tk" 'BEGIN { if (k == "-") print "-"; else printf "%.1f", k / 1024 }')"
+    trat="-" mrat="-"  # ratios only of runs that both finished
+    if [ "${stat[lifthull.$i]}" = ok ] && [ "${stat[tetgen.$i]}" = ok ]; then
+      trat="$(ratio "$lsec" "$tsec")" mrat="$(ratio "$lk" "$tk")"
+    fi
+    [ "${stat[lifthull.$i]}" = ok ] || fails=$((fails + 1))
+    bar="-"
+    if [[ "$barred" == *" ${names[$i]} "* ]]; then
+      nbar=$((nbar + 1))
+      tok="$(awk -v r="$trat" 'BEGIN { print (r != "-" && r <= 1) ? "PASS" : "FAIL" }')"
+      mok="$(awk -v r="$mrat" 'BEGIN { print (r != "-" && r <= 1) ? "PASS" : "FAIL" }')"
+      [ "$tok" = PASS ] && tbar=$((tbar + 1))
+      [ "$mok" = PASS ] && mbar=$((mbar + 1))
+      bar="$tok, $mok"
+      [ "${stat[lifthull.$i]}" = ok ] || bar="FAIL (lifthull: ${stat[lifthull.$i]})"
+    fi
+    lnote="" tnote=""
+    [ "${stat[lifthull.$i]}" = ok ] || lnote=" (${stat[lifthull.$i]})"
+    [ "${stat[tetgen.$i]}" = ok ] || tnote=" (${stat[tetgen.$i]})"
+    echo "| ${names[$i]} | $(input_points "${files[$i]}") | $lsec$lnote | $tsec$tnote | $trat |" \
+      "$(median "${cpus[lifthull.$i]}") | $(median "${cpus[tetgen.$i]}") | $lm | $tm | $mrat | $bar |"
+  done
+  echo
+  echo "### Output: points, Steiner points, tetrahedra"
+  echo
+  echo "| input | input points | lifthull points | lifthull Steiner | lifthull tets | TetGen points | TetGen Steiner | TetGen tets | Steiner <= TetGen's | lifthull's run |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---|---|"
+  for i in "${!files[@]}"; do
+    np="$(input_points "${files[$i]}")"
+    lp="${pts[lifthull.$i]}" tp="${pts[tetgen.$i]}"
+    lst="$(steiner "$lp" "$np")" tst="$(steiner "$tp" "$np")"
+    sok="-"
+    if [[ "$tst" =~ ^-?[0-9]+$ ]]; then
+      nsbar=$((nsbar + 1)) sok=FAIL
+      if [[ "$lst" =~ ^-?[0-9]+$ ]] && [ "$lst" -le "$tst" ]; then sok=PASS sbar=$((sbar + 1)); fi
+    fi
+    how="ok"
+    if [ "${stat[lifthull.$i]}" != ok ]; then
+      how="${stat[lifthull.$i]}: \`$(cell "$(cat "$work/msg.lifthull.$i")")\`"
+    fi
+    if [ "${stat[tetgen.$i]}" != ok ]; then
+      how="$how; TetGen ${stat[tetgen.$i]}: \`$(cell "$(cat "$work/msg.tetgen.$i")")\`"
+    fi
+    echo "| ${names[$i]} | $np | $lp | $lst | ${tets[lifthull.$i]} | $tp | $tst | ${tets[tetgen.$i]} | $sok | $how |"
+  done
+  echo
+  echo "Per run (seconds, in round order):"
+  echo
+  for i in "${!files[@]}"; do
+    echo "- ${names[$i]}: lifthull${secs[lifthull.$i]}; TetGen${secs[tetgen.$i]}"
+  done
+} >"$tables"
+
 report="$work/report.md"
 {
   echo "# 3D meshing benchmark: \`lifthull tetgen -$switches\` against TetGen 1.5"
@@ -195,10 +258,11 @@ report="$work/report.md"
   echo "(git commit $commit; $rounds interleaved rounds, $elapsed s in all). Every run is a whole"
   echo "process on a copy of the input in its own temporary directory: reading the input,"
   echo "meshing, writing FILE.1.node/.ele/.face. Time: wall seconds (CPU: user + system);"
-  echo "memory: peak resident set size (\`/usr/bin/time -v\`); each cell the median over the rounds, the tool order"
-  echo "swapped every round. Ratios are lifthull / TetGen: at most 1.00 means lifthull was as"
-  echo "fast (as small) or better. Steiner points: output points - input points. This machine"
-  echo "is shared and noisy: compare within a run. Source: bench/run_tetgen.sh."
+  echo "memory: peak resident set size (\`/usr/bin/time -v\`). Each cell is the median over"
+  echo "the rounds, the tool order swapped every round. Ratios are lifthull / TetGen: at most"
+  echo "1.00 means lifthull was as fast (as small) or better. Steiner points: output points -"
+  echo "input points. This machine is shared and noisy: compare within a run. Source:"
+  echo "bench/run_tetgen.sh."
   echo
   echo "- CPU: ${cpu:-unknown} ($(nproc) logical CPUs online), memory ${mem:-unknown}; load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "- OS: $(uname -srm)"
@@ -207,54 +271,11 @@ report="$work/report.md"
   echo "- time limit per run: $limit s"
   for n in "${notes[@]}"; do echo "- $n"; done
   echo
-  echo "| input | input points | lifthull s | TetGen s | time ratio | lifthull CPU s | TetGen CPU s | lifthull peak MiB | TetGen peak MiB | memory ratio | the issue's bars (time, memory) |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
-  for i in "${!files[@]}"; do
-    ls="$(median "${secs[lifthull.$i]}")" ts="$(median "${secs[tetgen.$i]}")"
-    lk="$(median "${kbs[lifthull.$i]}")" tk="$(median "${kbs[tetgen.$i]}")"
-    lm="$(awk -v k="$lk" 'BEGIN { if (k == "-") print "-"; else printf "%.1f", k / 1024 }')"
-    tm="$(awk -v k="$tk" 'BEGIN { if (k == "-") print "-"; else printf "%.1f", k / 1024 }')"
-    tr="-" mr="-"  # ratios only of runs that both finished
-    if [ "${stat[lifthull.$i]}" = ok ] && [ "${stat[tetgen.$i]}" = ok ]; then
-      tr="$(ratio "$ls" "$ts")" mr="$(ratio "$lk" "$tk")"
-    fi
-    bar="-"
-    if [[ "$barred" == *" ${names[$i]} "* ]]; then
-      if [ "${stat[lifthull.$i]}" != ok ]; then
-        bar="FAIL (lifthull: ${stat[lifthull.$i]})"
-      else
-        bar="$(awk -v t="$tr" -v m="$mr" 'BEGIN { printf "%s, %s", (t != "-" && t <= 1) ? "PASS" : "FAIL", (m != "-" && m <= 1) ? "PASS" : "FAIL" }')"
-      fi
-    fi
-    lnote="" tnote=""
-    [ "${stat[lifthull.$i]}" = ok ] || lnote=" (${stat[lifthull.$i]})"
-    [ "${stat[tetgen.$i]}" = ok ] || tnote=" (${stat[tetgen.$i]})"
-    echo "| ${names[$i]} | $(input_points "${files[$i]}") | $ls$lnote | $ts$tnote | $tr |" \
-      "$(median "${cpus[lifthull.$i]}") | $(median "${cpus[tetgen.$i]}") | $lm | $tm | $mr | $bar |"
-  done
+  echo "lifthull failed on $fails of ${#files[@]} inputs. The issue's bars on the $nbar of knot, bunny, fandisk,"
+  echo "elephant and armadillo run here: time (lifthull no slower) met on $tbar, peak memory (no"
+  echo "more) on $mbar; Steiner points no more than TetGen's on $sbar of $nsbar inputs."
   echo
-  echo "### Output: points, Steiner points, tetrahedra"
-  echo
-  echo "| input | input points | lifthull points | lifthull Steiner | lifthull tets | TetGen points | TetGen Steiner | TetGen tets | lifthull's run |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---|"
-  for i in "${!files[@]}"; do
-    np="$(input_points "${files[$i]}")"
-    lp="${pts[lifthull.$i]}" tp="${pts[tetgen.$i]}"
-    how="ok"
-    if [ "${stat[lifthull.$i]}" != ok ]; then
-      how="${stat[lifthull.$i]}: \`$(cell "$(cat "$work/msg.lifthull.$i")")\`"
-    fi
-    if [ "${stat[tetgen.$i]}" != ok ]; then
-      how="$how; TetGen ${stat[tetgen.$i]}: \`$(cell "$(cat "$work/msg.tetgen.$i")")\`"
-    fi
-    echo "| ${names[$i]} | $np | $lp | $(steiner "$lp" "$np") | ${tets[lifthull.$i]} | $tp | $(steiner "$tp" "$np") | ${tets[tetgen.$i]} | $how |"
-  done
-  echo
-  echo "Per run (seconds, in round order):"
-  echo
-  for i in "${!files[@]}"; do
-    echo "- ${names[$i]}: lifthull${secs[lifthull.$i]}; TetGen${secs[tetgen.$i]}"
-  done
+  cat "$tables"
 } >"$report"
 
 # the report replaces $out in one rename: never a partial file there
