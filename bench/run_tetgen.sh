@@ -64,8 +64,12 @@ TETGEN="${TETGEN:-$(command -v tetgen || true)}"
 if [ -z "$TETGEN" ] || [ ! -x "$TETGEN" ]; then echo "run_tetgen: tetgen not found (apt-get install tetgen)" >&2; exit 1; fi
 
 # Record the commit before building, so that a commit made meanwhile is not credited.
+# Changes to tracked files make it "uncommitted", except to the report itself.
+out="$(realpath -m "$out")"
 commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo none)"
-if [ -n "$(git -C "$root" status --porcelain 2>/dev/null || true)" ]; then
+spec=(.)
+[[ "$out" == "$root"/* ]] && spec+=(":(exclude)$out")
+if [ -n "$(git -C "$root" status --porcelain --untracked-files=no -- "${spec[@]}" 2>/dev/null || true)" ]; then
   commit="$commit (working tree has uncommitted changes)"
 fi
 if [ -z "${LH:-}" ]; then
@@ -255,8 +259,8 @@ report="$work/report.md"
   echo "# 3D meshing benchmark: \`lifthull tetgen -$switches\` against TetGen 1.5"
   echo
   echo "Produced by \`bash bench/run_tetgen.sh${args[*]:+ ${args[*]}}\` on $(date -u '+%Y-%m-%d %H:%M UTC')"
-  echo "(git commit $commit; $rounds interleaved rounds, $elapsed s in all). Every run is a whole"
-  echo "process on a copy of the input in its own temporary directory: reading the input,"
+  echo "(git commit $commit; $rounds interleaved rounds, $elapsed s in all)."
+  echo "Every run is a whole process on a copy of the input in its own temporary directory: reading the input,"
   echo "meshing, writing FILE.1.node/.ele/.face. Time: wall seconds (CPU: user + system);"
   echo "memory: peak resident set size (\`/usr/bin/time -v\`). Each cell is the median over"
   echo "the rounds, the tool order swapped every round. Ratios are lifthull / TetGen: at most"
