@@ -9,7 +9,7 @@
 # each tool, the tool order swapped every round) of `lifthull tetgen -S FILE` and
 # `tetgen -S FILE` (S = --switches, default pQ), each run in its own temporary directory
 # on a copy of the input. Per run: the wall time and peak RSS of the whole process
-# (/usr/bin/time -v), the exit status (lifthull's last stderr line when it fails), and the
+# (/usr/bin/time -v), the exit status (and the last line it wrote when it failed), and the
 # output's point and tetrahedron counts (FILE.1.node, FILE.1.ele). Steiner points = output
 # points - input points (the count in the input file's header). The report gives medians
 # and the ratios lifthull / TetGen (at most 1.00: lifthull as fast or as small), the issue's
@@ -21,8 +21,8 @@
 # (--data DIR); FILE... replaces that list. A missing input is skipped with a note in the
 # report. Builds lifthull (Release) in build-bench-mesh3d/ ($LH_BENCH_BUILD); $LH names
 # another lifthull, $TETGEN another tetgen. Writes docs/bench-mesh3d.md (--out) only when
-# the whole run finished, then prints it. Exit status 0 when the report was written (failed
-# runs are in the report), 1 on a usage or setup error (no tetgen, no input), 2 on usage.
+# the whole run finished, then prints it. Exit status: 0 when the report was written (failed
+# runs are in the report), 1 on a setup error (no tetgen, no input), 2 on a usage error.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
