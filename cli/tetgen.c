@@ -280,7 +280,8 @@ static int run(const tsw *o, const char *file)
             goto done;
         }
     if (o->d) {
-        const int r = lh_cli_plc_intersections(stdout, &in, "tetgen", o->d_limit, o->z ? 0 : 1);
+        const int r = lh_cli_plc_intersections(stdout, &in, "tetgen", o->d_limit,
+                                               o->z ? 0 : in.g.first_index);
         rc = r < 0 ? LH_EXIT_INPUT : r ? LH_EXIT_FAIL : lh_cli_finish_output("tetgen");
     } else {
         if (!o->p) lh_cli_plc_points_only(&in);

@@ -16,6 +16,7 @@ typedef struct lh_cli_plc {
     const char *path;  /* the file read                                         */
     char *node_path;   /* BASE.node when the .poly had no points (read too, so
                           never written), or NULL                               */
+    int binary;        /* a binary PLY or STL: item places are record numbers   */
 } lh_cli_plc;
 
 /* The input extensions 3D meshing reads, by lh_plc_read (".node" by lh_points_read):

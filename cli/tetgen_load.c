@@ -78,6 +78,17 @@ static int attach_node(lh_cli_plc *in, const char *cmd, size_t stem)
     return ok && st == LH_OK;
 }
 
+/* Whether f (rewound after) is a binary PLY ("format binary_..." in its header) or
+ * STL (a NUL among its first bytes: the 80-byte header's padding or the count). */
+static int binary_input(FILE *f)
+{
+    char head[513];
+    const size_t n = fread(head, 1, sizeof head - 1, f);
+    rewind(f);
+    head[n] = 0;
+    return strlen(head) < n || strstr(head, "\nformat binary") != NULL;
+}
+
 int lh_cli_plc_load(lh_cli_plc *in, const char *cmd, const char *path)
 {
     memset(in, 0, sizeof *in);
@@ -96,6 +107,7 @@ int lh_cli_plc_load(lh_cli_plc *in, const char *cmd, const char *path)
     } else {
         FILE *f = open_input(cmd, path);
         if (!f) return 0;
+        in->binary = binary_input(f);
         lh_error err;
         lh_status st = lh_plc_read(f, path, LH_PLC_AUTO, NULL, &in->g, &err);
         fclose(f);
@@ -138,10 +150,10 @@ int lh_cli_plc_exit(lh_status st)
     return st == LH_ERR_NOMEM || st == LH_ERR_INTERNAL || st == LH_ERR_IO ? LH_EXIT_FAIL : LH_EXIT_INPUT;
 }
 
-/* " (line L)" when the reader kept facet f's line. */
-static void facet_place(FILE *out, const lh_plc *g, lh_index f)
+/* " (line L)" when the reader kept facet f's line, " (record R)" in a binary file. */
+static void facet_place(FILE *out, const lh_cli_plc *in, lh_index f)
 {
-    if (g->facet_line) fprintf(out, " (line %zu)", g->facet_line[f]);
+    if (in->g.facet_line) fprintf(out, " (%s %zu)", in->binary ? "record" : "line", in->g.facet_line[f]);
 }
 
 int lh_cli_plc_intersections(FILE *out, const lh_cli_plc *in, const char *cmd, size_t limit, int first)
@@ -160,14 +172,14 @@ int lh_cli_plc_intersections(FILE *out, const lh_cli_plc *in, const char *cmd, s
     }
     for (size_t i = 0; i < cap; i++) {
         fprintf(out, "%s: facet %lld", in->path, (long long)pairs[2 * i] + first);
-        facet_place(out, &in->g, pairs[2 * i]);
+        facet_place(out, in, pairs[2 * i]);
         fprintf(out, " and facet %lld", (long long)pairs[2 * i + 1] + first);
-        facet_place(out, &in->g, pairs[2 * i + 1]);
+        facet_place(out, in, pairs[2 * i + 1]);
         fprintf(out, " intersect\n");
     }
     if (!count) fprintf(out, "%s: no facets intersect (%zu facets)\n", in->path, in->g.facet_count);
-    else if (cap < count) fprintf(out, "%s: %zu pairs of facets intersect; the first %zu are listed\n", in->path,
-                                  count, cap);
+    else if (cap < count) fprintf(out, "%s: %zu pairs of facets intersect; the first %zu %s listed\n", in->path,
+                                  count, cap, cap == 1 ? "is" : "are");
     else fprintf(out, "%s: %zu pair%s of facets intersect\n", in->path, count, count == 1 ? "" : "s");
     free(pairs);
     return count > 0;

@@ -1,8 +1,9 @@
 /*
  * recover.h — boundary recovery by conforming Delaunay splitting (docs/meshing3d.md).
  *
- * The constraints are the facets' triangles (facets triangulated in their planes) and
- * segments: every edge of those triangles once, and the PLC's free segments. The mesh
+ * The constraints are the facets, each recovered as a whole (a patch: the region its
+ * triangulation in its plane covers), and the segments: the facets' polygon edges and
+ * the PLC's free segments. The mesh
  * is always the Delaunay tetrahedralization of the points so far (lift/: lh_delaunay,
  * then lh_tri_insert), exact and unique under the lifted perturbation, so every stage
  * works on a valid tetrahedralization. Rounds alternate:
@@ -12,9 +13,9 @@
  *     from that vertex between a third and two thirds of the subsegment (Shewchuk's
  *     concentric shells, "Tetrahedral mesh generation by Delaunay refinement", SoCG
  *     1998, sec. 3.2: splits near a small input angle stop);
- *   - when every subsegment is an edge, a triangle whose points (corners and the
- *     chains of its edges) are not the vertices of a set of mesh faces forming a disk
- *     bounded by its chains has its longest uncovered subsegment split.
+ *   - when every subsegment is an edge, a facet that is not a union of mesh faces on
+ *     its points (recover_faces.c) has its longest uncovered subsegment split, or,
+ *     when its faces stop short inside it, a point put in it.
  * A conforming Delaunay tetrahedralization results (Murphy, Mount, Gable 2001;
  * Cohen-Steiner, Colin de Verdière, Yvinec 2004 prove such splitting ends for any
  * PLC; this version does not protect every acute facet angle, and caps Steiner points
@@ -30,10 +31,9 @@
 /* A segment: the straight line between input points a and b, split into a chain. */
 typedef struct t3_seg {
     lh_index a, b;       /* endpoints, a before b in coordinates (lexicographic)      */
-    lh_index parent;     /* output segment number (PLC segments, facet ring edges);
-                            -1 for a diagonal a facet's triangulation made            */
+    lh_index parent;     /* output segment number: the PLC's segments, then the
+                            facets' polygon edges                                     */
     lh_index marker;     /* the segment's marker, else its first facet's             */
-    lh_index facet;      /* a facet it lies on, -1 for a free segment                */
 } t3_seg;
 
 /* A point of a chain: point p at parameter t of segment seg (a + t (b - a)); in the
@@ -59,13 +59,12 @@ typedef struct t3_ctx {
     lh_index *tri;          /* 3 per facet triangle, representative point indices     */
     lh_index *tri_facet;    /* the facet of each                                      */
     lh_index *tri_seg;      /* 3 per triangle: edge k (corner k to k+1)'s segment, -1
-                               for a diagonal inside a planar facet (no constraint)    */
+                               for a diagonal inside a facet (no constraint)          */
     size_t seg_count;
     t3_seg *seg;
     lh_index *seg_key;      /* 3 per segment: its endpoints (smaller index first) and
                                its number, sorted: edge to segment lookup             */
-    /* patches: what must be a union of mesh faces — a planar facet whole, or one
-       triangle of a facet that is not planar */
+    /* patches: what must be a union of mesh faces — a facet, as its triangles */
     size_t patch_count;
     lh_index *patch_first;  /* patch_count + 1 offsets into patch_tri                 */
     lh_index *patch_tri;    /* triangle indices                                        */

@@ -1,10 +1,11 @@
 /*
- * recover_faces.c — is a patch (a planar facet, or one triangle of a facet that is
- * not planar) a union of mesh faces? Its points are its triangles' corners, the
- * chains of their edges that are segments and the Steiner points put inside it. The
- * candidate faces are the mesh faces on three of those points lying in the patch
- * (for a facet of several triangles: the face's centroid, projected along the
- * facet's dominant normal axis, in one of them). Where rounded Steiner points make
+ * recover_faces.c — is a patch (a facet) a union of mesh faces? Its points are its
+ * triangles' corners, the chains of their edges that are segments and the Steiner
+ * points put inside it. The candidate faces are the mesh faces on three of those
+ * points lying in the patch: the face's centroid, projected along the facet's
+ * dominant normal axis, in one of its triangles. A facet whose points are not
+ * exactly coplanar is recovered the same way: the faces spanning its polygons are
+ * the mesh's, not those of a triangulation fixed beforehand. Where rounded Steiner points make
  * tetrahedra with all four points on the patch (flat ones), only the faces below
  * them count (along the patch's normal): such a stack has one bottom, so it counts
  * once. The patch is recovered when they
@@ -15,6 +16,7 @@
  */
 #include "recover.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -369,6 +371,11 @@ lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int want_split, int *ok)
     if (st == LH_OK) {
         judge(c, &ps, &v);
         *ok = v.ok;
+        if (getenv("DBGP") && !v.ok && !want_split) {
+            fprintf(stderr, "patch %zu facet %ld: %zu points, %zu faces short %d frontier %ld-%ld\n", k, (long)c->patch_facet[k], ps.nv, ps.nf, v.short_need != NULL, (long)v.frontier[0], (long)v.frontier[1]);
+            for (size_t i = 0; i < ps.nn; i++) if (uses(c, &ps, ps.needs[i].p, ps.needs[i].q) != (size_t)ps.needs[i].mult) fprintf(stderr, " need %ld-%ld x%ld uses %zu\n", (long)ps.needs[i].p, (long)ps.needs[i].q, (long)ps.needs[i].mult, uses(c, &ps, ps.needs[i].p, ps.needs[i].q));
+            for (size_t i = 0, run; i < ps.ne; i += run) { for (run = 1; i + run < ps.ne && !cmp_pair(c->ebuf + 2 * i, c->ebuf + 2 * (i + run));) run++; if (run != 2 && !is_need(&ps, c->ebuf + 2 * i)) fprintf(stderr, " edge %ld-%ld run %zu\n", (long)c->ebuf[2*i], (long)c->ebuf[2*i+1], run); }
+        }
         if (!v.ok && want_split) st = split(c, k, &ps, &v);
     }
     release(c, &ps);

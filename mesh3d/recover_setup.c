@@ -1,8 +1,8 @@
 /*
  * recover_setup.c — the constraints: facet triangles on representative points (exact
- * duplicates merged), checked and without repeats, and the segments: every triangle
- * edge once and the PLC's free segments, those on a facet's polygon (or free) marked
- * as PLC segments with their output number.
+ * duplicates merged), checked and without repeats, grouped into one patch per facet;
+ * and the segments: the PLC's free segments and the facets' polygon edges, each once,
+ * with their output number.
  */
 #include "recover.h"
 
@@ -100,10 +100,10 @@ static lh_status drop_repeats(t3_ctx *c)
     return LH_OK;
 }
 
-/* An edge as found: endpoints a < b; kind 0 a free segment, 1 a facet ring edge, 2 a
- * triangle edge; seq its order of appearance within its kind. */
+/* An edge as found: endpoints a < b; kind 0 a free segment, 1 a facet ring edge;
+ * seq its order of appearance within its kind. */
 typedef struct edge_rec {
-    lh_index a, b, kind, seq, marker, facet, tri;
+    lh_index a, b, kind, seq, marker, facet;
 } edge_rec;
 
 static int cmp_rec(const void *ctx, lh_index i, lh_index j)
@@ -116,10 +116,10 @@ static int cmp_rec(const void *ctx, lh_index i, lh_index j)
 }
 
 static void rec_put(edge_rec *r, size_t *k, lh_index a, lh_index b, lh_index kind,
-                    lh_index seq, lh_index marker, lh_index facet, lh_index tri)
+                    lh_index seq, lh_index marker, lh_index facet)
 {
     if (a == b) return;
-    edge_rec e = {a < b ? a : b, a < b ? b : a, kind, seq, marker, facet, tri};
+    edge_rec e = {a < b ? a : b, a < b ? b : a, kind, seq, marker, facet};
     r[(*k)++] = e;
 }
 
@@ -133,15 +133,15 @@ static size_t ring_edge_count(const lh_plc *g)
     return cnt;
 }
 
-/* Every edge record: free segments, facet ring edges, and the triangle edges of
- * facets that are not planar (planar[f] == 0). */
-static size_t collect_edges(const t3_ctx *c, edge_rec *r, const unsigned char *planar)
+/* Every edge record: free segments, then facet ring edges (a triangulation's
+ * diagonals are no constraint: a facet is recovered as a whole, recover_faces.c). */
+static size_t collect_edges(const t3_ctx *c, edge_rec *r)
 {
     const lh_plc *g = c->g;
     size_t k = 0;
     for (size_t s = 0; s < g->segment_count; s++)
         rec_put(r, &k, c->dup[g->segments[2 * s]], c->dup[g->segments[2 * s + 1]], 0,
-                (lh_index)s, g->segment_marker ? g->segment_marker[s] : 0, -1, -1);
+                (lh_index)s, g->segment_marker ? g->segment_marker[s] : 0, -1);
     lh_index seq = 0;
     for (size_t f = 0; f < g->facet_count; f++) {
         lh_index mk = g->facet_marker ? g->facet_marker[f] : 0;
@@ -149,17 +149,8 @@ static size_t collect_edges(const t3_ctx *c, edge_rec *r, const unsigned char *p
             const lh_index *v = g->polygon_vertices + g->polygon_first[p];
             size_t len = (size_t)(g->polygon_first[p + 1] - g->polygon_first[p]);
             for (size_t i = 0; len >= 2 && i < (len == 2 ? 1 : len); i++)
-                rec_put(r, &k, c->dup[v[i]], c->dup[v[(i + 1) % len]], 1, seq++, mk,
-                        (lh_index)f, -1);
+                rec_put(r, &k, c->dup[v[i]], c->dup[v[(i + 1) % len]], 1, seq++, mk, (lh_index)f);
         }
-    }
-    for (size_t t = 0; t < c->tri_count; t++) {
-        lh_index f = c->tri_facet[t];
-        if (planar[f]) continue;
-        lh_index mk = g->facet_marker ? g->facet_marker[f] : 0;
-        for (int j = 0; j < 3; j++)
-            rec_put(r, &k, c->tri[3 * t + j], c->tri[3 * t + (j + 1) % 3], 2, (lh_index)(3 * t + j),
-                    mk, f, (lh_index)t);
     }
     return k;
 }
@@ -184,8 +175,7 @@ static lh_status make_segments(t3_ctx *c, const edge_rec *r, const lh_index *idx
         if (i == 0 || e->a != r[idx[i - 1]].a || e->b != r[idx[i - 1]].b) {
             /* a before b in coordinates: a split point depends on the points only */
             int swap = lex_less(c->xyz + 3 * e->b, c->xyz + 3 * e->a);
-            t3_seg sg = {swap ? e->b : e->a, swap ? e->a : e->b, e->kind < 2 ? 0 : -1,
-                         e->marker, e->facet};
+            t3_seg sg = {swap ? e->b : e->a, swap ? e->a : e->b, 0, e->marker};
             c->seg_key[3 * s] = e->a, c->seg_key[3 * s + 1] = e->b;
             c->seg_key[3 * s + 2] = (lh_index)s;
             c->seg[s++] = sg;
@@ -208,7 +198,7 @@ static lh_status number_segments(t3_ctx *c, const edge_rec *r, const lh_index *i
     for (size_t i = 0; st == LH_OK && i < m; i++) {
         const edge_rec *e = r + idx[i];
         if (i > 0 && e->a == r[idx[i - 1]].a && e->b == r[idx[i - 1]].b) continue;
-        if (e->kind < 2) {
+        {
             key[k] = *e;
             key[k].a = key[k].b = 0; /* order by (kind, seq) only */
             first[k] = (lh_index)s;
@@ -239,28 +229,6 @@ lh_index lh__t3_seg_of(const t3_ctx *c, lh_index p, lh_index q)
         else hi = mid;
     }
     return -1;
-}
-
-/* planar[f]: every point of facet f lies exactly in the plane of its first triangle
- * (order: the triangles grouped by facet). */
-static void find_planar(t3_ctx *c, const lh_index *order, unsigned char *planar)
-{
-    const lh_plc *g = c->g;
-    memset(planar, 0, g->facet_count);
-    for (size_t i = 0; i < c->tri_count; i++) {
-        lh_index f = c->tri_facet[order[i]];
-        if (i > 0 && c->tri_facet[order[i - 1]] == f) continue;
-        const lh_index *t = c->tri + 3 * (size_t)order[i];
-        const double *p[4] = {c->xyz + 3 * (size_t)t[0], c->xyz + 3 * (size_t)t[1],
-                              c->xyz + 3 * (size_t)t[2], NULL};
-        int flat = 1;
-        for (lh_index v = g->polygon_first[g->facet_first[f]];
-             flat && v < g->polygon_first[g->facet_first[f + 1]]; v++) {
-            p[3] = c->xyz + 3 * (size_t)c->dup[g->polygon_vertices[v]];
-            flat = lh_orient(c->pred, 3, p) == 0;
-        }
-        planar[f] = (unsigned char)flat;
-    }
 }
 
 /* The triangles' indices grouped by facet, in triangle order within a facet. */
@@ -300,8 +268,8 @@ static signed char drop_axis(const t3_ctx *c, const lh_index *t)
     return (signed char)(nrm[ax] < 0 ? -(ax + 1) : ax + 1);
 }
 
-/* Patches: a planar facet's triangles together, else each triangle alone. */
-static lh_status make_patches(t3_ctx *c, const lh_index *order, const unsigned char *planar)
+/* Patches: each facet's triangles together. */
+static lh_status make_patches(t3_ctx *c, const lh_index *order)
 {
     size_t m = c->tri_count;
     c->patch_first = lh__alloc(&c->al, (m + 2) * sizeof(lh_index));
@@ -313,7 +281,7 @@ static lh_status make_patches(t3_ctx *c, const lh_index *order, const unsigned c
     size_t p = 0;
     for (size_t i = 0; i < m; i++) {
         lh_index k = order[i], f = c->tri_facet[k];
-        if (i == 0 || !planar[f] || c->tri_facet[order[i - 1]] != f) {
+        if (i == 0 || c->tri_facet[order[i - 1]] != f) {
             c->patch_first[p] = (lh_index)i;
             c->patch_facet[p] = f;
             c->patch_axis[p] = drop_axis(c, c->tri + 3 * (size_t)k);
@@ -329,15 +297,15 @@ static lh_status make_patches(t3_ctx *c, const lh_index *order, const unsigned c
     return LH_OK;
 }
 
-static lh_status make_edges(t3_ctx *c, const unsigned char *planar)
+static lh_status make_edges(t3_ctx *c)
 {
-    size_t cap = c->g->segment_count + ring_edge_count(c->g) + 3 * c->tri_count + 1;
+    size_t cap = c->g->segment_count + ring_edge_count(c->g) + 1;
     edge_rec *r = lh__alloc(&c->al, cap * sizeof(edge_rec));
     lh_index *idx = lh__alloc(&c->al, 2 * cap * sizeof(lh_index));
     lh_status st = r && idx ? LH_OK : lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     size_t m = 0;
     if (st == LH_OK) {
-        m = collect_edges(c, r, planar);
+        m = collect_edges(c, r);
         for (size_t i = 0; i < m; i++) idx[i] = (lh_index)i;
         lh__sort_idx(idx, idx + m, m, cmp_rec, r);
         st = make_segments(c, r, idx, m);
@@ -360,15 +328,8 @@ lh_status lh__t3_constraints(t3_ctx *c, const lh__facet_tris *ft)
     if (st == LH_OK) st = drop_repeats(c);
     lh_index *order = NULL;
     if (st == LH_OK) st = by_facet(c, &order);
-    if (st != LH_OK) return st;
-    unsigned char *planar = lh__alloc(&c->al, c->g->facet_count + 1);
-    if (!planar) st = lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-    if (st == LH_OK) {
-        find_planar(c, order, planar);
-        st = make_edges(c, planar);
-    }
-    if (st == LH_OK) st = make_patches(c, order, planar);
-    lh__free(&c->al, planar);
+    if (st == LH_OK) st = make_edges(c);
+    if (st == LH_OK) st = make_patches(c, order);
     lh__free(&c->al, order);
     return st;
 }

@@ -103,6 +103,7 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
         return st;
     }
     m->stats.facets_nonplanar = nonplanar;
+    lh__tetmesh_quality(m);
     *out = m;
     return LH_OK;
 }

@@ -6,6 +6,7 @@
 #include "lh_test.h"
 #include "lifthull.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,7 +53,7 @@ LH_TEST(models_mesh_and_conform)
         {"mesh3d/blob-closed.off", 8, 4},  {"mesh3d/eight.off", 82, 69},
         {"mesh3d/u.off", 183, 172},        {"mesh3d/pipe.off", 260, 0},
         {"mesh3d/part.off", 1168, 21},     {"mesh3d/joint.off", 2106, 92},
-        {"mesh3d/double-torus-example.off", 56, 2},
+        {"mesh3d/double-torus-example.off", 2, 2}, {"mesh3d/mpi.off", 140, 31},
         {"plc_bin/sphere.stl", 0, 0},      {"plc_bin/sphere.ply", 0, 0},
     };
     for (size_t i = 0; i < LH_COUNT(models); i++) {
@@ -72,6 +73,9 @@ LH_TEST(models_mesh_and_conform)
             LH_EXPECT_LE_U64(s.steiner_points, models[i].steiner_max);
             LH_EXPECT_EQ_U64(s.steiner_points, s.steiner_on_segments + s.steiner_on_facets);
             LH_EXPECT_GT_U64(s.tets, 0);
+            /* no tet has a radius-edge ratio below the regular one's, sqrt(6)/4 */
+            LH_EXPECT_TRUE(s.min_dihedral > 0 && s.min_dihedral <= 70.53);
+            LH_EXPECT_TRUE(s.max_radius_edge >= 0.6123);
             LH_EXPECT_EQ_U64(lh_tetmesh_point_count(m), g.n + s.steiner_points);
         }
         lh_tetmesh_free(m);
@@ -338,11 +342,66 @@ LH_TEST(a_million_copies_of_one_triangle)
     free(v), free(ff), free(pf);
 }
 
+/* The quality figures on the unit cube cut into six tets by its Delaunay
+ * tetrahedralization under the lifted perturbation (the same six as TetGen 1.5 -p):
+ * the smallest dihedral angle atan(1/sqrt 2) = 35.264 degrees, as TetGen's -V says;
+ * every tet has the cube's circumsphere, radius sqrt(3)/2, over a unit shortest edge. */
+LH_TEST(quality_figures)
+{
+    lh_plc g;
+    LH_ASSERT_TRUE(read_plc("tetgen3d/cube.off", &g));
+    lh_tetmesh *m = NULL;
+    LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &m, NULL), LH_OK);
+    if (m) {
+        lh_tetmesh_stats s;
+        lh_tetmesh_stats_get(m, &s);
+        LH_EXPECT_EQ_U64(s.tets, 6);
+        LH_EXPECT_TRUE(fabs(s.min_dihedral - atan(sqrt(0.5)) * 180 / 3.14159265358979323846) < 1e-9);
+        LH_EXPECT_TRUE(fabs(s.max_radius_edge - sqrt(3) / 2) < 1e-12);
+    }
+    lh_tetmesh_free(m);
+    lh_plc_free(&g);
+}
+
+/* Scaled by 2^200 or 2^-200 (exact), a model meshes to the scaled mesh: the same
+ * tets as sets, every coordinate times the factor. */
+LH_TEST(scale_does_not_matter)
+{
+    static const char *const files[] = {"mesh3d/u.off", "mesh3d/schonhardt.off", "mesh3d/mpi.off"};
+    for (size_t i = 0; i < LH_COUNT(files); i++) {
+        lh_plc g;
+        LH_ASSERT_TRUE(read_plc(files[i], &g));
+        lh_tetmesh *a = NULL;
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &a, NULL), LH_OK);
+        for (int e = -200; a && e <= 200; e += 400) {
+            for (size_t j = 0; j < 3 * g.n; j++) g.xyz[j] = ldexp(g.xyz[j], e);
+            lh_tetmesh *b = NULL;
+            LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &b, NULL), LH_OK);
+            for (size_t j = 0; j < 3 * g.n; j++) g.xyz[j] = ldexp(g.xyz[j], -e);
+            if (!b) continue;
+            size_t nt = lh_tetmesh_tet_count(a), np = lh_tetmesh_point_count(a);
+            LH_EXPECT_EQ_U64(lh_tetmesh_tet_count(b), nt);
+            LH_EXPECT_EQ_U64(lh_tetmesh_point_count(b), np);
+            if (lh_tetmesh_tet_count(b) == nt && lh_tetmesh_point_count(b) == np) {
+                double *x = (double *)lh_tetmesh_points(b); /* scaled back in place */
+                for (size_t j = 0; j < 3 * np; j++) x[j] = ldexp(x[j], -e);
+                double *ka = tet_keys(a), *kb = tet_keys(b);
+                LH_EXPECT_TRUE(memcmp(ka, kb, 12 * nt * sizeof(double)) == 0);
+                free(ka), free(kb);
+            }
+            lh_tetmesh_free(b);
+        }
+        lh_tetmesh_free(a);
+        lh_plc_free(&g);
+    }
+}
+
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
         LH_CASE(models_mesh_and_conform), LH_CASE(output_does_not_depend_on_order),
         LH_CASE(bad_inputs_get_their_error), LH_CASE(steiner_limits),
-        LH_CASE(bad_plcs_get_their_error), LH_CASE(a_million_copies_of_one_triangle)};
+        LH_CASE(bad_plcs_get_their_error), LH_CASE(a_million_copies_of_one_triangle),
+        LH_CASE(scale_does_not_matter), LH_CASE(quality_figures)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }
