@@ -21,45 +21,13 @@
  * counted once each in off_exact; a facet with such a point among its subfaces'
  * is held to (b) only, since rounding moves its area.
  */
-#include "check.h"
+#include "check_plc.h"
 #include "lh_sort.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-typedef struct hrec { lh_index from, to, sub; } hrec;
-typedef struct prec { lh_index a, b, pos; } prec;
-
-typedef struct pchk {
-    lh__tchk *c;
-    const lh_plc *g;
-    size_t ns;          /* segments                                                */
-    lh_index *seg;      /* 2 per segment                                            */
-    hrec *h;            /* 2 per subsegment, sorted by (from, to)                   */
-    lh_index *seg_of;   /* per subsegment: the first segment whose chain has it     */
-    lh_index *pt_seg;   /* per point: the first segment whose chain passes it, -1   */
-    lh_index *plane;    /* 3 per facet: first three non-collinear points, or -1     */
-    int *axis;          /* per facet: the coordinate its projection drops           */
-    unsigned char *planar;
-    signed char *eps;   /* per polygon: +1 area, -1 hole, 0 neither                 */
-    lh_index *par;      /* per subface: its facet or -1                             */
-    size_t *ffirst;     /* facet_count + 1 offsets into flist                       */
-    lh_index *flist;    /* subfaces by facet                                        */
-    prec *pe;           /* scratch: a facet's subface edges (3 per subface)         */
-    prec *re;           /* scratch: a facet's polygon edges                         */
-    lh__detsum *sum, *s2, *s1;
-} pchk;
-
-static size_t poly_len(const lh_plc *g, size_t p)
-{
-    return (size_t)(g->polygon_first[p + 1] - g->polygon_first[p]);
-}
-static const lh_index *poly_v(const lh_plc *g, size_t p)
-{
-    return g->polygon_vertices + g->polygon_first[p];
-}
 
 /* ---- the PLC's own consistency --------------------------------------------------- */
 
@@ -118,13 +86,13 @@ static lh_status check_g(lh__tchk *c)
 /* ---- exact helpers --------------------------------------------------------------- */
 
 /* p projected: the two coordinates other than axis. */
-static void proj(const double *p, int axis, double *q)
+void lh__pchk_proj(const double *p, int axis, double *q)
 {
     q[0] = p[axis == 0 ? 1 : 0];
     q[1] = p[axis == 2 ? 1 : 2];
 }
 
-static int orient3i(pchk *k, lh_index a, lh_index b, lh_index x, lh_index y)
+int lh__pchk_orient3i(pchk *k, lh_index a, lh_index b, lh_index x, lh_index y)
 {
     const double *p[4] = {lh__tchk_pt(k->c, a), lh__tchk_pt(k->c, b), lh__tchk_pt(k->c, x),
                           lh__tchk_pt(k->c, y)};
@@ -132,11 +100,11 @@ static int orient3i(pchk *k, lh_index a, lh_index b, lh_index x, lh_index y)
 }
 
 /* Whether the points a, b, x of R^3 are collinear: every coordinate projection is. */
-static int collinear(pchk *k, const double *a, const double *b, const double *x)
+int lh__pchk_collinear(pchk *k, const double *a, const double *b, const double *x)
 {
     for (int axis = 0; axis < 3; axis++) {
         double q[3][2];
-        proj(a, axis, q[0]), proj(b, axis, q[1]), proj(x, axis, q[2]);
+        lh__pchk_proj(a, axis, q[0]), lh__pchk_proj(b, axis, q[1]), lh__pchk_proj(x, axis, q[2]);
         const double *p[3] = {q[0], q[1], q[2]};
         if (lh_orient(k->c->pr, 2, p) != 0) return 0;
     }
@@ -171,13 +139,13 @@ static int coord_sum(pchk *k, const double (*q)[2], int m, const double *u, int 
  * 0 on its boundary, -1 outside (crossing number, every test exact). */
 static int in_ring(pchk *k, size_t p, int axis, const double (*q)[2], int m)
 {
-    const size_t len = poly_len(k->g, p);
-    const lh_index *v = poly_v(k->g, p);
+    const size_t len = lh__pchk_poly_len(k->g, p);
+    const lh_index *v = lh__pchk_poly_v(k->g, p);
     int inside = 0;
     for (size_t i = 0; i < len; i++) {
         double u[2], w[2];
-        proj(lh__tchk_pt(k->c, v[i]), axis, u);
-        proj(lh__tchk_pt(k->c, v[(i + 1) % len]), axis, w);
+        lh__pchk_proj(lh__tchk_pt(k->c, v[i]), axis, u);
+        lh__pchk_proj(lh__tchk_pt(k->c, v[(i + 1) % len]), axis, w);
         const int cu = coord_sum(k, q, m, u, 1), cw = coord_sum(k, q, m, w, 1);
         const int xu = coord_sum(k, q, m, u, 0), xw = coord_sum(k, q, m, w, 0);
         const int s = cu * cw <= 0 ? orient2_sum(k, u, w, q, m) : 1;
@@ -189,7 +157,7 @@ static int in_ring(pchk *k, size_t p, int axis, const double (*q)[2], int m)
 
 /* Whether the mean of q[0..m) lies in facet f's closed region: in or on an area
  * polygon and strictly inside no hole polygon. */
-static int in_facet(pchk *k, size_t f, const double (*q)[2], int m)
+int lh__pchk_in_facet(pchk *k, size_t f, const double (*q)[2], int m)
 {
     int in = 0;
     for (size_t p = (size_t)k->g->facet_first[f]; p < (size_t)k->g->facet_first[f + 1]; p++) {
@@ -209,13 +177,13 @@ static void facet_plane(pchk *k, size_t f)
     lh_index *pl = k->plane + 3 * f;
     pl[0] = pl[1] = pl[2] = -1;
     for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
-        for (size_t i = 0; i < poly_len(g, p); i++) {
-            const lh_index v = poly_v(g, p)[i];
+        for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++) {
+            const lh_index v = lh__pchk_poly_v(g, p)[i];
             const double *x = lh__tchk_pt(k->c, v);
             if (pl[0] < 0) pl[0] = v;
             else if (pl[1] < 0 && memcmp(x, lh__tchk_pt(k->c, pl[0]), 3 * sizeof *x)) pl[1] = v;
             else if (pl[1] >= 0 && pl[2] < 0 &&
-                     !collinear(k, lh__tchk_pt(k->c, pl[0]), lh__tchk_pt(k->c, pl[1]), x))
+                     !lh__pchk_collinear(k, lh__tchk_pt(k->c, pl[0]), lh__tchk_pt(k->c, pl[1]), x))
                 pl[2] = v;
         }
 }
@@ -234,7 +202,7 @@ static int facet_axis(pchk *k, const lh_index *pl)
         for (int i = 1; i < 3; i++)
             if (nrm[i] > nrm[best]) best = i;
         double q[3][2];
-        proj(a, best, q[0]), proj(b, best, q[1]), proj(d, best, q[2]);
+        lh__pchk_proj(a, best, q[0]), lh__pchk_proj(b, best, q[1]), lh__pchk_proj(d, best, q[2]);
         const double *p[3] = {q[0], q[1], q[2]};
         if (lh_orient(k->c->pr, 2, p) != 0) return best;
         nrm[best] = -1;
@@ -252,24 +220,24 @@ static void facet_roles(pchk *k, size_t f)
     size_t outer = p1;
     for (size_t p = p0; p < p1; p++) {
         k->eps[p] = 0;
-        if (poly_len(g, p) < 3) continue;
+        if (lh__pchk_poly_len(g, p) < 3) continue;
         if (outer == p1) { outer = p, k->eps[p] = 1; continue; }
         if (k->plane[3 * f] < 0) continue;
         for (size_t h = g->facet_hole_first ? (size_t)g->facet_hole_first[f] : 0;
              g->facet_hole_first && h < (size_t)g->facet_hole_first[f + 1]; h++) {
             double q[1][2];
-            proj(g->facet_holes + 3 * h, k->axis[f], q[0]);
+            lh__pchk_proj(g->facet_holes + 3 * h, k->axis[f], q[0]);
             if (in_ring(k, p, k->axis[f], (const double(*)[2])q, 1) > 0) k->eps[p] = -1;
         }
-        for (size_t i = 0; k->eps[p] == 0 && i < poly_len(g, p); i++) {
+        for (size_t i = 0; k->eps[p] == 0 && i < lh__pchk_poly_len(g, p); i++) {
             double q[1][2];
-            proj(lh__tchk_pt(k->c, poly_v(g, p)[i]), k->axis[f], q[0]);
+            lh__pchk_proj(lh__tchk_pt(k->c, lh__pchk_poly_v(g, p)[i]), k->axis[f], q[0]);
             if (in_ring(k, outer, k->axis[f], (const double(*)[2])q, 1) < 0) k->eps[p] = 1;
         }
     }
 }
 
-static void prepare_facets(pchk *k)
+void lh__pchk_prepare_facets(pchk *k)
 {
     const lh_plc *g = k->g;
     for (size_t f = 0; f < g->facet_count; f++) {
@@ -278,8 +246,8 @@ static void prepare_facets(pchk *k)
         k->planar[f] = pl[2] >= 0;
         k->axis[f] = pl[2] >= 0 ? facet_axis(k, pl) : 0;
         for (size_t p = (size_t)g->facet_first[f]; k->planar[f] && p < (size_t)g->facet_first[f + 1]; p++)
-            for (size_t i = 0; i < poly_len(g, p); i++)
-                if (orient3i(k, pl[0], pl[1], pl[2], poly_v(g, p)[i]) != 0) k->planar[f] = 0;
+            for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++)
+                if (lh__pchk_orient3i(k, pl[0], pl[1], pl[2], lh__pchk_poly_v(g, p)[i]) != 0) k->planar[f] = 0;
         if (pl[2] < 0) pl[0] = -1;
         facet_roles(k, f);
     }
@@ -287,7 +255,7 @@ static void prepare_facets(pchk *k)
 
 /* ---- segments -------------------------------------------------------------------- */
 
-static int prec_cmp(const void *x, const void *y)
+int lh__pchk_prec_cmp(const void *x, const void *y)
 {
     const prec *p = x, *q = y;
     if (p->a != q->a) return p->a < q->a ? -1 : 1;
@@ -301,7 +269,7 @@ static int prec_pos_cmp(const void *x, const void *y)
     return p->pos < q->pos ? -1 : p->pos > q->pos;
 }
 
-static int hrec_cmp(const void *x, const void *y)
+int lh__pchk_hrec_cmp(const void *x, const void *y)
 {
     const hrec *p = x, *q = y;
     if (p->from != q->from) return p->from < q->from ? -1 : 1;
@@ -315,13 +283,13 @@ static void list_segments(pchk *k, prec *tmp)
     const lh_plc *g = k->g;
     size_t m = 0;
     for (size_t p = 0; g->facet_count && p < g->polygon_count; p++) {
-        const size_t len = poly_len(g, p);
+        const size_t len = lh__pchk_poly_len(g, p);
         for (size_t i = 0; len >= 2 && i < (len == 2 ? 1 : len); i++) {
-            const lh_index a = poly_v(g, p)[i], b = poly_v(g, p)[(i + 1) % len];
+            const lh_index a = lh__pchk_poly_v(g, p)[i], b = lh__pchk_poly_v(g, p)[(i + 1) % len];
             if (a != b) tmp[m] = (prec){a < b ? a : b, a < b ? b : a, (lh_index)m}, m++;
         }
     }
-    qsort(tmp, m, sizeof *tmp, prec_cmp);
+    qsort(tmp, m, sizeof *tmp, lh__pchk_prec_cmp);
     size_t u = 0;
     for (size_t i = 0; i < m; i++)
         if (i == 0 || tmp[i].a != tmp[i - 1].a || tmp[i].b != tmp[i - 1].b) tmp[u++] = tmp[i];
@@ -368,7 +336,7 @@ static int near_line(const double *a, const double *b, const double *x)
 }
 
 /* Whether x is within rounding's reach of the plane a b c. */
-static int near_plane(const double *a, const double *b, const double *c, const double *x)
+int lh__pchk_near_plane(const double *a, const double *b, const double *c, const double *x)
 {
     const double *p[4] = {a, b, c, x};
     double n[3];
@@ -377,12 +345,12 @@ static int near_plane(const double *a, const double *b, const double *c, const d
     return fabs(h) <= reach(p, 4) * norm(n);
 }
 
-static void mark_off(pchk *k, lh_index v)
+void lh__pchk_mark_off(pchk *k, lh_index v)
 {
     if (!k->c->off[v]) k->c->off[v] = 1, k->c->off_count++;
 }
 
-static int strictly_between(double p, double x, double q)
+int lh__pchk_strictly_between(double p, double x, double q)
 {
     return (p < x && x < q) || (q < x && x < p);
 }
@@ -400,12 +368,12 @@ static const hrec *next_on(pchk *k, const hrec *h, size_t nh, lh_index a, lh_ind
     for (size_t i = 0; i < nh && h[i].from == h->from; i++) {
         if (h[i].to == b) { *off = 0; return h + i; }
         const double *x = lh__tchk_pt(k->c, h[i].to);
-        if (!strictly_between(cur, x[axis], pb[axis])) continue;
-        const int is_off = !collinear(k, pa, pb, x);
+        if (!lh__pchk_strictly_between(cur, x[axis], pb[axis])) continue;
+        const int is_off = !lh__pchk_collinear(k, pa, pb, x);
         if (is_off && ((size_t)h[i].to < k->g->n || !near_line(pa, pb, x))) continue;
         if (!best || is_off < best_off ||
             (is_off == best_off &&
-             strictly_between(cur, x[axis], lh__tchk_pt(k->c, best->to)[axis])))
+             lh__pchk_strictly_between(cur, x[axis], lh__tchk_pt(k->c, best->to)[axis])))
             best = h + i, best_off = is_off;
     }
     *off = best_off;
@@ -427,7 +395,7 @@ static lh_status walk_segment(pchk *k, size_t s)
         size_t lo = 0, hi = nh;
         while (lo < hi) {
             const size_t mid = lo + (hi - lo) / 2;
-            if (hrec_cmp(k->h + mid, &key) < 0) lo = mid + 1;
+            if (lh__pchk_hrec_cmp(k->h + mid, &key) < 0) lo = mid + 1;
             else hi = mid;
         }
         int off = 0;
@@ -438,7 +406,7 @@ static lh_status walk_segment(pchk *k, size_t s)
                                  "segment %zu (%lld %lld) is not covered: its chain of "
                                  "subsegments from %lld stops at %lld", s, (long long)a,
                                  (long long)b, (long long)a, (long long)cur);
-        if (off) mark_off(k, nx->to);
+        if (off) lh__pchk_mark_off(k, nx->to);
         if (k->seg_of[nx->sub] < 0) k->seg_of[nx->sub] = (lh_index)s;
         if (nx->to != b && k->pt_seg[nx->to] < 0) k->pt_seg[nx->to] = (lh_index)s;
         cur = nx->to;
@@ -455,248 +423,11 @@ static lh_status check_segments(pchk *k)
         k->h[2 * s + 1] = (hrec){b, a, (lh_index)s};
         k->seg_of[s] = -1;
     }
-    qsort(k->h, 2 * ne, sizeof *k->h, hrec_cmp);
+    qsort(k->h, 2 * ne, sizeof *k->h, lh__pchk_hrec_cmp);
     for (size_t i = 0; i < k->c->n; i++) k->pt_seg[i] = -1;
     for (size_t s = 0; s < k->ns; s++) {
         const lh_status st = walk_segment(k, s);
         if (st) return st;
-    }
-    return LH_OK;
-}
-
-/* ---- facets ---------------------------------------------------------------------- */
-
-static void face_proj(pchk *k, size_t s, int axis, double (*q)[2])
-{
-    for (int i = 0; i < 3; i++) proj(lh__tchk_pt(k->c, k->c->faces[3 * s + i]), axis, q[i]);
-}
-
-/* Whether subface s lies in facet f: its points in f's plane, they and its
- * centroid in f's closed region. */
-static int facet_has(pchk *k, size_t f, size_t s)
-{
-    const lh_index *pl = k->plane + 3 * f, *v = k->c->faces + 3 * s;
-    if (pl[0] < 0 || !k->planar[f]) return 0;
-    for (int i = 0; i < 3; i++)
-        if (orient3i(k, pl[0], pl[1], pl[2], v[i]) != 0) return 0;
-    double q[3][2];
-    face_proj(k, s, k->axis[f], q);
-    for (int i = 0; i < 3; i++)
-        if (!in_facet(k, f, (const double(*)[2])q + i, 1)) return 0;
-    return in_facet(k, f, (const double(*)[2])q, 3);
-}
-
-/* Subfaces to facets by containment: first the facets at their PLC points, then all. */
-static lh_status assign_parents(pchk *k)
-{
-    const lh_plc *g = k->g;
-    const size_t nv = g->facet_count ? (size_t)g->polygon_first[g->polygon_count] : 0;
-    size_t *first = lh__alloc(&k->c->al, (g->n + 2) * sizeof *first);
-    lh_index *inc = lh__alloc(&k->c->al, (nv + 1) * sizeof *inc);
-    if (!first || !inc) {
-        lh__free(&k->c->al, first), lh__free(&k->c->al, inc);
-        return LH_ERR_NOMEM;
-    }
-    memset(first, 0, (g->n + 2) * sizeof *first);
-    for (size_t f = 0; f < g->facet_count; f++)
-        for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
-            for (size_t i = 0; i < poly_len(g, p); i++) first[poly_v(g, p)[i] + 2]++;
-    for (size_t v = 0; v < g->n; v++) first[v + 2] += first[v + 1];
-    for (size_t f = 0; f < g->facet_count; f++)
-        for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
-            for (size_t i = 0; i < poly_len(g, p); i++) inc[first[poly_v(g, p)[i] + 1]++] = (lh_index)f;
-    for (size_t s = 0; s < k->c->nf; s++) {
-        k->par[s] = -1;
-        for (int i = 0; i < 3 && k->par[s] < 0; i++) {
-            const lh_index v = k->c->faces[3 * s + i];
-            for (size_t j = (size_t)v < g->n ? first[v] : 0;
-                 (size_t)v < g->n && j < first[v + 1] && k->par[s] < 0; j++)
-                if (facet_has(k, (size_t)inc[j], s)) k->par[s] = inc[j];
-        }
-        for (size_t f = 0; k->par[s] < 0 && f < g->facet_count; f++)
-            if (facet_has(k, f, s)) k->par[s] = (lh_index)f;
-    }
-    lh__free(&k->c->al, first);
-    lh__free(&k->c->al, inc);
-    return LH_OK;
-}
-
-static void group_by_facet(pchk *k)
-{
-    const size_t nfac = k->g->facet_count;
-    memset(k->ffirst, 0, (nfac + 2) * sizeof *k->ffirst);
-    for (size_t s = 0; s < k->c->nf; s++)
-        if (k->par[s] >= 0) k->ffirst[k->par[s] + 2]++;
-    for (size_t f = 0; f < nfac; f++) k->ffirst[f + 2] += k->ffirst[f + 1];
-    for (size_t s = 0; s < k->c->nf; s++)
-        if (k->par[s] >= 0) k->flist[k->ffirst[k->par[s] + 1]++] = (lh_index)s;
-}
-
-static lh_status not_covered(pchk *k, size_t f, const char *why, size_t s)
-{
-    const lh_index *v = k->c->faces + 3 * s;
-    return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
-                         "facet %zu is not covered: %s (subface %zu (%lld %lld %lld))", f, why,
-                         s, (long long)v[0], (long long)v[1], (long long)v[2]);
-}
-
-/* (a): the subfaces' |area| minus the facet's, exactly; off-plane points. */
-static lh_status facet_area(pchk *k, size_t f)
-{
-    const lh_index *pl = k->plane + 3 * f, *list = k->flist + k->ffirst[f];
-    const size_t cnt = k->ffirst[f + 1] - k->ffirst[f];
-    const int axis = k->axis[f];
-    /* No subface at all: the facet lies outside the mesh (between a hole and the
-       outside, as TetGen's example.poly's windows), which a facet may. */
-    if (cnt == 0) return LH_OK;
-    int rounded = 0; /* a subface has a point off its line or plane up to rounding */
-    for (size_t i = 0; i < cnt; i++) {
-        const size_t s = (size_t)list[i];
-        for (int j = 0; j < 3; j++) rounded |= k->c->off[k->c->faces[3 * s + j]] != 0;
-        for (int j = 0; k->planar[f] && j < 3; j++) {
-            const lh_index v = k->c->faces[3 * s + j];
-            if (orient3i(k, pl[0], pl[1], pl[2], v) == 0) continue;
-            if ((size_t)v < k->g->n) return not_covered(k, f, "an input point off its plane", s);
-            if (!near_plane(lh__tchk_pt(k->c, pl[0]), lh__tchk_pt(k->c, pl[1]),
-                            lh__tchk_pt(k->c, pl[2]), lh__tchk_pt(k->c, v)))
-                return not_covered(k, f, "a Steiner point off its plane beyond rounding", s);
-            mark_off(k, v);
-            rounded = 1;
-        }
-        double q[3][2];
-        face_proj(k, s, axis, q);
-        const double *p[3] = {q[0], q[1], q[2]};
-        if (lh_orient(k->c->pr, 2, p) == 0) return not_covered(k, f, "a subface without area in its plane", s);
-    }
-    if (rounded) return LH_OK; /* (b) only: rounding moved the area */
-    for (size_t i = 0; i < cnt; i++) {
-        double q[3][2];
-        face_proj(k, (size_t)list[i], axis, q);
-        const double *p[3] = {q[0], q[1], q[2]};
-        lh__detsum_add(k->c->pr, k->sum, p, lh_orient(k->c->pr, 2, p) < 0);
-    }
-    const lh_plc *g = k->g;
-    for (size_t pg = (size_t)g->facet_first[f]; pg < (size_t)g->facet_first[f + 1]; pg++) {
-        if (k->eps[pg] == 0) continue;
-        const size_t len = poly_len(g, pg);
-        double q[3][2];
-        const double *p[3] = {q[0], q[1], q[2]};
-        int sign = 0;
-        for (int pass = 0; pass < 3; pass++) {
-            for (size_t i = 1; i + 1 < len; i++) {
-                proj(lh__tchk_pt(k->c, poly_v(g, pg)[0]), axis, q[0]);
-                proj(lh__tchk_pt(k->c, poly_v(g, pg)[i]), axis, q[1]);
-                proj(lh__tchk_pt(k->c, poly_v(g, pg)[i + 1]), axis, q[2]);
-                if (pass < 2) lh__detsum_add(k->c->pr, k->s2, p, pass == 1);
-                else lh__detsum_add(k->c->pr, k->sum, p, k->eps[pg] * sign > 0);
-            }
-            if (pass == 0) sign = lh__detsum_sign(k->s2);
-        }
-    }
-    const int d = lh__detsum_sign(k->sum);
-    if (d != 0)
-        return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
-                             "facet %zu is not covered: its %zu subfaces' area is %s than the "
-                             "facet's", f, cnt, d > 0 ? "larger" : "smaller");
-    return LH_OK;
-}
-
-/* The polygon edges (3 vertices or more) of facet f, sorted, into k->re. */
-static size_t ring_edges(pchk *k, size_t f)
-{
-    const lh_plc *g = k->g;
-    size_t m = 0;
-    for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
-        for (size_t i = 0, len = poly_len(g, p); len >= 3 && i < len; i++) {
-            const lh_index a = poly_v(g, p)[i], b = poly_v(g, p)[(i + 1) % len];
-            k->re[m++] = (prec){a < b ? a : b, a < b ? b : a, 0};
-        }
-    qsort(k->re, m, sizeof *k->re, prec_cmp);
-    return m;
-}
-
-static int same_seg(const pchk *k, lh_index s, lh_index u, lh_index v)
-{
-    const lh_index a = k->seg[2 * s], b = k->seg[2 * s + 1];
-    return (a == u && b == v) || (a == v && b == u);
-}
-
-/* Whether point p lies on polygon edge u v: an endpoint, exactly on the open
- * segment, or a Steiner point that the chain of segment u v passes. */
-static int on_edge(pchk *k, lh_index u, lh_index v, lh_index p)
-{
-    if (p == u || p == v) return 1;
-    const double *pu = lh__tchk_pt(k->c, u), *pv = lh__tchk_pt(k->c, v), *x = lh__tchk_pt(k->c, p);
-    int axis = 0;
-    for (int i = 1; i < 3; i++)
-        if (fabs(pv[i] - pu[i]) > fabs(pv[axis] - pu[axis])) axis = i;
-    if (strictly_between(pu[axis], x[axis], pv[axis]) && collinear(k, pu, pv, x)) return 1;
-    return (size_t)p >= k->g->n && k->pt_seg[p] >= 0 && same_seg(k, k->pt_seg[p], u, v);
-}
-
-/* Whether subsegment a b lies on a polygon edge of the facet (k->re, nre sorted):
- * first the segment whose chain took it, then every polygon edge. */
-static int on_polygon_edge(pchk *k, size_t nre, lh_index a, lh_index b)
-{
-    const hrec key = {a, b, 0};
-    const hrec *h = bsearch(&key, k->h, 2 * k->c->ne, sizeof *k->h, hrec_cmp);
-    if (!h) return 0;
-    const lh_index s = k->seg_of[h->sub];
-    if (s >= 0) {
-        const lh_index u = k->seg[2 * s], v = k->seg[2 * s + 1];
-        const prec rk = {u < v ? u : v, u < v ? v : u, 0};
-        if (bsearch(&rk, k->re, nre, sizeof *k->re, prec_cmp)) return 1;
-    }
-    for (size_t i = 0; i < nre; i++)
-        if (on_edge(k, k->re[i].a, k->re[i].b, a) && on_edge(k, k->re[i].a, k->re[i].b, b))
-            return 1;
-    return 0;
-}
-
-/* (b): every edge in one subface of f lies on a polygon edge of f. */
-static lh_status facet_edges(pchk *k, size_t f)
-{
-    const lh_index *list = k->flist + k->ffirst[f];
-    const size_t cnt = k->ffirst[f + 1] - k->ffirst[f], nre = ring_edges(k, f);
-    for (size_t i = 0; i < cnt; i++)
-        for (int j = 0; j < 3; j++) {
-            const lh_index *v = k->c->faces + 3 * (size_t)list[i];
-            const lh_index a = v[j], b = v[(j + 1) % 3];
-            k->pe[3 * i + j] = (prec){a < b ? a : b, a < b ? b : a, list[i]};
-        }
-    qsort(k->pe, 3 * cnt, sizeof *k->pe, prec_cmp);
-    for (size_t i = 0; i < 3 * cnt;) {
-        size_t j = i + 1;
-        while (j < 3 * cnt && k->pe[j].a == k->pe[i].a && k->pe[j].b == k->pe[i].b) j++;
-        const prec *e = k->pe + i;
-        if (j - i > 2)
-            return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
-                                 "facet %zu: edge (%lld %lld) is in %zu of its subfaces", f,
-                                 (long long)e->a, (long long)e->b, j - i);
-        if (j - i == 1 && !on_polygon_edge(k, nre, e->a, e->b))
-            return not_covered(k, f, "an edge on the subfaces' border lies on no polygon edge "
-                                     "of the facet", (size_t)e->pos);
-        i = j;
-    }
-    return LH_OK;
-}
-
-static lh_status check_facets(pchk *k)
-{
-    prepare_facets(k);
-    lh_status st = LH_OK;
-    if (k->c->parents) memcpy(k->par, k->c->parents, k->c->nf * sizeof *k->par);
-    else st = assign_parents(k);
-    if (st) return st;
-    group_by_facet(k);
-    for (size_t f = 0; f < k->g->facet_count; f++) {
-        if (k->plane[3 * f] < 0) {
-            if (k->ffirst[f + 1] > k->ffirst[f])
-                return not_covered(k, f, "the facet has no area but has subfaces",
-                                   (size_t)k->flist[k->ffirst[f]]);
-            continue;
-        }
-        if ((st = facet_area(k, f)) || (st = facet_edges(k, f))) return st;
     }
     return LH_OK;
 }
@@ -815,7 +546,7 @@ static lh_status check_merged(lh__tchk *c)
     if (st == LH_OK) list_segments(&k, tmp);
     lh__free(al, tmp);
     if (st == LH_OK) st = check_segments(&k);
-    if (st == LH_OK) st = check_facets(&k);
+    if (st == LH_OK) st = lh__pchk_check_facets(&k);
     pchk_free(&k);
     return st;
 }
