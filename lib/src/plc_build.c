@@ -156,32 +156,33 @@ lh_status lh__plc_segment(lh__plc_build *b, lh_index p, lh_index q, lh_index mar
     return LH_OK;
 }
 
+/* A seed point (a hole's x y z, a region's x y z attribute max_volume: width values)
+ * appended to *vals / *lines, *count of them. */
+static lh_status seed_add(lh__plc_build *b, double **vals, size_t **lines, size_t *count,
+                          size_t *capv, const double *v, int width, size_t line)
+{
+    size_t n = *count, cap = *capv, c;
+    lh_status st;
+    c = cap; if ((st = GROW(b, *vals, c, n + 1, (size_t)width * sizeof(double)))) return st;
+    c = cap; if ((st = GROW(b, *lines, c, n + 1, sizeof(size_t)))) return st;
+    *capv = c;
+    memcpy(*vals + (size_t)width * n, v, (size_t)width * sizeof(double));
+    (*lines)[n] = line;
+    *count = n + 1;
+    return LH_OK;
+}
+
 lh_status lh__plc_hole(lh__plc_build *b, const double xyz[3], size_t line)
 {
     lh_plc *g = b->g;
-    size_t h = g->hole_count, cap = b->cap_holes, c;
-    lh_status st;
-    c = cap; if ((st = GROW(b, g->holes, c, h + 1, 3 * sizeof(double)))) return st;
-    c = cap; if ((st = GROW(b, g->hole_line, c, h + 1, sizeof(size_t)))) return st;
-    b->cap_holes = c;
-    memcpy(g->holes + 3 * h, xyz, 3 * sizeof(double));
-    g->hole_line[h] = line;
-    g->hole_count = h + 1;
-    return LH_OK;
+    return seed_add(b, &g->holes, &g->hole_line, &g->hole_count, &b->cap_holes, xyz, 3, line);
 }
 
 lh_status lh__plc_region(lh__plc_build *b, const double r[5], size_t line)
 {
     lh_plc *g = b->g;
-    size_t k = g->region_count, cap = b->cap_regions, c;
-    lh_status st;
-    c = cap; if ((st = GROW(b, g->regions, c, k + 1, 5 * sizeof(double)))) return st;
-    c = cap; if ((st = GROW(b, g->region_line, c, k + 1, sizeof(size_t)))) return st;
-    b->cap_regions = c;
-    memcpy(g->regions + 5 * k, r, 5 * sizeof(double));
-    g->region_line[k] = line;
-    g->region_count = k + 1;
-    return LH_OK;
+    return seed_add(b, &g->regions, &g->region_line, &g->region_count, &b->cap_regions, r, 5,
+                    line);
 }
 
 /* One lh_index array of a single element, for an offsets array with no item yet. */
