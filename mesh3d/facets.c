@@ -44,6 +44,7 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <math.h>
 #include <string.h>
 
 /* Scratch reused from facet to facet; every array sized for the largest facet so far. */
@@ -225,15 +226,26 @@ static int collinear3(lh_pred *pred, const double *a, const double *b, const dou
     return 1;
 }
 
-/* Newell's normal of the polygon ring (m vertices), relative to its first vertex. */
+/* Newell's normal of the polygon ring (m vertices), relative to its first vertex, the
+ * differences halved and scaled by a power of two to the unit range first: no
+ * product over- or underflows at any scale, and a scaled input gives the same. */
 static void newell(const lh_plc *g, const lh_index *ring, size_t m, double nrm[3])
 {
     const double *o = pt(g, ring[0]);
+    double big = 0;
+    for (size_t i = 1; i < m; i++)
+        for (int k = 0; k < 3; k++) {
+            double d = pt(g, ring[i])[k] / 2 - o[k] / 2;
+            big = d > big ? d : -d > big ? -d : big;
+        }
+    int e = 0;
+    frexp(big, &e);
     nrm[0] = nrm[1] = nrm[2] = 0;
     for (size_t i = 1; i + 1 < m; i++) {
         const double *p = pt(g, ring[i]), *q = pt(g, ring[i + 1]);
-        const double u[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
-        const double v[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
+        double u[3], v[3];
+        for (int k = 0; k < 3; k++)
+            u[k] = ldexp(p[k] / 2 - o[k] / 2, -e), v[k] = ldexp(q[k] / 2 - o[k] / 2, -e);
         nrm[0] += u[1] * v[2] - u[2] * v[1];
         nrm[1] += u[2] * v[0] - u[0] * v[2];
         nrm[2] += u[0] * v[1] - u[1] * v[0];

@@ -53,6 +53,8 @@ typedef struct t3_ctx {
     size_t n_input;         /* points of the PLC                                      */
     size_t n, n_cap;        /* points so far: the PLC's, then the Steiner points      */
     double *xyz;            /* 3n                                                      */
+    int unit_exp;           /* 2^unit_exp bounds every input coordinate (lengths are
+                               measured in that unit)                                 */
     const lh_index *dup;    /* lh_tri_duplicate_of (valid until the next insertion)   */
     /* constraints */
     size_t tri_count;

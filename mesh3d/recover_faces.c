@@ -16,7 +16,7 @@
  */
 #include "recover.h"
 
-#include <stdio.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -158,8 +158,8 @@ static int face_in_patch(t3_ctx *c, size_t k, const lh_index *f)
     if (along_chain(c, f, 3)) return 0;
     double g[3];
     for (int a = 0; a < 3; a++)
-        g[a] = (c->xyz[3 * (size_t)f[0] + a] + c->xyz[3 * (size_t)f[1] + a] +
-                c->xyz[3 * (size_t)f[2] + a]) / 3;
+        g[a] = c->xyz[3 * (size_t)f[0] + a] / 3 + c->xyz[3 * (size_t)f[1] + a] / 3 +
+               c->xyz[3 * (size_t)f[2] + a] / 3; /* no overflow */
     for (lh_index a = c->patch_first[k]; a < c->patch_first[k + 1]; a++)
         if (in_triangle(c, c->tri + 3 * (size_t)c->patch_tri[a], g, abs(c->patch_axis[k]) - 1))
             return 1;
@@ -293,11 +293,14 @@ static int is_need(const patch_scan *ps, const lh_index *e)
     return bsearch(e, ps->needs, ps->nn, sizeof(need), cmp_need) != NULL;
 }
 
+/* |p - q|^2 times 2^(-2 c->unit_exp): the differences halved (no overflow) and scaled
+ * to the points' range (no square over- or underflows), exactly so for a model
+ * scaled by a power of two: lengths compare the same at every scale. */
 static double len2(const t3_ctx *c, lh_index p, lh_index q)
 {
     double s = 0;
     for (int k = 0; k < 3; k++) {
-        double d = c->xyz[3 * (size_t)p + k] - c->xyz[3 * (size_t)q + k];
+        double d = ldexp(c->xyz[3 * (size_t)p + k] / 2 - c->xyz[3 * (size_t)q + k] / 2, -c->unit_exp);
         s += d * d;
     }
     return s;
@@ -354,8 +357,8 @@ static lh_status split(t3_ctx *c, size_t k, const patch_scan *ps, const verdict 
         }
         double x[3];
         for (int a = 0; a < 3; a++)
-            x[a] = (c->xyz[3 * (size_t)f[0] + a] + c->xyz[3 * (size_t)f[1] + a] +
-                    c->xyz[3 * (size_t)f[2] + a]) / 3;
+            x[a] = c->xyz[3 * (size_t)f[0] + a] / 3 + c->xyz[3 * (size_t)f[1] + a] / 3 +
+                   c->xyz[3 * (size_t)f[2] + a] / 3; /* no overflow */
         return lh__t3_queue(c, -1 - (lh_index)k, 0, -1, x);
     }
     if (v->any_need) return lh__t3_split(c, v->any_need->seg, (size_t)v->any_need->i);
@@ -391,11 +394,6 @@ lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int want_split, int *ok)
     if (st == LH_OK) {
         judge(c, &ps, &v);
         *ok = v.ok;
-        if (getenv("DBGP") && !v.ok && !want_split) {
-            fprintf(stderr, "patch %zu facet %ld: %zu points, %zu faces short %d frontier %ld-%ld\n", k, (long)c->patch_facet[k], ps.nv, ps.nf, v.short_need != NULL, (long)v.frontier[0], (long)v.frontier[1]);
-            for (size_t i = 0; i < ps.nn; i++) if (uses(c, &ps, ps.needs[i].p, ps.needs[i].q) != (size_t)ps.needs[i].mult) fprintf(stderr, " need %ld-%ld x%ld uses %zu\n", (long)ps.needs[i].p, (long)ps.needs[i].q, (long)ps.needs[i].mult, uses(c, &ps, ps.needs[i].p, ps.needs[i].q));
-            for (size_t i = 0, run; i < ps.ne; i += run) { for (run = 1; i + run < ps.ne && !cmp_pair(c->ebuf + 2 * i, c->ebuf + 2 * (i + run));) run++; if (run != 2 && !is_need(&ps, c->ebuf + 2 * i)) fprintf(stderr, " edge %ld-%ld run %zu\n", (long)c->ebuf[2*i], (long)c->ebuf[2*i+1], run); }
-        }
         if (!v.ok && want_split) st = split(c, k, &ps, &v);
     }
     release(c, &ps);

@@ -258,7 +258,8 @@ static signed char drop_axis(const t3_ctx *c, const lh_index *t)
     const double *a = c->xyz + 3 * (size_t)t[0], *b = c->xyz + 3 * (size_t)t[1],
                  *d = c->xyz + 3 * (size_t)t[2];
     double u[3], v[3], nrm[3];
-    for (int k = 0; k < 3; k++) u[k] = b[k] - a[k], v[k] = d[k] - a[k];
+    for (int k = 0; k < 3; k++) /* halved and scaled: no overflow at any scale */
+        u[k] = ldexp(b[k] / 2 - a[k] / 2, -c->unit_exp), v[k] = ldexp(d[k] / 2 - a[k] / 2, -c->unit_exp);
     nrm[0] = u[1] * v[2] - u[2] * v[1];
     nrm[1] = u[2] * v[0] - u[0] * v[2];
     nrm[2] = u[0] * v[1] - u[1] * v[0];

@@ -42,15 +42,25 @@ static int on_open_segment(const t3_ctx *c, lh_index v, lh_index p, lh_index q)
     return 0;
 }
 
+/* Half the differences q - p (no overflow at any finite p, q) scaled so that the
+ * largest is 1 (no square over- or underflows): into u; returns the factor. */
+static double half_diff_unit(const double *p, const double *q, double u[3])
+{
+    double m = 0;
+    for (int k = 0; k < 3; k++) u[k] = q[k] / 2 - p[k] / 2, m = fmax(m, fabs(u[k]));
+    for (int k = 0; k < 3; k++) u[k] = m > 0 ? u[k] / m : 0;
+    return m;
+}
+
+/* The parameter of point v's projection on segment s (for ordering its chain). */
 static double seg_param(const t3_ctx *c, lh_index s, lh_index v)
 {
-    const double *a = pt(c, c->seg[s].a), *b = pt(c, c->seg[s].b), *x = pt(c, v);
+    double u[3], w[3];
+    double mu = half_diff_unit(pt(c, c->seg[s].a), pt(c, c->seg[s].b), u);
+    double mw = half_diff_unit(pt(c, c->seg[s].a), pt(c, v), w);
     double num = 0, den = 0;
-    for (int k = 0; k < 3; k++) {
-        num += (x[k] - a[k]) * (b[k] - a[k]);
-        den += (b[k] - a[k]) * (b[k] - a[k]);
-    }
-    return num / den;
+    for (int k = 0; k < 3; k++) num += w[k] * u[k], den += u[k] * u[k];
+    return mu > 0 ? num / den * (mw / mu) : 0;
 }
 
 lh_status lh__t3_queue(t3_ctx *c, lh_index s, double t, lh_index p, const double x[3])
@@ -100,11 +110,13 @@ static double split_param(const t3_ctx *c, lh_index s, lh_index p, lh_index q, d
 {
     int ip = (size_t)p < c->n_input, iq = (size_t)q < c->n_input;
     if (ip == iq) return 0.5 * (tp + tq);
-    const double *a = pt(c, c->seg[s].a), *b = pt(c, c->seg[s].b);
-    double len2 = 0;
-    for (int k = 0; k < 3; k++) len2 += (b[k] - a[k]) * (b[k] - a[k]);
-    double ell = fabs(tq - tp) * sqrt(len2);               /* the subsegment's length */
-    double d = exp2(floor(log2(2.0 * ell / 3.0)));         /* in [ell/3, 2 ell/3]     */
+    double u[3], half = half_diff_unit(pt(c, c->seg[s].a), pt(c, c->seg[s].b), u);
+    /* the subsegment's length over 2^e, e chosen so that no step over- or
+       underflows; a power-of-two distance d from the vertex in [ell/3, 2 ell/3] */
+    int e;
+    frexp(half, &e);
+    double ell = fabs(tq - tp) * ldexp(half, 1 - e) * sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    double d = exp2(floor(log2(2.0 * ell / 3.0)));
     double frac = ell > 0 ? d / ell : 0.5;
     return ip ? tp + (tq - tp) * frac : tq - (tq - tp) * frac;
 }
@@ -120,7 +132,10 @@ lh_status lh__t3_split(t3_ctx *c, lh_index s, size_t i)
     double t = split_param(c, s, p, q, tp, tq);
     const double *a = pt(c, c->seg[s].a), *b = pt(c, c->seg[s].b);
     double x[3];
-    for (int j = 0; j < 3; j++) x[j] = a[j] + t * (b[j] - a[j]);
+    for (int j = 0; j < 3; j++) { /* a + t (b - a): exact where a and b agree */
+        double dj = b[j] - a[j];
+        x[j] = isfinite(dj) ? a[j] + t * dj : (1 - t) * a[j] + t * b[j];
+    }
     int same_p = 1, same_q = 1, outside = 0;
     for (int j = 0; j < 3; j++) {
         double u = pt(c, p)[j], w = pt(c, q)[j];

@@ -7,6 +7,7 @@
 #include "carve.h"
 #include "facets.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -43,6 +44,9 @@ static lh_status start(t3_ctx *c)
     c->xyz = lh__alloc(&c->al, 3 * c->n_cap * sizeof(double));
     if (!c->xyz) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     memcpy(c->xyz, g->xyz, 3 * g->n * sizeof(double));
+    double big = 0;
+    for (size_t i = 0; i < 3 * g->n; i++) big = fmax(big, fabs(g->xyz[i]));
+    frexp(big, &c->unit_exp);
     return LH_OK;
 }
 

@@ -363,8 +363,8 @@ LH_TEST(quality_figures)
     lh_plc_free(&g);
 }
 
-/* Scaled by 2^200 or 2^-200 (exact), a model meshes to the scaled mesh: the same
- * tets as sets, every coordinate times the factor. */
+/* Scaled by 2^-900, 2^-200, 2^200 or 2^900 (exact), a model meshes to the scaled
+ * mesh: the same tets as sets, every coordinate times the factor. */
 LH_TEST(scale_does_not_matter)
 {
     static const char *const files[] = {"mesh3d/u.off", "mesh3d/schonhardt.off", "mesh3d/mpi.off"};
@@ -373,7 +373,7 @@ LH_TEST(scale_does_not_matter)
         LH_ASSERT_TRUE(read_plc(files[i], &g));
         lh_tetmesh *a = NULL;
         LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &a, NULL), LH_OK);
-        for (int e = -200; a && e <= 200; e += 400) {
+        for (int e = -900; a && e <= 900; e += (e == -900 || e == 200) ? 700 : 400) {
             for (size_t j = 0; j < 3 * g.n; j++) g.xyz[j] = ldexp(g.xyz[j], e);
             lh_tetmesh *b = NULL;
             LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &b, NULL), LH_OK);
