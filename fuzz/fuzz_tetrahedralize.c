@@ -122,8 +122,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             lh_tetmesh_point_count(m), lh_tetmesh_points(m), lh_tetmesh_tet_count(m),
             lh_tetmesh_tets(m), lh_tetmesh_face_count(m), lh_tetmesh_faces(m),
             lh_tetmesh_face_parents(m), lh_tetmesh_edge_count(m), lh_tetmesh_edges(m),
-            in.opt.convex_hull || in.g.facet_count == 0,
-            pairs || in.g.hole_count ? NULL : &in.g, &off, NULL, &cerr);
+            in.opt.convex_hull || in.g.facet_count == 0, pairs || in.g.hole_count ? NULL : &in.g,
+            &off, NULL, &cerr);
         if (ck != LH_OK) {
             fprintf(stderr, "fuzz_tetrahedralize: the mesh fails its check: %s\n", cerr.message);
             abort();

@@ -1,8 +1,9 @@
 /*
  * carve.c — the domain: the recovered facet triangles' faces are walls; tetrahedra
  * reachable from the convex hull without crossing a wall are outside (unless
- * convex_hull, or the PLC has no facet), those reachable from a hole point are holes, and each region point
- * labels the tetrahedra it reaches (flood fill, as TetGen; Si 2015, sec. 4.4).
+ * convex_hull, or the PLC has no facet), those reachable from a hole point are
+ * holes, and each region point labels the tetrahedra it reaches (flood fill, as
+ * TetGen; Si 2015, sec. 4.4).
  */
 #include "carve.h"
 
@@ -30,7 +31,8 @@ lh_status lh__t3_walls(t3_ctx *c, t3_domain *d)
         if (st == LH_OK && w + nf > cap) {
             size_t nc = 2 * (w + nf) + 64;
             lh_index *x = lh__alloc(&c->al, 4 * nc * sizeof(lh_index));
-            if (!x) st = lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+            if (!x)
+                st = lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
             else {
                 if (w) memcpy(x, walls, 4 * w * sizeof(lh_index));
                 lh__free(&c->al, walls);
@@ -63,16 +65,16 @@ lh_index lh__t3_wall_of(const t3_ctx *c, const t3_domain *d, size_t t, int j)
     lh_index key[4], w = 0;
     for (int k = 0; k < 4; k++)
         if (k != j) key[w++] = s[k];
-    for (int a = 0; a < 2; a++)
-        for (int b = 0; b < 2 - a; b++)
-            if (key[b] > key[b + 1]) { lh_index x = key[b]; key[b] = key[b + 1]; key[b + 1] = x; }
+    lh__t3_sort3(key);
     size_t lo = 0, hi = d->wall_count;
     while (lo < hi) {
         size_t mid = (lo + hi) / 2;
         int r = cmp_wall(d->walls + 4 * mid, key);
         if (r == 0) return d->walls[4 * mid + 3];
-        if (r < 0) lo = mid + 1;
-        else hi = mid;
+        if (r < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
     }
     return -1;
 }
@@ -124,8 +126,9 @@ static lh_status seed_fail(t3_ctx *c, const char *what, size_t i, const size_t *
                            lh_index facet)
 {
     size_t line = lines ? lines[i] : 0;
-    return lh__t3_say(c, LH_ERR_DEGENERATE, line, "%s %zu lies on facet %ld: which side it seeds is undefined",
-                      what, i + (size_t)c->g->first_index, (long)facet + c->g->first_index);
+    return lh__t3_say(c, LH_ERR_DEGENERATE, line,
+                      "%s %zu lies on facet %ld: which side it seeds is undefined", what,
+                      i + (size_t)c->g->first_index, (long)facet + c->g->first_index);
 }
 
 lh_status lh__t3_carve(t3_ctx *c, t3_domain *d)
@@ -140,19 +143,24 @@ lh_status lh__t3_carve(t3_ctx *c, t3_domain *d)
     for (size_t h = 0; h < g->hole_count; h++) {
         lh_index wall, t = locate(c, d, g->holes + 3 * h, &wall);
         if (wall >= 0) return seed_fail(c, "hole", h, g->hole_line, wall);
-        if (t < 0) d->holes_ignored++;
-        else flood(c, d, t, T3_OUT);
+        if (t < 0)
+            d->holes_ignored++;
+        else
+            flood(c, d, t, T3_OUT);
     }
     /* without facets nothing bounds a domain: the convex hull is it (TetGen without -p) */
     int hull = c->opt->convex_hull || g->facet_count == 0;
     for (size_t t = 0; !hull && t < count; t++)
         for (int j = 0; j < 4; j++)
-            if (nbr[4 * t + j] < 0 && lh__t3_wall_of(c, d, t, j) < 0) flood(c, d, (lh_index)t, T3_OUT);
+            if (nbr[4 * t + j] < 0 && lh__t3_wall_of(c, d, t, j) < 0)
+                flood(c, d, (lh_index)t, T3_OUT);
     for (size_t r = 0; r < g->region_count; r++) {
         lh_index wall, t = locate(c, d, g->regions + 5 * r, &wall);
         if (wall >= 0) return seed_fail(c, "region", r, g->region_line, wall);
-        if (t < 0 || d->label[t] != T3_FREE) d->regions_ignored++;
-        else flood(c, d, t, (lh_index)r);
+        if (t < 0 || d->label[t] != T3_FREE)
+            d->regions_ignored++;
+        else
+            flood(c, d, t, (lh_index)r);
     }
     for (size_t t = 0; t < count; t++) d->kept += d->label[t] != T3_OUT;
     if (d->kept == 0)

@@ -8,11 +8,11 @@
 #define T3_OUT ((lh_index)-2)  /* outside the domain or in a hole                    */
 
 typedef struct t3_domain {
-    lh_index *walls;      /* 4 per wall: a sorted face and its facet; sorted          */
+    lh_index *walls; /* 4 per wall: a sorted face and its facet; sorted          */
     size_t wall_count;
-    lh_index *label;      /* per tet: T3_OUT, T3_FREE or the region's index           */
-    lh_index *stack;      /* flood scratch                                             */
-    size_t kept;          /* tets not T3_OUT                                           */
+    lh_index *label; /* per tet: T3_OUT, T3_FREE or the region's index           */
+    lh_index *stack; /* flood scratch                                             */
+    size_t kept;     /* tets not T3_OUT                                           */
     size_t holes_ignored, regions_ignored;
 } t3_domain;
 

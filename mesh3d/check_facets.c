@@ -14,7 +14,8 @@
 
 static void face_proj(pchk *k, size_t s, int axis, double (*q)[2])
 {
-    for (int i = 0; i < 3; i++) lh__pchk_proj(lh__tchk_pt(k->c, k->c->faces[3 * s + i]), axis, q[i]);
+    for (int i = 0; i < 3; i++)
+        lh__pchk_proj(lh__tchk_pt(k->c, k->c->faces[3 * s + i]), axis, q[i]);
 }
 
 /* Whether subface s lies in facet f: its points in f's plane, they and its
@@ -46,11 +47,13 @@ static lh_status assign_parents(pchk *k)
     memset(first, 0, (g->n + 2) * sizeof *first);
     for (size_t f = 0; f < g->facet_count; f++)
         for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
-            for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++) first[lh__pchk_poly_v(g, p)[i] + 2]++;
+            for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++)
+                first[lh__pchk_poly_v(g, p)[i] + 2]++;
     for (size_t v = 0; v < g->n; v++) first[v + 2] += first[v + 1];
     for (size_t f = 0; f < g->facet_count; f++)
         for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++)
-            for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++) inc[first[lh__pchk_poly_v(g, p)[i] + 1]++] = (lh_index)f;
+            for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++)
+                inc[first[lh__pchk_poly_v(g, p)[i] + 1]++] = (lh_index)f;
     for (size_t s = 0; s < k->c->nf; s++) {
         k->par[s] = -1;
         for (int i = 0; i < 3 && k->par[s] < 0; i++) {
@@ -82,8 +85,8 @@ static lh_status not_covered(pchk *k, size_t f, const char *why, size_t s)
 {
     const lh_index *v = k->c->faces + 3 * s;
     return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
-                         "facet %zu is not covered: %s (subface %zu (%lld %lld %lld))", f, why,
-                         s, (long long)v[0], (long long)v[1], (long long)v[2]);
+                         "facet %zu is not covered: %s (subface %zu (%lld %lld %lld))", f, why, s,
+                         (long long)v[0], (long long)v[1], (long long)v[2]);
 }
 
 /* (a): the subfaces' |area| minus the facet's, exactly; off-plane points. */
@@ -104,7 +107,7 @@ static lh_status facet_area(pchk *k, size_t f)
             if (lh__pchk_orient3i(k, pl[0], pl[1], pl[2], v) == 0) continue;
             if ((size_t)v < k->g->n) return not_covered(k, f, "an input point off its plane", s);
             if (!lh__pchk_near_plane(lh__tchk_pt(k->c, pl[0]), lh__tchk_pt(k->c, pl[1]),
-                            lh__tchk_pt(k->c, pl[2]), lh__tchk_pt(k->c, v)))
+                                     lh__tchk_pt(k->c, pl[2]), lh__tchk_pt(k->c, v)))
                 return not_covered(k, f, "a Steiner point off its plane beyond rounding", s);
             lh__pchk_mark_off(k, v);
             rounded = 1;
@@ -112,7 +115,8 @@ static lh_status facet_area(pchk *k, size_t f)
         double q[3][2];
         face_proj(k, s, axis, q);
         const double *p[3] = {q[0], q[1], q[2]};
-        if (lh_orient(k->c->pr, 2, p) == 0) return not_covered(k, f, "a subface without area in its plane", s);
+        if (lh_orient(k->c->pr, 2, p) == 0)
+            return not_covered(k, f, "a subface without area in its plane", s);
     }
     if (rounded) return LH_OK; /* (b) only: rounding moved the area */
     for (size_t i = 0; i < cnt; i++) {
@@ -133,8 +137,10 @@ static lh_status facet_area(pchk *k, size_t f)
                 lh__pchk_proj(lh__tchk_pt(k->c, lh__pchk_poly_v(g, pg)[0]), axis, q[0]);
                 lh__pchk_proj(lh__tchk_pt(k->c, lh__pchk_poly_v(g, pg)[i]), axis, q[1]);
                 lh__pchk_proj(lh__tchk_pt(k->c, lh__pchk_poly_v(g, pg)[i + 1]), axis, q[2]);
-                if (pass < 2) lh__detsum_add(k->c->pr, k->s2, p, pass == 1);
-                else lh__detsum_add(k->c->pr, k->sum, p, k->eps[pg] * sign > 0);
+                if (pass < 2)
+                    lh__detsum_add(k->c->pr, k->s2, p, pass == 1);
+                else
+                    lh__detsum_add(k->c->pr, k->sum, p, k->eps[pg] * sign > 0);
             }
             if (pass == 0) sign = lh__detsum_sign(k->s2);
         }
@@ -143,7 +149,8 @@ static lh_status facet_area(pchk *k, size_t f)
     if (d != 0)
         return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
                              "facet %zu is not covered: its %zu subfaces' area is %s than the "
-                             "facet's", f, cnt, d > 0 ? "larger" : "smaller");
+                             "facet's",
+                             f, cnt, d > 0 ? "larger" : "smaller");
     return LH_OK;
 }
 
@@ -176,7 +183,8 @@ static int on_edge(pchk *k, lh_index u, lh_index v, lh_index p)
     int axis = 0;
     for (int i = 1; i < 3; i++)
         if (fabs(pv[i] - pu[i]) > fabs(pv[axis] - pu[axis])) axis = i;
-    if (lh__pchk_strictly_between(pu[axis], x[axis], pv[axis]) && lh__pchk_collinear(k, pu, pv, x)) return 1;
+    if (lh__pchk_strictly_between(pu[axis], x[axis], pv[axis]) && lh__pchk_collinear(k, pu, pv, x))
+        return 1;
     return (size_t)p >= k->g->n && k->pt_seg[p] >= 0 && same_seg(k, k->pt_seg[p], u, v);
 }
 
@@ -220,8 +228,10 @@ static lh_status facet_edges(pchk *k, size_t f)
                                  "facet %zu: edge (%lld %lld) is in %zu of its subfaces", f,
                                  (long long)e->a, (long long)e->b, j - i);
         if (j - i == 1 && !on_polygon_edge(k, nre, e->a, e->b))
-            return not_covered(k, f, "an edge on the subfaces' border lies on no polygon edge "
-                                     "of the facet", (size_t)e->pos);
+            return not_covered(k, f,
+                               "an edge on the subfaces' border lies on no polygon edge "
+                               "of the facet",
+                               (size_t)e->pos);
         i = j;
     }
     return LH_OK;
@@ -231,8 +241,10 @@ lh_status lh__pchk_check_facets(pchk *k)
 {
     lh__pchk_prepare_facets(k);
     lh_status st = LH_OK;
-    if (k->c->parents) memcpy(k->par, k->c->parents, k->c->nf * sizeof *k->par);
-    else st = assign_parents(k);
+    if (k->c->parents)
+        memcpy(k->par, k->c->parents, k->c->nf * sizeof *k->par);
+    else
+        st = assign_parents(k);
     if (st) return st;
     group_by_facet(k);
     for (size_t f = 0; f < k->g->facet_count; f++) {
@@ -246,4 +258,3 @@ lh_status lh__pchk_check_facets(pchk *k)
     }
     return LH_OK;
 }
-

@@ -33,8 +33,7 @@
 
 static lh_status bad_plc(lh__tchk *c, const char *what, size_t i)
 {
-    return lh__error_say(c->err, LH_ERR_INVALID_ARGUMENT, "the PLC is malformed: %s %zu", what,
-                         i);
+    return lh__error_say(c->err, LH_ERR_INVALID_ARGUMENT, "the PLC is malformed: %s %zu", what, i);
 }
 
 static int offsets_ok(const lh_index *first, size_t count, size_t total)
@@ -72,7 +71,8 @@ static lh_status check_g(lh__tchk *c)
          (g->facet_hole_first[g->facet_count] && !g->facet_holes)))
         return bad_plc(c, "facet hole offsets, facets:", g->facet_count);
     for (size_t i = 0; g->facet_count && g->facet_hole_first &&
-                       i < 3 * (size_t)g->facet_hole_first[g->facet_count]; i++)
+                       i < 3 * (size_t)g->facet_hole_first[g->facet_count];
+         i++)
         if (g->facet_holes[i] - g->facet_holes[i] != 0)
             return bad_plc(c, "facet hole point not finite:", i / 3);
     for (size_t s = 0; c->parents && s < c->nf; s++)
@@ -180,8 +180,10 @@ static void facet_plane(pchk *k, size_t f)
         for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++) {
             const lh_index v = lh__pchk_poly_v(g, p)[i];
             const double *x = lh__tchk_pt(k->c, v);
-            if (pl[0] < 0) pl[0] = v;
-            else if (pl[1] < 0 && memcmp(x, lh__tchk_pt(k->c, pl[0]), 3 * sizeof *x)) pl[1] = v;
+            if (pl[0] < 0)
+                pl[0] = v;
+            else if (pl[1] < 0 && memcmp(x, lh__tchk_pt(k->c, pl[0]), 3 * sizeof *x))
+                pl[1] = v;
             else if (pl[1] >= 0 && pl[2] < 0 &&
                      !lh__pchk_collinear(k, lh__tchk_pt(k->c, pl[0]), lh__tchk_pt(k->c, pl[1]), x))
                 pl[2] = v;
@@ -221,7 +223,10 @@ static void facet_roles(pchk *k, size_t f)
     for (size_t p = p0; p < p1; p++) {
         k->eps[p] = 0;
         if (lh__pchk_poly_len(g, p) < 3) continue;
-        if (outer == p1) { outer = p, k->eps[p] = 1; continue; }
+        if (outer == p1) {
+            outer = p, k->eps[p] = 1;
+            continue;
+        }
         if (k->plane[3 * f] < 0) continue;
         for (size_t h = g->facet_hole_first ? (size_t)g->facet_hole_first[f] : 0;
              g->facet_hole_first && h < (size_t)g->facet_hole_first[f + 1]; h++) {
@@ -245,9 +250,11 @@ void lh__pchk_prepare_facets(pchk *k)
         lh_index *pl = k->plane + 3 * f;
         k->planar[f] = pl[2] >= 0;
         k->axis[f] = pl[2] >= 0 ? facet_axis(k, pl) : 0;
-        for (size_t p = (size_t)g->facet_first[f]; k->planar[f] && p < (size_t)g->facet_first[f + 1]; p++)
+        for (size_t p = (size_t)g->facet_first[f];
+             k->planar[f] && p < (size_t)g->facet_first[f + 1]; p++)
             for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++)
-                if (lh__pchk_orient3i(k, pl[0], pl[1], pl[2], lh__pchk_poly_v(g, p)[i]) != 0) k->planar[f] = 0;
+                if (lh__pchk_orient3i(k, pl[0], pl[1], pl[2], lh__pchk_poly_v(g, p)[i]) != 0)
+                    k->planar[f] = 0;
         if (pl[2] < 0) pl[0] = -1;
         facet_roles(k, f);
     }
@@ -324,7 +331,10 @@ static void cross(const double *a, const double *b, const double *c, double *out
     out[2] = u[0] * w[1] - u[1] * w[0];
 }
 
-static double norm(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+static double norm(const double *v)
+{
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
 
 /* Whether x is within rounding's reach of the line a b. */
 static int near_line(const double *a, const double *b, const double *x)
@@ -366,7 +376,10 @@ static const hrec *next_on(pchk *k, const hrec *h, size_t nh, lh_index a, lh_ind
     const double *pa = lh__tchk_pt(k->c, a), *pb = lh__tchk_pt(k->c, b);
     const double cur = lh__tchk_pt(k->c, h->from)[axis];
     for (size_t i = 0; i < nh && h[i].from == h->from; i++) {
-        if (h[i].to == b) { *off = 0; return h + i; }
+        if (h[i].to == b) {
+            *off = 0;
+            return h + i;
+        }
         const double *x = lh__tchk_pt(k->c, h[i].to);
         if (!lh__pchk_strictly_between(cur, x[axis], pb[axis])) continue;
         const int is_off = !lh__pchk_collinear(k, pa, pb, x);
@@ -395,17 +408,20 @@ static lh_status walk_segment(pchk *k, size_t s)
         size_t lo = 0, hi = nh;
         while (lo < hi) {
             const size_t mid = lo + (hi - lo) / 2;
-            if (lh__pchk_hrec_cmp(k->h + mid, &key) < 0) lo = mid + 1;
-            else hi = mid;
+            if (lh__pchk_hrec_cmp(k->h + mid, &key) < 0)
+                lo = mid + 1;
+            else
+                hi = mid;
         }
         int off = 0;
-        const hrec *nx = lo < nh && k->h[lo].from == cur ? next_on(k, k->h + lo, nh - lo, a, b,
-                                                                   axis, &off) : NULL;
+        const hrec *nx = lo < nh && k->h[lo].from == cur
+                             ? next_on(k, k->h + lo, nh - lo, a, b, axis, &off)
+                             : NULL;
         if (!nx)
             return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
                                  "segment %zu (%lld %lld) is not covered: its chain of "
-                                 "subsegments from %lld stops at %lld", s, (long long)a,
-                                 (long long)b, (long long)a, (long long)cur);
+                                 "subsegments from %lld stops at %lld",
+                                 s, (long long)a, (long long)b, (long long)a, (long long)cur);
         if (off) lh__pchk_mark_off(k, nx->to);
         if (k->seg_of[nx->sub] < 0) k->seg_of[nx->sub] = (lh_index)s;
         if (nx->to != b && k->pt_seg[nx->to] < 0) k->pt_seg[nx->to] = (lh_index)s;
@@ -475,7 +491,8 @@ static lh_status merge_duplicates(lh__tchk *c, lh_plc *copy, lh_index **pv, lh_i
     const lh_plc *g = c->g;
     const lh_allocator *al = &c->al;
     const size_t n = g->n, nv = g->facet_count ? (size_t)g->polygon_first[g->polygon_count] : 0;
-    lh_index *idx = lh__alloc(al, (2 * n + 1) * sizeof *idx), *rep = lh__alloc(al, (n + 1) * sizeof *rep);
+    lh_index *idx = lh__alloc(al, (2 * n + 1) * sizeof *idx),
+             *rep = lh__alloc(al, (n + 1) * sizeof *rep);
     *pv = lh__alloc(al, (nv + 1) * sizeof **pv);
     *sv = lh__alloc(al, (2 * g->segment_count + 1) * sizeof **sv);
     lh_status st = idx && rep && *pv && *sv ? LH_OK : LH_ERR_NOMEM;
@@ -537,7 +554,9 @@ static lh_status check_merged(lh__tchk *c)
     k.re = lh__alloc(al, (nv + 1) * sizeof *k.re);
     const int scale = coords_scale(c);
     st = k.seg && k.h && k.seg_of && k.pt_seg && k.plane && k.axis && k.planar && k.eps && k.par &&
-                 k.ffirst && k.flist && k.pe && k.re ? LH_OK : LH_ERR_NOMEM;
+                 k.ffirst && k.flist && k.pe && k.re
+             ? LH_OK
+             : LH_ERR_NOMEM;
     if (st == LH_OK) st = lh__detsum_create(al, 2, scale, &k.sum);
     if (st == LH_OK) st = lh__detsum_create(al, 2, scale, &k.s2);
     if (st == LH_OK) st = lh__detsum_create(al, 1, scale, &k.s1);

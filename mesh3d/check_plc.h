@@ -8,26 +8,30 @@
 
 #include "check.h"
 
-typedef struct hrec { lh_index from, to, sub; } hrec;
-typedef struct prec { lh_index a, b, pos; } prec;
+typedef struct hrec {
+    lh_index from, to, sub;
+} hrec;
+typedef struct prec {
+    lh_index a, b, pos;
+} prec;
 
 typedef struct pchk {
     lh__tchk *c;
     const lh_plc *g;
-    size_t ns;          /* segments                                                */
-    lh_index *seg;      /* 2 per segment                                            */
-    hrec *h;            /* 2 per subsegment, sorted by (from, to)                   */
-    lh_index *seg_of;   /* per subsegment: the first segment whose chain has it     */
-    lh_index *pt_seg;   /* per point: the first segment whose chain passes it, -1   */
-    lh_index *plane;    /* 3 per facet: first three non-collinear points, or -1     */
-    int *axis;          /* per facet: the coordinate its projection drops           */
+    size_t ns;        /* segments                                                */
+    lh_index *seg;    /* 2 per segment                                            */
+    hrec *h;          /* 2 per subsegment, sorted by (from, to)                   */
+    lh_index *seg_of; /* per subsegment: the first segment whose chain has it     */
+    lh_index *pt_seg; /* per point: the first segment whose chain passes it, -1   */
+    lh_index *plane;  /* 3 per facet: first three non-collinear points, or -1     */
+    int *axis;        /* per facet: the coordinate its projection drops           */
     unsigned char *planar;
-    signed char *eps;   /* per polygon: +1 area, -1 hole, 0 neither                 */
-    lh_index *par;      /* per subface: its facet or -1                             */
-    size_t *ffirst;     /* facet_count + 1 offsets into flist                       */
-    lh_index *flist;    /* subfaces by facet                                        */
-    prec *pe;           /* scratch: a facet's subface edges (3 per subface)         */
-    prec *re;           /* scratch: a facet's polygon edges                         */
+    signed char *eps; /* per polygon: +1 area, -1 hole, 0 neither                 */
+    lh_index *par;    /* per subface: its facet or -1                             */
+    size_t *ffirst;   /* facet_count + 1 offsets into flist                       */
+    lh_index *flist;  /* subfaces by facet                                        */
+    prec *pe;         /* scratch: a facet's subface edges (3 per subface)         */
+    prec *re;         /* scratch: a facet's polygon edges                         */
     lh__detsum *sum, *s2, *s1;
 } pchk;
 

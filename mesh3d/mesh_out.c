@@ -8,7 +8,8 @@
 
 #include <string.h>
 
-#define ARRAY(m, field, count, type) lh__tetmesh_array((m), (void **)&(m)->field, (count), sizeof(type))
+#define ARRAY(m, field, count, type) \
+    lh__tetmesh_array((m), (void **)&(m)->field, (count), sizeof(type))
 
 /* Point numbers: the PLC's keep theirs; Steiner points that are vertices follow. */
 static lh_status number_points(t3_ctx *c, lh_tetmesh *m, lh_index *pmap)
@@ -65,7 +66,11 @@ static void put_face(lh_tetmesh *m, size_t f, const lh_index *tet, int j)
     lh_index v[3], w = 0;
     for (int k = 0; k < 4; k++)
         if (k != j) v[w++] = tet[k];
-    if (j % 2 == 0) { lh_index x = v[1]; v[1] = v[2]; v[2] = x; }
+    if (j % 2 == 0) {
+        lh_index x = v[1];
+        v[1] = v[2];
+        v[2] = x;
+    }
     memcpy(m->faces + 3 * f, v, sizeof v);
 }
 
@@ -101,8 +106,8 @@ static lh_status write_faces(t3_ctx *c, const t3_domain *d, lh_tetmesh *m, const
             int boundary = u < 0 || tmap[u] < 0;
             put_face(m, f, m->tets + 4 * (size_t)tmap[t], j);
             m->face_parent[f] = facet;
-            m->face_marker[f] = facet >= 0 && c->g->facet_marker ? c->g->facet_marker[facet]
-                                                                   : boundary;
+            m->face_marker[f] =
+                facet >= 0 && c->g->facet_marker ? c->g->facet_marker[facet] : boundary;
             f++;
         }
     return LH_OK;
@@ -162,8 +167,10 @@ static void count_steiner(const t3_ctx *c, lh_tetmesh *m, unsigned char *seen)
         if ((size_t)nd->p < c->n_input || seen[nd->p]) continue;
         seen[nd->p] = 1; /* a point on two chains counts once */
         const t3_seg *sg = c->seg + nd->seg;
-        if (sg->parent >= 0) S->steiner_on_segments++;
-        else S->steiner_on_facets++;
+        if (sg->parent >= 0)
+            S->steiner_on_segments++;
+        else
+            S->steiner_on_facets++;
         if (!lh__t3_collinear(c->pred, c->xyz + 3 * (size_t)sg->a, c->xyz + 3 * (size_t)sg->b,
                               c->xyz + 3 * (size_t)nd->p))
             S->steiner_off_exact++;
@@ -196,7 +203,8 @@ lh_status lh__t3_output(t3_ctx *c, const t3_domain *d, lh_tetmesh *m)
         count_steiner(c, m, (unsigned char *)pmap);
         m->stats.input_points = c->n_input;
         m->stats.duplicates_merged = 0;
-        for (size_t i = 0; i < c->n_input; i++) m->stats.duplicates_merged += c->dup[i] != (lh_index)i;
+        for (size_t i = 0; i < c->n_input; i++)
+            m->stats.duplicates_merged += c->dup[i] != (lh_index)i;
         m->stats.tets = m->tet_count;
         m->stats.faces = m->face_count;
         m->stats.edges = m->edge_count;

@@ -6,7 +6,10 @@
  */
 #include "recover.h"
 
-static size_t line_of(const size_t *lines, size_t i) { return lines ? lines[i] : 0; }
+static size_t line_of(const size_t *lines, size_t i)
+{
+    return lines ? lines[i] : 0;
+}
 
 static lh_status bad(t3_ctx *c, size_t line, const char *what)
 {
@@ -34,12 +37,14 @@ static lh_status check_facet(t3_ctx *c, size_t f)
     long shown = (long)f + g->first_index;
     lh_index p0 = g->facet_first[f], p1 = g->facet_first[f + 1];
     if (p0 < 0 || p1 < p0 || (size_t)p1 > g->polygon_count)
-        return lh__t3_say(c, LH_ERR_INVALID_ARGUMENT, line, "facet %ld: polygon offsets out of order", shown);
+        return lh__t3_say(c, LH_ERR_INVALID_ARGUMENT, line,
+                          "facet %ld: polygon offsets out of order", shown);
     int ring = 0;
     for (lh_index p = p0; p < p1; p++) {
         lh_index v0 = g->polygon_first[p], v1 = g->polygon_first[p + 1];
         if (v0 < 0 || v1 <= v0)
-            return lh__t3_say(c, LH_ERR_INVALID_ARGUMENT, line, "facet %ld: a polygon without points", shown);
+            return lh__t3_say(c, LH_ERR_INVALID_ARGUMENT, line,
+                              "facet %ld: a polygon without points", shown);
         ring |= v1 - v0 >= 3;
         for (lh_index i = v0; i < v1; i++) {
             lh_index v = g->polygon_vertices[i];
@@ -80,7 +85,8 @@ lh_status lh__t3_plc_check(t3_ctx *c)
         if (g->segments[s] < 0 || (size_t)g->segments[s] >= g->n)
             return lh__t3_say(c, LH_ERR_INVALID_ARGUMENT, line_of(g->segment_line, s / 2),
                               "segment %zu: point %ld does not exist (%zu points)",
-                              s / 2 + (size_t)g->first_index, (long)g->segments[s] + g->first_index, g->n);
+                              s / 2 + (size_t)g->first_index, (long)g->segments[s] + g->first_index,
+                              g->n);
     lh_error e;
     if (lh_coords_validate(3, g->n, g->xyz, &e) != LH_OK)
         return lh__t3_say(c, LH_ERR_NONFINITE, line_of(g->point_line, e.index / 3),

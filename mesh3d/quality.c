@@ -22,7 +22,10 @@ static void cross(const double *u, const double *v, double *w)
     w[2] = u[0] * v[1] - u[1] * v[0];
 }
 
-static double dot(const double *u, const double *v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+static double dot(const double *u, const double *v)
+{
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
 
 /* The dihedral angle (radians) at edge a b between the planes through c and d. */
 static double dihedral(const double *a, const double *b, const double *c, const double *d)

@@ -30,10 +30,10 @@
 
 /* A segment: the straight line between input points a and b, split into a chain. */
 typedef struct t3_seg {
-    lh_index a, b;       /* endpoints, a before b in coordinates (lexicographic)      */
-    lh_index parent;     /* output segment number: the PLC's segments, then the
+    lh_index a, b;   /* endpoints, a before b in coordinates (lexicographic)      */
+    lh_index parent; /* output segment number: the PLC's segments, then the
                             facets' polygon edges                                     */
-    lh_index marker;     /* the segment's marker, else its first facet's             */
+    lh_index marker; /* the segment's marker, else its first facet's             */
 } t3_seg;
 
 /* A point of a chain: point p at parameter t of segment seg (a + t (b - a)); in the
@@ -49,52 +49,64 @@ typedef struct t3_ctx {
     const lh_plc *g;
     const lh_tetmesh_options *opt;
     lh_pred *pred;
-    lh_tri *dt;             /* the Delaunay tetrahedralization of every point so far  */
-    size_t n_input;         /* points of the PLC                                      */
-    size_t n, n_cap;        /* points so far: the PLC's, then the Steiner points      */
-    double *xyz;            /* 3n                                                      */
-    int unit_exp;           /* 2^unit_exp bounds every input coordinate (lengths are
+    lh_tri *dt;          /* the Delaunay tetrahedralization of every point so far  */
+    size_t n_input;      /* points of the PLC                                      */
+    size_t n, n_cap;     /* points so far: the PLC's, then the Steiner points      */
+    double *xyz;         /* 3n                                                      */
+    int unit_exp;        /* 2^unit_exp bounds every input coordinate (lengths are
                                measured in that unit)                                 */
-    const lh_index *dup;    /* lh_tri_duplicate_of (valid until the next insertion)   */
+    const lh_index *dup; /* lh_tri_duplicate_of (valid until the next insertion)   */
     /* constraints */
     size_t tri_count;
-    lh_index *tri;          /* 3 per facet triangle, representative point indices     */
-    lh_index *tri_facet;    /* the facet of each                                      */
-    lh_index *tri_seg;      /* 3 per triangle: edge k (corner k to k+1)'s segment, -1
+    lh_index *tri;       /* 3 per facet triangle, representative point indices     */
+    lh_index *tri_facet; /* the facet of each                                      */
+    lh_index *tri_seg;   /* 3 per triangle: edge k (corner k to k+1)'s segment, -1
                                for a diagonal inside a facet (no constraint)          */
     size_t seg_count;
     t3_seg *seg;
-    lh_index *seg_key;      /* 3 per segment: its endpoints (smaller index first) and
+    lh_index *seg_key; /* 3 per segment: its endpoints (smaller index first) and
                                its number, sorted: edge to segment lookup             */
     /* patches: what must be a union of mesh faces — a facet, as its triangles */
     size_t patch_count;
-    lh_index *patch_first;  /* patch_count + 1 offsets into patch_tri                 */
-    lh_index *patch_tri;    /* triangle indices                                        */
-    lh_index *patch_facet;  /* the facet of each patch                                 */
-    signed char *patch_axis;/* +-(1 + the coordinate dropped to project the patch to
+    lh_index *patch_first;   /* patch_count + 1 offsets into patch_tri                 */
+    lh_index *patch_tri;     /* triangle indices                                        */
+    lh_index *patch_facet;   /* the facet of each patch                                 */
+    signed char *patch_axis; /* +-(1 + the coordinate dropped to project the patch to
                                2D), signed as the patch's normal along it             */
     /* Steiner points inside patches: pnode sorted by patch (seg holds the patch) */
     size_t pnode_count, pnode_cap;
     t3_node *pnode;
-    lh_index *pnode_first;  /* patch_count + 1                                        */
+    lh_index *pnode_first; /* patch_count + 1                                        */
     /* chains: nodes sorted by (seg, t); chain of segment s: node_first[s] .. [s+1] */
     size_t node_count, node_cap;
     t3_node *node;
-    lh_index *node_first;   /* seg_count + 1                                          */
+    lh_index *node_first; /* seg_count + 1                                          */
     /* the round's new points */
     size_t new_count, new_cap;
-    double *new_xyz;        /* 3 per new point                                        */
-    t3_node *new_node;      /* where each goes (p < 0 until numbered)                 */
+    double *new_xyz;   /* 3 per new point                                        */
+    t3_node *new_node; /* where each goes (p < 0 until numbered)                 */
     /* stars: the tetrahedra around each vertex, rebuilt after each insertion */
-    lh_index *star_first;   /* n + 1                                                   */
+    lh_index *star_first; /* n + 1                                                   */
     lh_index *star;
-    lh_index *stamp;        /* per point, -1 or a mark (recover_faces.c)              */
+    lh_index *stamp; /* per point, -1 or a mark (recover_faces.c)              */
     size_t stamp_cap;
     lh_index *vbuf, *fbuf, *ebuf; /* scratch: points, faces, edges                    */
     size_t vcap, fcap, ecap;
-    size_t steiner;         /* Steiner points inserted                                */
+    size_t steiner; /* Steiner points inserted                                */
     size_t rounds;
 } t3_ctx;
+
+/* Sorts three indices in place (faces compared as sets). */
+static inline void lh__t3_sort3(lh_index *f)
+{
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2 - a; b++)
+            if (f[b] > f[b + 1]) {
+                lh_index x = f[b];
+                f[b] = f[b + 1];
+                f[b + 1] = x;
+            }
+}
 
 /* recover.c: err->message = "LINE: " (when line > 0) + the formatted text; returns st. */
 lh_status lh__t3_say(t3_ctx *c, lh_status st, size_t line, const char *fmt, ...)

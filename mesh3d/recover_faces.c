@@ -47,7 +47,10 @@ static int cmp_triple(const void *x, const void *y)
     return 0;
 }
 
-static int cmp_need(const void *x, const void *y) { return cmp_pair(x, y); }
+static int cmp_need(const void *x, const void *y)
+{
+    return cmp_pair(x, y);
+}
 
 static lh_status stamp_room(t3_ctx *c)
 {
@@ -72,8 +75,7 @@ static lh_status add_point(t3_ctx *c, patch_scan *ps, lh_index v, lh_index mark)
     return LH_OK;
 }
 
-static lh_status add_need(t3_ctx *c, patch_scan *ps, lh_index p, lh_index q, lh_index s,
-                          lh_index i)
+static lh_status add_need(t3_ctx *c, patch_scan *ps, lh_index p, lh_index q, lh_index s, lh_index i)
 {
     if (ps->nn == ps->needs_cap) {
         size_t cap = 2 * ps->needs_cap + 32;
@@ -113,8 +115,10 @@ static lh_status patch_points(t3_ctx *c, size_t k, patch_scan *ps)
     qsort(ps->needs, ps->nn, sizeof(need), cmp_need);
     size_t w = 0;
     for (size_t i = 0; i < ps->nn; i++) {
-        if (w && !cmp_need(ps->needs + w - 1, ps->needs + i)) ps->needs[w - 1].mult++;
-        else ps->needs[w++] = ps->needs[i];
+        if (w && !cmp_need(ps->needs + w - 1, ps->needs + i))
+            ps->needs[w - 1].mult++;
+        else
+            ps->needs[w++] = ps->needs[i];
     }
     ps->nn = w;
     return LH_OK;
@@ -130,7 +134,8 @@ static int in_triangle(t3_ctx *c, const lh_index *t, const double *g, int ax)
     a[0] = A[i], a[1] = A[j], b[0] = B[i], b[1] = B[j], d[0] = D[i], d[1] = D[j];
     const double *abd[3] = {a, b, d}, *abq[3] = {a, b, q}, *bdq[3] = {b, d, q}, *daq[3] = {d, a, q};
     int o = lh_orient(c->pred, 2, abd);
-    int s1 = lh_orient(c->pred, 2, abq), s2 = lh_orient(c->pred, 2, bdq), s3 = lh_orient(c->pred, 2, daq);
+    int s1 = lh_orient(c->pred, 2, abq), s2 = lh_orient(c->pred, 2, bdq),
+        s3 = lh_orient(c->pred, 2, daq);
     return s1 * o >= 0 && s2 * o >= 0 && s3 * o >= 0;
 }
 
@@ -202,9 +207,7 @@ static lh_status face_records(t3_ctx *c, size_t k, patch_scan *ps, size_t *count
                 for (int j = 0; j < 4; j++)
                     if (j != o) f[w++] = t[j], ok &= c->stamp[t[j]] >= 1 && t[j] >= v;
                 if (!ok) continue;
-                if (f[0] > f[1]) { lh_index x = f[0]; f[0] = f[1]; f[1] = x; }
-                if (f[1] > f[2]) { lh_index x = f[1]; f[1] = f[2]; f[2] = x; }
-                if (f[0] > f[1]) { lh_index x = f[0]; f[0] = f[1]; f[1] = x; }
+                lh__t3_sort3(f);
                 if (!face_in_patch(c, k, f)) continue;
                 f[3] = c->stamp[t[o]] >= 1 ? apex_side(c, k, f, t[o]) : 2;
                 lh_status st = lh__t3_room(c, &c->fbuf, &c->fcap, 4 * (nf + 1));
@@ -280,8 +283,10 @@ static size_t uses(const t3_ctx *c, const patch_scan *ps, lh_index p, lh_index q
     size_t lo = 0, hi = ps->ne;
     while (lo < hi) {
         size_t mid = (lo + hi) / 2;
-        if (cmp_pair(c->ebuf + 2 * mid, key) < 0) lo = mid + 1;
-        else hi = mid;
+        if (cmp_pair(c->ebuf + 2 * mid, key) < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
     }
     size_t n = 0;
     while (lo + n < ps->ne && !cmp_pair(c->ebuf + 2 * (lo + n), key)) n++;
@@ -300,7 +305,8 @@ static double len2(const t3_ctx *c, lh_index p, lh_index q)
 {
     double s = 0;
     for (int k = 0; k < 3; k++) {
-        double d = ldexp(c->xyz[3 * (size_t)p + k] / 2 - c->xyz[3 * (size_t)q + k] / 2, -c->unit_exp);
+        double d =
+            ldexp(c->xyz[3 * (size_t)p + k] / 2 - c->xyz[3 * (size_t)q + k] / 2, -c->unit_exp);
         s += d * d;
     }
     return s;
@@ -332,12 +338,14 @@ static void judge(const t3_ctx *c, const patch_scan *ps, verdict *v)
         if (u < (size_t)n->mult && l > v->short_len) v->short_len = l, v->short_need = n;
     }
     for (size_t i = 0, run; i < ps->ne; i += run) {
-        for (run = 1; i + run < ps->ne && !cmp_pair(c->ebuf + 2 * i, c->ebuf + 2 * (i + run));) run++;
+        for (run = 1; i + run < ps->ne && !cmp_pair(c->ebuf + 2 * i, c->ebuf + 2 * (i + run));)
+            run++;
         if (run == 2 || is_need(ps, c->ebuf + 2 * i)) continue;
         bad = 1;
         double l = len2(c, c->ebuf[2 * i], c->ebuf[2 * i + 1]);
         if (run == 1 && l > v->frontier_len && !along_chain(c, c->ebuf + 2 * i, 2))
-            v->frontier_len = l, v->frontier[0] = c->ebuf[2 * i], v->frontier[1] = c->ebuf[2 * i + 1];
+            v->frontier_len = l, v->frontier[0] = c->ebuf[2 * i],
+            v->frontier[1] = c->ebuf[2 * i + 1];
     }
     v->ok = !bad;
 }
@@ -369,7 +377,8 @@ static lh_status split(t3_ctx *c, size_t k, const patch_scan *ps, const verdict 
  * face, sorted, into *f; 0 when the patch is not that simple. */
 static int plain_triangle(const t3_ctx *c, size_t k, lh_index f[3])
 {
-    if (c->patch_first[k + 1] - c->patch_first[k] != 1 || c->pnode_first[k + 1] != c->pnode_first[k])
+    if (c->patch_first[k + 1] - c->patch_first[k] != 1 ||
+        c->pnode_first[k + 1] != c->pnode_first[k])
         return 0;
     const size_t t = (size_t)c->patch_tri[c->patch_first[k]];
     for (int j = 0; j < 3; j++) {
@@ -377,9 +386,7 @@ static int plain_triangle(const t3_ctx *c, size_t k, lh_index f[3])
         if (s < 0 || c->node_first[s + 1] != c->node_first[s]) return 0;
         f[j] = c->tri[3 * t + j];
     }
-    if (f[0] > f[1]) { lh_index x = f[0]; f[0] = f[1]; f[1] = x; }
-    if (f[1] > f[2]) { lh_index x = f[1]; f[1] = f[2]; f[2] = x; }
-    if (f[0] > f[1]) { lh_index x = f[0]; f[0] = f[1]; f[1] = x; }
+    lh__t3_sort3(f);
     return 1;
 }
 

@@ -32,9 +32,7 @@ static size_t facet_line(const t3_ctx *c, lh_index f)
 static void sorted3(const lh_index *t, lh_index s[3])
 {
     s[0] = t[0], s[1] = t[1], s[2] = t[2];
-    if (s[0] > s[1]) { lh_index x = s[0]; s[0] = s[1]; s[1] = x; }
-    if (s[1] > s[2]) { lh_index x = s[1]; s[1] = s[2]; s[2] = x; }
-    if (s[0] > s[1]) { lh_index x = s[0]; s[0] = s[1]; s[1] = x; }
+    lh__t3_sort3(s);
 }
 
 static int cmp_tri(const void *ctx, lh_index a, lh_index b)
@@ -115,8 +113,8 @@ static int cmp_rec(const void *ctx, lh_index i, lh_index j)
     return x->seq < y->seq ? -1 : x->seq > y->seq;
 }
 
-static void rec_put(edge_rec *r, size_t *k, lh_index a, lh_index b, lh_index kind,
-                    lh_index seq, lh_index marker, lh_index facet)
+static void rec_put(edge_rec *r, size_t *k, lh_index a, lh_index b, lh_index kind, lh_index seq,
+                    lh_index marker, lh_index facet)
 {
     if (a == b) return;
     edge_rec e = {a < b ? a : b, a < b ? b : a, kind, seq, marker, facet};
@@ -140,8 +138,8 @@ static size_t collect_edges(const t3_ctx *c, edge_rec *r)
     const lh_plc *g = c->g;
     size_t k = 0;
     for (size_t s = 0; s < g->segment_count; s++)
-        rec_put(r, &k, c->dup[g->segments[2 * s]], c->dup[g->segments[2 * s + 1]], 0,
-                (lh_index)s, g->segment_marker ? g->segment_marker[s] : 0, -1);
+        rec_put(r, &k, c->dup[g->segments[2 * s]], c->dup[g->segments[2 * s + 1]], 0, (lh_index)s,
+                g->segment_marker ? g->segment_marker[s] : 0, -1);
     lh_index seq = 0;
     for (size_t f = 0; f < g->facet_count; f++) {
         lh_index mk = g->facet_marker ? g->facet_marker[f] : 0;
@@ -225,8 +223,10 @@ lh_index lh__t3_seg_of(const t3_ctx *c, lh_index p, lh_index q)
         size_t mid = (lo + hi) / 2;
         const lh_index *k = c->seg_key + 3 * mid;
         if (k[0] == a && k[1] == b) return k[2];
-        if (k[0] < a || (k[0] == a && k[1] < b)) lo = mid + 1;
-        else hi = mid;
+        if (k[0] < a || (k[0] == a && k[1] < b))
+            lo = mid + 1;
+        else
+            hi = mid;
     }
     return -1;
 }
@@ -259,13 +259,14 @@ static signed char drop_axis(const t3_ctx *c, const lh_index *t)
                  *d = c->xyz + 3 * (size_t)t[2];
     double u[3], v[3], nrm[3];
     for (int k = 0; k < 3; k++) /* halved and scaled: no overflow at any scale */
-        u[k] = ldexp(b[k] / 2 - a[k] / 2, -c->unit_exp), v[k] = ldexp(d[k] / 2 - a[k] / 2, -c->unit_exp);
+        u[k] = ldexp(b[k] / 2 - a[k] / 2, -c->unit_exp),
+        v[k] = ldexp(d[k] / 2 - a[k] / 2, -c->unit_exp);
     nrm[0] = u[1] * v[2] - u[2] * v[1];
     nrm[1] = u[2] * v[0] - u[0] * v[2];
     nrm[2] = u[0] * v[1] - u[1] * v[0];
     int ax = fabs(nrm[0]) >= fabs(nrm[1]) && fabs(nrm[0]) >= fabs(nrm[2]) ? 0
-           : fabs(nrm[1]) >= fabs(nrm[2])                            ? 1
-                                                                        : 2;
+             : fabs(nrm[1]) >= fabs(nrm[2])                               ? 1
+                                                                          : 2;
     return (signed char)(nrm[ax] < 0 ? -(ax + 1) : ax + 1);
 }
 
@@ -319,7 +320,8 @@ static lh_status make_edges(t3_ctx *c)
     if (!c->tri_seg) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     for (size_t k = 0; k < c->tri_count; k++)
         for (int j = 0; j < 3; j++)
-            c->tri_seg[3 * k + j] = lh__t3_seg_of(c, c->tri[3 * k + j], c->tri[3 * k + (j + 1) % 3]);
+            c->tri_seg[3 * k + j] =
+                lh__t3_seg_of(c, c->tri[3 * k + j], c->tri[3 * k + (j + 1) % 3]);
     return LH_OK;
 }
 

@@ -9,13 +9,20 @@
 #include <math.h>
 #include <string.h>
 
-static const double *pt(const t3_ctx *c, lh_index i) { return c->xyz + 3 * (size_t)i; }
+static const double *pt(const t3_ctx *c, lh_index i)
+{
+    return c->xyz + 3 * (size_t)i;
+}
 
 size_t lh__t3_chain(const t3_ctx *c, lh_index s, lh_index *buf, size_t cap)
 {
     size_t len = 0;
     const t3_seg *sg = c->seg + s;
-#define PUT(v) do { if (len < cap) buf[len] = (v); len++; } while (0)
+#define PUT(v)                         \
+    do {                               \
+        if (len < cap) buf[len] = (v); \
+        len++;                         \
+    } while (0)
     PUT(sg->a);
     for (lh_index i = c->node_first[s]; i < c->node_first[s + 1]; i++) PUT(c->node[i].p);
     PUT(sg->b);
@@ -38,7 +45,8 @@ static int on_open_segment(const t3_ctx *c, lh_index v, lh_index p, lh_index q)
     const double *a = pt(c, p), *b = pt(c, q), *x = pt(c, v);
     if (!lh__t3_collinear(c->pred, a, b, x)) return 0;
     for (int k = 0; k < 3; k++)
-        if (a[k] != b[k]) return a[k] < b[k] ? a[k] < x[k] && x[k] < b[k] : b[k] < x[k] && x[k] < a[k];
+        if (a[k] != b[k])
+            return a[k] < b[k] ? a[k] < x[k] && x[k] < b[k] : b[k] < x[k] && x[k] < a[k];
     return 0;
 }
 
@@ -105,8 +113,7 @@ static lh_index vertex_on(const t3_ctx *c, lh_index p, lh_index q)
 
 /* The split parameter of subsegment (tp, tq) of s: Shewchuk's concentric shells
  * around an input vertex at one end only, else the midpoint. */
-static double split_param(const t3_ctx *c, lh_index s, lh_index p, lh_index q, double tp,
-                          double tq)
+static double split_param(const t3_ctx *c, lh_index s, lh_index p, lh_index q, double tp, double tq)
 {
     int ip = (size_t)p < c->n_input, iq = (size_t)q < c->n_input;
     if (ip == iq) return 0.5 * (tp + tq);
@@ -143,11 +150,13 @@ lh_status lh__t3_split(t3_ctx *c, lh_index s, size_t i)
         same_p &= x[j] == u;
         same_q &= x[j] == w;
     }
+    long base = c->g->first_index; /* as the input numbers its points */
     if (outside || same_p || same_q)
         return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                           "segment %ld %ld cannot be split further: no point of doubles "
                           "lies between its points %ld and %ld",
-                          (long)c->seg[s].a, (long)c->seg[s].b, (long)p, (long)q);
+                          (long)c->seg[s].a + base, (long)c->seg[s].b + base, (long)p + base,
+                          (long)q + base);
     return lh__t3_queue(c, s, t, -1, x);
 }
 
@@ -187,8 +196,8 @@ static lh_status node_room(t3_ctx *c, t3_node **nodes, size_t count, size_t *cap
 
 /* Sorts nodes[0..*count) by (seg, t), drops repeats of (seg, point) and, for
  * segments (ends), nodes at a segment's end; rebuilds first[0..groups]. */
-static lh_status sort_nodes(t3_ctx *c, t3_node **nodes, size_t *count, size_t *cap,
-                            lh_index *first, size_t groups, int ends)
+static lh_status sort_nodes(t3_ctx *c, t3_node **nodes, size_t *count, size_t *cap, lh_index *first,
+                            size_t groups, int ends)
 {
     size_t m = *count;
     lh_index *idx = lh__alloc(&c->al, (2 * m + 1) * sizeof(lh_index));
@@ -218,11 +227,11 @@ static lh_status sort_nodes(t3_ctx *c, t3_node **nodes, size_t *count, size_t *c
 
 lh_status lh__t3_chains_sort(t3_ctx *c)
 {
-    lh_status st = sort_nodes(c, &c->node, &c->node_count, &c->node_cap, c->node_first,
-                              c->seg_count, 1);
+    lh_status st =
+        sort_nodes(c, &c->node, &c->node_count, &c->node_cap, c->node_first, c->seg_count, 1);
     if (st != LH_OK) return st;
-    return sort_nodes(c, &c->pnode, &c->pnode_count, &c->pnode_cap, c->pnode_first,
-                      c->patch_count, 0);
+    return sort_nodes(c, &c->pnode, &c->pnode_count, &c->pnode_cap, c->pnode_first, c->patch_count,
+                      0);
 }
 
 static int cmp_xyz(const void *ctx, lh_index a, lh_index b)
@@ -250,8 +259,8 @@ static lh_status number_fresh(t3_ctx *c, double *x, size_t *fresh)
         if (c->new_node[i].p < 0) idx[k++] = (lh_index)i;
     lh__sort_idx(idx, idx + m, k, cmp_xyz, c->new_xyz); /* stable: the first stays first */
     for (size_t j = 0; j < k; j++)
-        first[idx[j]] = j > 0 && cmp_xyz(c->new_xyz, idx[j - 1], idx[j]) == 0 ? first[idx[j - 1]]
-                                                                             : idx[j];
+        first[idx[j]] =
+            j > 0 && cmp_xyz(c->new_xyz, idx[j - 1], idx[j]) == 0 ? first[idx[j - 1]] : idx[j];
     size_t f = 0;
     for (size_t i = 0; i < m; i++) {
         if (c->new_node[i].p >= 0) continue;
@@ -279,8 +288,8 @@ lh_status lh__t3_commit(t3_ctx *c)
     st = number_fresh(c, x, &fresh);
     if (st != LH_OK) return st;
     st = lh_tri_insert(c->dt, fresh, x);
-    if (st != LH_OK) return lh__t3_say(c, st, 0, "inserting Steiner points: %s",
-                                       lh_status_message(st));
+    if (st != LH_OK)
+        return lh__t3_say(c, st, 0, "inserting Steiner points: %s", lh_status_message(st));
     c->dup = lh_tri_duplicate_of(c->dt);
     for (size_t i = 0; i < fresh; i++)
         if (c->dup[c->n + i] == (lh_index)(c->n + i)) c->steiner++;

@@ -11,18 +11,18 @@
 /* The result of lh_tetrahedralize: flat arrays, each owned and freed with alloc. */
 struct lh_tetmesh {
     lh_allocator alloc;
-    size_t n;                /* points: the PLC's, then Steiner points          */
-    double *xyz;             /* 3n                                                */
-    lh_index *point_marker;  /* n                                                 */
+    size_t n;               /* points: the PLC's, then Steiner points          */
+    double *xyz;            /* 3n                                                */
+    lh_index *point_marker; /* n                                                 */
     size_t tet_count;
-    lh_index *tets;          /* 4 per tet, orient_3 > 0                           */
-    lh_index *nbr;           /* 4 per tet, -1 none                                */
-    double *tet_attr;        /* tet_count, or NULL                                */
+    lh_index *tets;   /* 4 per tet, orient_3 > 0                           */
+    lh_index *nbr;    /* 4 per tet, -1 none                                */
+    double *tet_attr; /* tet_count, or NULL                                */
     size_t face_count;
-    lh_index *faces;         /* 3 per subface                                     */
+    lh_index *faces; /* 3 per subface                                     */
     lh_index *face_marker, *face_parent;
     size_t edge_count;
-    lh_index *edges;         /* 2 per subsegment                                  */
+    lh_index *edges; /* 2 per subsegment                                  */
     lh_index *edge_marker, *edge_parent;
     lh_tetmesh_stats stats;
 };

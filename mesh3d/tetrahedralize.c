@@ -13,12 +13,11 @@
 
 static void ctx_free(t3_ctx *c)
 {
-    void *arrays[] = {c->xyz,         c->tri,        c->tri_facet,  c->tri_seg,
-                      c->seg,         c->seg_key,    c->patch_first, c->patch_tri,
-                      c->patch_facet, c->patch_axis, c->pnode,      c->pnode_first,
-                      c->node,        c->node_first, c->new_xyz,    c->new_node,
-                      c->star_first,  c->star,       c->stamp,      c->vbuf,
-                      c->fbuf,        c->ebuf};
+    void *arrays[] = {c->xyz,      c->tri,         c->tri_facet, c->tri_seg,     c->seg,
+                      c->seg_key,  c->patch_first, c->patch_tri, c->patch_facet, c->patch_axis,
+                      c->pnode,    c->pnode_first, c->node,      c->node_first,  c->new_xyz,
+                      c->new_node, c->star_first,  c->star,      c->stamp,       c->vbuf,
+                      c->fbuf,     c->ebuf};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
     lh_tri_free(c->dt);
     lh_pred_free(c->pred);
@@ -36,7 +35,8 @@ static lh_status start(t3_ctx *c)
     if (st != LH_OK) return lh__t3_say(c, st, 0, "out of memory");
     st = lh_delaunay(3, g->n, g->xyz, &dopt, &c->dt);
     if (st == LH_ERR_DEGENERATE)
-        return lh__t3_say(c, st, 0, "the points are coplanar, or fewer than 4 distinct: no volume to mesh");
+        return lh__t3_say(c, st, 0,
+                          "the points are coplanar, or fewer than 4 distinct: no volume to mesh");
     if (st != LH_OK) return lh__t3_say(c, st, 0, "%s", lh_status_message(st));
     c->dup = lh_tri_duplicate_of(c->dt);
     c->n = c->n_input = g->n;
@@ -99,7 +99,8 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
     if (st == LH_OK) st = lh__t3_walls(c, &d);
     if (st == LH_OK) st = lh__t3_carve(c, &d);
     lh_tetmesh *m = NULL;
-    if (st == LH_OK && !(m = lh__tetmesh_new(&c->al))) st = lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    if (st == LH_OK && !(m = lh__tetmesh_new(&c->al)))
+        st = lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     if (st == LH_OK) st = lh__t3_output(c, &d, m);
     lh__t3_domain_free(c, &d);
     if (st != LH_OK) {

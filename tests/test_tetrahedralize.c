@@ -45,16 +45,26 @@ typedef struct model {
 LH_TEST(models_mesh_and_conform)
 {
     static const model models[] = {
-        {"mesh3d/schonhardt.off", 3, 3},   {"tetgen/star.off", 0, 0},
-        {"tetgen/cubes.off", 6, 0},        {"tetgen/wedge-5.smesh", 0, 0},
-        {"plc/spike-1-7.smesh", 0, 0},     {"mesh3d/slit-1.smesh", 0, 0},
-        {"mesh3d/spike-1-10.smesh", 0, 0}, {"mesh3d/wedge-1.smesh", 0, 0},
-        {"mesh3d/step.off", 0, 0},         {"mesh3d/hole.off", 4, 4},
-        {"mesh3d/blob-closed.off", 8, 4},  {"mesh3d/eight.off", 82, 69},
-        {"mesh3d/u.off", 183, 172},        {"mesh3d/pipe.off", 260, 0},
-        {"mesh3d/part.off", 1168, 21},     {"mesh3d/joint.off", 2106, 92},
-        {"mesh3d/double-torus-example.off", 2, 2}, {"mesh3d/mpi.off", 140, 31},
-        {"plc_bin/sphere.stl", 0, 0},      {"plc_bin/sphere.ply", 0, 0},
+        {"mesh3d/schonhardt.off", 3, 3},
+        {"tetgen/star.off", 0, 0},
+        {"tetgen/cubes.off", 6, 0},
+        {"tetgen/wedge-5.smesh", 0, 0},
+        {"plc/spike-1-7.smesh", 0, 0},
+        {"mesh3d/slit-1.smesh", 0, 0},
+        {"mesh3d/spike-1-10.smesh", 0, 0},
+        {"mesh3d/wedge-1.smesh", 0, 0},
+        {"mesh3d/step.off", 0, 0},
+        {"mesh3d/hole.off", 4, 4},
+        {"mesh3d/blob-closed.off", 8, 4},
+        {"mesh3d/eight.off", 82, 69},
+        {"mesh3d/u.off", 183, 172},
+        {"mesh3d/pipe.off", 260, 0},
+        {"mesh3d/part.off", 1168, 21},
+        {"mesh3d/joint.off", 2106, 92},
+        {"mesh3d/double-torus-example.off", 2, 2},
+        {"mesh3d/mpi.off", 140, 31},
+        {"plc_bin/sphere.stl", 0, 0},
+        {"plc_bin/sphere.ply", 0, 0},
     };
     for (size_t i = 0; i < LH_COUNT(models); i++) {
         lh_plc g;
@@ -90,7 +100,8 @@ static void permuted(const lh_plc *g, const lh_index *perm, lh_plc *h)
     memset(h, 0, sizeof *h);
     h->n = g->n;
     h->xyz = malloc(3 * g->n * sizeof(double));
-    for (size_t i = 0; i < g->n; i++) memcpy(h->xyz + 3 * perm[i], g->xyz + 3 * i, 3 * sizeof(double));
+    for (size_t i = 0; i < g->n; i++)
+        memcpy(h->xyz + 3 * perm[i], g->xyz + 3 * i, 3 * sizeof(double));
     size_t nf = g->facet_count, np = g->polygon_count, nv = (size_t)g->polygon_first[np];
     h->facet_count = nf, h->polygon_count = np;
     h->facet_first = malloc((nf + 1) * sizeof(lh_index));
@@ -104,7 +115,8 @@ static void permuted(const lh_plc *g, const lh_index *perm, lh_plc *h)
             size_t len = (size_t)(g->polygon_first[q + 1] - g->polygon_first[q]);
             h->polygon_first[p] = (lh_index)v;
             for (size_t j = 0; j < len; j++)
-                h->polygon_vertices[v++] = perm[g->polygon_vertices[g->polygon_first[q] + (lh_index)((j + 1) % len)]];
+                h->polygon_vertices[v++] =
+                    perm[g->polygon_vertices[g->polygon_first[q] + (lh_index)((j + 1) % len)]];
         }
     }
     h->facet_first[nf] = (lh_index)p;
@@ -141,7 +153,8 @@ static double *tet_keys(const lh_tetmesh *m)
     const double *x = lh_tetmesh_points(m);
     double *k = malloc((12 * nt + 1) * sizeof(double));
     for (size_t i = 0; i < nt; i++) {
-        for (int j = 0; j < 4; j++) memcpy(k + 12 * i + 3 * j, x + 3 * t[4 * i + j], 3 * sizeof(double));
+        for (int j = 0; j < 4; j++)
+            memcpy(k + 12 * i + 3 * j, x + 3 * t[4 * i + j], 3 * sizeof(double));
         qsort(k + 12 * i, 4, 3 * sizeof(double), cmp3);
     }
     qsort(k, nt, 12 * sizeof(double), cmp_key);
@@ -236,9 +249,8 @@ LH_TEST(bad_inputs_get_their_error)
                                NULL, msg, sizeof msg),
                      LH_OK);
     /* one facet of a tetrahedron a million times: one wall, nothing enclosed */
-    LH_EXPECT_EQ_INT(mesh_text("t.off",
-                               "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n",
-                               NULL, msg, sizeof msg),
+    LH_EXPECT_EQ_INT(mesh_text("t.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n", NULL,
+                               msg, sizeof msg),
                      LH_ERR_DEGENERATE);
 }
 
@@ -250,7 +262,8 @@ static void plc_of(lh_plc *g, size_t n, double *xyz, size_t m, size_t k, lh_inde
     g->n = n, g->xyz = xyz;
     g->facet_count = g->polygon_count = m;
     g->facet_first = facet_first, g->polygon_first = polygon_first, g->polygon_vertices = v;
-    for (size_t i = 0; i <= m; i++) facet_first[i] = (lh_index)i, polygon_first[i] = (lh_index)(k * i);
+    for (size_t i = 0; i <= m; i++)
+        facet_first[i] = (lh_index)i, polygon_first[i] = (lh_index)(k * i);
 }
 
 static lh_status mesh_plc(const lh_plc *g, const lh_tetmesh_options *opt, char *msg, size_t cap)
@@ -356,7 +369,8 @@ LH_TEST(quality_figures)
         lh_tetmesh_stats s;
         lh_tetmesh_stats_get(m, &s);
         LH_EXPECT_EQ_U64(s.tets, 6);
-        LH_EXPECT_TRUE(fabs(s.min_dihedral - atan(sqrt(0.5)) * 180 / 3.14159265358979323846) < 1e-9);
+        LH_EXPECT_TRUE(fabs(s.min_dihedral - atan(sqrt(0.5)) * 180 / 3.14159265358979323846) <
+                       1e-9);
         LH_EXPECT_TRUE(fabs(s.max_radius_edge - sqrt(3) / 2) < 1e-12);
     }
     lh_tetmesh_free(m);
@@ -399,9 +413,9 @@ LH_TEST(scale_does_not_matter)
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
-        LH_CASE(models_mesh_and_conform), LH_CASE(output_does_not_depend_on_order),
+        LH_CASE(models_mesh_and_conform),    LH_CASE(output_does_not_depend_on_order),
         LH_CASE(bad_inputs_get_their_error), LH_CASE(steiner_limits),
-        LH_CASE(bad_plcs_get_their_error), LH_CASE(a_million_copies_of_one_triangle),
-        LH_CASE(scale_does_not_matter), LH_CASE(quality_figures)};
+        LH_CASE(bad_plcs_get_their_error),   LH_CASE(a_million_copies_of_one_triangle),
+        LH_CASE(scale_does_not_matter),      LH_CASE(quality_figures)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -19,25 +19,24 @@ typedef struct lh__plc_build {
     lh_plc *g;
     size_t cap_points, cap_facets, cap_polygons, cap_vertices, cap_facet_holes;
     size_t cap_segments, cap_holes, cap_regions;
-    size_t facet_holes;     /* facet hole points so far (g has no count for them) */
-    size_t vertices;        /* polygon vertices so far                           */
-    int facet_open;         /* a facet was begun: polygons go to it              */
+    size_t facet_holes; /* facet hole points so far (g has no count for them) */
+    size_t vertices;    /* polygon vertices so far                           */
+    int facet_open;     /* a facet was begun: polygons go to it              */
 } lh__plc_build;
 
 /* Starts an empty lh_plc in g with the allocator (NULL: malloc/free). LH_OK or
  * LH_ERR_INVALID_ARGUMENT (g NULL, an allocator without hooks). */
 lh_status lh__plc_build_init(lh__plc_build *b, lh_plc *g, const lh_allocator *alloc);
 /* Appends a point (attr: g->attr_count values, or NULL when attr_count is 0). */
-lh_status lh__plc_point(lh__plc_build *b, const double xyz[3], const double *attr,
-                        lh_index marker, size_t line);
+lh_status lh__plc_point(lh__plc_build *b, const double xyz[3], const double *attr, lh_index marker,
+                        size_t line);
 /* Begins a facet; the polygons and facet holes added next belong to it. */
 lh_status lh__plc_facet(lh__plc_build *b, lh_index marker, size_t line);
 /* Appends a polygon of k >= 1 vertices (0-based point indices) to the open facet. */
 lh_status lh__plc_polygon(lh__plc_build *b, const lh_index *v, size_t k);
 /* Appends a hole point to the open facet. */
 lh_status lh__plc_facet_hole(lh__plc_build *b, const double xyz[3]);
-lh_status lh__plc_segment(lh__plc_build *b, lh_index p, lh_index q, lh_index marker,
-                          size_t line);
+lh_status lh__plc_segment(lh__plc_build *b, lh_index p, lh_index q, lh_index marker, size_t line);
 lh_status lh__plc_hole(lh__plc_build *b, const double xyz[3], size_t line);
 /* A region: x y z attribute max_volume. */
 lh_status lh__plc_region(lh__plc_build *b, const double r[5], size_t line);

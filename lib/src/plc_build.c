@@ -11,12 +11,12 @@ void lh_plc_free(lh_plc *g)
 {
     if (!g) return;
     if (g->alloc_.free) {
-        void *arrays[] = {g->xyz,           g->attr,          g->point_marker,
-                          g->facet_first,   g->facet_marker,  g->polygon_first,
-                          g->polygon_vertices, g->facet_hole_first, g->facet_holes,
-                          g->segments,      g->segment_marker, g->holes,
-                          g->regions,       g->point_line,    g->facet_line,
-                          g->segment_line,  g->hole_line,     g->region_line};
+        void *arrays[] = {
+            g->xyz,          g->attr,          g->point_marker,     g->facet_first,
+            g->facet_marker, g->polygon_first, g->polygon_vertices, g->facet_hole_first,
+            g->facet_holes,  g->segments,      g->segment_marker,   g->holes,
+            g->regions,      g->point_line,    g->facet_line,       g->segment_line,
+            g->hole_line,    g->region_line};
         for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++)
             lh__free(&g->alloc_, arrays[i]);
     }
@@ -64,22 +64,25 @@ static lh_status grow(lh__plc_build *b, void **arr, size_t *cap, size_t need, si
 }
 
 /* grow() for several parallel arrays sharing one count and capacity. */
-#define GROW(b, arr, capv, need, size)                                                 \
-    grow((b), (void **)&(arr), &(capv), (need), (size))
+#define GROW(b, arr, capv, need, size) grow((b), (void **)&(arr), &(capv), (need), (size))
 
-lh_status lh__plc_point(lh__plc_build *b, const double xyz[3], const double *attr,
-                        lh_index marker, size_t line)
+lh_status lh__plc_point(lh__plc_build *b, const double xyz[3], const double *attr, lh_index marker,
+                        size_t line)
 {
     lh_plc *g = b->g;
     size_t n = g->n, cap = b->cap_points, k = (size_t)g->attr_count;
     lh_status st;
     size_t c;
-    c = cap; if ((st = GROW(b, g->xyz, c, n + 1, 3 * sizeof(double)))) return st;
-    c = cap; if ((st = GROW(b, g->point_marker, c, n + 1, sizeof(lh_index)))) return st;
-    c = cap; if ((st = GROW(b, g->point_line, c, n + 1, sizeof(size_t)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->xyz, c, n + 1, 3 * sizeof(double)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->point_marker, c, n + 1, sizeof(lh_index)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->point_line, c, n + 1, sizeof(size_t)))) return st;
     if (k) {
         if (k > SIZE_MAX / sizeof(double) / 4) return LH_ERR_TOO_LARGE;
-        c = cap; if ((st = GROW(b, g->attr, c, n + 1, k * sizeof(double)))) return st;
+        c = cap;
+        if ((st = GROW(b, g->attr, c, n + 1, k * sizeof(double)))) return st;
         memcpy(g->attr + n * k, attr, k * sizeof(double));
     }
     b->cap_points = c;
@@ -96,10 +99,14 @@ lh_status lh__plc_facet(lh__plc_build *b, lh_index marker, size_t line)
     size_t f = g->facet_count, cap = b->cap_facets, c;
     lh_status st;
     /* facet_first and facet_hole_first get one slot more, for the closing offset. */
-    c = cap; if ((st = GROW(b, g->facet_first, c, f + 2, sizeof(lh_index)))) return st;
-    c = cap; if ((st = GROW(b, g->facet_hole_first, c, f + 2, sizeof(lh_index)))) return st;
-    c = cap; if ((st = GROW(b, g->facet_marker, c, f + 2, sizeof(lh_index)))) return st;
-    c = cap; if ((st = GROW(b, g->facet_line, c, f + 2, sizeof(size_t)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->facet_first, c, f + 2, sizeof(lh_index)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->facet_hole_first, c, f + 2, sizeof(lh_index)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->facet_marker, c, f + 2, sizeof(lh_index)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->facet_line, c, f + 2, sizeof(size_t)))) return st;
     b->cap_facets = c;
     g->facet_first[f] = (lh_index)g->polygon_count;
     g->facet_hole_first[f] = (lh_index)b->facet_holes;
@@ -130,23 +137,25 @@ lh_status lh__plc_polygon(lh__plc_build *b, const lh_index *v, size_t k)
 lh_status lh__plc_facet_hole(lh__plc_build *b, const double xyz[3])
 {
     if (!b->facet_open) return LH_ERR_INVALID_ARGUMENT;
-    lh_status st = GROW(b, b->g->facet_holes, b->cap_facet_holes, b->facet_holes + 1,
-                        3 * sizeof(double));
+    lh_status st =
+        GROW(b, b->g->facet_holes, b->cap_facet_holes, b->facet_holes + 1, 3 * sizeof(double));
     if (st) return st;
     memcpy(b->g->facet_holes + 3 * b->facet_holes, xyz, 3 * sizeof(double));
     b->facet_holes++;
     return LH_OK;
 }
 
-lh_status lh__plc_segment(lh__plc_build *b, lh_index p, lh_index q, lh_index marker,
-                          size_t line)
+lh_status lh__plc_segment(lh__plc_build *b, lh_index p, lh_index q, lh_index marker, size_t line)
 {
     lh_plc *g = b->g;
     size_t s = g->segment_count, cap = b->cap_segments, c;
     lh_status st;
-    c = cap; if ((st = GROW(b, g->segments, c, s + 1, 2 * sizeof(lh_index)))) return st;
-    c = cap; if ((st = GROW(b, g->segment_marker, c, s + 1, sizeof(lh_index)))) return st;
-    c = cap; if ((st = GROW(b, g->segment_line, c, s + 1, sizeof(size_t)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->segments, c, s + 1, 2 * sizeof(lh_index)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->segment_marker, c, s + 1, sizeof(lh_index)))) return st;
+    c = cap;
+    if ((st = GROW(b, g->segment_line, c, s + 1, sizeof(size_t)))) return st;
     b->cap_segments = c;
     g->segments[2 * s] = p;
     g->segments[2 * s + 1] = q;
@@ -163,8 +172,10 @@ static lh_status seed_add(lh__plc_build *b, double **vals, size_t **lines, size_
 {
     size_t n = *count, cap = *capv, c;
     lh_status st;
-    c = cap; if ((st = GROW(b, *vals, c, n + 1, (size_t)width * sizeof(double)))) return st;
-    c = cap; if ((st = GROW(b, *lines, c, n + 1, sizeof(size_t)))) return st;
+    c = cap;
+    if ((st = GROW(b, *vals, c, n + 1, (size_t)width * sizeof(double)))) return st;
+    c = cap;
+    if ((st = GROW(b, *lines, c, n + 1, sizeof(size_t)))) return st;
     *capv = c;
     memcpy(*vals + (size_t)width * n, v, (size_t)width * sizeof(double));
     (*lines)[n] = line;
@@ -181,8 +192,7 @@ lh_status lh__plc_hole(lh__plc_build *b, const double xyz[3], size_t line)
 lh_status lh__plc_region(lh__plc_build *b, const double r[5], size_t line)
 {
     lh_plc *g = b->g;
-    return seed_add(b, &g->regions, &g->region_line, &g->region_count, &b->cap_regions, r, 5,
-                    line);
+    return seed_add(b, &g->regions, &g->region_line, &g->region_count, &b->cap_regions, r, 5, line);
 }
 
 /* One lh_index array of a single element, for an offsets array with no item yet. */

@@ -29,10 +29,12 @@ static int starts_with(const unsigned char *head, size_t len, const char *word)
 
 lh_plc_format lh__plc_detect(const char *name, const unsigned char *head, size_t len)
 {
-    static const struct { const char *ext; lh_plc_format f; } by_ext[] = {
-        {".poly", LH_PLC_POLY}, {".smesh", LH_PLC_SMESH}, {".node", LH_PLC_NODE},
-        {".off", LH_PLC_OFF},   {".ply", LH_PLC_PLY},     {".stl", LH_PLC_STL},
-        {".mesh", LH_PLC_MEDIT}, {".obj", LH_PLC_OBJ}};
+    static const struct {
+        const char *ext;
+        lh_plc_format f;
+    } by_ext[] = {{".poly", LH_PLC_POLY},  {".smesh", LH_PLC_SMESH}, {".node", LH_PLC_NODE},
+                  {".off", LH_PLC_OFF},    {".ply", LH_PLC_PLY},     {".stl", LH_PLC_STL},
+                  {".mesh", LH_PLC_MEDIT}, {".obj", LH_PLC_OBJ}};
     for (size_t i = 0; name && i < sizeof by_ext / sizeof by_ext[0]; i++)
         if (ends_with(name, by_ext[i].ext)) return by_ext[i].f;
     if (starts_with(head, len, "ply")) return LH_PLC_PLY;
@@ -65,8 +67,8 @@ static lh_status read_format(lh__scan *s, lh__plc_build *b, lh_plc_format format
     }
 }
 
-lh_status lh_plc_read(FILE *f, const char *name, lh_plc_format format,
-                      const lh_allocator *alloc, lh_plc *out, lh_error *err)
+lh_status lh_plc_read(FILE *f, const char *name, lh_plc_format format, const lh_allocator *alloc,
+                      lh_plc *out, lh_error *err)
 {
     lh__error_clear(err);
     lh__plc_build b;
