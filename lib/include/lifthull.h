@@ -1169,7 +1169,11 @@ LH_API void lh_plc_free(lh_plc *g);
  * meet elsewhere too, or overlap in a plane. Writes at most cap pairs (facet indices,
  * the smaller first, pairs sorted) into pairs (2*cap lh_index; may be NULL when cap is
  * 0) and the number of intersecting pairs into *count.
- * Returns LH_OK, LH_ERR_INVALID_ARGUMENT, LH_ERR_NONFINITE, LH_ERR_NOMEM.
+ * Returns LH_OK; LH_ERR_INVALID_ARGUMENT, LH_ERR_NONFINITE, LH_ERR_TOO_LARGE, and the
+ * facet triangulation's refusals, err->message naming the facet: LH_ERR_DEGENERATE (a
+ * facet of collinear points, a hole point carving all of it, a projection merging two
+ * points of a facet that is not planar), LH_ERR_CROSSING_SEGMENTS (its edges cross
+ * in its plane); LH_ERR_NOMEM.
  */
 LH_API lh_status lh_plc_intersections(const lh_plc *g, const lh_allocator *alloc, size_t cap,
                                       lh_index *pairs, size_t *count, lh_error *err);
@@ -1198,15 +1202,21 @@ LH_API void lh_tetmesh_options_default(lh_tetmesh_options *opt);
  * lh_tetrahedralize: a tetrahedralization of the PLC's domain in which every facet is
  * a union of triangles and every segment (facet edges included) a union of edges
  * (docs/meshing3d.md). Exact: every decision is an exact predicate; Steiner points are
- * constructions rounded once each, so one put on a segment or a facet is within an
- * ulp of it, not necessarily exactly on it (lh_tetmesh_stats counts those that are
- * not). Holes are carved by flood fill from the hole points and from outside (unless
- * convex_hull); regions are labelled by flood fill from the region points.
- * Returns LH_OK and *out; else *out NULL and err->message names the fault:
- * LH_ERR_INVALID_ARGUMENT (an index out of range, a NULL array with a count, an
- * option out of range), LH_ERR_NONFINITE, LH_ERR_DEGENERATE (all points coplanar, or
- * every tetrahedron carved away), LH_ERR_INTERSECTING_FACETS, LH_ERR_STEINER_LIMIT,
- * LH_ERR_TOO_LARGE, LH_ERR_NOMEM.
+ * floating-point constructions, so one put on a segment or a facet is within a few
+ * ulps of it, not necessarily exactly on it (lh_tetmesh_stats counts those that are
+ * not). Exact duplicate points are merged into the first; a facet that is not exactly
+ * planar is recovered as the mesh faces on its points that span its polygons. Holes
+ * are carved by flood fill from the hole points and from outside (unless convex_hull,
+ * or the PLC has no facet: then the mesh is the Delaunay tetrahedralization of the
+ * points); regions are labelled by flood fill from the region points.
+ * Returns LH_OK and *out; else *out NULL and err->message names the fault (with the
+ * item's line, "LINE: ...", when the PLC came from a reader):
+ * LH_ERR_INVALID_ARGUMENT (an index out of range, a NULL array with a count, a facet
+ * without a polygon of 3 or more points), LH_ERR_NONFINITE, LH_ERR_DEGENERATE (all
+ * points coplanar, a zero-area facet, a hole or region point on a facet, every
+ * tetrahedron carved away), LH_ERR_CROSSING_SEGMENTS (a facet's edges cross in its
+ * plane), LH_ERR_INTERSECTING_FACETS (naming the first pairs), LH_ERR_STEINER_LIMIT
+ * (max_steiner, -Y, or recovery that does not settle), LH_ERR_TOO_LARGE, LH_ERR_NOMEM.
  */
 typedef struct lh_tetmesh lh_tetmesh;
 LH_API lh_status lh_tetrahedralize(const lh_plc *g, const lh_tetmesh_options *opt,
