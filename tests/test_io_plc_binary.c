@@ -237,6 +237,8 @@ typedef struct bad_case {
 
 static void check_bad(lh_test_state *lh_t_, const bad_case *c)
 {
+    /* a count past 2^31 - 2 is too large only with 32-bit indices */
+    if (sizeof(lh_index) != 4 && strstr(c->msg, "2147483646")) return;
     lh_plc g;
     char msg[300];
     LH_EXPECT_EQ_INT(rd(c->name, c->text, c->len, 0, &g, msg), c->status);
