@@ -53,7 +53,7 @@ static int decode(const uint8_t *d, size_t size, input *in)
     in->opt.convex_hull = d[0] & 1;
     in->opt.check_intersections = !(d[0] & 2);
     in->opt.region_attributes = (d[0] >> 5) & 1;
-    in->opt.max_steiner = 4000;
+    in->opt.max_steiner = 400; /* bounds the time of recovery that cannot settle */
     int int8 = (d[0] >> 2) & 1, e = scales[(d[0] >> 3) & 3];
     size_t n = 4 + d[1] % 21, at = 2;
     if (size < at + 3 * n) return 0;

@@ -16,10 +16,12 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 secs="${1:-30}"
 seed="${LH_FUZZ_SEED:-1}"
-targets=(fuzz_delaunay fuzz_read fuzz_hull fuzz_check fuzz_cells fuzz_query fuzz_poly fuzz_trimesh)
+targets=(fuzz_delaunay fuzz_read fuzz_hull fuzz_check fuzz_cells fuzz_query fuzz_poly fuzz_trimesh
+         fuzz_plc_read fuzz_plc_binary fuzz_tetrahedralize)
 # -max_len per target: a few dozen points (the point targets cap n anyway); files for the readers
 declare -A max_len=([fuzz_delaunay]=400 [fuzz_read]=2048 [fuzz_hull]=300 [fuzz_check]=200
-                    [fuzz_cells]=1024 [fuzz_query]=200 [fuzz_poly]=2048 [fuzz_trimesh]=256)
+                    [fuzz_cells]=1024 [fuzz_query]=200 [fuzz_poly]=2048 [fuzz_trimesh]=256
+                    [fuzz_plc_read]=4096 [fuzz_plc_binary]=4096 [fuzz_tetrahedralize]=200)
 
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined"
 if ! { CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLH_BUILD_FUZZ=ON \
