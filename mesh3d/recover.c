@@ -44,11 +44,15 @@ static lh_status split_edges(t3_ctx *c)
         lh_status st = lh__t3_room(c, &c->vbuf, &c->vcap, cl);
         if (st != LH_OK) return st;
         lh__t3_chain(c, (lh_index)s, c->vbuf, c->vcap);
+        if (c->seg_seen[s] && !lh__t3_seg_changed(c, s, c->seg_seen[s] - 1)) continue;
         /* splits are queued, not done: the chain stays as it is this round */
+        int whole = 1;
         for (size_t i = 0; i + 1 < cl; i++) {
             if (lh__t3_has_edge(c, c->vbuf[i], c->vbuf[i + 1])) continue;
+            whole = 0;
             if ((st = lh__t3_split(c, (lh_index)s, i)) != LH_OK) return st;
         }
+        c->seg_seen[s] = whole ? (uint32_t)c->rounds + 1 : 0;
     }
     return LH_OK;
 }
@@ -56,9 +60,11 @@ static lh_status split_edges(t3_ctx *c)
 static lh_status split_faces(t3_ctx *c)
 {
     for (size_t k = 0; k < c->patch_count; k++) {
+        if (c->patch_seen[k] && !lh__t3_patch_changed(c, k, c->patch_seen[k] - 1)) continue;
         int ok;
         lh_status st = lh__t3_patch_check(c, k, 1, &ok);
         if (st != LH_OK) return st;
+        c->patch_seen[k] = ok ? (uint32_t)c->rounds + 1 : 0;
     }
     return LH_OK;
 }

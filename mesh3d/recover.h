@@ -28,6 +28,8 @@
 
 #include "t3.h"
 
+#include <stdint.h>
+
 /* A segment: the straight line between input points a and b, split into a chain. */
 typedef struct t3_seg {
     lh_index a, b;   /* endpoints, a before b in coordinates (lexicographic)      */
@@ -92,7 +94,14 @@ typedef struct t3_ctx {
     size_t stamp_cap;
     lh_index *vbuf, *fbuf, *ebuf; /* scratch: points, faces, edges                    */
     size_t vcap, fcap, ecap;
-    size_t steiner; /* Steiner points inserted                                */
+    /* what changed: a constraint whose points all kept their stars since it was found
+       in the mesh is still in it (Bowyer-Watson: a tet destroyed or made by a batch of
+       insertions has only points that end up beside an inserted one) */
+    uint32_t *changed; /* per point: the round its star last changed (0: never)      */
+    size_t changed_cap;
+    uint32_t *seg_seen, *patch_seen; /* 1 + the round a segment, a patch was last
+                                        found whole in the mesh (0: not)             */
+    size_t steiner;                  /* Steiner points inserted                                */
     size_t rounds;
 } t3_ctx;
 
@@ -141,6 +150,8 @@ lh_status lh__t3_split(t3_ctx *c, lh_index s, size_t i);
 size_t lh__t3_chain(const t3_ctx *c, lh_index s, lh_index *buf, size_t cap);
 /* Inserts the queued split points, merges them into the chains, rebuilds the stars. */
 lh_status lh__t3_commit(t3_ctx *c);
+/* Whether a point of segment s's chain changed since round r. */
+int lh__t3_seg_changed(const t3_ctx *c, size_t s, uint32_t r);
 /* Sorts the chains' nodes (by segment, then parameter) and rebuilds node_first. */
 lh_status lh__t3_chains_sort(t3_ctx *c);
 
@@ -154,6 +165,8 @@ lh_index lh__t3_seg_of(const t3_ctx *c, lh_index p, lh_index q);
  * when split is set, a split queued: its longest uncovered subsegment, else a point
  * inside it where its faces stop short. */
 lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int split, int *ok);
+/* Whether a point of patch k (corners, chains, points inside) changed since round r. */
+int lh__t3_patch_changed(const t3_ctx *c, size_t k, uint32_t r);
 /* The faces covering patch k (once lh__t3_patch_check said ok), as sorted triples:
  * *faces points into scratch valid until the next call. */
 lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t *count);

@@ -407,6 +407,21 @@ lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int want_split, int *ok)
     return st;
 }
 
+int lh__t3_patch_changed(const t3_ctx *c, size_t k, uint32_t r)
+{
+    for (lh_index a = c->patch_first[k]; a < c->patch_first[k + 1]; a++) {
+        const size_t t = (size_t)c->patch_tri[a];
+        for (int j = 0; j < 3; j++) {
+            if (c->changed[c->tri[3 * t + j]] > r) return 1;
+            lh_index s = c->tri_seg[3 * t + j];
+            if (s >= 0 && lh__t3_seg_changed(c, (size_t)s, r)) return 1;
+        }
+    }
+    for (lh_index i = c->pnode_first[k]; i < c->pnode_first[k + 1]; i++)
+        if (c->changed[c->pnode[i].p] > r) return 1;
+    return 0;
+}
+
 lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t *count)
 {
     lh_index f[3];

@@ -277,6 +277,38 @@ static lh_status number_fresh(t3_ctx *c, double *x, size_t *fresh)
     return LH_OK;
 }
 
+int lh__t3_seg_changed(const t3_ctx *c, size_t s, uint32_t r)
+{
+    if (c->changed[c->seg[s].a] > r || c->changed[c->seg[s].b] > r) return 1;
+    for (lh_index i = c->node_first[s]; i < c->node_first[s + 1]; i++)
+        if (c->changed[c->node[i].p] > r) return 1;
+    return 0;
+}
+
+/* Marks what this round's insertions changed: the new points and every point beside
+ * one (their stars), and the points put on chains (their chains changed). */
+static lh_status mark_changed(t3_ctx *c, size_t first_new, const t3_node *nodes, size_t m)
+{
+    if (c->changed_cap < c->n) {
+        size_t cap = 2 * c->n;
+        uint32_t *x = lh__alloc(&c->al, cap * sizeof(uint32_t));
+        if (!x) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+        memset(x, 0, cap * sizeof(uint32_t));
+        if (c->changed_cap) memcpy(x, c->changed, c->changed_cap * sizeof(uint32_t));
+        lh__free(&c->al, c->changed);
+        c->changed = x, c->changed_cap = cap;
+    }
+    const uint32_t r = (uint32_t)c->rounds;
+    const lh_index *s = lh_tri_simplices(c->dt);
+    for (size_t p = first_new; p < c->n; p++) {
+        if (c->dup[p] != (lh_index)p) continue;
+        for (lh_index i = c->star_first[p]; i < c->star_first[p + 1]; i++)
+            for (int j = 0; j < 4; j++) c->changed[s[4 * (size_t)c->star[i] + j]] = r;
+    }
+    for (size_t i = 0; i < m; i++) c->changed[nodes[i].p] = r;
+    return LH_OK;
+}
+
 lh_status lh__t3_commit(t3_ctx *c)
 {
     size_t m = c->new_count, fresh = 0;
@@ -293,6 +325,7 @@ lh_status lh__t3_commit(t3_ctx *c)
     c->dup = lh_tri_duplicate_of(c->dt);
     for (size_t i = 0; i < fresh; i++)
         if (c->dup[c->n + i] == (lh_index)(c->n + i)) c->steiner++;
+    size_t first_new = c->n;
     c->n += fresh;
     size_t before = c->node_count + c->pnode_count;
     for (size_t i = 0; i < m; i++) {
@@ -305,11 +338,14 @@ lh_status lh__t3_commit(t3_ctx *c)
             c->pnode[c->pnode_count++] = nd;
         }
     }
-    c->new_count = 0;
+    for (size_t i = 0; i < m; i++) c->new_node[i].p = c->dup[c->new_node[i].p];
     st = lh__t3_chains_sort(c);
     if (st == LH_OK && c->node_count + c->pnode_count == before)
         return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                           "boundary recovery made no progress: every split point fell on a "
                           "point already there");
-    return st == LH_OK ? lh__t3_stars(c) : st;
+    if (st == LH_OK) st = lh__t3_stars(c);
+    if (st == LH_OK) st = mark_changed(c, first_new, c->new_node, m);
+    c->new_count = 0;
+    return st;
 }

@@ -17,7 +17,7 @@ static void ctx_free(t3_ctx *c)
                       c->seg_key,  c->patch_first, c->patch_tri, c->patch_facet, c->patch_axis,
                       c->pnode,    c->pnode_first, c->node,      c->node_first,  c->new_xyz,
                       c->new_node, c->star_first,  c->star,      c->stamp,       c->vbuf,
-                      c->fbuf,     c->ebuf};
+                      c->fbuf,     c->ebuf,        c->changed,   c->seg_seen,    c->patch_seen};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
     lh_tri_free(c->dt);
     lh_pred_free(c->pred);
@@ -83,6 +83,11 @@ static lh_status constraints(t3_ctx *c, size_t *nonplanar)
     c->node_first = lh__alloc(&c->al, (c->seg_count + 1) * sizeof(lh_index)); /* no nodes yet */
     if (!c->node_first) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     memset(c->node_first, 0, (c->seg_count + 1) * sizeof(lh_index));
+    c->seg_seen = lh__alloc(&c->al, (c->seg_count + 1) * sizeof(uint32_t));
+    c->patch_seen = lh__alloc(&c->al, (c->patch_count + 1) * sizeof(uint32_t));
+    if (!c->seg_seen || !c->patch_seen) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    memset(c->seg_seen, 0, (c->seg_count + 1) * sizeof(uint32_t));
+    memset(c->patch_seen, 0, (c->patch_count + 1) * sizeof(uint32_t));
     return lh__t3_stars(c);
 }
 
