@@ -62,10 +62,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static const char *names[] = {"in", "in.ele", "cells.txt", "x"};
     static const size_t points[] = {0, 1, 3, 4, 10, 100, 1000, INT32_MAX};
     if (size < 1) return 0;
-    FILE *f = tmpfile();
+    FILE *f = lh_fuzz_file(data, size);
     if (!f) return 0;
-    if (size > 1 && fwrite(data + 1, 1, size - 1, f) != size - 1) abort();
-    rewind(f);
     long live = 0;
     lh_allocator a = {lh_fuzz_count_alloc, lh_fuzz_count_free, &live};
     const char *name = names[(data[0] >> 3) & 3];

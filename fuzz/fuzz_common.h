@@ -1,8 +1,11 @@
 /* fuzz_common.h — what the reader targets share: a counting allocator (nothing may
- * leak) and the one-line message contract of lifthull's readers. */
+ * leak), the input as a file, and the one-line message contract of lifthull's
+ * readers. */
 #ifndef LH_FUZZ_COMMON_H
 #define LH_FUZZ_COMMON_H
 
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,6 +20,17 @@ static inline void lh_fuzz_count_free(void *user, void *ptr)
 {
     --*(long *)user;
     free(ptr);
+}
+
+/* A temporary file holding data[1..size) (data[0] picks the reader's options),
+ * rewound; NULL when none can be made. */
+static inline FILE *lh_fuzz_file(const uint8_t *data, size_t size)
+{
+    FILE *f = tmpfile();
+    if (!f) return NULL;
+    if (size > 1 && fwrite(data + 1, 1, size - 1, f) != size - 1) abort();
+    rewind(f);
+    return f;
 }
 
 /* msg is "NAME:LINE:COL: " (LINE, COL positive) then printable bytes only; else abort. */

@@ -112,10 +112,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                                             LH_PLC_STL};
     if (size < 1) return 0;
     int pick = data[0] % 5;
-    FILE *f = tmpfile();
+    FILE *f = lh_fuzz_file(data, size);
     if (!f) return 0;
-    if (size > 1 && fwrite(data + 1, 1, size - 1, f) != size - 1) abort();
-    rewind(f);
     long live = 0;
     lh_allocator a = {lh_fuzz_count_alloc, lh_fuzz_count_free, &live};
     lh_error err;

@@ -63,29 +63,42 @@ static lh_status grow(lh__plc_build *b, void **arr, size_t *cap, size_t need, si
     return LH_OK;
 }
 
-/* grow() for several parallel arrays sharing one count and capacity. */
 #define GROW(b, arr, capv, need, size) grow((b), (void **)&(arr), &(capv), (need), (size))
+
+/* One of several parallel arrays that share a count and a capacity. */
+typedef struct column {
+    void **arr;
+    size_t size; /* bytes per element */
+} column;
+
+/* grow() for parallel arrays: room for `need` elements in each, *cap their shared
+ * capacity (updated once all have grown). */
+static lh_status grow_columns(lh__plc_build *b, const column *cols, int ncols, size_t need,
+                              size_t *cap)
+{
+    size_t c = *cap;
+    for (int i = 0; i < ncols; i++) {
+        c = *cap;
+        lh_status st = grow(b, cols[i].arr, &c, need, cols[i].size);
+        if (st != LH_OK) return st;
+    }
+    *cap = c;
+    return LH_OK;
+}
 
 lh_status lh__plc_point(lh__plc_build *b, const double xyz[3], const double *attr, lh_index marker,
                         size_t line)
 {
     lh_plc *g = b->g;
-    size_t n = g->n, cap = b->cap_points, k = (size_t)g->attr_count;
-    lh_status st;
-    size_t c;
-    c = cap;
-    if ((st = GROW(b, g->xyz, c, n + 1, 3 * sizeof(double)))) return st;
-    c = cap;
-    if ((st = GROW(b, g->point_marker, c, n + 1, sizeof(lh_index)))) return st;
-    c = cap;
-    if ((st = GROW(b, g->point_line, c, n + 1, sizeof(size_t)))) return st;
-    if (k) {
-        if (k > SIZE_MAX / sizeof(double) / 4) return LH_ERR_TOO_LARGE;
-        c = cap;
-        if ((st = GROW(b, g->attr, c, n + 1, k * sizeof(double)))) return st;
-        memcpy(g->attr + n * k, attr, k * sizeof(double));
-    }
-    b->cap_points = c;
+    size_t n = g->n, k = (size_t)g->attr_count;
+    if (k > SIZE_MAX / sizeof(double) / 4) return LH_ERR_TOO_LARGE;
+    const column cols[] = {{(void **)&g->xyz, 3 * sizeof(double)},
+                           {(void **)&g->point_marker, sizeof(lh_index)},
+                           {(void **)&g->point_line, sizeof(size_t)},
+                           {(void **)&g->attr, k * sizeof(double)}};
+    lh_status st = grow_columns(b, cols, k ? 4 : 3, n + 1, &b->cap_points);
+    if (st != LH_OK) return st;
+    if (k) memcpy(g->attr + n * k, attr, k * sizeof(double));
     memcpy(g->xyz + 3 * n, xyz, 3 * sizeof(double));
     g->point_marker[n] = marker;
     g->point_line[n] = line;
@@ -96,18 +109,14 @@ lh_status lh__plc_point(lh__plc_build *b, const double xyz[3], const double *att
 lh_status lh__plc_facet(lh__plc_build *b, lh_index marker, size_t line)
 {
     lh_plc *g = b->g;
-    size_t f = g->facet_count, cap = b->cap_facets, c;
-    lh_status st;
+    size_t f = g->facet_count;
     /* facet_first and facet_hole_first get one slot more, for the closing offset. */
-    c = cap;
-    if ((st = GROW(b, g->facet_first, c, f + 2, sizeof(lh_index)))) return st;
-    c = cap;
-    if ((st = GROW(b, g->facet_hole_first, c, f + 2, sizeof(lh_index)))) return st;
-    c = cap;
-    if ((st = GROW(b, g->facet_marker, c, f + 2, sizeof(lh_index)))) return st;
-    c = cap;
-    if ((st = GROW(b, g->facet_line, c, f + 2, sizeof(size_t)))) return st;
-    b->cap_facets = c;
+    const column cols[] = {{(void **)&g->facet_first, sizeof(lh_index)},
+                           {(void **)&g->facet_hole_first, sizeof(lh_index)},
+                           {(void **)&g->facet_marker, sizeof(lh_index)},
+                           {(void **)&g->facet_line, sizeof(size_t)}};
+    lh_status st = grow_columns(b, cols, 4, f + 2, &b->cap_facets);
+    if (st != LH_OK) return st;
     g->facet_first[f] = (lh_index)g->polygon_count;
     g->facet_hole_first[f] = (lh_index)b->facet_holes;
     g->facet_marker[f] = marker;
@@ -148,15 +157,12 @@ lh_status lh__plc_facet_hole(lh__plc_build *b, const double xyz[3])
 lh_status lh__plc_segment(lh__plc_build *b, lh_index p, lh_index q, lh_index marker, size_t line)
 {
     lh_plc *g = b->g;
-    size_t s = g->segment_count, cap = b->cap_segments, c;
-    lh_status st;
-    c = cap;
-    if ((st = GROW(b, g->segments, c, s + 1, 2 * sizeof(lh_index)))) return st;
-    c = cap;
-    if ((st = GROW(b, g->segment_marker, c, s + 1, sizeof(lh_index)))) return st;
-    c = cap;
-    if ((st = GROW(b, g->segment_line, c, s + 1, sizeof(size_t)))) return st;
-    b->cap_segments = c;
+    size_t s = g->segment_count;
+    const column cols[] = {{(void **)&g->segments, 2 * sizeof(lh_index)},
+                           {(void **)&g->segment_marker, sizeof(lh_index)},
+                           {(void **)&g->segment_line, sizeof(size_t)}};
+    lh_status st = grow_columns(b, cols, 3, s + 1, &b->cap_segments);
+    if (st != LH_OK) return st;
     g->segments[2 * s] = p;
     g->segments[2 * s + 1] = q;
     g->segment_marker[s] = marker;
@@ -170,13 +176,11 @@ lh_status lh__plc_segment(lh__plc_build *b, lh_index p, lh_index q, lh_index mar
 static lh_status seed_add(lh__plc_build *b, double **vals, size_t **lines, size_t *count,
                           size_t *capv, const double *v, int width, size_t line)
 {
-    size_t n = *count, cap = *capv, c;
-    lh_status st;
-    c = cap;
-    if ((st = GROW(b, *vals, c, n + 1, (size_t)width * sizeof(double)))) return st;
-    c = cap;
-    if ((st = GROW(b, *lines, c, n + 1, sizeof(size_t)))) return st;
-    *capv = c;
+    size_t n = *count;
+    const column cols[] = {{(void **)vals, (size_t)width * sizeof(double)},
+                           {(void **)lines, sizeof(size_t)}};
+    lh_status st = grow_columns(b, cols, 2, n + 1, capv);
+    if (st != LH_OK) return st;
     memcpy(*vals + (size_t)width * n, v, (size_t)width * sizeof(double));
     (*lines)[n] = line;
     *count = n + 1;
