@@ -4,7 +4,8 @@
  * from one endpoint to the other, and every facet is the union of its subfaces.
  *
  * A facet F is the union of its subfaces S_F when, in F's plane projected to the
- * coordinate plane of F's normal's largest component (an affine bijection of the
+ * coordinate plane that lh__facet_axis picks (that of its first ring's Newell
+ * normal's largest component, where F keeps its area: an affine bijection of the
  * plane, so areas keep their ratios and containment its answers):
  *  (a) every subface has nonzero area there and the sum of |area| over S_F equals
  *      the area of F (outer polygon, plus polygons outside it, minus the polygons
@@ -19,9 +20,12 @@
  * Points not exactly in F's plane (or on a segment's line) are accepted when they
  * are Steiner points (index >= g->n) within rounding's reach of it (reach()), and
  * counted once each in off_exact; a facet with such a point among its subfaces'
- * is held to (b) only, since rounding moves its area.
+ * is held to (b) only, since rounding moves its area. A facet whose points are not
+ * coplanar is triangulated in that same projection (facets.h), and held to (a) and
+ * (b) there.
  */
 #include "check_plc.h"
+#include "facets.h"
 #include "lh_sort.h"
 
 #include <float.h>
@@ -190,28 +194,6 @@ static void facet_plane(pchk *k, size_t f)
         }
 }
 
-/* The axis of the largest normal component whose projection is not degenerate. */
-static int facet_axis(pchk *k, const lh_index *pl)
-{
-    const double *a = lh__tchk_pt(k->c, pl[0]), *b = lh__tchk_pt(k->c, pl[1]),
-                 *d = lh__tchk_pt(k->c, pl[2]);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-                 w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-    double nrm[3] = {fabs(u[1] * w[2] - u[2] * w[1]), fabs(u[2] * w[0] - u[0] * w[2]),
-                     fabs(u[0] * w[1] - u[1] * w[0])};
-    for (int tries = 0; tries < 3; tries++) {
-        int best = 0;
-        for (int i = 1; i < 3; i++)
-            if (nrm[i] > nrm[best]) best = i;
-        double q[3][2];
-        lh__pchk_proj(a, best, q[0]), lh__pchk_proj(b, best, q[1]), lh__pchk_proj(d, best, q[2]);
-        const double *p[3] = {q[0], q[1], q[2]};
-        if (lh_orient(k->c->pr, 2, p) != 0) return best;
-        nrm[best] = -1;
-    }
-    return 0; /* not reached: three non-collinear points project well somewhere */
-}
-
 /* eps: the first polygon of 3 or more points is the outer one (+1); another is a
  * hole (-1) around a hole point of the facet, a separate piece (+1) with a point
  * outside the outer one, else a constraint inside the facet (0). */
@@ -249,7 +231,11 @@ void lh__pchk_prepare_facets(pchk *k)
         facet_plane(k, f);
         lh_index *pl = k->plane + 3 * f;
         k->planar[f] = pl[2] >= 0;
-        k->axis[f] = pl[2] >= 0 ? facet_axis(k, pl) : 0;
+        double nrm[3];
+        k->axis[f] = pl[2] >= 0
+                         ? lh__facet_axis(k->c->pr, g, k->c->xyz, f, lh__tchk_pt(k->c, pl[0]),
+                                          lh__tchk_pt(k->c, pl[1]), lh__tchk_pt(k->c, pl[2]), nrm)
+                         : 0;
         for (size_t p = (size_t)g->facet_first[f];
              k->planar[f] && p < (size_t)g->facet_first[f + 1]; p++)
             for (size_t i = 0; i < lh__pchk_poly_len(g, p); i++)
@@ -393,6 +379,33 @@ static const hrec *next_on(pchk *k, const hrec *h, size_t nh, lh_index a, lh_ind
     return best;
 }
 
+/* Whether the ray from mesh point v towards w enters no tetrahedron at v: w lies in
+ * none of their closed cones at v. */
+static int leaves_mesh(pchk *k, lh_index v, lh_index w)
+{
+    for (size_t t = 0; t < k->c->nt; t++) {
+        const lh_index *q = k->c->tets + 4 * t;
+        int i = 0;
+        while (i < 4 && q[i] != v) i++;
+        if (i == 4) continue;
+        const lh_index a = q[(i + 1) % 4], b = q[(i + 2) % 4], c = q[(i + 3) % 4];
+        const int s = lh__pchk_orient3i(k, v, a, b, c); /* each face at v sees the far corner so */
+        if (s * lh__pchk_orient3i(k, v, a, b, w) >= 0 &&
+            s * lh__pchk_orient3i(k, v, b, c, w) >= 0 && s * lh__pchk_orient3i(k, v, c, a, w) >= 0)
+            return 0;
+    }
+    return 1;
+}
+
+static lh_status seg_not_covered(pchk *k, size_t s, lh_index cur)
+{
+    const long long a = k->seg[2 * s], b = k->seg[2 * s + 1];
+    return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
+                         "segment %zu (%lld %lld) is not covered: its chain of "
+                         "subsegments from %lld stops at %lld",
+                         s, a, b, a, (long long)cur);
+}
+
 static lh_status walk_segment(pchk *k, size_t s)
 {
     const lh_index a = k->seg[2 * s], b = k->seg[2 * s + 1];
@@ -417,11 +430,11 @@ static lh_status walk_segment(pchk *k, size_t s)
         const hrec *nx = lo < nh && k->h[lo].from == cur
                              ? next_on(k, k->h + lo, nh - lo, a, b, axis, &off)
                              : NULL;
-        if (!nx)
-            return lh__error_say(k->c->err, LH_ERR_INVALID_MESH,
-                                 "segment %zu (%lld %lld) is not covered: its chain of "
-                                 "subsegments from %lld stops at %lld",
-                                 s, (long long)a, (long long)b, (long long)a, (long long)cur);
+        if (!nx && cur == a && leaves_mesh(k, a, b) && leaves_mesh(k, b, a)) {
+            k->away[k->naway++] = (lh_index)s; /* decided with the facets */
+            return LH_OK;
+        }
+        if (!nx) return seg_not_covered(k, s, cur);
         if (off) lh__pchk_mark_off(k, nx->to);
         if (k->seg_of[nx->sub] < 0) k->seg_of[nx->sub] = (lh_index)s;
         if (nx->to != b && k->pt_seg[nx->to] < 0) k->pt_seg[nx->to] = (lh_index)s;
@@ -448,6 +461,33 @@ static lh_status check_segments(pchk *k)
     return LH_OK;
 }
 
+/* A segment with no subsegment at all, leaving the mesh at both its ends, lies
+ * outside it: it crosses no facet, and the mesh's boundary is made of facets. It
+ * was carved away whole with the region around it (outside the surface, or a hole)
+ * when it is a polygon edge of facets that all were, with no subface: as a facet may
+ * be (check_facets.c). A free segment may not. */
+static lh_status check_away(pchk *k)
+{
+    const lh_plc *g = k->g;
+    for (size_t i = 0; i < k->naway; i++) {
+        const size_t s = (size_t)k->away[i];
+        const lh_index a = k->seg[2 * s], b = k->seg[2 * s + 1];
+        int bounds_kept = s < g->segment_count;
+        for (size_t f = 0; !bounds_kept && f < g->facet_count; f++)
+            for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++) {
+                const size_t len = lh__pchk_poly_len(g, p);
+                const lh_index *v = lh__pchk_poly_v(g, p);
+                for (size_t j = 0; len >= 2 && j < (len == 2 ? 1 : len); j++) {
+                    const lh_index x = v[j], y = v[(j + 1) % len];
+                    if ((x == a && y == b) || (x == b && y == a))
+                        bounds_kept |= k->ffirst[f + 1] > k->ffirst[f];
+                }
+            }
+        if (bounds_kept) return seg_not_covered(k, s, a);
+    }
+    return LH_OK;
+}
+
 /* ---- entry ----------------------------------------------------------------------- */
 
 static int coords_scale(const lh__tchk *c)
@@ -465,7 +505,8 @@ static int coords_scale(const lh__tchk *c)
 static void pchk_free(pchk *k)
 {
     const lh_allocator *al = &k->c->al;
-    lh__free(al, k->seg), lh__free(al, k->h), lh__free(al, k->seg_of), lh__free(al, k->pt_seg);
+    lh__free(al, k->seg), lh__free(al, k->away), lh__free(al, k->h), lh__free(al, k->seg_of),
+        lh__free(al, k->pt_seg);
     lh__free(al, k->plane), lh__free(al, k->axis), lh__free(al, k->planar);
     lh__free(al, k->eps), lh__free(al, k->par), lh__free(al, k->ffirst);
     lh__free(al, k->flist), lh__free(al, k->pe), lh__free(al, k->re);
@@ -540,6 +581,7 @@ static lh_status check_merged(lh__tchk *c)
     const size_t nfac = g->facet_count, np = g->facet_count ? g->polygon_count : 0;
     pchk k = {.c = c, .g = g};
     k.seg = lh__alloc(al, (2 * (g->segment_count + nv) + 1) * sizeof *k.seg);
+    k.away = lh__alloc(al, (g->segment_count + nv + 1) * sizeof *k.away);
     k.h = lh__alloc(al, (2 * c->ne + 1) * sizeof *k.h);
     k.seg_of = lh__alloc(al, (c->ne + 1) * sizeof *k.seg_of);
     k.pt_seg = lh__alloc(al, (c->n + 1) * sizeof *k.pt_seg);
@@ -553,8 +595,8 @@ static lh_status check_merged(lh__tchk *c)
     k.pe = lh__alloc(al, (3 * c->nf + 1) * sizeof *k.pe);
     k.re = lh__alloc(al, (nv + 1) * sizeof *k.re);
     const int scale = coords_scale(c);
-    st = k.seg && k.h && k.seg_of && k.pt_seg && k.plane && k.axis && k.planar && k.eps && k.par &&
-                 k.ffirst && k.flist && k.pe && k.re
+    st = k.seg && k.away && k.h && k.seg_of && k.pt_seg && k.plane && k.axis && k.planar && k.eps &&
+                 k.par && k.ffirst && k.flist && k.pe && k.re
              ? LH_OK
              : LH_ERR_NOMEM;
     if (st == LH_OK) st = lh__detsum_create(al, 2, scale, &k.sum);
@@ -566,6 +608,7 @@ static lh_status check_merged(lh__tchk *c)
     lh__free(al, tmp);
     if (st == LH_OK) st = check_segments(&k);
     if (st == LH_OK) st = lh__pchk_check_facets(&k);
+    if (st == LH_OK) st = check_away(&k);
     pchk_free(&k);
     return st;
 }

@@ -20,6 +20,9 @@ typedef struct pchk {
     const lh_plc *g;
     size_t ns;        /* segments                                                */
     lh_index *seg;    /* 2 per segment                                            */
+    lh_index *away;   /* segments with no subsegment that leave the mesh at both
+                         ends: carved away if their facets are (check_away)       */
+    size_t naway;
     hrec *h;          /* 2 per subsegment, sorted by (from, to)                   */
     lh_index *seg_of; /* per subsegment: the first segment whose chain has it     */
     lh_index *pt_seg; /* per point: the first segment whose chain passes it, -1   */

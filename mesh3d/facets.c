@@ -229,20 +229,20 @@ static int collinear3(lh_pred *pred, const double *a, const double *b, const dou
 /* Newell's normal of the polygon ring (m vertices), relative to its first vertex, the
  * differences halved and scaled by a power of two to the unit range first: no
  * product over- or underflows at any scale, and a scaled input gives the same. */
-static void newell(const lh_plc *g, const lh_index *ring, size_t m, double nrm[3])
+static void newell(const double *xyz, const lh_index *ring, size_t m, double nrm[3])
 {
-    const double *o = pt(g, ring[0]);
+    const double *o = xyz + 3 * (size_t)ring[0];
     double big = 0;
     for (size_t i = 1; i < m; i++)
         for (int k = 0; k < 3; k++) {
-            double d = pt(g, ring[i])[k] / 2 - o[k] / 2;
+            double d = xyz[3 * (size_t)ring[i] + k] / 2 - o[k] / 2;
             big = d > big ? d : -d > big ? -d : big;
         }
     int e = 0;
     frexp(big, &e);
     nrm[0] = nrm[1] = nrm[2] = 0;
     for (size_t i = 1; i + 1 < m; i++) {
-        const double *p = pt(g, ring[i]), *q = pt(g, ring[i + 1]);
+        const double *p = xyz + 3 * (size_t)ring[i], *q = xyz + 3 * (size_t)ring[i + 1];
         double u[3], v[3];
         for (int k = 0; k < 3; k++)
             u[k] = ldexp(p[k] / 2 - o[k] / 2, -e), v[k] = ldexp(q[k] / 2 - o[k] / 2, -e);
@@ -269,6 +269,18 @@ static int drop_axis(lh_pred *pred, const double nrm[3], const double *a, const 
             if (k < 0 || absd(nrm[i]) > absd(nrm[k])) k = i;
         }
     return k;
+}
+
+int lh__facet_axis(lh_pred *pred, const lh_plc *g, const double *xyz, size_t f, const double *a,
+                   const double *b, const double *c, double nrm[3])
+{
+    lh_index p = g->facet_first[f];
+    while (p < g->facet_first[f + 1] && g->polygon_first[p + 1] - g->polygon_first[p] < 3) p++;
+    nrm[0] = nrm[1] = nrm[2] = 0; /* no ring: any axis that keeps a, b, c apart */
+    if (p < g->facet_first[f + 1])
+        newell(xyz, g->polygon_vertices + g->polygon_first[p],
+               (size_t)(g->polygon_first[p + 1] - g->polygon_first[p]), nrm);
+    return drop_axis(pred, nrm, a, b, c);
 }
 
 /* +1 when the ring (m vertices, local numbers in w->xy) turns counterclockwise in
@@ -446,8 +458,8 @@ static lh_status facet_project(facet_work *w, size_t f, lh_index ring0, lh_error
     const lh_index *ring = g->polygon_vertices + g->polygon_first[ring0];
     const size_t m = (size_t)(g->polygon_first[ring0 + 1] - g->polygon_first[ring0]);
     double nrm[3];
-    newell(g, ring, m, nrm);
-    const int k = drop_axis(w->pred, nrm, a, b, c), i = (k + 1) % 3, j = (k + 2) % 3;
+    const int k = lh__facet_axis(w->pred, g, g->xyz, f, a, b, c, nrm), i = (k + 1) % 3,
+              j = (k + 2) % 3;
     for (size_t v = 0; v < w->nid; v++) {
         const double *p = pt(g, w->ids[v]);
         w->xy[2 * v] = p[i], w->xy[2 * v + 1] = p[j];

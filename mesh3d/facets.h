@@ -44,6 +44,16 @@ lh_status lh__facets_triangulate(const lh_plc *g, const lh_allocator *al, lh__fa
  * positively about +k. */
 int lh__orient2_along(lh_pred *pred, int k, const double *a, const double *b, const double *c);
 
+/* The axis (0..2) along which lh__facets_triangulate projects facet f of g (its
+ * points' coordinates in xyz, 3 each, which may be g->xyz): the
+ * largest component of the Newell normal of its first polygon of 3 or more vertices,
+ * returned in nrm (zero when it has none), unless the projection along it flattens
+ * a, b, c — the facet's first three non-collinear points in polygon order, points of
+ * equal coordinates counted once; then the largest that does not. A checker that
+ * projects a non-planar facet along it sees the triangulation that was made. */
+int lh__facet_axis(lh_pred *pred, const lh_plc *g, const double *xyz, size_t f, const double *a,
+                   const double *b, const double *c, double nrm[3]);
+
 /* Frees out's arrays (allocated with al) and zeroes it; a zeroed out is a no-op. */
 void lh__facet_tris_free(const lh_allocator *al, lh__facet_tris *out);
 

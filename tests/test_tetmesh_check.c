@@ -376,6 +376,30 @@ LH_TEST(conformity_faults)
     expect_msg(lh_t_, &m, m.par, 0, &m.g, "subface 0 has parent -7, not a facet (0..5) or -1");
 }
 
+/* A facet outside the mesh (a fin on a closed surface, carved away with the region
+ * around it) has no subface, and its polygon edges no subsegment: they pass. A free
+ * segment may not be missing, nor a facet edge that enters the mesh at an end. Point
+ * 8, (2 0 0), is in no tetrahedron. */
+LH_TEST(carved_away_segment_passes)
+{
+    tm m;
+    box(&m, 1);
+    box_plc(&m, 1);
+    m.xyz[24] = 2, m.xyz[25] = 0, m.xyz[26] = 0;
+    m.n = m.g.n = 9;
+    const lh_index fin[3] = {1, 8, 3}; /* in the bottom's plane, beside it */
+    add_facet(&m, fin, 3);
+    expect_ok(lh_t_, &m, m.par, 0, &m.g);
+    m.g.segments = m.segs, m.g.segment_count = 1;
+    m.segs[0] = 1, m.segs[1] = 8;
+    expect_msg(lh_t_, &m, m.par, 0, &m.g,
+               "segment 0 (1 8) is not covered: its chain of subsegments from 1 stops at 1");
+    m.g.segment_count = 0;
+    m.polygon_vertices[m.polygon_first[6]] = 6; /* the fin (6 8 3): edge 6 8 enters the cube */
+    expect_msg(lh_t_, &m, m.par, 0, &m.g,
+               "segment 12 (6 8) is not covered: its chain of subsegments from 6 stops at 6");
+}
+
 /* Two coplanar facets (the bottom halves of the 2-cube box) swap a triangle each:
  * the areas still agree, the subfaces' borders do not. */
 LH_TEST(facet_border_fault)
@@ -599,7 +623,8 @@ int main(int argc, char **argv)
     static const lh_test_case cases[] = {
         LH_CASE(boxes_pass), LH_CASE(tet_faults), LH_CASE(overlapping_tets),
         LH_CASE(edge_winding), LH_CASE(subface_and_subsegment_faults), LH_CASE(conformity_faults),
-        LH_CASE(facet_border_fault), LH_CASE(rounded_steiner_point_counted), LH_CASE(facet_steiner_point),
+        LH_CASE(carved_away_segment_passes), LH_CASE(facet_border_fault),
+        LH_CASE(rounded_steiner_point_counted), LH_CASE(facet_steiner_point),
         LH_CASE(facet_with_hole),
         LH_CASE(delaunay_meshes_pass), LH_CASE(arguments), LH_CASE(allocation_failures)};
     int rc = lh_test_main(cases, LH_COUNT(cases), argc, argv);

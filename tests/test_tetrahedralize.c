@@ -63,6 +63,8 @@ LH_TEST(models_mesh_and_conform)
         {"mesh3d/joint.off", 2106, 92},
         {"mesh3d/double-torus-example.off", 2, 2},
         {"mesh3d/mpi.off", 140, 31},
+        {"mesh3d/twisted-quad.poly", 0, 0},
+        {"mesh3d/outside-fin.poly", 0, 0},
         {"plc_bin/sphere.stl", 0, 0},
         {"plc_bin/sphere.ply", 0, 0},
     };
