@@ -16,18 +16,6 @@
 #include "m2_geom.h"
 #include "refine.h"
 
-/* The cosine of the smallest angle of triangle a, b, c (the largest cosine). */
-static double worst_cos(const double *a, const double *b, const double *c)
-{
-    const double *p[3] = {a, b, c};
-    double worst = -1;
-    for (int k = 0; k < 3; k++) {
-        const double cs = lh__g_cos(p[k], p[(k + 1) % 3], p[(k + 2) % 3]); /* scale-free */
-        worst = cs > worst ? cs : worst;
-    }
-    return worst;
-}
-
 /* The ring of v's neighbours, counterclockwise, when v is interior (a closed fan of
  * at most cap triangles): their count, else 0. tri[i] is the triangle (v, ring[i],
  * ring[i+1]). */
@@ -46,22 +34,23 @@ static size_t ring_of(const lh__m2 *m, lh_index v, lh_index *ring, lh_index *tri
     return n;
 }
 
-/* The cosine of the smallest angle around v were it at c (2: a triangle would turn
- * over or pass its area bound). */
+/* The sine of the smallest angle around v were it at c (-1: a triangle would turn
+ * over or pass its area bound). The sine, from twice the area over two edge lengths
+ * (m2_geom.h), keeps its relative precision at tiny angles, where a cosine is 1 to
+ * the last bit. */
 static double star_worst(const lh__m2 *m, const lh_index *ring, const lh_index *tri, size_t n,
                          const double *c, double max_area)
 {
-    double worst = -1;
+    double worst = 2;
     for (size_t i = 0; i < n; i++) {
         const double *a = lh__m2_pt(m, ring[i]), *b = lh__m2_pt(m, ring[(i + 1) % n]);
-        if (lh__m2_orient_pt(m, ring[i], ring[(i + 1) % n], c) <= 0) return 2;
+        if (lh__m2_orient_pt(m, ring[i], ring[(i + 1) % n], c) <= 0) return -1;
         double bound = max_area;
         if (m->tarea && m->tarea[tri[i]] > 0 && (bound <= 0 || m->tarea[tri[i]] < bound)) bound = m->tarea[tri[i]];
         lh__g_tri g;
         lh__g_measure(a, b, c, &g);
-        if (lh__g_area_above(&g, bound)) return 2;
-        const double w = worst_cos(c, a, b);
-        worst = w > worst ? w : worst;
+        if (lh__g_area_above(&g, bound)) return -1;
+        worst = g.sin_min < worst ? g.sin_min : worst;
     }
     return worst;
 }
@@ -84,7 +73,7 @@ static int move(lh__m2 *m, lh_index v, double max_area)
     for (double f = 1; f > 0.2; f /= 2) {
         const double q[2] = {p[0] + f * (c[0] - p[0]), p[1] + f * (c[1] - p[1])};
         const double w = star_worst(m, ring, tri, n, q, max_area);
-        if (w < best) best = w, at[0] = q[0], at[1] = q[1];
+        if (w > best) best = w, at[0] = q[0], at[1] = q[1];
     }
     if (at[0] == p[0] && at[1] == p[1]) return 0; /* the smallest angle must grow */
     m->xy[2 * (size_t)v] = at[0];
