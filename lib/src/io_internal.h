@@ -167,6 +167,16 @@ lh_status lh__view_check(FILE *f, const lh_mesh_view *m, int dmin, int dmax, int
                          int kmax);
 /* Whether s may name a field: printable ASCII, no blank, none of " & < > '. */
 int lh__field_name_ok(const char *s);
+/* A line of numbers built in memory and written with one fwrite: what printf would
+ * write ("%lld", "%.17g", one blank between fields), without its cost per field. */
+typedef struct lh__row {
+    char s[512];
+    size_t len;
+} lh__row;
+void lh__row_int(lh__out *o, lh__row *r, long long v);
+void lh__row_dbl(lh__out *o, lh__row *r, double x);
+/* Ends the line ('\n') and writes it; r is empty again. */
+void lh__row_end(lh__out *o, lh__row *r);
 /* Writes point i padded with zeros to 3 coordinates ("%.17g %.17g %.17g"). */
 void lh__out_point3(lh__out *o, const lh_mesh_view *m, size_t i);
 

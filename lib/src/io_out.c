@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdarg.h>
+#include <stdio.h>
 #include <string.h>
 
 void lh__outf(lh__out *o, const char *fmt, ...)
@@ -13,6 +14,43 @@ void lh__outf(lh__out *o, const char *fmt, ...)
     va_start(ap, fmt);
     if (vfprintf(o->f, fmt, ap) < 0) o->failed = 1;
     va_end(ap);
+}
+
+/* Room for one more field (a blank and 24 characters, the longest %.17g), writing
+ * what the row holds when it is nearly full. */
+static void row_room(lh__out *o, lh__row *r)
+{
+    if (r->len + 32 <= sizeof r->s) return;
+    if (!o->failed && fwrite(r->s, 1, r->len, o->f) != r->len) o->failed = 1;
+    r->len = 0;
+}
+
+void lh__row_int(lh__out *o, lh__row *r, long long v)
+{
+    row_room(o, r);
+    if (r->len) r->s[r->len++] = ' ';
+    char d[24];
+    int n = 0;
+    unsigned long long u = v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v;
+    do {
+        d[n++] = (char)('0' + u % 10);
+    } while (u /= 10);
+    if (v < 0) r->s[r->len++] = '-';
+    while (n) r->s[r->len++] = d[--n];
+}
+
+void lh__row_dbl(lh__out *o, lh__row *r, double x)
+{
+    row_room(o, r);
+    if (r->len) r->s[r->len++] = ' ';
+    r->len += (size_t)snprintf(r->s + r->len, sizeof r->s - r->len, "%.17g", x);
+}
+
+void lh__row_end(lh__out *o, lh__row *r)
+{
+    r->s[r->len++] = '\n';
+    if (!o->failed && fwrite(r->s, 1, r->len, o->f) != r->len) o->failed = 1;
+    r->len = 0;
 }
 
 lh_status lh__out_status(lh__out *o)

@@ -25,12 +25,14 @@ static void cell_rows(lh__out *o, const lh_mesh_view *m, const double *attr, con
                       int first_index)
 {
     const size_t per = (size_t)m->k + 1;
+    lh__row r = {.len = 0};
     for (size_t i = 0; i < m->count; i++) {
-        lh__outf(o, "%zu", i + (size_t)first_index);
-        for (size_t j = 0; j < per; j++) lh__outf(o, " %" LH_INDEX_PRI, m->cells[i * per + j] + first_index);
-        if (attr) lh__outf(o, " %.17g", attr[i]);
-        if (marker) lh__outf(o, " %" LH_INDEX_PRI, marker[i]);
-        lh__outf(o, "\n");
+        lh__row_int(o, &r, (long long)(i + (size_t)first_index));
+        for (size_t j = 0; j < per; j++)
+            lh__row_int(o, &r, (long long)m->cells[i * per + j] + first_index);
+        if (attr) lh__row_dbl(o, &r, attr[i]);
+        if (marker) lh__row_int(o, &r, (long long)marker[i]);
+        lh__row_end(o, &r);
     }
 }
 
@@ -48,12 +50,13 @@ lh_status lh_node_marker_write(FILE *f, const lh_mesh_view *m, const lh_index *m
     if (first_index != 0 && first_index != 1) return LH_ERR_INVALID_ARGUMENT;
     lh__out o = {f, 0};
     lh__outf(&o, "%zu %d %d %d\n", m->n, m->d, m->values ? 1 : 0, markers ? 1 : 0);
+    lh__row r = {.len = 0};
     for (size_t i = 0; i < m->n; i++) {
-        lh__outf(&o, "%zu", i + (size_t)first_index);
-        for (int j = 0; j < m->d; j++) lh__outf(&o, " %.17g", m->xyz[i * (size_t)m->d + j]);
-        if (m->values) lh__outf(&o, " %.17g", m->values[i]);
-        if (markers) lh__outf(&o, " %" LH_INDEX_PRI, markers[i]);
-        lh__outf(&o, "\n");
+        lh__row_int(&o, &r, (long long)(i + (size_t)first_index));
+        for (int j = 0; j < m->d; j++) lh__row_dbl(&o, &r, m->xyz[i * (size_t)m->d + j]);
+        if (m->values) lh__row_dbl(&o, &r, m->values[i]);
+        if (markers) lh__row_int(&o, &r, (long long)markers[i]);
+        lh__row_end(&o, &r);
     }
     return lh__out_status(&o);
 }
