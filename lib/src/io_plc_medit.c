@@ -99,14 +99,14 @@ static lh_status read_elements(medit_ctx *x, const char *kw, const char *one, si
         x->ring.k = 0;
         for (size_t j = 0; st == LH_OK && j < k; j++) {
             lh_index v;
-            snprintf(what, sizeof what, "vertex %zu of %s", j + 1, item);
             if (j == 0) {
+                snprintf(what, sizeof what, "vertex 1 of %s", item);
                 st = item_start(x, &t, what, n, kw);
                 at = t;
             } else {
                 lh__scan_next(s, 0, &t);
             }
-            if (st == LH_OK) st = lh__plc_vertex(s, &t, 1, x->b->g->n, what, &v);
+            if (st == LH_OK) st = lh__plc_vertex(s, &t, 1, x->b->g->n, j + 1, item, &v);
             if (st == LH_OK) st = lh__plc_built(s, lh__plc_ring_push(x->b, &x->ring, v), &t, item);
         }
         if (st == LH_OK) st = ref_and_end(x, item, &ref);

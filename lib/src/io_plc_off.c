@@ -119,8 +119,7 @@ static lh_status read_face(lh__scan *s, lh__plc_build *b, lh__plc_ring *r, size_
     for (size_t j = 0; st == LH_OK && j < k; j++) {
         lh_index v;
         lh__scan_next(s, 0, &t);
-        snprintf(what, sizeof what, "vertex %zu of %s", j + 1, item);
-        st = lh__plc_vertex(s, &t, 0, b->g->n, what, &v);
+        st = lh__plc_vertex(s, &t, 0, b->g->n, j + 1, item, &v);
         if (st == LH_OK) st = lh__plc_built(s, lh__plc_ring_push(b, r, v), &t, item);
     }
     if (st == LH_OK) st = extra_and_end(s, OFF_COLOUR, item, " (or its colour: up to 4 numbers)");

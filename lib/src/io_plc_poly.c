@@ -131,13 +131,11 @@ static lh_status read_vertices(poly_ctx *x, size_t k, const char *item)
 {
     lh_plc *g = x->b->g;
     lh__token t;
-    char what[160];
     x->ring.k = 0;
     for (size_t j = 0; j < k; j++) {
         lh_index v;
         lh__scan_next(x->s, 0, &t);
-        snprintf(what, sizeof what, "vertex %zu of %s", j + 1, item);
-        lh_status st = lh__plc_vertex(x->s, &t, g->first_index, g->n, what, &v);
+        lh_status st = lh__plc_vertex(x->s, &t, g->first_index, g->n, j + 1, item, &v);
         if (st == LH_OK) st = lh__plc_built(x->s, lh__plc_ring_push(x->b, &x->ring, v), &t, item);
         if (st != LH_OK) return st;
     }

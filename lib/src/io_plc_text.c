@@ -32,27 +32,29 @@ void lh__plc_ring_free(lh__plc_build *b, lh__plc_ring *r)
 lh_status lh__plc_count(lh__scan *s, const lh__token *t, const char *what, long long lo,
                         size_t *n)
 {
-    char w[200];
     long long v;
+    const int ok = lh__word_integer(t, &v) && v >= lo;
+    if (ok && v <= LH_READ_MAX_POINTS) {
+        *n = (size_t)v;
+        return LH_OK;
+    }
+    char w[200];
     snprintf(w, sizeof w, "%s (an integer from %lld to %lld)", what, lo, (long long)LH_READ_MAX_POINTS);
-    if (!lh__word_integer(t, &v) || v < lo)
-        return lh__expected(s, LH_ERR_PARSE, t, t->kind == LH__TOK_WORD ? w : what, NULL);
-    if (v > LH_READ_MAX_POINTS) return lh__expected(s, LH_ERR_TOO_LARGE, t, w, NULL);
-    *n = (size_t)v;
-    return LH_OK;
+    if (!ok) return lh__expected(s, LH_ERR_PARSE, t, t->kind == LH__TOK_WORD ? w : what, NULL);
+    return lh__expected(s, LH_ERR_TOO_LARGE, t, w, NULL);
 }
 
-lh_status lh__plc_vertex(lh__scan *s, const lh__token *t, int base, size_t n,
-                         const char *what, lh_index *v)
+lh_status lh__plc_vertex(lh__scan *s, const lh__token *t, int base, size_t n, size_t j,
+                         const char *item, lh_index *v)
 {
     long long k, hi = base + (long long)n - 1;
     if (lh__word_integer(t, &k) && (n ? k >= base && k <= hi : k >= 0 && k - base < LH_INDEX_MAX)) {
         *v = (lh_index)(k - base);
         return LH_OK;
     }
-    char w[200];
-    if (n) snprintf(w, sizeof w, "%s (a vertex number from %d to %lld)", what, base, hi);
-    else snprintf(w, sizeof w, "%s (a vertex number of the .node, from 0)", what);
+    char w[240];
+    if (n) snprintf(w, sizeof w, "vertex %zu of %s (a vertex number from %d to %lld)", j, item, base, hi);
+    else snprintf(w, sizeof w, "vertex %zu of %s (a vertex number of the .node, from 0)", j, item);
     return lh__expected(s, LH_ERR_PARSE, t, w, NULL);
 }
 

@@ -25,11 +25,12 @@ void lh__plc_ring_free(lh__plc_build *b, lh__plc_ring *r);
  * LO to MAX), found ..." (LH_ERR_TOO_LARGE above MAX). */
 lh_status lh__plc_count(lh__scan *s, const lh__token *t, const char *what, long long lo,
                         size_t *n);
-/* Token t as a vertex number from base to base+n-1, stored 0-based in *v: "expected
- * WHAT (a vertex number from LO to HI), found ...". n == 0 (a .poly whose points are
- * in its .node): any number from 0, stored less base. */
-lh_status lh__plc_vertex(lh__scan *s, const lh__token *t, int base, size_t n,
-                         const char *what, lh_index *v);
+/* Token t as vertex j (from 1) of ITEM, a vertex number from base to base+n-1, stored
+ * 0-based in *v: "expected vertex J of ITEM (a vertex number from LO to HI), found
+ * ...". n == 0 (a .poly whose points are in its .node): any number from 0, stored
+ * less base. */
+lh_status lh__plc_vertex(lh__scan *s, const lh__token *t, int base, size_t n, size_t j,
+                         const char *item, lh_index *v);
 /* `count` numbers of the current line into x, each named "FIELD j of ITEM" (j from
  * `from`); noun for lh__nonfinite ("points", "accepted"). */
 lh_status lh__plc_numbers(lh__scan *s, int from, int count, const char *field, const char *item,
