@@ -377,27 +377,33 @@ static inline void sort_rows(const rows *r, size_t lo, size_t hi, int first, int
     }
 }
 
-/* Each finite cell's vertex row among cells lo..hi-1 in canonical order
- * (lh__canonical_ranks), its neighbour row permuted alike; each row's position in
- * orig, its first digit in dig and counted in digits; returns the number of finite
- * cells. */
+/* Row c's vertices in canonical order (lh__canonical_ranks) when it is a finite
+ * cell, its neighbours permuted alike, its position in orig; whether it is finite. */
+static inline int canonical_row(const rows *r, size_t c, int nv)
+{
+    lh_index *v = r->vert + c * nv, *nb = r->nbr + c * nv;
+    r->orig[c] = (lh_index)c;
+    if (v[0] < 0) return 0;
+    int rank[LH__TDS_MAX_NV];
+    lh_index cv[LH__TDS_MAX_NV], cn[LH__TDS_MAX_NV];
+    copy_row(cv, v, nv);
+    copy_row(cn, nb, nv);
+    lh__canonical_ranks(cv, nv, rank);
+    /* scattered into the rows themselves: a copy scattered into a local array and
+       read back whole would stall on store forwarding */
+    for (int k = 0; k < nv; k++) v[rank[k]] = cv[k], nb[rank[k]] = cn[k];
+    return 1;
+}
+
+/* Each finite cell's row among cells lo..hi-1 in canonical form (canonical_row);
+ * each row's first digit in dig and counted in digits; returns the number of
+ * finite cells. */
 static size_t canonical_rows(const rows *r, size_t lo, size_t hi, int nv, size_t *digits)
 {
     size_t count = 0;
     for (size_t c = lo; c < hi; c++) {
-        lh_index *v = r->vert + c * nv, *nb = r->nbr + c * nv;
-        r->orig[c] = (lh_index)c;
-        if (v[0] >= 0) {
-            count++;
-            int rank[LH__TDS_MAX_NV];
-            lh_index cv[LH__TDS_MAX_NV], cn[LH__TDS_MAX_NV];
-            copy_row(cv, v, nv);
-            copy_row(cn, nb, nv);
-            lh__canonical_ranks(cv, nv, rank);
-            /* scattered into the rows themselves: a copy scattered into a local
-               array and read back whole would stall on store forwarding */
-            for (int k = 0; k < nv; k++) v[rank[k]] = cv[k], nb[rank[k]] = cn[k];
-        }
+        const lh_index *v = r->vert + c * nv;
+        count += (size_t)canonical_row(r, c, nv);
         r->dig[c] = digit_at(r, v, 0);
         digits[r->dig[c]]++;
     }
@@ -575,4 +581,20 @@ lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count
     lh__free(&t->alloc, r.gpos);
     lh__free(&t->alloc, job);
     return st;
+}
+
+lh_status lh__tds_compact_cells(lh__tds *t, lh_index *orig, size_t *count)
+{
+    const int nv = t->nv;
+    const rows r = {.vert = t->vert, .nbr = t->nbr, .orig = orig};
+    size_t lo = 0, hi = (size_t)t->top;
+    for (size_t c = 0; c < hi; c++) orig[c] = (lh_index)c;
+    for (;;) { /* the finite rows first: the first other one swapped with the last finite */
+        while (lo < hi && t->vert[lo * nv] >= 0) lo++;
+        while (lo < hi && t->vert[(hi - 1) * nv] < 0) hi--;
+        if (lo >= hi) break;
+        swap_rows(&r, lo++, --hi, nv);
+    }
+    *count = lo;
+    return LH_OK;
 }

@@ -142,6 +142,11 @@ lh_index *lh__tds_finish(lh__tds *t);
  * before, and neighbour entries still name those positions. `threads` share the
  * work (hull/parallel.c). */
 lh_status lh__tds_sort_cells(lh__tds *t, size_t n, lh_index *orig, size_t *count, int threads);
+/* The same without the canonical form: the finite cells at rows 0..*count-1 as the
+ * store has them (each positively oriented, its vertices in the store's order), in
+ * the store's order but for swaps with the other rows, which follow. For a caller
+ * that reads only what depends on neither order. */
+lh_status lh__tds_compact_cells(lh__tds *t, lh_index *orig, size_t *count);
 static inline void lh__tds_kill(lh__tds *t, lh_index c)
 {
     size_t base = (size_t)c * t->nv;

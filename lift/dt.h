@@ -49,7 +49,8 @@ struct lh_tri {
     lh_index *dup;    /* n: the site each one was merged into (itself for a vertex) */
     size_t ndup;
     size_t count;     /* finite simplices */
-    lh_index *simp;   /* (k+1)*count, canonical */
+    lh_index *simp;   /* (k+1)*count, canonical (with `unordered`: oriented only) */
+    int unordered;    /* lh_tri_insert_unordered: simplices in no particular order */
     lh_index *nbr;    /* (k+1)*count, -1 across the hull */
     size_t hull_count;
     lh_index *hull;   /* k*hull_count, outward */
@@ -78,7 +79,10 @@ lh_status lh__dt_flat(lh_tri *t, const lh_options *opt, int k);
 /* chain.c: the same for k = 1, t->frame set: segments along the line. */
 lh_status lh__dt_chain(lh_tri *t);
 
-/* output.c: the handle's arrays from a built engine. */
+/* output.c: the handle's arrays from a built engine; _as with sorted 0: the
+ * simplices in no particular order, each positively oriented but its vertices in no
+ * particular order either (lh__tds_compact_cells). */
 lh_status lh__dt_extract(lh__eng *e, lh_tri *t);
+lh_status lh__dt_extract_as(lh__eng *e, lh_tri *t, int sorted);
 
 #endif

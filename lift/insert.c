@@ -251,10 +251,11 @@ static lh_status rebuild(lh_tri *t, size_t m, const double *xyz)
     return LH_OK;
 }
 
-lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz)
+/* lh_tri_insert, lh_tri_insert_unordered and (m = 0, sorted) lh_tri_sort. */
+static lh_status insert(lh_tri *t, size_t m, const double *xyz, int sorted)
 {
     if (!t || (!xyz && m > 0)) return LH_ERR_INVALID_ARGUMENT;
-    if (m == 0) return LH_OK;
+    if (m == 0 && (!sorted || !t->unordered)) return LH_OK;
     if (m >= (size_t)LH_INDEX_MAX - t->n || t->n + m > SIZE_MAX / ((size_t)t->d * sizeof(double)))
         return LH_ERR_TOO_LARGE;
     lh_status st = lh_coords_validate(t->d, m, xyz, NULL);
@@ -267,9 +268,11 @@ lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz)
     st = grow_sites(t, m, xyz, &nt);
     if (st == LH_OK && t->frame.k < t->d) { /* new sites may leave the flat: rebuild */
         free_arrays(&nt);
-        return rebuild(t, m, xyz);
+        st = rebuild(t, m, xyz);
+        if (st == LH_OK) t->unordered = 0;
+        return st;
     }
-    if (st == LH_OK) st = new_site_order(t, nt.xyz, nt.dup, t->n, m, &list, &count);
+    if (st == LH_OK && m) st = new_site_order(t, nt.xyz, nt.dup, t->n, m, &list, &count);
     if (st == LH_OK) {
         st = lh__eng_init(&e, &t->alloc, t->d, nt.n, nt.xyz, nt.dup, NULL);
         engine = 1;
@@ -279,8 +282,8 @@ lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz)
         e.site = nt.xyz; /* vertex v is site v */
         st = rebuild_cells(&e, t);
     }
-    if (st == LH_OK) st = lh__eng_insert(&e, list, count);
-    if (st == LH_OK) st = lh__dt_extract(&e, &nt);
+    if (st == LH_OK && count) st = lh__eng_insert(&e, list, count);
+    if (st == LH_OK) st = lh__dt_extract_as(&e, &nt, sorted);
     if (engine) lh__eng_release(&e);
     lh__free(&t->alloc, list);
     if (st != LH_OK) {
@@ -288,5 +291,21 @@ lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz)
         return st;
     }
     take_arrays(t, &nt);
+    t->unordered = !sorted;
     return LH_OK;
+}
+
+lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz)
+{
+    return insert(t, m, xyz, 1);
+}
+
+lh_status lh_tri_insert_unordered(lh_tri *t, size_t m, const double *xyz)
+{
+    return insert(t, m, xyz, 0);
+}
+
+lh_status lh_tri_sort(lh_tri *t)
+{
+    return insert(t, 0, NULL, 1);
 }

@@ -38,12 +38,13 @@ static void remap_range(void *ctx, size_t lo, size_t hi)
  * with them. Each neighbour entry, a row's position before the sort, becomes its
  * simplex (-1 for an infinite cell) through simplex_of, the inverse of orig; the
  * random accesses are prefetched LH__AHEAD iterations early. */
-static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *orig)
+static lh_status extract_simplices(lh__eng *b, lh_tri *t, lh_index *orig, int sorted)
 {
     lh__tds *s = &b->tds;
     const size_t nv = (size_t)b->nv, top = (size_t)s->top;
     size_t count = 0;
-    lh_status st = lh__tds_sort_cells(s, t->n, orig, &count, b->threads);
+    lh_status st = sorted ? lh__tds_sort_cells(s, t->n, orig, &count, b->threads)
+                          : lh__tds_compact_cells(s, orig, &count);
     /* the hull facets from the infinite cells, now after the finite ones: rows
        count.. hold them whole (the sort moves rows; only finite ones change) */
     if (st == LH_OK) st = lh__eng_hull_facets(b, (lh_index)count, &t->hull, &t->hull_count);
@@ -118,10 +119,15 @@ static lh_status incident_simplices(lh_tri *t, int nv, int threads)
 
 lh_status lh__dt_extract(lh__eng *b, lh_tri *t)
 {
+    return lh__dt_extract_as(b, t, 1);
+}
+
+lh_status lh__dt_extract_as(lh__eng *b, lh_tri *t, int sorted)
+{
     /* The stamps are no longer needed: their words become the rows' positions
      * before the sort. */
     lh_index *orig = lh__tds_finish(&b->tds);
-    lh_status st = orig ? extract_simplices(b, t, orig) : LH_ERR_NOMEM;
+    lh_status st = orig ? extract_simplices(b, t, orig, sorted) : LH_ERR_NOMEM;
     lh__free(&b->tds.alloc, orig);
     return st == LH_OK ? incident_simplices(t, b->nv, b->threads) : st;
 }

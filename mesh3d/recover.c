@@ -101,6 +101,16 @@ static lh_status stalled(t3_ctx *c)
                       T3_MAX_ROUNDS, c->steiner, bad, list, bad > 5 ? ", ..." : "");
 }
 
+/* The mesh recovered: its tetrahedra in canonical order again (the rounds insert
+ * unordered: nothing they decide depends on that order, and the output's does). */
+static lh_status recovered(t3_ctx *c)
+{
+    lh_status st = lh_tri_sort(c->dt);
+    if (st != LH_OK) return lh__t3_say(c, st, 0, "%s", lh_status_message(st));
+    c->dup = lh_tri_duplicate_of(c->dt);
+    return lh__t3_stars(c);
+}
+
 lh_status lh__t3_recover(t3_ctx *c)
 {
     for (;;) {
@@ -108,7 +118,7 @@ lh_status lh__t3_recover(t3_ctx *c)
         lh_status st = split_edges(c);
         if (st == LH_OK && c->new_count == 0) st = split_faces(c);
         if (st != LH_OK) return st;
-        if (c->new_count == 0) return LH_OK;
+        if (c->new_count == 0) return recovered(c);
         if (!c->opt->boundary_steiner)
             return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                               "-Y: recovering the boundary needs Steiner points on it, and "

@@ -1,6 +1,7 @@
-/* test_insert.c — lh_tri_insert: the result is lh_delaunay's for all the sites, byte
- * for byte, in batches, with duplicates, furthest-site; bad input and allocation
- * failures leave the triangulation unchanged. */
+/* test_insert.c — lh_tri_insert (and lh_tri_insert_unordered, then lh_tri_sort): the
+ * result is lh_delaunay's for all the sites, byte for byte, in batches, with
+ * duplicates, furthest-site; bad input and allocation failures leave the
+ * triangulation unchanged. */
 #include "lh_families.h"
 #include "lh_test.h"
 #include "lh_api_test.h"
@@ -46,6 +47,68 @@ static void insert_matches_build(lh_test_state *lh_t_, int d, size_t n, const do
     lh_tri_free(all);
 }
 
+static int cmp_index(const void *a, const void *b)
+{
+    const lh_index x = *(const lh_index *)a, y = *(const lh_index *)b;
+    return (x > y) - (x < y);
+}
+
+static int cmp_row9(const void *a, const void *b)
+{
+    return memcmp(a, b, 9 * sizeof(lh_index)); /* rows padded to 9 entries */
+}
+
+/* t's simplices as a set (each sorted, then the list) equal all's; each positively
+ * oriented. */
+static int same_set(const lh_tri *t, const lh_tri *all, const double *x, int d)
+{
+    const size_t nv = (size_t)d + 1, m = lh_tri_count(t);
+    if (m != lh_tri_count(all)) return 0;
+    lh_index *a = calloc(9 * m + 1, sizeof *a), *b = calloc(9 * m + 1, sizeof *b);
+    lh_pred *pr;
+    int same = a && b && lh_pred_create(NULL, &pr) == LH_OK;
+    for (size_t i = 0; same && i < m; i++) {
+        const double *p[9];
+        for (size_t k = 0; k < nv; k++) p[k] = x + (size_t)lh_tri_simplices(t)[i * nv + k] * d;
+        same &= lh_orient(pr, d, p) > 0;
+        memcpy(a + 9 * i, lh_tri_simplices(t) + i * nv, nv * sizeof *a);
+        memcpy(b + 9 * i, lh_tri_simplices(all) + i * nv, nv * sizeof *b);
+        qsort(a + 9 * i, nv, sizeof *a, cmp_index);
+        qsort(b + 9 * i, nv, sizeof *b, cmp_index);
+    }
+    if (same) {
+        qsort(a, m, 9 * sizeof *a, cmp_row9);
+        qsort(b, m, 9 * sizeof *b, cmp_row9);
+        same = !memcmp(a, b, 9 * m * sizeof *a);
+        lh_pred_free(pr);
+    }
+    free(a), free(b);
+    return same;
+}
+
+/* The same with lh_tri_insert_unordered: the set of simplices is all's after the
+ * rounds, and lh_tri_sort makes it all's byte for byte. */
+static void unordered_matches_build(lh_test_state *lh_t_, int d, size_t n, const double *x,
+                                    size_t first, int batches, const char *what)
+{
+    lh_tri *all, *t;
+    LH_ASSERT_EQ_INT(lh_delaunay(d, n, x, NULL, &all), LH_OK);
+    LH_ASSERT_EQ_INT(lh_delaunay(d, first, x, NULL, &t), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tri_sort(t), LH_OK); /* sorted already: a no-op */
+    size_t at = first;
+    for (int b = 0; b < batches; b++) {
+        size_t end = b == batches - 1 ? n : at + (n - first) / (size_t)batches;
+        LH_EXPECT_EQ_INT(lh_tri_insert_unordered(t, end - at, x + at * (size_t)d), LH_OK);
+        at = end;
+    }
+    LH_EXPECT_TRUE(same_set(t, all, x, d));
+    LH_EXPECT_EQ_INT(lh_tri_sort(t), LH_OK);
+    LH_EXPECT_TRUE(lh_test_same_tri(t, all));
+    if (LH_FAILED()) LH_NOTE("%s (d=%d n=%zu first=%zu batches=%d)", what, d, n, first, batches);
+    lh_tri_free(t);
+    lh_tri_free(all);
+}
+
 /* Random order, so that a prefix of a grid is not all on one line. */
 static void shuffle(double *x, size_t n, int d)
 {
@@ -70,6 +133,7 @@ LH_TEST(insertion_gives_the_triangulation_of_all_sites)
             shuffle(x, n, d);
             insert_matches_build(lh_t_, d, n, x, n / 2, 1, 0, lh_fam_name[fam]);
             insert_matches_build(lh_t_, d, n, x, n / 10 + d + 1, 4, 0, lh_fam_name[fam]);
+            unordered_matches_build(lh_t_, d, n, x, n / 10 + d + 1, 4, lh_fam_name[fam]);
             free(x);
         }
 }

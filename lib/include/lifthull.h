@@ -352,6 +352,19 @@ LH_API lh_status lh_coords_affine_dim(int d, size_t n, const double *xyz, const 
  * unchanged.
  */
 LH_API lh_status lh_tri_insert(lh_tri *t, size_t m, const double *xyz);
+/*
+ * lh_tri_insert_unordered: lh_tri_insert for a caller that inserts in rounds and
+ * reads, between them, only what does not depend on the order of the simplices (an
+ * edge's or a face's presence, a vertex's simplices as a set): the same
+ * triangulation, but the simplices in no particular order and each simplex's sites
+ * in no particular order either (positively oriented, as the canonical form is),
+ * which skips the canonical form's sort per call. Simplex numbers (the neighbours,
+ * lh_tri_vertex_simplex, lh_tri_locate's answers) refer to that order.
+ * lh_tri_sort (or an lh_tri_insert) puts them in canonical order again; a no-op on a
+ * sorted t. Statuses as lh_tri_insert.
+ */
+LH_API lh_status lh_tri_insert_unordered(lh_tri *t, size_t m, const double *xyz);
+LH_API lh_status lh_tri_sort(lh_tri *t);
 
 LH_API int lh_tri_dim(const lh_tri *t);             /* d, coordinates per site               */
 /* k, the dimension of the simplices: d, or with lh_options.affine_hull the affine
