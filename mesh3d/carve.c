@@ -18,8 +18,36 @@ static int cmp_wall(const void *x, const void *y)
     return 0;
 }
 
+/* d->wall from the sorted walls (w of them, each face once): both tets of each wall
+ * face found in the star of its first point. */
+static lh_status mark_walls(t3_ctx *c, t3_domain *d, const lh_index *walls, size_t w)
+{
+    const size_t count = lh_tri_count(c->dt);
+    const lh_index *s = lh_tri_simplices(c->dt);
+    d->wall = lh__alloc(&c->al, (4 * count + 1) * sizeof(lh_index));
+    if (!d->wall) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    for (size_t i = 0; i < 4 * count; i++) d->wall[i] = -1;
+    for (size_t i = 0; i < w; i++) {
+        const lh_index *f = walls + 4 * i;
+        for (lh_index q = c->star_first[f[0]]; q < c->star_first[f[0] + 1]; q++) {
+            const size_t t = (size_t)c->star[q];
+            int in = 0, j = 0;
+            for (int k = 0; k < 4; k++) {
+                const lh_index v = s[4 * t + k];
+                if (v == f[0] || v == f[1] || v == f[2])
+                    in++;
+                else
+                    j = k;
+            }
+            if (in == 3) d->wall[4 * t + (size_t)j] = f[3];
+        }
+    }
+    return LH_OK;
+}
+
 /* Walls: every recovered patch's faces, as sorted triples with the facet (4
- * indices a wall), sorted, each face once (the first triangle's facet). */
+ * indices a wall), sorted, each face once (the first triangle's facet); then each
+ * tet's faces marked with them (d->wall). */
 lh_status lh__t3_walls(t3_ctx *c, t3_domain *d)
 {
     size_t cap = 0, w = 0;
@@ -53,30 +81,14 @@ lh_status lh__t3_walls(t3_ctx *c, t3_domain *d)
     for (size_t i = 0; i < w; i++)
         if (u == 0 || cmp_wall(walls + 4 * (u - 1), walls + 4 * i) != 0)
             memmove(walls + 4 * u++, walls + 4 * i, 4 * sizeof(lh_index));
-    d->walls = walls;
-    d->wall_count = u;
-    return LH_OK;
+    lh_status st = mark_walls(c, d, walls, u);
+    lh__free(&c->al, walls);
+    return st;
 }
 
-/* The facet of tet t's face opposite corner j, or -1 when that face is no wall. */
-lh_index lh__t3_wall_of(const t3_ctx *c, const t3_domain *d, size_t t, int j)
+lh_index lh__t3_wall_of(const t3_domain *d, size_t t, int j)
 {
-    const lh_index *s = lh_tri_simplices(c->dt) + 4 * t;
-    lh_index key[4], w = 0;
-    for (int k = 0; k < 4; k++)
-        if (k != j) key[w++] = s[k];
-    lh__t3_sort3(key);
-    size_t lo = 0, hi = d->wall_count;
-    while (lo < hi) {
-        size_t mid = (lo + hi) / 2;
-        int r = cmp_wall(d->walls + 4 * mid, key);
-        if (r == 0) return d->walls[4 * mid + 3];
-        if (r < 0)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return -1;
+    return d->wall[4 * t + (size_t)j];
 }
 
 /* Floods from tet `seed` across faces that are not walls, giving unlabelled tets
@@ -92,7 +104,7 @@ static void flood(const t3_ctx *c, t3_domain *d, lh_index seed, lh_index label)
         lh_index t = d->stack[--top];
         for (int j = 0; j < 4; j++) {
             lh_index u = nbr[4 * (size_t)t + j];
-            if (u < 0 || d->label[u] != T3_FREE || lh__t3_wall_of(c, d, (size_t)t, j) >= 0)
+            if (u < 0 || d->label[u] != T3_FREE || lh__t3_wall_of(d, (size_t)t, j) >= 0)
                 continue;
             d->label[u] = label;
             d->stack[top++] = u;
@@ -115,7 +127,7 @@ static lh_index locate(t3_ctx *c, const t3_domain *d, const double *q, lh_index 
             if (k != j) p[w++] = c->xyz + 3 * (size_t)s[k];
         p[3] = q;
         if (lh_orient(c->pred, 3, p) == 0) {
-            lh_index f = lh__t3_wall_of(c, d, (size_t)loc.simplex, j);
+            lh_index f = lh__t3_wall_of(d, (size_t)loc.simplex, j);
             if (f >= 0) *wall = f;
         }
     }
@@ -152,7 +164,7 @@ lh_status lh__t3_carve(t3_ctx *c, t3_domain *d)
     int hull = c->opt->convex_hull || g->facet_count == 0;
     for (size_t t = 0; !hull && t < count; t++)
         for (int j = 0; j < 4; j++)
-            if (nbr[4 * t + j] < 0 && lh__t3_wall_of(c, d, t, j) < 0)
+            if (nbr[4 * t + j] < 0 && lh__t3_wall_of(d, t, j) < 0)
                 flood(c, d, (lh_index)t, T3_OUT);
     for (size_t r = 0; r < g->region_count; r++) {
         lh_index wall, t = locate(c, d, g->regions + 5 * r, &wall);
@@ -172,7 +184,7 @@ lh_status lh__t3_carve(t3_ctx *c, t3_domain *d)
 
 void lh__t3_domain_free(t3_ctx *c, t3_domain *d)
 {
-    lh__free(&c->al, d->walls);
+    lh__free(&c->al, d->wall);
     lh__free(&c->al, d->label);
     lh__free(&c->al, d->stack);
     memset(d, 0, sizeof *d);

@@ -8,8 +8,7 @@
 #define T3_OUT ((lh_index)-2)  /* outside the domain or in a hole                    */
 
 typedef struct t3_domain {
-    lh_index *walls; /* 4 per wall: a sorted face and its facet; sorted          */
-    size_t wall_count;
+    lh_index *wall;  /* 4 per tet: the facet of its face opposite corner j, or -1 */
     lh_index *label; /* per tet: T3_OUT, T3_FREE or the region's index           */
     lh_index *stack; /* flood scratch                                             */
     size_t kept;     /* tets not T3_OUT                                           */
@@ -17,7 +16,8 @@ typedef struct t3_domain {
 } t3_domain;
 
 lh_status lh__t3_walls(t3_ctx *c, t3_domain *d);
-lh_index lh__t3_wall_of(const t3_ctx *c, const t3_domain *d, size_t t, int j);
+/* The facet of tet t's face opposite corner j, or -1 when that face is no wall. */
+lh_index lh__t3_wall_of(const t3_domain *d, size_t t, int j);
 lh_status lh__t3_carve(t3_ctx *c, t3_domain *d);
 void lh__t3_domain_free(t3_ctx *c, t3_domain *d);
 /* mesh_out.c: the lh_tetmesh of the kept tets. */

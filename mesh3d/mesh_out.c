@@ -81,7 +81,7 @@ static int face_here(const t3_ctx *c, const t3_domain *d, const lh_index *tmap, 
 {
     lh_index u = lh_tri_neighbors(c->dt)[4 * t + j];
     if (u >= 0 && tmap[u] >= 0 && (size_t)u < t) return 0;
-    *facet = lh__t3_wall_of(c, d, t, j);
+    *facet = lh__t3_wall_of(d, t, j);
     return *facet >= 0 || (u < 0 && (c->opt->convex_hull || c->g->facet_count == 0));
 }
 
