@@ -27,16 +27,20 @@ static double dot(const double *u, const double *v)
     return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
 
-/* The dihedral angle (radians) at edge a b between the planes through c and d. */
-static double dihedral(const double *a, const double *b, const double *c, const double *d)
+/* The dihedral angle at edge a b between the planes through c and d, as the point
+ * (cos, sin) times a positive factor: atan2(dih[1], dih[0]) is the angle. */
+static void dihedral(const double *a, const double *b, const double *c, const double *d,
+                     double dih[2])
 {
     double u[3], vc[3], vd[3], nc[3], nd[3], w[3];
     sub(b, a, 1, u), sub(c, a, 1, vc), sub(d, a, 1, vd);
     cross(u, vc, nc), cross(u, vd, nd), cross(nc, nd, w);
-    return atan2(sqrt(dot(w, w)), dot(nc, nd));
+    dih[0] = dot(nc, nd), dih[1] = sqrt(dot(w, w));
 }
 
-/* The tet's smallest dihedral angle (radians) and radius-edge ratio. */
+/* The tet's smallest dihedral angle (radians) and radius-edge ratio. Angles in
+ * [0, pi] compare as their (cos, sin) points turn: x before y when cross(x, y) > 0,
+ * so atan2 runs once. */
 static void tet_quality(const double *const *p, double *min_dih, double *ratio)
 {
     static const int e[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
@@ -48,14 +52,16 @@ static void tet_quality(const double *const *p, double *min_dih, double *ratio)
         longest = fmax(longest, sqrt(dot(v, v)));
     }
     for (int i = 0; i < 4; i++) sub(p[i], p[0], 1 / longest, q[i]);
-    double shortest = INFINITY;
-    *min_dih = INFINITY;
+    double shortest = INFINITY, least[2] = {0, 0};
     for (int i = 0; i < 6; i++) {
-        double v[3];
+        double v[3], dih[2];
         sub(q[e[i][0]], q[e[i][1]], 1, v);
         shortest = fmin(shortest, sqrt(dot(v, v)));
-        *min_dih = fmin(*min_dih, dihedral(q[e[i][0]], q[e[i][1]], q[e[i][2]], q[e[i][3]]));
+        dihedral(q[e[i][0]], q[e[i][1]], q[e[i][2]], q[e[i][3]], dih);
+        if (i == 0 || dih[0] * least[1] - dih[1] * least[0] > 0)
+            least[0] = dih[0], least[1] = dih[1];
     }
+    *min_dih = atan2(least[1], least[0]);
     /* circumcentre of 0, q1, q2, q3: (|b|^2 c x d + |c|^2 d x b + |d|^2 b x c) / 2 b.(c x d) */
     double cd[3], db[3], bc[3], num[3];
     cross(q[2], q[3], cd), cross(q[3], q[1], db), cross(q[1], q[2], bc);

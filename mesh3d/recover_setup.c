@@ -35,17 +35,6 @@ static void sorted3(const lh_index *t, lh_index s[3])
     lh__t3_sort3(s);
 }
 
-static int cmp_tri(const void *ctx, lh_index a, lh_index b)
-{
-    const lh_index *t = ctx;
-    lh_index x[3], y[3];
-    sorted3(t + 3 * a, x);
-    sorted3(t + 3 * b, y);
-    for (int j = 0; j < 3; j++)
-        if (x[j] != y[j]) return x[j] < y[j] ? -1 : 1;
-    return 0;
-}
-
 /* Triangles on representatives; zero area is an error naming the facet. */
 static lh_status take_triangles(t3_ctx *c, const lh__facet_tris *ft)
 {
@@ -75,17 +64,20 @@ static lh_status take_triangles(t3_ctx *c, const lh__facet_tris *ft)
 static lh_status drop_repeats(t3_ctx *c)
 {
     size_t m = c->tri_count;
-    lh_index *idx = lh__alloc(&c->al, (2 * m + 1) * sizeof(lh_index));
+    lh_index *idx = lh__alloc(&c->al, (5 * m + 1) * sizeof(lh_index));
     unsigned char *drop = lh__alloc(&c->al, m + 1);
     if (!idx || !drop) {
         lh__free(&c->al, idx);
         lh__free(&c->al, drop);
         return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     }
-    for (size_t k = 0; k < m; k++) idx[k] = (lh_index)k, drop[k] = 0;
-    lh__sort_idx(idx, idx + m, m, cmp_tri, c->tri);
+    lh_index *key = idx + 2 * m; /* each triangle's corners sorted */
+    for (size_t k = 0; k < m; k++)
+        idx[k] = (lh_index)k, drop[k] = 0, sorted3(c->tri + 3 * k, key + 3 * k);
+    const lh__rows rows = {key, 3, 3};
+    lh__sort_idx(idx, idx + m, m, lh__rows_cmp, &rows);
     for (size_t k = 1; k < m; k++)
-        if (cmp_tri(c->tri, idx[k - 1], idx[k]) == 0) drop[idx[k]] = 1;
+        if (lh__rows_cmp(&rows, idx[k - 1], idx[k]) == 0) drop[idx[k]] = 1;
     size_t w = 0;
     for (size_t k = 0; k < m; k++) {
         if (drop[k]) continue;
