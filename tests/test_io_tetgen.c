@@ -6,6 +6,8 @@
 #include "lifthull.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -94,6 +96,45 @@ LH_TEST(node_with_markers)
     expect_text(lh_t_, &c, "4 3 0 1\n1 0 0 0 1\n2 1 0 0 0\n3 0 1 0 2\n4 0 0 1.5 -3\n");
     c.marks = NULL, c.first = 0;
     expect_text(lh_t_, &c, "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1.5\n");
+}
+
+/* Coordinates are written as printf's "%.17g" writes them, byte for byte: the
+ * writer's own digits (fixed-point range) and printf's (the rest) alike. Doubles of
+ * random bits, random mantissas at scales 2^-70..2^70, dyadic fractions (ties of
+ * the 17th digit), powers of ten and their neighbours, zeros. */
+LH_TEST(coordinates_are_printf_17g)
+{
+    enum { N = 60000 };
+    double *x = malloc(3 * N * sizeof *x);
+    LH_ASSERT_TRUE(x != NULL);
+    uint64_t r = 88172645463325252u;
+    size_t n = 0;
+    static const double tens[] = {1e-5, 1e-4, 1e-3, 0.1, 1, 10, 1e15, 1e16, 1e17, 1e18};
+    for (size_t i = 0; i < LH_COUNT(tens); i++)
+        for (int k = -2; k <= 2; k++) {
+            double y = tens[i];
+            for (int j = 0; j < abs(k); j++) y = nextafter(y, k < 0 ? 0 : 2e18);
+            x[n++] = y, x[n++] = -y;
+        }
+    x[n++] = 0, x[n++] = -0.0, x[n++] = 0.3, x[n++] = 2.0 / 3;
+    for (long k = 1; n < 3 * N / 2; k += 2) x[n++] = ldexp((double)k, -(int)(k % 67));
+    while (n < 3 * N) {
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        double y;
+        memcpy(&y, &r, sizeof y);
+        x[n] = (n % 2 && isfinite(y)) ? y : ldexp((double)(r >> 11), (int)(r % 141) - 123);
+        n++;
+    }
+    lh_mesh_view m = {3, N, x, 0, 0, NULL, NULL, NULL, NULL};
+    call c = {0, m, NULL, NULL, 0, NULL, NULL};
+    char *text, *want = malloc((size_t)N * 96 + 64), *at = want;
+    LH_ASSERT_TRUE(want != NULL);
+    at += sprintf(at, "%d 3 0 0\n", N);
+    for (size_t i = 0; i < N; i++)
+        at += sprintf(at, "%zu %.17g %.17g %.17g\n", i, x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+    LH_EXPECT_EQ_INT(run(&c, &text), LH_OK);
+    LH_EXPECT_TRUE(text && !strcmp(text, want));
+    free(text), free(want), free(x);
 }
 
 LH_TEST(ele_with_attributes)
@@ -187,7 +228,8 @@ LH_TEST(argument_errors)
 int main(int argc, char **argv)
 {
     static const lh_test_case cases[] = {
-        LH_CASE(node_with_markers), LH_CASE(ele_with_attributes), LH_CASE(face_and_edge),
+        LH_CASE(node_with_markers), LH_CASE(coordinates_are_printf_17g),
+        LH_CASE(ele_with_attributes), LH_CASE(face_and_edge),
         LH_CASE(vtk_as_tetgen),     LH_CASE(medit),               LH_CASE(argument_errors),
     };
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);

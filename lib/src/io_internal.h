@@ -175,6 +175,9 @@ typedef struct lh__row {
 } lh__row;
 void lh__row_int(lh__out *o, lh__row *r, long long v);
 void lh__row_dbl(lh__out *o, lh__row *r, double x);
+/* fmt_g17.c: x as printf's "%.17g" writes it, byte for byte, into out (cap bytes, a
+ * terminating NUL); its length. */
+size_t lh__fmt_g17(double x, char *out, size_t cap);
 /* Ends the line ('\n') and writes it; r is empty again. */
 void lh__row_end(lh__out *o, lh__row *r);
 /* Writes point i padded with zeros to 3 coordinates ("%.17g %.17g %.17g"). */

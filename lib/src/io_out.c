@@ -43,7 +43,7 @@ void lh__row_dbl(lh__out *o, lh__row *r, double x)
 {
     row_room(o, r);
     if (r->len) r->s[r->len++] = ' ';
-    r->len += (size_t)snprintf(r->s + r->len, sizeof r->s - r->len, "%.17g", x);
+    r->len += lh__fmt_g17(x, r->s + r->len, sizeof r->s - r->len);
 }
 
 void lh__row_end(lh__out *o, lh__row *r)
