@@ -20,6 +20,7 @@
  */
 #include "io_plc_text.h"
 
+#include <math.h>
 #include <string.h>
 
 #define OFF_EXTRA 9  /* numbers a vertex line may carry after x y z (N, C, ST)   */
@@ -83,15 +84,18 @@ static lh_status extra_and_end(lh__scan *s, int allowed, const char *item, const
 
 static lh_status read_vertex(lh__scan *s, lh__plc_build *b, size_t i, size_t nv, int prefixed)
 {
-    char item[64], tail[64];
+    char item[64];
     double xyz[3];
     lh__token t;
-    snprintf(item, sizeof item, "vertex %zu", i);
-    snprintf(tail, sizeof tail, " (%zu vert%s declared)", nv, nv == 1 ? "ex" : "ices");
+    lh__plc_item(item, sizeof item, "vertex ", (long long)i);
     lh__scan_next(s, 1, &t);
-    char what[80];
-    snprintf(what, sizeof what, "coordinate 1 of %s", item);
-    lh_status st = lh__number(s, &t, what, "points", tail, &xyz[0]);
+    lh_status st = LH_OK;
+    if (!lh__word_double(&t, &xyz[0]) || !isfinite(xyz[0])) { /* named only to report */
+        char what[80], tail[64];
+        snprintf(what, sizeof what, "coordinate 1 of %s", item);
+        snprintf(tail, sizeof tail, " (%zu vert%s declared)", nv, nv == 1 ? "ex" : "ices");
+        st = lh__number(s, &t, what, "points", tail, &xyz[0]);
+    }
     if (st == LH_OK) st = lh__plc_numbers(s, 2, 2, "coordinate", item, "points", xyz + 1);
     if (st == LH_OK)
         st = extra_and_end(s, prefixed ? OFF_EXTRA : 0, item,
@@ -105,7 +109,7 @@ static lh_status read_face(lh__scan *s, lh__plc_build *b, lh__plc_ring *r, size_
     char item[64], what[120];
     lh__token at, t;
     size_t k;
-    snprintf(item, sizeof item, "face %zu", i);
+    lh__plc_item(item, sizeof item, "face ", (long long)i);
     lh__scan_next(s, 1, &at);
     if (at.kind == LH__TOK_EOF) {
         char tail[64];
@@ -113,8 +117,7 @@ static lh_status read_face(lh__scan *s, lh__plc_build *b, lh__plc_ring *r, size_
         snprintf(tail, sizeof tail, " (%zu face%s declared)", nf, nf == 1 ? "" : "s");
         return lh__expected(s, LH_ERR_PARSE, &at, what, tail);
     }
-    snprintf(what, sizeof what, "the number of vertices of %s", item);
-    lh_status st = lh__plc_count(s, &at, what, 3, &k);
+    lh_status st = lh__plc_count_of(s, &at, "the number of vertices of ", item, 3, &k);
     r->k = 0;
     for (size_t j = 0; st == LH_OK && j < k; j++) {
         lh_index v;

@@ -29,6 +29,34 @@ void lh__plc_ring_free(lh__plc_build *b, lh__plc_ring *r)
     r->k = r->cap = 0;
 }
 
+void lh__plc_item(char *buf, size_t cap, const char *kind, long long i)
+{
+    char d[24];
+    int k = 0;
+    unsigned long long u = i < 0 ? 0ULL - (unsigned long long)i : (unsigned long long)i;
+    do {
+        d[k++] = (char)('0' + u % 10);
+    } while (u /= 10);
+    if (i < 0) d[k++] = '-';
+    size_t n = 0;
+    for (; kind[n] && n + 1 < cap; n++) buf[n] = kind[n];
+    while (k && n + 1 < cap) buf[n++] = d[--k];
+    buf[n] = '\0';
+}
+
+lh_status lh__plc_count_of(lh__scan *s, const lh__token *t, const char *prefix, const char *item,
+                           long long lo, size_t *n)
+{
+    long long v;
+    if (lh__word_integer(t, &v) && v >= lo && v <= LH_READ_MAX_POINTS) {
+        *n = (size_t)v;
+        return LH_OK;
+    }
+    char what[160];
+    snprintf(what, sizeof what, "%.80s%.78s", prefix, item);
+    return lh__plc_count(s, t, what, lo, n);
+}
+
 lh_status lh__plc_count(lh__scan *s, const lh__token *t, const char *what, long long lo,
                         size_t *n)
 {
@@ -53,8 +81,11 @@ lh_status lh__plc_vertex(lh__scan *s, const lh__token *t, int base, size_t n, si
         return LH_OK;
     }
     char w[240];
-    if (n) snprintf(w, sizeof w, "vertex %zu of %s (a vertex number from %d to %lld)", j, item, base, hi);
-    else snprintf(w, sizeof w, "vertex %zu of %s (a vertex number of the .node, from 0)", j, item);
+    if (n)
+        snprintf(w, sizeof w, "vertex %zu of %s (a vertex number from %d to %lld)", j, item, base,
+                 hi);
+    else
+        snprintf(w, sizeof w, "vertex %zu of %s (a vertex number of the .node, from 0)", j, item);
     return lh__expected(s, LH_ERR_PARSE, t, w, NULL);
 }
 

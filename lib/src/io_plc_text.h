@@ -25,6 +25,12 @@ void lh__plc_ring_free(lh__plc_build *b, lh__plc_ring *r);
  * LO to MAX), found ..." (LH_ERR_TOO_LARGE above MAX). */
 lh_status lh__plc_count(lh__scan *s, const lh__token *t, const char *what, long long lo,
                         size_t *n);
+/* lh__plc_count with WHAT = PREFIX ITEM, formatted only when it reports. */
+lh_status lh__plc_count_of(lh__scan *s, const lh__token *t, const char *prefix, const char *item,
+                           long long lo, size_t *n);
+/* "KIND I" into buf (cap bytes, truncated, NUL-terminated): an item's name, as
+ * snprintf's "%s%lld" would write it, at a fraction of its cost per item. */
+void lh__plc_item(char *buf, size_t cap, const char *kind, long long i);
 /* Token t as vertex j (from 1) of ITEM, a vertex number from base to base+n-1, stored
  * 0-based in *v: "expected vertex J of ITEM (a vertex number from LO to HI), found
  * ...". n == 0 (a .poly whose points are in its .node): any number from 0, stored
