@@ -101,7 +101,13 @@ typedef struct t3_ctx {
     size_t changed_cap;
     uint32_t *seg_seen, *patch_seen; /* 1 + the round a segment, a patch was last
                                         found whole in the mesh (0: not)             */
-    size_t steiner;                  /* Steiner points inserted                                */
+    /* the faces a patch was last found whole with, as sorted triples (still its cover
+       while patch_seen holds: no point of it changed since) */
+    lh_index *cover; /* the triples, patch after patch as found               */
+    size_t cover_count, cover_cap;
+    lh_index *cover_first; /* per patch: its triples' first index in cover, or -1    */
+    lh_index *cover_len;   /* per patch: their number                                */
+    size_t steiner;        /* Steiner points inserted                                */
     size_t rounds;
 } t3_ctx;
 
@@ -168,7 +174,8 @@ lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int split, int *ok);
 /* Whether a point of patch k (corners, chains, points inside) changed since round r. */
 int lh__t3_patch_changed(const t3_ctx *c, size_t k, uint32_t r);
 /* The faces covering patch k (once lh__t3_patch_check said ok), as sorted triples:
- * *faces points into scratch valid until the next call. */
+ * those it was found whole with, else gathered again; *faces is valid until the next
+ * call. */
 lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t *count);
 
 #endif

@@ -390,9 +390,21 @@ static int plain_triangle(const t3_ctx *c, size_t k, lh_index f[3])
     return 1;
 }
 
+/* Keeps the nf faces in c->fbuf as patch k's cover (lh__t3_patch_cover). */
+static lh_status keep_cover(t3_ctx *c, size_t k, size_t nf)
+{
+    lh_status st = lh__t3_room(c, &c->cover, &c->cover_cap, c->cover_count + 3 * nf);
+    if (st != LH_OK) return st;
+    memcpy(c->cover + c->cover_count, c->fbuf, 3 * nf * sizeof(lh_index));
+    c->cover_first[k] = (lh_index)c->cover_count, c->cover_len[k] = (lh_index)nf;
+    c->cover_count += 3 * nf;
+    return LH_OK;
+}
+
 lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int want_split, int *ok)
 {
     lh_index f[3];
+    c->cover_first[k] = -1;
     if (plain_triangle(c, k, f) && lh__t3_has_face(c, f[0], f[1], f[2])) return *ok = 1, LH_OK;
     patch_scan ps;
     memset(&ps, 0, sizeof ps);
@@ -402,6 +414,7 @@ lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int want_split, int *ok)
         judge(c, &ps, &v);
         *ok = v.ok;
         if (!v.ok && want_split) st = split(c, k, &ps, &v);
+        if (v.ok) st = keep_cover(c, k, ps.nf);
     }
     release(c, &ps);
     return st;
@@ -431,6 +444,11 @@ lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t
         *faces = c->fbuf;
         *count = st == LH_OK;
         return st;
+    }
+    if (c->cover_first[k] >= 0) {
+        *faces = c->cover + c->cover_first[k];
+        *count = (size_t)c->cover_len[k];
+        return LH_OK;
     }
     patch_scan ps;
     memset(&ps, 0, sizeof ps);

@@ -17,7 +17,8 @@ static void ctx_free(t3_ctx *c)
                       c->seg_key,  c->patch_first, c->patch_tri, c->patch_facet, c->patch_axis,
                       c->pnode,    c->pnode_first, c->node,      c->node_first,  c->new_xyz,
                       c->new_node, c->star_first,  c->star,      c->stamp,       c->vbuf,
-                      c->fbuf,     c->ebuf,        c->changed,   c->seg_seen,    c->patch_seen};
+                      c->fbuf,     c->ebuf,        c->changed,   c->seg_seen,    c->patch_seen,
+                      c->cover,    c->cover_first, c->cover_len};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
     lh_tri_free(c->dt);
     lh_pred_free(c->pred);
@@ -85,9 +86,13 @@ static lh_status constraints(t3_ctx *c, size_t *nonplanar)
     memset(c->node_first, 0, (c->seg_count + 1) * sizeof(lh_index));
     c->seg_seen = lh__alloc(&c->al, (c->seg_count + 1) * sizeof(uint32_t));
     c->patch_seen = lh__alloc(&c->al, (c->patch_count + 1) * sizeof(uint32_t));
-    if (!c->seg_seen || !c->patch_seen) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    c->cover_first = lh__alloc(&c->al, (c->patch_count + 1) * sizeof(lh_index));
+    c->cover_len = lh__alloc(&c->al, (c->patch_count + 1) * sizeof(lh_index));
+    if (!c->seg_seen || !c->patch_seen || !c->cover_first || !c->cover_len)
+        return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     memset(c->seg_seen, 0, (c->seg_count + 1) * sizeof(uint32_t));
     memset(c->patch_seen, 0, (c->patch_count + 1) * sizeof(uint32_t));
+    for (size_t k = 0; k <= c->patch_count; k++) c->cover_first[k] = -1, c->cover_len[k] = 0;
     return lh__t3_stars(c);
 }
 
