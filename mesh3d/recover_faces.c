@@ -201,12 +201,18 @@ static lh_status face_records(t3_ctx *c, size_t k, patch_scan *ps, size_t *count
         lh_index v = c->vbuf[i];
         for (lh_index q = c->star_first[v]; q < c->star_first[v + 1]; q++) {
             const lh_index *t = s + 4 * (size_t)c->star[q];
+            int mask = 0, corners = 0; /* those a face from v may have: stamped, not below v */
+            for (int j = 0; j < 4; j++) {
+                const int may = c->stamp[t[j]] >= 1 && t[j] >= v;
+                mask |= may << j, corners += may;
+            }
+            if (corners < 3) continue;
             for (int o = 0; o < 4; o++) { /* the face opposite corner o, from its
                                              smallest point v, once per tet */
-                lh_index f[4], w = 0, ok = t[o] != v;
+                if (t[o] == v || (mask | 1 << o) != 15) continue;
+                lh_index f[4], w = 0;
                 for (int j = 0; j < 4; j++)
-                    if (j != o) f[w++] = t[j], ok &= c->stamp[t[j]] >= 1 && t[j] >= v;
-                if (!ok) continue;
+                    if (j != o) f[w++] = t[j];
                 lh__t3_sort3(f);
                 if (!face_in_patch(c, k, f)) continue;
                 f[3] = c->stamp[t[o]] >= 1 ? apex_side(c, k, f, t[o]) : 2;
