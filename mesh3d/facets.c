@@ -460,6 +460,7 @@ static lh_status facet_project(facet_work *w, size_t f, lh_index ring0, lh_error
     double nrm[3];
     const int k = lh__facet_axis(w->pred, g, g->xyz, f, a, b, c, nrm), i = (k + 1) % 3,
               j = (k + 2) % 3;
+    w->out->axis[f] = (signed char)k;
     for (size_t v = 0; v < w->nid; v++) {
         const double *p = pt(g, w->ids[v]);
         w->xy[2 * v] = p[i], w->xy[2 * v + 1] = p[j];
@@ -541,7 +542,9 @@ lh_status lh__facets_triangulate(const lh_plc *g, const lh_allocator *al, lh__fa
     facet_work w;
     memset(&w, 0, sizeof w);
     w.g = g, w.al = &hooks, w.out = out;
-    st = lh_pred_create(al, &w.pred);
+    out->axis = lh__alloc(w.al, g->facet_count + 1);
+    st = out->axis ? lh_pred_create(al, &w.pred) : LH_ERR_NOMEM;
+    if (out->axis) memset(out->axis, -1, g->facet_count + 1);
     if (st == LH_OK && g->n) {
         w.loc = lh__alloc(w.al, g->n * sizeof(lh_index));
         if (!w.loc)
@@ -561,5 +564,6 @@ void lh__facet_tris_free(const lh_allocator *al, lh__facet_tris *out)
     if (!lh__allocator_init(&hooks, al)) return;
     lh__free(&hooks, out->tri);
     lh__free(&hooks, out->facet);
+    lh__free(&hooks, out->axis);
     memset(out, 0, sizeof *out);
 }

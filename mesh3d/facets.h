@@ -13,6 +13,8 @@ typedef struct lh__facet_tris {
     lh_index *tri;    /* 3 per triangle: point indices into the PLC, ordered as the
                          facet's first ring (see lh__facets_triangulate)             */
     lh_index *facet;  /* 1 per triangle: its facet                                   */
+    signed char *axis; /* 1 per facet: the axis it was projected along (lh__facet_axis),
+                          -1 for a facet of one triangle, which is not projected      */
     size_t nonplanar; /* facets whose points are not exactly coplanar                */
 } lh__facet_tris;
 

@@ -16,6 +16,8 @@
  */
 #include "recover.h"
 
+#include "facets.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -155,12 +157,18 @@ static int along_chain(const t3_ctx *c, const lh_index *f, int k)
     return 0;
 }
 
-/* Whether face f lies in patch k: not along a chain, and its centroid in one of the
+/* Whether face f lies in patch k: not along a chain, with area in the patch's
+ * projection (a face of a facet that is not planar may stand edge-on there; the
+ * check of the mesh refuses such a subface), and its centroid in one of the
  * patch's triangles (rounded Steiner points can make faces on the patch's points
  * that stick out of it). */
 static int face_in_patch(t3_ctx *c, size_t k, const lh_index *f)
 {
     if (along_chain(c, f, 3)) return 0;
+    const int ax = abs(c->patch_axis[k]) - 1;
+    if (!lh__orient2_along(c->pred, ax, c->xyz + 3 * (size_t)f[0], c->xyz + 3 * (size_t)f[1],
+                           c->xyz + 3 * (size_t)f[2]))
+        return 0;
     double g[3];
     for (int a = 0; a < 3; a++)
         g[a] = c->xyz[3 * (size_t)f[0] + a] / 3 + c->xyz[3 * (size_t)f[1] + a] / 3 +

@@ -243,12 +243,17 @@ static lh_status by_facet(t3_ctx *c, lh_index **order_out)
     return LH_OK;
 }
 
-/* The dominant coordinate of triangle t's normal, the one a projection drops, as
- * +-(1 + axis): the sign is the normal's along it. */
-static signed char drop_axis(const t3_ctx *c, const lh_index *t)
+/* The axis a patch's projection drops, as +-(1 + axis), signed as the normal of the
+ * patch's triangle t along it: the facet's own projection axis ax when it was
+ * projected (facets.h: the one lh_tetmesh_check projects it along too, where its
+ * triangles keep their area even when it is not planar), else (ax = -1, a facet of
+ * one triangle) the dominant coordinate of t's normal. */
+static signed char drop_axis(const t3_ctx *c, const lh_index *t, int ax)
 {
     const double *a = c->xyz + 3 * (size_t)t[0], *b = c->xyz + 3 * (size_t)t[1],
                  *d = c->xyz + 3 * (size_t)t[2];
+    if (ax >= 0) /* the sign exactly: t has area in that projection */
+        return (signed char)(lh__orient2_along(c->pred, ax, a, b, d) < 0 ? -(ax + 1) : ax + 1);
     double u[3], v[3], nrm[3];
     for (int k = 0; k < 3; k++) /* halved and scaled: no overflow at any scale */
         u[k] = ldexp(b[k] / 2 - a[k] / 2, -c->unit_exp),
@@ -256,14 +261,14 @@ static signed char drop_axis(const t3_ctx *c, const lh_index *t)
     nrm[0] = u[1] * v[2] - u[2] * v[1];
     nrm[1] = u[2] * v[0] - u[0] * v[2];
     nrm[2] = u[0] * v[1] - u[1] * v[0];
-    int ax = fabs(nrm[0]) >= fabs(nrm[1]) && fabs(nrm[0]) >= fabs(nrm[2]) ? 0
-             : fabs(nrm[1]) >= fabs(nrm[2])                               ? 1
-                                                                          : 2;
+    ax = fabs(nrm[0]) >= fabs(nrm[1]) && fabs(nrm[0]) >= fabs(nrm[2]) ? 0
+         : fabs(nrm[1]) >= fabs(nrm[2])                               ? 1
+                                                                      : 2;
     return (signed char)(nrm[ax] < 0 ? -(ax + 1) : ax + 1);
 }
 
 /* Patches: each facet's triangles together. */
-static lh_status make_patches(t3_ctx *c, const lh_index *order)
+static lh_status make_patches(t3_ctx *c, const lh_index *order, const signed char *facet_axis)
 {
     size_t m = c->tri_count;
     c->patch_first = lh__alloc(&c->al, (m + 2) * sizeof(lh_index));
@@ -278,7 +283,7 @@ static lh_status make_patches(t3_ctx *c, const lh_index *order)
         if (i == 0 || c->tri_facet[order[i - 1]] != f) {
             c->patch_first[p] = (lh_index)i;
             c->patch_facet[p] = f;
-            c->patch_axis[p] = drop_axis(c, c->tri + 3 * (size_t)k);
+            c->patch_axis[p] = drop_axis(c, c->tri + 3 * (size_t)k, facet_axis[f]);
             p++;
         }
         c->patch_tri[i] = k;
@@ -343,7 +348,7 @@ lh_status lh__t3_constraints(t3_ctx *c, const lh__facet_tris *ft)
     lh_index *order = NULL;
     if (st == LH_OK) st = by_facet(c, &order);
     if (st == LH_OK) st = make_edges(c);
-    if (st == LH_OK) st = make_patches(c, order);
+    if (st == LH_OK) st = make_patches(c, order, ft->axis);
     lh__free(&c->al, order);
     return st;
 }
