@@ -175,8 +175,9 @@ typedef struct lh__row {
 } lh__row;
 void lh__row_int(lh__out *o, lh__row *r, long long v);
 void lh__row_dbl(lh__out *o, lh__row *r, double x);
-/* fmt_g17.c: x as printf's "%.17g" writes it, byte for byte, into out (cap bytes, a
- * terminating NUL); its length. */
+/* fmt_number.c: v as printf's "%lld" writes it into out (room for 21 bytes, a
+ * terminating NUL), and x as "%.17g" does, byte for byte (cap bytes); the length. */
+size_t lh__fmt_int(long long v, char *out);
 size_t lh__fmt_g17(double x, char *out, size_t cap);
 /* Ends the line ('\n') and writes it; r is empty again. */
 void lh__row_end(lh__out *o, lh__row *r);

@@ -29,14 +29,7 @@ void lh__row_int(lh__out *o, lh__row *r, long long v)
 {
     row_room(o, r);
     if (r->len) r->s[r->len++] = ' ';
-    char d[24];
-    int n = 0;
-    unsigned long long u = v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v;
-    do {
-        d[n++] = (char)('0' + u % 10);
-    } while (u /= 10);
-    if (v < 0) r->s[r->len++] = '-';
-    while (n) r->s[r->len++] = d[--n];
+    r->len += lh__fmt_int(v, r->s + r->len);
 }
 
 void lh__row_dbl(lh__out *o, lh__row *r, double x)

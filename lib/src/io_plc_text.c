@@ -32,15 +32,10 @@ void lh__plc_ring_free(lh__plc_build *b, lh__plc_ring *r)
 void lh__plc_item(char *buf, size_t cap, const char *kind, long long i)
 {
     char d[24];
-    int k = 0;
-    unsigned long long u = i < 0 ? 0ULL - (unsigned long long)i : (unsigned long long)i;
-    do {
-        d[k++] = (char)('0' + u % 10);
-    } while (u /= 10);
-    if (i < 0) d[k++] = '-';
+    const size_t k = lh__fmt_int(i, d);
     size_t n = 0;
     for (; kind[n] && n + 1 < cap; n++) buf[n] = kind[n];
-    while (k && n + 1 < cap) buf[n++] = d[--k];
+    for (size_t j = 0; j < k && n + 1 < cap; j++) buf[n++] = d[j];
     buf[n] = '\0';
 }
 

@@ -1,6 +1,7 @@
 /*
- * fmt_g17.c — printf's "%.17g" of a double, without printf where that is quick to do
- * exactly: the 17 significant digits of a finite x with 1e-4 <= |x| < 1e17 (the
+ * fmt_number.c — numbers as printf writes them, without printf's cost per call: an
+ * integer's "%lld" (lh__fmt_int), and a double's "%.17g" (lh__fmt_g17) where that is
+ * quick to do exactly: the 17 significant digits of a finite x with 1e-4 <= |x| < 1e17 (the
  * fixed-point form of %g at precision 17), from the exact product of its integer
  * mantissa and a power of ten in 128-bit arithmetic, rounded half to even as
  * printf rounds in the default mode; any other x goes to snprintf. A double is
@@ -65,6 +66,20 @@ static size_t fixed17(double x, char *out)
     return n;
 }
 #endif
+
+size_t lh__fmt_int(long long v, char *out)
+{
+    char d[24];
+    size_t k = 0, n = 0;
+    unsigned long long u = v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v;
+    do {
+        d[k++] = (char)('0' + u % 10);
+    } while (u /= 10);
+    if (v < 0) out[n++] = '-';
+    while (k) out[n++] = d[--k];
+    out[n] = '\0';
+    return n;
+}
 
 size_t lh__fmt_g17(double x, char *out, size_t cap)
 {
