@@ -16,6 +16,8 @@
  * (order_group; heapsort for the large groups of a degenerate input). With several
  * threads, the canonical forms are split among them, so is the first pass
  * (first_pass), and after it its buckets; the finite rows come out the same.
+ * lh__tds_compact_cells only moves the finite cells ahead of the others, as they
+ * are, for a caller that needs neither order (lh_tri_insert_unordered).
  */
 #include "engine.h"
 #include "lh_alloc.h"
@@ -377,33 +379,27 @@ static inline void sort_rows(const rows *r, size_t lo, size_t hi, int first, int
     }
 }
 
-/* Row c's vertices in canonical order (lh__canonical_ranks) when it is a finite
- * cell, its neighbours permuted alike, its position in orig; whether it is finite. */
-static inline int canonical_row(const rows *r, size_t c, int nv)
-{
-    lh_index *v = r->vert + c * nv, *nb = r->nbr + c * nv;
-    r->orig[c] = (lh_index)c;
-    if (v[0] < 0) return 0;
-    int rank[LH__TDS_MAX_NV];
-    lh_index cv[LH__TDS_MAX_NV], cn[LH__TDS_MAX_NV];
-    copy_row(cv, v, nv);
-    copy_row(cn, nb, nv);
-    lh__canonical_ranks(cv, nv, rank);
-    /* scattered into the rows themselves: a copy scattered into a local array and
-       read back whole would stall on store forwarding */
-    for (int k = 0; k < nv; k++) v[rank[k]] = cv[k], nb[rank[k]] = cn[k];
-    return 1;
-}
-
-/* Each finite cell's row among cells lo..hi-1 in canonical form (canonical_row);
- * each row's first digit in dig and counted in digits; returns the number of
- * finite cells. */
+/* Each finite cell's vertex row among cells lo..hi-1 in canonical order
+ * (lh__canonical_ranks), its neighbour row permuted alike; each row's position in
+ * orig, its first digit in dig and counted in digits; returns the number of finite
+ * cells. */
 static size_t canonical_rows(const rows *r, size_t lo, size_t hi, int nv, size_t *digits)
 {
     size_t count = 0;
     for (size_t c = lo; c < hi; c++) {
-        const lh_index *v = r->vert + c * nv;
-        count += (size_t)canonical_row(r, c, nv);
+        lh_index *v = r->vert + c * nv, *nb = r->nbr + c * nv;
+        r->orig[c] = (lh_index)c;
+        if (v[0] >= 0) {
+            count++;
+            int rank[LH__TDS_MAX_NV];
+            lh_index cv[LH__TDS_MAX_NV], cn[LH__TDS_MAX_NV];
+            copy_row(cv, v, nv);
+            copy_row(cn, nb, nv);
+            lh__canonical_ranks(cv, nv, rank);
+            /* scattered into the rows themselves: a copy scattered into a local
+               array and read back whole would stall on store forwarding */
+            for (int k = 0; k < nv; k++) v[rank[k]] = cv[k], nb[rank[k]] = cn[k];
+        }
         r->dig[c] = digit_at(r, v, 0);
         digits[r->dig[c]]++;
     }
