@@ -61,8 +61,9 @@ lh_status lh__plc_count(lh__scan *s, const lh__token *t, const char *what, long 
         *n = (size_t)v;
         return LH_OK;
     }
-    char w[200];
-    snprintf(w, sizeof w, "%s (an integer from %lld to %lld)", what, lo, (long long)LH_READ_MAX_POINTS);
+    char w[256];
+    snprintf(w, sizeof w, "%.180s (an integer from %lld to %lld)", what, lo,
+             (long long)LH_READ_MAX_POINTS);
     if (!ok) return lh__expected(s, LH_ERR_PARSE, t, t->kind == LH__TOK_WORD ? w : what, NULL);
     return lh__expected(s, LH_ERR_TOO_LARGE, t, w, NULL);
 }
