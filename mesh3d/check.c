@@ -22,6 +22,7 @@
  * Every decision is an exact orient_3 (lh_orient) or a comparison of indices.
  */
 #include "check.h"
+#include "lh_sort.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -58,32 +59,23 @@ static int erec_cmp(const void *x, const void *y)
 }
 
 /* Sorts count records of size bytes whose first member is an lh_index point number
- * (0..n-1): a counting sort by it into a scratch copy, then cmp within each point's
- * bucket (a few dozen records: the full sort by cmp took half the check's time). */
+ * (0..n-1): a counting sort by it, then cmp within each point's run (a few dozen
+ * records: the full sort by cmp took half the check's time). */
 static lh_status bucket_sort(const lh__tchk *c, void *rec, size_t count, size_t size,
                              int (*cmp)(const void *, const void *))
 {
-    size_t *pos = lh__alloc(&c->al, (c->n + 1) * sizeof *pos);
-    unsigned char *tmp = lh__alloc(&c->al, count * size + 1), *r = rec;
-    if (!pos || !tmp) {
-        lh__free(&c->al, pos);
-        lh__free(&c->al, tmp);
-        return LH_ERR_NOMEM;
+    lh_status st = lh__sort_by_index(&c->al, rec, count, size, 0, c->n);
+    unsigned char *r = rec;
+    for (size_t start = 0, end; st == LH_OK && start < count; start = end) {
+        lh_index a, b;
+        memcpy(&a, r + start * size, sizeof a);
+        for (end = start + 1; end < count; end++) {
+            memcpy(&b, r + end * size, sizeof b);
+            if (b != a) break;
+        }
+        qsort(r + start * size, end - start, size, cmp);
     }
-    memset(pos, 0, (c->n + 1) * sizeof *pos);
-    lh_index key;
-    for (size_t i = 0; i < count; i++) memcpy(&key, r + i * size, sizeof key), pos[key + 1]++;
-    for (size_t v = 1; v <= c->n; v++) pos[v] += pos[v - 1];
-    for (size_t i = 0; i < count; i++) {
-        memcpy(&key, r + i * size, sizeof key);
-        memcpy(tmp + pos[key]++ * size, r + i * size, size);
-    }
-    memcpy(r, tmp, count * size);
-    for (size_t v = 0, start = 0; v < c->n; start = pos[v++])
-        qsort(r + start * size, pos[v] - start, size, cmp);
-    lh__free(&c->al, pos);
-    lh__free(&c->al, tmp);
-    return LH_OK;
+    return st;
 }
 
 static void sort3(lh_index *v)

@@ -121,31 +121,6 @@ static int cmp_ring(const void *x, const void *y)
     return 0;
 }
 
-/* The ring rows sorted as cmp_ring orders them: stable counting sorts by the second
- * point, then by the first (points below g->n); rows are made in facet order, which
- * the stable passes keep among equal pairs. */
-static lh_status sort_ring(isect *s)
-{
-    const size_t n = s->g->n, m = s->nring;
-    lh_index *tmp = alloc_n(s->al, 3 * m + 3, sizeof(lh_index));
-    size_t *count = alloc_n(s->al, n + 2, sizeof(size_t));
-    if (!tmp || !count) {
-        lh__free(s->al, tmp), lh__free(s->al, count);
-        return LH_ERR_NOMEM;
-    }
-    for (int key = 1; key >= 0; key--) {
-        memset(count, 0, (n + 2) * sizeof *count);
-        for (size_t i = 0; i < m; i++) count[s->ring[3 * i + key] + 1]++;
-        for (size_t v = 0; v < n; v++) count[v + 1] += count[v];
-        for (size_t i = 0; i < m; i++)
-            memcpy(tmp + 3 * count[s->ring[3 * i + key]]++, s->ring + 3 * i, 3 * sizeof *tmp);
-        lh_index *x = s->ring;
-        s->ring = tmp, tmp = x;
-    }
-    lh__free(s->al, tmp), lh__free(s->al, count);
-    return LH_OK;
-}
-
 /* Step 2a: every facet's polygon edges (ring edges and slits), on representatives. */
 static lh_status ring_edges(isect *s)
 {
@@ -163,7 +138,11 @@ static lh_status ring_edges(isect *s)
                 r[0] = a < b ? a : b, r[1] = a < b ? b : a, r[2] = (lh_index)f;
             }
         }
-    return s->nring ? sort_ring(s) : LH_OK;
+    /* cmp_ring's order: by the second point, then the first (stable); rows are made in
+       facet order, which stable passes keep among equal pairs */
+    const size_t row = 3 * sizeof(lh_index);
+    lh_status st = lh__sort_by_index(s->al, s->ring, s->nring, row, sizeof(lh_index), s->g->n);
+    return st == LH_OK ? lh__sort_by_index(s->al, s->ring, s->nring, row, 0, s->g->n) : st;
 }
 
 /* Whether p q (representatives) is a polygon edge of facet f. */

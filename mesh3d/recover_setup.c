@@ -10,6 +10,7 @@
 #include "lh_sort.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 int lh__t3_collinear(lh_pred *pred, const double *p, const double *q, const double *r)
@@ -296,26 +297,6 @@ static lh_status make_patches(t3_ctx *c, const lh_index *order, const signed cha
     return LH_OK;
 }
 
-/* idx (m records of r, tmp m more) in cmp_rec's order: stable counting sorts by b,
- * then by a (points below g->n); records are made in (kind, seq) order, which the
- * stable passes keep among equal pairs. */
-static lh_status sort_records(t3_ctx *c, const edge_rec *r, lh_index *idx, lh_index *tmp, size_t m)
-{
-    const size_t n = c->g->n;
-    size_t *count = lh__alloc(&c->al, (n + 2) * sizeof *count);
-    if (!count) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-    for (size_t i = 0; i < m; i++) idx[i] = (lh_index)i;
-    for (int pass = 0; pass < 2; pass++) {
-        memset(count, 0, (n + 2) * sizeof *count);
-        for (size_t i = 0; i < m; i++) count[(pass ? r[idx[i]].a : r[idx[i]].b) + 1]++;
-        for (size_t v = 0; v < n; v++) count[v + 1] += count[v];
-        for (size_t i = 0; i < m; i++) tmp[count[pass ? r[idx[i]].a : r[idx[i]].b]++] = idx[i];
-        memcpy(idx, tmp, m * sizeof *idx);
-    }
-    lh__free(&c->al, count);
-    return LH_OK;
-}
-
 static lh_status make_edges(t3_ctx *c)
 {
     size_t cap = c->g->segment_count + ring_edge_count(c->g) + 1;
@@ -325,7 +306,13 @@ static lh_status make_edges(t3_ctx *c)
     size_t m = 0;
     if (st == LH_OK) {
         m = collect_edges(c, r);
-        st = sort_records(c, r, idx, idx + m, m);
+        /* cmp_rec's order: by b, then a (stable); records are made in (kind, seq)
+           order, which stable passes keep among equal pairs */
+        st = lh__sort_by_index(&c->al, r, m, sizeof *r, offsetof(edge_rec, b), c->g->n);
+        if (st == LH_OK)
+            st = lh__sort_by_index(&c->al, r, m, sizeof *r, offsetof(edge_rec, a), c->g->n);
+        if (st != LH_OK) st = lh__t3_say(c, st, 0, "out of memory");
+        for (size_t i = 0; i < m; i++) idx[i] = (lh_index)i;
         if (st == LH_OK) st = make_segments(c, r, idx, m);
     }
     if (st == LH_OK) st = number_segments(c, r, idx, m);

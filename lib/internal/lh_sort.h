@@ -20,4 +20,11 @@ typedef struct lh__rows {
 /* An lh__cmp_fn over rows a and b of the lh__rows at ctx. */
 int lh__rows_cmp(const void *ctx, lh_index a, lh_index b);
 
+/* Stable counting sort of count records of `size` bytes by the lh_index at byte
+ * offset `at` in each, a number from 0 to n - 1, through a scratch copy allocated with
+ * al: LH_OK or LH_ERR_NOMEM (rec unchanged). Sorting by the last key first, then by
+ * the others, sorts lexicographically (least significant digit first). */
+lh_status lh__sort_by_index(const lh_allocator *al, void *rec, size_t count, size_t size, size_t at,
+                            size_t n);
+
 #endif

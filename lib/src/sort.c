@@ -1,5 +1,8 @@
-/* sort.c — stable bottom-up merge sort of indices (lh_sort.h). */
+/* sort.c — stable bottom-up merge sort of indices, and a stable counting sort of
+ * records by a point number (lh_sort.h). */
 #include "lh_sort.h"
+
+#include "lh_alloc.h"
 
 #include <string.h>
 
@@ -29,4 +32,28 @@ int lh__rows_cmp(const void *ctx, lh_index a, lh_index b)
     for (int k = 0; k < r->keylen; k++)
         if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
     return 0;
+}
+
+lh_status lh__sort_by_index(const lh_allocator *al, void *rec, size_t count, size_t size, size_t at,
+                            size_t n)
+{
+    size_t *pos = lh__alloc(al, (n + 1) * sizeof *pos);
+    unsigned char *tmp = lh__alloc(al, count * size + 1), *r = rec;
+    if (!pos || !tmp) {
+        lh__free(al, pos);
+        lh__free(al, tmp);
+        return LH_ERR_NOMEM;
+    }
+    memset(pos, 0, (n + 1) * sizeof *pos);
+    lh_index key;
+    for (size_t i = 0; i < count; i++) memcpy(&key, r + i * size + at, sizeof key), pos[key + 1]++;
+    for (size_t v = 1; v < n; v++) pos[v] += pos[v - 1];
+    for (size_t i = 0; i < count; i++) {
+        memcpy(&key, r + i * size + at, sizeof key);
+        memcpy(tmp + pos[key]++ * size, r + i * size, size);
+    }
+    memcpy(r, tmp, count * size);
+    lh__free(al, pos);
+    lh__free(al, tmp);
+    return LH_OK;
 }
