@@ -37,8 +37,8 @@ static lh_status number_points(t3_ctx *c, lh_tetmesh *m, lh_index *pmap)
 static lh_status write_tets(t3_ctx *c, const t3_domain *d, lh_tetmesh *m, const lh_index *pmap,
                             lh_index *tmap)
 {
-    size_t count = lh_tri_count(c->dt), w = 0;
-    const lh_index *s = lh_tri_simplices(c->dt), *nbr = lh_tri_neighbors(c->dt);
+    size_t count = c->tet_count, w = 0;
+    const lh_index *s = c->tv, *nbr = c->tn;
     for (size_t t = 0; t < count; t++) tmap[t] = d->label[t] == T3_OUT ? -1 : (lh_index)w++;
     m->tet_count = w;
     lh_status st = ARRAY(m, tets, 4 * w, lh_index);
@@ -79,7 +79,7 @@ static void put_face(lh_tetmesh *m, size_t f, const lh_index *tet, int j)
 static int face_here(const t3_ctx *c, const t3_domain *d, const lh_index *tmap, size_t t, int j,
                      lh_index *facet)
 {
-    lh_index u = lh_tri_neighbors(c->dt)[4 * t + j];
+    lh_index u = c->tn[4 * t + j];
     if (u >= 0 && tmap[u] >= 0 && (size_t)u < t) return 0;
     *facet = lh__t3_wall_of(d, t, j);
     return *facet >= 0 || (u < 0 && (c->opt->convex_hull || c->g->facet_count == 0));
@@ -88,8 +88,8 @@ static int face_here(const t3_ctx *c, const t3_domain *d, const lh_index *tmap, 
 /* Subfaces, counted, then written. */
 static lh_status write_faces(t3_ctx *c, const t3_domain *d, lh_tetmesh *m, const lh_index *tmap)
 {
-    size_t count = lh_tri_count(c->dt), f = 0;
-    const lh_index *nbr = lh_tri_neighbors(c->dt);
+    size_t count = c->tet_count, f = 0;
+    const lh_index *nbr = c->tn;
     lh_index facet;
     for (size_t t = 0; t < count; t++)
         for (int j = 0; tmap[t] >= 0 && j < 4; j++) f += face_here(c, d, tmap, t, j, &facet);
@@ -116,7 +116,7 @@ static lh_status write_faces(t3_ctx *c, const t3_domain *d, lh_tetmesh *m, const
 /* Whether the edge p q is in a kept tet. */
 static int kept_edge(const t3_ctx *c, const t3_domain *d, lh_index p, lh_index q)
 {
-    const lh_index *s = lh_tri_simplices(c->dt);
+    const lh_index *s = c->tv;
     for (lh_index i = c->star_first[p]; i < c->star_first[p + 1]; i++) {
         const lh_index *t = s + 4 * (size_t)c->star[i];
         if ((t[0] == q || t[1] == q || t[2] == q || t[3] == q) && d->label[c->star[i]] != T3_OUT)
@@ -190,7 +190,7 @@ static void count_steiner(const t3_ctx *c, lh_tetmesh *m, unsigned char *seen)
 
 lh_status lh__t3_output(t3_ctx *c, const t3_domain *d, lh_tetmesh *m)
 {
-    size_t count = lh_tri_count(c->dt);
+    size_t count = c->tet_count;
     lh_index *pmap = lh__alloc(&c->al, (c->n + 1) * sizeof(lh_index));
     lh_index *tmap = lh__alloc(&c->al, (count + 1) * sizeof(lh_index));
     lh_status st = pmap && tmap ? LH_OK : LH_ERR_NOMEM;

@@ -101,24 +101,46 @@ static lh_status stalled(t3_ctx *c)
                       T3_MAX_ROUNDS, c->steiner, bad, list, bad > 5 ? ", ..." : "");
 }
 
-/* The mesh recovered: its tetrahedra in canonical order again (the rounds insert
- * unordered: nothing they decide depends on that order, and the output's does). */
-static lh_status recovered(t3_ctx *c)
+/* The Delaunay tetrahedralization in canonical order again, and the mesh loaded from
+ * it (the rounds insert unordered: nothing they decide depends on that order, and the
+ * output's does). */
+static lh_status sort(t3_ctx *c)
 {
     lh_status st = lh_tri_sort(c->dt);
     if (st != LH_OK) return lh__t3_say(c, st, 0, "%s", lh_status_message(st));
     c->dup = lh_tri_duplicate_of(c->dt);
-    return lh__t3_stars(c);
+    c->sorted = 1;
+    st = lh__t3_mesh_load(c);
+    return st == LH_OK ? lh__t3_stars(c) : st;
+}
+
+/* Before the last round: nothing found before is taken as still there. The rounds
+ * between take a constraint found whole as still whole while its points' stars in
+ * the Delaunay tetrahedralization stay as they were (lh__t3_commit marks them); the
+ * flips that recovered it are then likely, not certain, to recover it again, so the
+ * last round, on the canonical order, checks everything afresh. */
+static void forget(t3_ctx *c)
+{
+    memset(c->seg_seen, 0, c->seg_count * sizeof(uint32_t));
+    memset(c->patch_seen, 0, c->patch_count * sizeof(uint32_t));
+    for (size_t k = 0; k < c->patch_count; k++) c->cover_first[k] = -1;
+    c->cover_count = 0;
 }
 
 lh_status lh__t3_recover(t3_ctx *c)
 {
     for (;;) {
         if (c->rounds == T3_MAX_ROUNDS) return stalled(c);
-        lh_status st = split_edges(c);
+        lh_status st = lh__t3_flip(c);
+        if (st == LH_OK) st = split_edges(c);
         if (st == LH_OK && c->new_count == 0) st = split_faces(c);
         if (st != LH_OK) return st;
-        if (c->new_count == 0) return recovered(c);
+        if (c->new_count == 0 && c->sorted) return LH_OK;
+        if (c->new_count == 0) { /* once more from the canonical order: the output's */
+            if ((st = sort(c)) != LH_OK) return st;
+            forget(c);
+            continue;
+        }
         if (!c->opt->boundary_steiner)
             return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                               "-Y: recovering the boundary needs Steiner points on it, and "
@@ -128,6 +150,7 @@ lh_status lh__t3_recover(t3_ctx *c)
                               "boundary recovery needs more than %zu Steiner points (-S)",
                               budget(c));
         c->rounds++;
+        c->sorted = 0;
         if ((st = lh__t3_commit(c)) != LH_OK) return st;
     }
 }

@@ -109,6 +109,24 @@ typedef struct t3_ctx {
     lh_index *cover_len;   /* per patch: their number                                */
     size_t steiner;        /* Steiner points inserted                                */
     size_t rounds;
+    /* the mesh the constraints are sought in (tets.c): the Delaunay tetrahedralization
+       after the round's insertions, then changed by flips (recover_flip.c) */
+    lh_index *tv, *tn; /* 4 per tet: points (orient_3 > 0), neighbour opposite
+                               each (-1: none); tv[4 t] = -1 for a replaced tet      */
+    size_t tet_count, tet_cap;
+    lh_index *vtet; /* per point: a tet holding it, or -1                     */
+    size_t vtet_cap;
+    lh_index *tmark, tgen; /* per tet: visit marks (lh__t3_mesh_mark)                */
+    lh_index *sbuf;        /* scratch: a star                                        */
+    size_t scap;
+    lh_index *lock_first; /* n + 1 offsets into lock: per point p, the other ends q
+                               > p of the subsegments from it, which flips keep      */
+    lh_index *lock;
+    size_t lock_cap, lock_first_cap;
+    size_t flips;                      /* flips made this round                                  */
+    lh_index *seg_order, *patch_order; /* segments, patches by their points'
+                                          coordinates: the order flips take them in */
+    int sorted;                        /* whether dt is in canonical order                       */
 } t3_ctx;
 
 /* Sorts three indices in place (faces compared as sets). */
@@ -177,5 +195,27 @@ int lh__t3_patch_changed(const t3_ctx *c, size_t k, uint32_t r);
  * those it was found whole with, else gathered again; *faces is valid until the next
  * call. */
 lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t *count);
+
+/* tets.c: the mesh (t3_ctx.tv, tn). At most this many tets replaced or made at once. */
+#define T3_FLIP_TETS 12
+/* Loads the Delaunay tetrahedralization. */
+lh_status lh__t3_mesh_load(t3_ctx *c);
+/* A fresh visit mark for tmark. */
+lh_index lh__t3_mesh_mark(t3_ctx *c);
+/* The tets holding point v into c->sbuf, *count of them. */
+lh_status lh__t3_mesh_star(t3_ctx *c, lh_index v, size_t *count);
+/* Replaces the nold tets old by the nnew tets nv (any orientation; made positive), which
+ * the caller has checked fill the same region; *ok = 0 and nothing changed when one of
+ * them is flat. */
+lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index (*nv)[4], int nnew,
+                              int *ok);
+/* Drops the replaced tets' slots, renumbering the rest in order. */
+void lh__t3_mesh_compact(t3_ctx *c);
+
+/* recover_flip.c: recovers by flips the subsegments that are not edges of the mesh
+ * and, when every one is, the missing facet triangles (Si 2015, sec. 3; Shewchuk,
+ * "Updating and constructing constrained Delaunay and constrained regular
+ * triangulations by flips", SoCG 2003); then compacts the mesh and rebuilds the stars. */
+lh_status lh__t3_flip(t3_ctx *c);
 
 #endif

@@ -203,7 +203,7 @@ static int apex_side(t3_ctx *c, size_t k, const lh_index *f, lh_index apex)
  * *count of them. */
 static lh_status face_records(t3_ctx *c, size_t k, patch_scan *ps, size_t *count)
 {
-    const lh_index *s = lh_tri_simplices(c->dt);
+    const lh_index *s = c->tv;
     size_t nf = 0;
     for (size_t i = 0; i < ps->nv; i++) {
         lh_index v = c->vbuf[i];

@@ -100,7 +100,7 @@ lh_status lh__t3_queue(t3_ctx *c, lh_index s, double t, lh_index p, const double
 /* A mesh vertex exactly on the open subsegment p q next to p, or -1. */
 static lh_index vertex_on(const t3_ctx *c, lh_index p, lh_index q)
 {
-    const lh_index *s = lh_tri_simplices(c->dt);
+    const lh_index *s = c->tv;
     lh_index best = -1;
     for (lh_index i = c->star_first[p]; i < c->star_first[p + 1]; i++)
         for (int j = 0; j < 4; j++) {
@@ -299,7 +299,7 @@ static lh_status mark_changed(t3_ctx *c, size_t first_new, const t3_node *nodes,
         c->changed = x, c->changed_cap = cap;
     }
     const uint32_t r = (uint32_t)c->rounds;
-    const lh_index *s = lh_tri_simplices(c->dt);
+    const lh_index *s = c->tv;
     for (size_t p = first_new; p < c->n; p++) {
         if (c->dup[p] != (lh_index)p) continue;
         for (lh_index i = c->star_first[p]; i < c->star_first[p + 1]; i++)
@@ -344,6 +344,7 @@ lh_status lh__t3_commit(t3_ctx *c)
         return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                           "boundary recovery made no progress: every split point fell on a "
                           "point already there");
+    if (st == LH_OK) st = lh__t3_mesh_load(c);
     if (st == LH_OK) st = lh__t3_stars(c);
     if (st == LH_OK) st = mark_changed(c, first_new, c->new_node, m);
     c->new_count = 0;

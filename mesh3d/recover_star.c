@@ -8,8 +8,8 @@
 
 lh_status lh__t3_stars(t3_ctx *c)
 {
-    size_t n = lh_tri_site_count(c->dt), count = lh_tri_count(c->dt);
-    const lh_index *s = lh_tri_simplices(c->dt);
+    size_t n = c->n, count = c->tet_count;
+    const lh_index *s = c->tv;
     lh__free(&c->al, c->star_first);
     lh__free(&c->al, c->star);
     c->star = NULL;
@@ -36,7 +36,7 @@ static int tet_has(const lh_index *t, lh_index v)
 
 int lh__t3_has_edge(const t3_ctx *c, lh_index p, lh_index q)
 {
-    const lh_index *s = lh_tri_simplices(c->dt);
+    const lh_index *s = c->tv;
     if (c->star_first[p + 1] - c->star_first[p] > c->star_first[q + 1] - c->star_first[q]) {
         lh_index x = p;
         p = q;
@@ -49,7 +49,7 @@ int lh__t3_has_edge(const t3_ctx *c, lh_index p, lh_index q)
 
 int lh__t3_has_face(const t3_ctx *c, lh_index a, lh_index b, lh_index d)
 {
-    const lh_index *s = lh_tri_simplices(c->dt);
+    const lh_index *s = c->tv;
     for (lh_index i = c->star_first[a]; i < c->star_first[a + 1]; i++) {
         const lh_index *t = s + 4 * (size_t)c->star[i];
         if (tet_has(t, b) && tet_has(t, d)) return 1;

@@ -13,12 +13,14 @@
 
 static void ctx_free(t3_ctx *c)
 {
-    void *arrays[] = {c->xyz,      c->tri,         c->tri_facet, c->tri_seg,     c->seg,
-                      c->seg_key,  c->patch_first, c->patch_tri, c->patch_facet, c->patch_axis,
-                      c->pnode,    c->pnode_first, c->node,      c->node_first,  c->new_xyz,
-                      c->new_node, c->star_first,  c->star,      c->stamp,       c->vbuf,
-                      c->fbuf,     c->ebuf,        c->changed,   c->seg_seen,    c->patch_seen,
-                      c->cover,    c->cover_first, c->cover_len};
+    void *arrays[] = {c->xyz,       c->tri,         c->tri_facet, c->tri_seg,     c->seg,
+                      c->seg_key,   c->patch_first, c->patch_tri, c->patch_facet, c->patch_axis,
+                      c->pnode,     c->pnode_first, c->node,      c->node_first,  c->new_xyz,
+                      c->new_node,  c->star_first,  c->star,      c->stamp,       c->vbuf,
+                      c->fbuf,      c->ebuf,        c->changed,   c->seg_seen,    c->patch_seen,
+                      c->cover,     c->cover_first, c->cover_len, c->tv,          c->tn,
+                      c->vtet,      c->tmark,       c->sbuf,      c->lock,        c->lock_first,
+                      c->seg_order, c->patch_order};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
     lh_tri_free(c->dt);
     lh_pred_free(c->pred);
@@ -40,6 +42,7 @@ static lh_status start(t3_ctx *c)
                           "the points are coplanar, or fewer than 4 distinct: no volume to mesh");
     if (st != LH_OK) return lh__t3_say(c, st, 0, "%s", lh_status_message(st));
     c->dup = lh_tri_duplicate_of(c->dt);
+    c->sorted = 1;
     c->n = c->n_input = g->n;
     c->n_cap = 2 * g->n + 16;
     c->xyz = lh__alloc(&c->al, 3 * c->n_cap * sizeof(double));
@@ -93,7 +96,8 @@ static lh_status constraints(t3_ctx *c, size_t *nonplanar)
     memset(c->seg_seen, 0, (c->seg_count + 1) * sizeof(uint32_t));
     memset(c->patch_seen, 0, (c->patch_count + 1) * sizeof(uint32_t));
     for (size_t k = 0; k <= c->patch_count; k++) c->cover_first[k] = -1, c->cover_len[k] = 0;
-    return lh__t3_stars(c);
+    st = lh__t3_mesh_load(c);
+    return st == LH_OK ? lh__t3_stars(c) : st;
 }
 
 static lh_status mesh(t3_ctx *c, lh_tetmesh **out)

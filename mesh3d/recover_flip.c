@@ -1,0 +1,572 @@
+/*
+ * recover_flip.c — constraints recovered by flips before any is split (Si, "TetGen, a
+ * Delaunay-based quality tetrahedral mesh generator", ACM TOMS 41(2) 2015, sec. 3.2;
+ * Shewchuk, "Updating and constructing constrained Delaunay and constrained regular
+ * triangulations by flips", SoCG 2003).
+ *
+ * A subsegment a b that is not an edge leaves a through the face opposite a of the
+ * one tet whose cone at a holds b strictly. A 2-3 flip of that face, when the two
+ * tets beside it form a convex union, makes an edge from a to the far apex and takes
+ * one tet off the way to b; when their union is not convex, a 3-2 flip of an edge of
+ * the face with three tets around it is tried instead. A facet triangle a b c whose
+ * edges are all there is recovered by 3-2 flips of the edges crossing it. Flips never
+ * remove a subsegment (t3_ctx.lock), and each is checked exactly (no flat tet, the
+ * same region filled). What flips do not recover is split as before (recover.c);
+ * the mesh is loaded again from the Delaunay tetrahedralization after each round's
+ * insertions, so a round's flips start from the point set alone. Constraints are
+ * taken in the order of their points' coordinates, and every choice is geometric, so
+ * the result does not depend on the input's order.
+ */
+#include "recover.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Flips tried on one constraint before it is left to splitting. */
+#define T3_FLIPS_PER_CONSTRAINT 64
+
+static const double *pt(const t3_ctx *c, lh_index p)
+{
+    return c->xyz + 3 * (size_t)p;
+}
+
+static int orient4(t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
+{
+    const double *p[4] = {pt(c, a), pt(c, b), pt(c, d), pt(c, e)};
+    return lh_orient(c->pred, 3, p);
+}
+
+static int has(const lh_index *t, lh_index v)
+{
+    return t[0] == v || t[1] == v || t[2] == v || t[3] == v;
+}
+
+static int slot_of(const lh_index *t, lh_index v)
+{
+    for (int j = 0; j < 4; j++)
+        if (t[j] == v) return j;
+    return -1;
+}
+
+/* ---- the order constraints are taken in ---- */
+
+typedef struct keyed {
+    double key[9];
+    lh_index i;
+} keyed;
+
+static int cmp_keyed(const void *x, const void *y)
+{
+    const keyed *a = x, *b = y;
+    for (int k = 0; k < 9; k++)
+        if (a->key[k] != b->key[k]) return a->key[k] < b->key[k] ? -1 : 1;
+    return 0;
+}
+
+static int cmp_point(const double *p, const double *q)
+{
+    for (int k = 0; k < 3; k++)
+        if (p[k] != q[k]) return p[k] < q[k] ? -1 : 1;
+    return 0;
+}
+
+/* The patch's first triangle's corners' coordinates, in coordinate order. */
+static void patch_key(const t3_ctx *c, size_t k, double *key)
+{
+    const lh_index *t = c->tri + 3 * (size_t)c->patch_tri[c->patch_first[k]];
+    const double *p[3] = {pt(c, t[0]), pt(c, t[1]), pt(c, t[2])};
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2 - a; b++)
+            if (cmp_point(p[b], p[b + 1]) > 0) {
+                const double *x = p[b];
+                p[b] = p[b + 1];
+                p[b + 1] = x;
+            }
+    for (int i = 0; i < 3; i++) memcpy(key + 3 * i, p[i], 3 * sizeof(double));
+}
+
+static lh_status orders(t3_ctx *c)
+{
+    size_t m = c->seg_count > c->patch_count ? c->seg_count : c->patch_count;
+    keyed *kb = lh__alloc(&c->al, (m + 1) * sizeof(keyed));
+    c->seg_order = lh__alloc(&c->al, (c->seg_count + 1) * sizeof(lh_index));
+    c->patch_order = lh__alloc(&c->al, (c->patch_count + 1) * sizeof(lh_index));
+    if (!kb || !c->seg_order || !c->patch_order) {
+        lh__free(&c->al, kb);
+        return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    }
+    for (size_t s = 0; s < c->seg_count; s++) {
+        memcpy(kb[s].key, pt(c, c->seg[s].a), 3 * sizeof(double));
+        memcpy(kb[s].key + 3, pt(c, c->seg[s].b), 3 * sizeof(double));
+        kb[s].key[6] = kb[s].key[7] = kb[s].key[8] = 0;
+        kb[s].i = (lh_index)s;
+    }
+    if (c->seg_count) qsort(kb, c->seg_count, sizeof(keyed), cmp_keyed);
+    for (size_t s = 0; s < c->seg_count; s++) c->seg_order[s] = kb[s].i;
+    for (size_t k = 0; k < c->patch_count; k++) {
+        patch_key(c, k, kb[k].key);
+        kb[k].i = (lh_index)k;
+    }
+    if (c->patch_count) qsort(kb, c->patch_count, sizeof(keyed), cmp_keyed);
+    for (size_t k = 0; k < c->patch_count; k++) c->patch_order[k] = kb[k].i;
+    lh__free(&c->al, kb);
+    return LH_OK;
+}
+
+/* ---- the subsegments, which no flip may remove ---- */
+
+/* Calls f(c, p, q, arg) for every subsegment p q, p < q. */
+static lh_status each_subsegment(t3_ctx *c, void (*f)(t3_ctx *, lh_index, lh_index, size_t *),
+                                 size_t *arg)
+{
+    for (size_t s = 0; s < c->seg_count; s++) {
+        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
+        lh_status st = lh__t3_room(c, &c->vbuf, &c->vcap, cl);
+        if (st != LH_OK) return st;
+        lh__t3_chain(c, (lh_index)s, c->vbuf, c->vcap);
+        for (size_t i = 0; i + 1 < cl; i++) {
+            lh_index p = c->vbuf[i], q = c->vbuf[i + 1];
+            f(c, p < q ? p : q, p < q ? q : p, arg);
+        }
+    }
+    return LH_OK;
+}
+
+static void count_lock(t3_ctx *c, lh_index p, lh_index q, size_t *total)
+{
+    (void)q;
+    c->lock_first[p + 1]++;
+    ++*total;
+}
+
+static void put_lock(t3_ctx *c, lh_index p, lh_index q, size_t *unused)
+{
+    (void)unused;
+    c->lock[c->lock_first[p]++] = q;
+}
+
+/* lock_first and lock: the subsegments by their smaller end (a counting sort). */
+static lh_status locks(t3_ctx *c)
+{
+    size_t total = 0;
+    lh_status st = lh__t3_room(c, &c->lock_first, &c->lock_first_cap, c->n + 1);
+    if (st != LH_OK) return st;
+    memset(c->lock_first, 0, (c->n + 1) * sizeof(lh_index));
+    if ((st = each_subsegment(c, count_lock, &total)) != LH_OK) return st;
+    if ((st = lh__t3_room(c, &c->lock, &c->lock_cap, total + 1)) != LH_OK) return st;
+    for (size_t v = 0; v < c->n; v++) c->lock_first[v + 1] += c->lock_first[v];
+    if ((st = each_subsegment(c, put_lock, NULL)) != LH_OK) return st;
+    for (size_t v = c->n; v > 0; v--) c->lock_first[v] = c->lock_first[v - 1];
+    c->lock_first[0] = 0;
+    return LH_OK;
+}
+
+static int locked(const t3_ctx *c, lh_index p, lh_index q)
+{
+    if (p > q) {
+        lh_index x = p;
+        p = q;
+        q = x;
+    }
+    for (lh_index i = c->lock_first[p]; i < c->lock_first[p + 1]; i++)
+        if (c->lock[i] == q) return 1;
+    return 0;
+}
+
+/* ---- flips ---- */
+
+/* Ring sizes edge removal tries: up to T3_RING points around the edge. */
+#define T3_RING 7
+
+/* The points around edge x y, in the turn of orient(x, y, r_i, r_i+1) > 0, and the
+ * tets between them: *closed, or an open fan from one hull face to the other. */
+typedef struct ring {
+    lh_index x, y, r[T3_RING + 1], t[T3_RING];
+    int k, closed; /* k points; k tets when closed, k - 1 when open */
+} ring;
+
+/* The other two points of tet t than x and y, in the turn around x y. */
+static void others(t3_ctx *c, lh_index t, lh_index x, lh_index y, lh_index *u, lh_index *w)
+{
+    const lh_index *tv = c->tv + 4 * (size_t)t;
+    lh_index o[2];
+    int n = 0;
+    for (int j = 0; j < 4; j++)
+        if (tv[j] != x && tv[j] != y) o[n++] = tv[j];
+    int s = orient4(c, x, y, o[0], o[1]);
+    *u = s > 0 ? o[0] : o[1], *w = s > 0 ? o[1] : o[0];
+}
+
+/* The far point of the tet beside t across its face without point `off`, and that
+ * tet (-1: the hull). */
+static lh_index across(t3_ctx *c, lh_index t, lh_index off, lh_index keep0, lh_index keep1,
+                       lh_index keep2, lh_index *far)
+{
+    lh_index u = c->tn[4 * (size_t)t + slot_of(c->tv + 4 * (size_t)t, off)];
+    for (int j = 0; u >= 0 && j < 4; j++) {
+        lh_index v = c->tv[4 * (size_t)u + j];
+        if (v != keep0 && v != keep1 && v != keep2) *far = v;
+    }
+    return u;
+}
+
+/* The ring of edge x y from tet t; 0 when it has more than T3_RING points. */
+static int ring_of(t3_ctx *c, lh_index t, lh_index x, lh_index y, ring *g)
+{
+    lh_index a, b, cur = t, far = -1;
+    g->x = x, g->y = y;
+    others(c, t, x, y, &a, &b);
+    for (int step = 0;; step++) { /* back to the hull, or round to t */
+        if (step > T3_RING) return 0;
+        lh_index u = across(c, cur, b, x, y, a, &far);
+        if (u < 0 || u == t) break;
+        b = a, a = far, cur = u;
+    }
+    g->k = 0;
+    g->r[g->k++] = a;
+    for (lh_index start = cur;;) {
+        if (g->k > T3_RING) return 0;
+        g->t[g->k - 1] = cur;
+        g->r[g->k++] = b;
+        lh_index u = across(c, cur, a, x, y, b, &far);
+        if (u == start) {
+            g->closed = 1, g->k--;
+            return g->k <= T3_RING;
+        }
+        if (u < 0) {
+            g->closed = 0;
+            return g->k <= T3_RING;
+        }
+        a = b, b = far, cur = u;
+    }
+}
+
+static int before(const t3_ctx *c, lh_index p, lh_index q)
+{
+    return cmp_point(pt(c, p), pt(c, q)) < 0;
+}
+
+/* A closed ring turned to start at its point first in coordinates, so that what is
+ * tried first does not depend on the tets' numbering. */
+static void ring_start(const t3_ctx *c, ring *g)
+{
+    if (!g->closed) return;
+    int m = 0;
+    for (int i = 1; i < g->k; i++)
+        if (before(c, g->r[i], g->r[m])) m = i;
+    lh_index r[T3_RING], t[T3_RING];
+    for (int i = 0; i < g->k; i++) r[i] = g->r[(i + m) % g->k], t[i] = g->t[(i + m) % g->k];
+    memcpy(g->r, r, sizeof r);
+    memcpy(g->t, t, sizeof t);
+}
+
+/* The triangulations of a convex k-gon (k <= T3_RING) as corner triples, in a fixed
+ * order: the triangle on edge 0 (k-1) with apex m = 1 .. k-2, then the two sides'. */
+typedef struct tris {
+    int n; /* triangles so far */
+    int v[T3_RING - 2][3];
+} tris;
+
+/* Calls try(each triangulation of poly[lo..hi] appended to *cur) until it returns
+ * nonzero; returns that. */
+typedef struct enum_ctx {
+    t3_ctx *c;
+    ring *g;
+    int s; /* the side x is on, once a triangle fixed it */
+    lh_status st;
+    int done;
+} enum_ctx;
+
+static int triangle_ok(enum_ctx *e, const int *v)
+{
+    const ring *g = e->g;
+    int sx = orient4(e->c, g->r[v[0]], g->r[v[1]], g->r[v[2]], g->x);
+    int sy = orient4(e->c, g->r[v[0]], g->r[v[1]], g->r[v[2]], g->y);
+    return sx != 0 && sx == -sy;
+}
+
+/* Replaces the ring's tets by x and y joined to triangulation tr. */
+static void apply(enum_ctx *e, const tris *tr)
+{
+    lh_index nv[2 * (T3_RING - 2)][4];
+    for (int i = 0; i < tr->n; i++)
+        for (int s = 0; s < 2; s++) {
+            nv[2 * i + s][0] = s ? e->g->y : e->g->x;
+            for (int j = 0; j < 3; j++) nv[2 * i + s][j + 1] = e->g->r[tr->v[i][j]];
+        }
+    int nold = e->g->closed ? e->g->k : e->g->k - 1;
+    e->st = lh__t3_mesh_replace(e->c, e->g->t, nold, nv, 2 * tr->n, &e->done);
+}
+
+/* Depth-first over the triangulations of the polygons on the stack; a triangle whose
+ * sides x and y are not strictly opposite ends the branch. */
+static void search(enum_ctx *e, tris *tr, int (*stack)[2], int top)
+{
+    if (e->done || e->st != LH_OK) return;
+    if (top == 0) {
+        apply(e, tr);
+        return;
+    }
+    int lo = stack[top - 1][0], hi = stack[top - 1][1];
+    if (hi - lo < 2) {
+        search(e, tr, stack, top - 1);
+        return;
+    }
+    for (int m = lo + 1; m < hi && !e->done && e->st == LH_OK; m++) {
+        int *v = tr->v[tr->n];
+        v[0] = lo, v[1] = m, v[2] = hi;
+        if (!triangle_ok(e, v)) continue;
+        int sx = orient4(e->c, e->g->r[lo], e->g->r[m], e->g->r[hi], e->g->x);
+        if (e->s && sx != e->s) continue;
+        int keep = e->s;
+        e->s = sx;
+        tr->n++;
+        stack[top - 1][0] = lo, stack[top - 1][1] = m;
+        stack[top][0] = m, stack[top][1] = hi;
+        search(e, tr, stack, top + 1);
+        stack[top - 1][0] = lo, stack[top - 1][1] = hi;
+        tr->n--;
+        e->s = keep;
+    }
+}
+
+/* Edge removal (Shewchuk, "Two discrete optimization algorithms for the topological
+ * improvement of tetrahedral meshes", 2002, sec. 3): the tets around edge p q of tet
+ * t replaced by p and q joined to a triangulation of the ring of points around it —
+ * the 3-2 flip for three, the 4-4 flip for four with two opposite points coplanar
+ * with the edge, the 2-2 flip of two coplanar hull faces. Valid when every new tet
+ * is positive: p and q strictly on opposite sides of every triangle, the same sides
+ * for all; an open ring (an edge on the hull) needs its two end points coplanar with
+ * p q, so that the hull keeps its shape. Never a subsegment. *done says whether. */
+static lh_status remove_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int *done)
+{
+    ring g;
+    *done = 0;
+    if (locked(c, p, q)) return LH_OK;
+    if (before(c, q, p)) {
+        lh_index x = p;
+        p = q;
+        q = x;
+    }
+    if (!ring_of(c, t, p, q, &g) || g.k < 3) return LH_OK;
+    if (!g.closed && orient4(c, p, q, g.r[0], g.r[g.k - 1]) != 0) return LH_OK;
+    ring_start(c, &g);
+    enum_ctx e = {c, &g, 0, LH_OK, 0};
+    tris tr = {0, {{0}}};
+    int stack[T3_RING][2] = {{0, g.k - 1}};
+    search(&e, &tr, stack, 1);
+    *done = e.done;
+    return e.st;
+}
+
+/* The 2-3 flip of face j of tet t (opposite its point a) with the tet beyond, whose
+ * far point is q: when a q crosses the face's interior. */
+static lh_status flip23(t3_ctx *c, lh_index t, int j, int *done)
+{
+    *done = 0;
+    lh_index u = c->tn[4 * (size_t)t + j];
+    if (u < 0) return LH_OK;
+    const lh_index *tv = c->tv + 4 * (size_t)t, a = tv[j];
+    lh_index f[3], w = 0, q = -1;
+    for (int k = 0; k < 4; k++)
+        if (k != j) f[w++] = tv[k];
+    for (int k = 0; k < 4; k++)
+        if (!has(tv, c->tv[4 * (size_t)u + k])) q = c->tv[4 * (size_t)u + k];
+    int s0 = orient4(c, a, q, f[0], f[1]), s1 = orient4(c, a, q, f[1], f[2]);
+    int s2 = orient4(c, a, q, f[2], f[0]);
+    if (s0 == 0 || s0 != s1 || s1 != s2) return LH_OK;
+    lh_index old[2] = {t, u};
+    lh_index nv[3][4] = {{a, q, f[0], f[1]}, {a, q, f[1], f[2]}, {a, q, f[2], f[0]}};
+    return lh__t3_mesh_replace(c, old, 2, nv, 3, done);
+}
+
+/* ---- segments ---- */
+
+enum { CONE_NONE, CONE_EDGE, CONE_TET, CONE_FACE };
+
+/* Whether a b is an edge (CONE_EDGE); else the tet *t around a whose cone at a holds
+ * b strictly (CONE_TET: a b leaves t through its face opposite a), or holds it on one
+ * face only, the one opposite corner *j (CONE_FACE: a b runs inside that face and
+ * leaves it through its edge off a); else CONE_NONE (a b runs along an edge). */
+static lh_status cone_tet(t3_ctx *c, lh_index a, lh_index b, lh_index *t, int *j, int *kind)
+{
+    size_t k;
+    lh_status st = lh__t3_mesh_star(c, a, &k);
+    *kind = CONE_NONE;
+    for (size_t i = 0; i < k && st == LH_OK; i++) {
+        const lh_index *tv = c->tv + 4 * (size_t)c->sbuf[i];
+        if (has(tv, b)) {
+            *kind = CONE_EDGE;
+            return LH_OK;
+        }
+    }
+    for (size_t i = 0; i < k && st == LH_OK; i++) {
+        const lh_index *tv = c->tv + 4 * (size_t)c->sbuf[i];
+        int neg = 0, zeros = 0, zero = -1;
+        for (int m = 0; m < 4 && !neg; m++) {
+            if (tv[m] == a) continue;
+            const double *p[4];
+            for (int q = 0; q < 4; q++) p[q] = pt(c, q == m ? b : tv[q]);
+            int o = lh_orient(c->pred, 3, p);
+            neg = o < 0;
+            if (o == 0) zeros++, zero = m;
+        }
+        if (neg || zeros > 1) continue;
+        *t = c->sbuf[i], *j = zero;
+        *kind = zeros ? CONE_FACE : CONE_TET;
+        if (!zeros) return LH_OK;
+    }
+    return st;
+}
+
+/* Flips toward the edge a b; *edge says whether it is one at the end. */
+static lh_status flip_edge(t3_ctx *c, lh_index a, lh_index b, int *edge)
+{
+    *edge = 0;
+    for (int it = 0; it < T3_FLIPS_PER_CONSTRAINT; it++) {
+        lh_index t;
+        int kind, done = 0, z;
+        lh_status st = cone_tet(c, a, b, &t, &z, &kind);
+        if (st != LH_OK || kind == CONE_NONE || kind == CONE_EDGE) {
+            *edge = kind == CONE_EDGE;
+            return st;
+        }
+        int j = slot_of(c->tv + 4 * (size_t)t, a);
+        if (kind == CONE_FACE) { /* the edge of t off a and corner z is in the way */
+            lh_index e[2], w = 0;
+            for (int m = 0; m < 4; m++)
+                if (m != j && m != z) e[w++] = c->tv[4 * (size_t)t + m];
+            if ((st = remove_edge(c, t, e[0], e[1], &done)) != LH_OK) return st;
+            if (!done) return LH_OK;
+            continue;
+        }
+        if ((st = flip23(c, t, j, &done)) != LH_OK) return st;
+        for (int k = 0; !done && k < 4; k++) { /* a reflex edge of the face */
+            if (k == j) continue;
+            for (int m = k + 1; !done && m < 4; m++) {
+                if (m == j) continue;
+                lh_index p = c->tv[4 * (size_t)t + k], q = c->tv[4 * (size_t)t + m];
+                if ((st = remove_edge(c, t, p, q, &done)) != LH_OK) return st;
+            }
+        }
+        if (!done) return LH_OK;
+    }
+    return LH_OK;
+}
+
+/* ---- facet triangles ---- */
+
+/* Whether edge p q crosses the open triangle a b d at one interior point. */
+static int crosses(t3_ctx *c, const lh_index *f, lh_index p, lh_index q)
+{
+    int op = orient4(c, f[0], f[1], f[2], p), oq = orient4(c, f[0], f[1], f[2], q);
+    if (op == 0 || op != -oq) return 0;
+    int s0 = orient4(c, p, q, f[0], f[1]), s1 = orient4(c, p, q, f[1], f[2]);
+    int s2 = orient4(c, p, q, f[2], f[0]);
+    return s0 != 0 && s0 == s1 && s1 == s2;
+}
+
+/* The tets around a, b and d into c->ebuf (repeats and all), *count of them. */
+static lh_status around(t3_ctx *c, const lh_index *f, size_t *count)
+{
+    size_t m = 0;
+    for (int i = 0; i < 3; i++) {
+        size_t k;
+        lh_status st = lh__t3_mesh_star(c, f[i], &k);
+        if (st == LH_OK) st = lh__t3_room(c, &c->ebuf, &c->ecap, m + k);
+        if (st != LH_OK) return st;
+        memcpy(c->ebuf + m, c->sbuf, k * sizeof(lh_index));
+        m += k;
+    }
+    *count = m;
+    return LH_OK;
+}
+
+/* Flips the edges crossing triangle f out of the way; *face says whether it is a
+ * face of the mesh at the end. */
+static lh_status flip_face(t3_ctx *c, const lh_index *f, int *face)
+{
+    *face = 0;
+    for (int it = 0; it < T3_FLIPS_PER_CONSTRAINT; it++) {
+        size_t k;
+        lh_status st = around(c, f, &k);
+        if (st != LH_OK) return st;
+        for (size_t i = 0; i < k; i++) {
+            const lh_index *tv = c->tv + 4 * (size_t)c->ebuf[i];
+            if (has(tv, f[0]) && has(tv, f[1]) && has(tv, f[2])) {
+                *face = 1;
+                return LH_OK;
+            }
+        }
+        int done = 0;
+        for (size_t i = 0; i < k && !done; i++) {
+            const lh_index t = c->ebuf[i];
+            for (int x = 0; x < 4 && !done; x++)
+                for (int y = x + 1; y < 4 && !done; y++) {
+                    lh_index p = c->tv[4 * (size_t)t + x], q = c->tv[4 * (size_t)t + y];
+                    if (!crosses(c, f, p, q)) continue;
+                    if ((st = remove_edge(c, t, p, q, &done)) != LH_OK) return st;
+                }
+        }
+        if (!done) return LH_OK;
+    }
+    return LH_OK;
+}
+
+/* Whether the tets the stars (c->star) listed when the mesh was loaded hold a tet
+ * on all n points of v: then the mesh still has them as an edge or face, since flips
+ * remove no subsegment (a 3-2 flip removes only the faces around the edge it takes
+ * out, and the faces flipped for are bounded by subsegments). */
+static int kept(const t3_ctx *c, const lh_index *v, int n)
+{
+    for (lh_index i = c->star_first[v[0]]; i < c->star_first[v[0] + 1]; i++) {
+        const lh_index *tv = c->tv + 4 * (size_t)c->star[i];
+        int in = has(tv, v[0]);
+        for (int k = 1; k < n && in; k++) in = has(tv, v[k]);
+        if (in) return 1;
+    }
+    return 0;
+}
+
+/* Patch k's one triangle, when it is one and its edges are unsplit subsegments. */
+static int lone_triangle(const t3_ctx *c, size_t k, lh_index *f)
+{
+    if (c->patch_first[k + 1] - c->patch_first[k] != 1) return 0;
+    if (c->pnode_first && c->pnode_first[k + 1] != c->pnode_first[k]) return 0;
+    lh_index tri = c->patch_tri[c->patch_first[k]];
+    for (int i = 0; i < 3; i++) {
+        lh_index s = c->tri_seg[3 * (size_t)tri + i];
+        if (s < 0 || c->node_first[s + 1] != c->node_first[s]) return 0;
+        f[i] = c->tri[3 * (size_t)tri + i];
+    }
+    return 1;
+}
+
+lh_status lh__t3_flip(t3_ctx *c)
+{
+    lh_status st = c->seg_order ? LH_OK : orders(c);
+    if (st == LH_OK) st = locks(c);
+    int all = 1;
+    c->flips = 0;
+    for (size_t i = 0; i < c->seg_count && st == LH_OK; i++) {
+        lh_index s = c->seg_order[i];
+        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
+        if ((st = lh__t3_room(c, &c->vbuf, &c->vcap, cl)) != LH_OK) break;
+        lh__t3_chain(c, s, c->vbuf, c->vcap);
+        for (size_t j = 0; j + 1 < cl && st == LH_OK; j++) {
+            int edge;
+            if (kept(c, c->vbuf + j, 2)) continue;
+            st = flip_edge(c, c->vbuf[j], c->vbuf[j + 1], &edge);
+            all &= edge;
+        }
+    }
+    for (size_t i = 0; all && i < c->patch_count && st == LH_OK; i++) {
+        const size_t k = (size_t)c->patch_order[i];
+        lh_index f[3];
+        int face;
+        if (lone_triangle(c, k, f) && !kept(c, f, 3)) st = flip_face(c, f, &face);
+    }
+    if (st != LH_OK || c->flips == 0) return st; /* the stars are the loaded mesh's */
+    lh__t3_mesh_compact(c);
+    return lh__t3_stars(c);
+}
