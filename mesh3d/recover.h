@@ -1,12 +1,13 @@
 /*
- * recover.h — boundary recovery by conforming Delaunay splitting (docs/meshing3d.md).
+ * recover.h — boundary recovery by flips, then splitting (docs/meshing3d.md).
  *
  * The constraints are the facets, each recovered as a whole (a patch: the region its
  * triangulation in its plane covers), and the segments: the facets' polygon edges and
- * the PLC's free segments. The mesh
- * is always the Delaunay tetrahedralization of the points so far (lift/: lh_delaunay,
- * then lh_tri_insert), exact and unique under the lifted perturbation, so every stage
- * works on a valid tetrahedralization. Rounds alternate:
+ * the PLC's free segments. Each round loads the Delaunay tetrahedralization of the
+ * points so far (lift/: lh_delaunay, then lh_tri_insert), exact and unique under the
+ * lifted perturbation, into a mutable mesh (tets.c) and recovers what it can by flips
+ * (recover_flip.c), each checked exactly, so every stage works on a valid
+ * tetrahedralization. Then what flips left is split:
  *   - a subsegment (two consecutive points of a segment's chain) that is not an edge
  *     is split: at a point of the mesh lying exactly on it, else at a new point —
  *     its midpoint, or, next to an input vertex, the point at a power-of-two distance
@@ -16,10 +17,10 @@
  *   - when every subsegment is an edge, a facet that is not a union of mesh faces on
  *     its points (recover_faces.c) has its longest uncovered subsegment split, or,
  *     when its faces stop short inside it, a point put in it.
- * A conforming Delaunay tetrahedralization results (Murphy, Mount, Gable 2001;
- * Cohen-Steiner, Colin de Verdière, Yvinec 2004 prove such splitting ends for any
- * PLC; this version does not protect every acute facet angle, and caps Steiner points
- * instead). Each round's split points depend only on the mesh and the constraints
+ * Splitting alone gives a conforming Delaunay tetrahedralization (Murphy, Mount, Gable
+ * 2001; Cohen-Steiner, Colin de Verdière, Yvinec 2004 prove such splitting ends for
+ * any PLC; this version does not protect every acute facet angle, and caps Steiner
+ * points instead), so recovery ends where splitting would. Each round's split points depend only on the mesh and the constraints
  * (segments run from the point first in coordinates), so the result does not depend
  * on input order.
  */
@@ -123,7 +124,10 @@ typedef struct t3_ctx {
                                > p of the subsegments from it, which flips keep      */
     lh_index *lock;
     size_t lock_cap, lock_first_cap;
-    size_t flips;                      /* flips made this round                                  */
+    size_t flips;   /* flips made this round                                          */
+    int journal;    /* whether replacements are journaled, for undoing                */
+    lh_index *jbuf; /* the journal (tets.c)                                            */
+    size_t jlen, jcap;
     lh_index *seg_order, *patch_order; /* segments, patches by their points'
                                           coordinates: the order flips take them in */
     int sorted;                        /* whether dt is in canonical order                       */
@@ -209,6 +213,8 @@ lh_status lh__t3_mesh_star(t3_ctx *c, lh_index v, size_t *count);
  * them is flat. */
 lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index (*nv)[4], int nnew,
                               int *ok);
+/* Undoes the journaled replacements back to journal length mark. */
+void lh__t3_mesh_undo(t3_ctx *c, size_t mark);
 /* Drops the replaced tets' slots, renumbering the rest in order. */
 void lh__t3_mesh_compact(t3_ctx *c);
 

@@ -7,18 +7,21 @@
  * A subsegment a b that is not an edge leaves a through the face opposite a of the
  * one tet whose cone at a holds b strictly. A 2-3 flip of that face, when the two
  * tets beside it form a convex union, makes an edge from a to the far apex and takes
- * one tet off the way to b; when their union is not convex, a 3-2 flip of an edge of
- * the face with three tets around it is tried instead. A facet triangle a b c whose
- * edges are all there is recovered by 3-2 flips of the edges crossing it. Flips never
- * remove a subsegment (t3_ctx.lock), and each is checked exactly (no flat tet, the
- * same region filled). What flips do not recover is split as before (recover.c);
- * the mesh is loaded again from the Delaunay tetrahedralization after each round's
- * insertions, so a round's flips start from the point set alone. Constraints are
- * taken in the order of their points' coordinates, and every choice is geometric, so
- * the result does not depend on the input's order.
+ * one tet off the way to b; when their union is not convex, or when a b runs inside a
+ * face from a, an edge of that face is removed instead (Shewchuk's edge removal: the
+ * 3-2, 4-4 and 2-2 flips and larger rings). A try from a, then from b, that does not
+ * end in the edge is undone. A facet triangle a b c whose edges are all there is
+ * recovered by removing the edges crossing it. Flips never remove a subsegment
+ * (t3_ctx.lock), and each new tet is checked positive exactly, the same region filled.
+ * What flips do not recover is split (recover.c); the mesh is loaded again from the
+ * Delaunay tetrahedralization after each round's insertions, so a round's flips start
+ * from the point set alone. Constraints are taken in the order of their points'
+ * coordinates, and every choice is geometric, so the result does not depend on the
+ * input's order.
  */
 #include "recover.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -34,6 +37,37 @@ static int orient4(t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
 {
     const double *p[4] = {pt(c, a), pt(c, b), pt(c, d), pt(c, e)};
     return lh_orient(c->pred, 3, p);
+}
+
+/* Flips make no tet flatter than this shape (below): a few ulps of a rounded Steiner
+ * point would make such a tet out of points that lie on one facet. It only steers the
+ * choice of flips; the mesh is valid either way. */
+#define T3_SLIVER 0x1p-40
+
+/* A tet's shape in floating point, for choosing among valid flips only (never for
+ * validity): six times its volume over the cube of the root of its squared edges'
+ * sum; the edge vectors scaled by a power of two first, so that the figure is the
+ * same at every scale. */
+static double shape(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
+{
+    const double *p[4] = {pt(c, a), pt(c, b), pt(c, d), pt(c, e)};
+    double u[3][3], big = 0, l = 0;
+    int ex;
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 3; k++) big = fmax(big, fabs(u[i][k] = p[i + 1][k] - p[0][k]));
+    frexp(big, &ex);
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 3; k++) u[i][k] = ldexp(u[i][k], -ex);
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 3; k++) {
+            double w = u[(i + 1) % 3][k] - u[i][k];
+            l += u[i][k] * u[i][k] + w * w;
+        }
+    double v = u[0][0] * (u[1][1] * u[2][2] - u[1][2] * u[2][1]) -
+               u[0][1] * (u[1][0] * u[2][2] - u[1][2] * u[2][0]) +
+               u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0]);
+    double r = l > 0 && isfinite(l) ? fabs(v) / (l * sqrt(l)) : 0;
+    return isfinite(r) ? r : 0;
 }
 
 static int has(const lh_index *t, lh_index v)
@@ -175,6 +209,29 @@ static int locked(const t3_ctx *c, lh_index p, lh_index q)
 
 /* ---- flips ---- */
 
+/* The 2-3 flip of face j of tet t (opposite its point a) with the tet beyond, whose
+ * far point is q: when a q crosses the face's interior. */
+static lh_status flip23(t3_ctx *c, lh_index t, int j, int *done)
+{
+    *done = 0;
+    lh_index u = c->tn[4 * (size_t)t + j];
+    if (u < 0) return LH_OK;
+    const lh_index *tv = c->tv + 4 * (size_t)t, a = tv[j];
+    lh_index f[3], w = 0, q = -1;
+    for (int k = 0; k < 4; k++)
+        if (k != j) f[w++] = tv[k];
+    for (int k = 0; k < 4; k++)
+        if (!has(tv, c->tv[4 * (size_t)u + k])) q = c->tv[4 * (size_t)u + k];
+    int s0 = orient4(c, a, q, f[0], f[1]), s1 = orient4(c, a, q, f[1], f[2]);
+    int s2 = orient4(c, a, q, f[2], f[0]);
+    if (s0 == 0 || s0 != s1 || s1 != s2) return LH_OK;
+    for (int k = 0; k < 3; k++)
+        if (shape(c, a, q, f[k], f[(k + 1) % 3]) < T3_SLIVER) return LH_OK;
+    lh_index old[2] = {t, u};
+    lh_index nv[3][4] = {{a, q, f[0], f[1]}, {a, q, f[1], f[2]}, {a, q, f[2], f[0]}};
+    return lh__t3_mesh_replace(c, old, 2, nv, 3, done);
+}
+
 /* Ring sizes edge removal tries: up to T3_RING points around the edge. */
 #define T3_RING 7
 
@@ -260,21 +317,21 @@ static void ring_start(const t3_ctx *c, ring *g)
     memcpy(g->t, t, sizeof t);
 }
 
-/* The triangulations of a convex k-gon (k <= T3_RING) as corner triples, in a fixed
- * order: the triangle on edge 0 (k-1) with apex m = 1 .. k-2, then the two sides'. */
+/* A triangulation of the ring's k-gon (k <= T3_RING) as corner triples, each with its
+ * corners in ring order; search() builds them in a fixed order: the triangle on edge
+ * 0 (k-1) with apex m = 1 .. k-2, then the two sides' triangulations. */
 typedef struct tris {
     int n; /* triangles so far */
     int v[T3_RING - 2][3];
 } tris;
 
-/* Calls try(each triangulation of poly[lo..hi] appended to *cur) until it returns
- * nonzero; returns that. */
+/* The search for the best triangulation of a ring (search below). */
 typedef struct enum_ctx {
     t3_ctx *c;
     ring *g;
-    int s; /* the side x is on, once a triangle fixed it */
-    lh_status st;
-    int done;
+    int s;       /* the side x is on, once a triangle fixed it */
+    double best; /* the best triangulation's worst tet shape so far (-1: none) */
+    tris keep;   /* that triangulation */
 } enum_ctx;
 
 static int triangle_ok(enum_ctx *e, const int *v)
@@ -285,45 +342,37 @@ static int triangle_ok(enum_ctx *e, const int *v)
     return sx != 0 && sx == -sy;
 }
 
-/* Replaces the ring's tets by x and y joined to triangulation tr. */
-static void apply(enum_ctx *e, const tris *tr)
+/* Depth-first over the triangulations of the polygons on the stack, keeping the
+ * one whose worst tet (its shape so far: worst) is best; a triangle whose sides x
+ * and y are not strictly opposite, or no better than the best, ends the branch. */
+static void search(enum_ctx *e, tris *tr, int (*stack)[2], int top, double worst)
 {
-    lh_index nv[2 * (T3_RING - 2)][4];
-    for (int i = 0; i < tr->n; i++)
-        for (int s = 0; s < 2; s++) {
-            nv[2 * i + s][0] = s ? e->g->y : e->g->x;
-            for (int j = 0; j < 3; j++) nv[2 * i + s][j + 1] = e->g->r[tr->v[i][j]];
-        }
-    int nold = e->g->closed ? e->g->k : e->g->k - 1;
-    e->st = lh__t3_mesh_replace(e->c, e->g->t, nold, nv, 2 * tr->n, &e->done);
-}
-
-/* Depth-first over the triangulations of the polygons on the stack; a triangle whose
- * sides x and y are not strictly opposite ends the branch. */
-static void search(enum_ctx *e, tris *tr, int (*stack)[2], int top)
-{
-    if (e->done || e->st != LH_OK) return;
     if (top == 0) {
-        apply(e, tr);
+        e->best = worst, e->keep = *tr;
         return;
     }
     int lo = stack[top - 1][0], hi = stack[top - 1][1];
     if (hi - lo < 2) {
-        search(e, tr, stack, top - 1);
+        search(e, tr, stack, top - 1, worst);
         return;
     }
-    for (int m = lo + 1; m < hi && !e->done && e->st == LH_OK; m++) {
+    const ring *g = e->g;
+    for (int m = lo + 1; m < hi; m++) {
         int *v = tr->v[tr->n];
         v[0] = lo, v[1] = m, v[2] = hi;
         if (!triangle_ok(e, v)) continue;
-        int sx = orient4(e->c, e->g->r[lo], e->g->r[m], e->g->r[hi], e->g->x);
+        int sx = orient4(e->c, g->r[lo], g->r[m], g->r[hi], g->x);
         if (e->s && sx != e->s) continue;
+        double w = fmin(shape(e->c, g->x, g->r[lo], g->r[m], g->r[hi]),
+                        shape(e->c, g->y, g->r[lo], g->r[m], g->r[hi]));
+        w = fmin(w, worst);
+        if (w <= e->best || w < T3_SLIVER) continue;
         int keep = e->s;
         e->s = sx;
         tr->n++;
         stack[top - 1][0] = lo, stack[top - 1][1] = m;
         stack[top][0] = m, stack[top][1] = hi;
-        search(e, tr, stack, top + 1);
+        search(e, tr, stack, top + 1, w);
         stack[top - 1][0] = lo, stack[top - 1][1] = hi;
         tr->n--;
         e->s = keep;
@@ -351,33 +400,62 @@ static lh_status remove_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int 
     if (!ring_of(c, t, p, q, &g) || g.k < 3) return LH_OK;
     if (!g.closed && orient4(c, p, q, g.r[0], g.r[g.k - 1]) != 0) return LH_OK;
     ring_start(c, &g);
-    enum_ctx e = {c, &g, 0, LH_OK, 0};
+    enum_ctx e = {c, &g, 0, -1, {0, {{0}}}};
     tris tr = {0, {{0}}};
     int stack[T3_RING][2] = {{0, g.k - 1}};
-    search(&e, &tr, stack, 1);
-    *done = e.done;
-    return e.st;
+    search(&e, &tr, stack, 1, INFINITY);
+    if (e.best < 0) return LH_OK;
+    lh_index nv[2 * (T3_RING - 2)][4];
+    for (int i = 0; i < e.keep.n; i++)
+        for (int s = 0; s < 2; s++) {
+            nv[2 * i + s][0] = s ? q : p;
+            for (int j = 0; j < 3; j++) nv[2 * i + s][j + 1] = g.r[e.keep.v[i][j]];
+        }
+    return lh__t3_mesh_replace(c, g.t, g.closed ? g.k : g.k - 1, nv, 2 * e.keep.n, done);
 }
 
-/* The 2-3 flip of face j of tet t (opposite its point a) with the tet beyond, whose
- * far point is q: when a q crosses the face's interior. */
-static lh_status flip23(t3_ctx *c, lh_index t, int j, int *done)
+/* ---- the edges in the way, taken in coordinate order ---- */
+
+/* Edge p q of tet t as a candidate for removal: c->fbuf gets (first end, second end,
+ * t), ends in coordinate order, once per edge. */
+static lh_status candidate(t3_ctx *c, lh_index t, lh_index p, lh_index q, size_t *ne)
+{
+    if (before(c, q, p)) {
+        lh_index x = p;
+        p = q;
+        q = x;
+    }
+    for (size_t i = 0; i < *ne; i++)
+        if (c->fbuf[3 * i] == p && c->fbuf[3 * i + 1] == q) return LH_OK;
+    lh_status st = lh__t3_room(c, &c->fbuf, &c->fcap, 3 * (*ne + 1));
+    if (st != LH_OK) return st;
+    c->fbuf[3 * *ne] = p, c->fbuf[3 * *ne + 1] = q, c->fbuf[3 * *ne + 2] = t;
+    ++*ne;
+    return LH_OK;
+}
+
+static int edge_before(const t3_ctx *c, const lh_index *e, const lh_index *f)
+{
+    int k = cmp_point(pt(c, e[0]), pt(c, f[0]));
+    return k < 0 || (k == 0 && before(c, e[1], f[1]));
+}
+
+/* Removes the first candidate in coordinate order that edge removal takes out. */
+static lh_status remove_first(t3_ctx *c, size_t ne, int *done)
 {
     *done = 0;
-    lh_index u = c->tn[4 * (size_t)t + j];
-    if (u < 0) return LH_OK;
-    const lh_index *tv = c->tv + 4 * (size_t)t, a = tv[j];
-    lh_index f[3], w = 0, q = -1;
-    for (int k = 0; k < 4; k++)
-        if (k != j) f[w++] = tv[k];
-    for (int k = 0; k < 4; k++)
-        if (!has(tv, c->tv[4 * (size_t)u + k])) q = c->tv[4 * (size_t)u + k];
-    int s0 = orient4(c, a, q, f[0], f[1]), s1 = orient4(c, a, q, f[1], f[2]);
-    int s2 = orient4(c, a, q, f[2], f[0]);
-    if (s0 == 0 || s0 != s1 || s1 != s2) return LH_OK;
-    lh_index old[2] = {t, u};
-    lh_index nv[3][4] = {{a, q, f[0], f[1]}, {a, q, f[1], f[2]}, {a, q, f[2], f[0]}};
-    return lh__t3_mesh_replace(c, old, 2, nv, 3, done);
+    for (size_t i = 1; i < ne; i++) /* insertion sort: a handful of edges */
+        for (size_t j = i; j > 0 && edge_before(c, c->fbuf + 3 * j, c->fbuf + 3 * (j - 1)); j--)
+            for (int k = 0; k < 3; k++) {
+                lh_index x = c->fbuf[3 * j + k];
+                c->fbuf[3 * j + k] = c->fbuf[3 * (j - 1) + k];
+                c->fbuf[3 * (j - 1) + k] = x;
+            }
+    for (size_t i = 0; i < ne && !*done; i++) {
+        lh_status st = remove_edge(c, c->fbuf[3 * i + 2], c->fbuf[3 * i], c->fbuf[3 * i + 1], done);
+        if (st != LH_OK) return st;
+    }
+    return LH_OK;
 }
 
 /* ---- segments ---- */
@@ -441,14 +519,13 @@ static lh_status flip_edge(t3_ctx *c, lh_index a, lh_index b, int *edge)
             continue;
         }
         if ((st = flip23(c, t, j, &done)) != LH_OK) return st;
-        for (int k = 0; !done && k < 4; k++) { /* a reflex edge of the face */
-            if (k == j) continue;
-            for (int m = k + 1; !done && m < 4; m++) {
-                if (m == j) continue;
-                lh_index p = c->tv[4 * (size_t)t + k], q = c->tv[4 * (size_t)t + m];
-                if ((st = remove_edge(c, t, p, q, &done)) != LH_OK) return st;
-            }
-        }
+        size_t ne = 0;
+        for (int k = 0; !done && k < 4; k++) /* a reflex edge of the face */
+            for (int m = k + 1; k != j && m < 4; m++)
+                if (m != j && (st = candidate(c, t, c->tv[4 * (size_t)t + k],
+                                              c->tv[4 * (size_t)t + m], &ne)) != LH_OK)
+                    return st;
+        if (!done && (st = remove_first(c, ne, &done)) != LH_OK) return st;
         if (!done) return LH_OK;
     }
     return LH_OK;
@@ -499,15 +576,17 @@ static lh_status flip_face(t3_ctx *c, const lh_index *f, int *face)
             }
         }
         int done = 0;
-        for (size_t i = 0; i < k && !done; i++) {
+        size_t ne = 0;
+        for (size_t i = 0; i < k; i++) {
             const lh_index t = c->ebuf[i];
-            for (int x = 0; x < 4 && !done; x++)
-                for (int y = x + 1; y < 4 && !done; y++) {
+            for (int x = 0; x < 4; x++)
+                for (int y = x + 1; y < 4; y++) {
                     lh_index p = c->tv[4 * (size_t)t + x], q = c->tv[4 * (size_t)t + y];
-                    if (!crosses(c, f, p, q)) continue;
-                    if ((st = remove_edge(c, t, p, q, &done)) != LH_OK) return st;
+                    if (crosses(c, f, p, q) && (st = candidate(c, t, p, q, &ne)) != LH_OK)
+                        return st;
                 }
         }
+        if ((st = remove_first(c, ne, &done)) != LH_OK) return st;
         if (!done) return LH_OK;
     }
     return LH_OK;
@@ -515,8 +594,9 @@ static lh_status flip_face(t3_ctx *c, const lh_index *f, int *face)
 
 /* Whether the tets the stars (c->star) listed when the mesh was loaded hold a tet
  * on all n points of v: then the mesh still has them as an edge or face, since flips
- * remove no subsegment (a 3-2 flip removes only the faces around the edge it takes
- * out, and the faces flipped for are bounded by subsegments). */
+ * remove no subsegment, edge removal removes only the faces around the edge it takes
+ * out, and the faces flipped for (after every 2-3 flip of the round) are bounded by
+ * subsegments. */
 static int kept(const t3_ctx *c, const lh_index *v, int n)
 {
     for (lh_index i = c->star_first[v[0]]; i < c->star_first[v[0] + 1]; i++) {
@@ -542,30 +622,68 @@ static int lone_triangle(const t3_ctx *c, size_t k, lh_index *f)
     return 1;
 }
 
+/* Passes over the subsegments: what one pass's flips elsewhere made recoverable is
+ * tried again in the next, while a pass recovers something. */
+#define T3_FLIP_PASSES 4
+
+/* Subsegment p q by flips from either end, else left as it was (the journal
+ * undone); *edge says whether. */
+static lh_status flip_subsegment(t3_ctx *c, lh_index p, lh_index q, int *edge)
+{
+    c->jlen = 0;
+    lh_status st = flip_edge(c, p, q, edge);
+    if (st == LH_OK && !*edge) lh__t3_mesh_undo(c, 0); /* no trace of a failed try */
+    if (st == LH_OK && !*edge) st = flip_edge(c, q, p, edge);
+    if (st == LH_OK && !*edge) lh__t3_mesh_undo(c, 0);
+    c->jlen = 0;
+    return st;
+}
+
+/* One pass over the segments in order; *missing: subsegments still not edges,
+ * *gained: those this pass made edges. */
+static lh_status segment_pass(t3_ctx *c, size_t *missing, size_t *gained)
+{
+    *missing = *gained = 0;
+    for (size_t i = 0; i < c->seg_count; i++) {
+        lh_index s = c->seg_order[i];
+        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
+        lh_status st = lh__t3_room(c, &c->vbuf, &c->vcap, cl);
+        if (st != LH_OK) return st;
+        lh__t3_chain(c, s, c->vbuf, c->vcap);
+        for (size_t j = 0; j + 1 < cl; j++) {
+            int edge, kind, z;
+            lh_index t;
+            if (kept(c, c->vbuf + j, 2)) continue;
+            if ((st = cone_tet(c, c->vbuf[j], c->vbuf[j + 1], &t, &z, &kind)) != LH_OK) return st;
+            if (kind == CONE_EDGE) continue;
+            if ((st = flip_subsegment(c, c->vbuf[j], c->vbuf[j + 1], &edge)) != LH_OK) return st;
+            *missing += !edge, *gained += edge;
+        }
+    }
+    return LH_OK;
+}
+
 lh_status lh__t3_flip(t3_ctx *c)
 {
     lh_status st = c->seg_order ? LH_OK : orders(c);
     if (st == LH_OK) st = locks(c);
-    int all = 1;
+    size_t missing = 1, gained = 1;
     c->flips = 0;
-    for (size_t i = 0; i < c->seg_count && st == LH_OK; i++) {
-        lh_index s = c->seg_order[i];
-        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
-        if ((st = lh__t3_room(c, &c->vbuf, &c->vcap, cl)) != LH_OK) break;
-        lh__t3_chain(c, s, c->vbuf, c->vcap);
-        for (size_t j = 0; j + 1 < cl && st == LH_OK; j++) {
-            int edge;
-            if (kept(c, c->vbuf + j, 2)) continue;
-            st = flip_edge(c, c->vbuf[j], c->vbuf[j + 1], &edge);
-            all &= edge;
-        }
-    }
+    c->journal = 1;
+    for (int pass = 0; pass < T3_FLIP_PASSES && missing && gained && st == LH_OK; pass++)
+        st = segment_pass(c, &missing, &gained);
+    int all = missing == 0;
     for (size_t i = 0; all && i < c->patch_count && st == LH_OK; i++) {
         const size_t k = (size_t)c->patch_order[i];
         lh_index f[3];
         int face;
-        if (lone_triangle(c, k, f) && !kept(c, f, 3)) st = flip_face(c, f, &face);
+        if (!lone_triangle(c, k, f) || kept(c, f, 3)) continue;
+        c->jlen = 0;
+        st = flip_face(c, f, &face);
+        if (st == LH_OK && !face) lh__t3_mesh_undo(c, 0);
+        c->jlen = 0;
     }
+    c->journal = 0;
     if (st != LH_OK || c->flips == 0) return st; /* the stars are the loaded mesh's */
     lh__t3_mesh_compact(c);
     return lh__t3_stars(c);

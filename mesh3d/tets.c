@@ -114,6 +114,52 @@ typedef struct outer_face {
     int back;
 } outer_face;
 
+/* Journal entry of a replacement, pushed on c->jbuf: each old tet (slot, points,
+ * neighbours: 9), each outer tet's pointer back (tet, slot, value: 3), then the
+ * counts (old tets, pointers, tets in the mesh before: 3). */
+static lh_status journal(t3_ctx *c, const lh_index *old, int nold, const outer_face *of, int nof)
+{
+    lh_status st =
+        lh__t3_room(c, &c->jbuf, &c->jcap, c->jlen + 9 * (size_t)nold + 3 * (size_t)nof + 3);
+    if (st != LH_OK) return st;
+    lh_index *j = c->jbuf + c->jlen;
+    for (int i = 0; i < nold; i++, j += 9) {
+        j[0] = old[i];
+        memcpy(j + 1, c->tv + 4 * (size_t)old[i], 4 * sizeof(lh_index));
+        memcpy(j + 5, c->tn + 4 * (size_t)old[i], 4 * sizeof(lh_index));
+    }
+    int nback = 0;
+    for (int k = 0; k < nof; k++) {
+        if (of[k].u < 0) continue;
+        j[0] = of[k].u, j[1] = of[k].back;
+        j[2] = c->tn[4 * (size_t)of[k].u + of[k].back];
+        j += 3, nback++;
+    }
+    j[0] = nold, j[1] = nback, j[2] = (lh_index)c->tet_count;
+    c->jlen = (size_t)(j + 3 - c->jbuf);
+    return LH_OK;
+}
+
+void lh__t3_mesh_undo(t3_ctx *c, size_t mark)
+{
+    while (c->jlen > mark) {
+        const lh_index *h = c->jbuf + c->jlen - 3;
+        int nold = (int)h[0], nback = (int)h[1];
+        c->tet_count = (size_t)h[2];
+        const lh_index *b = h - 3 * (size_t)nback, *o = b - 9 * (size_t)nold;
+        for (int k = 0; k < nback; k++) c->tn[4 * (size_t)b[3 * k] + b[3 * k + 1]] = b[3 * k + 2];
+        for (int i = 0; i < nold; i++) {
+            const lh_index *e = o + 9 * i;
+            memcpy(c->tv + 4 * (size_t)e[0], e + 1, 4 * sizeof(lh_index));
+            memcpy(c->tn + 4 * (size_t)e[0], e + 5, 4 * sizeof(lh_index));
+            c->tmark[e[0]] = 0;
+            note_points(c, (size_t)e[0]);
+        }
+        c->flips--;
+        c->jlen = (size_t)(o - c->jbuf);
+    }
+}
+
 lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index (*nv)[4], int nnew,
                               int *ok)
 {
@@ -146,6 +192,7 @@ lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index
             for (int k = 0; u >= 0 && k < 4; k++)
                 if (c->tn[4 * (size_t)u + k] == old[i]) o->back = k;
         }
+    if (c->journal && (st = journal(c, old, nold, of, nof)) != LH_OK) return st;
     lh_index slot[T3_FLIP_TETS];
     for (int i = 0; i < nnew; i++) slot[i] = i < nold ? old[i] : (lh_index)c->tet_count++;
     for (int i = nnew; i < nold; i++) c->tv[4 * (size_t)old[i]] = -1; /* dead */
