@@ -461,11 +461,29 @@ static lh_status check_segments(pchk *k)
     return LH_OK;
 }
 
+/* Whether facet f's polygons run along a b one way (1), both ways (2: a slit or a
+ * spike, no wider than the edge), or not at all (0). */
+static int runs(const lh_plc *g, size_t f, lh_index a, lh_index b)
+{
+    int fwd = 0, back = 0;
+    for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++) {
+        const size_t len = lh__pchk_poly_len(g, p);
+        const lh_index *v = lh__pchk_poly_v(g, p);
+        for (size_t j = 0; len >= 2 && j < (len == 2 ? 1 : len); j++) {
+            const lh_index x = v[j], y = v[(j + 1) % len];
+            fwd |= x == a && y == b, back |= x == b && y == a;
+        }
+    }
+    return fwd && back ? 2 : fwd || back;
+}
+
 /* A segment with no subsegment at all, leaving the mesh at both its ends, lies
  * outside it: it crosses no facet, and the mesh's boundary is made of facets. It
  * was carved away whole with the region around it (outside the surface, or a hole)
  * when it is a polygon edge of facets that all were, with no subface: as a facet may
- * be (check_facets.c). A free segment may not. */
+ * be (check_facets.c) — or when a facet runs along it both ways (a spike out of the
+ * facet's area, which has no area beside it: check_facets.c checks the area). A free
+ * segment may not. */
 static lh_status check_away(pchk *k)
 {
     const lh_plc *g = k->g;
@@ -474,15 +492,7 @@ static lh_status check_away(pchk *k)
         const lh_index a = k->seg[2 * s], b = k->seg[2 * s + 1];
         int bounds_kept = s < g->segment_count;
         for (size_t f = 0; !bounds_kept && f < g->facet_count; f++)
-            for (size_t p = (size_t)g->facet_first[f]; p < (size_t)g->facet_first[f + 1]; p++) {
-                const size_t len = lh__pchk_poly_len(g, p);
-                const lh_index *v = lh__pchk_poly_v(g, p);
-                for (size_t j = 0; len >= 2 && j < (len == 2 ? 1 : len); j++) {
-                    const lh_index x = v[j], y = v[(j + 1) % len];
-                    if ((x == a && y == b) || (x == b && y == a))
-                        bounds_kept |= k->ffirst[f + 1] > k->ffirst[f];
-                }
-            }
+            bounds_kept = runs(g, f, a, b) == 1 && k->ffirst[f + 1] > k->ffirst[f];
         if (bounds_kept) return seg_not_covered(k, s, a);
     }
     return LH_OK;
