@@ -31,6 +31,9 @@
 
 #include <stdint.h>
 
+/* tets.c: at most this many tets replaced or made at once. */
+#define T3_FLIP_TETS 12
+
 /* A segment: the straight line between input points a and b, split into a chain. */
 typedef struct t3_seg {
     lh_index a, b;   /* endpoints, a before b in coordinates (lexicographic)      */
@@ -126,6 +129,11 @@ typedef struct t3_ctx {
     size_t lock_cap, lock_first_cap;
     size_t flips;   /* flips made this round                                          */
     int journal;    /* whether replacements are journaled, for undoing                */
+    size_t flip_budget; /* edge removals the current constraint may still try       */
+    lh_index made[T3_FLIP_TETS]; /* the tets the last replacement made           */
+    int made_count;
+    lh_index *todo;     /* subsegments flips have not recovered yet, 2 each          */
+    size_t todo_cap;
     lh_index *jbuf; /* the journal (tets.c)                                            */
     size_t jlen, jcap;
     lh_index *seg_order, *patch_order; /* segments, patches by their points'
@@ -201,7 +209,6 @@ int lh__t3_patch_changed(const t3_ctx *c, size_t k, uint32_t r);
 lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t *count);
 
 /* tets.c: the mesh (t3_ctx.tv, tn). At most this many tets replaced or made at once. */
-#define T3_FLIP_TETS 12
 /* Loads the Delaunay tetrahedralization. */
 lh_status lh__t3_mesh_load(t3_ctx *c);
 /* A fresh visit mark for tmark. */

@@ -56,8 +56,9 @@ static double shape(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_inde
     for (int i = 0; i < 3; i++)
         for (int k = 0; k < 3; k++) big = fmax(big, fabs(u[i][k] = p[i + 1][k] - p[0][k]));
     frexp(big, &ex);
+    const double unit = ldexp(1, -ex); /* exact: a power of two, in range */
     for (int i = 0; i < 3; i++)
-        for (int k = 0; k < 3; k++) u[i][k] = ldexp(u[i][k], -ex);
+        for (int k = 0; k < 3; k++) u[i][k] *= unit;
     for (int i = 0; i < 3; i++)
         for (int k = 0; k < 3; k++) {
             double w = u[(i + 1) % 3][k] - u[i][k];
@@ -232,13 +233,15 @@ static lh_status flip23(t3_ctx *c, lh_index t, int j, int *done)
     return lh__t3_mesh_replace(c, old, 2, nv, 3, done);
 }
 
-/* Ring sizes edge removal tries: up to T3_RING points around the edge. */
+/* Ring sizes edge removal triangulates: up to T3_RING points around the edge; rings
+ * of up to T3_RING_MAX are first lowered by degree-lowering flips (reduce). */
 #define T3_RING 7
+#define T3_RING_MAX 12
 
 /* The points around edge x y, in the turn of orient(x, y, r_i, r_i+1) > 0, and the
  * tets between them: *closed, or an open fan from one hull face to the other. */
 typedef struct ring {
-    lh_index x, y, r[T3_RING + 1], t[T3_RING];
+    lh_index x, y, r[T3_RING_MAX + 1], t[T3_RING_MAX];
     int k, closed; /* k points; k tets when closed, k - 1 when open */
 } ring;
 
@@ -267,14 +270,14 @@ static lh_index across(t3_ctx *c, lh_index t, lh_index off, lh_index keep0, lh_i
     return u;
 }
 
-/* The ring of edge x y from tet t; 0 when it has more than T3_RING points. */
+/* The ring of edge x y from tet t; 0 when it has more than T3_RING_MAX points. */
 static int ring_of(t3_ctx *c, lh_index t, lh_index x, lh_index y, ring *g)
 {
     lh_index a, b, cur = t, far = -1;
     g->x = x, g->y = y;
     others(c, t, x, y, &a, &b);
     for (int step = 0;; step++) { /* back to the hull, or round to t */
-        if (step > T3_RING) return 0;
+        if (step > T3_RING_MAX) return 0;
         lh_index u = across(c, cur, b, x, y, a, &far);
         if (u < 0 || u == t) break;
         b = a, a = far, cur = u;
@@ -282,17 +285,17 @@ static int ring_of(t3_ctx *c, lh_index t, lh_index x, lh_index y, ring *g)
     g->k = 0;
     g->r[g->k++] = a;
     for (lh_index start = cur;;) {
-        if (g->k > T3_RING) return 0;
+        if (g->k > T3_RING_MAX) return 0;
         g->t[g->k - 1] = cur;
         g->r[g->k++] = b;
         lh_index u = across(c, cur, a, x, y, b, &far);
         if (u == start) {
             g->closed = 1, g->k--;
-            return g->k <= T3_RING;
+            return g->k <= T3_RING_MAX;
         }
         if (u < 0) {
             g->closed = 0;
-            return g->k <= T3_RING;
+            return g->k <= T3_RING_MAX;
         }
         a = b, b = far, cur = u;
     }
@@ -311,7 +314,7 @@ static void ring_start(const t3_ctx *c, ring *g)
     int m = 0;
     for (int i = 1; i < g->k; i++)
         if (before(c, g->r[i], g->r[m])) m = i;
-    lh_index r[T3_RING], t[T3_RING];
+    lh_index r[T3_RING_MAX], t[T3_RING_MAX];
     for (int i = 0; i < g->k; i++) r[i] = g->r[(i + m) % g->k], t[i] = g->t[(i + m) % g->k];
     memcpy(g->r, r, sizeof r);
     memcpy(g->t, t, sizeof t);
@@ -379,6 +382,70 @@ static void search(enum_ctx *e, tris *tr, int (*stack)[2], int top, double worst
     }
 }
 
+/* Edge removal, below. */
+static lh_status remove_edge_at(t3_ctx *c, lh_index t, lh_index p, lh_index q, int depth,
+                                int *done);
+
+/* A tet holding p and q, or -1. */
+static lh_status tet_of_edge(t3_ctx *c, lh_index p, lh_index q, lh_index *t)
+{
+    for (int i = 0; i < c->made_count; i++) /* the last flip's tets first */
+        if (has(c->tv + 4 * (size_t)c->made[i], p) && has(c->tv + 4 * (size_t)c->made[i], q)) {
+            *t = c->made[i];
+            return LH_OK;
+        }
+    size_t k;
+    lh_status st = lh__t3_mesh_star(c, p, &k);
+    *t = -1;
+    for (size_t i = 0; st == LH_OK && i < k && *t < 0; i++)
+        if (has(c->tv + 4 * (size_t)c->sbuf[i], q)) *t = c->sbuf[i];
+    return st;
+}
+
+/* When no triangulation of the ring removes its edge: r_i is taken off the ring by
+ * the 2-3 flip of the face p q r_i (when r_i-1 r_i+1 crosses it), or by removing the
+ * edge p r_i or q r_i (one level down), and the removal is tried again (Si 2015, sec.
+ * 3.2: TetGen's flipnm lowers an edge's degree so). A branch that does not end in
+ * the removal is undone. */
+static lh_status reduce(t3_ctx *c, const ring *g, int depth, int *done)
+{
+    int lo = g->closed ? 0 : 1, hi = g->closed ? g->k : g->k - 1;
+    *done = 0;
+    for (int i = lo; i < hi && !*done; i++) {
+        const size_t mark = c->jlen;
+        lh_index t = g->t[(i + g->k - 1) % g->k], r = g->r[(i + g->k - 1) % g->k], u;
+        int flipped;
+        for (int way = 0; way < 3 && !*done; way++) { /* the face p q r_i flipped away, or
+                                                         the edge p r_i or q r_i removed */
+            lh_index ri = g->r[i], e = way == 1 ? g->x : g->y;
+            lh_status st = LH_OK;
+            if (way == 0)
+                st = flip23(c, t, slot_of(c->tv + 4 * (size_t)t, r), &flipped);
+            else if ((st = tet_of_edge(c, e, ri, &u)) == LH_OK && u >= 0)
+                st = remove_edge_at(c, u, e, ri, depth, &flipped);
+            else
+                flipped = 0;
+            if (st == LH_OK && flipped) st = tet_of_edge(c, g->x, g->y, &u);
+            if (st == LH_OK && flipped && u >= 0)
+                st = remove_edge_at(c, u, g->x, g->y, depth, done);
+            if (st != LH_OK) return st;
+            if (!*done) lh__t3_mesh_undo(c, mark);
+        }
+    }
+    return LH_OK;
+}
+
+/* Levels of degree-lowering before an edge removal is given up, and the edge removals
+ * one constraint may try (c->flip_budget): the time a subsegment flips cannot recover
+ * costs is bounded. */
+#define T3_REDUCE_DEPTH 1
+#define T3_REMOVALS 400
+
+static lh_status remove_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int *done)
+{
+    return remove_edge_at(c, t, p, q, T3_REDUCE_DEPTH, done);
+}
+
 /* Edge removal (Shewchuk, "Two discrete optimization algorithms for the topological
  * improvement of tetrahedral meshes", 2002, sec. 3): the tets around edge p q of tet
  * t replaced by p and q joined to a triangulation of the ring of points around it —
@@ -386,12 +453,15 @@ static void search(enum_ctx *e, tris *tr, int (*stack)[2], int top, double worst
  * with the edge, the 2-2 flip of two coplanar hull faces. Valid when every new tet
  * is positive: p and q strictly on opposite sides of every triangle, the same sides
  * for all; an open ring (an edge on the hull) needs its two end points coplanar with
- * p q, so that the hull keeps its shape. Never a subsegment. *done says whether. */
-static lh_status remove_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int *done)
+ * p q, so that the hull keeps its shape. Never a subsegment. *done says whether.
+ * A ring with no such triangulation, or of more than T3_RING points, is lowered first
+ * (reduce) while depth allows. */
+static lh_status remove_edge_at(t3_ctx *c, lh_index t, lh_index p, lh_index q, int depth, int *done)
 {
     ring g;
     *done = 0;
-    if (locked(c, p, q)) return LH_OK;
+    if (locked(c, p, q) || c->flip_budget == 0) return LH_OK;
+    c->flip_budget--;
     if (before(c, q, p)) {
         lh_index x = p;
         p = q;
@@ -400,11 +470,12 @@ static lh_status remove_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int 
     if (!ring_of(c, t, p, q, &g) || g.k < 3) return LH_OK;
     if (!g.closed && orient4(c, p, q, g.r[0], g.r[g.k - 1]) != 0) return LH_OK;
     ring_start(c, &g);
+    if (g.k > T3_RING) return depth > 0 ? reduce(c, &g, depth - 1, done) : LH_OK;
     enum_ctx e = {c, &g, 0, -1, {0, {{0}}}};
     tris tr = {0, {{0}}};
     int stack[T3_RING][2] = {{0, g.k - 1}};
     search(&e, &tr, stack, 1, INFINITY);
-    if (e.best < 0) return LH_OK;
+    if (e.best < 0) return depth > 0 ? reduce(c, &g, depth - 1, done) : LH_OK;
     lh_index nv[2 * (T3_RING - 2)][4];
     for (int i = 0; i < e.keep.n; i++)
         for (int s = 0; s < 2; s++) {
@@ -454,6 +525,48 @@ static lh_status remove_first(t3_ctx *c, size_t ne, int *done)
     for (size_t i = 0; i < ne && !*done; i++) {
         lh_status st = remove_edge(c, c->fbuf[3 * i + 2], c->fbuf[3 * i], c->fbuf[3 * i + 1], done);
         if (st != LH_OK) return st;
+    }
+    return LH_OK;
+}
+
+/* Steps of plane_walk before it stops collecting. */
+#define T3_WALK_STEPS 64
+
+/* a b runs in the plane of the face a u w of tet t and crosses its edge u w: that
+ * edge and the edges of the coplanar faces a b crosses after it, as candidates for
+ * removal, until a b reaches b or a point, or leaves the plane (Sloan's walk, "A fast
+ * algorithm for generating constrained Delaunay triangulations", 1993, in the plane
+ * of coplanar faces: an edge whose removal is not valid may have one beyond it that
+ * is). Which side of a b a point is on is the side of the plane through a, b and a
+ * point o off the faces' plane. */
+static lh_status plane_walk(t3_ctx *c, lh_index a, lh_index b, lh_index t, lh_index u, lh_index w,
+                            size_t *ne)
+{
+    lh_index prev = a;
+    for (int step = 0; step < T3_WALK_STEPS; step++) {
+        lh_status st = candidate(c, t, u, w, ne);
+        ring g;
+        if (st != LH_OK || !ring_of(c, t, u, w, &g)) return st;
+        lh_index z = -1, o = -1, tz = -1;
+        const int nt = g.closed ? g.k : g.k - 1;
+        for (int i = 0; i < g.k; i++) {
+            if (g.r[i] == prev) continue;
+            if (orient4(c, u, w, prev, g.r[i]) != 0) {
+                o = g.r[i];
+                continue;
+            }
+            z = g.r[i];
+            tz = i < nt ? g.t[i] : g.t[i - 1];
+        }
+        if (z < 0 || o < 0 || z == b || lh__t3_collinear(c->pred, pt(c, a), pt(c, b), pt(c, z)))
+            return LH_OK;
+        int sz = orient4(c, a, b, o, z), su = orient4(c, a, b, o, u);
+        if (sz == 0) return LH_OK;
+        if (sz == su)
+            prev = u, u = z;
+        else
+            prev = w, w = z;
+        t = tz;
     }
     return LH_OK;
 }
@@ -512,9 +625,11 @@ static lh_status flip_edge(t3_ctx *c, lh_index a, lh_index b, int *edge)
         int j = slot_of(c->tv + 4 * (size_t)t, a);
         if (kind == CONE_FACE) { /* the edge of t off a and corner z is in the way */
             lh_index e[2], w = 0;
+            size_t ne = 0;
             for (int m = 0; m < 4; m++)
                 if (m != j && m != z) e[w++] = c->tv[4 * (size_t)t + m];
-            if ((st = remove_edge(c, t, e[0], e[1], &done)) != LH_OK) return st;
+            if ((st = plane_walk(c, a, b, t, e[0], e[1], &ne)) != LH_OK) return st;
+            if ((st = remove_first(c, ne, &done)) != LH_OK) return st;
             if (!done) return LH_OK;
             continue;
         }
@@ -536,6 +651,8 @@ static lh_status flip_edge(t3_ctx *c, lh_index a, lh_index b, int *edge)
 /* Whether edge p q crosses the open triangle a b d at one interior point. */
 static int crosses(t3_ctx *c, const lh_index *f, lh_index p, lh_index q)
 {
+    for (int i = 0; i < 3; i++) /* an edge from a corner does not (nor its exact zeros) */
+        if (p == f[i] || q == f[i]) return 0;
     int op = orient4(c, f[0], f[1], f[2], p), oq = orient4(c, f[0], f[1], f[2], q);
     if (op == 0 || op != -oq) return 0;
     int s0 = orient4(c, p, q, f[0], f[1]), s1 = orient4(c, p, q, f[1], f[2]);
@@ -631,6 +748,7 @@ static int lone_triangle(const t3_ctx *c, size_t k, lh_index *f)
 static lh_status flip_subsegment(t3_ctx *c, lh_index p, lh_index q, int *edge)
 {
     c->jlen = 0;
+    c->flip_budget = T3_REMOVALS;
     lh_status st = flip_edge(c, p, q, edge);
     if (st == LH_OK && !*edge) lh__t3_mesh_undo(c, 0); /* no trace of a failed try */
     if (st == LH_OK && !*edge) st = flip_edge(c, q, p, edge);
@@ -639,11 +757,11 @@ static lh_status flip_subsegment(t3_ctx *c, lh_index p, lh_index q, int *edge)
     return st;
 }
 
-/* One pass over the segments in order; *missing: subsegments still not edges,
- * *gained: those this pass made edges. */
-static lh_status segment_pass(t3_ctx *c, size_t *missing, size_t *gained)
+/* The first pass over the segments in order: the subsegments flips did not recover,
+ * in that order, into c->todo (2 each), *missing of them. */
+static lh_status segment_pass(t3_ctx *c, size_t *missing)
 {
-    *missing = *gained = 0;
+    *missing = 0;
     for (size_t i = 0; i < c->seg_count; i++) {
         lh_index s = c->seg_order[i];
         size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
@@ -657,9 +775,34 @@ static lh_status segment_pass(t3_ctx *c, size_t *missing, size_t *gained)
             if ((st = cone_tet(c, c->vbuf[j], c->vbuf[j + 1], &t, &z, &kind)) != LH_OK) return st;
             if (kind == CONE_EDGE) continue;
             if ((st = flip_subsegment(c, c->vbuf[j], c->vbuf[j + 1], &edge)) != LH_OK) return st;
-            *missing += !edge, *gained += edge;
+            if (edge) continue;
+            if ((st = lh__t3_room(c, &c->todo, &c->todo_cap, 2 * (*missing + 1))) != LH_OK)
+                return st;
+            c->todo[2 * *missing] = c->vbuf[j], c->todo[2 * *missing + 1] = c->vbuf[j + 1];
+            ++*missing;
         }
     }
+    return LH_OK;
+}
+
+/* A later pass over those: the ones still missing kept, in order; *gained: how many
+ * this pass recovered. */
+static lh_status retry_pass(t3_ctx *c, size_t *missing, size_t *gained)
+{
+    size_t w = 0;
+    *gained = 0;
+    for (size_t i = 0; i < *missing; i++) {
+        int edge;
+        lh_status st = flip_subsegment(c, c->todo[2 * i], c->todo[2 * i + 1], &edge);
+        if (st != LH_OK) return st;
+        if (edge) {
+            ++*gained;
+            continue;
+        }
+        c->todo[2 * w] = c->todo[2 * i], c->todo[2 * w + 1] = c->todo[2 * i + 1];
+        w++;
+    }
+    *missing = w;
     return LH_OK;
 }
 
@@ -667,11 +810,12 @@ lh_status lh__t3_flip(t3_ctx *c)
 {
     lh_status st = c->seg_order ? LH_OK : orders(c);
     if (st == LH_OK) st = locks(c);
-    size_t missing = 1, gained = 1;
+    size_t missing = 0, gained = 1;
     c->flips = 0;
     c->journal = 1;
-    for (int pass = 0; pass < T3_FLIP_PASSES && missing && gained && st == LH_OK; pass++)
-        st = segment_pass(c, &missing, &gained);
+    if (st == LH_OK) st = segment_pass(c, &missing);
+    for (int pass = 1; pass < T3_FLIP_PASSES && missing && gained && st == LH_OK; pass++)
+        st = retry_pass(c, &missing, &gained);
     int all = missing == 0;
     for (size_t i = 0; all && i < c->patch_count && st == LH_OK; i++) {
         const size_t k = (size_t)c->patch_order[i];
@@ -679,6 +823,7 @@ lh_status lh__t3_flip(t3_ctx *c)
         int face;
         if (!lone_triangle(c, k, f) || kept(c, f, 3)) continue;
         c->jlen = 0;
+        c->flip_budget = T3_REMOVALS;
         st = flip_face(c, f, &face);
         if (st == LH_OK && !face) lh__t3_mesh_undo(c, 0);
         c->jlen = 0;

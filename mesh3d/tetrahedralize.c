@@ -19,7 +19,7 @@ static void ctx_free(t3_ctx *c)
                       c->new_node,  c->star_first,  c->star,      c->stamp,       c->vbuf,
                       c->fbuf,      c->ebuf,        c->changed,   c->seg_seen,    c->patch_seen,
                       c->cover,     c->cover_first, c->cover_len, c->tv,          c->tn,
-                      c->vtet,      c->tmark,       c->sbuf,      c->lock,        c->lock_first, c->jbuf,
+                      c->vtet,      c->tmark,       c->sbuf,      c->lock,        c->lock_first, c->jbuf, c->todo,
                       c->seg_order, c->patch_order};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
     lh_tri_free(c->dt);

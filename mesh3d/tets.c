@@ -142,6 +142,7 @@ static lh_status journal(t3_ctx *c, const lh_index *old, int nold, const outer_f
 
 void lh__t3_mesh_undo(t3_ctx *c, size_t mark)
 {
+    c->made_count = 0;
     while (c->jlen > mark) {
         const lh_index *h = c->jbuf + c->jlen - 3;
         int nold = (int)h[0], nback = (int)h[1];
@@ -195,6 +196,8 @@ lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index
     if (c->journal && (st = journal(c, old, nold, of, nof)) != LH_OK) return st;
     lh_index slot[T3_FLIP_TETS];
     for (int i = 0; i < nnew; i++) slot[i] = i < nold ? old[i] : (lh_index)c->tet_count++;
+    memcpy(c->made, slot, (size_t)nnew * sizeof(lh_index));
+    c->made_count = nnew;
     for (int i = nnew; i < nold; i++) c->tv[4 * (size_t)old[i]] = -1; /* dead */
     for (int i = 0; i < nnew; i++) {
         const size_t t = (size_t)slot[i];
