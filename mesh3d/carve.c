@@ -210,6 +210,38 @@ lh_status lh__t3_carve(t3_ctx *c, t3_domain *d)
     return LH_OK;
 }
 
+/* Whether face f (sorted) has a kept tet on a side. */
+static int face_kept(const t3_ctx *c, const t3_domain *d, const lh_index *f)
+{
+    for (lh_index q = c->star_first[f[0]]; q < c->star_first[f[0] + 1]; q++) {
+        const lh_index t = c->star[q], *v = c->tv + 4 * (size_t)t;
+        int in = 0;
+        for (int k = 0; k < 4; k++) in += v[k] == f[1] || v[k] == f[2];
+        if (in == 2 && d->label[t] != T3_OUT) return 1;
+    }
+    return 0;
+}
+
+lh_status lh__t3_partly_carved(t3_ctx *c, const t3_domain *d)
+{
+    for (size_t k = 0; k < c->patch_count; k++) {
+        const lh_index *f;
+        size_t nf, kept = 0;
+        lh_status st = lh__t3_patch_cover(c, k, &f, &nf);
+        if (st != LH_OK) return st;
+        for (size_t i = 0; i < nf; i++) kept += face_kept(c, d, f + 3 * i);
+        if (kept == 0 || kept == nf) continue;
+        lh_index facet = c->patch_facet[k];
+        size_t line = c->g->facet_line ? c->g->facet_line[facet] : 0;
+        return lh__t3_say(c, LH_ERR_DEGENERATE, line,
+                          "facet %ld is only partly on the domain's boundary: its recovered "
+                          "faces fold out of the domain (a facet that is not planar, whose "
+                          "surface its polygons do not fix)",
+                          (long)facet + c->g->first_index);
+    }
+    return LH_OK;
+}
+
 void lh__t3_domain_free(t3_ctx *c, t3_domain *d)
 {
     lh__free(&c->al, d->wall);

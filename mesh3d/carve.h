@@ -19,6 +19,10 @@ lh_status lh__t3_walls(t3_ctx *c, t3_domain *d);
 /* The facet of tet t's face opposite corner j, or -1 when that face is no wall. */
 lh_index lh__t3_wall_of(const t3_domain *d, size_t t, int j);
 lh_status lh__t3_carve(t3_ctx *c, t3_domain *d);
+/* LH_ERR_DEGENERATE when a facet's recovered faces are partly beside a kept tet and
+ * partly not: a facet that is not planar folded out of the domain, whose recovered
+ * surface the input does not fix (docs/meshing3d.md). */
+lh_status lh__t3_partly_carved(t3_ctx *c, const t3_domain *d);
 void lh__t3_domain_free(t3_ctx *c, t3_domain *d);
 /* mesh_out.c: the lh_tetmesh of the kept tets. */
 lh_status lh__t3_output(t3_ctx *c, const t3_domain *d, lh_tetmesh *m);

@@ -20,9 +20,9 @@
  * Splitting alone gives a conforming Delaunay tetrahedralization (Murphy, Mount, Gable
  * 2001; Cohen-Steiner, Colin de Verdière, Yvinec 2004 prove such splitting ends for
  * any PLC; this version does not protect every acute facet angle, and caps Steiner
- * points instead), so recovery ends where splitting would. Each round's split points depend only on the mesh and the constraints
- * (segments run from the point first in coordinates), so the result does not depend
- * on input order.
+ * points instead), so recovery ends where splitting would. Each round's split points
+ * depend only on the mesh and the constraints (segments run from the point first in
+ * coordinates), so the result does not depend on input order.
  */
 #ifndef LH_RECOVER_H
 #define LH_RECOVER_H

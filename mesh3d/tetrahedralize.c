@@ -13,14 +13,14 @@
 
 static void ctx_free(t3_ctx *c)
 {
-    void *arrays[] = {c->xyz,       c->tri,         c->tri_facet, c->tri_seg,     c->seg,
-                      c->seg_key,   c->patch_first, c->patch_tri, c->patch_facet, c->patch_axis,
-                      c->pnode,     c->pnode_first, c->node,      c->node_first,  c->new_xyz,
-                      c->new_node,  c->star_first,  c->star,      c->stamp,       c->vbuf,
-                      c->fbuf,      c->ebuf,        c->changed,   c->seg_seen,    c->patch_seen,
-                      c->cover,     c->cover_first, c->cover_len, c->tv,          c->tn,
-                      c->vtet,      c->tmark,       c->sbuf,      c->lock,        c->lock_first, c->jbuf, c->todo,
-                      c->seg_order, c->patch_order};
+    void *arrays[] = {c->xyz,      c->tri,         c->tri_facet, c->tri_seg,     c->seg,
+                      c->seg_key,  c->patch_first, c->patch_tri, c->patch_facet, c->patch_axis,
+                      c->pnode,    c->pnode_first, c->node,      c->node_first,  c->new_xyz,
+                      c->new_node, c->star_first,  c->star,      c->stamp,       c->vbuf,
+                      c->fbuf,     c->ebuf,        c->changed,   c->seg_seen,    c->patch_seen,
+                      c->cover,    c->cover_first, c->cover_len, c->tv,          c->tn,
+                      c->vtet,     c->tmark,       c->sbuf,      c->lock,        c->lock_first,
+                      c->jbuf,     c->todo,        c->seg_order, c->patch_order};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
     lh_tri_free(c->dt);
     lh_pred_free(c->pred);
@@ -112,6 +112,7 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
     memset(&d, 0, sizeof d);
     if (st == LH_OK) st = lh__t3_walls(c, &d);
     if (st == LH_OK) st = lh__t3_carve(c, &d);
+    if (st == LH_OK) st = lh__t3_partly_carved(c, &d);
     lh_tetmesh *m = NULL;
     if (st == LH_OK && !(m = lh__tetmesh_new(&c->al)))
         st = lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
