@@ -439,7 +439,7 @@ static lh_status reduce(t3_ctx *c, const ring *g, int depth, int *done)
  * one constraint may try (c->flip_budget): the time a subsegment flips cannot recover
  * costs is bounded. */
 #define T3_REDUCE_DEPTH 1
-#define T3_REMOVALS 400
+#define T3_REMOVALS 100
 
 static lh_status remove_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int *done)
 {
