@@ -77,6 +77,20 @@ lh_status lh__t3_walls(t3_ctx *c, t3_domain *d)
         }
     }
     if (w) qsort(walls, w, 4 * sizeof(lh_index), cmp_wall); /* equal faces: facet order */
+    for (size_t i = 1; i < w; i++) /* facets given twice count once (recover_setup.c) */
+        if (cmp_wall(walls + 4 * (i - 1), walls + 4 * i) == 0 &&
+            walls[4 * (i - 1) + 3] != walls[4 * i + 3]) {
+            const lh_index *f = walls + 4 * i, g = walls[4 * (i - 1) + 3];
+            const long base = c->g->first_index;
+            lh_status st = lh__t3_say(
+                c, LH_ERR_INTERSECTING_FACETS, c->g->facet_line ? c->g->facet_line[f[3]] : 0,
+                "facets %ld and %ld overlap: both are recovered with the face of points %ld "
+                "%ld %ld (a facet that is not planar is the mesh faces spanning its polygons)",
+                (long)g + base, (long)f[3] + base, (long)f[0] + base, (long)f[1] + base,
+                (long)f[2] + base);
+            lh__free(&c->al, walls);
+            return st;
+        }
     size_t u = 0;
     for (size_t i = 0; i < w; i++)
         if (u == 0 || cmp_wall(walls + 4 * (u - 1), walls + 4 * i) != 0)
