@@ -102,8 +102,8 @@ static lh_status stalled(t3_ctx *c)
 }
 
 /* The Delaunay tetrahedralization in canonical order again, and the mesh loaded from
- * it (the rounds insert unordered: nothing they decide depends on that order, and the
- * output's does). */
+ * it (insertions leave it unordered; nothing a round decides depends on that order,
+ * and the output's does). */
 static lh_status sort(t3_ctx *c)
 {
     lh_status st = lh_tri_sort(c->dt);
@@ -114,11 +114,11 @@ static lh_status sort(t3_ctx *c)
     return st == LH_OK ? lh__t3_stars(c) : st;
 }
 
-/* Before the last round: nothing found before is taken as still there. The rounds
- * between take a constraint found whole as still whole while its points' stars in
- * the Delaunay tetrahedralization stay as they were (lh__t3_commit marks them); the
- * flips that recovered it are then likely, not certain, to recover it again, so the
- * last round, on the canonical order, checks everything afresh. */
+/* Nothing found before is taken as still there. A round takes a constraint found
+ * whole as still whole while its points' stars in the Delaunay tetrahedralization stay
+ * as they were (lh__t3_commit marks them); the flips that recovered it are then
+ * likely, not certain, to recover it again, so a round that finds nothing missing
+ * checks everything again without that. */
 static void forget(t3_ctx *c)
 {
     memset(c->seg_seen, 0, c->seg_count * sizeof(uint32_t));
@@ -131,16 +131,17 @@ lh_status lh__t3_recover(t3_ctx *c)
 {
     for (;;) {
         if (c->rounds == T3_MAX_ROUNDS) return stalled(c);
-        lh_status st = lh__t3_flip(c);
+        lh_status st = c->sorted ? LH_OK : sort(c);
+        if (st == LH_OK) st = lh__t3_flip(c);
         if (st == LH_OK) st = split_edges(c);
         if (st == LH_OK && c->new_count == 0) st = split_faces(c);
-        if (st != LH_OK) return st;
-        if (c->new_count == 0 && c->sorted) return LH_OK;
-        if (c->new_count == 0) { /* once more from the canonical order: the output's */
-            if ((st = sort(c)) != LH_OK) return st;
+        if (st == LH_OK && c->new_count == 0) { /* everything afresh, uncached */
             forget(c);
-            continue;
+            st = split_edges(c);
+            if (st == LH_OK && c->new_count == 0) st = split_faces(c);
         }
+        if (st != LH_OK) return st;
+        if (c->new_count == 0) return LH_OK;
         if (!c->opt->boundary_steiner)
             return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                               "-Y: recovering the boundary needs Steiner points on it, and "
