@@ -115,30 +115,30 @@ typedef struct t3_ctx {
     size_t rounds;
     /* the mesh the constraints are sought in (tets.c): the Delaunay tetrahedralization
        after the round's insertions, then changed by flips (recover_flip.c) */
-    lh_index *tv, *tn; /* 4 per tet: points (orient_3 > 0), neighbour opposite
-                               each (-1: none); tv[4 t] = -1 for a replaced tet      */
+    lh_index *tv, *tn; /* 4 per tet: points (orient_3 > 0), the neighbour opposite each
+                          (-1: none); tv[4 t] = -1 for a replaced tet */
     size_t tet_count, tet_cap;
-    lh_index *vtet; /* per point: a tet holding it, or -1                     */
+    lh_index *vtet; /* per point: a tet holding it, or -1 */
     size_t vtet_cap;
-    lh_index *tmark, tgen; /* per tet: visit marks (lh__t3_mesh_mark)                */
-    lh_index *sbuf;        /* scratch: a star                                        */
+    lh_index *tmark, tgen; /* per tet: visit marks (lh__t3_mesh_mark) */
+    lh_index *sbuf;        /* scratch: a star */
     size_t scap;
-    lh_index *lock_first; /* n + 1 offsets into lock: per point p, the other ends q
-                               > p of the subsegments from it, which flips keep      */
+    lh_index *lock_first; /* n + 1 offsets into lock: per point p, the other ends q > p
+                             of the subsegments from it, which flips keep */
     lh_index *lock;
     size_t lock_cap, lock_first_cap;
-    size_t flips;   /* flips made this round                                          */
-    int journal;    /* whether replacements are journaled, for undoing                */
-    size_t flip_budget; /* edge removals the current constraint may still try       */
-    lh_index made[T3_FLIP_TETS]; /* the tets the last replacement made           */
-    int made_count;
-    lh_index *todo;     /* subsegments flips have not recovered yet, 2 each          */
-    size_t todo_cap;
-    lh_index *jbuf; /* the journal (tets.c)                                            */
+    size_t flips;   /* flips made this round */
+    int journal;    /* whether replacements are journaled, for undoing */
+    lh_index *jbuf; /* the journal (tets.c) */
     size_t jlen, jcap;
-    lh_index *seg_order, *patch_order; /* segments, patches by their points'
-                                          coordinates: the order flips take them in */
-    int sorted;                        /* whether dt is in canonical order                       */
+    lh_index made[T3_FLIP_TETS]; /* the tets the last replacement made */
+    int made_count;
+    size_t flip_budget; /* edge removals the current constraint may still try */
+    lh_index *todo;     /* subsegments flips have not recovered yet, 2 each */
+    size_t todo_cap;
+    lh_index *seg_order, *patch_order; /* segments, patches by their points' coordinates:
+                                          the order flips take them in */
+    int sorted;                        /* whether dt is in canonical order */
 } t3_ctx;
 
 /* Sorts three indices in place (faces compared as sets). */
