@@ -101,19 +101,6 @@ static lh_status stalled(t3_ctx *c)
                       T3_MAX_ROUNDS, c->steiner, bad, list, bad > 5 ? ", ..." : "");
 }
 
-/* The Delaunay tetrahedralization in canonical order again, and the mesh loaded from
- * it (insertions leave it unordered; nothing a round decides depends on that order,
- * and the output's does). */
-static lh_status sort(t3_ctx *c)
-{
-    lh_status st = lh_tri_sort(c->dt);
-    if (st != LH_OK) return lh__t3_say(c, st, 0, "%s", lh_status_message(st));
-    c->dup = lh_tri_duplicate_of(c->dt);
-    c->sorted = 1;
-    st = lh__t3_mesh_load(c);
-    return st == LH_OK ? lh__t3_stars(c) : st;
-}
-
 /* Nothing found before is taken as still there. A round takes a constraint found
  * whole as still whole while its points' stars in the Delaunay tetrahedralization stay
  * as they were (lh__t3_commit marks them); the flips that recovered it are then
@@ -131,8 +118,7 @@ lh_status lh__t3_recover(t3_ctx *c)
 {
     for (;;) {
         if (c->rounds == T3_MAX_ROUNDS) return stalled(c);
-        lh_status st = c->sorted ? LH_OK : sort(c);
-        if (st == LH_OK) st = lh__t3_flip(c);
+        lh_status st = lh__t3_flip(c);
         if (st == LH_OK) st = split_edges(c);
         if (st == LH_OK && c->new_count == 0) st = split_faces(c);
         if (st == LH_OK && c->new_count == 0) { /* everything afresh, uncached */
@@ -151,7 +137,6 @@ lh_status lh__t3_recover(t3_ctx *c)
                               "boundary recovery needs more than %zu Steiner points (-S)",
                               budget(c));
         c->rounds++;
-        c->sorted = 0;
         if ((st = lh__t3_commit(c)) != LH_OK) return st;
     }
 }

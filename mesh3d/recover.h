@@ -138,7 +138,6 @@ typedef struct t3_ctx {
     size_t todo_cap;
     lh_index *seg_order, *patch_order; /* segments, patches by their points' coordinates:
                                           the order flips take them in */
-    int sorted;                        /* whether dt is in canonical order */
 } t3_ctx;
 
 /* Sorts three indices in place (faces compared as sets). */

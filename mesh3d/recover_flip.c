@@ -709,22 +709,6 @@ static lh_status flip_face(t3_ctx *c, const lh_index *f, int *face)
     return LH_OK;
 }
 
-/* Whether the tets the stars (c->star) listed when the mesh was loaded hold a tet
- * on all n points of v: then the mesh still has them as an edge or face, since flips
- * remove no subsegment, edge removal removes only the faces around the edge it takes
- * out, and the faces flipped for (after every 2-3 flip of the round) are bounded by
- * subsegments. */
-static int kept(const t3_ctx *c, const lh_index *v, int n)
-{
-    for (lh_index i = c->star_first[v[0]]; i < c->star_first[v[0] + 1]; i++) {
-        const lh_index *tv = c->tv + 4 * (size_t)c->star[i];
-        int in = has(tv, v[0]);
-        for (int k = 1; k < n && in; k++) in = has(tv, v[k]);
-        if (in) return 1;
-    }
-    return 0;
-}
-
 /* Patch k's one triangle, when it is one and its edges are unsplit subsegments. */
 static int lone_triangle(const t3_ctx *c, size_t k, lh_index *f)
 {
@@ -769,11 +753,9 @@ static lh_status segment_pass(t3_ctx *c, size_t *missing)
         if (st != LH_OK) return st;
         lh__t3_chain(c, s, c->vbuf, c->vcap);
         for (size_t j = 0; j + 1 < cl; j++) {
-            int edge, kind, z;
-            lh_index t;
-            if (kept(c, c->vbuf + j, 2)) continue;
-            if ((st = cone_tet(c, c->vbuf[j], c->vbuf[j + 1], &t, &z, &kind)) != LH_OK) return st;
-            if (kind == CONE_EDGE) continue;
+            int edge;
+            /* an edge of the loaded mesh stays one: flips remove no subsegment */
+            if (lh__t3_has_edge(c, c->vbuf[j], c->vbuf[j + 1])) continue;
             if ((st = flip_subsegment(c, c->vbuf[j], c->vbuf[j + 1], &edge)) != LH_OK) return st;
             if (edge) continue;
             if ((st = lh__t3_room(c, &c->todo, &c->todo_cap, 2 * (*missing + 1))) != LH_OK)
@@ -821,7 +803,9 @@ lh_status lh__t3_flip(t3_ctx *c)
         const size_t k = (size_t)c->patch_order[i];
         lh_index f[3];
         int face;
-        if (!lone_triangle(c, k, f) || kept(c, f, 3)) continue;
+        /* a face of the mesh stays one: edge removal takes out only the faces around
+           the edge it removes, and this one's edges are subsegments */
+        if (!lone_triangle(c, k, f) || lh__t3_has_face(c, f[0], f[1], f[2])) continue;
         c->jlen = 0;
         c->flip_budget = T3_REMOVALS;
         st = flip_face(c, f, &face);

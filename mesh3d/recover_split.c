@@ -319,7 +319,7 @@ lh_status lh__t3_commit(t3_ctx *c)
     double *x = c->xyz + 3 * c->n;
     st = number_fresh(c, x, &fresh);
     if (st != LH_OK) return st;
-    st = lh_tri_insert_unordered(c->dt, fresh, x); /* lh__t3_recover sorts it */
+    st = lh_tri_insert(c->dt, fresh, x); /* in canonical order: the output's comes from it */
     if (st != LH_OK)
         return lh__t3_say(c, st, 0, "inserting Steiner points: %s", lh_status_message(st));
     c->dup = lh_tri_duplicate_of(c->dt);

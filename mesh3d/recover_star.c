@@ -34,6 +34,9 @@ static int tet_has(const lh_index *t, lh_index v)
     return t[0] == v || t[1] == v || t[2] == v || t[3] == v;
 }
 
+/* Each tet is checked for every point: after flips (recover_flip.c) the stars may
+ * list a slot that now holds another tet. A tet found is in the mesh, so a yes is
+ * still right then; a no may miss what flips made. */
 int lh__t3_has_edge(const t3_ctx *c, lh_index p, lh_index q)
 {
     const lh_index *s = c->tv;
@@ -43,7 +46,8 @@ int lh__t3_has_edge(const t3_ctx *c, lh_index p, lh_index q)
         q = x;
     }
     for (lh_index i = c->star_first[p]; i < c->star_first[p + 1]; i++)
-        if (tet_has(s + 4 * (size_t)c->star[i], q)) return 1;
+        if (tet_has(s + 4 * (size_t)c->star[i], p) && tet_has(s + 4 * (size_t)c->star[i], q))
+            return 1;
     return 0;
 }
 
@@ -52,7 +56,7 @@ int lh__t3_has_face(const t3_ctx *c, lh_index a, lh_index b, lh_index d)
     const lh_index *s = c->tv;
     for (lh_index i = c->star_first[a]; i < c->star_first[a + 1]; i++) {
         const lh_index *t = s + 4 * (size_t)c->star[i];
-        if (tet_has(t, b) && tet_has(t, d)) return 1;
+        if (tet_has(t, a) && tet_has(t, b) && tet_has(t, d)) return 1;
     }
     return 0;
 }

@@ -42,7 +42,6 @@ static lh_status start(t3_ctx *c)
                           "the points are coplanar, or fewer than 4 distinct: no volume to mesh");
     if (st != LH_OK) return lh__t3_say(c, st, 0, "%s", lh_status_message(st));
     c->dup = lh_tri_duplicate_of(c->dt);
-    c->sorted = 1;
     c->n = c->n_input = g->n;
     c->n_cap = 2 * g->n + 16;
     c->xyz = lh__alloc(&c->al, 3 * c->n_cap * sizeof(double));
