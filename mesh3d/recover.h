@@ -31,6 +31,9 @@
 
 #include <stdint.h>
 
+/* recover_flip.c: the edges removed for one constraint that are kept out. */
+#define T3_GONE 64
+
 /* tets.c: at most this many tets replaced or made at once. */
 #define T3_FLIP_TETS 12
 
@@ -133,11 +136,20 @@ typedef struct t3_ctx {
     size_t jlen, jcap;
     lh_index made[T3_FLIP_TETS]; /* the tets the last replacement made */
     int made_count;
-    size_t flip_budget; /* edge removals the current constraint may still try */
-    lh_index *todo;     /* subsegments flips have not recovered yet, 2 each */
+    size_t flip_budget;         /* edge removals the current constraint may still try */
+    lh_index gone[2 * T3_GONE]; /* the edges the current constraint's removals took out,
+                                   which its later ones do not make again */
+    int gone_count;
+    lh_index *todo; /* subsegments flips have not recovered yet, 2 each */
     size_t todo_cap;
     lh_index *seg_order, *patch_order; /* segments, patches by their points' coordinates:
                                           the order flips take them in */
+    lh_index *pmark, pgen;             /* per point: pgen when it is a point of the patch flips
+                              are recovering (recover_flip.c) */
+    size_t pmark_cap;
+    lh_index *xlock; /* edges of patches flips recovered, which flips keep: a hash set
+                        of point pairs (p < q; -1: empty), xlock_cap slots, a power of 2 */
+    size_t xlock_cap, xlock_count;
 } t3_ctx;
 
 /* Sorts three indices in place (faces compared as sets). */
@@ -229,5 +241,20 @@ void lh__t3_mesh_compact(t3_ctx *c);
  * "Updating and constructing constrained Delaunay and constrained regular
  * triangulations by flips", SoCG 2003); then compacts the mesh and rebuilds the stars. */
 lh_status lh__t3_flip(t3_ctx *c);
+/* Exact orientation of the four points. */
+int lh__t3_orient4(t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e);
+/* Starts a constraint's try: an empty journal, the removal budget, no edges gone. */
+void lh__t3_try_begin(t3_ctx *c);
+/* Edge p q of tet t as a candidate for removal, in c->fbuf (3 each), *ne of them. */
+lh_status lh__t3_candidate(t3_ctx *c, lh_index t, lh_index p, lh_index q, size_t *ne);
+/* Removes the first of the ne candidates in coordinate order that edge removal takes
+ * out, trying every one without lowering its ring's degree, then one level deeper,
+ * and so on (iterative deepening); *done says whether one went. */
+lh_status lh__t3_remove_first(t3_ctx *c, size_t ne, int *done);
+/* Locks edge p q for the rest of the round's flips. */
+lh_status lh__t3_lock(t3_ctx *c, lh_index p, lh_index q);
+
+/* recover_flip_patch.c: recovers patch k by flips, when every subsegment is an edge. */
+lh_status lh__t3_flip_patch(t3_ctx *c, size_t k);
 
 #endif

@@ -10,8 +10,10 @@
  * one tet off the way to b; when their union is not convex, or when a b runs inside a
  * face from a, an edge of that face is removed instead (Shewchuk's edge removal: the
  * 3-2, 4-4 and 2-2 flips and larger rings). A try from a, then from b, that does not
- * end in the edge is undone. A facet triangle a b c whose edges are all there is
- * recovered by removing the edges crossing it. Flips never remove a subsegment
+ * end in the edge is undone. Edges in the way are tried in coordinate order, each
+ * first by a plain removal, then with its ring lowered one level, and so on; an
+ * edge one removal took out is not made again by another for the same constraint.
+ * Patches are recovered next (recover_flip_patch.c). Flips never remove a subsegment
  * (t3_ctx.lock), and each new tet is checked positive exactly, the same region filled.
  * What flips do not recover is split (recover.c); the mesh is loaded again from the
  * Delaunay tetrahedralization after each round's insertions, so a round's flips start
@@ -33,7 +35,7 @@ static const double *pt(const t3_ctx *c, lh_index p)
     return c->xyz + 3 * (size_t)p;
 }
 
-static int orient4(t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
+int lh__t3_orient4(t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
 {
     const double *p[4] = {pt(c, a), pt(c, b), pt(c, d), pt(c, e)};
     return lh_orient(c->pred, 3, p);
@@ -148,7 +150,7 @@ static lh_status orders(t3_ctx *c)
     return LH_OK;
 }
 
-/* ---- the subsegments, which no flip may remove ---- */
+/* ---- what no flip may remove: the subsegments, the edges of patches recovered ---- */
 
 /* Calls f(c, p, q, arg) for every subsegment p q, p < q. */
 static lh_status each_subsegment(t3_ctx *c, void (*f)(t3_ctx *, lh_index, lh_index, size_t *),
@@ -196,6 +198,42 @@ static lh_status locks(t3_ctx *c)
     return LH_OK;
 }
 
+/* The slot of edge p q (p < q) in the hash set xlock: where it is, else the empty
+ * slot it would go in (linear probing; the set is at most half full). */
+static lh_index *xlock_slot(const t3_ctx *c, lh_index p, lh_index q)
+{
+    size_t mask = c->xlock_cap - 1;
+    size_t h = ((size_t)p * 0x9E3779B97F4A7C15u ^ (size_t)q * 0xC2B2AE3D27D4EB4Fu) & mask;
+    for (;; h = (h + 1) & mask) {
+        lh_index *e = c->xlock + 2 * h;
+        if (e[0] < 0 || (e[0] == p && e[1] == q)) return e;
+    }
+}
+
+lh_status lh__t3_lock(t3_ctx *c, lh_index p, lh_index q)
+{
+    if (p > q) {
+        lh_index x = p;
+        p = q;
+        q = x;
+    }
+    if (2 * (c->xlock_count + 1) > c->xlock_cap) { /* rehash into twice the slots */
+        size_t old_cap = c->xlock_cap, cap = old_cap ? 2 * old_cap : 64;
+        lh_index *old = c->xlock, *x = lh__alloc(&c->al, 2 * cap * sizeof(lh_index));
+        if (!x) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+        memset(x, 0xff, 2 * cap * sizeof(lh_index));
+        c->xlock = x, c->xlock_cap = cap;
+        for (size_t i = 0; i < old_cap; i++)
+            if (old[2 * i] >= 0)
+                memcpy(xlock_slot(c, old[2 * i], old[2 * i + 1]), old + 2 * i,
+                       2 * sizeof(lh_index));
+        lh__free(&c->al, old);
+    }
+    lh_index *e = xlock_slot(c, p, q);
+    if (e[0] < 0) e[0] = p, e[1] = q, c->xlock_count++;
+    return LH_OK;
+}
+
 static int locked(const t3_ctx *c, lh_index p, lh_index q)
 {
     if (p > q) {
@@ -205,7 +243,7 @@ static int locked(const t3_ctx *c, lh_index p, lh_index q)
     }
     for (lh_index i = c->lock_first[p]; i < c->lock_first[p + 1]; i++)
         if (c->lock[i] == q) return 1;
-    return 0;
+    return c->xlock_count && *xlock_slot(c, p, q) >= 0;
 }
 
 /* ---- flips ---- */
@@ -223,8 +261,8 @@ static lh_status flip23(t3_ctx *c, lh_index t, int j, int *done)
         if (k != j) f[w++] = tv[k];
     for (int k = 0; k < 4; k++)
         if (!has(tv, c->tv[4 * (size_t)u + k])) q = c->tv[4 * (size_t)u + k];
-    int s0 = orient4(c, a, q, f[0], f[1]), s1 = orient4(c, a, q, f[1], f[2]);
-    int s2 = orient4(c, a, q, f[2], f[0]);
+    int s0 = lh__t3_orient4(c, a, q, f[0], f[1]), s1 = lh__t3_orient4(c, a, q, f[1], f[2]);
+    int s2 = lh__t3_orient4(c, a, q, f[2], f[0]);
     if (s0 == 0 || s0 != s1 || s1 != s2) return LH_OK;
     for (int k = 0; k < 3; k++)
         if (shape(c, a, q, f[k], f[(k + 1) % 3]) < T3_SLIVER) return LH_OK;
@@ -253,7 +291,7 @@ static void others(t3_ctx *c, lh_index t, lh_index x, lh_index y, lh_index *u, l
     int n = 0;
     for (int j = 0; j < 4; j++)
         if (tv[j] != x && tv[j] != y) o[n++] = tv[j];
-    int s = orient4(c, x, y, o[0], o[1]);
+    int s = lh__t3_orient4(c, x, y, o[0], o[1]);
     *u = s > 0 ? o[0] : o[1], *w = s > 0 ? o[1] : o[0];
 }
 
@@ -340,9 +378,22 @@ typedef struct enum_ctx {
 static int triangle_ok(enum_ctx *e, const int *v)
 {
     const ring *g = e->g;
-    int sx = orient4(e->c, g->r[v[0]], g->r[v[1]], g->r[v[2]], g->x);
-    int sy = orient4(e->c, g->r[v[0]], g->r[v[1]], g->r[v[2]], g->y);
+    int sx = lh__t3_orient4(e->c, g->r[v[0]], g->r[v[1]], g->r[v[2]], g->x);
+    int sy = lh__t3_orient4(e->c, g->r[v[0]], g->r[v[1]], g->r[v[2]], g->y);
     return sx != 0 && sx == -sy;
+}
+
+/* Whether the edge between ring points i < j is a diagonal that one of the current
+ * constraint's removals took out: a removal does not undo an earlier one, so that
+ * two removals cannot take turns (a tabu list). */
+static int makes_gone(const enum_ctx *e, int i, int j)
+{
+    const ring *g = e->g;
+    if (j - i < 2 || (i == 0 && j == g->k - 1)) return 0;
+    lh_index p = g->r[i] < g->r[j] ? g->r[i] : g->r[j], q = g->r[i] ^ g->r[j] ^ p;
+    for (int k = 0; k < e->c->gone_count; k++)
+        if (e->c->gone[2 * k] == p && e->c->gone[2 * k + 1] == q) return 1;
+    return 0;
 }
 
 /* Depth-first over the triangulations of the polygons on the stack, keeping the
@@ -363,8 +414,8 @@ static void search(enum_ctx *e, tris *tr, int (*stack)[2], int top, double worst
     for (int m = lo + 1; m < hi; m++) {
         int *v = tr->v[tr->n];
         v[0] = lo, v[1] = m, v[2] = hi;
-        if (!triangle_ok(e, v)) continue;
-        int sx = orient4(e->c, g->r[lo], g->r[m], g->r[hi], g->x);
+        if (!triangle_ok(e, v) || makes_gone(e, lo, m) || makes_gone(e, m, hi)) continue;
+        int sx = lh__t3_orient4(e->c, g->r[lo], g->r[m], g->r[hi], g->x);
         if (e->s && sx != e->s) continue;
         double w = fmin(shape(e->c, g->x, g->r[lo], g->r[m], g->r[hi]),
                         shape(e->c, g->y, g->r[lo], g->r[m], g->r[hi]));
@@ -413,6 +464,7 @@ static lh_status reduce(t3_ctx *c, const ring *g, int depth, int *done)
     *done = 0;
     for (int i = lo; i < hi && !*done; i++) {
         const size_t mark = c->jlen;
+        const int gone = c->gone_count;
         lh_index t = g->t[(i + g->k - 1) % g->k], r = g->r[(i + g->k - 1) % g->k], u;
         int flipped;
         for (int way = 0; way < 3 && !*done; way++) { /* the face p q r_i flipped away, or
@@ -429,22 +481,17 @@ static lh_status reduce(t3_ctx *c, const ring *g, int depth, int *done)
             if (st == LH_OK && flipped && u >= 0)
                 st = remove_edge_at(c, u, g->x, g->y, depth, done);
             if (st != LH_OK) return st;
-            if (!*done) lh__t3_mesh_undo(c, mark);
+            if (!*done) lh__t3_mesh_undo(c, mark), c->gone_count = gone;
         }
     }
     return LH_OK;
 }
 
 /* Levels of degree-lowering before an edge removal is given up, and the edge removals
- * one constraint may try (c->flip_budget): the time a subsegment flips cannot recover
+ * one constraint may try (c->flip_budget): the time a constraint flips cannot recover
  * costs is bounded. */
-#define T3_REDUCE_DEPTH 1
-#define T3_REMOVALS 100
-
-static lh_status remove_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int *done)
-{
-    return remove_edge_at(c, t, p, q, T3_REDUCE_DEPTH, done);
-}
+#define T3_REDUCE_DEPTH 3
+#define T3_REMOVALS 300
 
 /* Edge removal (Shewchuk, "Two discrete optimization algorithms for the topological
  * improvement of tetrahedral meshes", 2002, sec. 3): the tets around edge p q of tet
@@ -468,7 +515,7 @@ static lh_status remove_edge_at(t3_ctx *c, lh_index t, lh_index p, lh_index q, i
         q = x;
     }
     if (!ring_of(c, t, p, q, &g) || g.k < 3) return LH_OK;
-    if (!g.closed && orient4(c, p, q, g.r[0], g.r[g.k - 1]) != 0) return LH_OK;
+    if (!g.closed && lh__t3_orient4(c, p, q, g.r[0], g.r[g.k - 1]) != 0) return LH_OK;
     ring_start(c, &g);
     if (g.k > T3_RING) return depth > 0 ? reduce(c, &g, depth - 1, done) : LH_OK;
     enum_ctx e = {c, &g, 0, -1, {0, {{0}}}};
@@ -482,14 +529,19 @@ static lh_status remove_edge_at(t3_ctx *c, lh_index t, lh_index p, lh_index q, i
             nv[2 * i + s][0] = s ? q : p;
             for (int j = 0; j < 3; j++) nv[2 * i + s][j + 1] = g.r[e.keep.v[i][j]];
         }
-    return lh__t3_mesh_replace(c, g.t, g.closed ? g.k : g.k - 1, nv, 2 * e.keep.n, done);
+    lh_status st = lh__t3_mesh_replace(c, g.t, g.closed ? g.k : g.k - 1, nv, 2 * e.keep.n, done);
+    if (st == LH_OK && *done && c->gone_count < T3_GONE) {
+        c->gone[2 * c->gone_count] = p < q ? p : q;
+        c->gone[2 * c->gone_count++ + 1] = p < q ? q : p;
+    }
+    return st;
 }
 
 /* ---- the edges in the way, taken in coordinate order ---- */
 
 /* Edge p q of tet t as a candidate for removal: c->fbuf gets (first end, second end,
  * t), ends in coordinate order, once per edge. */
-static lh_status candidate(t3_ctx *c, lh_index t, lh_index p, lh_index q, size_t *ne)
+lh_status lh__t3_candidate(t3_ctx *c, lh_index t, lh_index p, lh_index q, size_t *ne)
 {
     if (before(c, q, p)) {
         lh_index x = p;
@@ -511,8 +563,7 @@ static int edge_before(const t3_ctx *c, const lh_index *e, const lh_index *f)
     return k < 0 || (k == 0 && before(c, e[1], f[1]));
 }
 
-/* Removes the first candidate in coordinate order that edge removal takes out. */
-static lh_status remove_first(t3_ctx *c, size_t ne, int *done)
+lh_status lh__t3_remove_first(t3_ctx *c, size_t ne, int *done)
 {
     *done = 0;
     for (size_t i = 1; i < ne; i++) /* insertion sort: a handful of edges */
@@ -522,10 +573,12 @@ static lh_status remove_first(t3_ctx *c, size_t ne, int *done)
                 c->fbuf[3 * j + k] = c->fbuf[3 * (j - 1) + k];
                 c->fbuf[3 * (j - 1) + k] = x;
             }
-    for (size_t i = 0; i < ne && !*done; i++) {
-        lh_status st = remove_edge(c, c->fbuf[3 * i + 2], c->fbuf[3 * i], c->fbuf[3 * i + 1], done);
-        if (st != LH_OK) return st;
-    }
+    for (int depth = 0; depth <= T3_REDUCE_DEPTH && !*done; depth++)
+        for (size_t i = 0; i < ne && !*done; i++) {
+            lh_status st = remove_edge_at(c, c->fbuf[3 * i + 2], c->fbuf[3 * i], c->fbuf[3 * i + 1],
+                                          depth, done);
+            if (st != LH_OK) return st;
+        }
     return LH_OK;
 }
 
@@ -544,14 +597,14 @@ static lh_status plane_walk(t3_ctx *c, lh_index a, lh_index b, lh_index t, lh_in
 {
     lh_index prev = a;
     for (int step = 0; step < T3_WALK_STEPS; step++) {
-        lh_status st = candidate(c, t, u, w, ne);
+        lh_status st = lh__t3_candidate(c, t, u, w, ne);
         ring g;
         if (st != LH_OK || !ring_of(c, t, u, w, &g)) return st;
         lh_index z = -1, o = -1, tz = -1;
         const int nt = g.closed ? g.k : g.k - 1;
         for (int i = 0; i < g.k; i++) {
             if (g.r[i] == prev) continue;
-            if (orient4(c, u, w, prev, g.r[i]) != 0) {
+            if (lh__t3_orient4(c, u, w, prev, g.r[i]) != 0) {
                 o = g.r[i];
                 continue;
             }
@@ -560,7 +613,7 @@ static lh_status plane_walk(t3_ctx *c, lh_index a, lh_index b, lh_index t, lh_in
         }
         if (z < 0 || o < 0 || z == b || lh__t3_collinear(c->pred, pt(c, a), pt(c, b), pt(c, z)))
             return LH_OK;
-        int sz = orient4(c, a, b, o, z), su = orient4(c, a, b, o, u);
+        int sz = lh__t3_orient4(c, a, b, o, z), su = lh__t3_orient4(c, a, b, o, u);
         if (sz == 0) return LH_OK;
         if (sz == su)
             prev = u, u = z;
@@ -629,7 +682,7 @@ static lh_status flip_edge(t3_ctx *c, lh_index a, lh_index b, int *edge)
             for (int m = 0; m < 4; m++)
                 if (m != j && m != z) e[w++] = c->tv[4 * (size_t)t + m];
             if ((st = plane_walk(c, a, b, t, e[0], e[1], &ne)) != LH_OK) return st;
-            if ((st = remove_first(c, ne, &done)) != LH_OK) return st;
+            if ((st = lh__t3_remove_first(c, ne, &done)) != LH_OK) return st;
             if (!done) return LH_OK;
             continue;
         }
@@ -637,90 +690,20 @@ static lh_status flip_edge(t3_ctx *c, lh_index a, lh_index b, int *edge)
         size_t ne = 0;
         for (int k = 0; !done && k < 4; k++) /* a reflex edge of the face */
             for (int m = k + 1; k != j && m < 4; m++)
-                if (m != j && (st = candidate(c, t, c->tv[4 * (size_t)t + k],
-                                              c->tv[4 * (size_t)t + m], &ne)) != LH_OK)
+                if (m != j && (st = lh__t3_candidate(c, t, c->tv[4 * (size_t)t + k],
+                                                     c->tv[4 * (size_t)t + m], &ne)) != LH_OK)
                     return st;
-        if (!done && (st = remove_first(c, ne, &done)) != LH_OK) return st;
+        if (!done && (st = lh__t3_remove_first(c, ne, &done)) != LH_OK) return st;
         if (!done) return LH_OK;
     }
     return LH_OK;
 }
 
-/* ---- facet triangles ---- */
-
-/* Whether edge p q crosses the open triangle a b d at one interior point. */
-static int crosses(t3_ctx *c, const lh_index *f, lh_index p, lh_index q)
+void lh__t3_try_begin(t3_ctx *c)
 {
-    for (int i = 0; i < 3; i++) /* an edge from a corner does not (nor its exact zeros) */
-        if (p == f[i] || q == f[i]) return 0;
-    int op = orient4(c, f[0], f[1], f[2], p), oq = orient4(c, f[0], f[1], f[2], q);
-    if (op == 0 || op != -oq) return 0;
-    int s0 = orient4(c, p, q, f[0], f[1]), s1 = orient4(c, p, q, f[1], f[2]);
-    int s2 = orient4(c, p, q, f[2], f[0]);
-    return s0 != 0 && s0 == s1 && s1 == s2;
-}
-
-/* The tets around a, b and d into c->ebuf (repeats and all), *count of them. */
-static lh_status around(t3_ctx *c, const lh_index *f, size_t *count)
-{
-    size_t m = 0;
-    for (int i = 0; i < 3; i++) {
-        size_t k;
-        lh_status st = lh__t3_mesh_star(c, f[i], &k);
-        if (st == LH_OK) st = lh__t3_room(c, &c->ebuf, &c->ecap, m + k);
-        if (st != LH_OK) return st;
-        memcpy(c->ebuf + m, c->sbuf, k * sizeof(lh_index));
-        m += k;
-    }
-    *count = m;
-    return LH_OK;
-}
-
-/* Flips the edges crossing triangle f out of the way; *face says whether it is a
- * face of the mesh at the end. */
-static lh_status flip_face(t3_ctx *c, const lh_index *f, int *face)
-{
-    *face = 0;
-    for (int it = 0; it < T3_FLIPS_PER_CONSTRAINT; it++) {
-        size_t k;
-        lh_status st = around(c, f, &k);
-        if (st != LH_OK) return st;
-        for (size_t i = 0; i < k; i++) {
-            const lh_index *tv = c->tv + 4 * (size_t)c->ebuf[i];
-            if (has(tv, f[0]) && has(tv, f[1]) && has(tv, f[2])) {
-                *face = 1;
-                return LH_OK;
-            }
-        }
-        int done = 0;
-        size_t ne = 0;
-        for (size_t i = 0; i < k; i++) {
-            const lh_index t = c->ebuf[i];
-            for (int x = 0; x < 4; x++)
-                for (int y = x + 1; y < 4; y++) {
-                    lh_index p = c->tv[4 * (size_t)t + x], q = c->tv[4 * (size_t)t + y];
-                    if (crosses(c, f, p, q) && (st = candidate(c, t, p, q, &ne)) != LH_OK)
-                        return st;
-                }
-        }
-        if ((st = remove_first(c, ne, &done)) != LH_OK) return st;
-        if (!done) return LH_OK;
-    }
-    return LH_OK;
-}
-
-/* Patch k's one triangle, when it is one and its edges are unsplit subsegments. */
-static int lone_triangle(const t3_ctx *c, size_t k, lh_index *f)
-{
-    if (c->patch_first[k + 1] - c->patch_first[k] != 1) return 0;
-    if (c->pnode_first && c->pnode_first[k + 1] != c->pnode_first[k]) return 0;
-    lh_index tri = c->patch_tri[c->patch_first[k]];
-    for (int i = 0; i < 3; i++) {
-        lh_index s = c->tri_seg[3 * (size_t)tri + i];
-        if (s < 0 || c->node_first[s + 1] != c->node_first[s]) return 0;
-        f[i] = c->tri[3 * (size_t)tri + i];
-    }
-    return 1;
+    c->jlen = 0;
+    c->flip_budget = T3_REMOVALS;
+    c->gone_count = 0;
 }
 
 /* Passes over the subsegments: what one pass's flips elsewhere made recoverable is
@@ -731,10 +714,10 @@ static int lone_triangle(const t3_ctx *c, size_t k, lh_index *f)
  * undone); *edge says whether. */
 static lh_status flip_subsegment(t3_ctx *c, lh_index p, lh_index q, int *edge)
 {
-    c->jlen = 0;
-    c->flip_budget = T3_REMOVALS;
+    lh__t3_try_begin(c);
     lh_status st = flip_edge(c, p, q, edge);
     if (st == LH_OK && !*edge) lh__t3_mesh_undo(c, 0); /* no trace of a failed try */
+    c->gone_count = 0;
     if (st == LH_OK && !*edge) st = flip_edge(c, q, p, edge);
     if (st == LH_OK && !*edge) lh__t3_mesh_undo(c, 0);
     c->jlen = 0;
@@ -792,26 +775,19 @@ lh_status lh__t3_flip(t3_ctx *c)
 {
     lh_status st = c->seg_order ? LH_OK : orders(c);
     if (st == LH_OK) st = locks(c);
+    if (st == LH_OK) st = lh__t3_room(c, &c->pmark, &c->pmark_cap, c->n);
+    if (st == LH_OK) memset(c->pmark, 0, c->n * sizeof(lh_index)), c->pgen = 0;
+    if (c->xlock_count) memset(c->xlock, 0xff, 2 * c->xlock_cap * sizeof(lh_index));
+    c->xlock_count = 0;
     size_t missing = 0, gained = 1;
     c->flips = 0;
     c->journal = 1;
     if (st == LH_OK) st = segment_pass(c, &missing);
     for (int pass = 1; pass < T3_FLIP_PASSES && missing && gained && st == LH_OK; pass++)
         st = retry_pass(c, &missing, &gained);
-    int all = missing == 0;
-    for (size_t i = 0; all && i < c->patch_count && st == LH_OK; i++) {
-        const size_t k = (size_t)c->patch_order[i];
-        lh_index f[3];
-        int face;
-        /* a face of the mesh stays one: edge removal takes out only the faces around
-           the edge it removes, and this one's edges are subsegments */
-        if (!lone_triangle(c, k, f) || lh__t3_has_face(c, f[0], f[1], f[2])) continue;
-        c->jlen = 0;
-        c->flip_budget = T3_REMOVALS;
-        st = flip_face(c, f, &face);
-        if (st == LH_OK && !face) lh__t3_mesh_undo(c, 0);
-        c->jlen = 0;
-    }
+    /* patches once every subsegment is an edge (recover_flip_patch.c) */
+    for (size_t i = 0; missing == 0 && i < c->patch_count && st == LH_OK; i++)
+        st = lh__t3_flip_patch(c, (size_t)c->patch_order[i]);
     c->journal = 0;
     if (st != LH_OK || c->flips == 0) return st; /* the stars are the loaded mesh's */
     lh__t3_mesh_compact(c);
