@@ -147,11 +147,13 @@ static int ray_in_angle(lh_pred *pr, int side, pt3 x, const pt3 t[3])
     return !side && ray_in_angle2(pr, flat_axis(pr, t), x, t);
 }
 
-/* Coplanar a and b sharing a = b[0]: all in projection k. */
+/* Coplanar a and b sharing a = b[0]: all in projection k. Their intersection is
+ * convex and holds the vertex, so it reaches beyond it exactly when their angles
+ * there share a ray; two closed convex angles at one apex do exactly when a side
+ * of one lies in the other (a side of their intersection is one of theirs). */
 static int vertex_meet2(lh_pred *pr, int k, const pt3 a[3], const pt3 b[3])
 {
-    return seg_tri2(pr, k, a[1], a[2], b) || seg_tri2(pr, k, b[1], b[2], a) ||
-           ray_in_angle2(pr, k, a[1], b) || ray_in_angle2(pr, k, a[2], b) ||
+    return ray_in_angle2(pr, k, a[1], b) || ray_in_angle2(pr, k, a[2], b) ||
            ray_in_angle2(pr, k, b[1], a) || ray_in_angle2(pr, k, b[2], a);
 }
 

@@ -373,15 +373,11 @@ typedef struct enum_ctx {
     int s;       /* the side x is on, once a triangle fixed it */
     double best; /* the best triangulation's worst tet shape so far (-1: none) */
     tris keep;   /* that triangulation */
+    /* per triangle lo < m < hi of the ring, once known: the side x is on (0: not a
+       triangle to use) and its two tets' worse shape — the search meets each often */
+    signed char side[T3_RING][T3_RING][T3_RING];
+    double w[T3_RING][T3_RING][T3_RING];
 } enum_ctx;
-
-static int triangle_ok(enum_ctx *e, const int *v)
-{
-    const ring *g = e->g;
-    int sx = lh__t3_orient4(e->c, g->r[v[0]], g->r[v[1]], g->r[v[2]], g->x);
-    int sy = lh__t3_orient4(e->c, g->r[v[0]], g->r[v[1]], g->r[v[2]], g->y);
-    return sx != 0 && sx == -sy;
-}
 
 /* Whether the edge between ring points i < j is a diagonal that one of the current
  * constraint's removals took out: a removal does not undo an earlier one, so that
@@ -394,6 +390,24 @@ static int makes_gone(const enum_ctx *e, int i, int j)
     for (int k = 0; k < e->c->gone_count; k++)
         if (e->c->gone[2 * k] == p && e->c->gone[2 * k + 1] == q) return 1;
     return 0;
+}
+
+/* The side x is on of triangle lo m hi, 0 when x and y are not strictly on opposite
+ * sides or it makes an edge gone; its tets' worse shape into *w. */
+static int triangle_side(enum_ctx *e, int lo, int m, int hi, double *w)
+{
+    signed char *sd = &e->side[lo][m][hi];
+    if (*sd == 2) {
+        const ring *g = e->g;
+        const lh_index a = g->r[lo], b = g->r[m], d = g->r[hi];
+        int sx = lh__t3_orient4(e->c, a, b, d, g->x), sy = lh__t3_orient4(e->c, a, b, d, g->y);
+        *sd = (signed char)(sx != 0 && sx == -sy && !makes_gone(e, lo, m) && !makes_gone(e, m, hi)
+                                ? sx
+                                : 0);
+        if (*sd) e->w[lo][m][hi] = fmin(shape(e->c, g->x, a, b, d), shape(e->c, g->y, a, b, d));
+    }
+    *w = e->w[lo][m][hi];
+    return *sd;
 }
 
 /* Depth-first over the triangulations of the polygons on the stack, keeping the
@@ -410,15 +424,12 @@ static void search(enum_ctx *e, tris *tr, int (*stack)[2], int top, double worst
         search(e, tr, stack, top - 1, worst);
         return;
     }
-    const ring *g = e->g;
     for (int m = lo + 1; m < hi; m++) {
         int *v = tr->v[tr->n];
         v[0] = lo, v[1] = m, v[2] = hi;
-        if (!triangle_ok(e, v) || makes_gone(e, lo, m) || makes_gone(e, m, hi)) continue;
-        int sx = lh__t3_orient4(e->c, g->r[lo], g->r[m], g->r[hi], g->x);
-        if (e->s && sx != e->s) continue;
-        double w = fmin(shape(e->c, g->x, g->r[lo], g->r[m], g->r[hi]),
-                        shape(e->c, g->y, g->r[lo], g->r[m], g->r[hi]));
+        double w;
+        int sx = triangle_side(e, lo, m, hi, &w);
+        if (!sx || (e->s && sx != e->s)) continue;
         w = fmin(w, worst);
         if (w <= e->best || w < T3_SLIVER) continue;
         int keep = e->s;
@@ -518,7 +529,8 @@ static lh_status remove_edge_at(t3_ctx *c, lh_index t, lh_index p, lh_index q, i
     if (!g.closed && lh__t3_orient4(c, p, q, g.r[0], g.r[g.k - 1]) != 0) return LH_OK;
     ring_start(c, &g);
     if (g.k > T3_RING) return depth > 0 ? reduce(c, &g, depth - 1, done) : LH_OK;
-    enum_ctx e = {c, &g, 0, -1, {0, {{0}}}};
+    enum_ctx e = {c, &g, 0, -1, {0, {{0}}}, {{{0}}}, {{{0}}}};
+    memset(e.side, 2, sizeof e.side);
     tris tr = {0, {{0}}};
     int stack[T3_RING][2] = {{0, g.k - 1}};
     search(&e, &tr, stack, 1, INFINITY);
