@@ -484,10 +484,8 @@ static lh_status reduce(t3_ctx *c, const ring *g, int depth, int *done)
             lh_status st = LH_OK;
             if (way == 0)
                 st = flip23(c, t, slot_of(c->tv + 4 * (size_t)t, r), &flipped);
-            else if ((st = tet_of_edge(c, e, ri, &u)) == LH_OK && u >= 0)
-                st = remove_edge_at(c, u, e, ri, depth, &flipped);
-            else
-                flipped = 0;
+            else /* t holds x, y, r_i-1 and r_i: the edge e r_i */
+                st = remove_edge_at(c, t, e, ri, depth, &flipped);
             if (st == LH_OK && flipped) st = tet_of_edge(c, g->x, g->y, &u);
             if (st == LH_OK && flipped && u >= 0)
                 st = remove_edge_at(c, u, g->x, g->y, depth, done);
