@@ -4,7 +4,8 @@
  *   byte 0: options — bit 0 convex_hull, bit 1 skip the intersection test (then the
  *           facets may cross and recovery must still end), bit 2 coordinates as int8
  *           (else a 0..3 grid: coplanar, cocircular, cospherical, duplicate points),
- *           bits 3-4 the scale 2^0, 2^200, 2^-200 or 2^40, bit 5 region attributes;
+ *           bits 3-4 the scale 2^0, 2^200, 2^-200 or 2^40, bit 5 region attributes,
+ *           bit 6 -Y (boundary_steiner off);
  *   byte 1: points, 4 + (byte % 21);
  *   then 3 bytes a point; then facets, each a byte k (3 + k % 3 corners) and k point
  *   numbers (mod n), up to 24; then up to 2 hole points (3 bytes each, grid/2).
@@ -16,7 +17,7 @@
  *     skipped (the PLC is not one: conformity is undefined) or a hole point is given
  *     (the check does not tell every polygon edge a hole carved away from a missing
  *     one: finding-hole-slit, a ring through one point twice beside two holes); its
- *     point count is the PLC's plus the Steiner points;
+ *     point count is the PLC's plus the Steiner points, none on the boundary with -Y;
  *   - a failure is a documented status with a one-line printable message.
  * Anything else aborts. Build as the other targets (fuzz/README.md).
  */
@@ -55,6 +56,7 @@ static int decode(const uint8_t *d, size_t size, input *in)
     in->opt.convex_hull = d[0] & 1;
     in->opt.check_intersections = !(d[0] & 2);
     in->opt.region_attributes = (d[0] >> 5) & 1;
+    in->opt.boundary_steiner = !((d[0] >> 6) & 1); /* -Y: interior Steiner points only */
     in->opt.max_steiner = 100; /* bounds the time of recovery that cannot settle */
     int int8 = (d[0] >> 2) & 1, e = scales[(d[0] >> 3) & 3];
     size_t n = 4 + d[1] % 21, at = 2;
@@ -115,6 +117,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         lh_tetmesh_stats s;
         lh_tetmesh_stats_get(m, &s);
         if (lh_tetmesh_point_count(m) != in.g.n + s.steiner_points) abort();
+        if (!in.opt.boundary_steiner && s.steiner_on_segments + s.steiner_on_facets) abort();
         size_t off = 0, pairs = 0;
         lh_error cerr;
         if (!in.opt.check_intersections &&

@@ -126,38 +126,6 @@ static void flood(const t3_ctx *c, t3_domain *d, lh_index seed, lh_index label)
     }
 }
 
-/* The sign of q against tet t's face j: positive on t's side. */
-static int side(t3_ctx *c, size_t t, int j, const double *q)
-{
-    const double *p[4];
-    for (int k = 0; k < 4; k++) p[k] = k == j ? q : c->xyz + 3 * (size_t)c->tv[4 * t + k];
-    return lh_orient(c->pred, 3, p);
-}
-
-/* The tet holding q (closed), -1 outside the mesh: a walk from tet t0 that crosses a
- * face q lies beyond, starting each step from another face so that it cannot cycle
- * for long in a mesh that flips made non-Delaunay; every tet tried when the walk
- * leaves the mesh or runs long. */
-static lh_index walk(t3_ctx *c, lh_index t0, const double *q)
-{
-    lh_index t = t0;
-    for (size_t step = 0; t >= 0 && step < 4 * c->tet_count + 64; step++) {
-        int out = -1;
-        for (int i = 0; i < 4 && out < 0; i++) {
-            int j = (int)((step + (size_t)i) % 4);
-            if (side(c, (size_t)t, j, q) < 0) out = j;
-        }
-        if (out < 0) return t;
-        t = c->tn[4 * (size_t)t + out];
-    }
-    for (size_t u = 0; u < c->tet_count; u++) {
-        int in = 1;
-        for (int j = 0; j < 4 && in; j++) in = side(c, u, j, q) >= 0;
-        if (in) return (lh_index)u;
-    }
-    return -1;
-}
-
 /* The tetrahedron holding point q, -1 outside the hull; *wall = the facet of a wall
  * q lies on (a face of that tet with orient 0), else -1. */
 static lh_index locate(t3_ctx *c, const t3_domain *d, const double *q, lh_index *wall)
@@ -166,10 +134,10 @@ static lh_index locate(t3_ctx *c, const t3_domain *d, const double *q, lh_index 
     *wall = -1;
     if (lh_tri_locate(c->dt, q, -1, &loc) != LH_OK || loc.simplex < 0) return -1;
     lh_index near = c->vtet[lh_tri_simplices(c->dt)[4 * (size_t)loc.simplex]];
-    lh_index t = walk(c, near, q);
+    lh_index t = lh__t3_mesh_walk(c, near, q);
     if (t < 0) return -1;
     for (int j = 0; j < 4; j++)
-        if (side(c, (size_t)t, j, q) == 0) {
+        if (lh__t3_mesh_side(c, (size_t)t, j, q) == 0) {
             lh_index f = lh__t3_wall_of(d, (size_t)t, j);
             if (f >= 0) *wall = f;
         }

@@ -11,12 +11,17 @@
 #define ARRAY(m, field, count, type) \
     lh__tetmesh_array((m), (void **)&(m)->field, (count), sizeof(type))
 
-/* Point numbers: the PLC's keep theirs; Steiner points that are vertices follow. */
-static lh_status number_points(t3_ctx *c, lh_tetmesh *m, lh_index *pmap)
+/* Point numbers: the PLC's keep theirs; the Steiner points of the tets kept follow
+ * (an interior one that carving left outside the domain is dropped). */
+static lh_status number_points(t3_ctx *c, const t3_domain *d, lh_tetmesh *m, lh_index *pmap)
 {
     size_t w = c->n_input;
-    for (size_t i = 0; i < c->n; i++)
-        pmap[i] = i < c->n_input ? (lh_index)i : c->dup[i] == (lh_index)i ? (lh_index)w++ : -1;
+    for (size_t i = 0; i < c->n; i++) pmap[i] = i < c->n_input ? (lh_index)i : -1;
+    for (size_t t = 0; t < c->tet_count; t++) /* the Steiner points kept: in a tet kept */
+        for (int j = 0; d->label[t] != T3_OUT && j < 4; j++)
+            if ((size_t)c->tv[4 * t + j] >= c->n_input) pmap[c->tv[4 * t + j]] = 0;
+    for (size_t i = c->n_input; i < c->n; i++)
+        if (pmap[i] == 0) pmap[i] = (lh_index)w++;
     m->n = w;
     lh_status st = ARRAY(m, xyz, 3 * w, double);
     if (st == LH_OK) st = ARRAY(m, point_marker, w, lh_index);
@@ -28,7 +33,7 @@ static lh_status number_points(t3_ctx *c, lh_tetmesh *m, lh_index *pmap)
     }
     for (size_t k = 0; k < c->node_count; k++) { /* a Steiner point: its segment's marker */
         lh_index p = c->node[k].p;
-        if ((size_t)p >= c->n_input && m->point_marker[pmap[p]] == 0)
+        if ((size_t)p >= c->n_input && pmap[p] >= 0 && m->point_marker[pmap[p]] == 0)
             m->point_marker[pmap[p]] = c->seg[c->node[k].seg].marker;
     }
     return LH_OK;
@@ -158,10 +163,12 @@ static lh_status write_edges(t3_ctx *c, const t3_domain *d, lh_tetmesh *m, const
 }
 
 /* Steiner points by kind, and those not exactly on their segment's line; seen: one
- * byte per point, zeroed. */
+ * byte per point, 1 for the points not kept, else 0. */
 static void count_steiner(const t3_ctx *c, lh_tetmesh *m, unsigned char *seen)
 {
     lh_tetmesh_stats *S = &m->stats;
+    size_t kept = 0;
+    for (size_t i = c->n_input; i < c->n; i++) kept += !seen[i];
     for (size_t k = 0; k < c->node_count; k++) {
         const t3_node *nd = c->node + k;
         if ((size_t)nd->p < c->n_input || seen[nd->p]) continue;
@@ -185,7 +192,8 @@ static void count_steiner(const t3_ctx *c, lh_tetmesh *m, unsigned char *seen)
                               c->xyz + 3 * (size_t)t[2], c->xyz + 3 * (size_t)nd->p};
         S->steiner_off_exact += lh_orient(c->pred, 3, p) != 0;
     }
-    S->steiner_points = S->steiner_on_segments + S->steiner_on_facets + S->steiner_interior;
+    S->steiner_points = kept;
+    S->steiner_interior = kept - S->steiner_on_segments - S->steiner_on_facets;
 }
 
 lh_status lh__t3_output(t3_ctx *c, const t3_domain *d, lh_tetmesh *m)
@@ -194,13 +202,16 @@ lh_status lh__t3_output(t3_ctx *c, const t3_domain *d, lh_tetmesh *m)
     lh_index *pmap = lh__alloc(&c->al, (c->n + 1) * sizeof(lh_index));
     lh_index *tmap = lh__alloc(&c->al, (count + 1) * sizeof(lh_index));
     lh_status st = pmap && tmap ? LH_OK : LH_ERR_NOMEM;
-    if (st == LH_OK) st = number_points(c, m, pmap);
+    if (st == LH_OK) st = number_points(c, d, m, pmap);
     if (st == LH_OK) st = write_tets(c, d, m, pmap, tmap);
     if (st == LH_OK) st = write_faces(c, d, m, tmap);
     if (st == LH_OK) st = write_edges(c, d, m, pmap);
     if (st == LH_OK) {
-        memset(pmap, 0, c->n); /* pmap is done with: the bytes serve as count_steiner's marks */
-        count_steiner(c, m, (unsigned char *)pmap);
+        unsigned char *seen = lh__alloc(&c->al, c->n + 1);
+        if (!seen) st = LH_ERR_NOMEM;
+        for (size_t i = 0; seen && i < c->n; i++) seen[i] = pmap[i] < 0;
+        if (seen) count_steiner(c, m, seen);
+        lh__free(&c->al, seen);
         m->stats.input_points = c->n_input;
         m->stats.duplicates_merged = 0;
         for (size_t i = 0; i < c->n_input; i++)

@@ -128,10 +128,6 @@ lh_status lh__t3_recover(t3_ctx *c)
         }
         if (st != LH_OK) return st;
         if (c->new_count == 0) return LH_OK;
-        if (!c->opt->boundary_steiner)
-            return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
-                              "-Y: recovering the boundary needs Steiner points on it, and "
-                              "interior Steiner points alone are not implemented yet");
         if (c->steiner + c->new_count > budget(c))
             return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                               "boundary recovery needs more than %zu Steiner points (-S)",

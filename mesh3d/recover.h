@@ -46,7 +46,8 @@ typedef struct t3_seg {
 } t3_seg;
 
 /* A point of a chain: point p at parameter t of segment seg (a + t (b - a)); in the
- * queue of new points, seg < 0 means a point inside patch -1 - seg. */
+ * queue of new points, seg < 0 means a point inside patch -1 - seg, or, for
+ * -1 - patch_count (lh__t3_inside_seg), a point off every constraint. */
 typedef struct t3_node {
     lh_index seg, p;
     double t;
@@ -164,6 +165,12 @@ static inline void lh__t3_sort3(lh_index *f)
             }
 }
 
+/* The queue's mark of a point off every constraint (t3_node). */
+static inline lh_index lh__t3_inside_seg(const t3_ctx *c)
+{
+    return -1 - (lh_index)c->patch_count;
+}
+
 /* recover.c: err->message = "LINE: " (when line > 0) + the formatted text; returns st. */
 lh_status lh__t3_say(t3_ctx *c, lh_status st, size_t line, const char *fmt, ...)
 #if defined(__GNUC__) || defined(__clang__)
@@ -202,6 +209,11 @@ int lh__t3_seg_changed(const t3_ctx *c, size_t s, uint32_t r);
 /* Sorts the chains' nodes (by segment, then parameter) and rebuilds node_first. */
 lh_status lh__t3_chains_sort(t3_ctx *c);
 
+/* recover_inside.c: queues a new point strictly inside the tet holding x (found by a
+ * walk from point near's tet) and on no constraint, for -Y; LH_ERR_STEINER_LIMIT when
+ * there is none. */
+lh_status lh__t3_queue_inside(t3_ctx *c, lh_index near, const double *x);
+
 /* Queues new point x (p < 0) or existing point p for segment seg at parameter t, or
  * (seg < 0) inside patch -1 - seg. */
 lh_status lh__t3_queue(t3_ctx *c, lh_index seg, double t, lh_index p, const double x[3]);
@@ -235,6 +247,11 @@ lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index
 void lh__t3_mesh_undo(t3_ctx *c, size_t mark);
 /* Drops the replaced tets' slots, renumbering the rest in order. */
 void lh__t3_mesh_compact(t3_ctx *c);
+/* orient_3 of tet t with its corner j replaced by q: > 0 when q is on t's side of
+ * the face opposite j. */
+int lh__t3_mesh_side(t3_ctx *c, size_t t, int j, const double *q);
+/* The tet holding q (closed), -1 outside the mesh: a walk from tet t0. */
+lh_index lh__t3_mesh_walk(t3_ctx *c, lh_index t0, const double *q);
 
 /* recover_flip.c: recovers by flips the subsegments that are not edges of the mesh
  * and, when every one is, the missing facet triangles (Si 2015, sec. 3; Shewchuk,

@@ -143,6 +143,7 @@ lh_status lh__t3_split(t3_ctx *c, lh_index s, size_t i)
         double dj = b[j] - a[j];
         x[j] = isfinite(dj) ? a[j] + t * dj : (1 - t) * a[j] + t * b[j];
     }
+    if (!c->opt->boundary_steiner) return lh__t3_queue_inside(c, p, x); /* -Y */
     int same_p = 1, same_q = 1, outside = 0;
     for (int j = 0; j < 3; j++) {
         double u = pt(c, p)[j], w = pt(c, q)[j];
@@ -323,8 +324,9 @@ lh_status lh__t3_commit(t3_ctx *c)
     if (st != LH_OK)
         return lh__t3_say(c, st, 0, "inserting Steiner points: %s", lh_status_message(st));
     c->dup = lh_tri_duplicate_of(c->dt);
-    for (size_t i = 0; i < fresh; i++)
-        if (c->dup[c->n + i] == (lh_index)(c->n + i)) c->steiner++;
+    size_t added = 0; /* new distinct points */
+    for (size_t i = 0; i < fresh; i++) added += c->dup[c->n + i] == (lh_index)(c->n + i);
+    c->steiner += added;
     size_t first_new = c->n;
     c->n += fresh;
     size_t before = c->node_count + c->pnode_count;
@@ -333,14 +335,14 @@ lh_status lh__t3_commit(t3_ctx *c)
         nd.p = c->dup[nd.p];
         if (nd.seg >= 0) {
             c->node[c->node_count++] = nd;
-        } else {
+        } else if (nd.seg != lh__t3_inside_seg(c)) {
             nd.seg = -1 - nd.seg;
             c->pnode[c->pnode_count++] = nd;
         }
     }
     for (size_t i = 0; i < m; i++) c->new_node[i].p = c->dup[c->new_node[i].p];
     st = lh__t3_chains_sort(c);
-    if (st == LH_OK && c->node_count + c->pnode_count == before)
+    if (st == LH_OK && c->node_count + c->pnode_count == before && added == 0)
         return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                           "boundary recovery made no progress: every split point fell on a "
                           "point already there");

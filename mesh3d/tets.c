@@ -246,3 +246,33 @@ void lh__t3_mesh_compact(t3_ctx *c)
     for (size_t v = 0; v < c->n; v++) c->vtet[v] = -1;
     for (size_t t = 0; t < w; t++) note_points(c, t);
 }
+
+int lh__t3_mesh_side(t3_ctx *c, size_t t, int j, const double *q)
+{
+    const double *p[4];
+    for (int k = 0; k < 4; k++) p[k] = k == j ? q : c->xyz + 3 * (size_t)c->tv[4 * t + k];
+    return lh_orient(c->pred, 3, p);
+}
+
+/* A walk that crosses a face q lies beyond, starting each step from another face so
+ * that it cannot cycle for long in a mesh that flips made non-Delaunay; every tet is
+ * tried when the walk leaves the mesh or runs long. */
+lh_index lh__t3_mesh_walk(t3_ctx *c, lh_index t0, const double *q)
+{
+    lh_index t = t0;
+    for (size_t step = 0; t >= 0 && step < 4 * c->tet_count + 64; step++) {
+        int out = -1;
+        for (int i = 0; i < 4 && out < 0; i++) {
+            int j = (int)((step + (size_t)i) % 4);
+            if (lh__t3_mesh_side(c, (size_t)t, j, q) < 0) out = j;
+        }
+        if (out < 0) return t;
+        t = c->tn[4 * (size_t)t + out];
+    }
+    for (size_t u = 0; u < c->tet_count; u++) {
+        int in = 1;
+        for (int j = 0; j < 4 && in; j++) in = lh__t3_mesh_side(c, u, j, q) >= 0;
+        if (in) return (lh_index)u;
+    }
+    return -1;
+}

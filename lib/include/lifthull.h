@@ -1266,8 +1266,9 @@ LH_API const lh_index *lh_tetmesh_edge_parents(const lh_tetmesh *m);
 
 typedef struct lh_tetmesh_stats {
     size_t input_points, duplicates_merged;
-    size_t steiner_points;       /* all Steiner points                                 */
-    size_t steiner_on_segments, steiner_on_facets, steiner_interior;
+    size_t steiner_points;       /* all Steiner points of the mesh (one that carving
+                                    left outside the domain is not in it)             */
+    size_t steiner_on_segments, steiner_on_facets, steiner_interior; /* interior: -Y's */
     size_t steiner_off_exact;    /* on a segment or facet up to rounding only: not
                                     exactly on its line or plane                      */
     size_t facets_nonplanar;     /* facets whose points are not exactly coplanar        */

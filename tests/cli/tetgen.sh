@@ -174,7 +174,7 @@ expect "-p none" 3 '^lifthull tetgen: none\.poly: No such file or directory$' ''
 cd ..
 
 # Schonhardt's prism needs Steiner points: -S0 refuses it, -c keeps its hull (more
-# tetrahedra), -Y allows interior ones only (TO UPDATE: refused until the mesher has them)
+# tetrahedra), -Y puts one inside, none on the boundary
 rm -rf w; mkdir w; cp "$data/../mesh3d/schonhardt.off" w/; cd w
 expect "-p schonhardt" 0 '' '^schonhardt\.1: [0-9]+ points, [0-9]+ tetrahedra, [0-9]+ boundary faces \([1-9][0-9]* Steiner' -- \
   "$lh" tetgen -p schonhardt.off
@@ -183,10 +183,8 @@ expect "-pS0 schonhardt" 3 '^lifthull tetgen: schonhardt\.off: boundary recovery
   '' -- "$lh" tetgen -pS0 schonhardt.off
 expect "-pc schonhardt" 0 '' '' -- "$lh" tetgen -pcQ schonhardt.off
 [ "$(line schonhardt.1.ele 1 | cut -d' ' -f1)" -gt "$plain" ] && ok || bad "-c: no more tetrahedra than $plain"
-"$lh" tetgen -pYV schonhardt.off > out.txt 2>&1; rc=$?
-if { [ $rc -eq 3 ] && matches out.txt 'interior Steiner points alone are not implemented yet'; } ||
-   { [ $rc -eq 0 ] && matches out.txt '^  Steiner points: [0-9]+ \(0 on segments, 0 on facets, '; }; then ok
-else bad "-pY schonhardt: $rc $(cat out.txt)"; fi
+expect "-pY schonhardt" 0 '' '^  Steiner points: 1 \(0 on segments, 0 on facets, 1 interior\)$' -- \
+  "$lh" tetgen -pYVC schonhardt.off
 cd ..
 
 # an OFF surface: numbered from 0 as the file; -I names without the iteration number
