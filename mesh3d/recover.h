@@ -260,8 +260,11 @@ lh_index lh__t3_mesh_walk(t3_ctx *c, lh_index t0, const double *q);
 lh_status lh__t3_flip(t3_ctx *c);
 /* Exact orientation of the four points. */
 int lh__t3_orient4(t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e);
-/* Starts a constraint's try: an empty journal, the removal budget, no edges gone. */
-void lh__t3_try_begin(t3_ctx *c);
+/* Edge removals a constraint's try may make (recover_flip.c). */
+#define T3_REMOVALS 300
+/* Starts a constraint's try: an empty journal, a budget of edge removals, no edges
+ * gone. */
+void lh__t3_try_begin(t3_ctx *c, size_t budget);
 /* Edge p q of tet t as a candidate for removal, in c->fbuf (3 each), *ne of them. */
 lh_status lh__t3_candidate(t3_ctx *c, lh_index t, lh_index p, lh_index q, size_t *ne);
 /* Removes the first of the ne candidates in coordinate order that edge removal takes

@@ -500,7 +500,7 @@ static lh_status reduce(t3_ctx *c, const ring *g, int depth, int *done)
  * one constraint may try (c->flip_budget): the time a constraint flips cannot recover
  * costs is bounded. */
 #define T3_REDUCE_DEPTH 3
-#define T3_REMOVALS 300
+#define T3_RETRY_REMOVALS 100 /* on a later pass (T3_REMOVALS: recover.h) */
 
 /* Edge removal (Shewchuk, "Two discrete optimization algorithms for the topological
  * improvement of tetrahedral meshes", 2002, sec. 3): the tets around edge p q of tet
@@ -709,10 +709,10 @@ static lh_status flip_edge(t3_ctx *c, lh_index a, lh_index b, int *edge)
     return LH_OK;
 }
 
-void lh__t3_try_begin(t3_ctx *c)
+void lh__t3_try_begin(t3_ctx *c, size_t budget)
 {
     c->jlen = 0;
-    c->flip_budget = T3_REMOVALS;
+    c->flip_budget = budget;
     c->gone_count = 0;
 }
 
@@ -720,11 +720,11 @@ void lh__t3_try_begin(t3_ctx *c)
  * tried again in the next, while a pass recovers something. */
 #define T3_FLIP_PASSES 4
 
-/* Subsegment p q by flips from either end, else left as it was (the journal
- * undone); *edge says whether. */
-static lh_status flip_subsegment(t3_ctx *c, lh_index p, lh_index q, int *edge)
+/* Subsegment p q by flips from either end, with at most `budget` edge removals in
+ * all, else left as it was (the journal undone); *edge says whether. */
+static lh_status flip_subsegment(t3_ctx *c, lh_index p, lh_index q, size_t budget, int *edge)
 {
-    lh__t3_try_begin(c);
+    lh__t3_try_begin(c, budget);
     lh_status st = flip_edge(c, p, q, edge);
     if (st == LH_OK && !*edge) lh__t3_mesh_undo(c, 0); /* no trace of a failed try */
     c->gone_count = 0;
@@ -749,7 +749,8 @@ static lh_status segment_pass(t3_ctx *c, size_t *missing)
             int edge;
             /* an edge of the loaded mesh stays one: flips remove no subsegment */
             if (lh__t3_has_edge(c, c->vbuf[j], c->vbuf[j + 1])) continue;
-            if ((st = flip_subsegment(c, c->vbuf[j], c->vbuf[j + 1], &edge)) != LH_OK) return st;
+            st = flip_subsegment(c, c->vbuf[j], c->vbuf[j + 1], T3_REMOVALS, &edge);
+            if (st != LH_OK) return st;
             if (edge) continue;
             if ((st = lh__t3_room(c, &c->todo, &c->todo_cap, 2 * (*missing + 1))) != LH_OK)
                 return st;
@@ -761,14 +762,16 @@ static lh_status segment_pass(t3_ctx *c, size_t *missing)
 }
 
 /* A later pass over those: the ones still missing kept, in order; *gained: how many
- * this pass recovered. */
+ * this pass recovered. What a first pass's search did not find, a retry finds when
+ * flips elsewhere made it easy, so it searches less. */
 static lh_status retry_pass(t3_ctx *c, size_t *missing, size_t *gained)
 {
     size_t w = 0;
     *gained = 0;
     for (size_t i = 0; i < *missing; i++) {
         int edge;
-        lh_status st = flip_subsegment(c, c->todo[2 * i], c->todo[2 * i + 1], &edge);
+        lh_status st =
+            flip_subsegment(c, c->todo[2 * i], c->todo[2 * i + 1], T3_RETRY_REMOVALS, &edge);
         if (st != LH_OK) return st;
         if (edge) {
             ++*gained;

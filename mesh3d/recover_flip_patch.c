@@ -160,7 +160,7 @@ lh_status lh__t3_flip_patch(t3_ctx *c, size_t k)
         return LH_OK;
     lh_status st = patch_points(c, k, &np);
     int done = 1, big = 0;
-    lh__t3_try_begin(c);
+    lh__t3_try_begin(c, T3_REMOVALS);
     while (st == LH_OK && done && (st = patch_crossings(c, k, np, &ne, &big)) == LH_OK && ne &&
            !big)
         st = lh__t3_remove_first(c, ne, &done);
