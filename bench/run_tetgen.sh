@@ -14,7 +14,8 @@
 # points - input points (the count in the input file's header). The report gives medians
 # and the ratios lifthull / TetGen (at most 1.00: lifthull as fast or as small), the issue's
 # bars (-p no slower than TetGen, peak memory no more, on knot, bunny, fandisk, elephant and
-# armadillo) and TetGen's Steiner counts beside lifthull's.
+# armadillo) and TetGen's Steiner counts beside lifthull's, with -S and with -SM (TetGen then
+# keeps coplanar facets apart and their common edges, as lifthull does; run once, untimed).
 #
 # Inputs (default): DIR/surfaces/{knot,bunny,fandisk,elephant,armadillo}.off and
 # DIR/tetgen/{u,joint,eight,mpi,part}.off with DIR = ../shared/data beside the repository
@@ -110,12 +111,12 @@ count_of() {  # FILE: the first number of its header, or "-" when it is not ther
 
 # ---- one run: prints "STATUS SECONDS PEAK_KB CPU_SECONDS POINTS TETS" --------------------
 # STATUS: ok, fail (nonzero exit; its last output line in $work/msg.TOOL.INDEX), timeout.
-run_one() {  # TOOL (lifthull|tetgen) INPUT INDEX
-  local tool="$1" in="$2" idx="$3" d base rc=0 t0 t1 kb cpu status msg
+run_one() {  # TOOL (lifthull|tetgen) INPUT INDEX [MORE_SWITCHES]
+  local tool="$1" in="$2" idx="$3" more="${4:-}" d base rc=0 t0 t1 kb cpu status msg
   d="$(mktemp -d "$work/run.XXXXXX")"
   base="$(basename "$in")"
   cp "$in" "$d/$base"
-  local cmd=("$TETGEN" "-$switches" "$base")
+  local cmd=("$TETGEN" "-$switches$more" "$base")
   [ "$tool" = lifthull ] && cmd=("$LH" tetgen "-$switches" "$base")
   t0="$(date +%s%N)"
   (cd "$d" && /usr/bin/time -v -o "$d/time.txt" timeout --foreground -k 10 "$limit" "${cmd[@]}" >"$d/out.txt" 2>&1) || rc=$?
@@ -170,6 +171,17 @@ for ((r = 1; r <= rounds; r++)); do
     done
   done
 done
+# TetGen -M once per input: it then keeps coplanar facets apart, as lifthull always does
+# (without -M it merges them and drops their common edges), so its Steiner count is for
+# the same problem.
+declare -A mpts
+for i in "${!files[@]}"; do
+  echo "run_tetgen: tetgen -${switches}M ${names[$i]}" >&2
+  run_one tetgen "${files[$i]}" "m$i" M >"$work/result"
+  read -r s t k c p e <"$work/result"
+  mpts[$i]="$p"
+  [ "$s" = ok ] || mpts[$i]="-"
+done
 elapsed=$(($(date +%s) - start))
 
 # ---- the report ----------------------------------------------------------------------------
@@ -193,7 +205,7 @@ mem="$(awk '/MemTotal/ { printf "%.1f GiB", $2 / 1048576 }' /proc/meminfo 2>/dev
 
 # the tables first (they count the bars met), then the report around them
 tables="$work/tables.md"
-tbar=0 mbar=0 nbar=0 sbar=0 nsbar=0 fails=0
+tbar=0 mbar=0 nbar=0 sbar=0 nsbar=0 smbar=0 nmbar=0 fails=0
 {
   echo "| input | input points | lifthull s | TetGen s | time ratio | lifthull CPU s | TetGen CPU s | lifthull peak MiB | TetGen peak MiB | memory ratio | the issue's bars (time, memory) |"
   echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
@@ -226,8 +238,8 @@ tbar=0 mbar=0 nbar=0 sbar=0 nsbar=0 fails=0
   echo
   echo "### Output: points, Steiner points, tetrahedra"
   echo
-  echo "| input | input points | lifthull points | lifthull Steiner | lifthull tets | TetGen points | TetGen Steiner | TetGen tets | Steiner <= TetGen's | lifthull's run |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---|---|"
+  echo "| input | input points | lifthull points | lifthull Steiner | lifthull tets | TetGen points | TetGen Steiner | TetGen tets | Steiner <= TetGen's | TetGen -M Steiner | Steiner <= TetGen -M's | lifthull's run |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---|---|"
   for i in "${!files[@]}"; do
     np="$(input_points "${files[$i]}")"
     lp="${pts[lifthull.$i]}" tp="${pts[tetgen.$i]}"
@@ -237,6 +249,11 @@ tbar=0 mbar=0 nbar=0 sbar=0 nsbar=0 fails=0
       nsbar=$((nsbar + 1)) sok=FAIL
       if [[ "$lst" =~ ^-?[0-9]+$ ]] && [ "$lst" -le "$tst" ]; then sok=PASS sbar=$((sbar + 1)); fi
     fi
+    mst="$(steiner "${mpts[$i]}" "$np")" mok="-"
+    if [[ "$mst" =~ ^-?[0-9]+$ ]]; then
+      nmbar=$((nmbar + 1)) mok=FAIL
+      if [[ "$lst" =~ ^-?[0-9]+$ ]] && [ "$lst" -le "$mst" ]; then mok=PASS smbar=$((smbar + 1)); fi
+    fi
     how="ok"
     if [ "${stat[lifthull.$i]}" != ok ]; then
       how="${stat[lifthull.$i]}: \`$(cell "$(cat "$work/msg.lifthull.$i")")\`"
@@ -244,7 +261,7 @@ tbar=0 mbar=0 nbar=0 sbar=0 nsbar=0 fails=0
     if [ "${stat[tetgen.$i]}" != ok ]; then
       how="$how; TetGen ${stat[tetgen.$i]}: \`$(cell "$(cat "$work/msg.tetgen.$i")")\`"
     fi
-    echo "| ${names[$i]} | $np | $lp | $lst | ${tets[lifthull.$i]} | $tp | $tst | ${tets[tetgen.$i]} | $sok | $how |"
+    echo "| ${names[$i]} | $np | $lp | $lst | ${tets[lifthull.$i]} | $tp | $tst | ${tets[tetgen.$i]} | $sok | $mst | $mok | $how |"
   done
   echo
   echo "Per run (seconds, in round order):"
@@ -278,7 +295,8 @@ report="$work/report.md"
   echo
   echo "lifthull failed on $fails of ${#files[@]} inputs. The issue's bars on the $nbar of knot, bunny, fandisk,"
   echo "elephant and armadillo run here: time (lifthull no slower) met on $tbar, peak memory (no"
-  echo "more) on $mbar; Steiner points no more than TetGen's on $sbar of $nsbar inputs."
+  echo "more) on $mbar; Steiner points no more than TetGen's on $sbar of $nsbar inputs, and no"
+  echo "more than TetGen -M's (coplanar facets kept apart, as lifthull does) on $smbar of $nmbar."
   echo
   cat "$tables"
 } >"$report"
