@@ -148,6 +148,10 @@ typedef struct t3_ctx {
     lh_index *pmark, pgen;             /* per point: pgen when it is a point of the patch flips
                               are recovering (recover_flip.c) */
     size_t pmark_cap;
+    lh_index *sides; /* a cache of orient_3(facet triangle, point): 3 per slot (the
+                        triangle, the point, the sign; triangle -1: empty), sides_cap
+                        slots, a power of 2; points never move, so it stays valid */
+    size_t sides_cap;
     lh_index *xlock; /* edges of patches flips recovered, which flips keep: a hash set
                         of point pairs (p < q; -1: empty), xlock_cap slots, a power of 2 */
     size_t xlock_cap, xlock_count;

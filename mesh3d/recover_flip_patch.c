@@ -58,13 +58,29 @@ static lh_status patch_points(t3_ctx *c, size_t k, size_t *np)
 /* Whether edge p q, neither end a point of the patch, crosses one of patch k's
  * triangles: strictly through its plane, inside it or on its boundary (through a
  * diagonal between two of them). */
+/* Slots of the cache of orient_3(facet triangle, point) (t3_ctx.sides). */
+#define T3_SIDES (1u << 14)
+
+/* orient_3 of facet triangle `tri` and point p, through the cache: the search below
+ * asks it of the same points again after each removal, and an exact evaluation near
+ * degeneracy costs thousands of instructions. */
+static int tri_side(t3_ctx *c, lh_index tri, lh_index p)
+{
+    const lh_index *f = c->tri + 3 * (size_t)tri;
+    if (!c->sides) return lh__t3_orient4(c, f[0], f[1], f[2], p);
+    size_t h = ((size_t)tri * 0x9E3779B97F4A7C15u ^ (size_t)p * 0xC2B2AE3D27D4EB4Fu) >> 7;
+    lh_index *e = c->sides + 3 * (h & (c->sides_cap - 1));
+    if (e[0] != tri || e[1] != p)
+        e[0] = tri, e[1] = p, e[2] = lh__t3_orient4(c, f[0], f[1], f[2], p);
+    return (int)e[2];
+}
+
 static int crosses_patch(t3_ctx *c, size_t k, lh_index p, lh_index q)
 {
     if (c->pmark[p] == c->pgen || c->pmark[q] == c->pgen) return 0;
     for (lh_index a = c->patch_first[k]; a < c->patch_first[k + 1]; a++) {
         const lh_index *f = c->tri + 3 * (size_t)c->patch_tri[a];
-        int op = lh__t3_orient4(c, f[0], f[1], f[2], p),
-            oq = lh__t3_orient4(c, f[0], f[1], f[2], q);
+        int op = tri_side(c, c->patch_tri[a], p), oq = tri_side(c, c->patch_tri[a], q);
         if (op == 0 || op != -oq) continue;
         int s0 = lh__t3_orient4(c, p, q, f[0], f[1]), s1 = lh__t3_orient4(c, p, q, f[1], f[2]);
         int s2 = lh__t3_orient4(c, p, q, f[2], f[0]);
@@ -158,6 +174,11 @@ lh_status lh__t3_flip_patch(t3_ctx *c, size_t k)
     size_t np, ne = 0;
     if (c->patch_first[k + 1] - c->patch_first[k] > T3_PATCH_TRIS || patch_plain(c, k))
         return LH_OK;
+    if (!c->sides) { /* best effort: without it, each sign is computed afresh */
+        c->sides = lh__alloc(&c->al, 3 * T3_SIDES * sizeof(lh_index));
+        if (c->sides) memset(c->sides, 0xff, 3 * T3_SIDES * sizeof(lh_index));
+        c->sides_cap = T3_SIDES;
+    }
     lh_status st = patch_points(c, k, &np);
     int done = 1, big = 0;
     lh__t3_try_begin(c, T3_REMOVALS);
