@@ -16,7 +16,9 @@
  *     1998, sec. 3.2: splits near a small input angle stop);
  *   - when every subsegment is an edge, a facet that is not a union of mesh faces on
  *     its points (recover_faces.c) has its longest uncovered subsegment split, or,
- *     when its faces stop short inside it, a point put in it.
+ *     when its faces stop short inside it, a point put in it;
+ *   - with -Y (no Steiner point on the boundary), a point inside the tet holding
+ *     such a split point goes in instead (recover_inside.c).
  * Splitting alone gives a conforming Delaunay tetrahedralization (Murphy, Mount, Gable
  * 2001; Cohen-Steiner, Colin de Verdière, Yvinec 2004 prove such splitting ends for
  * any PLC; this version does not protect every acute facet angle, and caps Steiner
