@@ -64,7 +64,8 @@ vg="valgrind -q --error-exitcode=1 --leak-check=full"
 $lh points 200 -d 3 --integer 4 -o "$vgdir/p3.txt" || fail valgrind-setup
 $lh points 200 -d 2 --exact-sphere -o "$vgdir/p2.txt" || fail valgrind-setup
 $lh delaunay "$vgdir/p3.txt" -o "$vgdir/t3.txt" || fail valgrind-setup # for `check`: the lanes run in any order
-cp tests/data/triangle/A.poly "$vgdir/" || fail valgrind-setup
+cp tests/data/triangle/A.poly tests/data/mesh3d/u.off tests/data/mesh3d/schonhardt.off "$vgdir/" ||
+  fail valgrind-setup
 {
   # the slowest first (each 15-35 s under valgrind), so that the two lanes end together
   echo "$vg $t/test_hull hull_is_exactly_convex_and_closed general_position_hull_equals_delaunay_hull unit_cube_and_bad_input"
@@ -75,7 +76,9 @@ cp tests/data/triangle/A.poly "$vgdir/" || fail valgrind-setup
            test_io_rings test_io_pslg_memory; do echo "$vg $t/$x"; done
   echo "$vg $t/test_trimesh cdt_of_triangle_files_is_exactly_valid quality_bound_met_but_at_small_input_angles"
   echo "$vg $t/test_trimesh_errors bad_input_gets_its_error_and_line the_check_rejects_what_is_not_a_cdt"
-  for x in delaunay read hull check cells query poly trimesh; do echo "$vg $t/fuzz_${x}_replay fuzz/corpus/$x/*"; done
+  for x in delaunay read hull check cells query poly trimesh plc_read plc_binary tetrahedralize; do
+    echo "$vg $t/fuzz_${x}_replay fuzz/corpus/$x/*"
+  done
   echo "$vg $lh delaunay $vgdir/p3.txt -o $vgdir/t3v.txt"
   echo "$vg $lh check $vgdir/p3.txt $vgdir/t3.txt"
   echo "$vg $lh hull $vgdir/p3.txt"
@@ -83,6 +86,8 @@ cp tests/data/triangle/A.poly "$vgdir/" || fail valgrind-setup
   echo "$vg $lh qdelaunay i Qt TI $vgdir/p2.txt"
   echo "$vg $lh triangle -pq30Q $vgdir/A.poly"
   echo "$vg $lh mesh $vgdir/A.poly --min-angle 25 --smooth 2 -o $vgdir/A.svg"
+  echo "$vg $lh tetgen -pQC $vgdir/u.off"
+  echo "$vg $lh tetgen -pYQC $vgdir/schonhardt.off"
 } > "$vgdir/commands"
 # two at a time; a command's output is shown only when it fails
 if xargs -d '\n' -P "$jobs" -I{} bash -c 'log="$(mktemp)"; if {} >"$log" 2>&1; then rm -f "$log"; else
