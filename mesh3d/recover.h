@@ -279,6 +279,8 @@ lh_status lh__t3_candidate(t3_ctx *c, lh_index t, lh_index p, lh_index q, size_t
 lh_status lh__t3_remove_first(t3_ctx *c, size_t ne, int *done);
 /* Locks edge p q for the rest of the round's flips. */
 lh_status lh__t3_lock(t3_ctx *c, lh_index p, lh_index q);
+/* Whether edge p q is locked: a subsegment, or an edge of a patch flips recovered. */
+int lh__t3_locked(const t3_ctx *c, lh_index p, lh_index q);
 
 /* recover_flip_patch.c: recovers patch k by flips, when every subsegment is an edge. */
 lh_status lh__t3_flip_patch(t3_ctx *c, size_t k);

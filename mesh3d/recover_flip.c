@@ -234,7 +234,7 @@ lh_status lh__t3_lock(t3_ctx *c, lh_index p, lh_index q)
     return LH_OK;
 }
 
-static int locked(const t3_ctx *c, lh_index p, lh_index q)
+int lh__t3_locked(const t3_ctx *c, lh_index p, lh_index q)
 {
     if (p > q) {
         lh_index x = p;
@@ -516,7 +516,7 @@ static lh_status remove_edge_at(t3_ctx *c, lh_index t, lh_index p, lh_index q, i
 {
     ring g;
     *done = 0;
-    if (locked(c, p, q) || c->flip_budget == 0) return LH_OK;
+    if (lh__t3_locked(c, p, q) || c->flip_budget == 0) return LH_OK;
     c->flip_budget--;
     if (before(c, q, p)) {
         lh_index x = p;

@@ -92,7 +92,8 @@ static int crosses_patch(t3_ctx *c, size_t k, lh_index p, lh_index q)
 /* The edges crossing patch k (its np points in c->vbuf) as candidates in c->fbuf, *ne
  * of them: a search from the tets around its points across the faces of tets that
  * hold such an edge; *big when it meets more than T3_PATCH_TETS tets (what it found
- * would depend on the order it went in). */
+ * would depend on the order it went in) or a locked edge crosses k (facets that
+ * intersect: no flip takes it away). */
 static lh_status patch_crossings(t3_ctx *c, size_t k, size_t np, size_t *ne, int *big)
 {
     size_t m = 0;
@@ -118,6 +119,7 @@ static lh_status patch_crossings(t3_ctx *c, size_t k, size_t np, size_t *ne, int
                 lh_index p = c->tv[4 * (size_t)t + x], q = c->tv[4 * (size_t)t + y];
                 if (!crosses_patch(c, k, p, q)) continue;
                 hit = 1;
+                *big |= lh__t3_locked(c, p, q); /* never removed: flips cannot recover k */
                 lh_status st = lh__t3_candidate(c, t, p, q, ne);
                 if (st != LH_OK) return st;
             }
@@ -129,7 +131,7 @@ static lh_status patch_crossings(t3_ctx *c, size_t k, size_t np, size_t *ne, int
             c->tmark[u] = gen;
             c->ebuf[w++] = u;
         }
-        *big = w > T3_PATCH_TETS;
+        *big |= w > T3_PATCH_TETS;
     }
     return LH_OK;
 }
