@@ -260,7 +260,7 @@ int lh__t3_mesh_side(t3_ctx *c, size_t t, int j, const double *q);
 lh_index lh__t3_mesh_walk(t3_ctx *c, lh_index t0, const double *q);
 
 /* recover_flip.c: recovers by flips the subsegments that are not edges of the mesh
- * and, when every one is, the missing facet triangles (Si 2015, sec. 3; Shewchuk,
+ * and, when every one is, the facets (recover_flip_patch.c) (Si 2015, sec. 3; Shewchuk,
  * "Updating and constructing constrained Delaunay and constrained regular
  * triangulations by flips", SoCG 2003); then compacts the mesh and rebuilds the stars. */
 lh_status lh__t3_flip(t3_ctx *c);

@@ -55,9 +55,6 @@ static lh_status patch_points(t3_ctx *c, size_t k, size_t *np)
     return st;
 }
 
-/* Whether edge p q, neither end a point of the patch, crosses one of patch k's
- * triangles: strictly through its plane, inside it or on its boundary (through a
- * diagonal between two of them). */
 /* Slots of the cache of orient_3(facet triangle, point) (t3_ctx.sides). */
 #define T3_SIDES (1u << 14)
 
@@ -75,6 +72,9 @@ static int tri_side(t3_ctx *c, lh_index tri, lh_index p)
     return (int)e[2];
 }
 
+/* Whether edge p q, neither end a point of the patch, crosses one of patch k's
+ * triangles: strictly through its plane, inside it or on its boundary (through a
+ * diagonal between two of them). */
 static int crosses_patch(t3_ctx *c, size_t k, lh_index p, lh_index q)
 {
     if (c->pmark[p] == c->pgen || c->pmark[q] == c->pgen) return 0;
