@@ -21,8 +21,9 @@ lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
     return lh_coords_validate(d, n, xyz, NULL);
 }
 
-lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
-                       const double *xyz, lh_index *dup, const lh_options *opt)
+/* Everything of lh__eng_init but the predicate context. */
+static void setup(lh__eng *e, const lh_allocator *alloc, int d, size_t n, const double *xyz,
+                  lh_index *dup, const lh_options *opt)
 {
     memset(e, 0, sizeof *e);
     lh__allocator_init(&e->alloc, alloc);
@@ -49,7 +50,21 @@ lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
     e->threads = opt ? lh__threads(opt->threads) : 1;
     e->progress = opt ? opt->progress : NULL;
     e->progress_user = opt ? opt->progress_user : NULL;
+}
+
+lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
+                       const double *xyz, lh_index *dup, const lh_options *opt)
+{
+    setup(e, alloc, d, n, xyz, dup, opt);
     return lh_pred_create(&e->alloc, &e->pred);
+}
+
+void lh__eng_init_shared(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
+                         const double *xyz, lh_index *dup, lh_pred *pred)
+{
+    setup(e, alloc, d, n, xyz, dup, NULL);
+    e->pred = pred;
+    e->pred_shared = 1;
 }
 
 void lh__eng_release(lh__eng *e)
@@ -57,7 +72,7 @@ void lh__eng_release(lh__eng *e)
     lh__tds_release(&e->tds);
     lh__free(&e->alloc, e->order);
     lh__free(&e->alloc, e->site_copy);
-    lh_pred_free(e->pred);
+    if (!e->pred_shared) lh_pred_free(e->pred);
     e->order = NULL;
     e->site = e->site_copy = NULL;
     e->pred = NULL;

@@ -94,6 +94,7 @@ typedef struct lh__eng {
     const double *xyz; /* n*d sites, the caller's */
     lh_index *dup;     /* n, the caller's: filled with the site each one merges into */
     lh_pred *pred;
+    int pred_shared;   /* 1: pred is the caller's (lh__eng_init_shared), not freed here */
     lh__finite_conflict_fn finite_conflict;
     void *user;
     lh__insert_fn insert; /* a loop with the caller's conflict test inline, or NULL:
@@ -179,6 +180,12 @@ lh_status lh__eng_check_args(int d, int lo, int hi, size_t n, const double *xyz,
  * seed comes from opt (NULL: the default). */
 lh_status lh__eng_init(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
                        const double *xyz, lh_index *dup, const lh_options *opt);
+/* As lh__eng_init with the default options, but e works with the caller's predicate
+ * context instead of a new one: for the engines a computation builds one per face
+ * (hull/faces.c), so that each costs no context of its own. pred must outlive e and
+ * not be used by another thread meanwhile; its counters gather e's work. */
+void lh__eng_init_shared(lh__eng *e, const lh_allocator *alloc, int d, size_t n,
+                         const double *xyz, lh_index *dup, lh_pred *pred);
 void lh__eng_release(lh__eng *e);
 /* order.c: duplicates merged into e->dup, insertion order in e->order. */
 lh_status lh__eng_order(lh__eng *e);

@@ -56,7 +56,8 @@ static int join_coplanar(lh__eng *e, lh_index *parent)
     return any;
 }
 
-static lh_status corners(const lh_allocator *a, int d, size_t n, const double *xyz, uint8_t *ext);
+static lh_status corners(const lh_allocator *a, lh_pred *pred, int d, size_t n, const double *xyz,
+                         uint8_t *ext);
 
 /* The first coordinate whose removal leaves the facet v[1..d] of an infinite cell
  * a (d-1)-simplex of nonzero volume (one exists: the facet is not flat). */
@@ -131,7 +132,7 @@ static lh_status face_corners(lh__eng *e, const lh_index *cell, size_t count, lh
     lh_status st = gather(e, cell, count, f, seen, &fc);
     uint8_t *sub = st == LH_OK ? lh__alloc(&e->alloc, fc.m + 1) : NULL;
     if (st == LH_OK && !sub) st = LH_ERR_NOMEM;
-    if (st == LH_OK) st = corners(&e->alloc, e->d - 1, fc.m, fc.x, sub);
+    if (st == LH_OK) st = corners(&e->alloc, e->pred, e->d - 1, fc.m, fc.x, sub);
     for (size_t i = 0; st == LH_OK && i < fc.m; i++)
         if (!sub[i]) ext[fc.list[i]] = 0;
     lh__free(&e->alloc, sub);
@@ -187,7 +188,8 @@ lh_status lh__eng_hull_corners(lh__eng *e, uint8_t *ext, int *flat)
 
 /* ext[i] = whether site i of the n (spanning R^d) is a corner of their hull; of
  * duplicates, only the one the others merge into can be. */
-static lh_status corners(const lh_allocator *a, int d, size_t n, const double *xyz, uint8_t *ext)
+static lh_status corners(const lh_allocator *a, lh_pred *pred, int d, size_t n, const double *xyz,
+                         uint8_t *ext)
 {
     if (d == 1) {
         size_t lo = 0, hi = 0;
@@ -202,9 +204,9 @@ static lh_status corners(const lh_allocator *a, int d, size_t n, const double *x
     lh_index *dup = lh__alloc(a, (n + 1) * sizeof *dup);
     if (!dup) return LH_ERR_NOMEM;
     lh__eng e;
-    lh_status st = lh__eng_init(&e, a, d, n, xyz, dup, NULL);
+    lh__eng_init_shared(&e, a, d, n, xyz, dup, pred);
     int affdim = -1, flat = 0;
-    if (st == LH_OK) st = lh__eng_build(&e, lh__hull_cells_hint(n), &affdim);
+    lh_status st = lh__eng_build(&e, lh__hull_cells_hint(n), &affdim);
     if (st == LH_OK) st = lh__eng_hull_corners(&e, ext, &flat);
     lh__eng_release(&e);
     lh__free(a, dup);
@@ -299,9 +301,9 @@ static lh_status edges_of(const lh_allocator *a, lh_pred *pred, int d, size_t n,
     lh_index *dup = lh__alloc(a, (n + 1) * sizeof *dup);
     if (!dup) return LH_ERR_NOMEM;
     lh__eng e;
-    lh_status st = lh__eng_init(&e, a, d, n, xyz, dup, NULL);
+    lh__eng_init_shared(&e, a, d, n, xyz, dup, pred);
     int affdim = -1;
-    if (st == LH_OK) st = lh__eng_build(&e, lh__hull_cells_hint(n), &affdim);
+    lh_status st = lh__eng_build(&e, lh__hull_cells_hint(n), &affdim);
     lh_index *parent = st == LH_OK ? lh__alloc(a, ((size_t)e.tds.top + 1) * sizeof *parent) : NULL;
     if (st == LH_OK && !parent) st = LH_ERR_NOMEM;
     if (st == LH_OK) {
