@@ -1,7 +1,7 @@
 // oracle_cgal_tritri: lh_plc_intersections on two-triangle PLCs against CGAL's exact
 // triangle-triangle intersection (Exact_predicates_exact_constructions_kernel).
 //
-//   oracle_cgal_tritri [CASES]
+//   oracle_cgal_tritri [CASES]     (default 30000 a lattice, times LH_TEST_SCALE)
 //
 // Triangles get corners on the lattices {0..M-1}^3 (M = 3, 4, 6), so corners, edges and
 // planes coincide often; the second triangle copies 0, 1 or 2 of the first's corners.
@@ -68,7 +68,10 @@ static int lifthull(const double A[3][3], const double B[3][3])
 
 int main(int argc, char **argv)
 {
-    const long cases = argc > 1 ? std::atol(argv[1]) : 30000;
+    // LH_TEST_SCALE (the sanitizer stage's 0.2) scales the default count
+    const char *scale = std::getenv("LH_TEST_SCALE");
+    const double f = scale && std::atof(scale) > 0 ? std::atof(scale) : 1;
+    const long cases = argc > 1 ? std::atol(argv[1]) : (long)(30000 * f) + 1;
     long bad = 0;
     for (int M : {3, 4, 6}) {
         long n[4] = {0, 0, 0, 0}, yes[4] = {0, 0, 0, 0};
