@@ -16,9 +16,9 @@
  *     1998, sec. 3.2: splits near a small input angle stop);
  *   - when every subsegment is an edge, a facet that is not a union of mesh faces on
  *     its points (recover_faces.c) has its longest uncovered subsegment split, or,
- *     when its faces stop short inside it, a point put in it;
- *   - with -Y (no Steiner point on the boundary), a point inside the tet holding
- *     such a split point goes in instead (recover_inside.c).
+ *     when its faces stop short inside it, a point put in it.
+ * With -Y (no Steiner point on the boundary) the split points are then taken off the
+ * boundary again, each replaced by points inside (recover_suppress.c).
  * Splitting alone gives a conforming Delaunay tetrahedralization (Murphy, Mount, Gable
  * 2001; Cohen-Steiner, Colin de Verdière, Yvinec 2004 prove such splitting ends for
  * any PLC; this version does not protect every acute facet angle, and caps Steiner
@@ -48,8 +48,7 @@ typedef struct t3_seg {
 } t3_seg;
 
 /* A point of a chain: point p at parameter t of segment seg (a + t (b - a)); in the
- * queue of new points, seg < 0 means a point inside patch -1 - seg, or, for
- * -1 - patch_count (lh__t3_inside_seg), a point off every constraint. */
+ * queue of new points, seg < 0 means a point inside patch -1 - seg. */
 typedef struct t3_node {
     lh_index seg, p;
     double t;
@@ -138,6 +137,8 @@ typedef struct t3_ctx {
     lh_index *jbuf; /* the journal (tets.c) */
     size_t jlen, jcap;
     lh_index made[T3_FLIP_TETS]; /* the tets the last replacement made */
+    lh_index *rbuf;              /* scratch of a replacement: its outer faces and slots */
+    size_t rcap;
     int made_count;
     size_t flip_budget;         /* edge removals the current constraint may still try */
     lh_index gone[2 * T3_GONE]; /* the edges the current constraint's removals took out,
@@ -171,12 +172,6 @@ static inline void lh__t3_sort3(lh_index *f)
             }
 }
 
-/* The queue's mark of a point off every constraint (t3_node). */
-static inline lh_index lh__t3_inside_seg(const t3_ctx *c)
-{
-    return -1 - (lh_index)c->patch_count;
-}
-
 /* recover.c: err->message = "LINE: " (when line > 0) + the formatted text; returns st. */
 lh_status lh__t3_say(t3_ctx *c, lh_status st, size_t line, const char *fmt, ...)
 #if defined(__GNUC__) || defined(__clang__)
@@ -208,6 +203,8 @@ lh_status lh__t3_split(t3_ctx *c, lh_index s, size_t i);
 /* The chain of segment s as point indices: a, its nodes' points in order, b; written
  * into buf as far as cap allows; returns the chain's length. */
 size_t lh__t3_chain(const t3_ctx *c, lh_index s, lh_index *buf, size_t cap);
+/* Room for m more points in c->xyz. */
+lh_status lh__t3_xyz_room(t3_ctx *c, size_t m);
 /* Inserts the queued split points, merges them into the chains, rebuilds the stars. */
 lh_status lh__t3_commit(t3_ctx *c);
 /* Whether a point of segment s's chain changed since round r. */
@@ -215,10 +212,11 @@ int lh__t3_seg_changed(const t3_ctx *c, size_t s, uint32_t r);
 /* Sorts the chains' nodes (by segment, then parameter) and rebuilds node_first. */
 lh_status lh__t3_chains_sort(t3_ctx *c);
 
-/* recover_inside.c: queues a new point strictly inside the tet holding x (found by a
- * walk from point near's tet) and on no constraint, for -Y; LH_ERR_STEINER_LIMIT when
- * there is none. */
-lh_status lh__t3_queue_inside(t3_ctx *c, lh_index near, const double *x);
+/* recover_suppress.c: -Y, once every constraint is in the mesh: each Steiner point on
+ * a segment or inside a facet taken off the boundary (its star refilled from new
+ * points inside); LH_ERR_STEINER_LIMIT naming the first that cannot be. Compacts the
+ * mesh and rebuilds the stars. */
+lh_status lh__t3_suppress(t3_ctx *c);
 
 /* Queues new point x (p < 0) or existing point p for segment seg at parameter t, or
  * (seg < 0) inside patch -1 - seg. */
@@ -246,7 +244,8 @@ lh_index lh__t3_mesh_mark(t3_ctx *c);
 lh_status lh__t3_mesh_star(t3_ctx *c, lh_index v, size_t *count);
 /* Replaces the nold tets old by the nnew tets nv (any orientation; made positive), which
  * the caller has checked fill the same region; *ok = 0 and nothing changed when one of
- * them is flat. */
+ * them is flat. c->made lists the new tets when there are at most T3_FLIP_TETS (a flip's),
+ * else none. */
 lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index (*nv)[4], int nnew,
                               int *ok);
 /* Undoes the journaled replacements back to journal length mark. */

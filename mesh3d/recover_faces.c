@@ -381,7 +381,6 @@ static lh_status split(t3_ctx *c, size_t k, const patch_scan *ps, const verdict 
         for (int a = 0; a < 3; a++)
             x[a] = c->xyz[3 * (size_t)f[0] + a] / 3 + c->xyz[3 * (size_t)f[1] + a] / 3 +
                    c->xyz[3 * (size_t)f[2] + a] / 3; /* no overflow */
-        if (!c->opt->boundary_steiner) return lh__t3_queue_inside(c, f[0], x); /* -Y */
         return lh__t3_queue(c, -1 - (lh_index)k, 0, -1, x);
     }
     if (v->any_need) return lh__t3_split(c, v->any_need->seg, (size_t)v->any_need->i);

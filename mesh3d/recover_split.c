@@ -143,7 +143,6 @@ lh_status lh__t3_split(t3_ctx *c, lh_index s, size_t i)
         double dj = b[j] - a[j];
         x[j] = isfinite(dj) ? a[j] + t * dj : (1 - t) * a[j] + t * b[j];
     }
-    if (!c->opt->boundary_steiner) return lh__t3_queue_inside(c, p, x); /* -Y */
     int same_p = 1, same_q = 1, outside = 0;
     for (int j = 0; j < 3; j++) {
         double u = pt(c, p)[j], w = pt(c, q)[j];
@@ -169,8 +168,7 @@ static int cmp_node(const void *ctx, lh_index i, lh_index j)
     return x->p < y->p ? -1 : x->p > y->p;
 }
 
-/* Room for m more points in c->xyz. */
-static lh_status xyz_room(t3_ctx *c, size_t m)
+lh_status lh__t3_xyz_room(t3_ctx *c, size_t m)
 {
     if (c->n + m <= c->n_cap) return LH_OK;
     size_t cap = 2 * (c->n + m);
@@ -313,7 +311,7 @@ static lh_status mark_changed(t3_ctx *c, size_t first_new, const t3_node *nodes,
 lh_status lh__t3_commit(t3_ctx *c)
 {
     size_t m = c->new_count, fresh = 0;
-    lh_status st = xyz_room(c, m);
+    lh_status st = lh__t3_xyz_room(c, m);
     if (st == LH_OK) st = node_room(c, &c->node, c->node_count, &c->node_cap, m);
     if (st == LH_OK) st = node_room(c, &c->pnode, c->pnode_count, &c->pnode_cap, m);
     if (st != LH_OK) return st;
@@ -335,7 +333,7 @@ lh_status lh__t3_commit(t3_ctx *c)
         nd.p = c->dup[nd.p];
         if (nd.seg >= 0) {
             c->node[c->node_count++] = nd;
-        } else if (nd.seg != lh__t3_inside_seg(c)) {
+        } else {
             nd.seg = -1 - nd.seg;
             c->pnode[c->pnode_count++] = nd;
         }

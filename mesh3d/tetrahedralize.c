@@ -21,7 +21,7 @@ static void ctx_free(t3_ctx *c)
                       c->cover,    c->cover_first, c->cover_len, c->tv,          c->tn,
                       c->vtet,     c->tmark,       c->sbuf,      c->lock,        c->lock_first,
                       c->jbuf,     c->todo,        c->seg_order, c->patch_order,
-                      c->pmark,    c->xlock,       c->sides};
+                      c->pmark,    c->xlock,       c->sides,     c->rbuf};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
     lh_tri_free(c->dt);
     lh_pred_free(c->pred);

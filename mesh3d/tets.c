@@ -33,7 +33,8 @@ static lh_status room(t3_ctx *c, size_t need)
     }
     if (c->n > c->vtet_cap) {
         size_t cap = 2 * c->n + 16;
-        if ((st = grow(c, &c->vtet, cap, 0, 1)) != LH_OK) return st;
+        if ((st = grow(c, &c->vtet, cap, c->vtet_cap, 1)) != LH_OK) return st;
+        for (size_t v = c->vtet_cap; v < cap; v++) c->vtet[v] = -1;
         c->vtet_cap = cap;
     }
     return LH_OK;
@@ -114,6 +115,9 @@ typedef struct outer_face {
     int back;
 } outer_face;
 
+/* lh_index slots an outer_face takes in c->rbuf, rounded up. */
+#define OUTER ((sizeof(outer_face) + sizeof(lh_index) - 1) / sizeof(lh_index))
+
 /* Journal entry of a replacement, pushed on c->jbuf: each old tet (slot, points,
  * neighbours: 9), each outer tet's pointer back (tet, slot, value: 3), then the
  * counts (old tets, pointers, tets in the mesh before: 3). */
@@ -178,8 +182,10 @@ lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index
     }
     size_t need = c->tet_count + (size_t)(nnew > nold ? nnew - nold : 0);
     lh_status st = room(c, need);
+    if (st == LH_OK) st = lh__t3_room(c, &c->rbuf, &c->rcap, OUTER * 4 * (size_t)nold + (size_t)nnew);
     if (st != LH_OK) return st;
-    outer_face of[4 * T3_FLIP_TETS];
+    outer_face *of = (outer_face *)(void *)c->rbuf;
+    lh_index *slot = c->rbuf + OUTER * 4 * (size_t)nold;
     int nof = 0;
     for (int i = 0; i < nold; i++)
         for (int j = 0; j < 4; j++) {
@@ -194,10 +200,9 @@ lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index
                 if (c->tn[4 * (size_t)u + k] == old[i]) o->back = k;
         }
     if (c->journal && (st = journal(c, old, nold, of, nof)) != LH_OK) return st;
-    lh_index slot[T3_FLIP_TETS];
     for (int i = 0; i < nnew; i++) slot[i] = i < nold ? old[i] : (lh_index)c->tet_count++;
-    memcpy(c->made, slot, (size_t)nnew * sizeof(lh_index));
-    c->made_count = nnew;
+    c->made_count = nnew <= T3_FLIP_TETS ? nnew : 0;
+    memcpy(c->made, slot, (size_t)c->made_count * sizeof(lh_index));
     for (int i = nnew; i < nold; i++) c->tv[4 * (size_t)old[i]] = -1; /* dead */
     for (int i = 0; i < nnew; i++) {
         const size_t t = (size_t)slot[i];

@@ -165,15 +165,16 @@ static double *tet_keys(const lh_tetmesh *m)
 
 LH_TEST(output_does_not_depend_on_order)
 {
-    /* the last three with -Y: their interior Steiner points too */
+    /* the last four with -Y: the points that take Steiner points off the boundary too */
     static const char *const files[] = {
         "mesh3d/u.off",          "mesh3d/schonhardt.off", "mesh3d/double-torus-example.off",
         "mesh3d/hole.off",       "mesh3d/mpi.off",        "mesh3d/part.off",
-        "mesh3d/schonhardt.off", "tetgen/cubes.off",      "mesh3d/part.off"};
+        "mesh3d/schonhardt.off", "tetgen/cubes.off",      "mesh3d/part.off",
+        "mesh3d/pipe.off"};
     for (size_t i = 0; i < LH_COUNT(files); i++) {
         lh_tetmesh_options o;
         lh_tetmesh_options_default(&o);
-        o.boundary_steiner = i + 3 < LH_COUNT(files);
+        o.boundary_steiner = i + 4 < LH_COUNT(files);
         lh_plc g, h;
         LH_ASSERT_TRUE(read_plc(files[i], &g));
         lh_index *perm = malloc(g.n * sizeof(lh_index));
@@ -301,9 +302,10 @@ LH_TEST(steiner_limits)
     lh_plc_free(&g);
 }
 
-/* -Y: no Steiner point on a segment or facet; interior ones where flips need them
- * (the most each model needs today; beside it TetGen -pY's), none left where carving
- * took them away (u.off: its points all lie in the hull's part outside the domain). */
+/* -Y: no Steiner point on a segment or facet: those splitting put there are taken off
+ * the boundary again (each sector of its star gets one inside; those outside the
+ * domain are carved away). The most each model needs today, beside TetGen -pY's;
+ * pipe.off and joint.off are the models TetGen's -Y needs most for. */
 LH_TEST(boundary_steiner_off_puts_points_inside)
 {
     static const model models[] = {
@@ -311,13 +313,15 @@ LH_TEST(boundary_steiner_off_puts_points_inside)
         {"mesh3d/step.off", 0, 0},
         {"mesh3d/slit-1.smesh", 0, 0},
         {"mesh3d/hole.off", 0, 0},
-        {"mesh3d/u.off", 0, 0},
+        {"mesh3d/u.off", 1, 0},
         {"mesh3d/schonhardt.off", 1, 1},
         {"tetgen/cubes.off", 4, 2},
         {"mesh3d/blob-closed.off", 1, 0},
-        {"mesh3d/eight.off", 0, 0},
-        {"mesh3d/part.off", 1, 1},
+        {"mesh3d/eight.off", 2, 0},
+        {"mesh3d/part.off", 6, 1},
         {"mesh3d/mpi.off", 1, 0},
+        {"mesh3d/pipe.off", 34, 18},
+        {"mesh3d/joint.off", 160, 3},
     };
     for (size_t i = 0; i < LH_COUNT(models); i++) {
         lh_plc g;
