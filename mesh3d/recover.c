@@ -114,17 +114,15 @@ static void forget(t3_ctx *c)
     c->cover_count = 0;
 }
 
-/* -Y: the boundary Steiner points taken off the boundary (recover_suppress.c), then
- * every constraint checked again in the mesh that made. */
-static lh_status suppressed(t3_ctx *c)
+lh_status lh__t3_recover_suppress(t3_ctx *c, const unsigned char *out, size_t *taken)
 {
-    lh_status st = lh__t3_suppress(c);
-    if (st != LH_OK) return st;
+    lh_status st = lh__t3_suppress(c, c->opt->boundary_steiner == 0, out, taken);
+    if (st != LH_OK || *taken == 0) return st;
     forget(c);
     st = split_edges(c);
     if (st == LH_OK && c->new_count == 0) st = split_faces(c);
     if (st == LH_OK && c->new_count)
-        st = lh__t3_say(c, LH_ERR_INTERNAL, 0, "-Y: a constraint lost in moving Steiner points");
+        st = lh__t3_say(c, LH_ERR_INTERNAL, 0, "a constraint lost in taking Steiner points off");
     return st;
 }
 
@@ -141,7 +139,7 @@ lh_status lh__t3_recover(t3_ctx *c)
             if (st == LH_OK && c->new_count == 0) st = split_faces(c);
         }
         if (st != LH_OK) return st;
-        if (c->new_count == 0) return c->opt->boundary_steiner ? LH_OK : suppressed(c);
+        if (c->new_count == 0) return LH_OK;
         if (c->steiner + c->new_count > budget(c))
             return lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
                               "boundary recovery needs more than %zu Steiner points (-S)",

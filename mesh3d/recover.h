@@ -212,11 +212,15 @@ int lh__t3_seg_changed(const t3_ctx *c, size_t s, uint32_t r);
 /* Sorts the chains' nodes (by segment, then parameter) and rebuilds node_first. */
 lh_status lh__t3_chains_sort(t3_ctx *c);
 
-/* recover_suppress.c: -Y, once every constraint is in the mesh: each Steiner point on
- * a segment or inside a facet taken off the boundary (its star refilled from new
- * points inside); LH_ERR_STEINER_LIMIT naming the first that cannot be. Compacts the
- * mesh and rebuilds the stars. */
-lh_status lh__t3_suppress(t3_ctx *c);
+/* recover_suppress.c: once every constraint is in the mesh, each Steiner point on a
+ * segment or inside a facet taken off the boundary, its star refilled from its own
+ * points or new points inside: in the sectors outside the domain (carved: out[t] for
+ * tet t, or NULL) always, in the domain when allow_new (-Y). With allow_new,
+ * LH_ERR_STEINER_LIMIT naming the first that cannot be. *taken: the points taken off;
+ * when any, compacts the mesh and rebuilds the stars. */
+lh_status lh__t3_suppress(t3_ctx *c, int allow_new, const unsigned char *out, size_t *taken);
+/* recover.c: lh__t3_suppress with -Y's allow_new, then every constraint checked again. */
+lh_status lh__t3_recover_suppress(t3_ctx *c, const unsigned char *out, size_t *taken);
 
 /* Queues new point x (p < 0) or existing point p for segment seg at parameter t, or
  * (seg < 0) inside patch -1 - seg. */
@@ -244,8 +248,9 @@ lh_index lh__t3_mesh_mark(t3_ctx *c);
 lh_status lh__t3_mesh_star(t3_ctx *c, lh_index v, size_t *count);
 /* Replaces the nold tets old by the nnew tets nv (any orientation; made positive), which
  * the caller has checked fill the same region; *ok = 0 and nothing changed when one of
- * them is flat. c->made lists the new tets when there are at most T3_FLIP_TETS (a flip's),
- * else none. */
+ * them is flat. New tet i takes old[i]'s slot when i < nold, else slot tet_count + i -
+ * nold (tet_count before the call); old tets beyond nnew die. c->made lists the new tets
+ * when there are at most T3_FLIP_TETS (a flip's), else none. */
 lh_status lh__t3_mesh_replace(t3_ctx *c, const lh_index *old, int nold, lh_index (*nv)[4], int nnew,
                               int *ok);
 /* Undoes the journaled replacements back to journal length mark. */
@@ -265,6 +270,15 @@ lh_index lh__t3_mesh_walk(t3_ctx *c, lh_index t0, const double *q);
 lh_status lh__t3_flip(t3_ctx *c);
 /* Exact orientation of the four points. */
 int lh__t3_orient4(t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e);
+/* A tet's shape in floating point, for choosing among valid tets only (never for
+ * validity): its volume over the cube of the root of its squared edges' sum (0 when
+ * flat); the edge vectors scaled by a power of two first, so that the figure is the
+ * same at every scale. */
+double lh__t3_shape(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e);
+/* Flips and refills make no tet flatter than this shape: a few ulps of a rounded
+ * Steiner point would make such a tet out of points that lie on one facet. It only
+ * steers choices; the mesh is valid either way. */
+#define T3_SLIVER 0x1p-40
 /* Edge removals a constraint's try may make (recover_flip.c). */
 #define T3_REMOVALS 300
 /* Starts a constraint's try: an empty journal, a budget of edge removals, no edges

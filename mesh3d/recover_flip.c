@@ -41,16 +41,7 @@ int lh__t3_orient4(t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
     return lh_orient(c->pred, 3, p);
 }
 
-/* Flips make no tet flatter than this shape (below): a few ulps of a rounded Steiner
- * point would make such a tet out of points that lie on one facet. It only steers the
- * choice of flips; the mesh is valid either way. */
-#define T3_SLIVER 0x1p-40
-
-/* A tet's shape in floating point, for choosing among valid flips only (never for
- * validity): six times its volume over the cube of the root of its squared edges'
- * sum; the edge vectors scaled by a power of two first, so that the figure is the
- * same at every scale. */
-static double shape(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
+double lh__t3_shape(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
 {
     const double *p[4] = {pt(c, a), pt(c, b), pt(c, d), pt(c, e)};
     double u[3][3], big = 0, l = 0;
@@ -265,7 +256,7 @@ static lh_status flip23(t3_ctx *c, lh_index t, int j, int *done)
     int s2 = lh__t3_orient4(c, a, q, f[2], f[0]);
     if (s0 == 0 || s0 != s1 || s1 != s2) return LH_OK;
     for (int k = 0; k < 3; k++)
-        if (shape(c, a, q, f[k], f[(k + 1) % 3]) < T3_SLIVER) return LH_OK;
+        if (lh__t3_shape(c, a, q, f[k], f[(k + 1) % 3]) < T3_SLIVER) return LH_OK;
     lh_index old[2] = {t, u};
     lh_index nv[3][4] = {{a, q, f[0], f[1]}, {a, q, f[1], f[2]}, {a, q, f[2], f[0]}};
     return lh__t3_mesh_replace(c, old, 2, nv, 3, done);
@@ -404,7 +395,9 @@ static int triangle_side(enum_ctx *e, int lo, int m, int hi, double *w)
         *sd = (signed char)(sx != 0 && sx == -sy && !makes_gone(e, lo, m) && !makes_gone(e, m, hi)
                                 ? sx
                                 : 0);
-        if (*sd) e->w[lo][m][hi] = fmin(shape(e->c, g->x, a, b, d), shape(e->c, g->y, a, b, d));
+        if (*sd)
+            e->w[lo][m][hi] =
+                fmin(lh__t3_shape(e->c, g->x, a, b, d), lh__t3_shape(e->c, g->y, a, b, d));
     }
     *w = e->w[lo][m][hi];
     return *sd;

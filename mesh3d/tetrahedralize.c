@@ -100,6 +100,26 @@ static lh_status constraints(t3_ctx *c, size_t *nonplanar)
     return st == LH_OK ? lh__t3_stars(c) : st;
 }
 
+/* The domain carved (carve.c); then the boundary Steiner points taken off where that
+ * needs no new point inside it (all of them with -Y, recover_suppress.c), and, when
+ * any was, the domain carved again. */
+static lh_status domain(t3_ctx *c, t3_domain *d)
+{
+    lh_status st = lh__t3_walls(c, d);
+    if (st == LH_OK) st = lh__t3_carve(c, d);
+    if (st != LH_OK || c->steiner == 0) return st;
+    unsigned char *out = lh__alloc(&c->al, c->tet_count + 1);
+    if (!out) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    for (size_t t = 0; t < c->tet_count; t++) out[t] = d->label[t] == T3_OUT;
+    size_t taken;
+    st = lh__t3_recover_suppress(c, out, &taken);
+    lh__free(&c->al, out);
+    if (st != LH_OK || taken == 0) return st;
+    lh__t3_domain_free(c, d);
+    st = lh__t3_walls(c, d);
+    return st == LH_OK ? lh__t3_carve(c, d) : st;
+}
+
 static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
 {
     size_t nonplanar = 0;
@@ -110,8 +130,7 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
     if (st == LH_OK) st = lh__t3_recover(c);
     t3_domain d;
     memset(&d, 0, sizeof d);
-    if (st == LH_OK) st = lh__t3_walls(c, &d);
-    if (st == LH_OK) st = lh__t3_carve(c, &d);
+    if (st == LH_OK) st = domain(c, &d);
     if (st == LH_OK) st = lh__t3_partly_carved(c, &d);
     lh_tetmesh *m = NULL;
     if (st == LH_OK && !(m = lh__tetmesh_new(&c->al)))

@@ -38,35 +38,38 @@ static lh_status check(const lh_tetmesh *m, const lh_plc *g, int hull, lh_error 
 
 typedef struct model {
     const char *file;
-    size_t steiner_max; /* what this mesher needs today (flips, then splitting)     */
+    size_t steiner_max; /* what this mesher needs today (flips, splitting, then the
+                           points taken off the boundary again)                   */
     size_t tetgen;      /* TetGen 1.5 -p's Steiner points (BASELINE.md)             */
+    int merged;         /* 1: TetGen -p merges this model's coplanar facets, so its
+                           count is for another problem (docs/meshing3d.md)        */
 } model;
 
 LH_TEST(models_mesh_and_conform)
 {
     static const model models[] = {
-        {"mesh3d/schonhardt.off", 1, 3},
-        {"tetgen/star.off", 0, 0},
-        {"tetgen/cubes.off", 4, 0},
-        {"tetgen/wedge-5.smesh", 0, 0},
-        {"plc/spike-1-7.smesh", 0, 0},
-        {"mesh3d/slit-1.smesh", 0, 0},
-        {"mesh3d/spike-1-10.smesh", 0, 0},
-        {"mesh3d/wedge-1.smesh", 0, 0},
-        {"mesh3d/step.off", 0, 0},
-        {"mesh3d/hole.off", 0, 4},
-        {"mesh3d/blob-closed.off", 1, 4},
-        {"mesh3d/eight.off", 2, 69},
-        {"mesh3d/u.off", 1, 172},
-        {"mesh3d/pipe.off", 34, 0},
-        {"mesh3d/part.off", 6, 21},
-        {"mesh3d/joint.off", 160, 92},
-        {"mesh3d/double-torus-example.off", 0, 2},
-        {"mesh3d/mpi.off", 1, 31},
-        {"mesh3d/twisted-quad.poly", 0, 0},
-        {"mesh3d/outside-fin.poly", 0, 0},
-        {"plc_bin/sphere.stl", 0, 0},
-        {"plc_bin/sphere.ply", 0, 0},
+        {"mesh3d/schonhardt.off", 1, 3, 0},
+        {"tetgen/star.off", 0, 0, 0},
+        {"tetgen/cubes.off", 2, 0, 1},
+        {"tetgen/wedge-5.smesh", 0, 0, 0},
+        {"plc/spike-1-7.smesh", 0, 0, 0},
+        {"mesh3d/slit-1.smesh", 0, 0, 0},
+        {"mesh3d/spike-1-10.smesh", 0, 0, 0},
+        {"mesh3d/wedge-1.smesh", 0, 0, 0},
+        {"mesh3d/step.off", 0, 0, 0},
+        {"mesh3d/hole.off", 0, 4, 0},
+        {"mesh3d/blob-closed.off", 1, 4, 0},
+        {"mesh3d/eight.off", 0, 69, 0},
+        {"mesh3d/u.off", 0, 172, 0},
+        {"mesh3d/pipe.off", 15, 0, 1},
+        {"mesh3d/part.off", 4, 21, 0},
+        {"mesh3d/joint.off", 42, 92, 0},
+        {"mesh3d/double-torus-example.off", 0, 2, 0},
+        {"mesh3d/mpi.off", 1, 31, 0},
+        {"mesh3d/twisted-quad.poly", 0, 0, 0},
+        {"mesh3d/outside-fin.poly", 0, 0, 0},
+        {"plc_bin/sphere.stl", 0, 0, 0},
+        {"plc_bin/sphere.ply", 0, 0, 0},
     };
     for (size_t i = 0; i < LH_COUNT(models); i++) {
         lh_plc g;
@@ -83,7 +86,8 @@ LH_TEST(models_mesh_and_conform)
             if (st != LH_OK) fprintf(stderr, "%s: %s\n", models[i].file, err.message);
             LH_EXPECT_EQ_INT(st, LH_OK);
             LH_EXPECT_LE_U64(s.steiner_points, models[i].steiner_max);
-            LH_EXPECT_EQ_U64(s.steiner_points, s.steiner_on_segments + s.steiner_on_facets);
+            if (!models[i].merged) LH_EXPECT_LE_U64(s.steiner_points, models[i].tetgen);
+            LH_EXPECT_LE_U64(s.steiner_on_segments + s.steiner_on_facets, s.steiner_points);
             LH_EXPECT_GT_U64(s.tets, 0);
             /* no tet has a radius-edge ratio below the regular one's, sqrt(6)/4 */
             LH_EXPECT_TRUE(s.min_dihedral > 0 && s.min_dihedral <= 70.53);
@@ -165,12 +169,13 @@ static double *tet_keys(const lh_tetmesh *m)
 
 LH_TEST(output_does_not_depend_on_order)
 {
-    /* the last four with -Y: the points that take Steiner points off the boundary too */
+    /* joint.off: the most Steiner points taken off the boundary; the last four with -Y,
+       which puts new points inside too */
     static const char *const files[] = {
-        "mesh3d/u.off",          "mesh3d/schonhardt.off", "mesh3d/double-torus-example.off",
-        "mesh3d/hole.off",       "mesh3d/mpi.off",        "mesh3d/part.off",
-        "mesh3d/schonhardt.off", "tetgen/cubes.off",      "mesh3d/part.off",
-        "mesh3d/pipe.off"};
+        "mesh3d/u.off",     "mesh3d/schonhardt.off", "mesh3d/double-torus-example.off",
+        "mesh3d/hole.off",  "mesh3d/mpi.off",        "mesh3d/part.off",
+        "mesh3d/joint.off", "mesh3d/schonhardt.off", "tetgen/cubes.off",
+        "mesh3d/part.off",  "mesh3d/pipe.off"};
     for (size_t i = 0; i < LH_COUNT(files); i++) {
         lh_tetmesh_options o;
         lh_tetmesh_options_default(&o);
@@ -303,25 +308,25 @@ LH_TEST(steiner_limits)
 }
 
 /* -Y: no Steiner point on a segment or facet: those splitting put there are taken off
- * the boundary again (each sector of its star gets one inside; those outside the
- * domain are carved away). The most each model needs today, beside TetGen -pY's;
+ * the boundary again (each sector of its star refilled from its own points, else from
+ * one new point inside). The most each model needs today, beside TetGen -pY's;
  * pipe.off and joint.off are the models TetGen's -Y needs most for. */
 LH_TEST(boundary_steiner_off_puts_points_inside)
 {
     static const model models[] = {
-        {"mesh3d/double-torus-example.off", 0, 0},
-        {"mesh3d/step.off", 0, 0},
-        {"mesh3d/slit-1.smesh", 0, 0},
-        {"mesh3d/hole.off", 0, 0},
-        {"mesh3d/u.off", 1, 0},
-        {"mesh3d/schonhardt.off", 1, 1},
-        {"tetgen/cubes.off", 4, 2},
-        {"mesh3d/blob-closed.off", 1, 0},
-        {"mesh3d/eight.off", 2, 0},
-        {"mesh3d/part.off", 6, 1},
-        {"mesh3d/mpi.off", 1, 0},
-        {"mesh3d/pipe.off", 34, 18},
-        {"mesh3d/joint.off", 160, 3},
+        {"mesh3d/double-torus-example.off", 0, 0, 0},
+        {"mesh3d/step.off", 0, 0, 0},
+        {"mesh3d/slit-1.smesh", 0, 0, 0},
+        {"mesh3d/hole.off", 0, 0, 0},
+        {"mesh3d/u.off", 0, 0, 0},
+        {"mesh3d/schonhardt.off", 1, 1, 0},
+        {"tetgen/cubes.off", 2, 2, 0},
+        {"mesh3d/blob-closed.off", 1, 0, 0},
+        {"mesh3d/eight.off", 0, 0, 0},
+        {"mesh3d/part.off", 4, 1, 0},
+        {"mesh3d/mpi.off", 1, 0, 0},
+        {"mesh3d/pipe.off", 15, 18, 0},
+        {"mesh3d/joint.off", 42, 3, 0},
     };
     for (size_t i = 0; i < LH_COUNT(models); i++) {
         lh_plc g;
