@@ -17,7 +17,7 @@
  *     around the apex), and the apex is on no constraint.
  * New points cost nothing outside the domain (they are carved away); inside it they
  * are made only in the later passes: at most one per point without -Y, as many as
- * needed with -Y. With -Y, a point left (on two segments, a star too large, no apex)
+ * needed with -Y; the last passes take out those whose stars allow it. With -Y, a point left (on two segments, a star too large, no apex)
  * ends meshing with LH_ERR_STEINER_LIMIT naming it. Points are taken in coordinate
  * order, and every choice is made on coordinates (sort_star, sort_fans, canon_tet),
  * so the result does not depend on input order.
@@ -1098,6 +1098,22 @@ static lh_status passes(t3_ctx *c, sup *s, lh_index *list, size_t *m)
     return st;
 }
 
+/* The new points from n0 on (all off the boundary) taken out again where their stars
+ * can be refilled from their own points: the room later suppressions made around one
+ * may have made it needless. */
+static lh_status inner_passes(t3_ctx *c, sup *s, size_t n0)
+{
+    size_t m = c->n - n0;
+    lh_index *list = lh__alloc(&c->al, 2 * m * sizeof(lh_index)); /* and the sort's scratch */
+    if (!list) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    for (size_t i = 0; i < m; i++) list[i] = (lh_index)(n0 + i);
+    lh__sort_idx(list, list + m, m, cmp_point, c);
+    s->max_new = 0;
+    lh_status st = passes(c, s, list, &m);
+    lh__free(&c->al, list);
+    return st;
+}
+
 lh_status lh__t3_suppress(t3_ctx *c, int allow_new, const unsigned char *out, size_t *taken)
 {
     *taken = 0;
@@ -1105,7 +1121,7 @@ lh_status lh__t3_suppress(t3_ctx *c, int allow_new, const unsigned char *out, si
         lh__alloc(&c->al, (2 * (c->node_count + c->pnode_count) + 1) * sizeof(lh_index));
     sup *s = lh__alloc(&c->al, sizeof *s);
     lh_status st = list && s ? LH_OK : lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-    size_t all = st == LH_OK ? steiner_list(c, list) : 0, m = all;
+    size_t all = st == LH_OK ? steiner_list(c, list) : 0, m = all, n0 = c->n;
     if (s) {
         memset(&s->fs, 0, sizeof s->fs);
         s->used = 0, s->out = NULL, s->out_cap = 0, s->max_new = 0;
@@ -1118,6 +1134,7 @@ lh_status lh__t3_suppress(t3_ctx *c, int allow_new, const unsigned char *out, si
     /* then with new points inside: as many as needed with -Y, else at most the one that
        replaces p (which can make room for the next) */
     if (st == LH_OK && m) s->max_new = allow_new ? SUP_SECTORS : 1, st = passes(c, s, list, &m);
+    if (st == LH_OK && c->n > n0) st = inner_passes(c, s, n0);
     if (st == LH_OK && m && allow_new) {
         const double *x = pt(c, list[0]);
         st = lh__t3_say(c, LH_ERR_STEINER_LIMIT, 0,
