@@ -1098,15 +1098,18 @@ static lh_status passes(t3_ctx *c, sup *s, lh_index *list, size_t *m)
     return st;
 }
 
-/* The new points from n0 on (all off the boundary) taken out again where their stars
- * can be refilled from their own points: the room later suppressions made around one
- * may have made it needless. */
+/* The new points from n0 on inside the domain (those outside are carved away)
+ * taken out again where their stars can be refilled from their own points: the room
+ * later suppressions made around one may have made it needless. */
 static lh_status inner_passes(t3_ctx *c, sup *s, size_t n0)
 {
-    size_t m = c->n - n0;
-    lh_index *list = lh__alloc(&c->al, 2 * m * sizeof(lh_index)); /* and the sort's scratch */
+    size_t m = 0;
+    lh_index *list = lh__alloc(&c->al, 2 * (c->n - n0) * sizeof(lh_index)); /* and scratch */
     if (!list) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-    for (size_t i = 0; i < m; i++) list[i] = (lh_index)(n0 + i);
+    for (size_t q = n0; q < c->n; q++) { /* a tet holding q: inside the domain or not */
+        const lh_index t = c->vtet[q];
+        if (t >= 0 && (!s->out || !s->out[t])) list[m++] = (lh_index)q;
+    }
     lh__sort_idx(list, list + m, m, cmp_point, c);
     s->max_new = 0;
     lh_status st = passes(c, s, list, &m);
