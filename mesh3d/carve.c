@@ -6,6 +6,7 @@
  * TetGen; Si 2015, sec. 4.4).
  */
 #include "carve.h"
+#include "lh_sort.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -19,7 +20,7 @@ static int cmp_wall(const void *x, const void *y)
 }
 
 /* d->wall from the sorted walls (w of them, each face once): both tets of each wall
- * face found in the star of its first point. */
+ * face found in the star of its point with the fewest tets. */
 static lh_status mark_walls(t3_ctx *c, t3_domain *d, const lh_index *walls, size_t w)
 {
     const size_t count = c->tet_count;
@@ -29,7 +30,12 @@ static lh_status mark_walls(t3_ctx *c, t3_domain *d, const lh_index *walls, size
     for (size_t i = 0; i < 4 * count; i++) d->wall[i] = -1;
     for (size_t i = 0; i < w; i++) {
         const lh_index *f = walls + 4 * i;
-        for (lh_index q = c->star_first[f[0]]; q < c->star_first[f[0] + 1]; q++) {
+        lh_index lo = f[0];
+        for (int k = 1; k < 3; k++)
+            if (c->star_first[f[k] + 1] - c->star_first[f[k]] <
+                c->star_first[lo + 1] - c->star_first[lo])
+                lo = f[k];
+        for (lh_index q = c->star_first[lo]; q < c->star_first[lo + 1]; q++) {
             const size_t t = (size_t)c->star[q];
             int in = 0, j = 0;
             for (int k = 0; k < 4; k++) {
@@ -76,7 +82,15 @@ lh_status lh__t3_walls(t3_ctx *c, t3_domain *d)
             walls[4 * w + 3] = c->patch_facet[k];
         }
     }
-    if (w) qsort(walls, w, 4 * sizeof(lh_index), cmp_wall); /* equal faces: facet order */
+    /* sorted by their points, the last first: stable, so equal faces keep facet order */
+    for (int k = 2; w && k >= 0; k--) {
+        lh_status st = lh__sort_by_index(&c->al, walls, w, 4 * sizeof(lh_index),
+                                         (size_t)k * sizeof(lh_index), c->n);
+        if (st != LH_OK) {
+            lh__free(&c->al, walls);
+            return lh__t3_say(c, st, 0, "out of memory");
+        }
+    }
     for (size_t i = 1; i < w; i++) /* facets given twice count once (recover_setup.c) */
         if (cmp_wall(walls + 4 * (i - 1), walls + 4 * i) == 0 &&
             walls[4 * (i - 1) + 3] != walls[4 * i + 3]) {
