@@ -114,6 +114,7 @@ static void forget(t3_ctx *c)
     c->cover_count = 0;
 }
 
+/* Every constraint is checked again, uncached, in the mesh suppression made. */
 lh_status lh__t3_recover_suppress(t3_ctx *c, const unsigned char *out, size_t *taken)
 {
     lh_status st = lh__t3_suppress(c, c->opt->boundary_steiner == 0, out, taken);

@@ -100,9 +100,10 @@ static lh_status constraints(t3_ctx *c, size_t *nonplanar)
     return st == LH_OK ? lh__t3_stars(c) : st;
 }
 
-/* The domain carved (carve.c); then the boundary Steiner points taken off where that
- * needs no new point inside it (all of them with -Y, recover_suppress.c), and, when
- * any was, the domain carved again. */
+/* The domain carved (carve.c); then the boundary Steiner points taken off the
+ * boundary (recover_suppress.c: all of them with -Y, else those that need no more
+ * points inside the domain than they were), and, when any was, the domain carved
+ * again. */
 static lh_status domain(t3_ctx *c, t3_domain *d)
 {
     lh_status st = lh__t3_walls(c, d);
