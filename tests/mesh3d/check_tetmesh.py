@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """check_tetmesh.py: an independent exact check of a tetrahedral mesh in TetGen's files.
 
-    check_tetmesh.py BASE [--input SURFACE.off] [--boundary-free] [--quiet]
+    check_tetmesh.py BASE [--input SURFACE.off] [--doubles] [--boundary-free] [--quiet]
 
 reads BASE.node, BASE.ele, BASE.face (if present) and BASE.edge (if present), points
 numbered from 0 or 1 (the .node file's first index says which), and checks, every
@@ -20,6 +20,9 @@ number a fractions.Fraction (exact for the decimal text in the files):
     exactly, so a mesh whose boundary moved (Steiner points rounded to the .node
     file's decimals; TetGen's -p also merges facets that meet at nearly 180 degrees:
     eight.off differs by 7e-7) fails it, the message giving the relative difference.
+With --doubles every number is read as the double nearest its text (Python's float,
+correctly rounded, as strtod), as the programs that wrote and read the files hold it:
+a mesh's 17-digit coordinates and an input's decimals then mean the same points.
 The first check that fails is printed as one line and the exit status is 1; 0 when
 all pass (a summary line unless --quiet); 2 for unreadable files.
 Standard library only, a separate implementation from lh_tetmesh_check (mesh3d/check*.c).
@@ -42,7 +45,7 @@ def records(path):
                 yield line
 
 
-def read_node(path):
+def read_node(path, num):
     it = records(path)
     head = next(it)
     n = int(head[0])
@@ -51,7 +54,7 @@ def read_node(path):
         r = next(it)
         if first is None:
             first = int(r[0])
-        pts.append(tuple(Fraction(x) for x in r[1:4]))
+        pts.append(tuple(num(x) for x in r[1:4]))
     return pts, first if first is not None else 0
 
 
@@ -131,7 +134,7 @@ def boundary_volume(pts, faces):
     return vol
 
 
-def read_off(path):
+def read_off(path, num):
     toks = []
     for line in open(path):
         toks += line.split('#', 1)[0].split()
@@ -141,7 +144,7 @@ def read_off(path):
     pos = 3
     pts = []
     for _ in range(nv):
-        pts.append(tuple(Fraction(x) for x in toks[pos:pos + 3]))
+        pts.append(tuple(num(x) for x in toks[pos:pos + 3]))
         pos += 3
     polys = []
     for _ in range(nf):
@@ -189,8 +192,8 @@ def surface_volume(pts, polys):
     return total
 
 
-def check(base, input_off=None, boundary_free=False):
-    pts, first = read_node(base + '.node')
+def check(base, input_off=None, boundary_free=False, num=Fraction):
+    pts, first = read_node(base + '.node', num)
     tets = read_cells(base + '.ele', 4, first, len(pts))
     vol = check_tets(pts, tets)
     faces = face_table(pts, tets)
@@ -224,7 +227,7 @@ def check(base, input_off=None, boundary_free=False):
     if bvol != vol:
         raise Bad(f'the tets\' volume {vol / 6} differs from the boundary\'s {bvol / 6}')
     if input_off:
-        ipts, polys = read_off(input_off)
+        ipts, polys = read_off(input_off, num)
         ivol = surface_volume(ipts, polys)
         if ivol != vol:
             rel = float(abs(ivol - vol) / ivol) if ivol else float('inf')
@@ -243,7 +246,7 @@ def main(argv):
         input_off = argv[i + 1]
         args.remove(input_off)
         opts.remove('--input')
-    if len(args) != 1 or any(o not in ('--boundary-free', '--quiet') for o in opts):
+    if len(args) != 1 or any(o not in ('--boundary-free', '--quiet', '--doubles') for o in opts):
         print(__doc__.strip().split('\n\n')[1], file=sys.stderr)
         return 2
     base = args[0]
@@ -251,7 +254,8 @@ def main(argv):
         if base.endswith(ext):
             base = base[:-len(ext)]
     try:
-        n, nt, nf, ne, vol = check(base, input_off, '--boundary-free' in opts)
+        num = (lambda x: Fraction(float(x))) if '--doubles' in opts else Fraction
+        n, nt, nf, ne, vol = check(base, input_off, '--boundary-free' in opts, num)
     except Bad as e:
         print(f'{base}: {e}')
         return 1
