@@ -16,13 +16,13 @@
 
 typedef struct tsw {
     int p, Y, c, A, f, e, n, k, g, z, B, N, E, F, I, Q, V, d, C, S;
-    int q, a; /* the quality switches, refused for now (their numbers kept) */
+    int q, a, a_regions; /* -q[R][/D], -a[V]; -a alone: the regions' bounds */
     double ratio, angle, volume;
     size_t steiner, d_limit;
 } tsw;
 
 static const char *const usage_text =
-    "usage: lifthull tetgen [-pYcAfenkgzBNEFIQVdSC] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
+    "usage: lifthull tetgen [-pYcAqafenkgzBNEFIQVdSC] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
     "\n"
     "TetGen's command line (H. Si), computed exactly by lifthull: the same switches,\n"
     "input and output files. FILE.poly / .smesh (TetGen's piecewise linear complexes),\n"
@@ -35,7 +35,13 @@ static const char *const usage_text =
     "  -Y      no Steiner points on the boundary (segments and facets)\n"
     "  -c      keep the convex hull (do not carve from the outside; holes still are)\n"
     "  -A      region attributes: each tetrahedron gets its region's, in FILE.1.ele\n"
-    "  -S[N]   at most N Steiner points (more needed: an error)\n"
+    "  -q[R][/D] quality: refine until every tetrahedron's circumradius over its\n"
+    "          shortest edge is at most R (default 2, at least 1), except next to small\n"
+    "          input angles (-V counts those left); D (degrees): tets with a smaller\n"
+    "          dihedral angle are counted, not yet removed\n"
+    "  -a[V]   refine until every tetrahedron's volume is at most V; -a alone: each\n"
+    "          region's volume bound from the .poly (both may be given)\n"
+    "  -S[N]   at most N Steiner points (more needed: an error; refinement stops there)\n"
     "  -f      FILE.1.face lists every face (default: the boundary and facet faces)\n"
     "  -e      write FILE.1.edge: every edge, with its segment's marker (0: none)\n"
     "  -n      write FILE.1.neigh;  -k FILE.1.vtk (legacy VTK);  -g FILE.1.mesh (Medit)\n"
@@ -50,7 +56,7 @@ static const char *const usage_text =
     "  -T[x] -X -M -J   TetGen's tolerance, arithmetic, facet merging and keeping unused\n"
     "          points: accepted, nothing changes (lifthull is exact, never merges facets\n"
     "          and keeps every input point in the .node, in a tetrahedron or not)\n"
-    "not implemented yet (refused): -q -a (quality refinement), -r -m -O -R -i -w -v -o2\n"
+    "not implemented yet (refused): -r -m -O -R -i -w -v -o2\n"
     "\n"
     "examples:\n"
     "  lifthull tetgen -pA examples/box.poly     # examples/box.1.node .ele .face\n"
@@ -100,13 +106,15 @@ static int parse_switches(const char *s, void *opt)
             o->S = 1, o->steiner = lh_cli_switch_count(s, &j, 0);
             break;
         case 'q': /* -q[ratio][/angle] */
-            o->q = 1;
+            o->q = 1, o->ratio = 2;
             if (lh_cli_switch_number(s, &j, &x)) o->ratio = x;
             if (s[j + 1] == '/') j++, o->angle = lh_cli_switch_number(s, &j, &x) ? x : 0;
             break;
         case 'a':
-            o->a = 1;
-            if (lh_cli_switch_number(s, &j, &x)) o->volume = x;
+            if (lh_cli_switch_number(s, &j, &x))
+                o->a = 1, o->volume = x;
+            else
+                o->a_regions = 1;
             break;
         case 'T': lh_cli_switch_number(s, &j, &x); break; /* exact coplanarity: no tolerance */
         case 'X': case 'M': case 'J': break;
@@ -218,6 +226,9 @@ static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *
     opt.boundary_steiner = !o->Y;
     opt.region_attributes = o->A && o->p; /* regions are a PLC's: TetGen's -A needs -p */
     if (o->S) opt.max_steiner = o->steiner;
+    if (o->q) opt.max_radius_edge = o->ratio, opt.min_dihedral = o->angle;
+    if (o->a) opt.max_volume = o->volume;
+    opt.region_volumes = o->a_regions && o->p;
     lh_error err;
     lh_tetmesh *m = NULL;
     const double t0 = lh_cli_seconds();
@@ -302,8 +313,16 @@ int lh_cli_tetgen(int argc, char **argv)
     const char *file;
     const int r = lh_cli_switch_args(argc, argv, "tetgen", usage_text, parse_switches, &o, &file);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
-    if (o.q || o.a) {
-        fprintf(stderr, "lifthull tetgen: quality refinement (-q/-a) is not implemented yet\n");
+    if (o.q && !(o.ratio >= 1)) {
+        fprintf(stderr, "lifthull tetgen: -q takes a radius-edge bound of 1 or more, not %g\n", o.ratio);
+        return LH_EXIT_USAGE;
+    }
+    if (o.q && !(o.angle >= 0 && o.angle < 90)) {
+        fprintf(stderr, "lifthull tetgen: -q R/D takes a dihedral angle from 0 to 90 degrees, not %g\n", o.angle);
+        return LH_EXIT_USAGE;
+    }
+    if (o.a && !(o.volume > 0)) {
+        fprintf(stderr, "lifthull tetgen: -a takes a volume bound above 0, not %g\n", o.volume);
         return LH_EXIT_USAGE;
     }
     return run(&o, file);

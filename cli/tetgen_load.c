@@ -234,4 +234,8 @@ void lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m)
     fprintf(out, "  Steiner points on their segment or facet up to rounding only: %zu\n\n", s.steiner_off_exact);
     fprintf(out, "  Smallest dihedral angle: %.6g degrees\n  Largest radius-edge ratio: %.6g\n", s.min_dihedral,
             s.max_radius_edge);
+    fprintf(out,
+            "  Quality refinement: %zu Steiner points; tetrahedra left over the radius-edge bound: %zu,"
+            " over the volume bound: %zu, under the dihedral bound: %zu\n",
+            s.refine_points, s.over_radius_edge, s.over_volume, s.under_dihedral);
 }

@@ -106,7 +106,7 @@ static lh_status stalled(t3_ctx *c)
  * as they were (lh__t3_commit marks them); the flips that recovered it are then
  * likely, not certain, to recover it again, so a round that finds nothing missing
  * checks everything again without that. */
-static void forget(t3_ctx *c)
+void lh__t3_forget(t3_ctx *c)
 {
     memset(c->seg_seen, 0, c->seg_count * sizeof(uint32_t));
     memset(c->patch_seen, 0, c->patch_count * sizeof(uint32_t));
@@ -119,7 +119,7 @@ lh_status lh__t3_recover_suppress(t3_ctx *c, const unsigned char *out, size_t *t
 {
     lh_status st = lh__t3_suppress(c, c->opt->boundary_steiner == 0, out, taken);
     if (st != LH_OK || *taken == 0) return st;
-    forget(c);
+    lh__t3_forget(c);
     st = split_edges(c);
     if (st == LH_OK && c->new_count == 0) st = split_faces(c);
     if (st == LH_OK && c->new_count)
@@ -129,13 +129,13 @@ lh_status lh__t3_recover_suppress(t3_ctx *c, const unsigned char *out, size_t *t
 
 lh_status lh__t3_recover(t3_ctx *c)
 {
-    for (;;) {
-        if (c->rounds == T3_MAX_ROUNDS) return stalled(c);
+    for (const size_t first = c->rounds;;) {
+        if (c->rounds - first == T3_MAX_ROUNDS) return stalled(c);
         lh_status st = lh__t3_flip(c);
         if (st == LH_OK) st = split_edges(c);
         if (st == LH_OK && c->new_count == 0) st = split_faces(c);
         if (st == LH_OK && c->new_count == 0) { /* everything afresh, uncached */
-            forget(c);
+            lh__t3_forget(c);
             st = split_edges(c);
             if (st == LH_OK && c->new_count == 0) st = split_faces(c);
         }

@@ -48,7 +48,10 @@ typedef struct t3_seg {
 } t3_seg;
 
 /* A point of a chain: point p at parameter t of segment seg (a + t (b - a)); in the
- * queue of new points, seg < 0 means a point inside patch -1 - seg. */
+ * queue of new points, seg < 0 means a point inside patch -1 - seg, and T3_INTERIOR a
+ * point inside the domain (quality refinement's). */
+#define T3_INTERIOR (-(lh_index)LH_INDEX_MAX)
+
 typedef struct t3_node {
     lh_index seg, p;
     double t;
@@ -117,6 +120,8 @@ typedef struct t3_ctx {
     lh_index *cover_first; /* per patch: its triples' first index in cover, or -1    */
     lh_index *cover_len;   /* per patch: their number                                */
     size_t steiner;        /* Steiner points inserted                                */
+    size_t refine_points;  /* of them, quality refinement's (refine.c)               */
+    size_t over_volume;    /* tets over their volume bound when refinement stopped   */
     size_t rounds;
     /* the mesh the constraints are sought in (tets.c): the Delaunay tetrahedralization
        after the round's insertions, then changed by flips (recover_flip.c) */
@@ -182,6 +187,8 @@ lh_status lh__t3_say(t3_ctx *c, lh_status st, size_t line, const char *fmt, ...)
 lh_status lh__t3_room(t3_ctx *c, lh_index **buf, size_t *cap, size_t need);
 /* The rounds, until every constraint is in the mesh. */
 lh_status lh__t3_recover(t3_ctx *c);
+/* Drops what rounds cache of constraints found whole: the next checks them afresh. */
+void lh__t3_forget(t3_ctx *c);
 
 /* plc_check.c: the PLC's arrays, indices and coordinates. */
 lh_status lh__t3_plc_check(t3_ctx *c);

@@ -333,7 +333,7 @@ lh_status lh__t3_commit(t3_ctx *c)
         nd.p = c->dup[nd.p];
         if (nd.seg >= 0) {
             c->node[c->node_count++] = nd;
-        } else {
+        } else if (nd.seg != T3_INTERIOR) {
             nd.seg = -1 - nd.seg;
             c->pnode[c->pnode_count++] = nd;
         }

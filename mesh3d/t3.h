@@ -30,8 +30,9 @@ struct lh_tetmesh {
 /* An empty handle with the allocator; NULL when out of memory. */
 lh_tetmesh *lh__tetmesh_new(const lh_allocator *al);
 /* quality.c: m's smallest dihedral angle and largest radius-edge ratio into its
- * statistics. */
-void lh__tetmesh_quality(lh_tetmesh *m);
+ * statistics, and the tets over radius-edge bound max_ratio and under dihedral bound
+ * min_dih (degrees; 0: none). */
+void lh__tetmesh_quality(lh_tetmesh *m, double max_ratio, double min_dih);
 /* Allocates count * size bytes with m's allocator into *arr (count 0: NULL). */
 lh_status lh__tetmesh_array(lh_tetmesh *m, void **arr, size_t count, size_t size);
 

@@ -6,6 +6,7 @@
  */
 #include "carve.h"
 #include "facets.h"
+#include "refine.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -108,7 +109,8 @@ static lh_status domain(t3_ctx *c, t3_domain *d)
 {
     lh_status st = lh__t3_walls(c, d);
     if (st == LH_OK) st = lh__t3_carve(c, d);
-    if (st != LH_OK || c->steiner == 0) return st;
+    const int refined = c->refine_points > 0 && c->opt->boundary_steiner;
+    if (st != LH_OK || c->steiner == 0 || refined) return st; /* refinement's stay */
     unsigned char *out = lh__alloc(&c->al, c->tet_count + 1);
     if (!out) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     for (size_t t = 0; t < c->tet_count; t++) out[t] = d->label[t] == T3_OUT;
@@ -129,6 +131,7 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
     if (st == LH_OK) st = start(c);
     if (st == LH_OK) st = constraints(c, &nonplanar);
     if (st == LH_OK) st = lh__t3_recover(c);
+    if (st == LH_OK) st = lh__t3_refine(c);
     t3_domain d;
     memset(&d, 0, sizeof d);
     if (st == LH_OK) st = domain(c, &d);
@@ -143,7 +146,9 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
         return st;
     }
     m->stats.facets_nonplanar = nonplanar;
-    lh__tetmesh_quality(m);
+    m->stats.refine_points = c->refine_points;
+    m->stats.over_volume = c->over_volume;
+    lh__tetmesh_quality(m, c->opt->max_radius_edge, c->opt->min_dihedral);
     *out = m;
     return LH_OK;
 }
@@ -159,7 +164,9 @@ lh_status lh_tetrahedralize(const lh_plc *g, const lh_tetmesh_options *opt, lh_t
     t3_ctx c;
     memset(&c, 0, sizeof c);
     c.err = err, c.g = g, c.opt = opt;
-    if (!g || !out || !lh__allocator_init(&c.al, opt->alloc))
+    if (!g || !out || !lh__allocator_init(&c.al, opt->alloc) ||
+        (opt->max_radius_edge != 0 && !(opt->max_radius_edge >= 1)) || !(opt->max_volume >= 0) ||
+        !(opt->min_dihedral >= 0 && opt->min_dihedral < 90))
         return lh__error_done(err, LH_ERR_INVALID_ARGUMENT);
     lh_status st = mesh(&c, out);
     ctx_free(&c);

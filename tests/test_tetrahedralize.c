@@ -167,6 +167,32 @@ static double *tet_keys(const lh_tetmesh *m)
     return k;
 }
 
+/* A random permutation of 0 .. n-1 (Fisher-Yates), from seed; malloc'ed. */
+static lh_index *random_perm(size_t n, uint64_t seed)
+{
+    lh_index *perm = malloc((n + 1) * sizeof(lh_index));
+    uint64_t rng = seed;
+    for (size_t j = 0; j < n; j++) perm[j] = (lh_index)j;
+    for (size_t j = n; j > 1; j--) {
+        size_t r = (size_t)(lh_test_xorshift(&rng) % j);
+        lh_index x = perm[j - 1];
+        perm[j - 1] = perm[r];
+        perm[r] = x;
+    }
+    return perm;
+}
+
+/* Whether meshes a and b have the same tets (as sets of corner coordinates). */
+static int same_tets(const lh_tetmesh *a, const lh_tetmesh *b)
+{
+    size_t nt = lh_tetmesh_tet_count(a);
+    if (lh_tetmesh_tet_count(b) != nt) return 0;
+    double *ka = tet_keys(a), *kb = tet_keys(b);
+    int same = memcmp(ka, kb, 12 * nt * sizeof(double)) == 0;
+    free(ka), free(kb);
+    return same;
+}
+
 LH_TEST(output_does_not_depend_on_order)
 {
     /* joint.off: the most Steiner points taken off the boundary; the last four with -Y,
@@ -182,36 +208,95 @@ LH_TEST(output_does_not_depend_on_order)
         o.boundary_steiner = i + 4 < LH_COUNT(files);
         lh_plc g, h;
         LH_ASSERT_TRUE(read_plc(files[i], &g));
-        lh_index *perm = malloc(g.n * sizeof(lh_index));
-        uint64_t rng = 0x9e3779b97f4a7c15u + i;
-        for (size_t j = 0; j < g.n; j++) perm[j] = (lh_index)j;
-        for (size_t j = g.n; j > 1; j--) { /* Fisher-Yates */
-            size_t r = (size_t)(lh_test_xorshift(&rng) % j);
-            lh_index x = perm[j - 1];
-            perm[j - 1] = perm[r];
-            perm[r] = x;
-        }
+        lh_index *perm = random_perm(g.n, 0x9e3779b97f4a7c15u + i);
         permuted(&g, perm, &h);
         lh_tetmesh *a = NULL, *b = NULL;
         LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &a, NULL), LH_OK);
         LH_EXPECT_EQ_INT(lh_tetrahedralize(&h, &o, &b, NULL), LH_OK);
         if (a && b) {
-            size_t nt = lh_tetmesh_tet_count(a);
-            LH_EXPECT_EQ_U64(lh_tetmesh_tet_count(b), nt);
             LH_EXPECT_EQ_U64(lh_tetmesh_point_count(b), lh_tetmesh_point_count(a));
-            if (lh_tetmesh_tet_count(b) == nt) {
-                double *ka = tet_keys(a), *kb = tet_keys(b);
-                int same = memcmp(ka, kb, 12 * nt * sizeof(double)) == 0;
-                if (!same) fprintf(stderr, "%s: the tets differ as sets\n", files[i]);
-                LH_EXPECT_TRUE(same);
-                free(ka), free(kb);
-            }
+            int same = same_tets(a, b);
+            if (!same) fprintf(stderr, "%s: the tets differ as sets\n", files[i]);
+            LH_EXPECT_TRUE(same);
         }
         lh_tetmesh_free(a), lh_tetmesh_free(b);
         free_copy(&h);
         free(perm);
         lh_plc_free(&g);
     }
+}
+
+/* Quality refinement (-q, -a): valid and conforming, the bounds met but for a few
+ * tets next to small input angles (counted), the same mesh for any input order; bad
+ * bounds refused. */
+LH_TEST(quality_refinement)
+{
+    static const struct {
+        const char *file;
+        double ratio, volume_frac; /* the volume bound over the bounding box's */
+        size_t over_max_permille;  /* tets left over the radius-edge bound, per mille */
+    } cases[] = {{"mesh3d/double-torus-example.off", 1.414, 0, 3},
+                 {"mesh3d/blob-closed.off", 1.414, 0, 30},
+                 {"mesh3d/hole.off", 1.414, 0, 0},
+                 {"mesh3d/hole.off", 0, 1e-3, 0},
+                 {"tetgen/cubes.off", 1.2, 1e-2, 0}};
+    for (size_t i = 0; i < LH_COUNT(cases); i++) {
+        lh_plc g, h;
+        LH_ASSERT_TRUE(read_plc(cases[i].file, &g));
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (size_t p = 0; p < g.n; p++)
+            for (int k = 0; k < 3; k++) lo[k] = fmin(lo[k], g.xyz[3 * p + k]), hi[k] = fmax(hi[k], g.xyz[3 * p + k]);
+        lh_tetmesh_options o;
+        lh_tetmesh_options_default(&o);
+        o.max_radius_edge = cases[i].ratio;
+        o.max_volume = cases[i].volume_frac * (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+        lh_tetmesh *a = NULL, *b = NULL;
+        lh_error err;
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &a, &err), LH_OK);
+        lh_index *perm = random_perm(g.n, 77 + i);
+        permuted(&g, perm, &h);
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&h, &o, &b, NULL), LH_OK);
+        if (a && b) {
+            LH_EXPECT_EQ_INT(check(a, &g, 0, &err), LH_OK);
+            lh_tetmesh_stats s;
+            lh_tetmesh_stats_get(a, &s);
+            LH_EXPECT_TRUE(s.refine_points > 0 || s.tets < 30);
+            LH_EXPECT_TRUE(s.over_radius_edge * 1000 <= cases[i].over_max_permille * s.tets);
+            LH_EXPECT_EQ_U64(s.over_volume, 0);
+            const double *x = lh_tetmesh_points(a);
+            const lh_index *t = lh_tetmesh_tets(a);
+            size_t over = 0;
+            for (size_t k = 0; o.max_volume > 0 && k < s.tets; k++) { /* the bound, strictly */
+                const double *p[4];
+                for (int j = 0; j < 4; j++) p[j] = x + 3 * t[4 * k + j];
+                double u[3], v[3], w[3];
+                for (int j = 0; j < 3; j++) u[j] = p[1][j] - p[0][j], v[j] = p[2][j] - p[0][j], w[j] = p[3][j] - p[0][j];
+                double vol = (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                              u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+                over += vol > o.max_volume;
+            }
+            LH_EXPECT_EQ_U64(over, 0);
+            int same = same_tets(a, b);
+            if (!same) fprintf(stderr, "%s -q: the tets differ as sets\n", cases[i].file);
+            LH_EXPECT_TRUE(same);
+        }
+        lh_tetmesh_free(a), lh_tetmesh_free(b);
+        free_copy(&h);
+        free(perm);
+        lh_plc_free(&g);
+    }
+    lh_plc g;
+    LH_ASSERT_TRUE(read_plc("tetgen/cubes.off", &g));
+    const double bad[][3] = {{0.5, 0, 0}, {-1, 0, 0}, {2, -1, 0}, {2, 0, 90}, {NAN, 0, 0}};
+    for (size_t i = 0; i < LH_COUNT(bad); i++) {
+        lh_tetmesh_options o;
+        lh_tetmesh_options_default(&o);
+        o.max_radius_edge = bad[i][0], o.max_volume = bad[i][1], o.min_dihedral = bad[i][2];
+        lh_tetmesh *m = NULL;
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &m, NULL), LH_ERR_INVALID_ARGUMENT);
+        LH_EXPECT_TRUE(m == NULL);
+    }
+    lh_plc_free(&g);
 }
 
 /* lh_tetrahedralize on the PLC read from text (name gives the format): its status,
@@ -475,6 +560,7 @@ int main(int argc, char **argv)
                                          LH_CASE(bad_plcs_get_their_error),
                                          LH_CASE(a_million_copies_of_one_triangle),
                                          LH_CASE(scale_does_not_matter),
-                                         LH_CASE(quality_figures)};
+                                         LH_CASE(quality_figures),
+                                         LH_CASE(quality_refinement)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

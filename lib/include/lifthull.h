@@ -1208,6 +1208,19 @@ typedef struct lh_tetmesh_options {
     int check_intersections;   /* 1: facets that intersect are LH_ERR_INTERSECTING_
                                   FACETS naming the first pairs (default 1)         */
     int threads;               /* as lh_options.threads (default 1)                 */
+    /* Quality refinement (Shewchuk's Delaunay refinement: docs/meshing3d.md). */
+    double max_radius_edge;    /* -q: refine until every tetrahedron's circumradius over
+                                  its shortest edge is at most this, except next to
+                                  small input angles (counted in over_radius_edge);
+                                  0: no bound (default); TetGen's -q default is 2;
+                                  below 1: LH_ERR_INVALID_ARGUMENT                  */
+    double min_dihedral;       /* -q R/D: degrees; the tetrahedra with a smaller
+                                  dihedral angle are counted (under_dihedral), not yet
+                                  removed (default 0)                                */
+    double max_volume;         /* -a V: refine until every tetrahedron's volume is at
+                                  most this; 0: no bound (default)                   */
+    int region_volumes;        /* -a: each region's volume bound (lh_plc.regions)
+                                  applies to its tetrahedra too (default 0)          */
 } lh_tetmesh_options;
 LH_API void lh_tetmesh_options_default(lh_tetmesh_options *opt);
 
@@ -1275,6 +1288,12 @@ typedef struct lh_tetmesh_stats {
     size_t tets, faces, edges, regions;
     size_t holes_ignored, regions_ignored; /* seeds outside the domain or on a facet  */
     double min_dihedral, max_radius_edge; /* degrees; circumradius / shortest edge   */
+    size_t refine_points;        /* Steiner points of quality refinement (in the counts
+                                    above as well)                                     */
+    size_t over_radius_edge;     /* tetrahedra over max_radius_edge when refinement
+                                    stopped (small input angles, -S, -Y)               */
+    size_t over_volume;          /* tetrahedra over their volume bound (-S, -Y)        */
+    size_t under_dihedral;       /* tetrahedra with a dihedral angle below min_dihedral */
 } lh_tetmesh_stats;
 LH_API void lh_tetmesh_stats_get(const lh_tetmesh *m, lh_tetmesh_stats *out);
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # tetgen.sh LIFTHULL DATA: `lifthull tetgen` end to end (DATA = tests/data/tetgen3d) —
 # output file names (FILE.1.*, FILE.k -> FILE.k+1, -I), every switch's effect on the
-# files (-z -f -e -n -k -g -A -B -N -E -F -Q -V), the switches refused (-q -a and
-# those not implemented yet), usage errors (exit 2), bad input (exit 3,
+# files (-z -f -e -n -k -g -A -B -N -E -F -Q -V), quality refinement (-q -a), the
+# switches refused (those not implemented yet), usage errors (exit 2), bad input (exit 3,
 # "lifthull tetgen: FILE:LINE:COL: ..."), and output files written all or none.
 set -u
 . "$(dirname "${BASH_SOURCE[0]}")/harness.sh"
@@ -99,13 +99,33 @@ expect "-YcS5AT1e-8XMJ" 0 '' '' -- "$lh" tetgen -YcS5AT1e-8XMJQ cube.node
 same "-YcS5AT1e-8XMJ = plain" "$(cmp -s cube.1.ele plain.ele && echo same)" "same"
 cd ..
 
-# refused: quality refinement (not yet), TetGen switches lifthull does not have yet,
-# unknown switches, a signed -S (exit 2, nothing read or written)
+# quality refinement: -q's radius-edge bound, -a's volume bound met (box.poly: no
+# small angle, so no tet is left over), the mesh valid (-C); bad bounds: exit 2
+fresh box.poly
+expect "-pq1.2" 0 '' 'tetrahedra left over the radius-edge bound: 0, over the volume bound: 0' -- \
+  "$lh" tetgen -pq1.2VC box.poly
+matches out.txt '^check: the mesh is valid and conforms' && ok || bad "-pq1.2 -C: $(cat out.txt)"
+awk '/Largest radius-edge ratio/ { exit !($4 <= 1.2) }' out.txt && ok || bad "-pq1.2: $(grep Largest out.txt)"
+expect "-pa0.01" 0 '' '^box\.1: ' -- "$lh" tetgen -pa0.01VC box.poly
+matches out.txt '^check: the mesh is valid and conforms' && ok || bad "-pa0.01 -C: $(cat out.txt)"
+read -r vol least < <(volume box.1.node box.1.ele)
+same "-pa0.01 volume" "$vol" "6"
+same "-pa0.01 tets at most 0.01" "$(awk 'FNR == 1 { file++; next } file == 1 { x[$1] = $2; y[$1] = $3; z[$1] = $4; next }
+  { a = $2; ux = x[$3] - x[a]; uy = y[$3] - y[a]; uz = z[$3] - z[a]; vx = x[$4] - x[a]; vy = y[$4] - y[a]
+    vz = z[$4] - z[a]; wx = x[$5] - x[a]; wy = y[$5] - y[a]; wz = z[$5] - z[a]
+    d = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)
+    if (d / 6 > 0.01) over++ } END { print over + 0 }' box.1.node box.1.ele)" "0"
+same "-pa0.01 refined" "$(awk 'NR == 1 { print ($1 > 100) }' box.1.ele)" "1"
+expect "-q0.5" 2 '^lifthull tetgen: -q takes a radius-edge bound of 1 or more, not 0\.5$' '' -- \
+  "$lh" tetgen -pq0.5 box.poly
+expect "-q1.2/95" 2 '^lifthull tetgen: -q R/D takes a dihedral angle from 0 to 90 degrees, not 95$' '' -- \
+  "$lh" tetgen -pq1.2/95 box.poly
+expect "-a0" 2 '^lifthull tetgen: -a takes a volume bound above 0, not 0$' '' -- "$lh" tetgen -pa0 box.poly
+cd ..
+
+# refused: TetGen switches lifthull does not have yet, unknown switches, a signed -S
+# (exit 2, nothing read or written)
 fresh cube.node
-for s in -q -pq1.2/15 -a0.5 -pq1.2/15a0.5 -a; do
-  expect "$s refused" 2 '^lifthull tetgen: quality refinement \(-q/-a\) is not implemented yet$' '' -- \
-    "$lh" tetgen "$s" cube.node
-done
 expect "-r refused" 2 '^lifthull tetgen: -r \(refining a mesh\) is not implemented yet' '' -- "$lh" tetgen -r cube.node
 expect "-O2/7 refused" 2 '^lifthull tetgen: -O \(mesh optimisation\) is not implemented yet' '' -- \
   "$lh" tetgen -pO2/7 cube.node

@@ -1,0 +1,344 @@
+/*
+ * refine.c — the rounds of quality refinement (refine.h): scan the domain's
+ * tetrahedra against their bounds, queue the worst first as an independent set
+ * (refine_split.c), insert, recover the boundary again.
+ */
+#include "refine.h"
+
+#include "lh_sort.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Rounds before refinement stops with tets still over their bounds (counted): each
+ * round splits every bad tet whose region no earlier one took, so an input it ends on
+ * needs far fewer. */
+#define T3_REFINE_ROUNDS 2000
+
+/* The tet's corners in coordinate order. */
+static void sorted_corners(const t3_ctx *c, lh_index t, const double *q[4])
+{
+    for (int j = 0; j < 4; j++) q[j] = lh__t3_pt(c, c->tv[4 * (size_t)t + j]);
+    for (int a = 1; a < 4; a++)
+        for (int b = a; b > 0 && lh__t3_cmp_xyz(q[b - 1], q[b]) > 0; b--) {
+            const double *x = q[b];
+            q[b] = q[b - 1], q[b - 1] = x;
+        }
+}
+
+/* Worst first; ties by circumcentre, then corners: an order of the geometry alone,
+ * whatever the tets' numbers (so the output does not depend on the input's order). */
+static int cmp_bad(const void *ctx, lh_index i, lh_index j)
+{
+    const t3_refine *r = ctx;
+    const t3_bad *a = r->bad + i, *b = r->bad + j;
+    if (a->key != b->key) return a->key > b->key ? -1 : 1;
+    int s = lh__t3_cmp_xyz(a->cc, b->cc);
+    if (s) return s;
+    const double *p[4], *q[4];
+    sorted_corners(r->c, a->t, p);
+    sorted_corners(r->c, b->t, q);
+    for (int k = 0; k < 4; k++)
+        if ((s = lh__t3_cmp_xyz(p[k], q[k])) != 0) return s;
+    return 0;
+}
+
+/* Tet t's volume bound: the global one, or its region's when smaller (-a); 0 none. */
+static double volume_bound(const t3_refine *r, size_t t)
+{
+    const t3_ctx *c = r->c;
+    double v = c->opt->max_volume > 0 ? c->opt->max_volume : 0;
+    const lh_index reg = r->d.label[t];
+    if (c->opt->region_volumes && reg >= 0 && (size_t)reg < c->g->region_count) {
+        const double rv = c->g->regions[5 * (size_t)reg + 4];
+        if (rv > 0 && (v == 0 || rv < v)) v = rv;
+    }
+    return v;
+}
+
+static lh_status bad_room(t3_refine *r)
+{
+    if (r->bad_count < r->bad_cap) return LH_OK;
+    size_t cap = 2 * r->bad_cap + 64;
+    t3_bad *x = lh__alloc(&r->c->al, cap * sizeof(t3_bad));
+    if (!x) return lh__t3_say(r->c, LH_ERR_NOMEM, 0, "out of memory");
+    if (r->bad_count) memcpy(x, r->bad, r->bad_count * sizeof(t3_bad));
+    lh__free(&r->c->al, r->bad);
+    r->bad = x, r->bad_cap = cap;
+    return LH_OK;
+}
+
+/* The domain's tets over their bounds into r->bad, counted by bound. */
+static lh_status scan(t3_refine *r)
+{
+    t3_ctx *c = r->c;
+    r->bad_count = 0, r->over_ratio = 0, r->over_volume = 0;
+    for (size_t t = 0; t < c->tet_count; t++) {
+        if (r->d.label[t] == T3_OUT) continue;
+        const double *p[4];
+        sorted_corners(c, (lh_index)t, p); /* the same figures whatever the numbering */
+        t3_tet_measure m;
+        lh__t3_tet_measure(p, &m);
+        const double v = volume_bound(r, t);
+        const int over_r = r->ratio > 0 && m.ratio > r->ratio;
+        const int over_v = v > 0 && lh__t3_volume_over(&m, v);
+        if (!over_r && !over_v) continue;
+        r->over_ratio += over_r, r->over_volume += over_v;
+        lh_status st = bad_room(r);
+        if (st != LH_OK) return st;
+        t3_bad *b = r->bad + r->bad_count++;
+        b->t = (lh_index)t;
+        b->key = over_r ? m.ratio / r->ratio : 0;
+        if (over_v) b->key = fmax(b->key, cbrt(m.volume_frac / ldexp(v, -3 * m.scale_exp)));
+        memcpy(b->cc, m.cc, sizeof m.cc);
+        b->spacing = v > 0 ? fmin(r->spacing, cbrt(v) / 4) : r->spacing;
+    }
+    return LH_OK;
+}
+
+/* The subsegments (consecutive points of each segment's chain) into r->sub. */
+static lh_status subsegments(t3_refine *r)
+{
+    t3_ctx *c = r->c;
+    size_t count = c->node_count + c->seg_count, cap = 16;
+    while (cap < 2 * count) cap *= 2;
+    if (cap > r->sub_cap) {
+        lh__free(&c->al, r->sub);
+        if (!(r->sub = lh__alloc(&c->al, 4 * cap * sizeof(lh_index))))
+            return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+        r->sub_cap = cap;
+    }
+    for (size_t i = 0; i < 4 * r->sub_cap; i++) r->sub[i] = -1;
+    for (size_t s = 0; s < c->seg_count; s++) {
+        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
+        lh_status st = lh__t3_room(c, &c->vbuf, &c->vcap, cl);
+        if (st != LH_OK) return st;
+        lh__t3_chain(c, (lh_index)s, c->vbuf, c->vcap);
+        for (size_t i = 0; i + 1 < cl; i++) {
+            lh_index p = c->vbuf[i], q = c->vbuf[i + 1];
+            if (p > q) p = c->vbuf[i + 1], q = c->vbuf[i];
+            size_t h = ((size_t)p * 0x9e3779b1u ^ (size_t)q * 0x85ebca6bu) & (r->sub_cap - 1);
+            while (r->sub[4 * h] >= 0 && !(r->sub[4 * h] == p && r->sub[4 * h + 1] == q))
+                h = (h + 1) & (r->sub_cap - 1);
+            lh_index *e = r->sub + 4 * h;
+            e[0] = p, e[1] = q, e[2] = (lh_index)s, e[3] = (lh_index)i;
+        }
+    }
+    return LH_OK;
+}
+
+/* Half the distance of the input's two closest points (an edge of the mesh, which
+ * holds the Delaunay tetrahedralization's shortest edge... up to flips: the shortest
+ * edge between input points). */
+static void spacing(t3_refine *r)
+{
+    const t3_ctx *c = r->c;
+    static const int e[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    double least = INFINITY;
+    for (size_t t = 0; t < c->tet_count; t++)
+        for (int k = 0; k < 6; k++) {
+            const lh_index a = c->tv[4 * t + (size_t)e[k][0]], b = c->tv[4 * t + (size_t)e[k][1]];
+            if ((size_t)a < c->n_input && (size_t)b < c->n_input)
+                least = fmin(least, lh__t3_dist(lh__t3_pt(c, a), lh__t3_pt(c, b)));
+        }
+    r->spacing = least / 2;
+}
+
+/* Per facet its patch (recover.h: each facet is one patch). */
+static lh_status facet_patches(t3_refine *r)
+{
+    t3_ctx *c = r->c;
+    const size_t nf = c->g->facet_count;
+    r->facet_patch = lh__alloc(&c->al, (nf + 1) * sizeof(lh_index));
+    if (!r->facet_patch) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    for (size_t f = 0; f < nf; f++) r->facet_patch[f] = -1;
+    for (size_t k = 0; k < c->patch_count; k++)
+        if (r->facet_patch[c->patch_facet[k]] < 0) r->facet_patch[c->patch_facet[k]] = (lh_index)k;
+    return LH_OK;
+}
+
+/* One round: the domain, its bad tets, and their points queued; *more = 0 when none
+ * is bad or none could be placed. */
+static lh_status round_once(t3_refine *r, int *more)
+{
+    t3_ctx *c = r->c;
+    *more = 0;
+    lh_status st = lh__t3_walls(c, &r->d);
+    if (st == LH_OK) st = lh__t3_carve(c, &r->d);
+    if (st == LH_OK) st = subsegments(r);
+    if (st == LH_OK) st = scan(r);
+    if (st != LH_OK || r->bad_count == 0) return st;
+    lh_index *idx = lh__alloc(&c->al, 2 * r->bad_count * sizeof(lh_index));
+    lh__free(&c->al, r->claim);
+    r->claim = lh__alloc(&c->al, (c->tet_count + 1) * sizeof(lh_index));
+    if (!idx || !r->claim) {
+        lh__free(&c->al, idx);
+        return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    }
+    memset(r->claim, 0, (c->tet_count + 1) * sizeof(lh_index));
+    r->round = 1;
+    for (size_t i = 0; i < r->bad_count; i++) idx[i] = (lh_index)i;
+    lh__sort_idx(idx, idx + r->bad_count, r->bad_count, cmp_bad, r);
+    for (size_t i = 0; i < r->bad_count && st == LH_OK; i++)
+        st = lh__t3_refine_split(r, r->bad + idx[i]);
+    lh__free(&c->al, idx);
+    *more = c->new_count > 0;
+    return st;
+}
+
+/* The domain's tets over their bounds counted (r->over_*), in the mesh as it is. */
+static lh_status round_count(t3_refine *r)
+{
+    lh_status st = lh__t3_walls(r->c, &r->d);
+    if (st == LH_OK) st = lh__t3_carve(r->c, &r->d);
+    if (st == LH_OK) st = scan(r);
+    lh__t3_domain_free(r->c, &r->d);
+    return st;
+}
+
+/* The points and chains before a round's insertion, to go back to when recovery
+ * fails after it (refinement then stops there, with what is left counted). */
+typedef struct t3_snapshot {
+    size_t n, steiner, node_count, pnode_count;
+    t3_node *node, *pnode;
+} t3_snapshot;
+
+static lh_status snapshot_take(t3_ctx *c, t3_snapshot *s)
+{
+    lh__free(&c->al, s->node);
+    lh__free(&c->al, s->pnode);
+    s->node = lh__alloc(&c->al, (c->node_count + 1) * sizeof(t3_node));
+    s->pnode = lh__alloc(&c->al, (c->pnode_count + 1) * sizeof(t3_node));
+    if (!s->node || !s->pnode) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    memcpy(s->node, c->node, c->node_count * sizeof(t3_node));
+    memcpy(s->pnode, c->pnode, c->pnode_count * sizeof(t3_node));
+    s->n = c->n, s->steiner = c->steiner;
+    s->node_count = c->node_count, s->pnode_count = c->pnode_count;
+    return LH_OK;
+}
+
+/* Back to snapshot s: its points' Delaunay tetrahedralization, chains and caches
+ * (the sides cache is keyed by point numbers, which new points will reuse), then the
+ * boundary recovered as it was before. */
+static lh_status snapshot_restore(t3_ctx *c, const t3_snapshot *s)
+{
+    lh__error_clear(c->err);
+    c->n = s->n, c->steiner = s->steiner, c->new_count = 0;
+    memcpy(c->node, s->node, s->node_count * sizeof(t3_node));
+    memcpy(c->pnode, s->pnode, s->pnode_count * sizeof(t3_node));
+    c->node_count = s->node_count, c->pnode_count = s->pnode_count;
+    for (size_t i = 0; i < c->sides_cap; i++) c->sides[3 * i] = -1;
+    lh_options dopt;
+    lh_options_default(&dopt);
+    dopt.alloc = c->opt->alloc;
+    dopt.threads = c->opt->threads;
+    lh_tri_free(c->dt);
+    c->dt = NULL;
+    lh_status st = lh_delaunay(3, c->n, c->xyz, &dopt, &c->dt);
+    if (st != LH_OK) return lh__t3_say(c, st, 0, "%s", lh_status_message(st));
+    c->dup = lh_tri_duplicate_of(c->dt);
+    st = lh__t3_chains_sort(c);
+    if (st == LH_OK) st = lh__t3_mesh_load(c);
+    if (st == LH_OK) st = lh__t3_stars(c);
+    if (st != LH_OK) return st;
+    lh__t3_forget(c);
+    st = lh__t3_recover(c);
+    return st;
+}
+
+static void refine_free(t3_refine *r)
+{
+    t3_ctx *c = r->c;
+    lh__t3_domain_free(c, &r->d);
+    void *arrays[] = {r->claim, r->sub,      r->facet_patch, r->reg,
+                      r->bad,   r->kept_xyz, r->kept_node,   r->refused};
+    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
+}
+
+/* Rollbacks before refinement stops: each costs a Delaunay tetrahedralization and a
+ * recovery from scratch. */
+#define T3_REFINE_ROLLBACKS 16
+
+/* The round's queue, kept to insert again in part. */
+static lh_status queue_keep(t3_refine *r)
+{
+    t3_ctx *c = r->c;
+    lh__free(&c->al, r->kept_xyz);
+    lh__free(&c->al, r->kept_node);
+    r->kept_xyz = lh__alloc(&c->al, (3 * c->new_count + 1) * sizeof(double));
+    r->kept_node = lh__alloc(&c->al, (c->new_count + 1) * sizeof(t3_node));
+    if (!r->kept_xyz || !r->kept_node) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
+    memcpy(r->kept_xyz, c->new_xyz, 3 * c->new_count * sizeof(double));
+    memcpy(r->kept_node, c->new_node, c->new_count * sizeof(t3_node));
+    r->kept_count = c->new_count;
+    return LH_OK;
+}
+
+/* Inserts the first m points of the kept queue and recovers the boundary; when that
+ * fails (recovery does not settle around them), back to snapshot s, and *ok = 0. */
+static lh_status insert(t3_refine *r, t3_snapshot *s, size_t m, int *ok)
+{
+    t3_ctx *c = r->c;
+    *ok = 0;
+    memcpy(c->new_xyz, r->kept_xyz, 3 * m * sizeof(double));
+    memcpy(c->new_node, r->kept_node, m * sizeof(t3_node));
+    c->new_count = m;
+    lh_status st = lh__t3_commit(c);
+    if (st == LH_OK) st = lh__t3_recover(c);
+    if (st != LH_ERR_STEINER_LIMIT) return *ok = st == LH_OK, st;
+    r->rollbacks++;
+    return snapshot_restore(c, s);
+}
+
+/* The round's points inserted: all of them, else (recovery failing around one) the
+ * first half, quarter, ... in the round's order, worst first; a single point that
+ * fails is refused from then on. *stop when rollbacks ran out. */
+static lh_status insert_round(t3_refine *r, t3_snapshot *s, int *stop)
+{
+    t3_ctx *c = r->c;
+    lh_status st = snapshot_take(c, s);
+    if (st == LH_OK) st = queue_keep(r);
+    int ok = 0;
+    for (size_t m = r->kept_count; st == LH_OK && !ok && m > 0; m /= 2) {
+        if (r->rollbacks == T3_REFINE_ROLLBACKS) return *stop = 1, LH_OK;
+        st = insert(r, s, m, &ok);
+        if (st == LH_OK && !ok && m == 1) st = lh__t3_refuse(r, r->kept_xyz);
+    }
+    return st;
+}
+
+lh_status lh__t3_refine(t3_ctx *c)
+{
+    const lh_tetmesh_options *o = c->opt;
+    if (!(o->max_radius_edge > 0) && !(o->max_volume > 0) && !o->region_volumes) return LH_OK;
+    t3_refine r;
+    memset(&r, 0, sizeof r);
+    r.c = c;
+    r.ratio = o->max_radius_edge > 0 ? o->max_radius_edge : 0;
+    const size_t before = c->steiner;
+    t3_snapshot snap = {0, 0, 0, 0, NULL, NULL};
+    spacing(&r);
+    lh_status st = facet_patches(&r);
+    for (size_t round = 0; st == LH_OK; round++) {
+        int more, stop = 0;
+        st = round_once(&r, &more);
+        lh__t3_domain_free(c, &r.d);
+        if (st != LH_OK || !more) break;
+        if (round == T3_REFINE_ROUNDS || c->steiner + c->new_count > o->max_steiner) {
+            c->new_count = 0;
+            break;
+        }
+        c->rounds++;
+        st = insert_round(&r, &snap, &stop);
+        if (st != LH_OK || stop) {
+            if (st == LH_OK) st = round_count(&r); /* what is left over, as it stands */
+            break;
+        }
+    }
+    lh__free(&c->al, snap.node);
+    lh__free(&c->al, snap.pnode);
+    c->refine_points = c->steiner - before;
+    c->over_volume = r.over_volume;
+    refine_free(&r);
+    return st;
+}

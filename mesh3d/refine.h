@@ -1,0 +1,84 @@
+/*
+ * refine.h — quality refinement of the recovered mesh (docs/meshing3d.md): Shewchuk's
+ * Delaunay refinement ("Tetrahedral mesh generation by Delaunay refinement", SoCG
+ * 1998; Si, TetGen, ACM TOMS 41(2) 2015, sec. 5). A tetrahedron of the domain whose
+ * radius-edge ratio or volume is over its bound is split at its circumcentre, unless
+ * that point encroaches a subsegment (lies inside its diametral sphere) or a subface
+ * (inside its equatorial sphere) or lies beyond a subface: then that subsegment is
+ * split (recover.h: at its midpoint, or on Shewchuk's concentric shells next to an
+ * input vertex), or that subface at its circumcentre — unless that encroaches a
+ * subsegment, which is split instead. The points of a round are inserted together
+ * into the Delaunay tetrahedralization and the boundary recovered again (recover.h),
+ * so each round's mesh is valid and conforming; a round takes each bad tetrahedron
+ * whose circumsphere's conflict region is disjoint from those taken before it (an
+ * independent set, so no two new points crowd each other), worst first.
+ */
+#ifndef LH_REFINE_H
+#define LH_REFINE_H
+
+#include "carve.h"
+#include "tet_geom.h"
+
+/* Point i's coordinates. */
+static inline const double *lh__t3_pt(const t3_ctx *c, lh_index i)
+{
+    return c->xyz + 3 * (size_t)i;
+}
+
+/* Points compared in coordinate order (lexicographic). */
+static inline int lh__t3_cmp_xyz(const double *x, const double *y)
+{
+    for (int k = 0; k < 3; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
+
+/* A tetrahedron over its bound: tet t, how much (the larger of its ratios to the
+ * bounds), its circumcentre. */
+typedef struct t3_bad {
+    lh_index t;
+    double key;
+    double cc[3];
+    double spacing; /* no point that splits it nearer another (refine_split.c) */
+} t3_bad;
+
+typedef struct t3_refine {
+    t3_ctx *c;
+    t3_domain d;
+    double ratio;           /* the radius-edge bound, 0 none                      */
+    double spacing;         /* half the distance of the input's closest points: no
+                                  point refinement adds for the radius-edge bound is
+                                  nearer another (where a volume bound v applies,
+                                  nor nearer than cbrt(v) / 4)                       */
+    double spacing_now;     /* the spacing of the bad tet being split             */
+    lh_index *claim, round; /* per tet: the round a taken point's region holds it */
+    lh_index *sub;          /* subsegments: a hash of (p, q, segment, chain index),
+                                  p < q, 4 per slot (-1: empty); sub_cap slots, a
+                                  power of 2                                         */
+    size_t sub_cap;
+    lh_index *facet_patch; /* per facet: its patch, or -1                        */
+    lh_index *reg;         /* a conflict region: its tets                       */
+    size_t reg_cap, reg_count;
+    t3_bad *bad;
+    size_t bad_count, bad_cap;
+    size_t over_ratio, over_volume; /* tets over the bounds at the last scan          */
+    double *kept_xyz;               /* the round's queue, kept to insert again in part    */
+    t3_node *kept_node;
+    size_t kept_count, rollbacks;
+    double *refused; /* points whose insertion recovery could not settle
+                                  around: 3 each, never queued again                 */
+    size_t refused_count, refused_cap;
+} t3_refine;
+
+/* refine.c: the rounds, until no tet of the domain is over its bound or no point can
+ * be placed; c's statistics then count what is left over. */
+lh_status lh__t3_refine(t3_ctx *c);
+
+/* refine_split.c: point x is never queued again. */
+lh_status lh__t3_refuse(t3_refine *r, const double *x);
+/* refine_split.c: queues the point that splits bad tet b (its circumcentre, or the
+ * subsegment's or subface's point it encroaches), unless its conflict region meets one
+ * taken this round or the point is refused (-Y: nothing on the boundary). */
+lh_status lh__t3_refine_split(t3_refine *r, const t3_bad *b);
+
+#endif

@@ -1,0 +1,123 @@
+/*
+ * tet_geom.c — tetrahedron and triangle measures in floating point (tet_geom.h): the
+ * measures of Shewchuk's Delaunay refinement ("Tetrahedral mesh generation by Delaunay
+ * refinement", SoCG 1998): circumradius over shortest edge, and the dihedral angles.
+ */
+#include "tet_geom.h"
+
+#include <math.h>
+
+static void cross(const double *u, const double *v, double *w)
+{
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+}
+
+static double dot(const double *u, const double *v)
+{
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+/* The power of two e with every |p[i] - p[0]| / 2^e below 2 (at least one at 1 or
+ * more unless all are equal): differences taken halved, so none overflows. */
+static int frame_exp(const double *const *p, int n)
+{
+    double big = 0;
+    for (int i = 1; i < n; i++)
+        for (int k = 0; k < 3; k++) big = fmax(big, fabs(p[i][k] / 2 - p[0][k] / 2));
+    int e;
+    frexp(big, &e);
+    return big > 0 ? e + 1 : 0;
+}
+
+/* (q - p) / 2^e, exact but for the subtraction's rounding. */
+static void rel(const double *q, const double *p, int e, double *out)
+{
+    for (int k = 0; k < 3; k++) out[k] = ldexp(q[k] / 2 - p[k] / 2, 1 - e);
+}
+
+double lh__t3_dist(const double *x, const double *y)
+{
+    const double *p[2] = {x, y};
+    int e = frame_exp(p, 2);
+    double v[3];
+    rel(y, x, e, v);
+    return ldexp(sqrt(dot(v, v)), e);
+}
+
+int lh__t3_in_diametral(const double *a, const double *b, const double *x)
+{
+    const double *p[3] = {x, a, b};
+    int e = frame_exp(p, 3);
+    double u[3], v[3];
+    rel(a, x, e, u), rel(b, x, e, v);
+    return dot(u, v) < 0;
+}
+
+/* The dihedral angle at edge a b between the planes through c and d, as the point
+ * (cos, sin) times a positive factor: atan2(dih[1], dih[0]) is the angle. */
+static void dihedral(const double *a, const double *b, const double *c, const double *d,
+                     double dih[2])
+{
+    double u[3], vc[3], vd[3], nc[3], nd[3], w[3];
+    for (int k = 0; k < 3; k++) u[k] = b[k] - a[k], vc[k] = c[k] - a[k], vd[k] = d[k] - a[k];
+    cross(u, vc, nc), cross(u, vd, nd), cross(nc, nd, w);
+    dih[0] = dot(nc, nd), dih[1] = sqrt(dot(w, w));
+}
+
+void lh__t3_tet_measure(const double *const *p, t3_tet_measure *m)
+{
+    static const int e[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+    const int s = frame_exp(p, 4);
+    double q[4][3];
+    for (int i = 0; i < 4; i++) rel(p[i], p[0], s, q[i]);
+    double shortest = INFINITY, least[2] = {0, 0};
+    for (int i = 0; i < 6; i++) { /* angles compare as their (cos, sin) points turn */
+        double v[3], dih[2];
+        for (int k = 0; k < 3; k++) v[k] = q[e[i][0]][k] - q[e[i][1]][k];
+        shortest = fmin(shortest, sqrt(dot(v, v)));
+        dihedral(q[e[i][0]], q[e[i][1]], q[e[i][2]], q[e[i][3]], dih);
+        if (i == 0 || dih[0] * least[1] - dih[1] * least[0] > 0)
+            least[0] = dih[0], least[1] = dih[1];
+    }
+    /* circumcentre of 0, q1, q2, q3: (|b|^2 c x d + |c|^2 d x b + |d|^2 b x c) / 2 b.(c x d) */
+    double cd[3], db[3], bc[3], num[3];
+    cross(q[2], q[3], cd), cross(q[3], q[1], db), cross(q[1], q[2], bc);
+    for (int k = 0; k < 3; k++)
+        num[k] = dot(q[1], q[1]) * cd[k] + dot(q[2], q[2]) * db[k] + dot(q[3], q[3]) * bc[k];
+    const double vol6 = dot(q[1], cd);
+    for (int k = 0; k < 3; k++) m->cc[k] = p[0][k] + ldexp(num[k] / (2 * vol6), s);
+    const double r = sqrt(dot(num, num)) / fabs(2 * vol6);
+    m->radius = ldexp(r, s);
+    m->shortest = ldexp(shortest, s);
+    m->ratio = vol6 != 0 ? r / shortest : INFINITY;
+    m->volume_frac = fabs(vol6) / 6;
+    m->scale_exp = s;
+    m->min_dihedral = atan2(least[1], least[0]);
+}
+
+int lh__t3_volume_over(const t3_tet_measure *m, double v)
+{
+    return m->volume_frac > ldexp(v, -3 * m->scale_exp);
+}
+
+int lh__t3_tri_circumcentre(const double *a, const double *b, const double *c, double cc[3],
+                            double *radius)
+{
+    const double *p[3] = {a, b, c};
+    const int s = frame_exp(p, 3);
+    double u[3], v[3], n[3], w[3], x[3];
+    rel(b, a, s, u), rel(c, a, s, v);
+    cross(u, v, n);
+    const double nn = dot(n, n);
+    if (!(nn > 0)) return 0;
+    /* a + ((|u|^2 v - |v|^2 u) x n) / (2 |n|^2) */
+    for (int k = 0; k < 3; k++) w[k] = dot(u, u) * v[k] - dot(v, v) * u[k];
+    cross(w, n, x);
+    for (int k = 0; k < 3; k++) x[k] /= 2 * nn;
+    for (int k = 0; k < 3; k++) cc[k] = a[k] + ldexp(x[k], s);
+    *radius = ldexp(sqrt(dot(x, x)), s);
+    return 1;
+}
