@@ -45,28 +45,29 @@ typedef struct t3_bad {
 typedef struct t3_refine {
     t3_ctx *c;
     t3_domain d;
-    double ratio;           /* the radius-edge bound, 0 none                      */
-    double spacing;         /* half the distance of the input's closest points: no
-                                  point refinement adds for the radius-edge bound is
-                                  nearer another (where a volume bound v applies,
-                                  nor nearer than cbrt(v) / 4)                       */
-    double spacing_now;     /* the spacing of the bad tet being split             */
+    double ratio; /* the radius-edge bound, 0 none */
+    /* half the distance of the input's closest points: no point refinement adds for
+       the radius-edge bound is nearer another (where a volume bound v applies, nor
+       nearer than cbrt(v) / 4); the spacing of the bad tet being split */
+    double spacing, spacing_now;
+    int cut;                /* a conflict region of the bad tet being split was too big */
     lh_index *claim, round; /* per tet: the round a taken point's region holds it */
-    lh_index *sub;          /* subsegments: a hash of (p, q, segment, chain index),
-                                  p < q, 4 per slot (-1: empty); sub_cap slots, a
-                                  power of 2                                         */
+    /* subsegments: a hash of (p, q, segment, chain index), p < q, 4 per slot (-1:
+       empty); sub_cap slots, a power of 2 */
+    lh_index *sub;
     size_t sub_cap;
-    lh_index *facet_patch; /* per facet: its patch, or -1                        */
-    lh_index *reg;         /* a conflict region: its tets                       */
+    lh_index *facet_patch; /* per facet: its patch, or -1 */
+    lh_index *reg;         /* a conflict region: its tets */
     size_t reg_cap, reg_count;
     t3_bad *bad;
     size_t bad_count, bad_cap;
-    size_t over_ratio, over_volume; /* tets over the bounds at the last scan          */
-    double *kept_xyz;               /* the round's queue, kept to insert again in part    */
+    size_t over_ratio, over_volume; /* tets over the bounds at the last scan */
+    double *kept_xyz;               /* the round's queue, kept to insert again in part */
     t3_node *kept_node;
     size_t kept_count, rollbacks;
-    double *refused; /* points whose insertion recovery could not settle
-                                  around: 3 each, never queued again                 */
+    /* points whose insertion recovery could not settle around: 3 each, never queued
+       again */
+    double *refused;
     size_t refused_count, refused_cap;
 } t3_refine;
 

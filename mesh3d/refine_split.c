@@ -9,8 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The largest conflict region looked at: a bigger one (a point far from its tet in
- * a mesh flips made far from Delaunay) is cut there. */
+/* The largest conflict region looked at: a point with a bigger one (far from its
+ * tet in a mesh flips made far from Delaunay) is left this round. Whether a region
+ * is that big is of the geometry alone, as the region is. */
 #define T3_REGION_MAX 4096
 
 /* The circumcentre and radius of triangle f, from its corners in coordinate order
@@ -88,7 +89,8 @@ static int in_sphere(t3_ctx *c, size_t t, const double *x)
 
 /* Appends to r->reg the conflict region of x from the tets r->reg[first..]: they
  * and the tets reached across faces that are not blocked whose circumspheres hold x
- * (Bowyer-Watson). A set of the geometry alone, unless cut at T3_REGION_MAX. */
+ * (Bowyer-Watson): a set of the geometry alone. r->cut when it reaches
+ * T3_REGION_MAX tets (then only part of it is gathered). */
 static lh_status grow(t3_refine *r, size_t first, const double *x)
 {
     t3_ctx *c = r->c;
@@ -105,6 +107,7 @@ static lh_status grow(t3_refine *r, size_t first, const double *x)
             r->reg[r->reg_count++] = u;
         }
     }
+    r->cut |= r->reg_count - first >= T3_REGION_MAX;
     return LH_OK;
 }
 
@@ -293,9 +296,10 @@ static int spaced(const t3_refine *r, size_t from, const double *x)
 /* Whether the conflict region r->reg[from..] of the point to insert is free this
  * round: no tet of it in the region of a point taken before; if so it is taken. The
  * round's points are then an independent set, none inside another's circumsphere
- * conflict, so they do not crowd each other. */
+ * conflict, so they do not crowd each other. None when a region was cut. */
 static int take(t3_refine *r, size_t from)
 {
+    if (r->cut) return 0;
     for (size_t i = from; i < r->reg_count; i++)
         if (r->claim[r->reg[i]] == r->round) return 0;
     for (size_t i = from; i < r->reg_count; i++) r->claim[r->reg[i]] = r->round;
@@ -365,7 +369,7 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
 lh_status lh__t3_refine_split(t3_refine *r, const t3_bad *b)
 {
     int hit, j;
-    r->spacing_now = b->spacing;
+    r->spacing_now = b->spacing, r->cut = 0;
     const lh_index u = walk(r, b->t, b->cc, &hit);
     if (u < 0) return LH_OK;
     r->reg_count = 0;

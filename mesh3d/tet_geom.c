@@ -31,10 +31,13 @@ static int frame_exp(const double *const *p, int n)
     return big > 0 ? e + 1 : 0;
 }
 
-/* (q - p) / 2^e, exact but for the subtraction's rounding. */
+/* (q - p) / 2^e, exact but for the subtraction's rounding: the halved difference
+ * times 2^(1-e), a power of two (subnormal only when e is 1024 or 1025, and the
+ * product is then still near 1, so exact). */
 static void rel(const double *q, const double *p, int e, double *out)
 {
-    for (int k = 0; k < 3; k++) out[k] = ldexp(q[k] / 2 - p[k] / 2, 1 - e);
+    const double f = ldexp(1, 1 - e);
+    for (int k = 0; k < 3; k++) out[k] = (q[k] / 2 - p[k] / 2) * f;
 }
 
 double lh__t3_dist(const double *x, const double *y)
