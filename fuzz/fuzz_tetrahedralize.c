@@ -5,7 +5,7 @@
  *           facets may cross and recovery must still end), bit 2 coordinates as int8
  *           (else a 0..3 grid: coplanar, cocircular, cospherical, duplicate points),
  *           bits 3-4 the scale 2^0, 2^200, 2^-200 or 2^40, bit 5 region attributes,
- *           bit 6 -Y (boundary_steiner off);
+ *           bit 6 -Y (boundary_steiner off), bit 7 quality refinement (-q1.414);
  *   byte 1: points, 4 + (byte % 21);
  *   then 3 bytes a point; then facets, each a byte k (3 + k % 3 corners) and k point
  *   numbers (mod n), up to 24; then up to 2 hole points (3 bytes each, grid/2).
@@ -58,6 +58,7 @@ static int decode(const uint8_t *d, size_t size, input *in)
     in->opt.region_attributes = (d[0] >> 5) & 1;
     in->opt.boundary_steiner = !((d[0] >> 6) & 1); /* -Y: interior Steiner points only */
     in->opt.max_steiner = 100; /* bounds the time of recovery that cannot settle */
+    in->opt.max_radius_edge = d[0] >> 7 ? 1.414 : 0;
     int int8 = (d[0] >> 2) & 1, e = scales[(d[0] >> 3) & 3];
     size_t n = 4 + d[1] % 21, at = 2;
     if (size < at + 3 * n) return 0;

@@ -8,6 +8,8 @@
 #include "lh_sort.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Rounds before refinement stops with tets still over their bounds (counted): each
@@ -170,8 +172,11 @@ static lh_status round_once(t3_refine *r, int *more)
     if (st != LH_OK || r->bad_count == 0) return st;
     lh_index *idx = lh__alloc(&c->al, 2 * r->bad_count * sizeof(lh_index));
     lh__free(&c->al, r->claim);
+    lh__free(&c->al, r->claim_by);
     r->claim = lh__alloc(&c->al, (c->tet_count + 1) * sizeof(lh_index));
-    if (!idx || !r->claim) {
+    r->claim_by = lh__alloc(&c->al, (c->tet_count + 1) * sizeof(lh_index));
+    r->taken_count = 0;
+    if (!idx || !r->claim || !r->claim_by) {
         lh__free(&c->al, idx);
         return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     }
@@ -210,8 +215,8 @@ static lh_status snapshot_take(t3_ctx *c, t3_snapshot *s)
     s->node = lh__alloc(&c->al, (c->node_count + 1) * sizeof(t3_node));
     s->pnode = lh__alloc(&c->al, (c->pnode_count + 1) * sizeof(t3_node));
     if (!s->node || !s->pnode) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-    memcpy(s->node, c->node, c->node_count * sizeof(t3_node));
-    memcpy(s->pnode, c->pnode, c->pnode_count * sizeof(t3_node));
+    if (c->node_count) memcpy(s->node, c->node, c->node_count * sizeof(t3_node));
+    if (c->pnode_count) memcpy(s->pnode, c->pnode, c->pnode_count * sizeof(t3_node));
     s->n = c->n, s->steiner = c->steiner;
     s->node_count = c->node_count, s->pnode_count = c->pnode_count;
     return LH_OK;
@@ -224,8 +229,8 @@ static lh_status snapshot_restore(t3_ctx *c, const t3_snapshot *s)
 {
     lh__error_clear(c->err);
     c->n = s->n, c->steiner = s->steiner, c->new_count = 0;
-    memcpy(c->node, s->node, s->node_count * sizeof(t3_node));
-    memcpy(c->pnode, s->pnode, s->pnode_count * sizeof(t3_node));
+    if (s->node_count) memcpy(c->node, s->node, s->node_count * sizeof(t3_node));
+    if (s->pnode_count) memcpy(c->pnode, s->pnode, s->pnode_count * sizeof(t3_node));
     c->node_count = s->node_count, c->pnode_count = s->pnode_count;
     for (size_t i = 0; i < c->sides_cap; i++) c->sides[3 * i] = -1;
     lh_options dopt;
@@ -250,10 +255,15 @@ static void refine_free(t3_refine *r)
 {
     t3_ctx *c = r->c;
     lh__t3_domain_free(c, &r->d);
-    void *arrays[] = {r->claim, r->sub,      r->facet_patch, r->reg,
-                      r->bad,   r->kept_xyz, r->kept_node,   r->refused};
+    void *arrays[] = {r->claim, r->claim_by, r->taken,    r->sub,       r->facet_patch,
+                      r->reg,   r->bad,      r->kept_xyz, r->kept_node, r->refused};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
 }
+
+/* Refinement stops after this many rounds in a row that could split fewer than 1%
+ * of the bad tets: the rounds near small input angles and the spacing, a few points
+ * each, while each costs a recovery of the whole boundary. */
+#define T3_REFINE_STALL 5
 
 /* Rollbacks before refinement stops: each costs a Delaunay tetrahedralization and a
  * recovery from scratch. */
@@ -319,16 +329,23 @@ lh_status lh__t3_refine(t3_ctx *c)
     t3_snapshot snap = {0, 0, 0, 0, NULL, NULL};
     spacing(&r);
     lh_status st = facet_patches(&r);
-    for (size_t round = 0; st == LH_OK; round++) {
+    for (size_t round = 0, stalled = 0; st == LH_OK; round++) {
         int more, stop = 0;
         st = round_once(&r, &more);
         lh__t3_domain_free(c, &r.d);
         if (st != LH_OK || !more) break;
+        stalled = 100 * c->new_count < r.bad_count ? stalled + 1 : 0;
+        if (stalled == T3_REFINE_STALL) {
+            c->new_count = 0;
+            break;
+        }
         if (round == T3_REFINE_ROUNDS || c->steiner + c->new_count > o->max_steiner) {
             c->new_count = 0;
             break;
         }
         c->rounds++;
+        if (getenv("LH_DBG"))
+            fprintf(stderr, "round %zu bad %zu queued %zu\n", round, r.bad_count, c->new_count);
         st = insert_round(&r, &snap, &stop);
         if (st != LH_OK || stop) {
             if (st == LH_OK) st = round_count(&r); /* what is left over, as it stands */

@@ -52,6 +52,9 @@ typedef struct t3_refine {
     double spacing, spacing_now;
     int cut;                /* a conflict region of the bad tet being split was too big */
     lh_index *claim, round; /* per tet: the round a taken point's region holds it */
+    lh_index *claim_by;     /* per claimed tet: the point taken (in taken) */
+    double *taken;          /* the round's points taken: x y z, insertion radius */
+    size_t taken_count, taken_cap;
     /* subsegments: a hash of (p, q, segment, chain index), p < q, 4 per slot (-1:
        empty); sub_cap slots, a power of 2 */
     lh_index *sub;

@@ -6,6 +6,7 @@
  */
 #include "refine.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -276,38 +277,49 @@ static lh_status queue(t3_refine *r, lh_index seg, const double *x)
     return st;
 }
 
-/* Whether x keeps the spacing from every corner of r->reg[from..]'s tets: no
- * nearer than half the input's closest pair, nor (a tet with a volume bound v)
- * than cbrt(v) / 4 (t3_refine.spacing). Every point refinement adds is that far from
- * the points around it, so refinement ends (a bounded domain holds finitely many
- * such points) however small the input's angles; the tets it cannot improve are
- * counted. */
-static int spaced(const t3_refine *r, size_t from, const double *x)
+/* *ok: whether x, with conflict region r->reg[from..], goes in this round. Not when
+ * the region was cut; not nearer a corner of the region than the spacing (half the
+ * input's closest pair, or cbrt(v) / 4 under a volume bound v: t3_refine.spacing),
+ * so that refinement ends however small the input's angles (a bounded domain holds
+ * finitely many points that far apart; the tets it cannot improve are counted); and
+ * not nearer a point taken this round whose region meets x's than the two points'
+ * insertion radii (their distances to the nearest corners of their regions), so the
+ * round's points never crowd each other. If it goes, its region's tets are claimed
+ * for it. */
+static lh_status admit(t3_refine *r, size_t from, const double *x, int *ok)
 {
     const t3_ctx *c = r->c;
-    for (size_t i = from; i < r->reg_count; i++)
+    double near = INFINITY;
+    *ok = 0;
+    for (size_t i = from; i < r->reg_count && !r->cut; i++)
         for (int j = 0; j < 4; j++)
-            if (lh__t3_dist(lh__t3_pt(c, c->tv[4 * (size_t)r->reg[i] + (size_t)j]), x) <
-                r->spacing_now)
-                return 0;
-    return 1;
-}
-
-/* Whether the conflict region r->reg[from..] of the point to insert is free this
- * round: no tet of it in the region of a point taken before; if so it is taken. The
- * round's points are then an independent set, none inside another's circumsphere
- * conflict, so they do not crowd each other. None when a region was cut. */
-static int take(t3_refine *r, size_t from)
-{
-    if (r->cut) return 0;
+            near =
+                fmin(near, lh__t3_dist(lh__t3_pt(c, c->tv[4 * (size_t)r->reg[i] + (size_t)j]), x));
+    if (r->cut || !(near >= r->spacing_now)) return LH_OK;
+    for (size_t i = from; i < r->reg_count; i++) {
+        const lh_index t = r->reg[i];
+        if (r->claim[t] != r->round) continue;
+        const double *q = r->taken + 4 * (size_t)r->claim_by[t];
+        if (lh__t3_dist(q, x) < fmin(near, q[3])) return LH_OK;
+    }
+    if (r->taken_count == r->taken_cap) {
+        size_t cap = 2 * r->taken_cap + 64;
+        double *y = lh__alloc(&r->c->al, 4 * cap * sizeof(double));
+        if (!y) return lh__t3_say(r->c, LH_ERR_NOMEM, 0, "out of memory");
+        if (r->taken_count) memcpy(y, r->taken, 4 * r->taken_count * sizeof(double));
+        lh__free(&r->c->al, r->taken);
+        r->taken = y, r->taken_cap = cap;
+    }
+    double *q = r->taken + 4 * r->taken_count;
+    memcpy(q, x, 3 * sizeof(double)), q[3] = near;
     for (size_t i = from; i < r->reg_count; i++)
-        if (r->claim[r->reg[i]] == r->round) return 0;
-    for (size_t i = from; i < r->reg_count; i++) r->claim[r->reg[i]] = r->round;
-    return 1;
+        r->claim[r->reg[i]] = r->round, r->claim_by[r->reg[i]] = (lh_index)r->taken_count;
+    r->taken_count++;
+    return *ok = 1, LH_OK;
 }
 
-/* Queues the split of subsegment e (its entry in r->sub) if its midpoint is spaced
- * and its conflict region free. */
+/* Queues the split of subsegment e (its entry in r->sub) if its midpoint is
+ * admitted. */
 static lh_status split_seg(t3_refine *r, const lh_index *e)
 {
     t3_ctx *c = r->c;
@@ -317,7 +329,9 @@ static lh_status split_seg(t3_refine *r, const lh_index *e)
     for (int k = 0; k < 3; k++) mid[k] = p[k] / 2 + q[k] / 2;
     const size_t from = r->reg_count;
     lh_status st = conflict_edge(r, e[0], e[1], mid);
-    if (st != LH_OK || !spaced(r, from, mid) || !take(r, from)) return st;
+    int ok = 0;
+    if (st == LH_OK) st = admit(r, from, mid, &ok);
+    if (st != LH_OK || !ok) return st;
     st = lh__t3_split(c, e[2], (size_t)e[3]);
     if (st == LH_OK) unless_refused(r);
     return st == LH_ERR_STEINER_LIMIT ? LH_OK : st; /* no double between its ends: left */
@@ -352,8 +366,9 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
     const lh_index *e = encroached_seg(r, from, x);
     if (e) return split_seg(r, e);
     if (facet < 0) { /* the convex hull's (-c): its circumcentre, in no facet */
-        if (!spaced(r, from, x) || !take(r, from)) return LH_OK;
-        return queue(r, T3_INTERIOR, x);
+        int ok;
+        st = admit(r, from, x, &ok);
+        return st != LH_OK || !ok ? st : queue(r, T3_INTERIOR, x);
     }
     const lh_index k = r->facet_patch[facet];
     if (k < 0) return LH_OK;
@@ -362,8 +377,9 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
         if (e) return split_seg(r, e);
         return LH_OK;
     }
-    if (!spaced(r, from, x) || !take(r, from)) return LH_OK;
-    return queue(r, -1 - k, x);
+    int ok;
+    st = admit(r, from, x, &ok);
+    return st != LH_OK || !ok ? st : queue(r, -1 - k, x);
 }
 
 lh_status lh__t3_refine_split(t3_refine *r, const t3_bad *b)
@@ -380,6 +396,7 @@ lh_status lh__t3_refine_split(t3_refine *r, const t3_bad *b)
     if (hit >= 0) return split_face(r, u, hit);
     lh_index t;
     if (encroached_face(r, b->cc, &t, &j)) return split_face(r, t, j);
-    if (!spaced(r, 0, b->cc) || !take(r, 0)) return LH_OK;
-    return queue(r, T3_INTERIOR, b->cc);
+    int ok;
+    st = admit(r, 0, b->cc, &ok);
+    return st != LH_OK || !ok ? st : queue(r, T3_INTERIOR, b->cc);
 }

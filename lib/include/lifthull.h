@@ -1210,15 +1210,19 @@ typedef struct lh_tetmesh_options {
     int threads;               /* as lh_options.threads (default 1)                 */
     /* Quality refinement (Shewchuk's Delaunay refinement: docs/meshing3d.md). */
     double max_radius_edge;    /* -q: refine until every tetrahedron's circumradius over
-                                  its shortest edge is at most this, except next to
-                                  small input angles (counted in over_radius_edge);
-                                  0: no bound (default); TetGen's -q default is 2;
-                                  below 1: LH_ERR_INVALID_ARGUMENT                  */
+                                  its shortest edge is at most this, except where
+                                  refinement stops (small input angles, no point
+                                  nearer another than half the input's closest pair,
+                                  max_steiner; docs/meshing3d.md): those are counted
+                                  in over_radius_edge; 0: no bound (default);
+                                  TetGen's -q default is 2; below 1:
+                                  LH_ERR_INVALID_ARGUMENT                            */
     double min_dihedral;       /* -q R/D: degrees; the tetrahedra with a smaller
                                   dihedral angle are counted (under_dihedral), not yet
                                   removed (default 0)                                */
     double max_volume;         /* -a V: refine until every tetrahedron's volume is at
-                                  most this; 0: no bound (default)                   */
+                                  most this (strictly; left over: over_volume); 0: no
+                                  bound (default)                                    */
     int region_volumes;        /* -a: each region's volume bound (lh_plc.regions)
                                   applies to its tetrahedra too (default 0)          */
 } lh_tetmesh_options;

@@ -18,6 +18,14 @@ volume() {
          s += d; if (NR == FNR + 0 || min == "" || d < min) min = d }
        END { printf "%g %g\n", s, min }' "$1" "$2"
 }
+# over FILE.node FILE.ele V: how many tetrahedra have a volume over V
+over() {
+  awk -v v="$3" 'FNR == 1 { file++; next } file == 1 { x[$1] = $2; y[$1] = $3; z[$1] = $4; next }
+    { a = $2; ux = x[$3] - x[a]; uy = y[$3] - y[a]; uz = z[$3] - z[a]; vx = x[$4] - x[a]; vy = y[$4] - y[a]
+      vz = z[$4] - z[a]; wx = x[$5] - x[a]; wy = y[$5] - y[a]; wz = z[$5] - z[a]
+      d = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)
+      if (d / 6 > v) n++ } END { print n + 0 }' "$1" "$2"
+}
 
 expect "--help" 0 '' '^usage: lifthull tetgen' -- "$lh" tetgen --help
 expect "no file" 2 '^usage: lifthull tetgen' '' -- "$lh" tetgen -p
@@ -110,12 +118,15 @@ expect "-pa0.01" 0 '' '^box\.1: ' -- "$lh" tetgen -pa0.01VC box.poly
 matches out.txt '^check: the mesh is valid and conforms' && ok || bad "-pa0.01 -C: $(cat out.txt)"
 read -r vol least < <(volume box.1.node box.1.ele)
 same "-pa0.01 volume" "$vol" "6"
-same "-pa0.01 tets at most 0.01" "$(awk 'FNR == 1 { file++; next } file == 1 { x[$1] = $2; y[$1] = $3; z[$1] = $4; next }
-  { a = $2; ux = x[$3] - x[a]; uy = y[$3] - y[a]; uz = z[$3] - z[a]; vx = x[$4] - x[a]; vy = y[$4] - y[a]
-    vz = z[$4] - z[a]; wx = x[$5] - x[a]; wy = y[$5] - y[a]; wz = z[$5] - z[a]
-    d = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)
-    if (d / 6 > 0.01) over++ } END { print over + 0 }' box.1.node box.1.ele)" "0"
+same "-pa0.01 tets at most 0.01" "$(over box.1.node box.1.ele 0.01)" "0"
 same "-pa0.01 refined" "$(awk 'NR == 1 { print ($1 > 100) }' box.1.ele)" "1"
+# -a alone: the region's volume bound (box.poly's region, given 0.005); -A its attribute
+sed 's/^1 0.5 0.5 0.5 7 0$/1 0.5 0.5 0.5 7 0.005/' box.poly > boxr.poly
+expect "-pqaA" 0 '' 'over the volume bound: 0' -- "$lh" tetgen -pqaAVC boxr.poly
+read -r vol least < <(volume boxr.1.node boxr.1.ele)
+same "-pqaA volume" "$vol" "6"
+same "-pqaA tets at most 0.005" "$(over boxr.1.node boxr.1.ele 0.005)" "0"
+same "-pqaA attributes" "$(awk 'NR > 1 { print $6 }' boxr.1.ele | sort -u)" "7"
 expect "-q0.5" 2 '^lifthull tetgen: -q takes a radius-edge bound of 1 or more, not 0\.5$' '' -- \
   "$lh" tetgen -pq0.5 box.poly
 expect "-q1.2/95" 2 '^lifthull tetgen: -q R/D takes a dihedral angle from 0 to 90 degrees, not 95$' '' -- \
