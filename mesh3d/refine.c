@@ -267,7 +267,7 @@ static void refine_free(t3_refine *r)
 
 /* Rollbacks before refinement stops: each costs a Delaunay tetrahedralization and a
  * recovery from scratch. */
-#define T3_REFINE_ROLLBACKS 16
+#define T3_REFINE_ROLLBACKS 4
 
 /* The round's queue, kept to insert again in part. */
 static lh_status queue_keep(t3_refine *r)
