@@ -20,12 +20,7 @@
 /* The tet's corners in coordinate order. */
 static void sorted_corners(const t3_ctx *c, lh_index t, const double *q[4])
 {
-    for (int j = 0; j < 4; j++) q[j] = lh__t3_pt(c, c->tv[4 * (size_t)t + j]);
-    for (int a = 1; a < 4; a++)
-        for (int b = a; b > 0 && lh__t3_cmp_xyz(q[b - 1], q[b]) > 0; b--) {
-            const double *x = q[b];
-            q[b] = q[b - 1], q[b - 1] = x;
-        }
+    lh__t3_sorted_points(c, c->tv + 4 * (size_t)t, 4, q);
 }
 
 /* Worst first; ties by circumcentre, then corners: an order of the geometry alone,
@@ -232,7 +227,7 @@ static lh_status snapshot_restore(t3_ctx *c, const t3_snapshot *s)
     if (s->node_count) memcpy(c->node, s->node, s->node_count * sizeof(t3_node));
     if (s->pnode_count) memcpy(c->pnode, s->pnode, s->pnode_count * sizeof(t3_node));
     c->node_count = s->node_count, c->pnode_count = s->pnode_count;
-    for (size_t i = 0; i < c->sides_cap; i++) c->sides[3 * i] = -1;
+    for (size_t i = 0; c->sides && i < c->sides_cap; i++) c->sides[3 * i] = -1;
     lh_options dopt;
     lh_options_default(&dopt);
     dopt.alloc = c->opt->alloc;

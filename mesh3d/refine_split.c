@@ -19,12 +19,8 @@
  * (the same figures whatever the numbering); 0 when flat. */
 static int face_circumcentre(const t3_ctx *c, const lh_index *f, double cc[3], double *rad)
 {
-    const double *p[3] = {lh__t3_pt(c, f[0]), lh__t3_pt(c, f[1]), lh__t3_pt(c, f[2])};
-    for (int a = 1; a < 3; a++)
-        for (int b = a; b > 0 && lh__t3_cmp_xyz(p[b - 1], p[b]) > 0; b--) {
-            const double *x = p[b];
-            p[b] = p[b - 1], p[b - 1] = x;
-        }
+    const double *p[3];
+    lh__t3_sorted_points(c, f, 3, p);
     return lh__t3_tri_circumcentre(p[0], p[1], p[2], cc, rad);
 }
 
@@ -32,15 +28,8 @@ static int face_circumcentre(const t3_ctx *c, const lh_index *f, double cc[3], d
 static int cmp_simplex(const t3_ctx *c, const lh_index *a, const lh_index *b, int n)
 {
     const double *p[2][3];
-    for (int s = 0; s < 2; s++) {
-        const lh_index *v = s ? b : a;
-        for (int i = 0; i < n; i++) {
-            int j = i;
-            for (; j > 0 && lh__t3_cmp_xyz(p[s][j - 1], lh__t3_pt(c, v[i])) > 0; j--)
-                p[s][j] = p[s][j - 1];
-            p[s][j] = lh__t3_pt(c, v[i]);
-        }
-    }
+    lh__t3_sorted_points(c, a, n, p[0]);
+    lh__t3_sorted_points(c, b, n, p[1]);
     for (int i = 0; i < n; i++) {
         int s = lh__t3_cmp_xyz(p[0][i], p[1][i]);
         if (s) return s;
