@@ -210,6 +210,12 @@ lh_status lh__t3_split(t3_ctx *c, lh_index s, size_t i);
 /* The chain of segment s as point indices: a, its nodes' points in order, b; written
  * into buf as far as cap allows; returns the chain's length. */
 size_t lh__t3_chain(const t3_ctx *c, lh_index s, lh_index *buf, size_t cap);
+/* Calls f(c, p, q, s, i, arg) for every subsegment p q (p < q): subsegment i of
+ * segment s's chain; stops at the first status that is not LH_OK. c->vbuf holds the
+ * chain meanwhile. */
+typedef lh_status (*t3_subsegment_fn)(t3_ctx *c, lh_index p, lh_index q, lh_index s, size_t i,
+                                      void *arg);
+lh_status lh__t3_each_subsegment(t3_ctx *c, t3_subsegment_fn f, void *arg);
 /* Room for m more points in c->xyz. */
 lh_status lh__t3_xyz_room(t3_ctx *c, size_t m);
 /* Inserts the queued split points, merges them into the chains, rebuilds the stars. */

@@ -143,34 +143,19 @@ static lh_status orders(t3_ctx *c)
 
 /* ---- what no flip may remove: the subsegments, the edges of patches recovered ---- */
 
-/* Calls f(c, p, q, arg) for every subsegment p q, p < q. */
-static lh_status each_subsegment(t3_ctx *c, void (*f)(t3_ctx *, lh_index, lh_index, size_t *),
-                                 size_t *arg)
+static lh_status count_lock(t3_ctx *c, lh_index p, lh_index q, lh_index s, size_t i, void *total)
 {
-    for (size_t s = 0; s < c->seg_count; s++) {
-        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
-        lh_status st = lh__t3_room(c, &c->vbuf, &c->vcap, cl);
-        if (st != LH_OK) return st;
-        lh__t3_chain(c, (lh_index)s, c->vbuf, c->vcap);
-        for (size_t i = 0; i + 1 < cl; i++) {
-            lh_index p = c->vbuf[i], q = c->vbuf[i + 1];
-            f(c, p < q ? p : q, p < q ? q : p, arg);
-        }
-    }
+    (void)q, (void)s, (void)i;
+    c->lock_first[p + 1]++;
+    ++*(size_t *)total;
     return LH_OK;
 }
 
-static void count_lock(t3_ctx *c, lh_index p, lh_index q, size_t *total)
+static lh_status put_lock(t3_ctx *c, lh_index p, lh_index q, lh_index s, size_t i, void *unused)
 {
-    (void)q;
-    c->lock_first[p + 1]++;
-    ++*total;
-}
-
-static void put_lock(t3_ctx *c, lh_index p, lh_index q, size_t *unused)
-{
-    (void)unused;
+    (void)s, (void)i, (void)unused;
     c->lock[c->lock_first[p]++] = q;
+    return LH_OK;
 }
 
 /* lock_first and lock: the subsegments by their smaller end (a counting sort). */
@@ -180,10 +165,10 @@ static lh_status locks(t3_ctx *c)
     lh_status st = lh__t3_room(c, &c->lock_first, &c->lock_first_cap, c->n + 1);
     if (st != LH_OK) return st;
     memset(c->lock_first, 0, (c->n + 1) * sizeof(lh_index));
-    if ((st = each_subsegment(c, count_lock, &total)) != LH_OK) return st;
+    if ((st = lh__t3_each_subsegment(c, count_lock, &total)) != LH_OK) return st;
     if ((st = lh__t3_room(c, &c->lock, &c->lock_cap, total + 1)) != LH_OK) return st;
     for (size_t v = 0; v < c->n; v++) c->lock_first[v + 1] += c->lock_first[v];
-    if ((st = each_subsegment(c, put_lock, NULL)) != LH_OK) return st;
+    if ((st = lh__t3_each_subsegment(c, put_lock, NULL)) != LH_OK) return st;
     for (size_t v = c->n; v > 0; v--) c->lock_first[v] = c->lock_first[v - 1];
     c->lock_first[0] = 0;
     return LH_OK;

@@ -30,6 +30,21 @@ size_t lh__t3_chain(const t3_ctx *c, lh_index s, lh_index *buf, size_t cap)
     return len;
 }
 
+lh_status lh__t3_each_subsegment(t3_ctx *c, t3_subsegment_fn f, void *arg)
+{
+    for (size_t s = 0; s < c->seg_count; s++) {
+        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
+        lh_status st = lh__t3_room(c, &c->vbuf, &c->vcap, cl);
+        if (st != LH_OK) return st;
+        lh__t3_chain(c, (lh_index)s, c->vbuf, c->vcap);
+        for (size_t i = 0; i + 1 < cl; i++) {
+            lh_index p = c->vbuf[i], q = c->vbuf[i + 1];
+            if ((st = f(c, p < q ? p : q, p < q ? q : p, (lh_index)s, i, arg)) != LH_OK) return st;
+        }
+    }
+    return LH_OK;
+}
+
 /* The parameter of chain point i of segment s (0 at a, 1 at b). */
 static double chain_t(const t3_ctx *c, lh_index s, size_t i)
 {

@@ -93,6 +93,14 @@ static lh_status scan(t3_refine *r)
     return LH_OK;
 }
 
+static lh_status put_subsegment(t3_ctx *c, lh_index p, lh_index q, lh_index s, size_t i, void *r)
+{
+    (void)c;
+    lh_index *e = lh__t3_sub_slot(r, p, q);
+    e[0] = p, e[1] = q, e[2] = s, e[3] = (lh_index)i;
+    return LH_OK;
+}
+
 /* The subsegments (consecutive points of each segment's chain) into r->sub. */
 static lh_status subsegments(t3_refine *r)
 {
@@ -106,27 +114,11 @@ static lh_status subsegments(t3_refine *r)
         r->sub_cap = cap;
     }
     for (size_t i = 0; i < 4 * r->sub_cap; i++) r->sub[i] = -1;
-    for (size_t s = 0; s < c->seg_count; s++) {
-        size_t cl = (size_t)(c->node_first[s + 1] - c->node_first[s]) + 2;
-        lh_status st = lh__t3_room(c, &c->vbuf, &c->vcap, cl);
-        if (st != LH_OK) return st;
-        lh__t3_chain(c, (lh_index)s, c->vbuf, c->vcap);
-        for (size_t i = 0; i + 1 < cl; i++) {
-            lh_index p = c->vbuf[i], q = c->vbuf[i + 1];
-            if (p > q) p = c->vbuf[i + 1], q = c->vbuf[i];
-            size_t h = ((size_t)p * 0x9e3779b1u ^ (size_t)q * 0x85ebca6bu) & (r->sub_cap - 1);
-            while (r->sub[4 * h] >= 0 && !(r->sub[4 * h] == p && r->sub[4 * h + 1] == q))
-                h = (h + 1) & (r->sub_cap - 1);
-            lh_index *e = r->sub + 4 * h;
-            e[0] = p, e[1] = q, e[2] = (lh_index)s, e[3] = (lh_index)i;
-        }
-    }
-    return LH_OK;
+    return lh__t3_each_subsegment(c, put_subsegment, r);
 }
 
-/* Half the distance of the input's two closest points (an edge of the mesh, which
- * holds the Delaunay tetrahedralization's shortest edge... up to flips: the shortest
- * edge between input points). */
+/* Half the shortest mesh edge between two input points: the input's closest pair,
+ * an edge of the Delaunay tetrahedralization (up to flips, which only lengthen it). */
 static void spacing(t3_refine *r)
 {
     const t3_ctx *c = r->c;

@@ -84,6 +84,16 @@ typedef struct t3_refine {
     size_t refused_count, refused_cap;
 } t3_refine;
 
+/* The slot of subsegment p q (p < q) in r->sub: its entry, else the empty slot where
+ * it goes. */
+static inline lh_index *lh__t3_sub_slot(const t3_refine *r, lh_index p, lh_index q)
+{
+    size_t h = ((size_t)p * 0x9e3779b1u ^ (size_t)q * 0x85ebca6bu) & (r->sub_cap - 1);
+    while (r->sub[4 * h] >= 0 && !(r->sub[4 * h] == p && r->sub[4 * h + 1] == q))
+        h = (h + 1) & (r->sub_cap - 1);
+    return r->sub + 4 * h;
+}
+
 /* refine.c: the rounds, until no tet of the domain is over its bound or no point can
  * be placed; c's statistics then count what is left over. */
 lh_status lh__t3_refine(t3_ctx *c);

@@ -129,14 +129,8 @@ static lh_status conflict_edge(t3_refine *r, lh_index p, lh_index q, const doubl
 /* The subsegment p q's entry (p, q, segment, chain index), or NULL. */
 static const lh_index *sub_find(const t3_refine *r, lh_index p, lh_index q)
 {
-    if (p > q) {
-        lh_index x = p;
-        p = q, q = x;
-    }
-    size_t h = ((size_t)p * 0x9e3779b1u ^ (size_t)q * 0x85ebca6bu) & (r->sub_cap - 1);
-    for (; r->sub[4 * h] >= 0; h = (h + 1) & (r->sub_cap - 1))
-        if (r->sub[4 * h] == p && r->sub[4 * h + 1] == q) return r->sub + 4 * h;
-    return NULL;
+    const lh_index *e = lh__t3_sub_slot(r, p < q ? p : q, p < q ? q : p);
+    return e[0] >= 0 ? e : NULL;
 }
 
 /* Among the edges of r->reg[from..] the subsegment x encroaches first in coordinate
