@@ -146,6 +146,7 @@ typedef struct t3_ctx {
     size_t rcap;
     int made_count;
     size_t flip_budget;         /* edge removals the current constraint may still try */
+    int improving; /* edge removals must make a better worst shape than they take out */
     lh_index gone[2 * T3_GONE]; /* the edges the current constraint's removals took out,
                                    which its later ones do not make again */
     int gone_count;
@@ -307,6 +308,19 @@ lh_status lh__t3_remove_first(t3_ctx *c, size_t ne, int *done);
 lh_status lh__t3_lock(t3_ctx *c, lh_index p, lh_index q);
 /* Whether edge p q is locked: a subsegment, or an edge of a patch flips recovered. */
 int lh__t3_locked(const t3_ctx *c, lh_index p, lh_index q);
+
+/* The locks made afresh: the subsegments of the chains as they are, no other edge. */
+lh_status lh__t3_locks(t3_ctx *c);
+/* lh__t3_shape of the four points taken in coordinate order: the same figure
+ * whatever order they come in. */
+double lh__t3_shape_sorted(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e);
+/* Mesh improvement (improve.c): edge p q of tet t removed when its ring has a
+ * triangulation whose worst tet shape beats the worst of the tets around it now;
+ * never a locked edge. *done says whether. */
+lh_status lh__t3_improve_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int *done);
+/* The 2-3 flip of face j of tet t when the three tets it makes all have a better shape
+ * than the worse of the two it takes out; never a face whose three edges are locked. */
+lh_status lh__t3_improve_face(t3_ctx *c, lh_index t, int j, int *done);
 
 /* recover_flip_patch.c: recovers patch k by flips, when every subsegment is an edge. */
 lh_status lh__t3_flip_patch(t3_ctx *c, size_t k);

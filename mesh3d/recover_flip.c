@@ -19,7 +19,8 @@
  * Delaunay tetrahedralization after each round's insertions, so a round's flips start
  * from the point set alone. Constraints are taken in the order of their points'
  * coordinates, and every choice is geometric, so the result does not depend on the
- * input's order.
+ * input's order. Mesh improvement (improve.c) uses the same edge removal and 2-3
+ * flip, each kept only when the tets it makes beat the worst it takes out.
  */
 #include "recover.h"
 
@@ -98,6 +99,18 @@ static int cmp_point(const double *p, const double *q)
     return 0;
 }
 
+double lh__t3_shape_sorted(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
+{
+    lh_index v[4] = {a, b, d, e};
+    for (int i = 1; i < 4; i++)
+        for (int j = i; j > 0 && cmp_point(pt(c, v[j]), pt(c, v[j - 1])) < 0; j--) {
+            lh_index x = v[j];
+            v[j] = v[j - 1];
+            v[j - 1] = x;
+        }
+    return lh__t3_shape(c, v[0], v[1], v[2], v[3]);
+}
+
 /* The patch's first triangle's corners' coordinates, in coordinate order. */
 static void patch_key(const t3_ctx *c, size_t k, double *key)
 {
@@ -161,6 +174,8 @@ static lh_status put_lock(t3_ctx *c, lh_index p, lh_index q, lh_index s, size_t 
 /* lock_first and lock: the subsegments by their smaller end (a counting sort). */
 static lh_status locks(t3_ctx *c)
 {
+    if (c->xlock_count) memset(c->xlock, 0xff, 2 * c->xlock_cap * sizeof(lh_index));
+    c->xlock_count = 0;
     size_t total = 0;
     lh_status st = lh__t3_room(c, &c->lock_first, &c->lock_first_cap, c->n + 1);
     if (st != LH_OK) return st;
@@ -225,8 +240,9 @@ int lh__t3_locked(const t3_ctx *c, lh_index p, lh_index q)
 /* ---- flips ---- */
 
 /* The 2-3 flip of face j of tet t (opposite its point a) with the tet beyond, whose
- * far point is q: when a q crosses the face's interior. */
-static lh_status flip23(t3_ctx *c, lh_index t, int j, int *done)
+ * far point is q: when a q crosses the face's interior and every new tet's shape is
+ * over floor (at least T3_SLIVER). */
+static lh_status flip23(t3_ctx *c, lh_index t, int j, double floor, int *done)
 {
     *done = 0;
     lh_index u = c->tn[4 * (size_t)t + j];
@@ -240,8 +256,11 @@ static lh_status flip23(t3_ctx *c, lh_index t, int j, int *done)
     int s0 = lh__t3_orient4(c, a, q, f[0], f[1]), s1 = lh__t3_orient4(c, a, q, f[1], f[2]);
     int s2 = lh__t3_orient4(c, a, q, f[2], f[0]);
     if (s0 == 0 || s0 != s1 || s1 != s2) return LH_OK;
-    for (int k = 0; k < 3; k++)
-        if (lh__t3_shape(c, a, q, f[k], f[(k + 1) % 3]) < T3_SLIVER) return LH_OK;
+    for (int k = 0; k < 3; k++) {
+        const double sh = floor > 0 ? lh__t3_shape_sorted(c, a, q, f[k], f[(k + 1) % 3])
+                                    : lh__t3_shape(c, a, q, f[k], f[(k + 1) % 3]);
+        if (sh < T3_SLIVER || sh <= floor) return LH_OK;
+    }
     lh_index old[2] = {t, u};
     lh_index nv[3][4] = {{a, q, f[0], f[1]}, {a, q, f[1], f[2]}, {a, q, f[2], f[0]}};
     return lh__t3_mesh_replace(c, old, 2, nv, 3, done);
@@ -422,6 +441,16 @@ static void search(enum_ctx *e, tris *tr, int (*stack)[2], int top, double worst
     }
 }
 
+/* The worst shape of the tets around the ring's edge (improving: what a removal
+ * must beat). */
+static double ring_worst(t3_ctx *c, const ring *g)
+{
+    double w = INFINITY;
+    for (int i = 0; i + 1 < g->k + g->closed; i++)
+        w = fmin(w, lh__t3_shape(c, g->x, g->y, g->r[i], g->r[(i + 1) % g->k]));
+    return w;
+}
+
 /* Edge removal, below. */
 static lh_status remove_edge_at(t3_ctx *c, lh_index t, lh_index p, lh_index q, int depth,
                                 int *done);
@@ -461,7 +490,7 @@ static lh_status reduce(t3_ctx *c, const ring *g, int depth, int *done)
             lh_index ri = g->r[i], e = way == 1 ? g->x : g->y;
             lh_status st = LH_OK;
             if (way == 0)
-                st = flip23(c, t, slot_of(c->tv + 4 * (size_t)t, r), &flipped);
+                st = flip23(c, t, slot_of(c->tv + 4 * (size_t)t, r), 0, &flipped);
             else /* t holds x, y, r_i-1 and r_i: the edge e r_i */
                 st = remove_edge_at(c, t, e, ri, depth, &flipped);
             if (st == LH_OK && flipped) st = tet_of_edge(c, g->x, g->y, &u);
@@ -505,12 +534,12 @@ static lh_status remove_edge_at(t3_ctx *c, lh_index t, lh_index p, lh_index q, i
     if (!g.closed && lh__t3_orient4(c, p, q, g.r[0], g.r[g.k - 1]) != 0) return LH_OK;
     ring_start(c, &g);
     if (g.k > T3_RING) return depth > 0 ? reduce(c, &g, depth - 1, done) : LH_OK;
-    enum_ctx e = {c, &g, 0, -1, {0, {{0}}}, {{{0}}}, {{{0}}}};
+    enum_ctx e = {c, &g, 0, c->improving ? ring_worst(c, &g) : -1, {0, {{0}}}, {{{0}}}, {{{0}}}};
     memset(e.side, 2, sizeof e.side);
     tris tr = {0, {{0}}};
     int stack[T3_RING][2] = {{0, g.k - 1}};
     search(&e, &tr, stack, 1, INFINITY);
-    if (e.best < 0) return depth > 0 ? reduce(c, &g, depth - 1, done) : LH_OK;
+    if (e.keep.n == 0) return depth > 0 ? reduce(c, &g, depth - 1, done) : LH_OK;
     lh_index nv[2 * (T3_RING - 2)][4];
     for (int i = 0; i < e.keep.n; i++)
         for (int s = 0; s < 2; s++) {
@@ -674,7 +703,7 @@ static lh_status flip_edge(t3_ctx *c, lh_index a, lh_index b, int *edge)
             if (!done) return LH_OK;
             continue;
         }
-        if ((st = flip23(c, t, j, &done)) != LH_OK) return st;
+        if ((st = flip23(c, t, j, 0, &done)) != LH_OK) return st;
         size_t ne = 0;
         for (int k = 0; !done && k < 4; k++) /* a reflex edge of the face */
             for (int m = k + 1; k != j && m < 4; m++)
@@ -768,8 +797,6 @@ lh_status lh__t3_flip(t3_ctx *c)
     if (st == LH_OK) st = locks(c);
     if (st == LH_OK) st = lh__t3_room(c, &c->pmark, &c->pmark_cap, c->n);
     if (st == LH_OK) memset(c->pmark, 0, c->n * sizeof(lh_index)), c->pgen = 0;
-    if (c->xlock_count) memset(c->xlock, 0xff, 2 * c->xlock_cap * sizeof(lh_index));
-    c->xlock_count = 0;
     size_t missing = 0, gained = 1;
     c->flips = 0;
     c->journal = 1;
@@ -783,4 +810,30 @@ lh_status lh__t3_flip(t3_ctx *c)
     if (st != LH_OK || c->flips == 0) return st; /* the stars are the loaded mesh's */
     lh__t3_mesh_compact(c);
     return lh__t3_stars(c);
+}
+
+lh_status lh__t3_locks(t3_ctx *c)
+{
+    return locks(c);
+}
+
+lh_status lh__t3_improve_edge(t3_ctx *c, lh_index t, lh_index p, lh_index q, int *done)
+{
+    c->improving = 1;
+    lh_status st = remove_edge_at(c, t, p, q, 0, done);
+    c->improving = 0;
+    return st;
+}
+
+lh_status lh__t3_improve_face(t3_ctx *c, lh_index t, int j, int *done)
+{
+    const lh_index *tv = c->tv + 4 * (size_t)t, u = c->tn[4 * (size_t)t + j];
+    const lh_index f0 = tv[(j + 1) % 4], f1 = tv[(j + 2) % 4], f2 = tv[(j + 3) % 4];
+    *done = 0;
+    if (u < 0 || (lh__t3_locked(c, f0, f1) && lh__t3_locked(c, f1, f2) && lh__t3_locked(c, f2, f0)))
+        return LH_OK;
+    const lh_index *uv = c->tv + 4 * (size_t)u;
+    const double floor = fmin(lh__t3_shape_sorted(c, tv[0], tv[1], tv[2], tv[3]),
+                              lh__t3_shape_sorted(c, uv[0], uv[1], uv[2], uv[3]));
+    return flip23(c, t, j, floor, done);
 }

@@ -98,6 +98,14 @@ static inline lh_index *lh__t3_sub_slot(const t3_refine *r, lh_index p, lh_index
  * be placed; c's statistics then count what is left over. */
 lh_status lh__t3_refine(t3_ctx *c);
 
+/* improve.c: flips that raise the worst shape among the tets of domain d over the
+ * radius-edge bound ratio (0: none) or under the dihedral bound (radians), each
+ * replacing tets of one region by better ones of the same region, no wall or
+ * subsegment taken out; *flips of them. When any, the mesh is compacted and its stars
+ * rebuilt (d no longer applies). */
+lh_status lh__t3_improve(t3_ctx *c, const t3_domain *d, double ratio, double dihedral,
+                         size_t *flips);
+
 /* refine_split.c: point x is never queued again. */
 lh_status lh__t3_refuse(t3_refine *r, const double *x);
 /* refine_split.c: queues the point that splits bad tet b (its circumcentre, or the
