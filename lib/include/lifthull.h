@@ -1217,9 +1217,10 @@ typedef struct lh_tetmesh_options {
                                   in over_radius_edge; 0: no bound (default);
                                   TetGen's -q default is 2; below 1:
                                   LH_ERR_INVALID_ARGUMENT                            */
-    double min_dihedral;       /* -q R/D: degrees; the tetrahedra with a smaller
-                                  dihedral angle are counted (under_dihedral), not yet
-                                  removed (default 0)                                */
+    double min_dihedral;       /* -q R/D: degrees; after refinement, tetrahedra with
+                                  a smaller dihedral angle (10 when 0) are flipped
+                                  away where flips can; those left under it are
+                                  counted (under_dihedral) (default 0)               */
     double max_volume;         /* -a V: refine until every tetrahedron's volume is at
                                   most this (strictly; left over: over_volume); 0: no
                                   bound (default)                                    */
