@@ -66,19 +66,6 @@ static lh_status lock_walls(t3_ctx *c, const t3_domain *d)
     return LH_OK;
 }
 
-/* The corners of tet t in coordinate order. */
-static void corners(const t3_ctx *c, lh_index t, lh_index *v)
-{
-    memcpy(v, c->tv + 4 * (size_t)t, 4 * sizeof(lh_index));
-    for (int i = 1; i < 4; i++)
-        for (int j = i; j > 0 && lh__t3_cmp_xyz(lh__t3_pt(c, v[j]), lh__t3_pt(c, v[j - 1])) < 0;
-             j--) {
-            lh_index x = v[j];
-            v[j] = v[j - 1];
-            v[j - 1] = x;
-        }
-}
-
 /* The domain's tets over the bounds into m->work, worst shape first. */
 static lh_status gather(t3_improve *m, lh_index **order)
 {
@@ -87,13 +74,14 @@ static lh_status gather(t3_improve *m, lh_index **order)
     for (size_t t = 0; t < c->tet_count; t++) {
         if (c->tv[4 * t] < 0 || m->label[t] == T3_OUT) continue;
         t3_work w = {(lh_index)t, {0}, 0};
-        corners(c, (lh_index)t, w.v);
+        memcpy(w.v, c->tv + 4 * t, sizeof w.v);
+        lh__t3_sort_points(c, w.v, 4); /* the same figures whatever the numbering */
         const double *p[4];
         for (int k = 0; k < 4; k++) p[k] = lh__t3_pt(c, w.v[k]);
         t3_tet_measure q;
         lh__t3_tet_measure(p, &q);
-        w.shape = lh__t3_shape(c, w.v[0], w.v[1], w.v[2], w.v[3]);
         if (!(m->ratio > 0 && q.ratio > m->ratio) && !(q.min_dihedral < m->dihedral)) continue;
+        w.shape = lh__t3_shape(c, w.v[0], w.v[1], w.v[2], w.v[3]);
         if (m->work_count == m->work_cap) {
             size_t cap = 2 * m->work_cap + 64;
             t3_work *x = lh__alloc(&c->al, cap * sizeof(t3_work));

@@ -166,6 +166,32 @@ typedef struct t3_ctx {
     size_t xlock_cap, xlock_count;
 } t3_ctx;
 
+/* Point i's coordinates. */
+static inline const double *lh__t3_pt(const t3_ctx *c, lh_index i)
+{
+    return c->xyz + 3 * (size_t)i;
+}
+
+/* Points compared in coordinate order (lexicographic). */
+static inline int lh__t3_cmp_xyz(const double *x, const double *y)
+{
+    for (int k = 0; k < 3; k++)
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    return 0;
+}
+
+/* Points v[0..n) (a handful) put in coordinate order, in place. */
+static inline void lh__t3_sort_points(const t3_ctx *c, lh_index *v, int n)
+{
+    for (int i = 1; i < n; i++)
+        for (int j = i; j > 0 && lh__t3_cmp_xyz(lh__t3_pt(c, v[j]), lh__t3_pt(c, v[j - 1])) < 0;
+             j--) {
+            lh_index x = v[j];
+            v[j] = v[j - 1];
+            v[j - 1] = x;
+        }
+}
+
 /* Sorts three indices in place (faces compared as sets). */
 static inline void lh__t3_sort3(lh_index *f)
 {

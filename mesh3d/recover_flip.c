@@ -102,12 +102,7 @@ static int cmp_point(const double *p, const double *q)
 double lh__t3_shape_sorted(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e)
 {
     lh_index v[4] = {a, b, d, e};
-    for (int i = 1; i < 4; i++)
-        for (int j = i; j > 0 && cmp_point(pt(c, v[j]), pt(c, v[j - 1])) < 0; j--) {
-            lh_index x = v[j];
-            v[j] = v[j - 1];
-            v[j - 1] = x;
-        }
+    lh__t3_sort_points(c, v, 4);
     return lh__t3_shape(c, v[0], v[1], v[2], v[3]);
 }
 

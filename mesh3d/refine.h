@@ -19,20 +19,6 @@
 #include "carve.h"
 #include "tet_geom.h"
 
-/* Point i's coordinates. */
-static inline const double *lh__t3_pt(const t3_ctx *c, lh_index i)
-{
-    return c->xyz + 3 * (size_t)i;
-}
-
-/* Points compared in coordinate order (lexicographic). */
-static inline int lh__t3_cmp_xyz(const double *x, const double *y)
-{
-    for (int k = 0; k < 3; k++)
-        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
-    return 0;
-}
-
 /* Points v[0..n) (n <= 4) as coordinates, in coordinate order, into p. */
 static inline void lh__t3_sorted_points(const t3_ctx *c, const lh_index *v, int n, const double **p)
 {
