@@ -139,12 +139,11 @@ int lh_cli_mesh3(const lh_cli_mesh3_args *a)
         lh_cli_plc_report(&in, "mesh", &err);
         rc = lh_cli_plc_exit(st);
     } else if (!a->output) {
-        lh_cli_tetmesh_stats(stdout, &in, m);
-        rc = LH_EXIT_OK;
+        rc = lh_cli_tetmesh_stats(stdout, &in, m, "mesh") ? LH_EXIT_OK : LH_EXIT_FAIL;
     } else {
         rc = write_mesh(a, &in, m, kind);
         if (rc == LH_EXIT_OK && !a->quiet) lh_cli_tetmesh_summary(stdout, a->output, m, secs);
-        if (rc == LH_EXIT_OK && a->report) lh_cli_tetmesh_stats(stdout, &in, m);
+        if (rc == LH_EXIT_OK && a->report && !lh_cli_tetmesh_stats(stdout, &in, m, "mesh")) rc = LH_EXIT_FAIL;
     }
     if (rc == LH_EXIT_OK && a->check && !lh_cli_tetmesh_verify(stdout, m, &in, "mesh")) rc = LH_EXIT_FAIL;
     if (rc == LH_EXIT_OK) rc = lh_cli_finish_output("mesh");

@@ -52,7 +52,9 @@ static const char *const usage_text =
     "          exit status 1 when there is one\n"
     "  -C      check the mesh exactly (lh_tetmesh_check) and print the verdict\n"
     "  -Q      quiet; -V statistics (Steiner points by kind, those off their facet by\n"
-    "          rounding, smallest dihedral angle, largest radius-edge ratio)\n"
+    "          rounding, what refinement left over the bounds) and TetGen's quality\n"
+    "          figures: volume, edge, aspect, face and dihedral angle ranges and\n"
+    "          histograms, and a radius-edge ratio histogram\n"
     "  -T[x] -X -M -J   TetGen's tolerance, arithmetic, facet merging and keeping unused\n"
     "          points: accepted, nothing changes (lifthull is exact, never merges facets\n"
     "          and keeps every input point in the .node, in a tetrahedron or not)\n"
@@ -242,7 +244,7 @@ static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *
     outputs w = {o, in, m, o->z ? 0 : in->g.first_index, {0, NULL, NULL}, {0, NULL, NULL}};
     int rc = write_all(&w, path);
     if (rc == LH_EXIT_OK && !o->Q) lh_cli_tetmesh_summary(stdout, outb, m, secs);
-    if (rc == LH_EXIT_OK && o->V) lh_cli_tetmesh_stats(stdout, in, m);
+    if (rc == LH_EXIT_OK && o->V && !lh_cli_tetmesh_stats(stdout, in, m, "tetgen")) rc = LH_EXIT_FAIL;
     if (rc == LH_EXIT_OK && o->C && !lh_cli_tetmesh_verify(stdout, m, in, "tetgen")) rc = LH_EXIT_FAIL;
     lh_tetmesh_free(m);
     if (rc == LH_EXIT_OK) rc = lh_cli_finish_output("tetgen");

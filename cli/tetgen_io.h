@@ -61,7 +61,11 @@ void lh_cli_items_free(lh_cli_items *it);
 
 /* The one-line summary and -V's statistics of a mesh. */
 void lh_cli_tetmesh_summary(FILE *out, const char *name, const lh_tetmesh *m, double secs);
-void lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m);
+int lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m, const char *cmd);
+/* tetmesh_report.c: m's quality figures and histograms (lh_tetmesh_measure) as TetGen's
+ * -V prints them; 0 (after saying why on stderr, as lifthull CMD) when they could not
+ * be computed. */
+int lh_cli_tetmesh_quality(FILE *out, const lh_tetmesh *m, const char *cmd);
 
 /* The Medit .mesh of m (lh_medit_write): point and face markers as references
  * (with markers), the region attributes as the tetrahedra's (with attrs; whole

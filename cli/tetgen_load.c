@@ -215,7 +215,7 @@ void lh_cli_tetmesh_summary(FILE *out, const char *name, const lh_tetmesh *m, do
             lh_tetmesh_point_count(m), s.tets, s.faces, s.steiner_points, secs);
 }
 
-void lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m)
+int lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m, const char *cmd)
 {
     lh_tetmesh_stats s;
     lh_tetmesh_stats_get(m, &s);
@@ -238,4 +238,5 @@ void lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m)
             "  Quality refinement: %zu Steiner points; tetrahedra left over the radius-edge bound: %zu,"
             " over the volume bound: %zu, under the dihedral bound: %zu\n",
             s.refine_points, s.over_radius_edge, s.over_volume, s.under_dihedral);
+    return lh_cli_tetmesh_quality(out, m, cmd);
 }

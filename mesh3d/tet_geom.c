@@ -40,6 +40,13 @@ static void rel(const double *q, const double *p, int e, double *out)
     for (int k = 0; k < 3; k++) out[k] = (q[k] / 2 - p[k] / 2) * f;
 }
 
+int lh__t3_frame(const double *const *p, int n, double (*q)[3])
+{
+    const int e = frame_exp(p, n);
+    for (int i = 0; i < n; i++) rel(p[i], p[0], e, q[i]);
+    return e;
+}
+
 double lh__t3_dist(const double *x, const double *y)
 {
     const double *p[2] = {x, y};
@@ -73,9 +80,8 @@ void lh__t3_tet_measure(const double *const *p, t3_tet_measure *m)
 {
     static const int e[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                 {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-    const int s = frame_exp(p, 4);
     double q[4][3];
-    for (int i = 0; i < 4; i++) rel(p[i], p[0], s, q[i]);
+    const int s = lh__t3_frame(p, 4, q);
     double shortest = INFINITY, least[2] = {0, 0};
     for (int i = 0; i < 6; i++) { /* angles compare as their (cos, sin) points turn */
         double v[3], dih[2];

@@ -31,5 +31,9 @@ int lh__t3_tri_circumcentre(const double *a, const double *b, const double *c, d
 int lh__t3_in_diametral(const double *a, const double *b, const double *x);
 /* |x - y|, without overflow. */
 double lh__t3_dist(const double *x, const double *y);
+/* The points p[0..n) (n <= 4) in a frame at p[0] scaled by 2^-e so that no square
+ * over- or underflows: q[i] = (p[i] - p[0]) / 2^e, each below 2 in every coordinate;
+ * returns e. */
+int lh__t3_frame(const double *const *p, int n, double (*q)[3]);
 
 #endif

@@ -1302,6 +1302,45 @@ typedef struct lh_tetmesh_stats {
 } lh_tetmesh_stats;
 LH_API void lh_tetmesh_stats_get(const lh_tetmesh *m, lh_tetmesh_stats *out);
 
+/* A histogram: count[k] values x with lower[k] <= x < lower[k + 1], the last of the
+ * bins unbounded above (infinity and NaN counted there); lower points to the
+ * library's constant edges. */
+#define LH_HISTOGRAM_MAX 20
+typedef struct lh_histogram {
+    int bins;
+    const double *lower;
+    size_t count[LH_HISTOGRAM_MAX];
+} lh_histogram;
+
+/* The quality figures of a tetrahedral mesh, TetGen's -V's and the radius-edge ratio
+ * (degrees; a flat tetrahedron's aspect and radius-edge ratios are infinite). */
+typedef struct lh_tetmesh_quality {
+    size_t tets, faces;                   /* faces: each face of the mesh once      */
+    double min_volume, max_volume;
+    double min_edge, max_edge;
+    double min_aspect, max_aspect;        /* longest edge over the smallest height  */
+    double min_face_angle, max_face_angle;
+    double min_dihedral, max_dihedral;
+    double min_radius_edge, max_radius_edge; /* circumradius over shortest edge     */
+    lh_histogram radius_edge; /* one per tet: 0 0.7 0.8 0.9 1 1.1 1.2 1.3 1.414 1.5 2
+                                 3 5 10 100                                         */
+    lh_histogram aspect;      /* one per tet: 0 1.5 2 2.5 3 4 6 10 15 25 50 100     */
+    lh_histogram face_angle;  /* three per face: 0 10 20 ... 170                      */
+    lh_histogram dihedral;    /* six per tet: 0 5 10 20 30 40 50 60 70 80 110 120 130
+                                 140 150 160 170 175                                */
+} lh_tetmesh_quality;
+/*
+ * lh_tetmesh_measure: the quality figures of the tetrahedral mesh of n points and
+ * tet_count tetrahedra (4 indices each, any orientation), made by any program (as
+ * lh_tetmesh_check takes it); with no tetrahedra, every figure 0. Floating point:
+ * figures for reports, the same at every power-of-two scale of the points.
+ * Returns LH_OK; LH_ERR_INVALID_ARGUMENT (a NULL array with a count, an index out of
+ * range, a NaN or infinite coordinate), LH_ERR_NOMEM.
+ */
+LH_API lh_status lh_tetmesh_measure(size_t n, const double *xyz, size_t tet_count,
+                                    const lh_index *tets, const lh_allocator *alloc,
+                                    lh_tetmesh_quality *q, lh_error *err);
+
 /*
  * lh_tetmesh_check: exact check of a tetrahedral mesh made by any program — n points,
  * tets (4 indices each), subfaces (3 each), subsegments (2 each): every tetrahedron
