@@ -74,7 +74,16 @@ static const char help[] =
     "  options: --convex-hull, --no-boundary-steiner (no Steiner points on segments\n"
     "  or facets), --max-steiner N, --region-attributes (or --attributes), --check\n"
     "  (lh_tetmesh_check's verdict on the mesh: exit 1 when invalid), --report,\n"
-    "  --quiet (-q), -o, -f, --ascii; the 2D refinement options are refused.\n"
+    "  --quiet (-q), -o, -f, --ascii; the 2D refinement options are refused. Quality\n"
+    "  refinement (TetGen's -q R/D and -a, docs/meshing3d.md):\n"
+    "  --radius-edge R        refine until every tetrahedron's circumradius over its\n"
+    "                         shortest edge is at most R (at least 1), except next to\n"
+    "                         small input angles (--report counts those left)\n"
+    "  --quality              the same with R = 2 (unless --radius-edge is given)\n"
+    "  --min-dihedral D       after refinement, flip away tetrahedra with a dihedral\n"
+    "                         angle under D degrees where flips can (default 10)\n"
+    "  --max-volume V         refine until no tetrahedron's volume is above V\n"
+    "  --region-volumes       the .poly regions' volume bounds apply\n"
     "\n"
     "examples:\n"
     "  lifthull mesh examples/A.poly --min-angle 30       # the quality report\n"
@@ -82,6 +91,7 @@ static const char help[] =
     "  lifthull mesh examples/A.poly --quality -o A.svg -f\n"
     "  lifthull mesh examples/lake.json --min-angle 25 -o lake.node -f  # and .ele .poly\n"
     "  lifthull mesh examples/box.poly -o box.svg -f      # 3D: the boundary, pictured\n"
+    "  lifthull mesh examples/box.poly --quality --max-volume 0.01 -o box.vtu -f\n"
     "\n"
     "exit codes: 0 done (triangles below the bounds are reported, not an error), 1 out\n"
     "of memory or an output file could not be written, 2 usage, 3 bad input file\n"
@@ -92,6 +102,9 @@ typedef struct mesh_args {
     const char *file, *output;
     int force, quiet, report, ignore_holes, quality, angle_given, ascii, check;
     const char *only2d; /* the first option of 2D meshing only, or NULL */
+    const char *only3d; /* the first option of 3D meshing only, or NULL */
+    double radius_edge, min_dihedral, max_volume; /* 3D refinement (0: none) */
+    int region_volumes;
 } mesh_args;
 
 static int usage_error(const char *what, const char *arg)
@@ -122,7 +135,9 @@ static int parse(mesh_args *a, int argc, char **argv)
 {
     memset(a, 0, sizeof *a);
     lh_trimesh_options_default(&a->opt);
-    static const char *const valued[] = {"-o", "--min-angle", "--max-area", "--max-steiner", "--smooth", "--threads"};
+    static const char *const valued[] = {"-o",           "--min-angle",    "--max-area",   "--max-steiner",
+                                         "--smooth",     "--threads",      "--radius-edge", "--min-dihedral",
+                                         "--max-volume"};
     for (int i = 0; i < argc; i++) {
         const char *s = argv[i];
         if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
@@ -141,11 +156,14 @@ static int parse(mesh_args *a, int argc, char **argv)
                 v = argv[++i];
             }
         double x;
-        static const char *const only2d[] = {"--min-angle", "--quality", "--max-area", "--region-areas",
-                                             "--conforming", "--split-crossings", "--no-segment-steiner",
+        static const char *const only2d[] = {"--min-angle",  "--max-area",          "--region-areas",
+                                             "--conforming", "--split-crossings",   "--no-segment-steiner",
                                              "--ignore-holes", "--smooth"};
+        static const char *const only3d[] = {"--radius-edge", "--min-dihedral", "--max-volume", "--region-volumes"};
         for (size_t k = 0; k < sizeof only2d / sizeof only2d[0] && !a->only2d; k++)
             if (!strcmp(s, only2d[k])) a->only2d = only2d[k];
+        for (size_t k = 0; k < sizeof only3d / sizeof only3d[0] && !a->only3d; k++)
+            if (!strcmp(s, only3d[k])) a->only3d = only3d[k];
         if (!strcmp(s, "-o")) a->output = v;
         else if (!strcmp(s, "-f")) a->force = 1;
         else if (!strcmp(s, "-q") || !strcmp(s, "--quiet")) a->quiet = 1;
@@ -154,6 +172,7 @@ static int parse(mesh_args *a, int argc, char **argv)
         else if (!strcmp(s, "--ascii")) a->ascii = 1;
         else if (!strcmp(s, "--quality")) a->quality = 1;
         else if (!strcmp(s, "--region-areas")) a->opt.region_areas = 1;
+        else if (!strcmp(s, "--region-volumes")) a->region_volumes = 1;
         else if (!strcmp(s, "--attributes") || !strcmp(s, "--region-attributes")) a->opt.region_attributes = 1;
         else if (!strcmp(s, "--convex-hull")) a->opt.convex_hull = 1;
         else if (!strcmp(s, "--conforming")) a->opt.conforming = 1;
@@ -166,6 +185,12 @@ static int parse(mesh_args *a, int argc, char **argv)
             a->angle_given = 1;
         } else if (!strcmp(s, "--max-area")) {
             if (!number(s, v, 0, 1e308, 0, &a->opt.max_area)) return -1;
+        } else if (!strcmp(s, "--radius-edge")) {
+            if (!number(s, v, 1, 1e308, 0, &a->radius_edge)) return -1;
+        } else if (!strcmp(s, "--min-dihedral")) {
+            if (!number(s, v, 0, 89, 0, &a->min_dihedral)) return -1;
+        } else if (!strcmp(s, "--max-volume")) {
+            if (!number(s, v, 0, 1e308, 0, &a->max_volume)) return -1;
         } else if (!strcmp(s, "--max-steiner")) {
             if (!number(s, v, 0, 1e15, 1, &x)) return -1;
             a->opt.max_steiner = (size_t)x;
@@ -287,6 +312,10 @@ static int mesh3(const mesh_args *a)
     }
     lh_cli_mesh3_args m = {a->file, a->output, a->force, a->quiet, a->ascii, a->check, a->report, {0}};
     lh_tetmesh_options_default(&m.opt);
+    m.opt.max_radius_edge = a->radius_edge > 0 ? a->radius_edge : a->quality ? 2 : 0; /* TetGen's -q */
+    m.opt.min_dihedral = a->min_dihedral;
+    m.opt.max_volume = a->max_volume;
+    m.opt.region_volumes = a->region_volumes;
     m.opt.convex_hull = a->opt.convex_hull;
     m.opt.boundary_steiner = a->opt.boundary_steiner > 0;
     m.opt.max_steiner = a->opt.max_steiner;
@@ -300,6 +329,10 @@ int lh_cli_mesh(int argc, char **argv)
     int r = parse(&a, argc, argv);
     if (r) return r > 0 ? LH_EXIT_OK : LH_EXIT_USAGE;
     if (lh_cli_plc_is_3d(a.file)) return mesh3(&a);
+    if (a.only3d) {
+        usage_error("3D meshing only (a 2D mesh's bounds are --min-angle and --max-area):", a.only3d);
+        return LH_EXIT_USAGE;
+    }
     if (a.check) {
         usage_error("not implemented for 2D input yet (lifthull check verifies a triangulation):", "--check");
         return LH_EXIT_USAGE;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tetgen_mesh.sh LIFTHULL DATA: `lifthull mesh` with 3D input (DATA = tests/data/tetgen3d)
 # — the statistics without -o; -o by extension: binary and ASCII .vtu, Gmsh 4.1 .msh,
-# Medit .mesh, the .svg picture of the boundary; --check; the 2D-only options and 2D
+# Medit .mesh, the .svg picture of the boundary; --check; quality refinement (--quality,
+# --max-volume, --min-dihedral) and its report; the 2D-only options and 2D
 # formats refused for 3D input (exit 2); bad input (exit 3); outputs never replaced
 # without -f. The 2D command is tests/cli/mesh.sh.
 set -u
@@ -57,6 +58,19 @@ expect "box.poly -o .svg" 0 '' '' -- "$lh" mesh box.poly -o b.svg -q
 same "svg legend markers" "$(grep -o '<text x="[0-9.]*" y="[-0-9.]*">[0-9]</text>' b.svg | sed 's/.*>\([0-9]\)<.*/\1/' | tr '\n' ' ')" \
   "1 2 3 4 5 6 "
 same "svg colours" "$(grep -o '^<path d="[^"]*" fill="#[0-9a-f]*"' b.svg | sed 's/.*fill=//' | sort -u | wc -l | tr -d ' ')" "6"
+# quality refinement (TetGen's -q and -a): the bounds met, the report's figures say so
+expect "box.poly --quality --max-volume" 0 '' '^check: the mesh is valid and conforms to the input' -- \
+  "$lh" mesh box.poly --quality --max-volume 0.01 --min-dihedral 20 --check --report -o q.vtu
+matches out.txt 'left over the radius-edge bound: 0, over the volume bound: 0, under the dihedral bound: 0$' &&
+  ok || bad "--quality: $(grep 'Quality refinement' out.txt)"
+same "--max-volume met" "$(awk '/Largest volume:/ { print ($NF <= 0.01) }' out.txt)" "1"
+# every tetrahedron in one of the 15 bins
+same "radius-edge histogram" "$(awk '/Radius-edge ratio histogram/,/circumradius/' out.txt | grep -o ': *[0-9][0-9]*' |
+  awk '{ n++; s += $2 } END { print n, s }')" "15 $(sed -n 's/^  Mesh tetrahedra: //p' out.txt)"
+expect "--radius-edge below 1" 2 "^lifthull mesh: --radius-edge takes a number from 1 to" '' -- \
+  "$lh" mesh box.poly --radius-edge 0.9
+expect "--max-volume on 2D input" 2 "^lifthull mesh: 3D meshing only .*: '--max-volume'" '' -- \
+  "$lh" mesh "$data/../triangle/A.poly" --max-volume 1
 expect "cube.off -o .msh" 0 '' '^c\.msh: 8 points, 6 tetrahedra' -- "$lh" mesh cube.off -o c.msh
 expect "--no-boundary-steiner --max-steiner 0 --convex-hull" 0 '' '' -- \
   "$lh" mesh cube.off --no-boundary-steiner --max-steiner 0 --convex-hull -o d.msh -q
@@ -65,7 +79,7 @@ cd ..
 
 # refused for 3D input: 2D refinement options and 2D formats (exit 2, nothing written)
 fresh cube.node
-for o in "--min-angle 20" --quality "--max-area 1" --conforming --ignore-holes "--smooth 2"; do
+for o in "--min-angle 20" "--max-area 1" --conforming --ignore-holes "--smooth 2"; do
   # shellcheck disable=SC2086
   expect "$o refused" 2 "^lifthull mesh: 2D meshing only, not implemented for 3D input yet: '${o%% *}'" '' -- \
     "$lh" mesh cube.node $o -o x.vtu
