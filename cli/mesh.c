@@ -70,7 +70,9 @@ static const char help[] =
     "  .mesh  Medit: vertices, boundary triangles with their facet markers and\n"
     "         tetrahedra with their region attributes as references\n"
     "  .svg   a picture: the boundary faces coloured by facet marker, seen from an\n"
-    "         oblique direction\n"
+    "         oblique direction; with --clip the mesh cut through the middle, each\n"
+    "         face coloured by its tetrahedron's smallest dihedral angle, and the\n"
+    "         dihedral angles' histogram\n"
     "  options: --convex-hull, --no-boundary-steiner (no Steiner points on segments\n"
     "  or facets), --max-steiner N, --region-attributes (or --attributes), --check\n"
     "  (lh_tetmesh_check's verdict on the mesh: exit 1 when invalid), --report,\n"
@@ -92,6 +94,7 @@ static const char help[] =
     "  lifthull mesh examples/lake.json --min-angle 25 -o lake.node -f  # and .ele .poly\n"
     "  lifthull mesh examples/box.poly -o box.svg -f      # 3D: the boundary, pictured\n"
     "  lifthull mesh examples/box.poly --quality --max-volume 0.01 -o box.vtu -f\n"
+    "  lifthull mesh examples/box.poly --quality --max-volume 0.01 --clip -o q.svg -f\n"
     "\n"
     "exit codes: 0 done (triangles below the bounds are reported, not an error), 1 out\n"
     "of memory or an output file could not be written, 2 usage, 3 bad input file\n"
@@ -104,7 +107,7 @@ typedef struct mesh_args {
     const char *only2d; /* the first option of 2D meshing only, or NULL */
     const char *only3d; /* the first option of 3D meshing only, or NULL */
     double radius_edge, min_dihedral, max_volume; /* 3D refinement (0: none) */
-    int region_volumes;
+    int region_volumes, clip;
 } mesh_args;
 
 static int usage_error(const char *what, const char *arg)
@@ -159,7 +162,8 @@ static int parse(mesh_args *a, int argc, char **argv)
         static const char *const only2d[] = {"--min-angle",  "--max-area",          "--region-areas",
                                              "--conforming", "--split-crossings",   "--no-segment-steiner",
                                              "--ignore-holes", "--smooth"};
-        static const char *const only3d[] = {"--radius-edge", "--min-dihedral", "--max-volume", "--region-volumes"};
+        static const char *const only3d[] = {"--radius-edge", "--min-dihedral", "--max-volume", "--region-volumes",
+                                             "--clip"};
         for (size_t k = 0; k < sizeof only2d / sizeof only2d[0] && !a->only2d; k++)
             if (!strcmp(s, only2d[k])) a->only2d = only2d[k];
         for (size_t k = 0; k < sizeof only3d / sizeof only3d[0] && !a->only3d; k++)
@@ -173,6 +177,7 @@ static int parse(mesh_args *a, int argc, char **argv)
         else if (!strcmp(s, "--quality")) a->quality = 1;
         else if (!strcmp(s, "--region-areas")) a->opt.region_areas = 1;
         else if (!strcmp(s, "--region-volumes")) a->region_volumes = 1;
+        else if (!strcmp(s, "--clip")) a->clip = 1;
         else if (!strcmp(s, "--attributes") || !strcmp(s, "--region-attributes")) a->opt.region_attributes = 1;
         else if (!strcmp(s, "--convex-hull")) a->opt.convex_hull = 1;
         else if (!strcmp(s, "--conforming")) a->opt.conforming = 1;
@@ -310,7 +315,7 @@ static int mesh3(const mesh_args *a)
         usage_error("2D meshing only, not implemented for 3D input yet:", a->only2d);
         return LH_EXIT_USAGE;
     }
-    lh_cli_mesh3_args m = {a->file, a->output, a->force, a->quiet, a->ascii, a->check, a->report, {0}};
+    lh_cli_mesh3_args m = {a->file, a->output, a->force, a->quiet, a->ascii, a->check, a->report, a->clip, {0}};
     lh_tetmesh_options_default(&m.opt);
     m.opt.max_radius_edge = a->radius_edge > 0 ? a->radius_edge : a->quality ? 2 : 0; /* TetGen's -q */
     m.opt.min_dihedral = a->min_dihedral;

@@ -106,7 +106,7 @@ static int write_mesh(const lh_cli_mesh3_args *a, const lh_cli_plc *in, const lh
         char title[256];
         const char *slash = strrchr(a->file, '/');
         snprintf(title, sizeof title, "lifthull mesh %s", slash ? slash + 1 : a->file);
-        st = lh_cli_tetmesh_svg(out.f, m, title) == 0 ? LH_OK : LH_ERR_IO;
+        st = (a->clip ? lh_cli_tetmesh_svg_clip : lh_cli_tetmesh_svg)(out.f, m, title) == 0 ? LH_OK : LH_ERR_IO;
     }
     }
     if (st != LH_OK && st != LH_ERR_IO && st != LH_ERR_INVALID_ARGUMENT)

@@ -76,6 +76,7 @@ lh_status lh_cli_tetmesh_medit(FILE *f, const lh_tetmesh *m, int markers, int at
 typedef struct lh_cli_mesh3_args {
     const char *file, *output;
     int force, quiet, ascii, check, report;
+    int clip; /* the .svg: the quality picture (lh_cli_tetmesh_svg_clip) */
     lh_tetmesh_options opt;
 } lh_cli_mesh3_args;
 int lh_cli_mesh3(const lh_cli_mesh3_args *a);
@@ -92,5 +93,10 @@ int lh_cli_plc_is_3d(const char *path);
  * seen along a fixed oblique direction, far faces painted first; a legend headed by
  * title. Returns 0, or -1 on a write error or out of memory. */
 int lh_cli_tetmesh_svg(FILE *f, const lh_tetmesh *m, const char *title);
+/* The SVG picture of m's quality (mesh_svg3_clip.c): the mesh cut through the middle,
+ * facing the same view, each face drawn in the colour of its tetrahedron's smallest
+ * dihedral angle, and the dihedral angles' histogram below. Returns as
+ * lh_cli_tetmesh_svg. */
+int lh_cli_tetmesh_svg_clip(FILE *f, const lh_tetmesh *m, const char *title);
 
 #endif

@@ -67,6 +67,15 @@ same "--max-volume met" "$(awk '/Largest volume:/ { print ($NF <= 0.01) }' out.t
 # every tetrahedron in one of the 15 bins
 same "radius-edge histogram" "$(awk '/Radius-edge ratio histogram/,/circumradius/' out.txt | grep -o ': *[0-9][0-9]*' |
   awk '{ n++; s += $2 } END { print n, s }')" "15 $(sed -n 's/^  Mesh tetrahedra: //p' out.txt)"
+# --clip: the quality picture: the faces drawn as the legend counts them, every dihedral
+# angle (six per tetrahedron) in the histogram's 18 bars
+expect "--clip -o .svg" 0 '' '' -- "$lh" mesh box.poly --quality --max-volume 0.01 --clip -o q.svg -q
+same "clip: faces drawn" "$(grep -c '^<path d="M[0-9]* [0-9]*L[0-9]* [0-9]*L[0-9]* [0-9]*Z" fill="#' q.svg)" \
+  "$(sed -n 's/.*cut through the middle (\([0-9]*\) faces drawn).*/\1/p' q.svg)"
+same "clip: histogram" "$(sed -n '/id="histogram"/,/<\/g>/p' q.svg | grep -o '<text x="[0-9]*" y="[0-9]*">[0-9]*</text><text' |
+  sed 's/.*">\([0-9]*\)<.*/\1/' | awk '{ n++; s += $1 } END { print n, s }')" "18 $((6 * 192))"
+expect "--clip on 2D input" 2 "^lifthull mesh: 3D meshing only .*: '--clip'" '' -- \
+  "$lh" mesh "$data/../triangle/A.poly" --clip -o a.svg
 expect "--radius-edge below 1" 2 "^lifthull mesh: --radius-edge takes a number from 1 to" '' -- \
   "$lh" mesh box.poly --radius-edge 0.9
 expect "--max-volume on 2D input" 2 "^lifthull mesh: 3D meshing only .*: '--max-volume'" '' -- \
