@@ -17,6 +17,7 @@
 typedef struct tsw {
     int p, Y, c, A, f, e, n, k, g, z, B, N, E, F, I, Q, V, d, C, S;
     int q, a, a_regions; /* -q[R][/D], -a[V]; -a alone: the regions' bounds */
+    int o2;              /* -o2: second-order nodes */
     double ratio, angle, volume;
     size_t steiner, d_limit;
 } tsw;
@@ -58,7 +59,10 @@ static const char *const usage_text =
     "  -T[x] -X -M -J   TetGen's tolerance, arithmetic, facet merging and keeping unused\n"
     "          points: accepted, nothing changes (lifthull is exact, never merges facets\n"
     "          and keeps every input point in the .node, in a tetrahedron or not)\n"
-    "not implemented yet (refused): -r -m -O -R -i -w -v -o2\n"
+    "  -o2     second-order nodes: a node at every edge's midpoint, in FILE.1.node;\n"
+    "          FILE.1.ele lists 10 per tetrahedron, .face 6 and .edge 3 (TetGen 1.5's\n"
+    "          order); not with -k or -g\n"
+    "not implemented yet (refused): -r -m -O -R -i -w -v\n"
     "\n"
     "examples:\n"
     "  lifthull tetgen -pA examples/box.poly     # examples/box.1.node .ele .face\n"
@@ -128,7 +132,10 @@ static int parse_switches(const char *s, void *opt)
         case 'w': return refuse('w', "weighted Delaunay");
         case 'v': return refuse('v', "the Voronoi diagram");
         case 'o':
-            if (s[j + 1] == '2') return refuse('o', "quadratic elements, -o2");
+            if (s[j + 1] == '2') {
+                o->o2 = 1, j++;
+                break;
+            }
             fprintf(stderr, "lifthull tetgen: -o must be -o2 (quadratic elements), not '%s'\n", s);
             return 0;
         default:
@@ -170,6 +177,14 @@ typedef struct outputs {
     lh_cli_items faces, edges;
 } outputs;
 
+/* The faces (v->k 2) or edges (1) of v: TetGen's .face or .edge, with -o2 their
+ * midpoints too. */
+static lh_status simplices(const outputs *w, FILE *f, const lh_mesh_view *v, const lh_index *markers)
+{
+    if (w->o->o2) return lh_cli_simplex_order2_write(f, w->m, v->count, v->k + 1, v->cells, markers, w->first);
+    return (v->k == 2 ? lh_face_write : lh_edge_write)(f, v, markers, w->first);
+}
+
 static lh_status write_file(const outputs *w, int which, FILE *f)
 {
     const lh_tetmesh *m = w->m;
@@ -181,20 +196,24 @@ static lh_status write_file(const outputs *w, int which, FILE *f)
     case F_NODE:
         return lh_node_marker_write(f, &v, markers && any_marker(m) ? lh_tetmesh_point_markers(m) : NULL,
                                     w->first);
-    case F_ELE: return lh_ele_attr_write(f, &v, w->o->A && w->o->p ? lh_tetmesh_tet_attrs(m) : NULL, w->first);
+    case F_ELE: {
+        const double *attrs = w->o->A && w->o->p ? lh_tetmesh_tet_attrs(m) : NULL;
+        return w->o->o2 ? lh_cli_ele_order2_write(f, m, attrs, w->first) : lh_ele_attr_write(f, &v, attrs, w->first);
+    }
     case F_NEIGH: return lh_neigh_write(f, &v, w->first);
     case F_VTK: return lh_vtk_write(f, &v, w->o->A && w->o->p ? lh_tetmesh_tet_attrs(m) : NULL, NULL);
     case F_FACE:
         v.k = 2;
+        v.neighbors = NULL;
         if (w->o->f) {
-            v.count = w->faces.n, v.cells = w->faces.v, v.neighbors = NULL;
-            return lh_face_write(f, &v, markers ? w->faces.mark : NULL, w->first);
+            v.count = w->faces.n, v.cells = w->faces.v;
+            return simplices(w, f, &v, markers ? w->faces.mark : NULL);
         }
-        v.count = lh_tetmesh_face_count(m), v.cells = lh_tetmesh_faces(m), v.neighbors = NULL;
-        return lh_face_write(f, &v, markers && w->o->p ? lh_tetmesh_face_markers(m) : NULL, w->first);
+        v.count = lh_tetmesh_face_count(m), v.cells = lh_tetmesh_faces(m);
+        return simplices(w, f, &v, markers && w->o->p ? lh_tetmesh_face_markers(m) : NULL);
     case F_EDGE:
         v.k = 1, v.count = w->edges.n, v.cells = w->edges.v, v.neighbors = NULL;
-        return lh_edge_write(f, &v, markers ? w->edges.mark : NULL, w->first);
+        return simplices(w, f, &v, markers ? w->edges.mark : NULL);
     default: return lh_cli_tetmesh_medit(f, m, markers, w->o->A && w->o->p, "tetgen");
     }
 }
@@ -231,6 +250,7 @@ static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *
     if (o->q) opt.max_radius_edge = o->ratio, opt.min_dihedral = o->angle;
     if (o->a) opt.max_volume = o->volume;
     opt.region_volumes = o->a_regions && o->p;
+    opt.second_order = o->o2;
     lh_error err;
     lh_tetmesh *m = NULL;
     const double t0 = lh_cli_seconds();
@@ -323,7 +343,12 @@ int lh_cli_tetgen(int argc, char **argv)
         fprintf(stderr, "lifthull tetgen: -q R/D takes a dihedral angle from 0 to 90 degrees, not %g\n", o.angle);
         return LH_EXIT_USAGE;
     }
-    if (o.a && !(o.volume > 0)) {
+    if (o.o2 && (o.k || o.g)) {
+        fprintf(stderr, "lifthull tetgen: -o2 writes second-order nodes to the .node, .ele, .face and .edge "
+                        "files only, not with -%c (%s)\n", o.k ? 'k' : 'g', o.k ? "VTK" : "Medit");
+        return LH_EXIT_USAGE;
+    }
+        if (o.a && !(o.volume > 0)) {
         fprintf(stderr, "lifthull tetgen: -a takes a volume bound above 0, not %g\n", o.volume);
         return LH_EXIT_USAGE;
     }

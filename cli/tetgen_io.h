@@ -66,6 +66,13 @@ int lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m, c
  * -V prints them; 0 (after saying why on stderr, as lifthull CMD) when they could not
  * be computed. */
 int lh_cli_tetmesh_quality(FILE *out, const lh_tetmesh *m, const char *cmd);
+/* tetgen_order2.c: TetGen's -o2 .ele (10 nodes a row, attrs NULL or one per tet) and
+ * .face/.edge (count simplices v of `corners` 3 or 2 points, then their midpoints,
+ * markers NULL or one each), numbered from first; LH_ERR_IO on a write error,
+ * LH_ERR_INVALID_ARGUMENT when m has no second-order nodes. */
+lh_status lh_cli_ele_order2_write(FILE *f, const lh_tetmesh *m, const double *attrs, int first);
+lh_status lh_cli_simplex_order2_write(FILE *f, const lh_tetmesh *m, size_t count, int corners,
+                                      const lh_index *v, const lh_index *markers, int first);
 
 /* The Medit .mesh of m (lh_medit_write): point and face markers as references
  * (with markers), the region attributes as the tetrahedra's (with attrs; whole

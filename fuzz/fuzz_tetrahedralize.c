@@ -6,7 +6,7 @@
  *           (else a 0..3 grid: coplanar, cocircular, cospherical, duplicate points),
  *           bits 3-4 the scale 2^0, 2^200, 2^-200 or 2^40, bit 5 region attributes,
  *           bit 6 -Y (boundary_steiner off), bit 7 quality refinement (-q1.414);
- *   byte 1: points, 4 + (byte % 21);
+ *   byte 1: points, 4 + (byte % 21); bit 7 second-order nodes;
  *   then 3 bytes a point; then facets, each a byte k (3 + k % 3 corners) and k point
  *   numbers (mod n), up to 24; then up to 2 hole points (3 bytes each, grid/2).
  * It must never crash or leak, and:
@@ -59,6 +59,7 @@ static int decode(const uint8_t *d, size_t size, input *in)
     in->opt.boundary_steiner = !((d[0] >> 6) & 1); /* -Y: interior Steiner points only */
     in->opt.max_steiner = 100; /* bounds the time of recovery that cannot settle */
     in->opt.max_radius_edge = d[0] >> 7 ? 1.414 : 0;
+    in->opt.second_order = d[1] >> 7;
     int int8 = (d[0] >> 2) & 1, e = scales[(d[0] >> 3) & 3];
     size_t n = 4 + d[1] % 21, at = 2;
     if (size < at + 3 * n) return 0;
@@ -104,6 +105,25 @@ static void printable(const char *msg)
         if (*k < 0x20 || *k > 0x7e) abort();
 }
 
+/* The points: the n corners, then with second order one midpoint node per tet edge,
+ * each named alike by lh_tetmesh_tet_midpoints and lh_tetmesh_midpoint. */
+static int second_order_ok(const lh_tetmesh *m, size_t n, int second)
+{
+    static const int e[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
+    const lh_index *tv = lh_tetmesh_tets(m), *mid = lh_tetmesh_tet_midpoints(m);
+    const size_t np = lh_tetmesh_point_count(m), nt = lh_tetmesh_tet_count(m);
+    if (!second) return np == n && !mid;
+    if (np < n || (nt && !mid)) return 0;
+    for (size_t t = 0; t < nt; t++)
+        for (int k = 0; k < 6; k++) {
+            const lh_index x = mid[6 * t + k];
+            if (x < (lh_index)n || (size_t)x >= np ||
+                x != lh_tetmesh_midpoint(m, tv[4 * t + e[k][1]], tv[4 * t + e[k][0]]))
+                return 0;
+        }
+    return 1;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static input in;
@@ -117,7 +137,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (st == LH_OK) {
         lh_tetmesh_stats s;
         lh_tetmesh_stats_get(m, &s);
-        if (lh_tetmesh_point_count(m) != in.g.n + s.steiner_points) abort();
+        if (!second_order_ok(m, in.g.n + s.steiner_points, in.opt.second_order)) abort();
+        lh_tetmesh_quality q;
+        if (lh_tetmesh_measure(lh_tetmesh_point_count(m), lh_tetmesh_points(m), lh_tetmesh_tet_count(m),
+                               lh_tetmesh_tets(m), &al, &q, &err) != LH_OK ||
+            q.tets != lh_tetmesh_tet_count(m))
+            abort();
         if (!in.opt.boundary_steiner && s.steiner_on_segments + s.steiner_on_facets) abort();
         size_t off = 0, pairs = 0;
         lh_error cerr;

@@ -149,6 +149,10 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
     m->stats.refine_points = c->refine_points;
     m->stats.over_volume = c->over_volume;
     lh__tetmesh_quality(m, c->opt->max_radius_edge, c->opt->min_dihedral);
+    if (c->opt->second_order && (st = lh__tetmesh_second_order(m)) != LH_OK) {
+        lh_tetmesh_free(m);
+        return lh__t3_say(c, st, 0, st == LH_ERR_NOMEM ? "out of memory" : "too many second-order nodes");
+    }
     *out = m;
     return LH_OK;
 }

@@ -522,6 +522,68 @@ LH_TEST(quality_figures)
     lh_plc_free(&g);
 }
 
+/* second_order: the same tets; one node per edge of the tets, at its midpoint, named
+ * by lh_tetmesh_tet_midpoints and lh_tetmesh_midpoint alike; a subsegment's midpoint
+ * carries its marker; the mesh with the nodes still checks. */
+static size_t distinct_edges(const lh_tetmesh *m)
+{
+    static const int e[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
+    const size_t nt = lh_tetmesh_tet_count(m);
+    const lh_index *tv = lh_tetmesh_tets(m);
+    lh_index *key = malloc((6 * nt + 1) * 2 * sizeof *key);
+    size_t count = 0;
+    for (size_t t = 0; key && t < nt; t++)
+        for (int k = 0; k < 6; k++) {
+            lh_index a = tv[4 * t + e[k][0]], b = tv[4 * t + e[k][1]], j;
+            if (a > b) j = a, a = b, b = j;
+            size_t i = 0;
+            while (i < count && !(key[2 * i] == a && key[2 * i + 1] == b)) i++; /* brute force */
+            if (i == count) key[2 * count] = a, key[2 * count + 1] = b, count++;
+        }
+    free(key);
+    return count;
+}
+
+LH_TEST(second_order_nodes)
+{
+    static const int e[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
+    lh_plc g;
+    LH_ASSERT_TRUE(read_plc("mesh3d/hole.off", &g));
+    lh_tetmesh_options opt;
+    lh_tetmesh_options_default(&opt);
+    lh_tetmesh *lin = NULL, *m = NULL;
+    LH_ASSERT_EQ_INT(lh_tetrahedralize(&g, &opt, &lin, NULL), LH_OK);
+    opt.second_order = 1;
+    LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &opt, &m, NULL), LH_OK);
+    if (m) {
+        const size_t n = lh_tetmesh_point_count(lin), nt = lh_tetmesh_tet_count(m);
+        const double *xyz = lh_tetmesh_points(m);
+        const lh_index *tv = lh_tetmesh_tets(m), *mid = lh_tetmesh_tet_midpoints(m);
+        LH_EXPECT_TRUE(same_tets(lin, m));
+        LH_EXPECT_EQ_U64(lh_tetmesh_point_count(m), n + distinct_edges(m));
+        LH_EXPECT_TRUE(lh_tetmesh_tet_midpoints(lin) == NULL && lh_tetmesh_midpoint(lin, tv[0], tv[1]) == -1);
+        size_t bad = 0;
+        for (size_t t = 0; t < nt; t++)
+            for (int k = 0; k < 6; k++) {
+                const lh_index a = tv[4 * t + e[k][0]], b = tv[4 * t + e[k][1]], x = mid[6 * t + k];
+                bad += x < (lh_index)n || x != lh_tetmesh_midpoint(m, b, a);
+                for (int j = 0; j < 3; j++)
+                    bad += xyz[3 * x + j] != 0.5 * xyz[3 * a + j] + 0.5 * xyz[3 * b + j];
+            }
+        LH_EXPECT_EQ_U64(bad, 0);
+        LH_EXPECT_EQ_INT(lh_tetmesh_midpoint(m, 0, 0), -1);
+        const lh_index *se = lh_tetmesh_edges(m), *sm = lh_tetmesh_edge_markers(m);
+        const lh_index *pm = lh_tetmesh_point_markers(m);
+        for (size_t s = 0; s < lh_tetmesh_edge_count(m); s++) bad += pm[lh_tetmesh_midpoint(m, se[2 * s], se[2 * s + 1])] != sm[s];
+        LH_EXPECT_EQ_U64(bad, 0);
+        lh_error err;
+        LH_EXPECT_EQ_INT(check(m, &g, 0, &err), LH_OK);
+    }
+    lh_tetmesh_free(lin);
+    lh_tetmesh_free(m);
+    lh_plc_free(&g);
+}
+
 /* Scaled by 2^-900, 2^-200, 2^200 or 2^900 (exact), a model meshes to the scaled
  * mesh: the same tets as sets, every coordinate times the factor. */
 LH_TEST(scale_does_not_matter)
@@ -566,6 +628,7 @@ int main(int argc, char **argv)
                                          LH_CASE(a_million_copies_of_one_triangle),
                                          LH_CASE(scale_does_not_matter),
                                          LH_CASE(quality_figures),
+                                         LH_CASE(second_order_nodes),
                                          LH_CASE(quality_refinement)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -1226,6 +1226,9 @@ typedef struct lh_tetmesh_options {
                                   bound (default)                                    */
     int region_volumes;        /* -a: each region's volume bound (lh_plc.regions)
                                   applies to its tetrahedra too (default 0)          */
+    int second_order;          /* -o2: a node at the midpoint of every tetrahedron's
+                                  edge, appended to the points
+                                  (lh_tetmesh_tet_midpoints) (default 0)             */
 } lh_tetmesh_options;
 LH_API void lh_tetmesh_options_default(lh_tetmesh_options *opt);
 
@@ -1255,7 +1258,9 @@ LH_API lh_status lh_tetrahedralize(const lh_plc *g, const lh_tetmesh_options *op
 LH_API void lh_tetmesh_free(lh_tetmesh *m);
 
 /* Points: the PLC's first (merged duplicates too, in no tetrahedron), then the Steiner
- * points; markers: a point's own, else its facet's or segment's, else 0. */
+ * points, then with second_order the edges' midpoints (in the order of their
+ * edges' endpoints); markers: a point's own, else its facet's or segment's (a
+ * midpoint: its subsegment's, else its subface's), else 0. */
 LH_API size_t lh_tetmesh_point_count(const lh_tetmesh *m);
 LH_API const double *lh_tetmesh_points(const lh_tetmesh *m);          /* 3 per point  */
 LH_API const lh_index *lh_tetmesh_point_markers(const lh_tetmesh *m); /* 1 per point  */
@@ -1265,6 +1270,12 @@ LH_API size_t lh_tetmesh_tet_count(const lh_tetmesh *m);
 LH_API const lh_index *lh_tetmesh_tets(const lh_tetmesh *m);
 LH_API const lh_index *lh_tetmesh_neighbors(const lh_tetmesh *m);
 LH_API const double *lh_tetmesh_tet_attrs(const lh_tetmesh *m); /* -A: 1 per tet; or NULL */
+/* second_order: each tetrahedron's 6 edge midpoint nodes, of its corners (0 1) (1 2)
+ * (0 2) (0 3) (1 3) (2 3) (VTK's quadratic tetrahedron); NULL without. The midpoint
+ * node of edge a b (any edge of a tetrahedron, subfaces' and subsegments' too), or
+ * -1 (not an edge, or no second_order). */
+LH_API const lh_index *lh_tetmesh_tet_midpoints(const lh_tetmesh *m);
+LH_API lh_index lh_tetmesh_midpoint(const lh_tetmesh *m, lh_index a, lh_index b);
 /* Subfaces: the triangles on facets and on the domain's boundary, 3 points each,
  * ordered so that (a, b, c, apex) is positively oriented for the apex of the first
  * tetrahedron beside it: the normal (b-a) x (c-a) points into it (on the domain's

@@ -132,6 +132,27 @@ expect "-q0.5" 2 '^lifthull tetgen: -q takes a radius-edge bound of 1 or more, n
 expect "-q1.2/95" 2 '^lifthull tetgen: -q R/D takes a dihedral angle from 0 to 90 degrees, not 95$' '' -- \
   "$lh" tetgen -pq1.2/95 box.poly
 expect "-a0" 2 '^lifthull tetgen: -a takes a volume bound above 0, not 0$' '' -- "$lh" tetgen -pa0 box.poly
+# -o2: a node at every edge's midpoint; .ele rows of 10 (TetGen 1.5's order: edges 2-3
+# 0-3 0-1 1-2 1-3 0-2), .face of 6 (opposite corners 0 1 2), .edge of 3; the same tets
+expect "-pq1.2" 0 '' '' -- "$lh" tetgen -pq1.2Q box.poly
+cp box.1.ele linear.ele
+expect "-pq1.2o2fe" 0 '' '^check: the mesh is valid' -- "$lh" tetgen -pq1.2o2feQC box.poly
+same "-o2 corners" "$(awk 'NR > 1 { print $1, $2, $3, $4, $5 }' box.1.ele | md5sum)" \
+  "$(awk 'NR > 1 { print $1, $2, $3, $4, $5 }' linear.ele | md5sum)"
+same "-o2 headers" "$(head -1 box.1.ele | awk '{ print $2 }') $(awk 'FNR == 2 { print NF }' box.1.face box.1.edge | tr '\n' ' ')" \
+  "10 8 5 "
+# every extra node at its edge's midpoint (coordinates of the .node)
+midpoints() { # FILE CORNERS PAIRS...: rows whose extra nodes are not the midpoints of PAIRS
+  awk -v c="$2" -v pairs="$3" 'FNR == 1 { next } NR == FNR { x[$1] = $2; y[$1] = $3; z[$1] = $4; next }
+    { n = split(pairs, p, " "); for (i = 1; i <= n; i++) { split(p[i], e, "-"); a = $(e[1] + 2); b = $(e[2] + 2); m = $(c + 1 + i)
+        if (x[m] != (x[a] + x[b]) / 2 || y[m] != (y[a] + y[b]) / 2 || z[m] != (z[a] + z[b]) / 2) bad++ } }
+    END { print bad + 0 }' box.1.node "$1"
+}
+same "-o2 .ele midpoints" "$(midpoints box.1.ele 4 '2-3 0-3 0-1 1-2 1-3 0-2')" "0"
+same "-o2 .face midpoints" "$(midpoints box.1.face 3 '1-2 0-2 0-1')" "0"
+same "-o2 .edge midpoints" "$(midpoints box.1.edge 2 '0-1')" "0"
+same "-o2 nodes" "$(head -1 box.1.node | awk '{ print $1 }')" \
+  "$(awk 'NR > 1 { for (i = 2; i <= 11; i++) print $i }' box.1.ele | sort -u | wc -l | tr -d ' ')"
 cd ..
 
 # refused: TetGen switches lifthull does not have yet, unknown switches, a signed -S
@@ -143,8 +164,8 @@ expect "-O2/7 refused" 2 '^lifthull tetgen: -O \(mesh optimisation\) is not impl
 for s in m R i w v; do
   expect "-$s refused" 2 "^lifthull tetgen: -$s \(.*\) is not implemented yet" '' -- "$lh" tetgen "-$s" cube.node
 done
-expect "-o2 refused" 2 '^lifthull tetgen: -o \(quadratic elements, -o2\) is not implemented yet' '' -- \
-  "$lh" tetgen -o2 cube.node
+expect "-o2k refused" 2 '^lifthull tetgen: -o2 writes second-order nodes to the \.node, \.ele, \.face and \.edge files only, not with -k \(VTK\)$' '' -- \
+  "$lh" tetgen -o2k cube.node
 expect "-o3" 2 "^lifthull tetgen: -o must be -o2 \(quadratic elements\), not '-o3'$" '' -- "$lh" tetgen -o3 cube.node
 expect "unknown switch" 2 "^lifthull tetgen: unknown switch 'u' in '-pu' \(see --help\)$" '' -- "$lh" tetgen -pu cube.node
 expect "-S-1" 2 "^lifthull tetgen: -S takes a count of Steiner points \(0 or more\), not '-1'$" '' -- \
