@@ -8,8 +8,6 @@
 #include "lh_sort.h"
 
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 /* Rounds before refinement stops with tets still over their bounds (counted): each
@@ -353,8 +351,6 @@ lh_status lh__t3_refine(t3_ctx *c)
             break;
         }
         c->rounds++;
-        if (getenv("LH_DBG"))
-            fprintf(stderr, "round %zu bad %zu queued %zu\n", round, r.bad_count, c->new_count);
         st = insert_round(&r, &snap, &stop);
         if (st != LH_OK || stop) {
             if (st == LH_OK) st = round_count(&r); /* what is left over, as it stands */
