@@ -66,6 +66,9 @@ int lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m, c
  * -V prints them; 0 (after saying why on stderr, as lifthull CMD) when they could not
  * be computed. */
 int lh_cli_tetmesh_quality(FILE *out, const lh_tetmesh *m, const char *cmd);
+/* tetmesh_report.c: the tets refinement left over its bounds, counted by why, the worst
+ * `limit` listed (lh_tetmesh_leftovers), numbered from first; nothing when none. */
+void lh_cli_tetmesh_leftovers(FILE *out, const lh_tetmesh *m, size_t limit, int first);
 /* tetgen_order2.c: TetGen's -o2 .ele (10 nodes a row, attrs NULL or one per tet) and
  * .face/.edge (count simplices v of `corners` 3 or 2 points, then their midpoints,
  * markers NULL or one each), numbered from first; LH_ERR_IO on a write error,

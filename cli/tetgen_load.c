@@ -238,5 +238,6 @@ int lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m, c
             "  Quality refinement: %zu Steiner points; tetrahedra left over the radius-edge bound: %zu,"
             " over the volume bound: %zu, under the dihedral bound: %zu\n",
             s.refine_points, s.over_radius_edge, s.over_volume, s.under_dihedral);
+    lh_cli_tetmesh_leftovers(out, m, 20, in->g.first_index);
     return lh_cli_tetmesh_quality(out, m, cmd);
 }

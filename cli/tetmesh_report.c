@@ -32,6 +32,49 @@ static void pair(FILE *out, const char *lo_name, double lo, const char *hi_name,
     fprintf(out, "  %-22s %13.6g   |  %-20s %13.6g\n", lo_name, lo, hi_name, hi);
 }
 
+/* Why each leftover was left, in words (lh_leftover_why). */
+static const char *why_text(int why)
+{
+    switch (why) {
+    case LH_LEFT_SPACING: return "its split point falls nearer another point than refinement's spacing";
+    case LH_LEFT_BOUNDARY: return "its split point lies on the boundary (-Y)";
+    case LH_LEFT_FACET: return "the subface to split has its circumcentre outside its facet";
+    case LH_LEFT_REFUSED: return "recovery could not settle around its split point";
+    case LH_LEFT_REGION: return "its split point's conflict region is too large";
+    case LH_LEFT_STOPPED: return "refinement stopped before its turn (-S or the rounds' limits)";
+    default: return "made by the sliver flips after refinement";
+    }
+}
+
+void lh_cli_tetmesh_leftovers(FILE *out, const lh_tetmesh *m, size_t limit, int first)
+{
+    size_t n, by[LH_LEFT_FLIPS + 1] = {0};
+    const lh_tetmesh_leftover *l = lh_tetmesh_leftovers(m, &n);
+    if (!n) return;
+    const lh_index *tv = lh_tetmesh_tets(m);
+    fprintf(out, "\n  Tetrahedra left over the bounds: %zu\n", n);
+    for (size_t i = 0; i < n; i++) by[l[i].why]++;
+    for (int w = LH_LEFT_SPACING; w <= LH_LEFT_FLIPS; w++)
+        if (by[w]) fprintf(out, "    %zu: %s\n", by[w], why_text(w));
+    fprintf(out, "  the worst %zu (radius-edge ratio; tetrahedron: points; why; the nearest input angle below 60 "
+                 "degrees, in the tetrahedron's shortest edges from it):\n", n < limit ? n : limit);
+    for (size_t i = 0; i < n && i < limit; i++) {
+        const lh_index *v = tv + 4 * (size_t)l[i].tet;
+        fprintf(out, "    %.4g; %lld: %lld %lld %lld %lld; %s", l[i].radius_edge, (long long)l[i].tet + first,
+                (long long)v[0] + first, (long long)v[1] + first, (long long)v[2] + first, (long long)v[3] + first,
+                why_text(l[i].why));
+        if (l[i].over & 2) fprintf(out, " (over the volume bound)");
+        if (l[i].angle_kind == 1)
+            fprintf(out, "; %.3g degrees between segments at point %lld, %.3g away\n", l[i].angle,
+                    (long long)l[i].angle_at[0] + first, l[i].distance);
+        else if (l[i].angle_kind == 2)
+            fprintf(out, "; %.3g degrees between facets along segment %lld-%lld, %.3g away\n", l[i].angle,
+                    (long long)l[i].angle_at[0] + first, (long long)l[i].angle_at[1] + first, l[i].distance);
+        else
+            fprintf(out, "; no input angle below 60 degrees\n");
+    }
+}
+
 int lh_cli_tetmesh_quality(FILE *out, const lh_tetmesh *m, const char *cmd)
 {
     lh_tetmesh_quality q;

@@ -17,6 +17,7 @@ void lh__tetmesh_quality(lh_tetmesh *m, double ratio_bound, double dih_bound)
     for (size_t t = 0; t < m->tet_count; t++) {
         const double *p[4];
         for (int j = 0; j < 4; j++) p[j] = m->xyz + 3 * (size_t)m->tets[4 * t + j];
+        lh__t3_sort_corners(p, 4); /* as refinement measures: the same figures */
         t3_tet_measure q;
         lh__t3_tet_measure(p, &q);
         min_dih = fmin(min_dih, q.min_dihedral);

@@ -87,6 +87,8 @@ static lh_status scan(t3_refine *r)
         if (over_v) b->key = fmax(b->key, cbrt(m.volume_frac / ldexp(v, -3 * m.scale_exp)));
         memcpy(b->cc, m.cc, sizeof m.cc);
         b->spacing = v > 0 ? fmin(r->spacing, cbrt(v) / 4) : r->spacing;
+        b->why = LH_LEFT_STOPPED; /* until its split is tried */
+        b->over = over_r | over_v << 1;
     }
     return LH_OK;
 }
@@ -169,8 +171,10 @@ static lh_status round_once(t3_refine *r, int *more)
     r->round = 1;
     for (size_t i = 0; i < r->bad_count; i++) idx[i] = (lh_index)i;
     lh__sort_idx(idx, idx + r->bad_count, r->bad_count, cmp_bad, r);
-    for (size_t i = 0; i < r->bad_count && st == LH_OK; i++)
+    for (size_t i = 0; i < r->bad_count && st == LH_OK; i++) {
         st = lh__t3_refine_split(r, r->bad + idx[i]);
+        r->bad[idx[i]].why = r->why;
+    }
     lh__free(&c->al, idx);
     *more = c->new_count > 0;
     return st;
@@ -357,6 +361,7 @@ lh_status lh__t3_refine(t3_ctx *c)
             break;
         }
     }
+    if (st == LH_OK) st = lh__t3_left_record(c, r.bad, r.bad_count);
     if (st == LH_OK) st = improve_final(&r);
     lh__free(&c->al, snap.node);
     lh__free(&c->al, snap.pnode);

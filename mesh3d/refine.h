@@ -36,7 +36,13 @@ typedef struct t3_bad {
     double key;
     double cc[3];
     double spacing; /* no point that splits it nearer another (refine_split.c) */
+    int why;        /* its split's outcome: T3_QUEUED, T3_CLAIMED or lh_leftover_why */
+    int over;       /* 1: over the radius-edge bound, 2: the volume bound, 3: both */
 } t3_bad;
+
+/* A split's outcome besides lh_leftover_why's: its point queued, or left because a
+ * point taken this round holds its region. */
+enum { T3_QUEUED = 100, T3_CLAIMED };
 
 typedef struct t3_refine {
     t3_ctx *c;
@@ -47,6 +53,7 @@ typedef struct t3_refine {
        nearer than cbrt(v) / 4); the spacing of the bad tet being split */
     double spacing, spacing_now;
     int cut;                /* a conflict region of the bad tet being split was too big */
+    int why;                /* the outcome of the split being made (t3_bad.why)          */
     lh_index *claim, round; /* per tet: the round a taken point's region holds it */
     lh_index *claim_by;     /* per claimed tet: the point taken (in taken) */
     double *taken;          /* the round's points taken: x y z, insertion radius */
@@ -92,11 +99,19 @@ lh_status lh__t3_refine(t3_ctx *c);
 lh_status lh__t3_improve(t3_ctx *c, const t3_domain *d, double ratio, double dihedral,
                          size_t *flips);
 
+/* leftover.c: the bad tets as refinement leaves them, each with why it was left, kept
+ * in c (by their corners' coordinates) for lh__t3_leftovers. */
+lh_status lh__t3_left_record(t3_ctx *c, const t3_bad *bad, size_t count);
+/* leftover.c: m's tets over their bounds (lh_tetmesh_leftovers), each with why refinement
+ * left it and the nearest small input angle. */
+lh_status lh__t3_leftovers(t3_ctx *c, lh_tetmesh *m);
+
 /* refine_split.c: point x is never queued again. */
 lh_status lh__t3_refuse(t3_refine *r, const double *x);
 /* refine_split.c: queues the point that splits bad tet b (its circumcentre, or the
  * subsegment's or subface's point it encroaches), unless its conflict region meets one
- * taken this round or the point is refused (-Y: nothing on the boundary). */
+ * taken this round or the point is refused (-Y: nothing on the boundary); r->why says
+ * which. */
 lh_status lh__t3_refine_split(t3_refine *r, const t3_bad *b);
 
 #endif

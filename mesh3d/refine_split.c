@@ -239,7 +239,7 @@ lh_status lh__t3_refuse(t3_refine *r, const double *x)
     return LH_OK;
 }
 
-/* Drops the last queued point when it was refused. */
+/* Drops the last queued point when it was refused (r->why then says so). */
 static void unless_refused(t3_refine *r)
 {
     t3_ctx *c = r->c;
@@ -248,6 +248,7 @@ static void unless_refused(t3_refine *r)
     for (size_t i = 0; i < r->refused_count; i++)
         if (lh__t3_cmp_xyz(r->refused + 3 * i, x) == 0) {
             c->new_count--;
+            r->why = LH_LEFT_REFUSED;
             return;
         }
 }
@@ -255,6 +256,7 @@ static void unless_refused(t3_refine *r)
 /* Queues point x (for segment or patch seg, as lh__t3_queue) unless refused. */
 static lh_status queue(t3_refine *r, lh_index seg, const double *x)
 {
+    r->why = T3_QUEUED;
     lh_status st = lh__t3_queue(r->c, seg, 0, -1, x);
     if (st == LH_OK) unless_refused(r);
     return st;
@@ -267,8 +269,8 @@ static lh_status queue(t3_refine *r, lh_index seg, const double *x)
  * finitely many points that far apart; the tets it cannot improve are counted); and
  * not nearer a point taken this round whose region meets x's than the two points'
  * insertion radii (their distances to the nearest corners of their regions), so the
- * round's points never crowd each other. If it goes, its region's tets are claimed
- * for it. */
+ * round's points never crowd each other (r->why says which). If it goes, its
+ * region's tets are claimed for it. */
 static lh_status admit(t3_refine *r, size_t from, const double *x, int *ok)
 {
     const t3_ctx *c = r->c;
@@ -278,7 +280,9 @@ static lh_status admit(t3_refine *r, size_t from, const double *x, int *ok)
         for (int j = 0; j < 4; j++)
             near =
                 fmin(near, lh__t3_dist(lh__t3_pt(c, c->tv[4 * (size_t)r->reg[i] + (size_t)j]), x));
+    r->why = r->cut ? LH_LEFT_REGION : LH_LEFT_SPACING;
     if (r->cut || !(near >= r->spacing_now)) return LH_OK;
+    r->why = T3_CLAIMED;
     for (size_t i = from; i < r->reg_count; i++) {
         const lh_index t = r->reg[i];
         if (r->claim[t] != r->round) continue;
@@ -307,6 +311,7 @@ static lh_status split_seg(t3_refine *r, const lh_index *e)
 {
     t3_ctx *c = r->c;
     const double *p = lh__t3_pt(c, e[0]), *q = lh__t3_pt(c, e[1]);
+    r->why = LH_LEFT_BOUNDARY;
     if (!c->opt->boundary_steiner) return LH_OK;
     double mid[3];
     for (int k = 0; k < 3; k++) mid[k] = p[k] / 2 + q[k] / 2;
@@ -315,9 +320,12 @@ static lh_status split_seg(t3_refine *r, const lh_index *e)
     int ok = 0;
     if (st == LH_OK) st = admit(r, from, mid, &ok);
     if (st != LH_OK || !ok) return st;
+    r->why = T3_QUEUED;
     st = lh__t3_split(c, e[2], (size_t)e[3]);
     if (st == LH_OK) unless_refused(r);
-    return st == LH_ERR_STEINER_LIMIT ? LH_OK : st; /* no double between its ends: left */
+    if (st != LH_ERR_STEINER_LIMIT) return st;
+    r->why = LH_LEFT_SPACING; /* no double between its ends: left */
+    return LH_OK;
 }
 
 /* Queues the split of the subface that is face j of tet u: at its circumcentre, or
@@ -330,6 +338,7 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
     for (int a = 0, w = 0; a < 4; a++)
         if (a != j) f[w++] = c->tv[4 * (size_t)u + (size_t)a];
     double x[3], rad;
+    r->why = c->opt->boundary_steiner ? LH_LEFT_FACET : LH_LEFT_BOUNDARY;
     if (!c->opt->boundary_steiner || !face_circumcentre(c, f, x, &rad)) return LH_OK;
     /* x's conflict region from where walks from both sides of the subface end */
     const size_t from = r->reg_count;
@@ -343,6 +352,7 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
         if (st != LH_OK) return st;
         r->reg[r->reg_count++] = xu;
     }
+    r->why = LH_LEFT_REGION;
     if (r->reg_count == from) return LH_OK;
     lh_status st = grow(r, from, x);
     if (st != LH_OK) return st;
@@ -354,6 +364,7 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
         return st != LH_OK || !ok ? st : queue(r, T3_INTERIOR, x);
     }
     const lh_index k = r->facet_patch[facet];
+    r->why = LH_LEFT_FACET;
     if (k < 0) return LH_OK;
     if (!in_patch(c, (size_t)k, x)) {
         e = patch_encroached_seg(r, (size_t)k, x);
@@ -368,7 +379,7 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
 lh_status lh__t3_refine_split(t3_refine *r, const t3_bad *b)
 {
     int hit, j;
-    r->spacing_now = b->spacing, r->cut = 0;
+    r->spacing_now = b->spacing, r->cut = 0, r->why = LH_LEFT_REGION;
     const lh_index u = walk(r, b->t, b->cc, &hit);
     if (u < 0) return LH_OK;
     r->reg_count = 0;

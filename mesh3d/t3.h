@@ -29,6 +29,8 @@ struct lh_tetmesh {
        tet its 6 edges' midpoint nodes; per midpoint (sorted) its edge p < q */
     size_t n_corners;
     lh_index *tet_mid, *mid_edges;
+    lh_tetmesh_leftover *left; /* leftover.c: the tets over their bounds */
+    size_t left_count;
     lh_tetmesh_stats stats;
 };
 

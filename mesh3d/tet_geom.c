@@ -47,6 +47,23 @@ int lh__t3_frame(const double *const *p, int n, double (*q)[3])
     return e;
 }
 
+static int before(const double *x, const double *y)
+{
+    for (int k = 0; k < 3; k++)
+        if (x[k] != y[k]) return x[k] < y[k];
+    return 0;
+}
+
+void lh__t3_sort_corners(const double **p, int n)
+{
+    for (int i = 1; i < n; i++)
+        for (int j = i; j > 0 && before(p[j], p[j - 1]); j--) {
+            const double *x = p[j];
+            p[j] = p[j - 1];
+            p[j - 1] = x;
+        }
+}
+
 double lh__t3_dist(const double *x, const double *y)
 {
     const double *p[2] = {x, y};

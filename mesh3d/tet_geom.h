@@ -35,5 +35,8 @@ double lh__t3_dist(const double *x, const double *y);
  * over- or underflows: q[i] = (p[i] - p[0]) / 2^e, each below 2 in every coordinate;
  * returns e. */
 int lh__t3_frame(const double *const *p, int n, double (*q)[3]);
+/* Points p[0..n) sorted in coordinate order (lexicographic), so that figures measured
+ * on them do not depend on the points' numbering. */
+void lh__t3_sort_corners(const double **p, int n);
 
 #endif

@@ -40,7 +40,7 @@ void lh_tetmesh_free(lh_tetmesh *m)
     void *arrays[] = {m->xyz,      m->point_marker, m->tets,        m->nbr,
                       m->tet_attr, m->faces,        m->face_marker, m->face_parent,
                       m->edges,    m->edge_marker,  m->edge_parent, m->tet_mid,
-                      m->mid_edges};
+                      m->mid_edges, m->left};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&m->alloc, arrays[i]);
     lh_allocator al = m->alloc;
     lh__free(&al, m);

@@ -22,7 +22,7 @@ static void ctx_free(t3_ctx *c)
                       c->cover,    c->cover_first, c->cover_len, c->tv,          c->tn,
                       c->vtet,     c->tmark,       c->sbuf,      c->lock,        c->lock_first,
                       c->jbuf,     c->todo,        c->seg_order, c->patch_order,
-                      c->pmark,    c->xlock,       c->sides,     c->rbuf};
+                      c->pmark,    c->xlock,       c->sides,     c->rbuf,        c->left};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) lh__free(&c->al, arrays[i]);
     lh_tri_free(c->dt);
     lh_pred_free(c->pred);
@@ -149,6 +149,10 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
     m->stats.refine_points = c->refine_points;
     m->stats.over_volume = c->over_volume;
     lh__tetmesh_quality(m, c->opt->max_radius_edge, c->opt->min_dihedral);
+    if (c->left && (st = lh__t3_leftovers(c, m)) != LH_OK) {
+        lh_tetmesh_free(m);
+        return st;
+    }
     if (c->opt->second_order && (st = lh__tetmesh_second_order(m)) != LH_OK) {
         lh_tetmesh_free(m);
         return lh__t3_say(c, st, 0, st == LH_ERR_NOMEM ? "out of memory" : "too many second-order nodes");

@@ -522,6 +522,50 @@ LH_TEST(quality_figures)
     lh_plc_free(&g);
 }
 
+/* lh_tetmesh_leftovers: every tet over the radius-edge bound listed once, worst first,
+ * with a reason; beside a 1-degree wedge, the wedge's angle the nearest small one; none
+ * where refinement meets its bound or did not run. */
+LH_TEST(leftovers_listed)
+{
+    static const struct {
+        const char *file;
+        double ratio, angle; /* the input's smallest angle (wedge-1: asin of its height), 0: none
+                                below 60 degrees, -1 some */
+    } cases[] = {{"mesh3d/wedge-1.smesh", 1.414, 1}, {"mesh3d/blob-closed.off", 1.414, -1},
+                 {"tetgen/cubes.off", 1.2, 0}, {"tetgen/cubes.off", 0, 0}};
+    for (size_t i = 0; i < LH_COUNT(cases); i++) {
+        lh_plc g;
+        LH_ASSERT_TRUE(read_plc(cases[i].file, &g));
+        lh_tetmesh_options o;
+        lh_tetmesh_options_default(&o);
+        o.max_radius_edge = cases[i].ratio;
+        lh_tetmesh *m = NULL;
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &m, NULL), LH_OK);
+        if (m) {
+            lh_tetmesh_stats s;
+            lh_tetmesh_stats_get(m, &s);
+            size_t n = 99, bad = 0;
+            const lh_tetmesh_leftover *l = lh_tetmesh_leftovers(m, &n);
+            LH_EXPECT_EQ_U64(n, s.over_radius_edge);
+            LH_EXPECT_TRUE((n == 0) == (l == NULL));
+            if (cases[i].angle != 0) LH_EXPECT_GT_U64(n, 0);
+            for (size_t k = 0; k < n; k++) {
+                bad += l[k].tet < 0 || (size_t)l[k].tet >= s.tets || !(l[k].radius_edge > o.max_radius_edge);
+                bad += l[k].why < LH_LEFT_SPACING || l[k].why > LH_LEFT_FLIPS || l[k].over != 1;
+                bad += k > 0 && l[k].radius_edge > l[k - 1].radius_edge;
+                bad += l[k].angle_kind < 0 || l[k].angle_kind > 2 || !(l[k].distance >= 0);
+                bad += l[k].angle_kind > 0 && !(l[k].angle < 60 && l[k].angle_at[0] >= 0 &&
+                                                (size_t)l[k].angle_at[0] < g.n);
+                bad += l[k].angle_kind == 2 && l[k].angle_at[1] < 0;
+                if (cases[i].angle > 0) bad += l[k].angle_kind == 0 || fabs(l[k].angle - cases[i].angle) > 0.01;
+            }
+            LH_EXPECT_EQ_U64(bad, 0);
+        }
+        lh_tetmesh_free(m);
+        lh_plc_free(&g);
+    }
+}
+
 /* second_order: the same tets; one node per edge of the tets, at its midpoint, named
  * by lh_tetmesh_tet_midpoints and lh_tetmesh_midpoint alike; a subsegment's midpoint
  * carries its marker; the mesh with the nodes still checks. */
@@ -629,6 +673,7 @@ int main(int argc, char **argv)
                                          LH_CASE(scale_does_not_matter),
                                          LH_CASE(quality_figures),
                                          LH_CASE(second_order_nodes),
+                                         LH_CASE(leftovers_listed),
                                          LH_CASE(quality_refinement)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

@@ -1313,6 +1313,40 @@ typedef struct lh_tetmesh_stats {
 } lh_tetmesh_stats;
 LH_API void lh_tetmesh_stats_get(const lh_tetmesh *m, lh_tetmesh_stats *out);
 
+/* Why quality refinement left a tetrahedron over a bound (lh_tetmesh_leftover.why). */
+typedef enum lh_leftover_why {
+    LH_LEFT_SPACING = 1, /* its split point falls nearer another point than the spacing
+                            that makes refinement end (half the input's closest pair;
+                            under a volume bound v, cbrt(v) / 4): small input angles
+                            and features closer than that                         */
+    LH_LEFT_BOUNDARY,    /* its split point lies on a segment or facet and
+                            boundary_steiner is 0 (-Y)                             */
+    LH_LEFT_FACET,       /* the subface to split has its circumcentre outside its
+                            facet and encroaches no subsegment                     */
+    LH_LEFT_REFUSED,     /* recovery could not settle around its split point       */
+    LH_LEFT_REGION,      /* its split point's conflict region is too large to take  */
+    LH_LEFT_STOPPED,     /* refinement stopped before its turn: max_steiner, or the
+                            rounds' limits (docs/meshing3d.md)                     */
+    LH_LEFT_FLIPS        /* made by the flips after refinement                      */
+} lh_leftover_why;
+/* A tetrahedron over its radius-edge or volume bound when refinement ended. */
+typedef struct lh_tetmesh_leftover {
+    lh_index tet;         /* its index in lh_tetmesh_tets                           */
+    int why;              /* lh_leftover_why                                        */
+    int over;             /* 1: the radius-edge bound, 2: the volume bound, 3: both  */
+    double radius_edge;   /* its circumradius over its shortest edge                */
+    int angle_kind;       /* the nearest small input angle (below 60 degrees): 0
+                             none, 1 two segments (facet edges too) at an input point,
+                             2 two facets along a segment                          */
+    lh_index angle_at[2]; /* that point (angle_at[1] -1), or the segment's ends      */
+    double angle;         /* that angle, degrees                                    */
+    double distance;      /* from the tet's nearest corner to that point or segment,
+                             in the tet's shortest edges                            */
+} lh_tetmesh_leftover;
+/* The tetrahedra left over their bounds, worst radius-edge ratio first (ties by
+ * index); *count of them. NULL and 0 without refinement or when none is left. */
+LH_API const lh_tetmesh_leftover *lh_tetmesh_leftovers(const lh_tetmesh *m, size_t *count);
+
 /* A histogram: count[k] values x with lower[k] <= x < lower[k + 1], the last of the
  * bins unbounded above (infinity and NaN counted there); lower points to the
  * library's constant edges. */

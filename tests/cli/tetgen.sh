@@ -132,6 +132,15 @@ expect "-q0.5" 2 '^lifthull tetgen: -q takes a radius-edge bound of 1 or more, n
 expect "-q1.2/95" 2 '^lifthull tetgen: -q R/D takes a dihedral angle from 0 to 90 degrees, not 95$' '' -- \
   "$lh" tetgen -pq1.2/95 box.poly
 expect "-a0" 2 '^lifthull tetgen: -a takes a volume bound above 0, not 0$' '' -- "$lh" tetgen -pa0 box.poly
+# -V lists the tets left over the bound (a 1-degree wedge: many), counted by why, the
+# nearest small input angle beside each
+cp "$data/../mesh3d/wedge-1.smesh" .
+expect "-pq1.414V wedge" 0 '' '^  Tetrahedra left over the bounds: [1-9]' -- "$lh" tetgen -pq1.414VQ wedge-1.smesh
+same "leftovers = over the bound" "$(sed -n 's/^  Tetrahedra left over the bounds: //p' out.txt)" \
+  "$(sed -n 's/.*left over the radius-edge bound: \([0-9]*\),.*/\1/p' out.txt)"
+same "leftovers by why" "$(awk '/left over the bounds:/ { f = 1; next } f && /^    [0-9]+: / { s += $1 } /^  the worst/ { f = 0 }
+  END { print s }' out.txt)" "$(sed -n 's/^  Tetrahedra left over the bounds: //p' out.txt)"
+same "leftovers listed" "$(grep -c '^    [0-9.e+]*; [0-9]*: [0-9]* [0-9]* [0-9]* [0-9]*; .*; 1 degrees between' out.txt)" "20"
 # -o2: a node at every edge's midpoint; .ele rows of 10 (TetGen 1.5's order: edges 2-3
 # 0-3 0-1 1-2 1-3 0-2), .face of 6 (opposite corners 0 1 2), .edge of 3; the same tets
 expect "-pq1.2" 0 '' '' -- "$lh" tetgen -pq1.2Q box.poly
