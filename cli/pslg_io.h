@@ -28,7 +28,7 @@ void lh_cli_pslg_free(lh_cli_pslg *in);
  * with area, BASE.area its cover_area. Returns 1, or 0 after printing the problem
  * (FILE:LINE:COL: ...). */
 int lh_cli_pslg_load_mesh(lh_cli_pslg *in, const char *base, int area);
-/* Triangle's .area (area_read.c): count area bounds, one per triangle of the .ele,
+/* Triangle's .area (bound_read.c): count area bounds, one per triangle of the .ele,
  * from f into area. Returns 1, or 0 after printing the problem (FILE:LINE:COL: ...). */
 int lh_cli_area_read(FILE *f, const char *path, size_t count, double *area);
 /* Prints lh_pslg_triangulate's failure as "FILE:LINE: ..." or "FILE: ...". */

@@ -18,12 +18,13 @@ typedef struct tsw {
     int p, Y, c, A, f, e, n, k, g, z, B, N, E, F, I, Q, V, d, C, S;
     int q, a, a_regions; /* -q[R][/D], -a[V]; -a alone: the regions' bounds */
     int o2;              /* -o2: second-order nodes */
+    int m;               /* -m: the sizes of FILE.mtr */
     double ratio, angle, volume;
     size_t steiner, d_limit;
 } tsw;
 
 static const char *const usage_text =
-    "usage: lifthull tetgen [-pYcAqafenkgzBNEFIQVdSC] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
+    "usage: lifthull tetgen [-pYcAqamfenkgzBNEFIQVdSCo2] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
     "\n"
     "TetGen's command line (H. Si), computed exactly by lifthull: the same switches,\n"
     "input and output files. FILE.poly / .smesh (TetGen's piecewise linear complexes),\n"
@@ -42,6 +43,9 @@ static const char *const usage_text =
     "          under D degrees (default 10) are flipped away where flips can\n"
     "  -a[V]   refine until every tetrahedron's volume is at most V; -a alone: each\n"
     "          region's volume bound from the .poly (both may be given)\n"
+    "  -m      refine until every tetrahedron's circumradius is at most the size\n"
+    "          FILE.mtr gives at its circumcentre (one per input point: \"n 1\", then a\n"
+    "          size a line; interpolated linearly between the input's points)\n"
     "  -S[N]   at most N Steiner points (more needed: an error; refinement stops there)\n"
     "  -f      FILE.1.face lists every face (default: the boundary and facet faces)\n"
     "  -e      write FILE.1.edge: every edge, with its segment's marker (0: none)\n"
@@ -62,7 +66,7 @@ static const char *const usage_text =
     "  -o2     second-order nodes: a node at every edge's midpoint, in FILE.1.node;\n"
     "          FILE.1.ele lists 10 per tetrahedron, .face 6 and .edge 3 (TetGen 1.5's\n"
     "          order); not with -k or -g\n"
-    "not implemented yet (refused): -r -m -O -R -i -w -v\n"
+    "not implemented yet (refused): -r -O -R -i -w -v\n"
     "\n"
     "examples:\n"
     "  lifthull tetgen -pA examples/box.poly     # examples/box.1.node .ele .face\n"
@@ -126,7 +130,7 @@ static int parse_switches(const char *s, void *opt)
         case 'X': case 'M': case 'J': break;
         case 'O': return refuse('O', "mesh optimisation");
         case 'r': return refuse('r', "refining a mesh");
-        case 'm': return refuse('m', "a sizing function");
+        case 'm': o->m = 1; break;
         case 'R': return refuse('R', "mesh coarsening");
         case 'i': return refuse('i', "inserting points");
         case 'w': return refuse('w', "weighted Delaunay");
@@ -239,10 +243,12 @@ static int write_all(outputs *w, char *path[F_COUNT])
     return lh_cli_outset_close(&set, ok);
 }
 
-static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *path[F_COUNT])
+static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *path[F_COUNT],
+                          lh_cli_sizing *sizing)
 {
     lh_tetmesh_options opt;
     lh_tetmesh_options_default(&opt);
+    if (sizing) opt.sizing = lh_cli_sizing_at, opt.sizing_user = sizing;
     opt.convex_hull = o->c || lh_cli_plc_is_points(in); /* nothing bounds a point set but its hull */
     opt.boundary_steiner = !o->Y;
     opt.region_attributes = o->A && o->p; /* regions are a PLC's: TetGen's -A needs -p */
@@ -318,7 +324,13 @@ static int run(const tsw *o, const char *file)
         rc = r < 0 ? LH_EXIT_INPUT : r ? LH_EXIT_FAIL : lh_cli_finish_output("tetgen");
     } else {
         if (!o->p) lh_cli_plc_points_only(&in);
-        rc = mesh_and_write(o, &in, outb, path);
+        char *mtr = o->m ? lh_cli_path_ext(in_path, stem, ".mtr") : NULL;
+        lh_cli_sizing sizing = {NULL, NULL};
+        if (o->m && !mtr) fprintf(stderr, "lifthull tetgen: out of memory\n");
+        const int sized = !o->m || (mtr && lh_cli_sizing_load(&sizing, mtr, &in.g, "tetgen"));
+        rc = sized ? mesh_and_write(o, &in, outb, path, o->m ? &sizing : NULL) : mtr ? LH_EXIT_INPUT : LH_EXIT_FAIL;
+        lh_cli_sizing_free(&sizing);
+        free(mtr);
     }
     lh_cli_plc_free(&in);
 done:

@@ -73,6 +73,20 @@ void lh_cli_tetmesh_leftovers(FILE *out, const lh_tetmesh *m, size_t limit, int 
  * .face/.edge (count simplices v of `corners` 3 or 2 points, then their midpoints,
  * markers NULL or one each), numbered from first; LH_ERR_IO on a write error,
  * LH_ERR_INVALID_ARGUMENT when m has no second-order nodes. */
+/* bound_read.c: TetGen's .mtr, count sizes (one per input point, each positive) into
+ * size; 0 after printing "FILE:LINE:COL: ..." on stderr. */
+int lh_cli_mtr_read(FILE *f, const char *path, size_t count, double *size);
+/* tetgen_sizing.c: -m's sizing function, the .mtr's sizes at g's points interpolated
+ * linearly in their Delaunay tetrahedralization (outside its hull: the nearest
+ * point's). lh_cli_sizing_load: 1, or 0 after printing the problem as lifthull CMD;
+ * lh_cli_sizing_at: an lh_sizing_fn of a loaded lh_cli_sizing. */
+typedef struct lh_cli_sizing {
+    lh_tri *t;
+    double *size;
+} lh_cli_sizing;
+int lh_cli_sizing_load(lh_cli_sizing *s, const char *path, const lh_plc *g, const char *cmd);
+double lh_cli_sizing_at(void *user, const double xyz[3]);
+void lh_cli_sizing_free(lh_cli_sizing *s);
 lh_status lh_cli_ele_order2_write(FILE *f, const lh_tetmesh *m, const double *attrs, int first);
 lh_status lh_cli_simplex_order2_write(FILE *f, const lh_tetmesh *m, size_t count, int corners,
                                       const lh_index *v, const lh_index *markers, int first);

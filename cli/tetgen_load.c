@@ -236,8 +236,8 @@ int lh_cli_tetmesh_stats(FILE *out, const lh_cli_plc *in, const lh_tetmesh *m, c
             s.max_radius_edge);
     fprintf(out,
             "  Quality refinement: %zu Steiner points; tetrahedra left over the radius-edge bound: %zu,"
-            " over the volume bound: %zu, under the dihedral bound: %zu\n",
-            s.refine_points, s.over_radius_edge, s.over_volume, s.under_dihedral);
+            " over the volume bound: %zu, under the dihedral bound: %zu, over the size: %zu\n",
+            s.refine_points, s.over_radius_edge, s.over_volume, s.under_dihedral, s.over_size);
     lh_cli_tetmesh_leftovers(out, m, 20, in->g.first_index);
     return lh_cli_tetmesh_quality(out, m, cmd);
 }

@@ -64,6 +64,7 @@ void lh_cli_tetmesh_leftovers(FILE *out, const lh_tetmesh *m, size_t limit, int 
                 (long long)v[0] + first, (long long)v[1] + first, (long long)v[2] + first, (long long)v[3] + first,
                 why_text(l[i].why));
         if (l[i].over & 2) fprintf(out, " (over the volume bound)");
+        if (l[i].over & 4) fprintf(out, " (over the size)");
         if (l[i].angle_kind == 1)
             fprintf(out, "; %.3g degrees between segments at point %lld, %.3g away\n", l[i].angle,
                     (long long)l[i].angle_at[0] + first, l[i].distance);

@@ -122,6 +122,7 @@ typedef struct t3_ctx {
     size_t steiner;        /* Steiner points inserted                                */
     size_t refine_points;  /* of them, quality refinement's (refine.c)               */
     size_t over_volume;    /* tets over their volume bound when refinement stopped   */
+    size_t over_size;      /* tets larger than the sizing asks, then                 */
     struct t3_left *left;  /* the tets refinement left over its bounds (leftover.c)   */
     size_t left_count;
     size_t rounds;

@@ -63,11 +63,25 @@ static lh_status bad_room(t3_refine *r)
     return LH_OK;
 }
 
+/* How far tet m is over the size the sizing function asks at its circumcentre (its
+ * circumradius over that size: TetGen's -m reads a size as the radius of the ball a
+ * point protects), 0 when no size applies there; the spacing that size asks into
+ * *spacing (unchanged when none). */
+static double over_size(const t3_refine *r, const t3_tet_measure *m, double *spacing)
+{
+    const lh_tetmesh_options *o = r->c->opt;
+    if (!o->sizing) return 0;
+    const double h = o->sizing(o->sizing_user, m->cc);
+    if (!(h > 0 && isfinite(h))) return 0;
+    *spacing = fmin(*spacing, h / 4);
+    return m->radius / h;
+}
+
 /* The domain's tets over their bounds into r->bad, counted by bound. */
 static lh_status scan(t3_refine *r)
 {
     t3_ctx *c = r->c;
-    r->bad_count = 0, r->over_ratio = 0, r->over_volume = 0;
+    r->bad_count = 0, r->over_ratio = 0, r->over_volume = 0, r->over_size = 0;
     for (size_t t = 0; t < c->tet_count; t++) {
         if (r->d.label[t] == T3_OUT) continue;
         const double *p[4];
@@ -75,20 +89,24 @@ static lh_status scan(t3_refine *r)
         t3_tet_measure m;
         lh__t3_tet_measure(p, &m);
         const double v = volume_bound(r, t);
+        double spacing = v > 0 ? fmin(r->spacing, cbrt(v) / 4) : r->spacing;
+        const double size = over_size(r, &m, &spacing);
         const int over_r = r->ratio > 0 && m.ratio > r->ratio;
         const int over_v = v > 0 && lh__t3_volume_over(&m, v);
-        if (!over_r && !over_v) continue;
-        r->over_ratio += over_r, r->over_volume += over_v;
+        const int over_s = size > 1;
+        if (!over_r && !over_v && !over_s) continue;
+        r->over_ratio += over_r, r->over_volume += over_v, r->over_size += over_s;
         lh_status st = bad_room(r);
         if (st != LH_OK) return st;
         t3_bad *b = r->bad + r->bad_count++;
         b->t = (lh_index)t;
         b->key = over_r ? m.ratio / r->ratio : 0;
         if (over_v) b->key = fmax(b->key, cbrt(m.volume_frac / ldexp(v, -3 * m.scale_exp)));
+        if (over_s) b->key = fmax(b->key, size);
         memcpy(b->cc, m.cc, sizeof m.cc);
-        b->spacing = v > 0 ? fmin(r->spacing, cbrt(v) / 4) : r->spacing;
+        b->spacing = spacing;
         b->why = LH_LEFT_STOPPED; /* until its split is tried */
-        b->over = over_r | over_v << 1;
+        b->over = over_r | over_v << 1 | over_s << 2;
     }
     return LH_OK;
 }
@@ -331,7 +349,7 @@ static lh_status improve_final(t3_refine *r)
 lh_status lh__t3_refine(t3_ctx *c)
 {
     const lh_tetmesh_options *o = c->opt;
-    if (!(o->max_radius_edge > 0) && !(o->max_volume > 0) && !o->region_volumes) return LH_OK;
+    if (!(o->max_radius_edge > 0) && !(o->max_volume > 0) && !o->region_volumes && !o->sizing) return LH_OK;
     t3_refine r;
     memset(&r, 0, sizeof r);
     r.c = c;
@@ -366,7 +384,7 @@ lh_status lh__t3_refine(t3_ctx *c)
     lh__free(&c->al, snap.node);
     lh__free(&c->al, snap.pnode);
     c->refine_points = c->steiner - before;
-    c->over_volume = r.over_volume;
+    c->over_volume = r.over_volume, c->over_size = r.over_size;
     refine_free(&r);
     return st;
 }

@@ -37,7 +37,7 @@ typedef struct t3_bad {
     double cc[3];
     double spacing; /* no point that splits it nearer another (refine_split.c) */
     int why;        /* its split's outcome: T3_QUEUED, T3_CLAIMED or lh_leftover_why */
-    int over;       /* 1: over the radius-edge bound, 2: the volume bound, 3: both */
+    int over;       /* the bounds it is over: 1 radius-edge, 2 volume, 4 size      */
 } t3_bad;
 
 /* A split's outcome besides lh_leftover_why's: its point queued, or left because a
@@ -67,7 +67,7 @@ typedef struct t3_refine {
     size_t reg_cap, reg_count;
     t3_bad *bad;
     size_t bad_count, bad_cap;
-    size_t over_ratio, over_volume; /* tets over the bounds at the last scan */
+    size_t over_ratio, over_volume, over_size; /* tets over the bounds at the last scan */
     double *kept_xyz;               /* the round's queue, kept to insert again in part */
     t3_node *kept_node;
     size_t kept_count, rollbacks;

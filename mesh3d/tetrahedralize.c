@@ -148,6 +148,7 @@ static lh_status mesh(t3_ctx *c, lh_tetmesh **out)
     m->stats.facets_nonplanar = nonplanar;
     m->stats.refine_points = c->refine_points;
     m->stats.over_volume = c->over_volume;
+    m->stats.over_size = c->over_size;
     lh__tetmesh_quality(m, c->opt->max_radius_edge, c->opt->min_dihedral);
     if (c->left && (st = lh__t3_leftovers(c, m)) != LH_OK) {
         lh_tetmesh_free(m);

@@ -522,6 +522,95 @@ LH_TEST(quality_figures)
     lh_plc_free(&g);
 }
 
+/* A sizing function finer at z = 0 than at z = 1 (user: a call counter). */
+static double size_by_height(void *user, const double xyz[3])
+{
+    ++*(size_t *)user;
+    return 0.06 + 0.3 * xyz[2];
+}
+
+static double no_size(void *user, const double xyz[3])
+{
+    (void)xyz;
+    ++*(size_t *)user;
+    return NAN;
+}
+
+/* Tet p's circumcentre and circumradius (doubles; the unit box's tets are tame). */
+static double circumradius(const double *const *p, double cc[3])
+{
+    double a[3][3], r[3];
+    for (int i = 0; i < 3; i++) {
+        r[i] = 0;
+        for (int k = 0; k < 3; k++) a[i][k] = p[i + 1][k] - p[0][k], r[i] += a[i][k] * a[i][k] / 2;
+    }
+    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    double x[3];
+    for (int k = 0; k < 3; k++) { /* Cramer: column k replaced by r */
+        double m[3][3];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) m[i][j] = j == k ? r[i] : a[i][j];
+        x[k] = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])) / det;
+    }
+    for (int k = 0; k < 3; k++) cc[k] = p[0][k] + x[k];
+    return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+}
+
+/* sizing: every tet's circumradius at most the size at its circumcentre; smaller
+ * tets where the size is smaller; the same tets for the points permuted; a sizing
+ * that bounds nothing changes nothing. */
+LH_TEST(sizing_function)
+{
+    lh_plc g, h;
+    LH_ASSERT_TRUE(read_plc("tetgen3d/box.poly", &g));
+    size_t calls = 0, none_calls = 0;
+    lh_tetmesh_options o;
+    lh_tetmesh_options_default(&o);
+    o.sizing = size_by_height, o.sizing_user = &calls;
+    lh_tetmesh *m = NULL, *b = NULL, *plain = NULL, *none = NULL;
+    LH_ASSERT_EQ_INT(lh_tetrahedralize(&g, &o, &m, NULL), LH_OK);
+    lh_index *perm = random_perm(g.n, 5);
+    permuted(&g, perm, &h);
+    LH_EXPECT_EQ_INT(lh_tetrahedralize(&h, &o, &b, NULL), LH_OK);
+    if (b) LH_EXPECT_TRUE(same_tets(m, b));
+    LH_EXPECT_GT_U64(calls, 0);
+    lh_tetmesh_stats s;
+    lh_tetmesh_stats_get(m, &s);
+    LH_EXPECT_EQ_U64(s.over_size, 0);
+    LH_EXPECT_GT_U64(s.tets, 100);
+    const double *x = lh_tetmesh_points(m);
+    const lh_index *t = lh_tetmesh_tets(m);
+    size_t over = 0, low = 0, high = 0;
+    double vlow = 0, vhigh = 0;
+    for (size_t k = 0; k < s.tets; k++) {
+        const double *p[4];
+        double cc[3], zc = 0;
+        for (int j = 0; j < 4; j++) p[j] = x + 3 * t[4 * k + j], zc += p[j][2] / 4;
+        const double r = circumradius(p, cc);
+        over += r > (0.06 + 0.3 * cc[2]) * (1 + 1e-9);
+        double u[3], v[3], w[3];
+        for (int j = 0; j < 3; j++) u[j] = p[1][j] - p[0][j], v[j] = p[2][j] - p[0][j], w[j] = p[3][j] - p[0][j];
+        const double vol = fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                                u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+        if (zc < 0.5) low++, vlow += vol;
+        else high++, vhigh += vol;
+    }
+    LH_EXPECT_EQ_U64(over, 0);
+    LH_EXPECT_TRUE(low > 2 * high && vlow / (double)low < vhigh / (double)high);
+    o.sizing = no_size, o.sizing_user = &none_calls;
+    LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &none, NULL), LH_OK);
+    LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, NULL, &plain, NULL), LH_OK);
+    LH_EXPECT_GT_U64(none_calls, 0);
+    if (none && plain) LH_EXPECT_TRUE(same_tets(none, plain));
+    lh_tetmesh_free(m), lh_tetmesh_free(b), lh_tetmesh_free(none), lh_tetmesh_free(plain);
+    free_copy(&h);
+    free(perm);
+    lh_plc_free(&g);
+}
+
 /* lh_tetmesh_leftovers: every tet over the radius-edge bound listed once, worst first,
  * with a reason; beside a 1-degree wedge, the wedge's angle the nearest small one; none
  * where refinement meets its bound or did not run. */
@@ -674,6 +763,7 @@ int main(int argc, char **argv)
                                          LH_CASE(quality_figures),
                                          LH_CASE(second_order_nodes),
                                          LH_CASE(leftovers_listed),
+                                         LH_CASE(sizing_function),
                                          LH_CASE(quality_refinement)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

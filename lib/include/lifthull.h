@@ -1193,6 +1193,12 @@ LH_API lh_status lh_plc_intersections(const lh_plc *g, const lh_allocator *alloc
 
 /* ---- tetrahedral meshes of PLCs --------------------------------------------------- */
 
+/* A sizing function for quality refinement: the size wanted at point xyz (a
+ * circumcentre, in or near the domain), from user: the largest circumradius of a
+ * tetrahedron there (TetGen's .mtr sizes); 0, below, NaN or infinite: no bound there. Called from the thread that called lh_tetrahedralize, in an order that
+ * depends on the geometry alone. */
+typedef double (*lh_sizing_fn)(void *user, const double xyz[3]);
+
 /* Options of lh_tetrahedralize; lh_tetmesh_options_default sets every default. The
  * letters are TetGen's switches for the same thing. */
 typedef struct lh_tetmesh_options {
@@ -1226,6 +1232,10 @@ typedef struct lh_tetmesh_options {
                                   bound (default)                                    */
     int region_volumes;        /* -a: each region's volume bound (lh_plc.regions)
                                   applies to its tetrahedra too (default 0)          */
+    lh_sizing_fn sizing;       /* -m: refine until every tetrahedron's circumradius is
+                                  at most sizing(cc), cc its circumcentre; NULL: no
+                                  sizing (default)                                   */
+    void *sizing_user;         /* passed to sizing                                   */
     int second_order;          /* -o2: a node at the midpoint of every tetrahedron's
                                   edge, appended to the points
                                   (lh_tetmesh_tet_midpoints) (default 0)             */
@@ -1309,6 +1319,7 @@ typedef struct lh_tetmesh_stats {
     size_t over_radius_edge;     /* tetrahedra over max_radius_edge when refinement
                                     stopped (small input angles, -S, -Y)               */
     size_t over_volume;          /* tetrahedra over their volume bound (-S, -Y)        */
+    size_t over_size;            /* tetrahedra larger than the sizing asks (-S, -Y)    */
     size_t under_dihedral;       /* tetrahedra with a dihedral angle below min_dihedral */
 } lh_tetmesh_stats;
 LH_API void lh_tetmesh_stats_get(const lh_tetmesh *m, lh_tetmesh_stats *out);
@@ -1333,7 +1344,7 @@ typedef enum lh_leftover_why {
 typedef struct lh_tetmesh_leftover {
     lh_index tet;         /* its index in lh_tetmesh_tets                           */
     int why;              /* lh_leftover_why                                        */
-    int over;             /* 1: the radius-edge bound, 2: the volume bound, 3: both  */
+    int over;             /* the bounds it is over: 1 radius-edge, 2 volume, 4 size  */
     double radius_edge;   /* its circumradius over its shortest edge                */
     int angle_kind;       /* the nearest small input angle (below 60 degrees): 0
                              none, 1 two segments (facet edges too) at an input point,

@@ -141,6 +141,20 @@ same "leftovers = over the bound" "$(sed -n 's/^  Tetrahedra left over the bound
 same "leftovers by why" "$(awk '/left over the bounds:/ { f = 1; next } f && /^    [0-9]+: / { s += $1 } /^  the worst/ { f = 0 }
   END { print s }' out.txt)" "$(sed -n 's/^  Tetrahedra left over the bounds: //p' out.txt)"
 same "leftovers listed" "$(grep -c '^    [0-9.e+]*; [0-9]*: [0-9]* [0-9]* [0-9]* [0-9]*; .*; 1 degrees between' out.txt)" "20"
+# -m: sizes at the input's points (box.mtr: 0.1 at z = 0, 0.5 at z = 1) met everywhere,
+# so more points below than above; a bad .mtr: exit 3, its line and column named
+printf '8 1\n0.1\n0.1\n0.1\n0.1\n0.5\n0.5\n0.5\n0.5\n' > box.mtr
+expect "-pm" 0 '' ', over the size: 0$' -- "$lh" tetgen -pmVQC box.poly
+matches out.txt '^check: the mesh is valid and conforms' && ok || bad "-pm -C: $(grep check out.txt)"
+same "-pm graded" "$(awk 'NR > 1 && NF >= 4 { if ($4 < 0.5) lo++; else hi++ } END { print (lo > 2 * hi) }' box.1.node)" "1"
+printf '8 1\n0.1\n0.1\n-1\n' > box.mtr
+expect "-m negative" 3 '^box\.mtr:4:1: expected the size at point 3 \(a positive number\), found .-1.$' '' -- \
+  "$lh" tetgen -pm box.poly
+printf '7 1\n' > box.mtr
+expect "-m count" 3 '^box\.mtr:1:1: expected the number of points \(8, as in the input\), found .7.$' '' -- \
+  "$lh" tetgen -pm box.poly
+rm box.mtr
+expect "-m no .mtr" 3 'box\.mtr' '' -- "$lh" tetgen -pm box.poly
 # -o2: a node at every edge's midpoint; .ele rows of 10 (TetGen 1.5's order: edges 2-3
 # 0-3 0-1 1-2 1-3 0-2), .face of 6 (opposite corners 0 1 2), .edge of 3; the same tets
 expect "-pq1.2" 0 '' '' -- "$lh" tetgen -pq1.2Q box.poly
@@ -170,7 +184,7 @@ fresh cube.node
 expect "-r refused" 2 '^lifthull tetgen: -r \(refining a mesh\) is not implemented yet' '' -- "$lh" tetgen -r cube.node
 expect "-O2/7 refused" 2 '^lifthull tetgen: -O \(mesh optimisation\) is not implemented yet' '' -- \
   "$lh" tetgen -pO2/7 cube.node
-for s in m R i w v; do
+for s in R i w v; do
   expect "-$s refused" 2 "^lifthull tetgen: -$s \(.*\) is not implemented yet" '' -- "$lh" tetgen "-$s" cube.node
 done
 expect "-o2k refused" 2 '^lifthull tetgen: -o2 writes second-order nodes to the \.node, \.ele, \.face and \.edge files only, not with -k \(VTK\)$' '' -- \

@@ -61,7 +61,7 @@ same "svg colours" "$(grep -o '^<path d="[^"]*" fill="#[0-9a-f]*"' b.svg | sed '
 # quality refinement (TetGen's -q and -a): the bounds met, the report's figures say so
 expect "box.poly --quality --max-volume" 0 '' '^check: the mesh is valid and conforms to the input' -- \
   "$lh" mesh box.poly --quality --max-volume 0.01 --min-dihedral 20 --check --report -o q.vtu
-matches out.txt 'left over the radius-edge bound: 0, over the volume bound: 0, under the dihedral bound: 0$' &&
+matches out.txt 'left over the radius-edge bound: 0, over the volume bound: 0, under the dihedral bound: 0, over the size: 0$' &&
   ok || bad "--quality: $(grep 'Quality refinement' out.txt)"
 same "--max-volume met" "$(awk '/Largest volume:/ { print ($NF <= 0.01) }' out.txt)" "1"
 # every tetrahedron in one of the 15 bins

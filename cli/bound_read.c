@@ -1,13 +1,19 @@
-/* area_read.c — Triangle's .area file for `triangle -ra` (pslg_io.h):
+/* bound_read.c — files of per-item bounds, beside a mesh's input:
  *
+ * Triangle's .area, for `triangle -ra` (pslg_io.h):
  *     count                 the number of triangles of the .ele beside it
  *     number area           one line per triangle, numbered from 0 or 1 consecutively;
  *                           an area <= 0 (Triangle writes -1): no bound
+ * TetGen's .mtr, for `tetgen -m` (tetgen_io.h):
+ *     count 1               the number of points of the input, one size each
+ *     size                  one line per point, in the input's order: the edge length
+ *                           wanted there, a positive number
  *
  * '#' starts a comment; blank lines anywhere; lines of any length. The whole file is
  * read first, so a NUL byte or a token running on after a number is seen as such.
  * Every problem is one line "FILE:LINE:COL: expected ..., found ..." on stderr. */
 #include "pslg_io.h"
+#include "tetgen_io.h"
 
 #include <errno.h>
 #include <math.h>
@@ -89,6 +95,52 @@ static int number(const token *t, double *v)
     return kind;
 }
 
+/* The end of the line (or of the file) after what; 0 after printing otherwise. */
+static int line_end(area_text *x, const char *what)
+{
+    token t = next(x, 0);
+    return !t.s || (!t.nul && !t.len) ? 1 : expected(x, &t, what);
+}
+
+/* Point k's line of a .mtr: its size, a positive number. */
+static int size_item(area_text *x, size_t k, double *size)
+{
+    char what[96];
+    token t = next(x, 1);
+    snprintf(what, sizeof what, "the size at point %zu (a positive number)", k + 1);
+    const int kind = number(&t, size);
+    if (kind < 0) {
+        fprintf(stderr, "%s: out of memory\n", x->path);
+        return 0;
+    }
+    if (kind != 1 || !(*size > 0)) {
+        if (kind == 0 || kind == 1) return expected(x, &t, what);
+        fprintf(stderr, "%s:%zu:%zu: the size at point %zu is '%.*s'%s\n", x->path, t.line, t.col, k + 1,
+                (int)t.len, t.s, kind == 2 ? ": NaN and infinities are not accepted" : ", which overflows a double");
+        return 0;
+    }
+    snprintf(what, sizeof what, "the end of the line after point %zu's size", k + 1);
+    return line_end(x, what);
+}
+
+static int parse_mtr(area_text *x, size_t count, double *size)
+{
+    char what[96];
+    token t = next(x, 1);
+    long long n;
+    snprintf(what, sizeof what, "the number of points (%zu, as in the input)", count);
+    if (!integer(&t, &n) || (unsigned long long)n != count) return expected(x, &t, what);
+    t = next(x, 0);
+    if (!integer(&t, &n) || n != 1) return expected(x, &t, "the sizes per point, 1");
+    if (!line_end(x, "the end of the header line")) return 0;
+    for (size_t k = 0; k < count; k++)
+        if (!size_item(x, k, &size[k])) return 0;
+    t = next(x, 1);
+    if (!t.s) return 1;
+    snprintf(what, sizeof what, "the end of the file after %zu sizes", count);
+    return expected(x, &t, what);
+}
+
 /* Triangle k's line: "number area" then the end of the line. */
 static int item(area_text *x, size_t k, long long *first, double *area)
 {
@@ -165,13 +217,24 @@ static int slurp(FILE *f, const char *path, char **text, size_t *len)
     return 1;
 }
 
-int lh_cli_area_read(FILE *f, const char *path, size_t count, double *area)
+/* The file read whole and parsed by one of the parsers above. */
+static int read_with(FILE *f, const char *path, size_t count, double *v, int (*parser)(area_text *, size_t, double *))
 {
     char *text;
     size_t len;
     if (!slurp(f, path, &text, &len)) return 0;
     area_text x = {path, text, text + len, 1, text};
-    const int ok = parse(&x, count, area);
+    const int ok = parser(&x, count, v);
     free(text);
     return ok;
+}
+
+int lh_cli_area_read(FILE *f, const char *path, size_t count, double *area)
+{
+    return read_with(f, path, count, area, parse);
+}
+
+int lh_cli_mtr_read(FILE *f, const char *path, size_t count, double *size)
+{
+    return read_with(f, path, count, size, parse_mtr);
 }
