@@ -64,8 +64,23 @@ void lh__t3_sort_corners(const double **p, int n)
         }
 }
 
+/* y - x into d when every nonzero component's square and the sum of three squares are
+ * normal doubles: then the figures computed on d equal, bit for bit, those computed in
+ * the scaled frame (scaling by a power of two commutes with rounding there). */
+static int direct(const double *x, const double *y, double d[3])
+{
+    for (int k = 0; k < 3; k++) {
+        d[k] = y[k] - x[k];
+        const double a = fabs(d[k]);
+        if (!(a <= 0x1p+510) || (a != 0 && a < 0x1p-510)) return 0;
+    }
+    return 1;
+}
+
 double lh__t3_dist(const double *x, const double *y)
 {
+    double d[3];
+    if (direct(x, y, d)) return sqrt(dot(d, d));
     const double *p[2] = {x, y};
     int e = frame_exp(p, 2);
     double v[3];
@@ -75,6 +90,8 @@ double lh__t3_dist(const double *x, const double *y)
 
 int lh__t3_in_diametral(const double *a, const double *b, const double *x)
 {
+    double da[3], db[3];
+    if (direct(x, a, da) && direct(x, b, db)) return dot(da, db) < 0;
     const double *p[3] = {x, a, b};
     int e = frame_exp(p, 3);
     double u[3], v[3];
