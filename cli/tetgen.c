@@ -19,12 +19,13 @@ typedef struct tsw {
     int q, a, a_regions; /* -q[R][/D], -a[V]; -a alone: the regions' bounds */
     int o2;              /* -o2: second-order nodes */
     int m;               /* -m: the sizes of FILE.mtr */
+    int O, level, ops;   /* -O[level][/ops]; ops 0 when not given */
     double ratio, angle, volume;
     size_t steiner, d_limit;
 } tsw;
 
 static const char *const usage_text =
-    "usage: lifthull tetgen [-pYcAqamfenkgzBNEFIQVdSCo2] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
+    "usage: lifthull tetgen [-pYcAqamfenkgzBNEFIQVdSOCo2] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
     "\n"
     "TetGen's command line (H. Si), computed exactly by lifthull: the same switches,\n"
     "input and output files. FILE.poly / .smesh (TetGen's piecewise linear complexes),\n"
@@ -46,7 +47,9 @@ static const char *const usage_text =
     "  -m      refine until every tetrahedron's circumradius is at most the size\n"
     "          FILE.mtr gives at its circumcentre (one per input point: \"n 1\", then a\n"
     "          size a line; interpolated linearly between the input's points)\n"
-    "  -S[N]   at most N Steiner points (more needed: an error; refinement stops there)\n"
+    "  -S[N]   at most N Steiner points (more needed: an error; refinement stops there)\n"    "  -O[L][/ops] after refinement, L passes (0..10, default 3) of flips that raise the\n"
+    "          worst shape; -O0: none. ops: 1 flips (TetGen's 2 smoothing and 4 vertex\n"
+    "          insertion are not implemented: asking for them says so on stderr)\n"
     "  -f      FILE.1.face lists every face (default: the boundary and facet faces)\n"
     "  -e      write FILE.1.edge: every edge, with its segment's marker (0: none)\n"
     "  -n      write FILE.1.neigh;  -k FILE.1.vtk (legacy VTK);  -g FILE.1.mesh (Medit)\n"
@@ -66,7 +69,7 @@ static const char *const usage_text =
     "  -o2     second-order nodes: a node at every edge's midpoint, in FILE.1.node;\n"
     "          FILE.1.ele lists 10 per tetrahedron, .face 6 and .edge 3 (TetGen 1.5's\n"
     "          order); not with -k or -g\n"
-    "not implemented yet (refused): -r -O -R -i -w -v\n"
+    "not implemented yet (refused): -r -R -i -w -v\n"
     "\n"
     "examples:\n"
     "  lifthull tetgen -pA examples/box.poly     # examples/box.1.node .ele .face\n"
@@ -128,7 +131,11 @@ static int parse_switches(const char *s, void *opt)
             break;
         case 'T': lh_cli_switch_number(s, &j, &x); break; /* exact coplanarity: no tolerance */
         case 'X': case 'M': case 'J': break;
-        case 'O': return refuse('O', "mesh optimisation");
+        case 'O': /* -O[level][/ops] */
+            o->O = 1, o->level = 3, o->ops = 0;
+            if (lh_cli_switch_number(s, &j, &x)) o->level = x >= 0 && x <= 10 && x == (int)x ? (int)x : -1;
+            if (s[j + 1] == '/') j++, o->ops = lh_cli_switch_number(s, &j, &x) && x >= 0 && x <= 7 && x == (int)x ? (int)x : -1;
+            break;
         case 'r': return refuse('r', "refining a mesh");
         case 'm': o->m = 1; break;
         case 'R': return refuse('R', "mesh coarsening");
@@ -257,6 +264,7 @@ static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *
     if (o->a) opt.max_volume = o->volume;
     opt.region_volumes = o->a_regions && o->p;
     opt.second_order = o->o2;
+    if (o->O) opt.optimize_passes = !o->ops || o->ops & 1 ? o->level : 0;
     lh_error err;
     lh_tetmesh *m = NULL;
     const double t0 = lh_cli_seconds();
@@ -355,6 +363,14 @@ int lh_cli_tetgen(int argc, char **argv)
         fprintf(stderr, "lifthull tetgen: -q R/D takes a dihedral angle from 0 to 90 degrees, not %g\n", o.angle);
         return LH_EXIT_USAGE;
     }
+    if (o.O && (o.level < 0 || o.ops < 0)) {
+        fprintf(stderr, "lifthull tetgen: -O takes a level from 0 to 10 and /ops from 0 to 7 (whole numbers)\n");
+        return LH_EXIT_USAGE;
+    }
+    if (o.O && (o.ops & 6))
+        fprintf(stderr, "lifthull tetgen: -O: only flips (ops 1) are implemented; %s%s not\n",
+                o.ops & 2 ? "smoothing (2)" : "", o.ops & 4 ? o.ops & 2 ? " and vertex insertion (4) are" :
+                "vertex insertion (4) is" : " is");
     if (o.o2 && (o.k || o.g)) {
         fprintf(stderr, "lifthull tetgen: -o2 writes second-order nodes to the .node, .ele, .face and .edge "
                         "files only, not with -%c (%s)\n", o.k ? 'k' : 'g', o.k ? "VTK" : "Medit");

@@ -22,9 +22,6 @@
 #include <math.h>
 #include <string.h>
 
-/* Passes over the tets still over the bounds, while a pass flips something. */
-#define T3_IMPROVE_PASSES 3
-
 typedef struct t3_work {
     lh_index t, v[4]; /* the tet's slot and its corners in coordinate order */
     double shape;
@@ -150,7 +147,8 @@ lh_status lh__t3_improve(t3_ctx *c, const t3_domain *d, double ratio, double dih
     if (st == LH_OK) st = lh__t3_room(c, &m.label, &m.label_cap, c->tet_count + 1);
     if (st == LH_OK) memcpy(m.label, d->label, c->tet_count * sizeof(lh_index));
     size_t made = 1;
-    for (int pass = 0; pass < T3_IMPROVE_PASSES && made && st == LH_OK; pass++) {
+    /* passes over the tets still over the bounds, while a pass flips something */
+    for (int pass = 0; pass < c->opt->optimize_passes && made && st == LH_OK; pass++) {
         lh_index *order = NULL;
         made = 0;
         st = gather(&m, &order);

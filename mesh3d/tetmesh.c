@@ -14,6 +14,7 @@ void lh_tetmesh_options_default(lh_tetmesh_options *opt)
     opt->max_steiner = SIZE_MAX;
     opt->check_intersections = 1;
     opt->threads = 1;
+    opt->optimize_passes = 3;
 }
 
 lh_tetmesh *lh__tetmesh_new(const lh_allocator *al)

@@ -175,7 +175,8 @@ lh_status lh_tetrahedralize(const lh_plc *g, const lh_tetmesh_options *opt, lh_t
     c.err = err, c.g = g, c.opt = opt;
     if (!g || !out || !lh__allocator_init(&c.al, opt->alloc) ||
         (opt->max_radius_edge != 0 && !(opt->max_radius_edge >= 1)) || !(opt->max_volume >= 0) ||
-        !(opt->min_dihedral >= 0 && opt->min_dihedral < 90))
+        !(opt->min_dihedral >= 0 && opt->min_dihedral < 90) || opt->optimize_passes < 0 ||
+        opt->optimize_passes > 10)
         return lh__error_done(err, LH_ERR_INVALID_ARGUMENT);
     lh_status st = mesh(&c, out);
     ctx_free(&c);

@@ -301,6 +301,13 @@ LH_TEST(quality_refinement)
         LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &m, NULL), LH_ERR_INVALID_ARGUMENT);
         LH_EXPECT_TRUE(m == NULL);
     }
+    for (int passes = -1; passes <= 11; passes += 12) { /* -O's level: 0..10 */
+        lh_tetmesh_options o;
+        lh_tetmesh_options_default(&o);
+        o.max_radius_edge = 1.2, o.optimize_passes = passes;
+        lh_tetmesh *m = NULL;
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &m, NULL), LH_ERR_INVALID_ARGUMENT);
+    }
     lh_plc_free(&g);
 }
 

@@ -1232,6 +1232,9 @@ typedef struct lh_tetmesh_options {
                                   bound (default)                                    */
     int region_volumes;        /* -a: each region's volume bound (lh_plc.regions)
                                   applies to its tetrahedra too (default 0)          */
+    int optimize_passes;       /* -O level: passes of the flips that follow
+                                  refinement (edge removal, 2-3 flips), 0..10; 0:
+                                  none (default 3)                                  */
     lh_sizing_fn sizing;       /* -m: refine until every tetrahedron's circumradius is
                                   at most sizing(cc), cc its circumcentre; NULL: no
                                   sizing (default)                                   */

@@ -141,6 +141,16 @@ same "leftovers = over the bound" "$(sed -n 's/^  Tetrahedra left over the bound
 same "leftovers by why" "$(awk '/left over the bounds:/ { f = 1; next } f && /^    [0-9]+: / { s += $1 } /^  the worst/ { f = 0 }
   END { print s }' out.txt)" "$(sed -n 's/^  Tetrahedra left over the bounds: //p' out.txt)"
 same "leftovers listed" "$(grep -c '^    [0-9.e+]*; [0-9]*: [0-9]* [0-9]* [0-9]* [0-9]*; .*; 1 degrees between' out.txt)" "20"
+# -O: the flips after refinement raise hole.off's smallest dihedral angle; -O0 has none;
+# asking for smoothing (ops 2) says it is not implemented
+cp "$data/../mesh3d/hole.off" .
+dihedral() { sed -n 's/^  Smallest dihedral angle: \([0-9.e+-]*\) degrees$/\1/p' out.txt; }
+expect "-pq1.414" 0 '' '^  Smallest dihedral angle' -- "$lh" tetgen -pq1.414VQ hole.off
+with="$(dihedral)"
+expect "-pq1.414O0" 0 '' '^  Smallest dihedral angle' -- "$lh" tetgen -pq1.414O0VQ hole.off
+same "-O0: fewer degrees" "$(awk -v a="$with" -v b="$(dihedral)" 'BEGIN { print (a > 10 && b < a) }')" "1"
+expect "-O2/3" 0 '^lifthull tetgen: -O: only flips \(ops 1\) are implemented; smoothing \(2\) is not$' '' -- \
+  "$lh" tetgen -pq1.414O2/3Q hole.off
 # -m: sizes at the input's points (box.mtr: 0.1 at z = 0, 0.5 at z = 1) met everywhere,
 # so more points below than above; a bad .mtr: exit 3, its line and column named
 printf '8 1\n0.1\n0.1\n0.1\n0.1\n0.5\n0.5\n0.5\n0.5\n' > box.mtr
@@ -182,8 +192,8 @@ cd ..
 # (exit 2, nothing read or written)
 fresh cube.node
 expect "-r refused" 2 '^lifthull tetgen: -r \(refining a mesh\) is not implemented yet' '' -- "$lh" tetgen -r cube.node
-expect "-O2/7 refused" 2 '^lifthull tetgen: -O \(mesh optimisation\) is not implemented yet' '' -- \
-  "$lh" tetgen -pO2/7 cube.node
+expect "-O11" 2 '^lifthull tetgen: -O takes a level from 0 to 10 and /ops from 0 to 7' '' -- \
+  "$lh" tetgen -pO11 cube.node
 for s in R i w v; do
   expect "-$s refused" 2 "^lifthull tetgen: -$s \(.*\) is not implemented yet" '' -- "$lh" tetgen "-$s" cube.node
 done
