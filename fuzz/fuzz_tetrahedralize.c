@@ -6,7 +6,9 @@
  *           (else a 0..3 grid: coplanar, cocircular, cospherical, duplicate points),
  *           bits 3-4 the scale 2^0, 2^200, 2^-200 or 2^40, bit 5 region attributes,
  *           bit 6 -Y (boundary_steiner off), bit 7 quality refinement (-q1.414);
- *   byte 1: points, 4 + (byte % 21); bit 7 second-order nodes;
+ *   byte 1: points, 4 + (byte % 21); bit 7 second-order nodes; bit 6 the mesh refined
+ *           again (-r: lh_plc_from_tetmesh, then regions_only and -q1.414), which
+ *           must give a valid mesh conforming to that PLC, or a documented status;
  *   then 3 bytes a point; then facets, each a byte k (3 + k % 3 corners) and k point
  *   numbers (mod n), up to 24; then up to 2 hole points (3 bytes each, grid/2).
  * It must never crash or leak, and:
@@ -38,6 +40,7 @@ typedef struct input {
     lh_index ff[MAXF + 1], pf[MAXF + 1], pv[5 * MAXF];
     lh_plc g;
     lh_tetmesh_options opt;
+    int again; /* refine the mesh again (-r) */
 } input;
 
 static double coord(uint8_t b, int int8, int e)
@@ -60,6 +63,7 @@ static int decode(const uint8_t *d, size_t size, input *in)
     in->opt.max_steiner = 100; /* bounds the time of recovery that cannot settle */
     in->opt.max_radius_edge = d[0] >> 7 ? 1.414 : 0;
     in->opt.second_order = d[1] >> 7;
+    in->again = (d[1] >> 6) & 1;
     int int8 = (d[0] >> 2) & 1, e = scales[(d[0] >> 3) & 3];
     size_t n = 4 + d[1] % 21, at = 2;
     if (size < at + 3 * n) return 0;
@@ -124,6 +128,41 @@ static int second_order_ok(const lh_tetmesh *m, size_t n, int second)
     return 1;
 }
 
+/* -r: mesh m as the PLC it bounds, refined with regions_only: a valid mesh conforming
+ * to that PLC, or a documented status (aborts otherwise). */
+static void refine_again(const lh_tetmesh *m, const input *in, const lh_allocator *al)
+{
+    lh_plc g;
+    lh_error err;
+    lh_status st = lh_plc_from_tetmesh(lh_tetmesh_point_count(m), lh_tetmesh_points(m), lh_tetmesh_point_markers(m),
+                                       lh_tetmesh_tet_count(m), lh_tetmesh_tets(m), lh_tetmesh_tet_attrs(m), al, &g,
+                                       &err);
+    if (st != LH_OK) {
+        if (!documented(st)) abort();
+        printable(err.message);
+        return;
+    }
+    lh_tetmesh_options o = in->opt;
+    o.regions_only = 1, o.max_radius_edge = 1.414, o.second_order = 0, o.check_intersections = 1;
+    lh_tetmesh *r = NULL;
+    st = lh_tetrahedralize(&g, &o, &r, &err);
+    if (st == LH_OK) {
+        lh_error cerr;
+        if (lh_tetmesh_check(lh_tetmesh_point_count(r), lh_tetmesh_points(r), lh_tetmesh_tet_count(r),
+                             lh_tetmesh_tets(r), lh_tetmesh_face_count(r), lh_tetmesh_faces(r),
+                             lh_tetmesh_face_parents(r), lh_tetmesh_edge_count(r), lh_tetmesh_edges(r), 0, &g,
+                             NULL, NULL, &cerr) != LH_OK) {
+            fprintf(stderr, "fuzz_tetrahedralize: the mesh refined again fails its check: %s\n", cerr.message);
+            abort();
+        }
+    } else {
+        if (r || !documented(st)) abort();
+        printable(err.message);
+    }
+    lh_tetmesh_free(r);
+    lh_plc_free(&g);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static input in;
@@ -159,6 +198,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             fprintf(stderr, "fuzz_tetrahedralize: the mesh fails its check: %s\n", cerr.message);
             abort();
         }
+        if (in.again) refine_again(m, &in, &al);
     } else {
         if (m || !documented(st)) abort();
         printable(err.message);

@@ -198,6 +198,8 @@ lh_status lh__t3_carve(t3_ctx *c, t3_domain *d)
         else
             flood(c, d, t, (lh_index)r);
     }
+    for (size_t t = 0; c->opt->regions_only && t < count; t++) /* the regions are the domain */
+        if (d->label[t] == T3_FREE) d->label[t] = T3_OUT;
     for (size_t t = 0; t < count; t++) d->kept += d->label[t] != T3_OUT;
     if (d->kept == 0)
         return lh__t3_say(c, LH_ERR_DEGENERATE, 0,

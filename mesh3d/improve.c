@@ -123,6 +123,7 @@ static lh_status improve_tet(t3_improve *m, const t3_work *w, int *done)
     const lh_index region = m->label[w->t];
     lh_status st = LH_OK;
     *done = 0;
+    c->flip_volume = lh__t3_volume_bound(c, region);
     for (int k = 0; k < 6 && st == LH_OK && !*done; k++) {
         lh__t3_try_begin(c, 1);
         st = lh__t3_improve_edge(c, w->t, w->v[e[k][0]], w->v[e[k][1]], done);
@@ -142,6 +143,7 @@ lh_status lh__t3_improve(t3_ctx *c, const t3_domain *d, double ratio, double dih
     t3_improve m;
     memset(&m, 0, sizeof m);
     m.c = c, m.ratio = ratio, m.dihedral = dihedral;
+    c->flip_bounded = 1;
     *flips = 0;
     lh_status st = lock_walls(c, d);
     if (st == LH_OK) st = lh__t3_room(c, &m.label, &m.label_cap, c->tet_count + 1);
@@ -161,6 +163,7 @@ lh_status lh__t3_improve(t3_ctx *c, const t3_domain *d, double ratio, double dih
         lh__free(&c->al, order);
         *flips += made;
     }
+    c->flip_bounded = 0, c->flip_volume = 0;
     lh__free(&c->al, m.label);
     lh__free(&c->al, m.work);
     if (st != LH_OK || *flips == 0) return st;

@@ -150,6 +150,9 @@ typedef struct t3_ctx {
     int made_count;
     size_t flip_budget;         /* edge removals the current constraint may still try */
     int improving; /* edge removals must make a better worst shape than they take out */
+    int flip_bounded;   /* the flips after refinement: no tet one makes may be over the
+                           volume bound flip_volume (0: none) or the sizing's size    */
+    double flip_volume;
     lh_index gone[2 * T3_GONE]; /* the edges the current constraint's removals took out,
                                    which its later ones do not make again */
     int gone_count;

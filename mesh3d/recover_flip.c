@@ -23,6 +23,7 @@
  * flip, each kept only when the tets it makes beat the worst it takes out.
  */
 #include "recover.h"
+#include "tet_geom.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -63,6 +64,22 @@ double lh__t3_shape(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_inde
                u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0]);
     double r = l > 0 && isfinite(l) ? fabs(v) / (l * sqrt(l)) : 0;
     return isfinite(r) ? r : 0;
+}
+
+/* The shape of tet a b d e that a flip would make: 0 (no better than any) when, after
+ * refinement, it would break a bound refinement met: its volume over the region's
+ * bound, its circumradius over the sizing's size at its circumcentre. */
+static double made_shape(const t3_ctx *c, lh_index a, lh_index b, lh_index d, lh_index e, double shape)
+{
+    if (!c->flip_bounded || (!(c->flip_volume > 0) && !c->opt->sizing)) return shape;
+    lh_index v[4] = {a, b, d, e};
+    lh__t3_sort_points(c, v, 4);
+    const double *p[4] = {pt(c, v[0]), pt(c, v[1]), pt(c, v[2]), pt(c, v[3])};
+    t3_tet_measure m;
+    lh__t3_tet_measure(p, &m);
+    if (c->flip_volume > 0 && lh__t3_volume_over(&m, c->flip_volume)) return 0;
+    const double h = c->opt->sizing ? c->opt->sizing(c->opt->sizing_user, m.cc) : 0;
+    return h > 0 && isfinite(h) && m.radius > h ? 0 : shape;
 }
 
 static int has(const lh_index *t, lh_index v)
@@ -252,7 +269,8 @@ static lh_status flip23(t3_ctx *c, lh_index t, int j, double floor, int *done)
     int s2 = lh__t3_orient4(c, a, q, f[2], f[0]);
     if (s0 == 0 || s0 != s1 || s1 != s2) return LH_OK;
     for (int k = 0; k < 3; k++) {
-        const double sh = floor > 0 ? lh__t3_shape_sorted(c, a, q, f[k], f[(k + 1) % 3])
+        const double sh = floor > 0 ? made_shape(c, a, q, f[k], f[(k + 1) % 3],
+                                                 lh__t3_shape_sorted(c, a, q, f[k], f[(k + 1) % 3]))
                                     : lh__t3_shape(c, a, q, f[k], f[(k + 1) % 3]);
         if (sh < T3_SLIVER || sh <= floor) return LH_OK;
     }
@@ -395,8 +413,8 @@ static int triangle_side(enum_ctx *e, int lo, int m, int hi, double *w)
                                 ? sx
                                 : 0);
         if (*sd)
-            e->w[lo][m][hi] =
-                fmin(lh__t3_shape(e->c, g->x, a, b, d), lh__t3_shape(e->c, g->y, a, b, d));
+            e->w[lo][m][hi] = fmin(made_shape(e->c, g->x, a, b, d, lh__t3_shape(e->c, g->x, a, b, d)),
+                                   made_shape(e->c, g->y, a, b, d, lh__t3_shape(e->c, g->y, a, b, d)));
     }
     *w = e->w[lo][m][hi];
     return *sd;

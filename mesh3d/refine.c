@@ -38,12 +38,9 @@ static int cmp_bad(const void *ctx, lh_index i, lh_index j)
     return 0;
 }
 
-/* Tet t's volume bound: the global one, or its region's when smaller (-a); 0 none. */
-static double volume_bound(const t3_refine *r, size_t t)
+double lh__t3_volume_bound(const t3_ctx *c, lh_index reg)
 {
-    const t3_ctx *c = r->c;
     double v = c->opt->max_volume > 0 ? c->opt->max_volume : 0;
-    const lh_index reg = r->d.label[t];
     if (c->opt->region_volumes && reg >= 0 && (size_t)reg < c->g->region_count) {
         const double rv = c->g->regions[5 * (size_t)reg + 4];
         if (rv > 0 && (v == 0 || rv < v)) v = rv;
@@ -88,7 +85,7 @@ static lh_status scan(t3_refine *r)
         sorted_corners(c, (lh_index)t, p); /* the same figures whatever the numbering */
         t3_tet_measure m;
         lh__t3_tet_measure(p, &m);
-        const double v = volume_bound(r, t);
+        const double v = lh__t3_volume_bound(c, r->d.label[t]);
         double spacing = v > 0 ? fmin(r->spacing, cbrt(v) / 4) : r->spacing;
         const double size = over_size(r, &m, &spacing);
         const int over_r = r->ratio > 0 && m.ratio > r->ratio;

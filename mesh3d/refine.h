@@ -87,6 +87,10 @@ static inline lh_index *lh__t3_sub_slot(const t3_refine *r, lh_index p, lh_index
     return r->sub + 4 * h;
 }
 
+/* refine.c: the volume bound of a tet of region reg (a domain label): the global one,
+ * or the region's when smaller (-a); 0 none. */
+double lh__t3_volume_bound(const t3_ctx *c, lh_index reg);
+
 /* refine.c: the rounds, until no tet of the domain is over its bound or no point can
  * be placed; c's statistics then count what is left over. */
 lh_status lh__t3_refine(t3_ctx *c);

@@ -32,6 +32,11 @@ LH_TEST(good_lists)
     LH_EXPECT_EQ_INT(c.first_index, 1);
     LH_EXPECT_EQ_INT(c.v[0], 0);
     LH_EXPECT_EQ_INT(c.v[7], 4);
+    LH_EXPECT_EQ_INT(c.attr_count, 1); /* the attributes kept */
+    LH_EXPECT_TRUE(c.attr && c.attr[0] == 0.5 && c.attr[1] == 7);
+    lh_cells_free(&c);
+    LH_ASSERT_EQ_INT(read_text("i", "1\n0 1 2\n", 4, NULL, &c, &err), LH_OK);
+    LH_EXPECT_TRUE(c.attr_count == 0 && c.attr == NULL);
     lh_cells_free(&c);
     lh_cells_free(NULL);
 }

@@ -529,6 +529,156 @@ LH_TEST(quality_figures)
     lh_plc_free(&g);
 }
 
+/* A 3x3x3 block of unit cubes without its centre one (a void), each cube split into
+ * Kuhn's six tets around its diagonal; attribute 1 for x < 1, else 2. */
+typedef struct block {
+    double xyz[3 * 64];
+    lh_index tets[4 * 6 * 26];
+    double attr[6 * 26];
+    size_t nt;
+} block;
+
+static void block_make(block *b, int flip)
+{
+    static const int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (int i = 0; i < 64; i++)
+        b->xyz[3 * i] = i % 4, b->xyz[3 * i + 1] = i / 4 % 4, b->xyz[3 * i + 2] = i / 16;
+    b->nt = 0;
+    for (int cz = 0; cz < 3; cz++)
+        for (int cy = 0; cy < 3; cy++)
+            for (int cx = 0; cx < 3; cx++) {
+                if (cx == 1 && cy == 1 && cz == 1) continue;
+                for (int t = 0; t < 6; t++) {
+                    int c[3] = {cx, cy, cz};
+                    lh_index *v = b->tets + 4 * b->nt;
+                    v[0] = (lh_index)(c[0] + 4 * c[1] + 16 * c[2]);
+                    for (int s = 0; s < 3; s++) c[order[t][s]]++, v[s + 1] = (lh_index)(c[0] + 4 * c[1] + 16 * c[2]);
+                    if (flip && t % 2) { /* either orientation is taken */
+                        const lh_index x = v[0];
+                        v[0] = v[1], v[1] = x;
+                    }
+                    b->attr[b->nt++] = cx < 1 ? 1 : 2;
+                }
+            }
+}
+
+/* Volume of m's tets, in all and of those with attribute a. */
+static double mesh_volume(const lh_tetmesh *m, double a, double *of_a)
+{
+    const double *x = lh_tetmesh_points(m), *at = lh_tetmesh_tet_attrs(m);
+    const lh_index *t = lh_tetmesh_tets(m);
+    double all = 0;
+    *of_a = 0;
+    for (size_t k = 0; k < lh_tetmesh_tet_count(m); k++) {
+        const double *p[4];
+        for (int j = 0; j < 4; j++) p[j] = x + 3 * t[4 * k + j];
+        double u[3], v[3], w[3];
+        for (int j = 0; j < 3; j++) u[j] = p[1][j] - p[0][j], v[j] = p[2][j] - p[0][j], w[j] = p[3][j] - p[0][j];
+        const double vol = fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                                u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+        all += vol;
+        if (at && at[k] == a) *of_a += vol;
+    }
+    return all;
+}
+
+/* lh_plc_from_tetmesh, then lh_tetrahedralize with regions_only: the block refined
+ * keeps its void, its two attributes' volumes and its points; either orientation of
+ * the tets gives the same PLC; without regions_only the void fills; bad meshes get
+ * their errors; every allocation failure is survived. */
+LH_TEST(refine_a_given_mesh)
+{
+    block b, f;
+    block_make(&b, 0), block_make(&f, 1);
+    lh_plc g, h;
+    lh_error err;
+    LH_ASSERT_EQ_INT(lh_plc_from_tetmesh(64, b.xyz, NULL, b.nt, b.tets, b.attr, NULL, &g, &err), LH_OK);
+    LH_EXPECT_EQ_U64(g.facet_count, 108 + 12 + 16);
+    LH_EXPECT_EQ_U64(g.region_count, 2);
+    LH_ASSERT_EQ_INT(lh_plc_from_tetmesh(64, f.xyz, NULL, f.nt, f.tets, f.attr, NULL, &h, &err), LH_OK);
+    LH_EXPECT_TRUE(h.facet_count == g.facet_count && h.region_count == g.region_count &&
+                   !memcmp(h.polygon_vertices, g.polygon_vertices, 3 * g.facet_count * sizeof(lh_index)) &&
+                   !memcmp(h.regions, g.regions, 5 * g.region_count * sizeof(double)));
+    lh_tetmesh_options o;
+    lh_tetmesh_options_default(&o);
+    o.regions_only = 1, o.region_attributes = 1, o.max_volume = 0.05, o.max_radius_edge = 1.414;
+    lh_tetmesh *m = NULL, *filled = NULL;
+    LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &m, &err), LH_OK);
+    if (m) {
+        LH_EXPECT_EQ_INT(check(m, &g, 0, &err), LH_OK);
+        double one, all = mesh_volume(m, 1, &one);
+        LH_EXPECT_TRUE(fabs(all - 26) < 1e-9 && fabs(one - 9) < 1e-9);
+        LH_EXPECT_TRUE(!memcmp(lh_tetmesh_points(m), b.xyz, sizeof b.xyz)); /* its points first */
+        lh_tetmesh_stats s;
+        lh_tetmesh_stats_get(m, &s);
+        LH_EXPECT_TRUE(s.tets > b.nt && s.over_volume == 0 && s.regions == 2);
+        lh_tetmesh_quality q;
+        LH_EXPECT_EQ_INT(lh_tetmesh_measure(lh_tetmesh_point_count(m), lh_tetmesh_points(m), s.tets,
+                                            lh_tetmesh_tets(m), NULL, &q, &err), LH_OK);
+        LH_EXPECT_TRUE(q.max_volume <= o.max_volume); /* strictly, the flips after refinement too */
+    }
+    /* box.poly -q, then -r -q -a0.01: the volume bound holds after the flips too (a
+       3-2 flip joins volumes: they made a tet of 0.0108 here before) */
+    lh_plc box, boxr;
+    LH_ASSERT_TRUE(read_plc("tetgen3d/box.poly", &box));
+    lh_tetmesh_options q;
+    lh_tetmesh_options_default(&q);
+    q.max_radius_edge = 2;
+    lh_tetmesh *first = NULL, *second = NULL;
+    LH_EXPECT_EQ_INT(lh_tetrahedralize(&box, &q, &first, &err), LH_OK);
+    if (first && lh_plc_from_tetmesh(lh_tetmesh_point_count(first), lh_tetmesh_points(first), NULL,
+                                     lh_tetmesh_tet_count(first), lh_tetmesh_tets(first), NULL, NULL, &boxr,
+                                     &err) == LH_OK) {
+        q.regions_only = 1, q.max_volume = 0.01;
+        LH_EXPECT_EQ_INT(lh_tetrahedralize(&boxr, &q, &second, &err), LH_OK);
+        lh_tetmesh_quality qq;
+        if (second && lh_tetmesh_measure(lh_tetmesh_point_count(second), lh_tetmesh_points(second),
+                                         lh_tetmesh_tet_count(second), lh_tetmesh_tets(second), NULL, &qq,
+                                         &err) == LH_OK) {
+            if (!(qq.max_volume <= 0.01)) fprintf(stderr, "box -r -a0.01: a tet of volume %g\n", qq.max_volume);
+            LH_EXPECT_TRUE(qq.max_volume <= 0.01);
+        }
+        lh_plc_free(&boxr);
+    }
+    lh_tetmesh_free(first), lh_tetmesh_free(second);
+    lh_plc_free(&box);
+    o.regions_only = 0;
+    LH_EXPECT_EQ_INT(lh_tetrahedralize(&g, &o, &filled, &err), LH_OK);
+    if (filled) {
+        double one;
+        LH_EXPECT_TRUE(fabs(mesh_volume(filled, 1, &one) - 27) < 1e-9);
+    }
+    lh_tetmesh_free(m), lh_tetmesh_free(filled);
+    lh_plc_free(&g), lh_plc_free(&h);
+
+    lh_index bad[8] = {0, 1, 4, 16, 0, 1, 4, 16}; /* the same tet twice */
+    LH_EXPECT_EQ_INT(lh_plc_from_tetmesh(64, b.xyz, NULL, 2, bad, NULL, NULL, &g, &err), LH_ERR_INVALID_MESH);
+    LH_EXPECT_TRUE(g.n == 0 && g.xyz == NULL);
+    bad[3] = 2; /* 0 1 4 2: flat, in z = 0 */
+    LH_EXPECT_EQ_INT(lh_plc_from_tetmesh(64, b.xyz, NULL, 1, bad, NULL, NULL, &g, &err), LH_ERR_INVALID_MESH);
+    LH_EXPECT_STREQ(err.message, "tetrahedron 0 is flat (its corners are coplanar)");
+    bad[3] = 64;
+    LH_EXPECT_EQ_INT(lh_plc_from_tetmesh(64, b.xyz, NULL, 1, bad, NULL, NULL, &g, &err), LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_STREQ(err.message, "tetrahedron 0 has point 64, not one of the 64 points");
+    b.attr[3] = NAN;
+    LH_EXPECT_EQ_INT(lh_plc_from_tetmesh(64, b.xyz, NULL, b.nt, b.tets, b.attr, NULL, &g, &err),
+                     LH_ERR_INVALID_ARGUMENT);
+    LH_EXPECT_EQ_INT(lh_plc_from_tetmesh(64, b.xyz, NULL, b.nt, b.tets, NULL, NULL, NULL, &err),
+                     LH_ERR_INVALID_ARGUMENT);
+    lh_status st = LH_ERR_NOMEM;
+    long k;
+    for (k = 1; st == LH_ERR_NOMEM && k < 100; k++) {
+        lh_test_counter c = {0};
+        c.fail_at = k;
+        lh_allocator a = {lh_test_counting_alloc, lh_test_counting_free, &c};
+        st = lh_plc_from_tetmesh(64, f.xyz, NULL, f.nt, f.tets, f.attr, &a, &g, &err);
+        if (st == LH_OK) lh_plc_free(&g);
+        LH_EXPECT_EQ_INT(c.live, 0);
+    }
+    LH_EXPECT_EQ_INT(st, LH_OK);
+    LH_EXPECT_GT_INT(k, 5);
+}
+
 /* A sizing function finer at z = 0 than at z = 1 (user: a call counter). */
 static double size_by_height(void *user, const double xyz[3])
 {
@@ -771,6 +921,7 @@ int main(int argc, char **argv)
                                          LH_CASE(second_order_nodes),
                                          LH_CASE(leftovers_listed),
                                          LH_CASE(sizing_function),
+                                         LH_CASE(refine_a_given_mesh),
                                          LH_CASE(quality_refinement)};
     return lh_test_main(cases, LH_COUNT(cases), argc, argv);
 }

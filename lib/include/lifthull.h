@@ -711,7 +711,9 @@ typedef struct lh_cells {
     lh_index *v;          /* count*nv point indices, 0-based                          */
     int first_index;      /* .ele: the first cell's number (0 or 1), the base of its
                              point indices too; 0 for Qhull's 'i'                    */
-    lh_allocator alloc_;  /* private: the hooks that allocated v                     */
+    int attr_count;       /* .ele: attributes per cell (its header's third field)     */
+    double *attr;         /* count*attr_count attributes, or NULL                     */
+    lh_allocator alloc_;  /* private: the hooks that allocated v and attr             */
 } lh_cells;
 
 /*
@@ -720,7 +722,7 @@ typedef struct lh_cells {
  * lifthull delaunay print: the count, then one cell a line, 0-based indices), or a
  * Triangle/TetGen .ele file (header "count points_per_cell [attributes]", then
  * "number v_0..v_k [attributes]" numbered consecutively from 0 or 1, the point
- * indices from the same base; attributes are finite numbers, skipped: NaN or
+ * indices from the same base; attributes are finite numbers, kept in attr: NaN or
  * infinity is LH_ERR_NONFINITE as in .node files). The header line tells them apart
  * (one field: 'i'). With n_points > 0 every index must name one of n_points points. Diagnostics and
  * statuses as lh_points_read ("NAME:LINE:COL: expected ..., found ...").
@@ -1211,6 +1213,9 @@ typedef struct lh_tetmesh_options {
                                   LH_ERR_STEINER_LIMIT (default SIZE_MAX)            */
     int region_attributes;     /* -A: each tetrahedron carries its region's attribute,
                                   regions without one numbered (default 0)           */
+    int regions_only;          /* 1: the domain is its regions: every tetrahedron no
+                                  region point's flood reaches is carved too (a mesh
+                                  refined through lh_plc_from_tetmesh) (default 0)  */
     int check_intersections;   /* 1: facets that intersect are LH_ERR_INTERSECTING_
                                   FACETS naming the first pairs (default 1)         */
     int threads;               /* as lh_options.threads (default 1)                 */
@@ -1422,6 +1427,27 @@ LH_API lh_status lh_tetmesh_check(size_t n, const double *xyz, size_t tet_count,
                                   size_t edge_count, const lh_index *edges,
                                   int boundary_free, const lh_plc *g, size_t *off_exact,
                                   const lh_allocator *alloc, lh_error *err);
+
+/*
+ * lh_plc_from_tetmesh: the PLC a tetrahedral mesh made by any program bounds, to refine
+ * the mesh with lh_tetrahedralize and regions_only (TetGen's -r): its n points (with
+ * point_markers, or NULL); a triangle facet for every face of the mesh's boundary
+ * (marker 1) and every face between tetrahedra of different attributes (tet_attrs,
+ * one per tetrahedron, or NULL) (marker 0); in each part those facets enclose, a
+ * region point at the centroid of its first tetrahedron whose rounded centroid lies
+ * strictly inside it, with the part's attribute (0 without tet_attrs) and no volume
+ * bound. The result keeps the mesh's points and boundary, not its tetrahedra: they
+ * are the constrained Delaunay ones of the refinement. Tetrahedra in either
+ * orientation. Returns LH_OK and *out (lh_plc_free releases it); else *out zeroed
+ * and: LH_ERR_INVALID_ARGUMENT (a NULL array with a count, an index out of range, a
+ * NaN or infinite coordinate or attribute), LH_ERR_INVALID_MESH (a flat tetrahedron,
+ * or lh_tetmesh_check's first fault: overlapping tetrahedra, a face in three),
+ * LH_ERR_DEGENERATE (a part none of whose tetrahedra has its rounded centroid
+ * inside), LH_ERR_TOO_LARGE, LH_ERR_NOMEM; err->message says which.
+ */
+LH_API lh_status lh_plc_from_tetmesh(size_t n, const double *xyz, const lh_index *point_markers,
+                                     size_t tet_count, const lh_index *tets, const double *tet_attrs,
+                                     const lh_allocator *alloc, lh_plc *out, lh_error *err);
 
 #ifdef __cplusplus
 }

@@ -8,7 +8,8 @@
  *   Triangle/TetGen .ele (Shewchuk, Triangle's documentation, ".ele files"):
  *       count nodes_per_cell [attributes]
  *       number v_0 .. v_k [attribute ...]
- *     numbered consecutively from 0 or 1, point indices from the same base.
+ *     numbered consecutively from 0 or 1, point indices from the same base; the
+ *     attributes kept.
  *
  * The header line tells them apart: one field is 'i', two or three are .ele. The
  * declared count is not trusted for one allocation: the array grows as cells come.
@@ -22,7 +23,7 @@
 void lh_cells_free(lh_cells *c)
 {
     if (!c) return;
-    if (c->alloc_.free) lh__free(&c->alloc_, c->v);
+    if (c->alloc_.free) lh__free(&c->alloc_, c->v), lh__free(&c->alloc_, c->attr);
     memset(c, 0, sizeof *c);
 }
 
@@ -31,7 +32,20 @@ typedef struct cells_ctx {
     lh_cells *c;
     size_t cap, declared, n_points;
     int ele, attrs;
+    double a[100]; /* the cell's attributes, as read */
 } cells_ctx;
+
+/* *arr (count items of `per` elements of `size` bytes) moved into room for cap. */
+static int grow(lh_cells *c, void **arr, size_t cap, size_t per, size_t size)
+{
+    if (per == 0) return 1;
+    void *na = cap > SIZE_MAX / size / per ? NULL : lh__alloc(&c->alloc_, cap * per * size);
+    if (!na) return 0;
+    if (c->count) memcpy(na, *arr, c->count * per * size);
+    lh__free(&c->alloc_, *arr);
+    *arr = na;
+    return 1;
+}
 
 static lh_status push(cells_ctx *x, const lh__token *at, const lh_index *v)
 {
@@ -40,15 +54,13 @@ static lh_status push(cells_ctx *x, const lh__token *at, const lh_index *v)
         size_t cap = x->cap ? 2 * x->cap : 256;
         if (cap > x->declared) cap = x->declared;
         if (cap <= c->count) cap = c->count + 1;
-        lh_index *nv = cap > SIZE_MAX / sizeof *nv / (size_t)c->nv ? NULL
-                      : lh__alloc(&c->alloc_, cap * (size_t)c->nv * sizeof *nv);
-        if (!nv) return lh__fail_at(x->s, LH_ERR_NOMEM, at, "out of memory for the cells");
-        if (c->count) memcpy(nv, c->v, c->count * (size_t)c->nv * sizeof *nv);
-        lh__free(&c->alloc_, c->v);
-        c->v = nv;
+        if (!grow(c, (void **)&c->v, cap, (size_t)c->nv, sizeof *c->v) ||
+            !grow(c, (void **)&c->attr, cap, (size_t)c->attr_count, sizeof *c->attr))
+            return lh__fail_at(x->s, LH_ERR_NOMEM, at, "out of memory for the cells");
         x->cap = cap;
     }
     memcpy(c->v + c->count * (size_t)c->nv, v, (size_t)c->nv * sizeof *v);
+    if (c->attr_count) memcpy(c->attr + c->count * (size_t)c->attr_count, x->a, (size_t)c->attr_count * sizeof *x->a);
     c->count++;
     return LH_OK;
 }
@@ -70,17 +82,16 @@ static lh_status index_of(cells_ctx *x, const lh__token *t, size_t i, lh_index *
     return lh__expected(x->s, LH_ERR_PARSE, t, what, NULL);
 }
 
-/* The rest of a line: .ele attributes (finite numbers, as in .node files), then its
- * end. */
+/* The rest of a line: .ele attributes (finite numbers, as in .node files) into x->a,
+ * then its end. */
 static lh_status line_end(cells_ctx *x, size_t i)
 {
     lh__token t;
-    double a;
     for (int j = 0; j < x->attrs; j++) {
         lh__scan_next(x->s, 0, &t);
         char what[80];
         snprintf(what, sizeof what, "attribute %d of cell %zu", j + 1, i + 1);
-        lh_status st = lh__number(x->s, &t, what, "accepted", NULL, &a);
+        lh_status st = lh__number(x->s, &t, what, "accepted", NULL, &x->a[j]);
         if (st != LH_OK) return st;
     }
     lh__scan_next(x->s, 0, &t);
@@ -152,7 +163,7 @@ static lh_status read_header(cells_ctx *x)
         return lh__expected(x->s, LH_ERR_PARSE, &t, "the end of the header line", NULL);
     x->ele = fields > 0;
     x->c->nv = fields ? (int)f[0] : 0;
-    x->attrs = fields > 1 ? (int)f[1] : 0;
+    x->attrs = x->c->attr_count = fields > 1 ? (int)f[1] : 0;
     return LH_OK;
 }
 
@@ -167,7 +178,7 @@ static lh_status read_cells(FILE *f, const char *name, size_t n_points, const lh
         lh_cells_free(out);
         return LH_ERR_NOMEM;
     }
-    cells_ctx x = {s, out, 0, 0, n_points, 0, 0};
+    cells_ctx x = {s, out, 0, 0, n_points, 0, 0, {0}};
     lh_status st = read_header(&x);
     for (size_t i = 0; st == LH_OK && i < x.declared; i++) {
         st = read_cell(&x, i);
