@@ -20,12 +20,13 @@ typedef struct tsw {
     int o2;              /* -o2: second-order nodes */
     int m;               /* -m: the sizes of FILE.mtr */
     int O, level, ops;   /* -O[level][/ops]; ops 0 when not given */
+    int r;               /* -r: refine FILE.node + FILE.ele */
     double ratio, angle, volume;
     size_t steiner, d_limit;
 } tsw;
 
 static const char *const usage_text =
-    "usage: lifthull tetgen [-pYcAqamfenkgzBNEFIQVdSOCo2] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
+    "usage: lifthull tetgen [-prYcAqamfenkgzBNEFIQVdSOCo2] FILE[.poly|.smesh|.node|.off|.ply|.stl|.mesh|.obj]\n"
     "\n"
     "TetGen's command line (H. Si), computed exactly by lifthull: the same switches,\n"
     "input and output files. FILE.poly / .smesh (TetGen's piecewise linear complexes),\n"
@@ -33,6 +34,9 @@ static const char *const usage_text =
     "FILE.node (points). Output: FILE.1.node, FILE.1.ele, FILE.1.face — from FILE.1.*\n"
     "come FILE.2.* — replacing earlier outputs, never the input; all files or none.\n"
     "\n"
+    "  -r      refine the mesh FILE.node + FILE.ele (with -q, -a, -m): its points and\n"
+    "          boundary kept, and faces between tetrahedra of different attributes (-A:\n"
+    "          kept in FILE.2.ele); its tetrahedra become constrained Delaunay ones\n"
     "  -p      tetrahedralize the PLC: every facet a union of faces, every segment a\n"
     "          union of edges (without -p: the Delaunay tetrahedralization of the points)\n"
     "  -Y      no Steiner points on the boundary (segments and facets)\n"
@@ -69,7 +73,7 @@ static const char *const usage_text =
     "  -o2     second-order nodes: a node at every edge's midpoint, in FILE.1.node;\n"
     "          FILE.1.ele lists 10 per tetrahedron, .face 6 and .edge 3 (TetGen 1.5's\n"
     "          order); not with -k or -g\n"
-    "not implemented yet (refused): -r -R -i -w -v\n"
+    "not implemented yet (refused): -R -i -w -v\n"
     "\n"
     "examples:\n"
     "  lifthull tetgen -pA examples/box.poly     # examples/box.1.node .ele .face\n"
@@ -136,7 +140,7 @@ static int parse_switches(const char *s, void *opt)
             if (lh_cli_switch_number(s, &j, &x)) o->level = x >= 0 && x <= 10 && x == (int)x ? (int)x : -1;
             if (s[j + 1] == '/') j++, o->ops = lh_cli_switch_number(s, &j, &x) && x >= 0 && x <= 7 && x == (int)x ? (int)x : -1;
             break;
-        case 'r': return refuse('r', "refining a mesh");
+        case 'r': o->r = 1; break;
         case 'm': o->m = 1; break;
         case 'R': return refuse('R', "mesh coarsening");
         case 'i': return refuse('i', "inserting points");
@@ -169,6 +173,12 @@ static void wanted(const tsw *o, int want[F_COUNT])
     want[F_NEIGH] = o->n;
     want[F_VTK] = o->k;
     want[F_MESH] = o->g;
+}
+
+/* Whether the tets carry region attributes: -A, for a PLC (-p) or a mesh (-r). */
+static int regions(const tsw *o)
+{
+    return o->A && (o->p || o->r);
 }
 
 /* Whether some point has a nonzero marker: the .node's marker column, else none. */
@@ -208,11 +218,11 @@ static lh_status write_file(const outputs *w, int which, FILE *f)
         return lh_node_marker_write(f, &v, markers && any_marker(m) ? lh_tetmesh_point_markers(m) : NULL,
                                     w->first);
     case F_ELE: {
-        const double *attrs = w->o->A && w->o->p ? lh_tetmesh_tet_attrs(m) : NULL;
+        const double *attrs = regions(w->o) ? lh_tetmesh_tet_attrs(m) : NULL;
         return w->o->o2 ? lh_cli_ele_order2_write(f, m, attrs, w->first) : lh_ele_attr_write(f, &v, attrs, w->first);
     }
     case F_NEIGH: return lh_neigh_write(f, &v, w->first);
-    case F_VTK: return lh_vtk_write(f, &v, w->o->A && w->o->p ? lh_tetmesh_tet_attrs(m) : NULL, NULL);
+    case F_VTK: return lh_vtk_write(f, &v, regions(w->o) ? lh_tetmesh_tet_attrs(m) : NULL, NULL);
     case F_FACE:
         v.k = 2;
         v.neighbors = NULL;
@@ -225,7 +235,7 @@ static lh_status write_file(const outputs *w, int which, FILE *f)
     case F_EDGE:
         v.k = 1, v.count = w->edges.n, v.cells = w->edges.v, v.neighbors = NULL;
         return simplices(w, f, &v, markers ? w->edges.mark : NULL);
-    default: return lh_cli_tetmesh_medit(f, m, markers, w->o->A && w->o->p, "tetgen");
+    default: return lh_cli_tetmesh_medit(f, m, markers, regions(w->o), "tetgen");
     }
 }
 
@@ -258,7 +268,8 @@ static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *
     if (sizing) opt.sizing = lh_cli_sizing_at, opt.sizing_user = sizing;
     opt.convex_hull = o->c || lh_cli_plc_is_points(in); /* nothing bounds a point set but its hull */
     opt.boundary_steiner = !o->Y;
-    opt.region_attributes = o->A && o->p; /* regions are a PLC's: TetGen's -A needs -p */
+    opt.region_attributes = regions(o);
+    opt.regions_only = o->r; /* the mesh's parts are the domain, its voids stay */
     if (o->S) opt.max_steiner = o->steiner;
     if (o->q) opt.max_radius_edge = o->ratio, opt.min_dihedral = o->angle;
     if (o->a) opt.max_volume = o->volume;
@@ -290,6 +301,10 @@ static int mesh_and_write(const tsw *o, lh_cli_plc *in, const char *outb, char *
 static char *input_path(const char *file, int p, size_t *stem)
 {
     if (lh_cli_plc_path(file, stem)) return lh_cli_path_ext(file, strlen(file), "");
+    if (p < 0) { /* -r: FILE.node (and FILE.ele) */
+        *stem = strlen(file);
+        return lh_cli_path_ext(file, *stem, ".node");
+    }
     *stem = strlen(file);
     char *path = lh_cli_path_ext(file, *stem, p ? ".poly" : ".node");
     char *smesh = path && p ? lh_cli_path_ext(file, *stem, ".smesh") : NULL;
@@ -304,7 +319,7 @@ static char *input_path(const char *file, int p, size_t *stem)
 static int run(const tsw *o, const char *file)
 {
     size_t stem;
-    char *in_path = input_path(file, o->p, &stem), *outb = in_path ? lh_cli_out_base(in_path, stem, o->I) : NULL;
+    char *in_path = input_path(file, o->r ? -1 : o->p, &stem), *outb = in_path ? lh_cli_out_base(in_path, stem, o->I) : NULL;
     char *path[F_COUNT] = {0};
     int want[F_COUNT], rc = LH_EXIT_FAIL;
     wanted(o, want);
@@ -316,7 +331,7 @@ static int run(const tsw *o, const char *file)
     for (int i = 0; i < F_COUNT; i++)
         if (path[i] && !lh_cli_out_check("tetgen", path[i], 1, in_path)) goto done;
     lh_cli_plc in;
-    if (!lh_cli_plc_load(&in, "tetgen", in_path)) {
+    if (!(o->r ? lh_cli_mesh_load(&in, "tetgen", in_path, stem) : lh_cli_plc_load(&in, "tetgen", in_path))) {
         rc = LH_EXIT_INPUT;
         goto done;
     }
@@ -331,7 +346,7 @@ static int run(const tsw *o, const char *file)
                                                o->z ? 0 : in.g.first_index);
         rc = r < 0 ? LH_EXIT_INPUT : r ? LH_EXIT_FAIL : lh_cli_finish_output("tetgen");
     } else {
-        if (!o->p) lh_cli_plc_points_only(&in);
+        if (!o->p && !o->r) lh_cli_plc_points_only(&in);
         char *mtr = o->m ? lh_cli_path_ext(in_path, stem, ".mtr") : NULL;
         lh_cli_sizing sizing = {NULL, NULL};
         if (o->m && !mtr) fprintf(stderr, "lifthull tetgen: out of memory\n");
@@ -361,6 +376,15 @@ int lh_cli_tetgen(int argc, char **argv)
     }
     if (o.q && !(o.angle >= 0 && o.angle < 90)) {
         fprintf(stderr, "lifthull tetgen: -q R/D takes a dihedral angle from 0 to 90 degrees, not %g\n", o.angle);
+        return LH_EXIT_USAGE;
+    }
+    if (o.r && o.a_regions) {
+        fprintf(stderr, "lifthull tetgen: -r with -a alone (the volume bounds of FILE.vol) is not implemented "
+                        "yet; give -aV\n");
+        return LH_EXIT_USAGE;
+    }
+    if (o.r && o.d) {
+        fprintf(stderr, "lifthull tetgen: -d tests a PLC's facets, not a mesh (-r)\n");
         return LH_EXIT_USAGE;
     }
     if (o.O && (o.level < 0 || o.ops < 0)) {

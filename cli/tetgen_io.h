@@ -28,6 +28,10 @@ int lh_cli_plc_path(const char *path, size_t *stem);
  * extension). Returns 1, or 0 after printing "lifthull CMD: FILE:LINE:COL: ..." on
  * standard error. */
 int lh_cli_plc_load(lh_cli_plc *in, const char *cmd, const char *path);
+/* A tetrahedral mesh to refine (-r): BASE.node's points (BASE = node_path's first
+ * stem bytes) and BASE.ele's tets, as the PLC they bound (lh_plc_from_tetmesh). 1, or
+ * 0 after printing the problem as lifthull CMD. */
+int lh_cli_mesh_load(lh_cli_plc *in, const char *cmd, const char *node_path, size_t stem);
 void lh_cli_plc_free(lh_cli_plc *in);
 /* Whether the input is points only (no facet, no segment): its mesh is the
  * Delaunay tetrahedralization of their convex hull. */

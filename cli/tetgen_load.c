@@ -120,6 +120,48 @@ int lh_cli_plc_load(lh_cli_plc *in, const char *cmd, const char *path)
     return ok;
 }
 
+/* The tets of BASE.ele (4 points each; the first attribute of each, if any, into
+ * *attr, malloc'ed): 1, or 0 after printing the problem. */
+static int read_tets(const char *cmd, const char *path, size_t n, lh_cells *c, double **attr)
+{
+    FILE *f = open_input(cmd, path);
+    if (!f) return 0;
+    lh_error err;
+    lh_status st = lh_cells_read(f, path, n, NULL, c, &err);
+    fclose(f);
+    if (st != LH_OK) return say(cmd, path, &err, st), 0;
+    if (c->nv != 4) {
+        fprintf(stderr, "lifthull %s: %s: cells of %d points; a tetrahedral mesh has 4\n", cmd, path, c->nv);
+        return 0;
+    }
+    *attr = c->attr_count ? malloc((c->count ? c->count : 1) * sizeof **attr) : NULL;
+    if (c->attr_count && !*attr) return fprintf(stderr, "lifthull %s: out of memory\n", cmd), 0;
+    for (size_t t = 0; *attr && t < c->count; t++) (*attr)[t] = c->attr[t * (size_t)c->attr_count];
+    return 1;
+}
+
+int lh_cli_mesh_load(lh_cli_plc *in, const char *cmd, const char *node_path, size_t stem)
+{
+    memset(in, 0, sizeof *in);
+    in->path = node_path;
+    lh_points p;
+    lh_cells c;
+    double *attr = NULL;
+    memset(&p, 0, sizeof p), memset(&c, 0, sizeof c);
+    char *ele = lh_cli_path_ext(node_path, stem, ".ele");
+    int ok = ele && read_points(cmd, node_path, &p) && read_tets(cmd, ele, p.n, &c, &attr);
+    if (!ele) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
+    lh_error err;
+    lh_status st = ok ? lh_plc_from_tetmesh(p.n, p.xyz, p.marker, c.count, c.v, attr, NULL, &in->g, &err) : LH_OK;
+    if (st != LH_OK) fprintf(stderr, "lifthull %s: %s: %s\n", cmd, ele, err.message[0] ? err.message : lh_status_message(st));
+    in->read = ok = ok && st == LH_OK;
+    in->g.first_index = p.first_index;
+    lh_points_free(&p), lh_cells_free(&c);
+    free(attr), free(ele);
+    if (!ok) lh_cli_plc_free(in);
+    return ok;
+}
+
 void lh_cli_plc_free(lh_cli_plc *in)
 {
     if (in->read) lh_plc_free(&in->g);

@@ -141,6 +141,28 @@ same "leftovers = over the bound" "$(sed -n 's/^  Tetrahedra left over the bound
 same "leftovers by why" "$(awk '/left over the bounds:/ { f = 1; next } f && /^    [0-9]+: / { s += $1 } /^  the worst/ { f = 0 }
   END { print s }' out.txt)" "$(sed -n 's/^  Tetrahedra left over the bounds: //p' out.txt)"
 same "leftovers listed" "$(grep -c '^    [0-9.e+]*; [0-9]*: [0-9]* [0-9]* [0-9]* [0-9]*; .*; 1 degrees between' out.txt)" "20"
+# -r: box.1 (-pqA) refined under -a0.01: FILE.2.*, the same volume, every tet within the
+# bound, its region attribute kept (-A), its points first; bad meshes: exit 3
+expect "-pqA" 0 '' '' -- "$lh" tetgen -pqAQ box.poly
+expect "-rqa0.01AC" 0 '' '^check: the mesh is valid' -- "$lh" tetgen -rqa0.01AQC box.1
+read -r vol least < <(volume box.2.node box.2.ele)
+same "-r volume" "$vol" "6"
+same "-r tets at most 0.01" "$(over box.2.node box.2.ele 0.01)" "0"
+same "-r attributes" "$(awk 'NR == 1 { print $3 } NR > 1 { print $6 }' box.2.ele | sort -u | tr '\n' ' ')" "1 7 "
+same "-r refined" "$(awk 'NR == 1 { print ($1 > 100) }' box.2.ele)" "1"
+same "-r points kept" "$(head -n "$(($(head -1 box.1.node | awk '{ print $1 }') + 1))" box.2.node | tail -n +2 |
+  awk '{ print $2, $3, $4 }' | md5sum)" "$(tail -n +2 box.1.node | grep -v '^#' | awk '{ print $2, $3, $4 }' | md5sum)"
+printf '2 4 0\n1 1 2 4 5\n2 1 2 4 5\n' > twice.ele
+cp box.1.node twice.node
+expect "-r overlapping" 3 '^lifthull tetgen: twice\.ele: ' '' -- "$lh" tetgen -rq twice
+printf '1 3 0\n1 1 2 4\n' > tri.ele
+cp box.1.node tri.node
+expect "-r triangles" 3 '^lifthull tetgen: tri\.ele: cells of 3 points; a tetrahedral mesh has 4$' '' -- \
+  "$lh" tetgen -rq tri
+cp box.1.node lone.node
+expect "-r no .ele" 3 '^lifthull tetgen: lone\.ele: No such file' '' -- "$lh" tetgen -rq lone
+expect "-ra alone" 2 '^lifthull tetgen: -r with -a alone' '' -- "$lh" tetgen -rqa box.1
+absent twice.2.node tri.2.node
 # -O: the flips after refinement raise hole.off's smallest dihedral angle; -O0 has none;
 # asking for smoothing (ops 2) says it is not implemented
 cp "$data/../mesh3d/hole.off" .
@@ -191,7 +213,6 @@ cd ..
 # refused: TetGen switches lifthull does not have yet, unknown switches, a signed -S
 # (exit 2, nothing read or written)
 fresh cube.node
-expect "-r refused" 2 '^lifthull tetgen: -r \(refining a mesh\) is not implemented yet' '' -- "$lh" tetgen -r cube.node
 expect "-O11" 2 '^lifthull tetgen: -O takes a level from 0 to 10 and /ops from 0 to 7' '' -- \
   "$lh" tetgen -pO11 cube.node
 for s in R i w v; do
