@@ -153,7 +153,9 @@ int lh_cli_mesh_load(lh_cli_plc *in, const char *cmd, const char *node_path, siz
     if (!ele) fprintf(stderr, "lifthull %s: out of memory\n", cmd);
     lh_error err;
     lh_status st = ok ? lh_plc_from_tetmesh(p.n, p.xyz, p.marker, c.count, c.v, attr, NULL, &in->g, &err) : LH_OK;
-    if (st != LH_OK) fprintf(stderr, "lifthull %s: %s: %s\n", cmd, ele, err.message[0] ? err.message : lh_status_message(st));
+    if (st != LH_OK)
+        fprintf(stderr, "lifthull %s: %s: %s%s\n", cmd, ele, err.message[0] ? err.message : lh_status_message(st),
+                st == LH_ERR_INVALID_MESH || st == LH_ERR_DEGENERATE ? " (tetrahedra and points numbered from 0)" : "");
     in->read = ok = ok && st == LH_OK;
     in->g.first_index = p.first_index;
     lh_points_free(&p), lh_cells_free(&c);

@@ -154,7 +154,7 @@ same "-r points kept" "$(head -n "$(($(head -1 box.1.node | awk '{ print $1 }') 
   awk '{ print $2, $3, $4 }' | md5sum)" "$(tail -n +2 box.1.node | grep -v '^#' | awk '{ print $2, $3, $4 }' | md5sum)"
 printf '2 4 0\n1 1 2 4 5\n2 1 2 4 5\n' > twice.ele
 cp box.1.node twice.node
-expect "-r overlapping" 3 '^lifthull tetgen: twice\.ele: ' '' -- "$lh" tetgen -rq twice
+expect "-r overlapping" 3 '^lifthull tetgen: twice\.ele: tets 0 and 1 are the same tet .* \(tetrahedra and points numbered from 0\)$' '' -- "$lh" tetgen -rq twice
 printf '1 3 0\n1 1 2 4\n' > tri.ele
 cp box.1.node tri.node
 expect "-r triangles" 3 '^lifthull tetgen: tri\.ele: cells of 3 points; a tetrahedral mesh has 4$' '' -- \
