@@ -36,9 +36,9 @@ typedef struct angle_feature {
 static int cmp_left(const void *pa, const void *pb)
 {
     const t3_left *a = pa, *b = pb;
-    for (int k = 0; k < 12; k++)
-        if (a->key[k] != b->key[k]) return a->key[k] < b->key[k] ? -1 : 1;
-    return 0;
+    int s = 0;
+    for (int k = 0; k < 4 && !s; k++) s = lh__t3_cmp_xyz(a->key + 3 * k, b->key + 3 * k);
+    return s;
 }
 
 /* The coordinates of corners p[0..3] in coordinate order into key. */
@@ -69,10 +69,9 @@ lh_status lh__t3_left_record(t3_ctx *c, const t3_bad *bad, size_t count)
 
 static double angle_of(const double *u, const double *v)
 {
-    const double w[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                         u[0] * v[1] - u[1] * v[0]};
-    return DEG * atan2(sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]),
-                       u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
+    double w[3];
+    lh__t3_cross(u, v, w);
+    return DEG * atan2(sqrt(lh__t3_dot(w, w)), lh__t3_dot(u, v));
 }
 
 static lh_status feature_add(t3_ctx *c, angle_feature **f, size_t *count, size_t *cap,

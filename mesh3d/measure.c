@@ -41,29 +41,17 @@ static void hist_add(lh_histogram *h, double x)
     h->count[k]++;
 }
 
-static void cross(const double *u, const double *v, double *w)
-{
-    w[0] = u[1] * v[2] - u[2] * v[1];
-    w[1] = u[2] * v[0] - u[0] * v[2];
-    w[2] = u[0] * v[1] - u[1] * v[0];
-}
-
-static double dot(const double *u, const double *v)
-{
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-}
-
 static double norm(const double *u)
 {
-    return sqrt(dot(u, u));
+    return sqrt(lh__t3_dot(u, u));
 }
 
 /* The angle between u and v, degrees. */
 static double angle(const double *u, const double *v)
 {
     double w[3];
-    cross(u, v, w);
-    return DEGREES(atan2(norm(w), dot(u, v)));
+    lh__t3_cross(u, v, w);
+    return DEGREES(atan2(norm(w), lh__t3_dot(u, v)));
 }
 
 static void range(double x, double *lo, double *hi)
@@ -84,17 +72,18 @@ static void tet_figures(const double *const *p, lh_tetmesh_quality *q)
         double u[3], vc[3], vd[3], nc[3], nd[3];
         for (int k = 0; k < 3; k++) u[k] = b[k] - a[k], vc[k] = c[k] - a[k], vd[k] = d[k] - a[k];
         lmin = fmin(lmin, norm(u)), lmax = fmax(lmax, norm(u));
-        cross(u, vc, nc), cross(u, vd, nd);
+        lh__t3_cross(u, vc, nc), lh__t3_cross(u, vd, nd);
         amax = fmax(amax, fmax(norm(nc), norm(nd))); /* twice the faces' areas */
         const double dih = angle(nc, nd);
         range(dih, &q->min_dihedral, &q->max_dihedral);
         hist_add(&q->dihedral, dih);
     }
     double cd[3], db[3], bc[3], num[3]; /* circumcentre as in tet_geom.c */
-    cross(f[2], f[3], cd), cross(f[3], f[1], db), cross(f[1], f[2], bc);
+    lh__t3_cross(f[2], f[3], cd), lh__t3_cross(f[3], f[1], db), lh__t3_cross(f[1], f[2], bc);
     for (int k = 0; k < 3; k++)
-        num[k] = dot(f[1], f[1]) * cd[k] + dot(f[2], f[2]) * db[k] + dot(f[3], f[3]) * bc[k];
-    const double vol6 = fabs(dot(f[1], cd));
+        num[k] = lh__t3_dot(f[1], f[1]) * cd[k] + lh__t3_dot(f[2], f[2]) * db[k] +
+                 lh__t3_dot(f[3], f[3]) * bc[k];
+    const double vol6 = fabs(lh__t3_dot(f[1], cd));
     const double ratio = vol6 > 0 ? norm(num) / (2 * vol6) / lmin : INFINITY;
     const double aspect = vol6 > 0 ? lmax * amax / vol6 : INFINITY; /* lmax / (3V / A) */
     range(ldexp(vol6 / 6, 3 * s), &q->min_volume, &q->max_volume);

@@ -22,11 +22,8 @@
 /* Points v[0..n) (n <= 4) as coordinates, in coordinate order, into p. */
 static inline void lh__t3_sorted_points(const t3_ctx *c, const lh_index *v, int n, const double **p)
 {
-    for (int i = 0; i < n; i++) {
-        int j = i;
-        for (; j > 0 && lh__t3_cmp_xyz(p[j - 1], lh__t3_pt(c, v[i])) > 0; j--) p[j] = p[j - 1];
-        p[j] = lh__t3_pt(c, v[i]);
-    }
+    for (int i = 0; i < n; i++) p[i] = lh__t3_pt(c, v[i]);
+    lh__t3_sort_corners(p, n);
 }
 
 /* A tetrahedron over its bound: tet t, how much (the larger of its ratios to the

@@ -7,14 +7,14 @@
 
 #include <math.h>
 
-static void cross(const double *u, const double *v, double *w)
+void lh__t3_cross(const double *u, const double *v, double *w)
 {
     w[0] = u[1] * v[2] - u[2] * v[1];
     w[1] = u[2] * v[0] - u[0] * v[2];
     w[2] = u[0] * v[1] - u[1] * v[0];
 }
 
-static double dot(const double *u, const double *v)
+double lh__t3_dot(const double *u, const double *v)
 {
     return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
@@ -80,23 +80,23 @@ static int direct(const double *x, const double *y, double d[3])
 double lh__t3_dist(const double *x, const double *y)
 {
     double d[3];
-    if (direct(x, y, d)) return sqrt(dot(d, d));
+    if (direct(x, y, d)) return sqrt(lh__t3_dot(d, d));
     const double *p[2] = {x, y};
     int e = frame_exp(p, 2);
     double v[3];
     rel(y, x, e, v);
-    return ldexp(sqrt(dot(v, v)), e);
+    return ldexp(sqrt(lh__t3_dot(v, v)), e);
 }
 
 int lh__t3_in_diametral(const double *a, const double *b, const double *x)
 {
     double da[3], db[3];
-    if (direct(x, a, da) && direct(x, b, db)) return dot(da, db) < 0;
+    if (direct(x, a, da) && direct(x, b, db)) return lh__t3_dot(da, db) < 0;
     const double *p[3] = {x, a, b};
     int e = frame_exp(p, 3);
     double u[3], v[3];
     rel(a, x, e, u), rel(b, x, e, v);
-    return dot(u, v) < 0;
+    return lh__t3_dot(u, v) < 0;
 }
 
 /* The dihedral angle at edge a b between the planes through c and d, as the point
@@ -106,8 +106,8 @@ static void dihedral(const double *a, const double *b, const double *c, const do
 {
     double u[3], vc[3], vd[3], nc[3], nd[3], w[3];
     for (int k = 0; k < 3; k++) u[k] = b[k] - a[k], vc[k] = c[k] - a[k], vd[k] = d[k] - a[k];
-    cross(u, vc, nc), cross(u, vd, nd), cross(nc, nd, w);
-    dih[0] = dot(nc, nd), dih[1] = sqrt(dot(w, w));
+    lh__t3_cross(u, vc, nc), lh__t3_cross(u, vd, nd), lh__t3_cross(nc, nd, w);
+    dih[0] = lh__t3_dot(nc, nd), dih[1] = sqrt(lh__t3_dot(w, w));
 }
 
 void lh__t3_tet_measure(const double *const *p, t3_tet_measure *m)
@@ -120,19 +120,19 @@ void lh__t3_tet_measure(const double *const *p, t3_tet_measure *m)
     for (int i = 0; i < 6; i++) { /* angles compare as their (cos, sin) points turn */
         double v[3], dih[2];
         for (int k = 0; k < 3; k++) v[k] = q[e[i][0]][k] - q[e[i][1]][k];
-        shortest = fmin(shortest, sqrt(dot(v, v)));
+        shortest = fmin(shortest, sqrt(lh__t3_dot(v, v)));
         dihedral(q[e[i][0]], q[e[i][1]], q[e[i][2]], q[e[i][3]], dih);
         if (i == 0 || dih[0] * least[1] - dih[1] * least[0] > 0)
             least[0] = dih[0], least[1] = dih[1];
     }
     /* circumcentre of 0, q1, q2, q3: (|b|^2 c x d + |c|^2 d x b + |d|^2 b x c) / 2 b.(c x d) */
     double cd[3], db[3], bc[3], num[3];
-    cross(q[2], q[3], cd), cross(q[3], q[1], db), cross(q[1], q[2], bc);
+    lh__t3_cross(q[2], q[3], cd), lh__t3_cross(q[3], q[1], db), lh__t3_cross(q[1], q[2], bc);
     for (int k = 0; k < 3; k++)
-        num[k] = dot(q[1], q[1]) * cd[k] + dot(q[2], q[2]) * db[k] + dot(q[3], q[3]) * bc[k];
-    const double vol6 = dot(q[1], cd);
+        num[k] = lh__t3_dot(q[1], q[1]) * cd[k] + lh__t3_dot(q[2], q[2]) * db[k] + lh__t3_dot(q[3], q[3]) * bc[k];
+    const double vol6 = lh__t3_dot(q[1], cd);
     for (int k = 0; k < 3; k++) m->cc[k] = p[0][k] + ldexp(num[k] / (2 * vol6), s);
-    const double r = sqrt(dot(num, num)) / fabs(2 * vol6);
+    const double r = sqrt(lh__t3_dot(num, num)) / fabs(2 * vol6);
     m->radius = ldexp(r, s);
     m->shortest = ldexp(shortest, s);
     m->ratio = vol6 != 0 ? r / shortest : INFINITY;
@@ -153,14 +153,14 @@ int lh__t3_tri_circumcentre(const double *a, const double *b, const double *c, d
     const int s = frame_exp(p, 3);
     double u[3], v[3], n[3], w[3], x[3];
     rel(b, a, s, u), rel(c, a, s, v);
-    cross(u, v, n);
-    const double nn = dot(n, n);
+    lh__t3_cross(u, v, n);
+    const double nn = lh__t3_dot(n, n);
     if (!(nn > 0)) return 0;
     /* a + ((|u|^2 v - |v|^2 u) x n) / (2 |n|^2) */
-    for (int k = 0; k < 3; k++) w[k] = dot(u, u) * v[k] - dot(v, v) * u[k];
-    cross(w, n, x);
+    for (int k = 0; k < 3; k++) w[k] = lh__t3_dot(u, u) * v[k] - lh__t3_dot(v, v) * u[k];
+    lh__t3_cross(w, n, x);
     for (int k = 0; k < 3; k++) x[k] /= 2 * nn;
     for (int k = 0; k < 3; k++) cc[k] = a[k] + ldexp(x[k], s);
-    *radius = ldexp(sqrt(dot(x, x)), s);
+    *radius = ldexp(sqrt(lh__t3_dot(x, x)), s);
     return 1;
 }

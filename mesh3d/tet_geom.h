@@ -29,6 +29,9 @@ int lh__t3_tri_circumcentre(const double *a, const double *b, const double *c, d
 /* Whether x lies inside the diametral sphere of segment a b (sees it under more than
  * 90 degrees). */
 int lh__t3_in_diametral(const double *a, const double *b, const double *x);
+/* w = u x v; u . v (plain doubles: callers scale into a frame first). */
+void lh__t3_cross(const double *u, const double *v, double *w);
+double lh__t3_dot(const double *u, const double *v);
 /* |x - y|, without overflow. */
 double lh__t3_dist(const double *x, const double *y);
 /* The points p[0..n) (n <= 4) in a frame at p[0] scaled by 2^-e so that no square
