@@ -42,19 +42,20 @@ static const char *why_text(int why)
     case LH_LEFT_REFUSED: return "recovery could not settle around its split point";
     case LH_LEFT_REGION: return "its split point's conflict region is too large";
     case LH_LEFT_STOPPED: return "refinement stopped before its turn (-S or the rounds' limits)";
+    case LH_LEFT_ANGLE: return "its shortest edge spans a small input angle (a seditious edge)";
     default: return "made by the sliver flips after refinement";
     }
 }
 
 void lh_cli_tetmesh_leftovers(FILE *out, const lh_tetmesh *m, size_t limit, int first)
 {
-    size_t n, by[LH_LEFT_FLIPS + 1] = {0};
+    size_t n, by[LH_LEFT_ANGLE + 1] = {0};
     const lh_tetmesh_leftover *l = lh_tetmesh_leftovers(m, &n);
     if (!n) return;
     const lh_index *tv = lh_tetmesh_tets(m);
     fprintf(out, "\n  Tetrahedra left over the bounds: %zu\n", n);
     for (size_t i = 0; i < n; i++) by[l[i].why]++;
-    for (int w = LH_LEFT_SPACING; w <= LH_LEFT_FLIPS; w++)
+    for (int w = LH_LEFT_SPACING; w <= LH_LEFT_ANGLE; w++)
         if (by[w]) fprintf(out, "    %zu: %s\n", by[w], why_text(w));
     fprintf(out, "  the worst %zu (radius-edge ratio; tetrahedron: points; why; the nearest input angle below 60 "
                  "degrees, in the tetrahedron's shortest edges from it):\n", n < limit ? n : limit);

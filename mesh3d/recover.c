@@ -127,6 +127,15 @@ lh_status lh__t3_recover_suppress(t3_ctx *c, const unsigned char *out, size_t *t
     return st;
 }
 
+lh_status lh__t3_recover_check(t3_ctx *c)
+{
+    lh_status st = split_edges(c);
+    if (st == LH_OK && c->new_count == 0) st = split_faces(c);
+    if (st != LH_OK || c->new_count == 0) return st;
+    c->new_count = 0; /* the rounds queue their own splits, after flips */
+    return lh__t3_recover(c);
+}
+
 lh_status lh__t3_recover(t3_ctx *c)
 {
     for (const size_t first = c->rounds;;) {

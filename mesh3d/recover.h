@@ -222,6 +222,9 @@ lh_status lh__t3_room(t3_ctx *c, lh_index **buf, size_t *cap, size_t need);
 lh_status lh__t3_recover(t3_ctx *c);
 /* Drops what rounds cache of constraints found whole: the next checks them afresh. */
 void lh__t3_forget(t3_ctx *c);
+/* The constraints checked in the mesh as it is (through the rounds' caches), and the
+ * rounds run only when one is missing. */
+lh_status lh__t3_recover_check(t3_ctx *c);
 
 /* plc_check.c: the PLC's arrays, indices and coordinates. */
 lh_status lh__t3_plc_check(t3_ctx *c);
@@ -253,6 +256,9 @@ lh_status lh__t3_each_subsegment(t3_ctx *c, t3_subsegment_fn f, void *arg);
 lh_status lh__t3_xyz_room(t3_ctx *c, size_t m);
 /* Inserts the queued split points, merges them into the chains, rebuilds the stars. */
 lh_status lh__t3_commit(t3_ctx *c);
+/* Marks as changed this round the points first_new.. and the points of their stars,
+ * and the points of the m nodes. */
+lh_status lh__t3_mark_changed(t3_ctx *c, size_t first_new, const t3_node *nodes, size_t m);
 /* Whether a point of segment s's chain changed since round r. */
 int lh__t3_seg_changed(const t3_ctx *c, size_t s, uint32_t r);
 /* Sorts the chains' nodes (by segment, then parameter) and rebuilds node_first. */
@@ -288,6 +294,8 @@ lh_status lh__t3_patch_cover(t3_ctx *c, size_t k, const lh_index **faces, size_t
 /* tets.c: the mesh (t3_ctx.tv, tn). At most this many tets replaced or made at once. */
 /* Loads the Delaunay tetrahedralization. */
 lh_status lh__t3_mesh_load(t3_ctx *c);
+/* Room for need tets (tv, tn, tmark) and for every point in vtet. */
+lh_status lh__t3_mesh_room(t3_ctx *c, size_t need);
 /* A fresh visit mark for tmark. */
 lh_index lh__t3_mesh_mark(t3_ctx *c);
 /* The tets holding point v into c->sbuf, *count of them. */

@@ -299,9 +299,9 @@ int lh__t3_seg_changed(const t3_ctx *c, size_t s, uint32_t r)
     return 0;
 }
 
-/* Marks what this round's insertions changed: the new points and every point beside
- * one (their stars), and the points put on chains (their chains changed). */
-static lh_status mark_changed(t3_ctx *c, size_t first_new, const t3_node *nodes, size_t m)
+/* What this round's insertions changed: the new points and every point beside one
+ * (their stars), and the points put on chains (their chains changed). */
+lh_status lh__t3_mark_changed(t3_ctx *c, size_t first_new, const t3_node *nodes, size_t m)
 {
     if (c->changed_cap < c->n) {
         size_t cap = 2 * c->n;
@@ -361,7 +361,7 @@ lh_status lh__t3_commit(t3_ctx *c)
                           "point already there");
     if (st == LH_OK) st = lh__t3_mesh_load(c);
     if (st == LH_OK) st = lh__t3_stars(c);
-    if (st == LH_OK) st = mark_changed(c, first_new, c->new_node, m);
+    if (st == LH_OK) st = lh__t3_mark_changed(c, first_new, c->new_node, m);
     c->new_count = 0;
     return st;
 }

@@ -10,11 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The largest conflict region looked at: a point with a bigger one (far from its
- * tet in a mesh flips made far from Delaunay) is left this round. Whether a region
- * is that big is of the geometry alone, as the region is. */
-#define T3_REGION_MAX 4096
-
 /* The circumcentre and radius of triangle f, from its corners in coordinate order
  * (the same figures whatever the numbering); 0 when flat. */
 static int face_circumcentre(const t3_ctx *c, const lh_index *f, double cc[3], double *rad)
@@ -47,13 +42,15 @@ static int blocked(const t3_refine *r, size_t t, int j)
 
 /* A walk from tet t towards x: the tet holding x (*hit = -1), or the tet whose face
  * *hit the walk would cross out of the domain or through a wall; -1 when it runs
- * long (a cycle in a mesh flips made non-Delaunay). Of the faces x lies beyond, it
- * crosses the one whose opposite corner is first in coordinate order: a path of
- * the geometry alone, whatever the tets' and points' numbers. */
+ * longer than T3_REGION_MAX steps (a circumcentre that far from its tet, a sliver's,
+ * is left as a conflict region that large is; or a cycle in a mesh flips made
+ * non-Delaunay). Of the faces x lies beyond, it crosses the one whose opposite
+ * corner is first in coordinate order: a path of the geometry alone, whatever the
+ * tets' and points' numbers. */
 static lh_index walk(t3_refine *r, lh_index t, const double *x, int *hit)
 {
     t3_ctx *c = r->c;
-    for (size_t step = 0; step < 4 * c->tet_count + 64; step++) {
+    for (size_t step = 0; step < T3_REGION_MAX; step++) {
         int out = -1;
         for (int j = 0; j < 4; j++) {
             if (lh__t3_mesh_side(c, (size_t)t, j, x) >= 0) continue;
@@ -68,13 +65,12 @@ static lh_index walk(t3_refine *r, lh_index t, const double *x, int *hit)
     return -1;
 }
 
-/* Whether x lies strictly inside tet t's circumsphere (exact). */
-static int in_sphere(t3_ctx *c, size_t t, const double *x)
+int lh__t3_in_sphere(t3_ctx *c, size_t t, const double *x)
 {
     const double *p[5];
     for (int j = 0; j < 4; j++) p[j] = lh__t3_pt(c, c->tv[4 * t + j]);
     p[4] = x;
-    return lh_insphere(c->pred, 3, p) < 0;
+    return lh_insphere_sos(c->pred, 3, p) < 0;
 }
 
 /* Appends to r->reg the conflict region of x from the tets r->reg[first..]: they
@@ -90,7 +86,8 @@ static lh_status grow(t3_refine *r, size_t first, const double *x)
         const size_t t = (size_t)r->reg[i];
         for (int j = 0; j < 4; j++) {
             const lh_index u = c->tn[4 * t + (size_t)j];
-            if (blocked(r, t, j) || c->tmark[u] == gen || !in_sphere(c, (size_t)u, x)) continue;
+            if (blocked(r, t, j) || c->tmark[u] == gen || !lh__t3_in_sphere(c, (size_t)u, x))
+                continue;
             lh_status st = lh__t3_room(c, &r->reg, &r->reg_cap, r->reg_count + 1);
             if (st != LH_OK) return st;
             c->tmark[u] = gen;
@@ -340,6 +337,12 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
     double x[3], rad;
     r->why = c->opt->boundary_steiner ? LH_LEFT_FACET : LH_LEFT_BOUNDARY;
     if (!c->opt->boundary_steiner || !face_circumcentre(c, f, x, &rad)) return LH_OK;
+    const lh_index k = facet < 0 ? -1 : r->facet_patch[facet];
+    if (facet >= 0 && k < 0) return LH_OK;
+    if (k >= 0 && !in_patch(c, (size_t)k, x)) { /* outside its facet: no walk to it */
+        const lh_index *e = patch_encroached_seg(r, (size_t)k, x);
+        return e ? split_seg(r, e) : LH_OK;
+    }
     /* x's conflict region from where walks from both sides of the subface end */
     const size_t from = r->reg_count;
     const lh_index side[2] = {u, c->tn[4 * (size_t)u + (size_t)j]};
@@ -363,34 +366,55 @@ static lh_status split_face(t3_refine *r, lh_index u, int j)
         st = admit(r, from, x, &ok);
         return st != LH_OK || !ok ? st : queue(r, T3_INTERIOR, x);
     }
-    const lh_index k = r->facet_patch[facet];
-    r->why = LH_LEFT_FACET;
-    if (k < 0) return LH_OK;
-    if (!in_patch(c, (size_t)k, x)) {
-        e = patch_encroached_seg(r, (size_t)k, x);
-        if (e) return split_seg(r, e);
-        return LH_OK;
-    }
     int ok;
     st = admit(r, from, x, &ok);
     return st != LH_OK || !ok ? st : queue(r, -1 - k, x);
 }
 
-lh_status lh__t3_refine_split(t3_refine *r, const t3_bad *b)
+/* Queues the point that splits bad tet b at x (its circumcentre or centroid). */
+static lh_status split_at(t3_refine *r, const t3_bad *b, const double *x)
 {
     int hit, j;
     r->spacing_now = b->spacing, r->cut = 0, r->why = LH_LEFT_REGION;
-    const lh_index u = walk(r, b->t, b->cc, &hit);
+    const lh_index u = walk(r, b->t, x, &hit);
     if (u < 0) return LH_OK;
     r->reg_count = 0;
-    lh_status st = conflict(r, u, b->cc);
+    lh_status st = conflict(r, u, x);
     if (st != LH_OK) return st;
-    const lh_index *e = encroached_seg(r, 0, b->cc);
+    const lh_index *e = encroached_seg(r, 0, x);
     if (e) return split_seg(r, e);
     if (hit >= 0) return split_face(r, u, hit);
     lh_index t;
-    if (encroached_face(r, b->cc, &t, &j)) return split_face(r, t, j);
+    if (encroached_face(r, x, &t, &j)) return split_face(r, t, j);
     int ok;
-    st = admit(r, 0, b->cc, &ok);
-    return st != LH_OK || !ok ? st : queue(r, T3_INTERIOR, b->cc);
+    st = admit(r, 0, x, &ok);
+    return st != LH_OK || !ok ? st : queue(r, T3_INTERIOR, x);
+}
+
+/* Queues the centroid g of bad tet b, inside it: in the domain, so that insertion in
+ * the mesh as it stands takes it whatever subfaces it encroaches. */
+static lh_status split_inside(t3_refine *r, const t3_bad *b, const double *g)
+{
+    r->spacing_now = b->spacing, r->cut = 0, r->why = LH_LEFT_REGION, r->reg_count = 0;
+    int ok;
+    lh_status st = conflict(r, b->t, g);
+    if (st == LH_OK) st = admit(r, 0, g, &ok);
+    return st != LH_OK || !ok ? st : queue(r, T3_INTERIOR, g);
+}
+
+lh_status lh__t3_refine_split(t3_refine *r, const t3_bad *b)
+{
+    lh_status st = split_at(r, b, b->cc);
+    const int left =
+        r->why == LH_LEFT_SPACING || r->why == LH_LEFT_FACET || r->why == LH_LEFT_REFUSED;
+    if (st != LH_OK || !left || !(b->over & 2)) return st;
+    /* over its volume bound, its circumcentre too near a point (a mesh that is not
+       Delaunay there holds points in circumspheres), or the subface it encroaches
+       not to be split: its centroid, as the bound must be met (summed in coordinate
+       order, the same whatever the numbering) */
+    const double *p[4];
+    lh__t3_sorted_points(r->c, r->c->tv + 4 * (size_t)b->t, 4, p);
+    double g[3];
+    for (int k = 0; k < 3; k++) g[k] = p[0][k] / 4 + p[1][k] / 4 + p[2][k] / 4 + p[3][k] / 4;
+    return split_inside(r, b, g);
 }

@@ -40,6 +40,11 @@ static lh_status room(t3_ctx *c, size_t need)
     return LH_OK;
 }
 
+lh_status lh__t3_mesh_room(t3_ctx *c, size_t need)
+{
+    return room(c, need);
+}
+
 static void note_points(t3_ctx *c, size_t t)
 {
     for (int j = 0; j < 4; j++) c->vtet[c->tv[4 * t + j]] = (lh_index)t;
@@ -275,6 +280,7 @@ lh_index lh__t3_mesh_walk(t3_ctx *c, lh_index t0, const double *q)
         t = c->tn[4 * (size_t)t + out];
     }
     for (size_t u = 0; u < c->tet_count; u++) {
+        if (c->tv[4 * u] < 0) continue; /* dead */
         int in = 1;
         for (int j = 0; j < 4 && in; j++) in = lh__t3_mesh_side(c, u, j, q) >= 0;
         if (in) return (lh_index)u;

@@ -1346,7 +1346,11 @@ typedef enum lh_leftover_why {
     LH_LEFT_REGION,      /* its split point's conflict region is too large to take  */
     LH_LEFT_STOPPED,     /* refinement stopped before its turn: max_steiner, or the
                             rounds' limits (docs/meshing3d.md)                     */
-    LH_LEFT_FLIPS        /* made by the flips after refinement                      */
+    LH_LEFT_FLIPS,       /* made by the flips after refinement                      */
+    LH_LEFT_ANGLE        /* its shortest edge joins two segments where they meet at
+                            an angle below 60 degrees, at about the same distance
+                            from that point (a seditious edge): splitting it would
+                            make a shorter one, without end                        */
 } lh_leftover_why;
 /* A tetrahedron over its radius-edge or volume bound when refinement ended. */
 typedef struct lh_tetmesh_leftover {
