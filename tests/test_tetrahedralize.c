@@ -242,7 +242,10 @@ LH_TEST(quality_refinement)
                  {"mesh3d/blob-closed.off", 1.414, 0, 86, 5},
                  {"mesh3d/hole.off", 1.414, 0, 0, 15},
                  {"mesh3d/hole.off", 0, 1e-3, 0, 0},
-                 {"tetgen/cubes.off", 1.2, 1e-2, 0, 30}};
+                 {"tetgen/cubes.off", 1.2, 1e-2, 0, 30},
+                 /* 9.5% measured (TetGen -pq1.2/15: 4.3%): here for the input order at
+                    1.2, where a stale field once decided which tets were exempt */
+                 {"mesh3d/eight.off", 1.2, 0, 100, 0}};
     for (size_t i = 0; i < LH_COUNT(cases); i++) {
         lh_plc g, h;
         LH_ASSERT_TRUE(read_plc(cases[i].file, &g));
