@@ -209,12 +209,12 @@ static lh_status pass(t3_flips *f)
     for (size_t i = 0; i < n && st == LH_OK; i++) {
         const t3_face *e = list + i;
         const lh_index *tv = c->tv + 4 * (size_t)e->t;
-        if (tv[e->j] != e->v[0] || !flippable(f, e->t, e->j)) continue;
-        int same = 1;
+        int same = tv[0] >= 0 && tv[e->j] == e->v[0]; /* a dead slot, or another tet there */
         for (int k = 1; k < 4; k++)
             same &= tv[0] == e->v[k] || tv[1] == e->v[k] || tv[2] == e->v[k] || tv[3] == e->v[k];
+        if (!same || !flippable(f, e->t, e->j)) continue;
         int done = 0;
-        if (same) st = flip(f, e, &done);
+        st = flip(f, e, &done);
         lh_index made[T3_FLIP_TETS];
         const int nm = done ? c->made_count : 0;
         memcpy(made, c->made, (size_t)nm * sizeof(lh_index));
