@@ -24,16 +24,21 @@ lh_status lh__t3_say(t3_ctx *c, lh_status st, size_t line, const char *fmt, ...)
     return lh__error_say(c->err, st, "%s", text);
 }
 
-lh_status lh__t3_room(t3_ctx *c, lh_index **buf, size_t *cap, size_t need)
+lh_status lh__t3_grow(t3_ctx *c, void **buf, size_t *cap, size_t count, size_t need, size_t size)
 {
     if (need <= *cap) return LH_OK;
     size_t k = 2 * need + 16;
-    lh_index *x = lh__alloc(&c->al, k * sizeof(lh_index));
+    void *x = lh__alloc(&c->al, k * size);
     if (!x) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-    if (*cap) memcpy(x, *buf, *cap * sizeof(lh_index));
+    if (count) memcpy(x, *buf, count * size);
     lh__free(&c->al, *buf);
     *buf = x, *cap = k;
     return LH_OK;
+}
+
+lh_status lh__t3_room(t3_ctx *c, lh_index **buf, size_t *cap, size_t need)
+{
+    return lh__t3_grow(c, (void **)buf, cap, *cap, need, sizeof(lh_index));
 }
 
 /* Queues a split of every subsegment that is not an edge of the mesh. */

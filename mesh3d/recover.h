@@ -216,6 +216,9 @@ lh_status lh__t3_say(t3_ctx *c, lh_status st, size_t line, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)))
 #endif
     ;
+/* Room for need elements of size bytes in *buf (capacity *cap, in elements), its
+ * first count kept; it grows to twice need and more. */
+lh_status lh__t3_grow(t3_ctx *c, void **buf, size_t *cap, size_t count, size_t need, size_t size);
 /* Room for need indices in *buf (capacity *cap), its contents kept. */
 lh_status lh__t3_room(t3_ctx *c, lh_index **buf, size_t *cap, size_t need);
 /* The rounds, until every constraint is in the mesh. */
@@ -261,6 +264,12 @@ lh_status lh__t3_commit(t3_ctx *c);
 lh_status lh__t3_mark_changed(t3_ctx *c, size_t first_new, const t3_node *nodes, size_t m);
 /* Whether a point of segment s's chain changed since round r. */
 int lh__t3_seg_changed(const t3_ctx *c, size_t s, uint32_t r);
+/* Room for m more nodes in *nodes (count of them now, capacity *cap). */
+lh_status lh__t3_node_room(t3_ctx *c, t3_node **nodes, size_t count, size_t *cap, size_t m);
+/* Per queued point (c->new_*), the first queued point with p < 0 and its
+ * coordinates (itself when none, and for a point with p >= 0); idx: scratch of 2
+ * new_count. */
+void lh__t3_queue_firsts(t3_ctx *c, lh_index *first, lh_index *idx);
 /* Sorts the chains' nodes (by segment, then parameter) and rebuilds node_first. */
 lh_status lh__t3_chains_sort(t3_ctx *c);
 
@@ -284,6 +293,9 @@ lh_index lh__t3_seg_of(const t3_ctx *c, lh_index p, lh_index q);
  * when split is set, a split queued: its longest uncovered subsegment, else a point
  * inside it where its faces stop short. */
 lh_status lh__t3_patch_check(t3_ctx *c, size_t k, int split, int *ok);
+/* Exact, in the projection dropping axis ax: g in triangle t (3 points; boundary
+ * included). */
+int lh__t3_in_triangle(t3_ctx *c, const lh_index *t, const double *g, int ax);
 /* Whether a point of patch k (corners, chains, points inside) changed since round r. */
 int lh__t3_patch_changed(const t3_ctx *c, size_t k, uint32_t r);
 /* The faces covering patch k (once lh__t3_patch_check said ok), as sorted triples:

@@ -127,7 +127,7 @@ static lh_status patch_points(t3_ctx *c, size_t k, patch_scan *ps)
 }
 
 /* Exact, in the projection dropping axis ax: g in triangle t (boundary included). */
-static int in_triangle(t3_ctx *c, const lh_index *t, const double *g, int ax)
+int lh__t3_in_triangle(t3_ctx *c, const lh_index *t, const double *g, int ax)
 {
     int i = (ax + 1) % 3, j = (ax + 2) % 3; /* ax: the coordinate dropped */
     double a[2], b[2], d[2], q[2] = {g[i], g[j]};
@@ -174,7 +174,8 @@ static int face_in_patch(t3_ctx *c, size_t k, const lh_index *f)
         g[a] = c->xyz[3 * (size_t)f[0] + a] / 3 + c->xyz[3 * (size_t)f[1] + a] / 3 +
                c->xyz[3 * (size_t)f[2] + a] / 3; /* no overflow */
     for (lh_index a = c->patch_first[k]; a < c->patch_first[k + 1]; a++)
-        if (in_triangle(c, c->tri + 3 * (size_t)c->patch_tri[a], g, abs(c->patch_axis[k]) - 1))
+        if (lh__t3_in_triangle(c, c->tri + 3 * (size_t)c->patch_tri[a], g,
+                               abs(c->patch_axis[k]) - 1))
             return 1;
     return 0;
 }

@@ -195,17 +195,9 @@ lh_status lh__t3_xyz_room(t3_ctx *c, size_t m)
     return LH_OK;
 }
 
-/* Room for m more nodes in *nodes. */
-static lh_status node_room(t3_ctx *c, t3_node **nodes, size_t count, size_t *cap, size_t m)
+lh_status lh__t3_node_room(t3_ctx *c, t3_node **nodes, size_t count, size_t *cap, size_t m)
 {
-    if (count + m <= *cap) return LH_OK;
-    size_t k = 2 * (count + m);
-    t3_node *x = lh__alloc(&c->al, k * sizeof(t3_node));
-    if (!x) return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-    if (count) memcpy(x, *nodes, count * sizeof(t3_node));
-    lh__free(&c->al, *nodes);
-    *nodes = x, *cap = k;
-    return LH_OK;
+    return lh__t3_grow(c, (void **)nodes, cap, count, count + m, sizeof(t3_node));
 }
 
 /* Sorts nodes[0..*count) by (seg, t), drops repeats of (seg, point) and, for
@@ -256,6 +248,18 @@ static int cmp_xyz(const void *ctx, lh_index a, lh_index b)
     return 0;
 }
 
+void lh__t3_queue_firsts(t3_ctx *c, lh_index *first, lh_index *idx)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < c->new_count; i++) {
+        first[i] = (lh_index)i;
+        if (c->new_node[i].p < 0) idx[k++] = (lh_index)i; /* the others have no coordinates */
+    }
+    lh__sort_idx(idx, idx + c->new_count, k, cmp_xyz, c->new_xyz); /* stable: first stays first */
+    for (size_t j = 1; j < k; j++)
+        if (cmp_xyz(c->new_xyz, idx[j - 1], idx[j]) == 0) first[idx[j]] = first[idx[j - 1]];
+}
+
 /* The queued new points, equal ones once, into x (in queue order of first
  * appearance), each node pointing at its point's index; *fresh of them. */
 static lh_status number_fresh(t3_ctx *c, double *x, size_t *fresh)
@@ -268,13 +272,7 @@ static lh_status number_fresh(t3_ctx *c, double *x, size_t *fresh)
         lh__free(&c->al, first);
         return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     }
-    size_t k = 0;
-    for (size_t i = 0; i < m; i++)
-        if (c->new_node[i].p < 0) idx[k++] = (lh_index)i;
-    lh__sort_idx(idx, idx + m, k, cmp_xyz, c->new_xyz); /* stable: the first stays first */
-    for (size_t j = 0; j < k; j++)
-        first[idx[j]] =
-            j > 0 && cmp_xyz(c->new_xyz, idx[j - 1], idx[j]) == 0 ? first[idx[j - 1]] : idx[j];
+    lh__t3_queue_firsts(c, first, idx);
     size_t f = 0;
     for (size_t i = 0; i < m; i++) {
         if (c->new_node[i].p >= 0) continue;
@@ -327,8 +325,8 @@ lh_status lh__t3_commit(t3_ctx *c)
 {
     size_t m = c->new_count, fresh = 0;
     lh_status st = lh__t3_xyz_room(c, m);
-    if (st == LH_OK) st = node_room(c, &c->node, c->node_count, &c->node_cap, m);
-    if (st == LH_OK) st = node_room(c, &c->pnode, c->pnode_count, &c->pnode_cap, m);
+    if (st == LH_OK) st = lh__t3_node_room(c, &c->node, c->node_count, &c->node_cap, m);
+    if (st == LH_OK) st = lh__t3_node_room(c, &c->pnode, c->pnode_count, &c->pnode_cap, m);
     if (st != LH_OK) return st;
     double *x = c->xyz + 3 * c->n;
     st = number_fresh(c, x, &fresh);

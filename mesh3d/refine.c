@@ -50,14 +50,8 @@ double lh__t3_volume_bound(const t3_ctx *c, lh_index reg)
 
 static lh_status bad_room(t3_refine *r)
 {
-    if (r->bad_count < r->bad_cap) return LH_OK;
-    size_t cap = 2 * r->bad_cap + 64;
-    t3_bad *x = lh__alloc(&r->c->al, cap * sizeof(t3_bad));
-    if (!x) return lh__t3_say(r->c, LH_ERR_NOMEM, 0, "out of memory");
-    if (r->bad_count) memcpy(x, r->bad, r->bad_count * sizeof(t3_bad));
-    lh__free(&r->c->al, r->bad);
-    r->bad = x, r->bad_cap = cap;
-    return LH_OK;
+    return lh__t3_grow(r->c, (void **)&r->bad, &r->bad_cap, r->bad_count, r->bad_count + 1,
+                       sizeof(t3_bad));
 }
 
 /* The slot of tet v (4 points, sorted) in r->gave_up: its entry, else the empty slot
@@ -302,7 +296,7 @@ static lh_status round_once(t3_refine *r, int *more)
     *more = 0;
     lh_status st = lh__t3_walls(c, &r->d);
     if (st == LH_OK) st = lh__t3_carve(c, &r->d);
-    r->d_cap = c->tet_count;
+    r->d_wall_cap = 4 * c->tet_count, r->d_label_cap = c->tet_count;
     if (st == LH_OK) st = subsegments(r, 0);
     if (st == LH_OK) st = scan(r);
     if (st != LH_OK || r->bad_count == 0) return st;

@@ -50,7 +50,7 @@ enum { T3_QUEUED = 100, T3_CLAIMED };
 typedef struct t3_refine {
     t3_ctx *c;
     t3_domain d;
-    size_t d_cap; /* tets d's arrays have room for */
+    size_t d_wall_cap, d_label_cap; /* entries d.wall, d.label have room for */
     int flipped;  /* whether a round's flips ran since the mesh was last made from the
                      Delaunay tetrahedralization (the first looks at every face) */
     double ratio; /* the radius-edge bound, 0 none */

@@ -36,14 +36,9 @@ typedef struct t3_flips {
 
 static lh_status put(t3_flips *f, lh_index t, int j)
 {
-    if (f->count == f->cap) {
-        size_t cap = 2 * f->cap + 256;
-        t3_face *x = lh__alloc(&f->c->al, cap * sizeof(t3_face));
-        if (!x) return lh__t3_say(f->c, LH_ERR_NOMEM, 0, "out of memory");
-        if (f->count) memcpy(x, f->face, f->count * sizeof(t3_face));
-        lh__free(&f->c->al, f->face);
-        f->face = x, f->cap = cap;
-    }
+    lh_status st =
+        lh__t3_grow(f->c, (void **)&f->face, &f->cap, f->count, f->count + 1, sizeof(t3_face));
+    if (st != LH_OK) return st;
     t3_face *e = f->face + f->count++;
     e->t = t, e->j = j;
     const lh_index *tv = f->c->tv + 4 * (size_t)t;

@@ -15,8 +15,6 @@
  */
 #include "refine.h"
 
-#include "lh_sort.h"
-
 #include <stdlib.h>
 #include <string.h>
 
@@ -342,21 +340,11 @@ static lh_index new_wall(const t3_cavity *k, lh_index a, lh_index b)
 lh_status lh__t3_domain_room(t3_refine *r, size_t need)
 {
     t3_ctx *c = r->c;
-    if (need <= r->d_cap) return LH_OK;
-    const size_t cap = 2 * need + 64;
-    lh_index *w = lh__alloc(&c->al, 4 * cap * sizeof(lh_index));
-    lh_index *l = lh__alloc(&c->al, cap * sizeof(lh_index));
-    if (!w || !l) {
-        lh__free(&c->al, w);
-        lh__free(&c->al, l);
-        return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-    }
-    memcpy(w, r->d.wall, 4 * c->tet_count * sizeof(lh_index));
-    memcpy(l, r->d.label, c->tet_count * sizeof(lh_index));
-    lh__free(&c->al, r->d.wall);
-    lh__free(&c->al, r->d.label);
-    r->d.wall = w, r->d.label = l, r->d_cap = cap;
-    return LH_OK;
+    lh_status st = lh__t3_room(c, &r->d.wall, &r->d_wall_cap, 4 * need);
+    if (st == LH_OK)
+        st = lh__t3_grow(c, (void **)&r->d.label, &r->d_label_cap, c->tet_count, need,
+                         sizeof(lh_index));
+    return st;
 }
 
 /* Links slot m of new tet s (the face through the point and edge a b) with the new
@@ -458,22 +446,10 @@ static lh_status start_edge(t3_cavity *k, int *ok)
  * exact orient_2 of the projected doubles). */
 static int in_face(const t3_cavity *k, size_t t, int j)
 {
-    t3_ctx *c = k->c;
-    const int ax = abs(c->patch_axis[k->patch]) - 1, i0 = (ax + 1) % 3, i1 = (ax + 2) % 3;
-    double P[3][2];
-    for (int a = 0, w = 0; a < 4; a++) {
-        if (a == j) continue;
-        const double *q = lh__t3_pt(c, c->tv[4 * t + (size_t)a]);
-        P[w][0] = q[i0], P[w][1] = q[i1], w++;
-    }
-    const double X[2] = {k->x[i0], k->x[i1]};
-    const double *tri[3] = {P[0], P[1], P[2]};
-    const int o = lh_orient(c->pred, 2, tri);
-    for (int e = 0; e < 3 && o != 0; e++) {
-        const double *side[3] = {P[e], P[(e + 1) % 3], X};
-        if (lh_orient(c->pred, 2, side) * o < 0) return 0;
-    }
-    return o != 0;
+    lh_index f[3];
+    for (int a = 0, w = 0; a < 4; a++)
+        if (a != j) f[w++] = k->c->tv[4 * t + (size_t)a];
+    return lh__t3_in_triangle(k->c, f, k->x, abs(k->c->patch_axis[k->patch]) - 1);
 }
 
 /* Whether the point is a patch's that rounding put just outside the mesh, over the
@@ -605,25 +581,6 @@ static void subsegment_of(const t3_ctx *c, lh_index s, double t, const t3_node *
     }
 }
 
-static int cmp_xyz(const void *ctx, lh_index a, lh_index b)
-{
-    return lh__t3_cmp_xyz((const double *)ctx + 3 * (size_t)a, (const double *)ctx + 3 * (size_t)b);
-}
-
-/* Per queued new point, the first queued new point with its coordinates (itself when
- * none); idx: scratch of 2 new_count. */
-static void first_equal(t3_ctx *c, lh_index *first, lh_index *idx)
-{
-    size_t m = 0;
-    for (size_t i = 0; i < c->new_count; i++) {
-        first[i] = (lh_index)i;
-        if (c->new_node[i].p < 0) idx[m++] = (lh_index)i; /* the others have no coordinates */
-    }
-    lh__sort_idx(idx, idx + c->new_count, m, cmp_xyz, c->new_xyz); /* stable: first stays first */
-    for (size_t j = 1; j < m; j++)
-        if (cmp_xyz(c->new_xyz, idx[j - 1], idx[j]) == 0) first[idx[j]] = first[idx[j - 1]];
-}
-
 static void cavity_free(t3_cavity *k)
 {
     lh__free(&k->c->al, k->face);
@@ -679,23 +636,9 @@ static lh_status settle(t3_refine *r, size_t n0, const t3_node *nodes, size_t m)
         if (c->dup[v] != (lh_index)v)
             return lh__t3_say(c, LH_ERR_INTERNAL, 0, "a refinement point inserted twice");
     c->steiner += c->n - n0;
-    size_t nn = c->node_count, pn = c->pnode_count;
-    for (size_t i = 0; i < m; i++) (nodes[i].seg >= 0 ? &nn : &pn)[0]++;
-    /* room: the chains' arrays grow by the nodes added */
-    if (nn > c->node_cap || pn > c->pnode_cap) {
-        t3_node *a = lh__alloc(&c->al, (2 * nn + 1) * sizeof(t3_node));
-        t3_node *b = lh__alloc(&c->al, (2 * pn + 1) * sizeof(t3_node));
-        if (!a || !b) {
-            lh__free(&c->al, a);
-            lh__free(&c->al, b);
-            return lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
-        }
-        if (c->node_count) memcpy(a, c->node, c->node_count * sizeof(t3_node));
-        if (c->pnode_count) memcpy(b, c->pnode, c->pnode_count * sizeof(t3_node));
-        lh__free(&c->al, c->node);
-        lh__free(&c->al, c->pnode);
-        c->node = a, c->pnode = b, c->node_cap = 2 * nn + 1, c->pnode_cap = 2 * pn + 1;
-    }
+    st = lh__t3_node_room(c, &c->node, c->node_count, &c->node_cap, m);
+    if (st == LH_OK) st = lh__t3_node_room(c, &c->pnode, c->pnode_count, &c->pnode_cap, m);
+    if (st != LH_OK) return st;
     for (size_t i = 0; i < m; i++) {
         t3_node nd = nodes[i];
         if (nd.seg >= 0) {
@@ -721,7 +664,7 @@ lh_status lh__t3_refine_insert(t3_refine *r)
     t3_node *nodes = lh__alloc(&c->al, (m + 1) * sizeof(t3_node));
     lh_status st = first && nodes ? LH_OK : lh__t3_say(c, LH_ERR_NOMEM, 0, "out of memory");
     size_t nm = 0;
-    if (st == LH_OK) first_equal(c, first, first + m);
+    if (st == LH_OK) lh__t3_queue_firsts(c, first, first + m);
     if (st == LH_OK) st = lh__t3_sub_reserve(r, 2 * m);
     const size_t before = r->flipped ? c->tet_count : 0; /* the first round: every face */
     if (st == LH_OK) st = insert_all(r, nodes, &nm, first);
